@@ -1,0 +1,36 @@
+# AuRoRA-ROS: `make demo` flies the mission with delay and writes a report to
+# out/; `make test` runs every gtest and rostest. Both install what is
+# missing and build first.
+SHELL := /bin/bash
+# ROS tools and catkin need Debian's python3 (with the ROS modules), not a
+# pyenv one that may come first in PATH.
+export PATH := /usr/bin:/bin:$(PATH)
+BUILD ?= build
+JOBS ?= 2
+ROS_SETUP := $(firstword $(wildcard /opt/ros/noetic/setup.bash))
+SOURCE_ROS := $(if $(ROS_SETUP),source $(ROS_SETUP) &&,)
+
+.PHONY: all deps build test demo bench clean
+
+all: build
+
+deps:
+	./scripts/install_deps.sh
+
+build: deps
+	$(SOURCE_ROS) cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release \
+	  -DPYTHON_EXECUTABLE=/usr/bin/python3 -DCATKIN_DEVEL_PREFIX=$(abspath $(BUILD))/devel \
+	  -DCATKIN_ENABLE_TESTING=ON > $(BUILD).cmake.log 2>&1 || { cat $(BUILD).cmake.log; exit 1; }
+	$(SOURCE_ROS) $(MAKE) -C $(BUILD) -j$(JOBS) all tests
+
+test: build
+	./scripts/run_tests.sh $(BUILD)
+
+demo: build
+	./scripts/run_demo.sh $(BUILD)
+
+bench: build
+	./bench/realtime_loop.sh $(BUILD)
+
+clean:
+	rm -rf $(BUILD) $(BUILD).cmake.log out

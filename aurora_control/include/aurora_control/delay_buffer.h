@@ -1,0 +1,55 @@
+// Delayed feedback (ardrone-model.md, "Delayed feedback"): the loop keeps the
+// history H(1) = X0, H(k+1) = X after k steps; at iteration k (1-based) with a
+// delay of d samples the controller receives H(k - d) if k > d, otherwise the
+// current state H(k).
+#pragma once
+
+#include "aurora_sim/host_device.h"
+
+namespace aurora_control {
+
+// 1-based index into the history of the sample the controller receives at
+// iteration k with delay d. The one place the rule is written; the ring
+// buffer below and the SIMD/CUDA sweep engines all call it.
+AURORA_HD inline long delayedHistoryIndex(long k, long d) { return k > d ? k - d : k; }
+
+// Fixed-capacity ring of the most recent samples (no allocation after
+// construction, so it runs inside a GPU thread). A delay d needs
+// Capacity >= d + 1.
+template <typename Sample, int Capacity>
+class DelayBuffer {
+ public:
+  static constexpr int kCapacity = Capacity;
+
+  AURORA_HD DelayBuffer() : count_(0) {}
+
+  AURORA_HD void clear() { count_ = 0; }
+
+  // Appends H(count + 1).
+  AURORA_HD void push(const Sample& s) {
+    ring_[count_ % Capacity] = s;
+    ++count_;
+  }
+
+  // Number of samples pushed since the last clear (k at the current iteration).
+  AURORA_HD long size() const { return count_; }
+
+  AURORA_HD static constexpr bool supportsDelay(long d) { return d >= 0 && d + 1 <= Capacity; }
+
+  // The sample the controller receives with a delay of d samples; requires
+  // size() >= 1 and supportsDelay(d).
+  AURORA_HD const Sample& delayed(long d) const {
+    const long index = delayedHistoryIndex(count_, d);  // 1-based
+    return ring_[(index - 1) % Capacity];
+  }
+
+  // Delay actually in force for the newest sample: d once d samples of
+  // history exist, 0 before (the spec's "otherwise the current state").
+  AURORA_HD long delayInForce(long d) const { return count_ > d ? d : 0; }
+
+ private:
+  Sample ring_[Capacity];
+  long count_;
+};
+
+}  // namespace aurora_control

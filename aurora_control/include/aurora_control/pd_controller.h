@@ -1,0 +1,39 @@
+// PD law with saturation used in the delay study (ardrone-model.md,
+// "Controller used in the delay study", eq. 3.1 of the thesis):
+//   a = xdd_d + Kd tanh(xd_dot - xc_dot) + Kp tanh(xd - xc),  U = [-a_y, -a_x, a_z, 0].
+// The law does not clamp U; callers that feed a real drone clamp to [-1, 1].
+#pragma once
+
+#include <cmath>
+
+#include "aurora_sim/host_device.h"
+
+namespace aurora_control {
+
+template <typename T>
+struct PdGains {
+  T kp;  // proportional gain on tanh(position error) [1/s^2 per m, dimensionless command]
+  T kd;  // derivative gain on tanh(velocity error)
+};
+
+// Computes the command from the desired position/velocity/acceleration and
+// the (possibly delayed) position and velocity the controller received.
+// Writes the position error it used to `pos_err` (metrics use it).
+template <typename T>
+AURORA_HD inline void pdSaturatedLaw(const PdGains<T>& g, const T desired_pos[3],
+                                     const T desired_vel[3], const T desired_acc[3],
+                                     const T pos[3], const T vel[3], T U[4], T pos_err[3]) {
+  using std::tanh;
+  T a[3];
+  for (int i = 0; i < 3; ++i) {
+    pos_err[i] = desired_pos[i] - pos[i];
+    const T vel_err = desired_vel[i] - vel[i];
+    a[i] = desired_acc[i] + g.kd * tanh(vel_err) + g.kp * tanh(pos_err[i]);
+  }
+  U[0] = -a[1];
+  U[1] = -a[0];
+  U[2] = a[2];
+  U[3] = T(0);
+}
+
+}  // namespace aurora_control

@@ -1,0 +1,92 @@
+// The ROS-free runner of one whole positioning-study simulation (plain scalar
+// loop, one simulation at a time). The sweep's `scalar` backend is this
+// function; the rostests compare the ROS loop with it.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+#include "aurora_control/delay_buffer.h"
+#include "aurora_control/positioning_study.h"
+
+namespace aurora_control {
+
+template <typename T>
+struct RunnerConfig {
+  WaypointTask<T> task = WaypointTask<T>::singlePoint(T(2), T(1), T(2), T(60));
+  FeasibilityCriteria<T> criteria = FeasibilityCriteria<T>::study();
+  bool clamp_commands = false;  // false reproduces the study; true matches the drivers
+  bool early_stop = false;      // stop at the first failed check
+};
+
+struct RunnerResult {
+  bool ok[4];
+  bool feasible;
+  double iae, itae, iasc;
+  long steps;           // model steps run
+  double final_pos[3];  // [m], world frame
+};
+
+// Largest delay (samples) the runner's history holds.
+constexpr long kMaxRunnerDelay = 4095;
+
+struct NoObserver {
+  template <typename... Args>
+  void operator()(const Args&...) const {}
+};
+
+namespace detail {
+
+template <typename T, int Capacity, typename Observer>
+RunnerResult runPositioningWithCapacity(const aurora_sim::ArdroneParams<T>& p,
+                                        const RunnerConfig<T>& cfg, const PdGains<T>& gains,
+                                        long delay, Observer& observe) {
+  using Sim = PositioningSim<T, bool>;
+  Sim sim;
+  const T* first = cfg.task.position[cfg.task.activeIndex(T(0))];
+  sim.reset(first);
+  // On the stack: Capacity x 6 scalars, no allocation.
+  DelayBuffer<PosVel<T>, Capacity> history;
+  history.push(PosVel<T>::fromState(sim.model.X));
+  const long iterations = studyIterationCount(double(cfg.task.duration), double(p.Ts));
+  long k = 0;
+  while (k < iterations) {
+    ++k;
+    const PosVel<T> xc = history.delayed(delay);
+    const T* desired = cfg.task.position[cfg.task.activeIndex(
+        WaypointTask<T>::timeOfStep(k - 1, p.Ts))];
+    T U[4];
+    positioningIteration(p, cfg.criteria, gains, desired, cfg.clamp_commands, xc, sim, U);
+    history.push(PosVel<T>::fromState(sim.model.X));
+    observe(k, sim, U, xc);
+    if (cfg.early_stop && !sim.metrics.feasible()) break;
+  }
+  RunnerResult r;
+  for (int i = 0; i < 4; ++i) r.ok[i] = sim.metrics.ok[i];
+  r.feasible = sim.metrics.feasible();
+  r.iae = double(sim.metrics.iae);
+  r.itae = double(sim.metrics.itae);
+  r.iasc = double(sim.metrics.iasc);
+  r.steps = k;
+  for (int i = 0; i < 3; ++i) r.final_pos[i] = double(sim.model.X[aurora_sim::kX + i]);
+  return r;
+}
+
+}  // namespace detail
+
+// Runs one simulation; `observe(k, sim, U, xc)` is called after each model
+// step (k 1-based) for callers that record the trajectory.
+template <typename T, typename Observer = NoObserver>
+RunnerResult runPositioning(const aurora_sim::ArdroneParams<T>& p, const RunnerConfig<T>& cfg,
+                            const PdGains<T>& gains, long delay, Observer observe = Observer()) {
+  if (delay < 0 || delay > kMaxRunnerDelay) {
+    throw std::invalid_argument("delay " + std::to_string(delay) +
+                                " samples is outside the accepted range [0, " +
+                                std::to_string(kMaxRunnerDelay) + "]");
+  }
+  if (delay < 64) return detail::runPositioningWithCapacity<T, 64>(p, cfg, gains, delay, observe);
+  if (delay < 512) return detail::runPositioningWithCapacity<T, 512>(p, cfg, gains, delay, observe);
+  return detail::runPositioningWithCapacity<T, 4096>(p, cfg, gains, delay, observe);
+}
+
+}  // namespace aurora_control

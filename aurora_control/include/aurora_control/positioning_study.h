@@ -1,0 +1,80 @@
+// One iteration of the positioning delay study (ardrone-model.md, "The
+// positioning delay study", loop steps 2-5), shared by the scalar runner,
+// the SIMD sweep engine and the CUDA kernel so the physics and the law exist
+// once. History handling (step 1 and 6) is the caller's: a scalar DelayBuffer
+// here, per-lane gathers in the batch engines.
+#pragma once
+
+#include "aurora_control/feasibility.h"
+#include "aurora_control/pd_controller.h"
+#include "aurora_control/waypoint_task.h"
+#include "aurora_sim/ardrone_model.h"
+#include "aurora_sim/scalar_math.h"
+
+namespace aurora_control {
+
+// What the PD law needs of a state: position and velocity (world frame).
+template <typename T>
+struct PosVel {
+  T pos[3];  // [m]
+  T vel[3];  // [m/s]
+
+  AURORA_HD static PosVel fromState(const T X[aurora_sim::kStateSize]) {
+    PosVel s;
+    for (int i = 0; i < 3; ++i) {
+      s.pos[i] = X[aurora_sim::kX + i];
+      s.vel[i] = X[aurora_sim::kVx + i];
+    }
+    return s;
+  }
+};
+
+template <typename T, typename Mask>
+struct PositioningSim {
+  aurora_sim::ArdroneState<T> model;
+  PositioningMetrics<T, Mask> metrics;
+  T t;              // study time, by repeated addition of Ts as the reference does
+  T initial_error;  // |Xd - X0|, for check 4
+
+  AURORA_HD void reset(const T desired[3]) {
+    model.reset();
+    metrics.reset();
+    t = T(0);
+    T e[3];
+    for (int i = 0; i < 3; ++i) e[i] = desired[i] - model.X[aurora_sim::kX + i];
+    initial_error = norm3(e);
+  }
+};
+
+// Loop steps 2-5 with the delayed sample xc already picked. Writes the
+// command applied to the model to U.
+template <typename T, typename Mask>
+AURORA_HD inline void positioningIteration(const aurora_sim::ArdroneParams<T>& p,
+                                           const FeasibilityCriteria<T>& criteria,
+                                           const PdGains<T>& gains, const T desired[3],
+                                           bool clamp_commands, const PosVel<T>& xc,
+                                           PositioningSim<T, Mask>& s, T U[4]) {
+  const T zero[3] = {T(0), T(0), T(0)};
+  T err[3];
+  pdSaturatedLaw(gains, desired, zero, zero, xc.pos, xc.vel, U, err);
+  if (clamp_commands) {
+    for (int i = 0; i < 4; ++i) U[i] = aurora_sim::clampUnit(U[i]);
+  }
+  s.metrics.accumulate(criteria, err, U, s.t);
+  aurora_sim::ardroneStep(p, s.model, U, aurora_sim::Disturbance<T>::zero());
+  T e[3];
+  for (int i = 0; i < 3; ++i) e[i] = desired[i] - s.model.X[aurora_sim::kX + i];
+  s.metrics.check(criteria, norm3(e), s.initial_error);
+  s.t = s.t + p.Ts;
+}
+
+// Number of loop iterations of `while t < duration: ...; t += Ts` with t
+// accumulated in double (1801 for 60 s at 1/30 s). Every precision runs this
+// many, so float and double sweeps cover the same time.
+inline long studyIterationCount(double duration, double Ts) {
+  long n = 0;
+  for (double t = 0.0; t < duration; t += Ts) ++n;
+  return n;
+}
+
+}  // namespace aurora_control

@@ -1,0 +1,17 @@
+// Delay-study controller node: constructs the node and spins.
+#include <ros/ros.h>
+
+#include "aurora_sim/ros_params.h"
+#include "controller_node.h"
+
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "controller");
+  try {
+    aurora_control::ControllerNode node{ros::NodeHandle(), ros::NodeHandle("~")};
+    ros::spin();
+  } catch (const aurora_sim::ParameterError& e) {
+    ROS_FATAL("controller: %s", e.what());
+    return 2;
+  }
+  return 0;
+}

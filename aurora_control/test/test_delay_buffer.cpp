@@ -1,0 +1,49 @@
+// DelayBuffer semantics (ardrone-model.md, "Delayed feedback").
+#include <gtest/gtest.h>
+
+#include "aurora_control/delay_buffer.h"
+
+using aurora_control::DelayBuffer;
+using aurora_control::delayedHistoryIndex;
+
+TEST(DelayBuffer, FollowsTheSpecRule) {
+  // H(k) = k here; at iteration k the controller receives H(k - d) if k > d,
+  // else H(k).
+  for (long d = 0; d < 8; ++d) {
+    DelayBuffer<long, 8> buffer;
+    for (long k = 1; k <= 30; ++k) {
+      buffer.push(k);
+      const long expected = k > d ? k - d : k;
+      EXPECT_EQ(buffer.delayed(d), expected) << "k=" << k << " d=" << d;
+      EXPECT_EQ(delayedHistoryIndex(k, d), expected);
+      EXPECT_EQ(buffer.delayInForce(d), k > d ? d : 0);
+    }
+  }
+}
+
+TEST(DelayBuffer, ZeroDelayIsNewest) {
+  DelayBuffer<int, 4> buffer;
+  buffer.push(7);
+  buffer.push(9);
+  EXPECT_EQ(buffer.delayed(0), 9);
+}
+
+TEST(DelayBuffer, WrapsAroundAtCapacity) {
+  DelayBuffer<long, 4> buffer;  // holds delays 0..3
+  for (long k = 1; k <= 11; ++k) buffer.push(k);
+  EXPECT_EQ(buffer.delayed(3), 8);
+  EXPECT_EQ(buffer.delayed(1), 10);
+  using Buffer4 = DelayBuffer<long, 4>;
+  EXPECT_TRUE(Buffer4::supportsDelay(3));
+  EXPECT_FALSE(Buffer4::supportsDelay(4));
+  EXPECT_FALSE(Buffer4::supportsDelay(-1));
+}
+
+TEST(DelayBuffer, ClearRestartsHistory) {
+  DelayBuffer<long, 4> buffer;
+  for (long k = 1; k <= 5; ++k) buffer.push(k);
+  buffer.clear();
+  EXPECT_EQ(buffer.size(), 0);
+  buffer.push(42);
+  EXPECT_EQ(buffer.delayed(3), 42);  // fewer samples than the delay: current state
+}

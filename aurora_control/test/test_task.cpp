@@ -1,0 +1,49 @@
+// Waypoint task schedule and validation.
+#include <gtest/gtest.h>
+
+#include "aurora_control/task_check.h"
+
+using aurora_control::checkTask;
+using aurora_control::WaypointTask;
+
+namespace {
+WaypointTask<double> mission() {
+  WaypointTask<double> t;
+  t.count = 4;
+  const double wp[4][3] = {{1, 0, 1.5}, {1, 1.5, 2}, {-0.5, 1.5, 1.5}, {0, 0, 1}};
+  for (int i = 0; i < 4; ++i) {
+    for (int j = 0; j < 3; ++j) t.position[i][j] = wp[i][j];
+    t.end_time[i] = 15.0 * (i + 1);
+  }
+  t.duration = 60.0;
+  return t;
+}
+}  // namespace
+
+TEST(WaypointTask, OneWaypointPerQuarter) {
+  const auto t = mission();
+  EXPECT_EQ(t.activeIndex(0.0), 0);
+  EXPECT_EQ(t.activeIndex(15.0), 0);
+  EXPECT_EQ(t.activeIndex(15.01), 1);
+  EXPECT_EQ(t.activeIndex(44.99), 2);
+  EXPECT_EQ(t.activeIndex(59.0), 3);
+  EXPECT_EQ(t.activeIndex(100.0), 3);  // holds the last waypoint after the end
+  EXPECT_EQ(checkTask(t, "task/"), "");
+}
+
+TEST(WaypointTask, StepTimeIsIntegerStepTimesTs) {
+  EXPECT_EQ(WaypointTask<double>::timeOfStep(450, 1.0 / 30.0), 450 * (1.0 / 30.0));
+}
+
+TEST(WaypointTask, ValidationNamesTheKey) {
+  auto t = mission();
+  t.end_time[2] = 10.0;
+  const std::string msg = checkTask(t, "/ardrone1/controller/task/");
+  EXPECT_NE(msg.find("/ardrone1/controller/task/end_times[2]"), std::string::npos) << msg;
+  t = mission();
+  t.duration = -1;
+  EXPECT_NE(checkTask(t, "task/").find("duration"), std::string::npos);
+  t = mission();
+  t.count = 0;
+  EXPECT_NE(checkTask(t, "task/").find("waypoints"), std::string::npos);
+}

@@ -1,0 +1,59 @@
+// Strict parameter reading for the nodes: a missing or invalid parameter is
+// an error naming the full key and the accepted values (no made-up defaults
+// for vehicle constants).
+#pragma once
+
+#include <ros/ros.h>
+
+#include <stdexcept>
+#include <string>
+
+#include "aurora_sim/ardrone_params.h"
+#include "aurora_sim/vehicle_keys.h"
+
+namespace aurora_sim {
+
+struct ParameterError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+inline std::string fullKey(const ros::NodeHandle& nh, const std::string& key) {
+  return nh.resolveName(key);
+}
+
+template <typename V>
+V requireParam(const ros::NodeHandle& nh, const std::string& key, const std::string& accepted) {
+  V value;
+  if (!nh.getParam(key, value)) {
+    throw ParameterError("missing parameter '" + fullKey(nh, key) + "' (accepted: " + accepted +
+                         ")");
+  }
+  return value;
+}
+
+template <typename V>
+V paramOr(const ros::NodeHandle& nh, const std::string& key, const V& fallback) {
+  V value;
+  return nh.getParam(key, value) ? value : fallback;
+}
+
+// Reads every vehicle key under `ns` (e.g. "vehicle") and checks its range.
+inline ArdroneParams<double> loadVehicleParams(const ros::NodeHandle& nh, const std::string& ns) {
+  ArdroneParams<double> p{};
+  const std::string prefix = fullKey(nh, ns) + "/";
+  for (const VehicleKey& key : vehicleKeys()) {
+    double value = 0.0;
+    if (!nh.getParam(ns + "/" + key.name, value)) {
+      throw ParameterError("missing vehicle parameter '" + prefix + key.name +
+                           "': load a vehicle file such as config/vehicles/ardrone2.yaml "
+                           "(launch arg 'vehicle')");
+    }
+    const std::string problem = checkVehicleValue(prefix, key, value);
+    if (!problem.empty()) throw ParameterError(problem);
+    setVehicleValue(p, key, value);
+  }
+  p.updateDerived();
+  return p;
+}
+
+}  // namespace aurora_sim

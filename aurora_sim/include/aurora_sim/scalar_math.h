@@ -1,0 +1,36 @@
+// Branch-free helpers that work for plain scalars and for SIMD batch types.
+// The model is written once; a SIMD engine instantiates it on a batch type
+// whose comparisons return masks, so data-dependent branches go through
+// select() instead of `if`.
+#pragma once
+
+#include <cmath>
+
+#include "aurora_sim/host_device.h"
+
+namespace aurora_sim {
+
+template <typename T>
+AURORA_HD inline T select(bool condition, const T& a, const T& b) {
+  return condition ? a : b;
+}
+
+// Wraps an angle once into [-pi, pi] as the reference does (step 9 of the
+// model): above pi subtract 2 pi, below -pi add 2 pi.
+template <typename T>
+AURORA_HD inline T wrapAngleOnce(const T& angle) {
+  const T pi = T(3.141592653589793);
+  const T two_pi = T(2.0 * 3.141592653589793);
+  T wrapped = select(angle > pi, angle - two_pi, angle);
+  return select(wrapped < -pi, wrapped + two_pi, wrapped);
+}
+
+// Clamps a command to [-1, 1], as the AR.Drone and Bebop drivers do. NaN is
+// not a number a driver could send; callers reject it before clamping.
+template <typename T>
+AURORA_HD inline T clampUnit(const T& u) {
+  T c = select(u > T(1), T(1), u);
+  return select(c < T(-1), T(-1), c);
+}
+
+}  // namespace aurora_sim

@@ -1,0 +1,21 @@
+// Named indices of the 12-state X = [x y z phi theta psi xdot ydot zdot
+// phidot thetadot psidot] and of the 4-command U = [u_phi u_theta u_zdot
+// u_psidot] (ardrone-model.md, "State, commands, frames"; 0-based here).
+#pragma once
+
+namespace aurora_sim {
+
+enum StateIndex : int {
+  kX = 0, kY = 1, kZ = 2,
+  kRoll = 3, kPitch = 4, kYaw = 5,
+  kVx = 6, kVy = 7, kVz = 8,
+  kRollRate = 9, kPitchRate = 10, kYawRate = 11,
+  kStateSize = 12
+};
+
+enum CommandIndex : int {
+  kURoll = 0, kUPitch = 1, kUClimb = 2, kUYawRate = 3,
+  kCommandSize = 4
+};
+
+}  // namespace aurora_sim

@@ -1,0 +1,267 @@
+#include "ardrone_sim_node.h"
+
+#include <geometry_msgs/TransformStamped.h>
+#include <nav_msgs/Odometry.h>
+#include <rosgraph_msgs/Clock.h>
+#include <tf2/LinearMath/Quaternion.h>
+
+#include <cmath>
+
+#include "aurora_sim/command_mapping.h"
+#include "aurora_sim/ros_conversions.h"
+#include "aurora_sim/ros_params.h"
+
+namespace aurora_sim {
+
+namespace {
+constexpr double kLandedAltitude = 0.05;  // [m] below this while landing the drone is down
+constexpr double kTakeoffClimb = 0.5;     // climb command during take-off (fraction)
+constexpr double kLandingClimb = -0.5;    // climb command during landing (fraction)
+}  // namespace
+
+ArdroneSimNode::ArdroneSimNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
+    : nh_(nh), pnh_(private_nh) {
+  params_ = loadVehicleParams(nh_, "vehicle");
+
+  const std::string mode = paramOr<std::string>(pnh_, "mode", "realtime");
+  if (mode == "realtime") {
+    mode_ = Mode::kRealtime;
+  } else if (mode == "lockstep") {
+    mode_ = Mode::kLockstep;
+  } else {
+    throw ParameterError("parameter '" + fullKey(pnh_, "mode") + "' = '" + mode +
+                         "' is invalid: accepted values 'realtime', 'lockstep'");
+  }
+  cmd_timeout_ = paramOr(pnh_, "cmd_timeout", 0.2);
+  if (!(cmd_timeout_ > 0.0 && cmd_timeout_ <= 10.0)) {
+    throw ParameterError("parameter '" + fullKey(pnh_, "cmd_timeout") + "' = " +
+                         std::to_string(cmd_timeout_) + " is invalid: accepted range (0, 10] s");
+  }
+  takeoff_altitude_ = paramOr(pnh_, "takeoff_altitude", 0.75);
+  if (!(takeoff_altitude_ > kLandedAltitude && takeoff_altitude_ <= 5.0)) {
+    throw ParameterError("parameter '" + fullKey(pnh_, "takeoff_altitude") +
+                         "' is invalid: accepted range (0.05, 5] m");
+  }
+  frame_id_ = paramOr<std::string>(pnh_, "frame_id", "world");
+  std::string ns = nh_.getNamespace();
+  while (!ns.empty() && ns.front() == '/') ns.erase(ns.begin());
+  child_frame_id_ =
+      paramOr<std::string>(pnh_, "child_frame_id", ns.empty() ? "base_link" : ns + "/base_link");
+  path_decimation_ = paramOr(pnh_, "path_decimation", 3);
+  if (path_decimation_ < 1) {
+    throw ParameterError("parameter '" + fullKey(pnh_, "path_decimation") +
+                         "' is invalid: accepted values integers >= 1");
+  }
+  // The study's initial state (z = 0.75 m, in the air); false starts landed.
+  flight_ = paramOr(pnh_, "start_flying", true) ? Flight::kFlying : Flight::kLanded;
+
+  resetModel();
+  path_.header.frame_id = frame_id_;
+
+  const bool lockstep = mode_ == Mode::kLockstep;
+  state_pub_ = nh_.advertise<aurora_msgs::DroneState>("state", lockstep ? 1 : 10);
+  odom_pub_ = nh_.advertise<nav_msgs::Odometry>("odom", 10);
+  path_pub_ = nh_.advertise<nav_msgs::Path>("path", 1);
+  const ros::TransportHints hints = ros::TransportHints().tcpNoDelay();
+  cmd_sub_ = nh_.subscribe("cmd_vel", 10, &ArdroneSimNode::onCmdVel, this, hints);
+  takeoff_sub_ = nh_.subscribe("takeoff", 1, &ArdroneSimNode::onTakeoff, this);
+  land_sub_ = nh_.subscribe("land", 1, &ArdroneSimNode::onLand, this);
+  reset_sub_ = nh_.subscribe("reset", 1, &ArdroneSimNode::onReset, this);
+
+  if (lockstep) {
+    // The sim owns the clock: one step per received command, as fast as the
+    // controller answers. Until the first command arrives the initial state
+    // is re-sent, so a controller that connects late still starts the loop.
+    clock_pub_ = nh_.advertise<rosgraph_msgs::Clock>("/clock", 1);
+    retry_timer_ = nh_.createWallTimer(ros::WallDuration(0.2), &ArdroneSimNode::onLockstepRetry,
+                                       this);
+    ROS_INFO("ardrone_sim: lockstep mode, Ts = %.6f s; waiting for cmd_vel on %s",
+             params_.Ts, cmd_sub_.getTopic().c_str());
+  } else {
+    timer_ = nh_.createTimer(ros::Duration(params_.Ts), &ArdroneSimNode::onRealtimeTimer, this);
+    ROS_INFO("ardrone_sim: realtime mode at %.3f Hz, cmd_timeout %.3f s", 1.0 / params_.Ts,
+             cmd_timeout_);
+  }
+}
+
+void ArdroneSimNode::resetModel() {
+  model_.reset();
+  step_ = 0;
+  have_command_ = false;
+  for (double& u : command_) u = 0.0;
+  path_.poses.clear();
+}
+
+ros::Time ArdroneSimNode::lockstepTime() const {
+  // Integer nanoseconds of step * Ts, so stamps never drift by accumulation.
+  return ros::Time().fromNSec(static_cast<uint64_t>(std::llround(double(step_) * params_.Ts * 1e9)));
+}
+
+void ArdroneSimNode::onCmdVel(const geometry_msgs::Twist::ConstPtr& msg) {
+  double U[4];
+  modelCommandFromTwist(twistCommandFromMsg(*msg), U);
+  const bool valid = allFinite(U, 4);
+  if (!valid) {
+    ++nan_rejected_;
+    if (!in_nan_burst_) {
+      ROS_WARN("ardrone_sim: rejected cmd_vel with NaN/Inf (linear %g %g %g, angular.z %g); "
+               "hovering until a finite command arrives",
+               msg->linear.x, msg->linear.y, msg->linear.z, msg->angular.z);
+      in_nan_burst_ = true;
+    }
+    for (double& u : command_) u = 0.0;
+  } else {
+    if (in_nan_burst_) {
+      ROS_INFO("ardrone_sim: finite cmd_vel again after %lu rejected", nan_rejected_);
+      in_nan_burst_ = false;
+      nan_rejected_ = 0;
+    }
+    for (int i = 0; i < 4; ++i) command_[i] = clampUnit(U[i]);
+  }
+  have_command_ = true;
+  command_time_ = ros::Time::now();
+  if (mode_ == Mode::kLockstep) {
+    stepAndPublish(lockstepTime(), true);
+  }
+}
+
+void ArdroneSimNode::onTakeoff(const std_msgs::Empty::ConstPtr&) {
+  if (flight_ == Flight::kLanded) {
+    ROS_INFO("ardrone_sim: taking off to %.2f m", takeoff_altitude_);
+    flight_ = Flight::kTakingOff;
+  }
+}
+
+void ArdroneSimNode::onLand(const std_msgs::Empty::ConstPtr&) {
+  if (flight_ == Flight::kFlying || flight_ == Flight::kTakingOff) {
+    ROS_INFO("ardrone_sim: landing");
+    flight_ = Flight::kLanding;
+  }
+}
+
+void ArdroneSimNode::onReset(const std_msgs::Empty::ConstPtr&) {
+  ROS_INFO("ardrone_sim: reset to the initial state");
+  resetModel();
+  flight_ = paramOr(pnh_, "start_flying", true) ? Flight::kFlying : Flight::kLanded;
+}
+
+void ArdroneSimNode::onRealtimeTimer(const ros::TimerEvent& event) {
+  const ros::Time now = event.current_real;
+  const bool fresh = have_command_ && (now - command_time_).toSec() <= cmd_timeout_;
+  stepAndPublish(now, fresh);
+}
+
+void ArdroneSimNode::onLockstepRetry(const ros::WallTimerEvent&) {
+  // Re-send the newest state when the loop has stalled (a controller that
+  // started after our first publication never received it).
+  if ((ros::WallTime::now() - last_publish_wall_).toSec() > 0.2) {
+    publishState(lockstepTime());
+  }
+}
+
+void ArdroneSimNode::stepAndPublish(const ros::Time& now, bool command_fresh) {
+  double U[4] = {0.0, 0.0, 0.0, 0.0};  // hover
+  switch (flight_) {
+    case Flight::kLanded:
+      publishState(mode_ == Mode::kLockstep ? lockstepTime() : now);
+      return;
+    case Flight::kTakingOff:
+      U[kUClimb] = kTakeoffClimb;
+      if (model_.X[kZ] >= takeoff_altitude_) flight_ = Flight::kFlying;
+      break;
+    case Flight::kLanding:
+      U[kUClimb] = kLandingClimb;
+      break;
+    case Flight::kFlying:
+      if (command_fresh) {
+        for (int i = 0; i < 4; ++i) U[i] = command_[i];
+      }
+      break;
+  }
+  ardroneStep(params_, model_, U, Disturbance<double>::zero());
+  ++step_;
+  if (flight_ == Flight::kLanding && model_.X[kZ] <= kLandedAltitude) {
+    ROS_INFO("ardrone_sim: landed");
+    flight_ = Flight::kLanded;
+    const double x = model_.X[kX], y = model_.X[kY], yaw = model_.X[kYaw];
+    model_.reset(0.0);
+    model_.X[kX] = x;
+    model_.X[kY] = y;
+    model_.X[kYaw] = yaw;
+  }
+  publishState(mode_ == Mode::kLockstep ? lockstepTime() : now);
+}
+
+void ArdroneSimNode::publishState(const ros::Time& stamp) {
+  if (mode_ == Mode::kLockstep) {
+    rosgraph_msgs::Clock clock;
+    clock.clock = stamp;
+    clock_pub_.publish(clock);
+  }
+  last_publish_wall_ = ros::WallTime::now();
+  const double* X = model_.X;
+
+  aurora_msgs::DroneState state;
+  state.header.stamp = stamp;
+  state.header.frame_id = frame_id_;
+  state.step = step_;
+  stateToMsg(X, state);
+  state.stale = false;
+  state_pub_.publish(state);
+
+  tf2::Quaternion q;
+  q.setRPY(X[kRoll], X[kPitch], X[kYaw]);
+  geometry_msgs::TransformStamped tf;
+  tf.header.stamp = stamp;
+  tf.header.frame_id = frame_id_;
+  tf.child_frame_id = child_frame_id_;
+  tf.transform.translation.x = X[kX];
+  tf.transform.translation.y = X[kY];
+  tf.transform.translation.z = X[kZ];
+  tf.transform.rotation.x = q.x();
+  tf.transform.rotation.y = q.y();
+  tf.transform.rotation.z = q.z();
+  tf.transform.rotation.w = q.w();
+  tf_.sendTransform(tf);
+
+  if (odom_pub_.getNumSubscribers() > 0) {
+    // nav_msgs/Odometry convention: pose in frame_id, twist in child frame
+    // (body axes): v_body = R^T v_world; body rates from Euler-angle rates.
+    const double sphi = std::sin(X[kRoll]), cphi = std::cos(X[kRoll]);
+    const double sth = std::sin(X[kPitch]), cth = std::cos(X[kPitch]);
+    const double spsi = std::sin(X[kYaw]), cpsi = std::cos(X[kYaw]);
+    const double R[3][3] = {
+        {cpsi * cth, cpsi * sth * sphi - spsi * cphi, cpsi * sth * cphi + spsi * sphi},
+        {spsi * cth, spsi * sth * sphi + cpsi * cphi, spsi * sth * cphi - cpsi * sphi},
+        {-sth, cth * sphi, cth * cphi}};
+    nav_msgs::Odometry odom;
+    odom.header = tf.header;
+    odom.child_frame_id = child_frame_id_;
+    odom.pose.pose.position.x = X[kX];
+    odom.pose.pose.position.y = X[kY];
+    odom.pose.pose.position.z = X[kZ];
+    odom.pose.pose.orientation = tf.transform.rotation;
+    odom.twist.twist.linear.x = R[0][0] * X[kVx] + R[1][0] * X[kVy] + R[2][0] * X[kVz];
+    odom.twist.twist.linear.y = R[0][1] * X[kVx] + R[1][1] * X[kVy] + R[2][1] * X[kVz];
+    odom.twist.twist.linear.z = R[0][2] * X[kVx] + R[1][2] * X[kVy] + R[2][2] * X[kVz];
+    odom.twist.twist.angular.x = X[kRollRate] - sth * X[kYawRate];
+    odom.twist.twist.angular.y = cphi * X[kPitchRate] + sphi * cth * X[kYawRate];
+    odom.twist.twist.angular.z = -sphi * X[kPitchRate] + cphi * cth * X[kYawRate];
+    odom_pub_.publish(odom);
+  }
+
+  if (step_ % static_cast<unsigned long>(path_decimation_) == 0) {
+    geometry_msgs::PoseStamped pose;
+    pose.header = tf.header;
+    pose.pose.position.x = X[kX];
+    pose.pose.position.y = X[kY];
+    pose.pose.position.z = X[kZ];
+    pose.pose.orientation = tf.transform.rotation;
+    path_.header.stamp = stamp;
+    path_.poses.push_back(pose);
+    if (path_.poses.size() > 20000) path_.poses.erase(path_.poses.begin());
+    if (path_pub_.getNumSubscribers() > 0) path_pub_.publish(path_);
+  }
+}
+
+}  // namespace aurora_sim

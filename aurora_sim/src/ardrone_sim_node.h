@@ -1,0 +1,67 @@
+// ROS wrapper of the AR.Drone model: the simulated drone a controller or a
+// user flies through the driver topics (cmd_vel, takeoff, land, reset).
+#pragma once
+
+#include <aurora_msgs/DroneState.h>
+#include <geometry_msgs/Twist.h>
+#include <nav_msgs/Path.h>
+#include <ros/ros.h>
+#include <std_msgs/Empty.h>
+#include <tf2_ros/transform_broadcaster.h>
+
+#include <string>
+
+#include "aurora_sim/ardrone_model.h"
+
+namespace aurora_sim {
+
+class ArdroneSimNode {
+ public:
+  enum class Mode { kRealtime, kLockstep };
+  enum class Flight { kLanded, kTakingOff, kFlying, kLanding };
+
+  // Throws ParameterError on a missing or invalid parameter.
+  ArdroneSimNode(ros::NodeHandle nh, ros::NodeHandle private_nh);
+
+ private:
+  void onCmdVel(const geometry_msgs::Twist::ConstPtr& msg);
+  void onTakeoff(const std_msgs::Empty::ConstPtr&);
+  void onLand(const std_msgs::Empty::ConstPtr&);
+  void onReset(const std_msgs::Empty::ConstPtr&);
+  void onRealtimeTimer(const ros::TimerEvent&);
+  void onLockstepRetry(const ros::WallTimerEvent&);
+
+  // Picks the command for this step (user command, hover after a timeout,
+  // take-off/landing profile), steps the model, publishes.
+  void stepAndPublish(const ros::Time& now, bool command_fresh);
+  void publishState(const ros::Time& stamp);
+  void resetModel();
+  ros::Time lockstepTime() const;
+
+  ros::NodeHandle nh_, pnh_;
+  ArdroneParams<double> params_;
+  ArdroneState<double> model_;
+  Mode mode_;
+  Flight flight_;
+  double cmd_timeout_;
+  double takeoff_altitude_;
+  std::string frame_id_, child_frame_id_;
+  unsigned long step_ = 0;
+
+  double command_[4] = {0, 0, 0, 0};  // last valid user command, model order, clamped
+  ros::Time command_time_;
+  bool have_command_ = false;
+  bool in_nan_burst_ = false;
+  unsigned long nan_rejected_ = 0;
+
+  ros::Publisher state_pub_, odom_pub_, path_pub_, clock_pub_;
+  ros::Subscriber cmd_sub_, takeoff_sub_, land_sub_, reset_sub_;
+  tf2_ros::TransformBroadcaster tf_;
+  ros::Timer timer_;
+  ros::WallTimer retry_timer_;
+  ros::WallTime last_publish_wall_;
+  nav_msgs::Path path_;
+  int path_decimation_;
+};
+
+}  // namespace aurora_sim
