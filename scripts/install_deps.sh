@@ -16,12 +16,14 @@ case "${ID}:${VERSION_ID}" in
           libroscpp-dev libtf2-ros-dev libtf2-dev libnav-msgs-dev libgeometry-msgs-dev
           libvisualization-msgs-dev libsensor-msgs-dev libstd-msgs-dev libros-rosgraph-msgs-dev
           python3-dynamic-reconfigure libdynamic-reconfigure-config-init-mutex-dev
-          rviz librosbag-dev)
+          rviz librosbag-dev python3-geometry-msgs python3-std-msgs python3-nav-msgs
+          python3-rosgraph-msgs python3-tf2-msgs python3-visualization-msgs python3-sensor-msgs
+          python3-rosparam python3-rosnode)
     ;;
   ubuntu:20.04)
     PKGS=(ros-noetic-ros-base ros-noetic-rostest ros-noetic-rosbag ros-noetic-tf2-ros
           ros-noetic-nav-msgs ros-noetic-visualization-msgs ros-noetic-sensor-msgs
-          ros-noetic-dynamic-reconfigure ros-noetic-rviz python3-catkin-pkg)
+          ros-noetic-dynamic-reconfigure ros-noetic-rviz ros-noetic-rosbash python3-catkin-pkg)
     ;;
   *)
     echo "install_deps: ${PRETTY_NAME:-this OS} is not supported (Debian 12 or Ubuntu 20.04)" >&2

@@ -6,8 +6,11 @@
 
 int main(int argc, char** argv) {
   ros::init(argc, argv, "controller");
+  // Handles outlive the node: the last NodeHandle's destruction shuts
+  // rosconsole down, which would swallow the fatal message below.
+  ros::NodeHandle nh, private_nh("~");
   try {
-    aurora_control::ControllerNode node{ros::NodeHandle(), ros::NodeHandle("~")};
+    aurora_control::ControllerNode node{nh, private_nh};
     ros::spin();
   } catch (const aurora_sim::ParameterError& e) {
     ROS_FATAL("controller: %s", e.what());

@@ -6,8 +6,11 @@
 
 int main(int argc, char** argv) {
   ros::init(argc, argv, "ardrone_sim");
+  // Handles outlive the node: the last NodeHandle's destruction shuts
+  // rosconsole down, which would swallow the fatal message below.
+  ros::NodeHandle nh, private_nh("~");
   try {
-    aurora_sim::ArdroneSimNode node{ros::NodeHandle(), ros::NodeHandle("~")};
+    aurora_sim::ArdroneSimNode node{nh, private_nh};
     ros::spin();
   } catch (const aurora_sim::ParameterError& e) {
     ROS_FATAL("ardrone_sim: %s", e.what());

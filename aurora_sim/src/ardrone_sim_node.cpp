@@ -52,6 +52,16 @@ ArdroneSimNode::ArdroneSimNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
     throw ParameterError("parameter '" + fullKey(pnh_, "path_decimation") +
                          "' is invalid: accepted values integers >= 1");
   }
+  stop_after_ = paramOr(pnh_, "stop_after", 0.0);
+  if (!(stop_after_ >= 0.0 && std::isfinite(stop_after_))) {
+    throw ParameterError("parameter '" + fullKey(pnh_, "stop_after") +
+                         "' is invalid: accepted a time >= 0 s (0 = run until stopped)");
+  }
+  lockstep_subscribers_ = paramOr(pnh_, "lockstep_subscribers", 1);
+  if (lockstep_subscribers_ < 0) {
+    throw ParameterError("parameter '" + fullKey(pnh_, "lockstep_subscribers") +
+                         "' is invalid: accepted integers >= 0");
+  }
   // The study's initial state (z = 0.75 m, in the air); false starts landed.
   flight_ = paramOr(pnh_, "start_flying", true) ? Flight::kFlying : Flight::kLanded;
 
@@ -75,9 +85,10 @@ ArdroneSimNode::ArdroneSimNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
     clock_pub_ = nh_.advertise<rosgraph_msgs::Clock>("/clock", 1);
     retry_timer_ = nh_.createWallTimer(ros::WallDuration(0.2), &ArdroneSimNode::onLockstepRetry,
                                        this);
-    ROS_INFO("ardrone_sim: lockstep mode, Ts = %.6f s; waiting for cmd_vel on %s",
-             params_.Ts, cmd_sub_.getTopic().c_str());
+    ROS_INFO("ardrone_sim: lockstep mode, Ts = %.6f s; starts once %s has %d subscriber(s)",
+             params_.Ts, state_pub_.getTopic().c_str(), lockstep_subscribers_);
   } else {
+    start_time_ = ros::Time::now();
     timer_ = nh_.createTimer(ros::Duration(params_.Ts), &ArdroneSimNode::onRealtimeTimer, this);
     ROS_INFO("ardrone_sim: realtime mode at %.3f Hz, cmd_timeout %.3f s", 1.0 / params_.Ts,
              cmd_timeout_);
@@ -120,7 +131,7 @@ void ArdroneSimNode::onCmdVel(const geometry_msgs::Twist::ConstPtr& msg) {
   }
   have_command_ = true;
   command_time_ = ros::Time::now();
-  if (mode_ == Mode::kLockstep) {
+  if (mode_ == Mode::kLockstep && lockstep_started_) {
     stepAndPublish(lockstepTime(), true);
   }
 }
@@ -152,8 +163,27 @@ void ArdroneSimNode::onRealtimeTimer(const ros::TimerEvent& event) {
 }
 
 void ArdroneSimNode::onLockstepRetry(const ros::WallTimerEvent&) {
+  if (!lockstep_started_) {
+    // Wait for the controller (and a recorder) so the first states are not
+    // published into the void; then give their other subscriptions (cmd_vel,
+    // control, /clock) one more retry period to connect.
+    if (static_cast<int>(state_pub_.getNumSubscribers()) < lockstep_subscribers_) {
+      ROS_INFO_THROTTLE(5.0, "ardrone_sim: lockstep waiting for %d subscriber(s) of %s (%u now)",
+                        lockstep_subscribers_, state_pub_.getTopic().c_str(),
+                        state_pub_.getNumSubscribers());
+      return;
+    }
+    if (last_publish_wall_.isZero()) {
+      last_publish_wall_ = ros::WallTime::now();
+      return;
+    }
+    lockstep_started_ = true;
+    ROS_INFO("ardrone_sim: lockstep started");
+    publishState(lockstepTime());
+    return;
+  }
   // Re-send the newest state when the loop has stalled (a controller that
-  // started after our first publication never received it).
+  // missed our publication never answered).
   if ((ros::WallTime::now() - last_publish_wall_).toSec() > 0.2) {
     publishState(lockstepTime());
   }
@@ -190,6 +220,18 @@ void ArdroneSimNode::stepAndPublish(const ros::Time& now, bool command_fresh) {
     model_.X[kYaw] = yaw;
   }
   publishState(mode_ == Mode::kLockstep ? lockstepTime() : now);
+  const double elapsed =
+      mode_ == Mode::kLockstep ? double(step_) * params_.Ts : (now - start_time_).toSec();
+  if (stop_after_ > 0.0 && elapsed >= stop_after_ - 1e-9) {
+    ROS_INFO("ardrone_sim: stop_after %.3f s reached after %lu steps: shutting down", stop_after_,
+             step_);
+    timer_.stop();
+    retry_timer_.stop();
+    cmd_sub_.shutdown();
+    // A short grace period lets subscribers (rosbag) receive the last state.
+    shutdown_timer_ = nh_.createWallTimer(
+        ros::WallDuration(0.5), [](const ros::WallTimerEvent&) { ros::requestShutdown(); }, true);
+  }
 }
 
 void ArdroneSimNode::publishState(const ros::Time& stamp) {

@@ -47,6 +47,10 @@ class ArdroneSimNode {
   double takeoff_altitude_;
   std::string frame_id_, child_frame_id_;
   unsigned long step_ = 0;
+  double stop_after_;          // [s] of sim time; 0 = run until stopped
+  int lockstep_subscribers_;   // lockstep starts once `state` has this many subscribers
+  bool lockstep_started_ = false;
+  ros::Time start_time_;
 
   double command_[4] = {0, 0, 0, 0};  // last valid user command, model order, clamped
   ros::Time command_time_;
@@ -58,7 +62,7 @@ class ArdroneSimNode {
   ros::Subscriber cmd_sub_, takeoff_sub_, land_sub_, reset_sub_;
   tf2_ros::TransformBroadcaster tf_;
   ros::Timer timer_;
-  ros::WallTimer retry_timer_;
+  ros::WallTimer retry_timer_, shutdown_timer_;
   ros::WallTime last_publish_wall_;
   nav_msgs::Path path_;
   int path_decimation_;

@@ -1,0 +1,81 @@
+#!/usr/bin/env python3
+"""NaN/Inf commands are rejected (hover, logged once per burst); big ones are clamped."""
+import math
+import time
+import unittest
+
+import rospy
+import rostest
+from aurora_msgs.msg import DroneState
+from geometry_msgs.msg import Twist
+from rosgraph_msgs.msg import Log
+
+
+class BadInputTest(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.states = []
+        cls.warnings = []
+        rospy.Subscriber("state", DroneState, lambda m: cls.states.append(m), queue_size=1000)
+        rospy.Subscriber("/rosout", Log, cls.on_log, queue_size=1000)
+        cls.pub = rospy.Publisher("cmd_vel", Twist, queue_size=10)
+        deadline = time.time() + 20
+        # Two seconds of hover first: the rotors start at rest (spec initial state).
+        while (len(cls.states) < 60 or cls.pub.get_num_connections() == 0) and time.time() < deadline:
+            time.sleep(0.05)
+
+    @classmethod
+    def on_log(cls, msg):
+        if msg.level >= Log.WARN and "NaN/Inf" in msg.msg:
+            cls.warnings.append(msg)
+
+    def send_for(self, twist, seconds):
+        end = time.time() + seconds
+        while time.time() < end and not rospy.is_shutdown():
+            self.pub.publish(twist)
+            time.sleep(1.0 / 30.0)
+
+    def test_1_nan_and_inf_never_reach_the_model(self):
+        self.assertTrue(self.states, "no state from the sim")
+        start = len(self.states)
+        for bad in (float("nan"), float("inf"), -float("inf")):
+            t = Twist()
+            t.linear.x = bad
+            t.linear.z = 0.5
+            t.angular.z = bad
+            self.send_for(t, 0.5)  # one burst of about 15 messages
+        time.sleep(0.5)
+        flown = self.states[start:]
+        self.assertGreater(len(flown), 30)
+        for s in flown:
+            values = [s.position.x, s.position.y, s.position.z, s.velocity.x, s.velocity.y, s.velocity.z,
+                      s.attitude.x, s.attitude.y, s.attitude.z]
+            self.assertTrue(all(math.isfinite(v) for v in values), "non-finite state %s" % values)
+            # hovering: no horizontal motion, no climb at 0.5 (the finite part of the bad command is dropped too)
+            self.assertLess(abs(s.velocity.x) + abs(s.velocity.y), 1e-9)
+            self.assertLess(abs(s.velocity.z), 0.05)
+        self.assertEqual(len(self.warnings), 1,
+                         "expected one warning for the burst, got %d" % len(self.warnings))
+
+    def test_2_a_new_burst_warns_again(self):
+        self.send_for(Twist(), 0.3)  # finite command ends the burst
+        t = Twist()
+        t.linear.y = float("nan")
+        self.send_for(t, 0.3)
+        time.sleep(0.3)
+        self.assertEqual(len(self.warnings), 2)
+
+    def test_3_out_of_range_is_clamped(self):
+        start = len(self.states)
+        t = Twist()
+        t.linear.z = 5.0  # 5 m/s asked; the drivers clamp to 1 (= 1 m/s)
+        self.send_for(t, 2.5)
+        self.send_for(Twist(), 0.2)
+        climb = [s.velocity.z for s in self.states[start:]]
+        self.assertGreater(max(climb), 0.8, "the drone did not climb")
+        self.assertLess(max(climb), 1.05, "climb rate above the clamped 1 m/s: command not clamped")
+
+
+if __name__ == "__main__":
+    rospy.init_node("check_bad_input")
+    rostest.rosrun("aurora_tests", "bad_cmd_vel", BadInputTest)

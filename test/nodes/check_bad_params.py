@@ -1,0 +1,74 @@
+#!/usr/bin/env python3
+"""Each bad parameter makes the node exit non-zero, naming the key and what is accepted."""
+import os
+import subprocess
+import unittest
+
+import rosparam
+import rospy
+import rostest
+
+
+def load_yaml(path, ns):
+    for params, sub_ns in rosparam.load_file(path, default_namespace=ns):
+        rosparam.upload_params(sub_ns, params)
+
+
+class BadParamsTest(unittest.TestCase):
+    def setUp(self):
+        self.config = rospy.get_param("~config_dir")
+
+    def run_node(self, pkg, node, ns, timeout=15.0):
+        proc = subprocess.run(["rosrun", pkg, node, "__ns:=" + ns, "__name:=" + node],
+                              stdout=subprocess.PIPE, stderr=subprocess.STDOUT, timeout=timeout,
+                              env=dict(os.environ))
+        return proc.returncode, proc.stdout.decode(errors="replace")
+
+    def controller_case(self, ns, edit):
+        rospy.set_param(ns, {})
+        load_yaml(os.path.join(self.config, "vehicles/ardrone2.yaml"), ns + "/vehicle")
+        load_yaml(os.path.join(self.config, "controllers/pd_saturated.yaml"), ns + "/controller")
+        load_yaml(os.path.join(self.config, "tasks/mission4.yaml"), ns + "/controller")
+        edit(ns + "/controller/")
+        return self.run_node("aurora_control", "controller", ns)
+
+    def assert_refused(self, rc, out, key, accepted):
+        self.assertNotEqual(rc, 0, "node did not exit with an error:\n" + out)
+        self.assertIn(key, out, "message does not name %s:\n%s" % (key, out))
+        self.assertIn(accepted, out, "message does not say what is accepted (%s):\n%s" % (accepted, out))
+
+    def test_negative_delay_samples(self):
+        rc, out = self.controller_case("/bad_delay", lambda p: rospy.set_param(p + "delay/samples", -3))
+        self.assert_refused(rc, out, "/bad_delay/controller/delay/samples", "accepted integer samples in [0, 2047]")
+
+    def test_negative_delay_seconds(self):
+        rc, out = self.controller_case("/bad_delay_s", lambda p: rospy.set_param(p + "delay/seconds", -0.5))
+        self.assert_refused(rc, out, "/bad_delay_s/controller/delay/seconds", "accepted range [0,")
+
+    def test_unknown_controller(self):
+        rc, out = self.controller_case("/bad_name", lambda p: rospy.set_param(p + "controller/name", "lqr"))
+        self.assert_refused(rc, out, "/bad_name/controller/controller/name", "accepted controllers: 'pd_saturated'")
+        self.assertIn("'lqr'", out)
+
+    def test_missing_gain(self):
+        rc, out = self.controller_case("/no_kd", lambda p: rospy.delete_param(p + "controller/kd"))
+        self.assert_refused(rc, out, "/no_kd/controller/controller/kd", "accepted: a number in [0, 10]")
+
+    def test_sim_missing_vehicle_constant(self):
+        ns = "/no_mass"
+        load_yaml(os.path.join(self.config, "vehicles/ardrone2.yaml"), ns + "/vehicle")
+        rospy.delete_param(ns + "/vehicle/mass")
+        rc, out = self.run_node("aurora_sim", "ardrone_sim", ns)
+        self.assert_refused(rc, out, "/no_mass/vehicle/mass", "config/vehicles/ardrone2.yaml")
+
+    def test_sim_out_of_range_vehicle_constant(self):
+        ns = "/neg_mass"
+        load_yaml(os.path.join(self.config, "vehicles/ardrone2.yaml"), ns + "/vehicle")
+        rospy.set_param(ns + "/vehicle/mass", -0.4)
+        rc, out = self.run_node("aurora_sim", "ardrone_sim", ns)
+        self.assert_refused(rc, out, "/neg_mass/vehicle/mass", "accepted range")
+
+
+if __name__ == "__main__":
+    rospy.init_node("check_bad_params")
+    rostest.rosrun("aurora_tests", "bad_params", BadParamsTest)

@@ -1,0 +1,51 @@
+#!/usr/bin/env python3
+"""The delay in force equals the configured one, sample by sample."""
+import threading
+import unittest
+
+import rospy
+import rostest
+from aurora_msgs.msg import Control, DroneState
+
+
+class DelayTest(unittest.TestCase):
+    def test_state_used_is_exactly_d_samples_old(self):
+        d = rospy.get_param("~expected_delay")
+        ts = rospy.get_param("vehicle/sample_time")
+        n = 240
+        stamps = {}
+        controls = []
+        done = threading.Event()
+
+        def on_state(msg):
+            stamps[msg.step] = msg.header.stamp
+
+        def on_control(msg):
+            controls.append(msg)
+            if msg.step >= n:
+                done.set()
+
+        rospy.Subscriber("state", DroneState, on_state, queue_size=1000)
+        rospy.Subscriber("control", Control, on_control, queue_size=1000)
+        self.assertTrue(done.wait(60.0), "no control message for step %d within 60 s" % n)
+        by_step = {}
+        for c in controls:
+            by_step.setdefault(c.step, c)  # a re-sent state is answered again: keep the first
+        self.assertEqual(sorted(by_step), list(range(0, max(by_step) + 1)), "control steps are not contiguous")
+        for step, c in sorted(by_step.items()):
+            self.assertEqual(c.delay_samples, d)
+            self.assertAlmostEqual(c.delay_seconds, d * ts, places=12)
+            k = step + 1  # the spec's 1-based iteration
+            expected_step = step - d if k > d else step
+            self.assertEqual(c.state_used.step, expected_step, "control of step %d used step %d" % (step, c.state_used.step))
+            self.assertEqual(c.delay_in_force, d if k > d else 0)
+            self.assertEqual(c.state_used.header.stamp, stamps[expected_step],
+                             "control of step %d: state_used stamp differs from the published state" % step)
+            lag = (c.header.stamp - c.state_used.header.stamp).to_sec()
+            self.assertAlmostEqual(lag, (step - expected_step) * ts, delta=2e-9)
+        rospy.loginfo("checked %d control messages, delay %d samples", len(by_step), d)
+
+
+if __name__ == "__main__":
+    rospy.init_node("check_delay")
+    rostest.rosrun("aurora_tests", "delay_semantics", DelayTest)
