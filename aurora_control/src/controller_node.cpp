@@ -97,9 +97,10 @@ ControllerNode::ControllerNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
   }
   task_ = loadTask(pnh_);
   history_.reset(new History());
+  metrics_.reset();
 
-  cmd_pub_ = nh_.advertise<geometry_msgs::Twist>("cmd_vel", 10);
-  control_pub_ = nh_.advertise<aurora_msgs::Control>("control", 100);
+  cmd_pub_ = nh_.advertise<geometry_msgs::Twist>("cmd_vel", 1000);
+  control_pub_ = nh_.advertise<aurora_msgs::Control>("control", 1000);
   markers_pub_ = nh_.advertise<visualization_msgs::MarkerArray>("waypoints", 1, true);
   desired_path_pub_ = nh_.advertise<nav_msgs::Path>("desired_path", 1, true);
   state_sub_ = nh_.subscribe("state", 100, &ControllerNode::onState, this,
@@ -182,6 +183,8 @@ void ControllerNode::onState(const aurora_msgs::DroneState::ConstPtr& msg) {
     ROS_INFO("controller: state step went back from %ld to %ld (sim reset): history cleared",
              last_step_, step);
     history_->clear();
+    metrics_.reset();
+    metrics_step_ = -1;
   }
   history_->push(*msg);
   last_step_ = step;
@@ -210,6 +213,7 @@ void ControllerNode::cycle(const ros::Time& now) {
   control.desired_position.z = task_.position[wp][2];
   control.delay_samples = delay_samples_;
   control.delay_seconds = delay_samples_ * Ts_;
+  control.sample_time = Ts_;
   control.kp = gains_.kp;
   control.kd = gains_.kd;
   control.clamped = clamp_commands_;
@@ -243,6 +247,18 @@ void ControllerNode::cycle(const ros::Time& now) {
     if (clamp_commands_) U[i] = aurora_sim::clampUnit(U[i]);
     control.command[i] = U[i];
   }
+  // Metrics once per state step (a timer cycle without a new state, or a
+  // re-sent state, does not count twice).
+  if (static_cast<long>(newest.step) != metrics_step_) {
+    const double err[3] = {control.position_error.x, control.position_error.y,
+                           control.position_error.z};
+    metrics_.accumulate(criteria_, err, U,
+                        WaypointTask<double>::timeOfStep(long(newest.step), Ts_));
+    metrics_step_ = static_cast<long>(newest.step);
+  }
+  control.iae = metrics_.iae;
+  control.itae = metrics_.itae;
+  control.iasc = metrics_.iasc;
   cmd_pub_.publish(aurora_sim::twistMsgFromModelCommand(U));
   control_pub_.publish(control);
   last_control_ = control;

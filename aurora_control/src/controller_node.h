@@ -13,6 +13,7 @@
 #include <string>
 
 #include "aurora_control/delay_buffer.h"
+#include "aurora_control/feasibility.h"
 #include "aurora_control/pd_controller.h"
 #include "aurora_control/waypoint_task.h"
 
@@ -47,7 +48,10 @@ class ControllerNode {
   std::unique_ptr<History> history_;
   ros::Time last_state_time_;     // ROS time the newest state arrived
   long last_step_ = -1;           // step of the newest state; -1: none yet
+  long metrics_step_ = -1;        // step the metrics last accumulated
   bool stale_ = false;
+  PositioningMetrics<double, bool> metrics_;
+  FeasibilityCriteria<double> criteria_ = FeasibilityCriteria<double>::study();
   aurora_msgs::Control last_control_;
   bool have_control_ = false;
 

@@ -62,6 +62,11 @@ ArdroneSimNode::ArdroneSimNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
     throw ParameterError("parameter '" + fullKey(pnh_, "lockstep_subscribers") +
                          "' is invalid: accepted integers >= 0");
   }
+  max_real_time_factor_ = paramOr(pnh_, "max_real_time_factor", 0.0);
+  if (!(max_real_time_factor_ >= 0.0 && std::isfinite(max_real_time_factor_))) {
+    throw ParameterError("parameter '" + fullKey(pnh_, "max_real_time_factor") +
+                         "' is invalid: accepted a factor >= 0 (0 = as fast as possible)");
+  }
   // The study's initial state (z = 0.75 m, in the air); false starts landed.
   flight_ = paramOr(pnh_, "start_flying", true) ? Flight::kFlying : Flight::kLanded;
 
@@ -69,8 +74,9 @@ ArdroneSimNode::ArdroneSimNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
   path_.header.frame_id = frame_id_;
 
   const bool lockstep = mode_ == Mode::kLockstep;
-  state_pub_ = nh_.advertise<aurora_msgs::DroneState>("state", lockstep ? 1 : 10);
-  odom_pub_ = nh_.advertise<nav_msgs::Odometry>("odom", 10);
+  // Deep queues: in lockstep a recorder must not lose a step when it lags.
+  state_pub_ = nh_.advertise<aurora_msgs::DroneState>("state", 1000);
+  odom_pub_ = nh_.advertise<nav_msgs::Odometry>("odom", 1000);
   path_pub_ = nh_.advertise<nav_msgs::Path>("path", 1);
   const ros::TransportHints hints = ros::TransportHints().tcpNoDelay();
   cmd_sub_ = nh_.subscribe("cmd_vel", 10, &ArdroneSimNode::onCmdVel, this, hints);
@@ -82,7 +88,7 @@ ArdroneSimNode::ArdroneSimNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
     // The sim owns the clock: one step per received command, as fast as the
     // controller answers. Until the first command arrives the initial state
     // is re-sent, so a controller that connects late still starts the loop.
-    clock_pub_ = nh_.advertise<rosgraph_msgs::Clock>("/clock", 1);
+    clock_pub_ = nh_.advertise<rosgraph_msgs::Clock>("/clock", 1000);
     retry_timer_ = nh_.createWallTimer(ros::WallDuration(0.2), &ArdroneSimNode::onLockstepRetry,
                                        this);
     ROS_INFO("ardrone_sim: lockstep mode, Ts = %.6f s; starts once %s has %d subscriber(s)",
@@ -132,6 +138,15 @@ void ArdroneSimNode::onCmdVel(const geometry_msgs::Twist::ConstPtr& msg) {
   have_command_ = true;
   command_time_ = ros::Time::now();
   if (mode_ == Mode::kLockstep && lockstep_started_) {
+    if (max_real_time_factor_ > 0.0) {
+      // Leave the CPU to subscribers that must not lose a step (rosbag's
+      // subscription queue is 100 messages deep and cannot be changed).
+      const ros::WallTime due =
+          last_step_wall_ + ros::WallDuration(params_.Ts / max_real_time_factor_);
+      const ros::WallTime now = ros::WallTime::now();
+      if (now < due) (due - now).sleep();
+    }
+    last_step_wall_ = ros::WallTime::now();
     stepAndPublish(lockstepTime(), true);
   }
 }
