@@ -90,6 +90,16 @@ ControllerNode::ControllerNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
                          "' is invalid: accepted values 'realtime', 'lockstep'");
   }
   lockstep_ = mode == "lockstep";
+  // Realtime: by default the law runs as soon as a state arrives (lowest
+  // latency, AuRoRA's read-then-send loop); the 30 Hz timer is then the
+  // stale-state watchdog. trigger=timer runs the law on the timer only, on
+  // the newest state received.
+  const std::string trigger = paramOr<std::string>(pnh_, "trigger", "state");
+  if (trigger != "state" && trigger != "timer") {
+    throw ParameterError("parameter '" + fullKey(pnh_, "trigger") + "' = '" + trigger +
+                         "' is invalid: accepted values 'state', 'timer'");
+  }
+  timer_triggered_ = !lockstep_ && trigger == "timer";
   stale_timeout_ = paramOr(pnh_, "stale_timeout", 0.5);
   if (!(stale_timeout_ > 0.0 && stale_timeout_ <= 60.0)) {
     throw ParameterError("parameter '" + fullKey(pnh_, "stale_timeout") +
@@ -193,10 +203,17 @@ void ControllerNode::onState(const aurora_msgs::DroneState::ConstPtr& msg) {
     ROS_INFO("controller: state stream is back");
     stale_ = false;
   }
-  if (lockstep_) cycle(msg->header.stamp);
+  if (lockstep_) {
+    cycle(msg->header.stamp);
+  } else if (!timer_triggered_) {
+    cycle(ros::Time::now());
+  }
 }
 
-void ControllerNode::onTimer(const ros::TimerEvent& event) { cycle(event.current_real); }
+void ControllerNode::onTimer(const ros::TimerEvent& event) {
+  const bool stale = (ros::Time::now() - last_state_time_).toSec() > stale_timeout_;
+  if (timer_triggered_ || stale) cycle(event.current_real);
+}
 
 void ControllerNode::cycle(const ros::Time& now) {
   if (history_->size() == 0) return;  // waiting for the first state

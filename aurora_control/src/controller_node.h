@@ -42,6 +42,7 @@ class ControllerNode {
   long delay_samples_;
   bool clamp_commands_;
   bool lockstep_;
+  bool timer_triggered_;  // realtime: compute on the 30 Hz timer instead of on each new state
   double stale_timeout_;
   WaypointTask<double> task_;
 

@@ -193,6 +193,7 @@ void ArdroneSimNode::onLockstepRetry(const ros::WallTimerEvent&) {
       return;
     }
     lockstep_started_ = true;
+    lockstep_start_wall_ = ros::WallTime::now();
     ROS_INFO("ardrone_sim: lockstep started");
     publishState(lockstepTime());
     return;
@@ -238,8 +239,15 @@ void ArdroneSimNode::stepAndPublish(const ros::Time& now, bool command_fresh) {
   const double elapsed =
       mode_ == Mode::kLockstep ? double(step_) * params_.Ts : (now - start_time_).toSec();
   if (stop_after_ > 0.0 && elapsed >= stop_after_ - 1e-9) {
-    ROS_INFO("ardrone_sim: stop_after %.3f s reached after %lu steps: shutting down", stop_after_,
-             step_);
+    if (mode_ == Mode::kLockstep) {
+      const double wall = (ros::WallTime::now() - lockstep_start_wall_).toSec();
+      ROS_INFO("ardrone_sim: stop_after %.3f s reached after %lu steps in %.3f s wall "
+               "(sim time / wall time = %.1f): shutting down",
+               stop_after_, step_, wall, elapsed / wall);
+    } else {
+      ROS_INFO("ardrone_sim: stop_after %.3f s reached after %lu steps: shutting down",
+               stop_after_, step_);
+    }
     timer_.stop();
     retry_timer_.stop();
     cmd_sub_.shutdown();

@@ -51,7 +51,7 @@ class ArdroneSimNode {
   int lockstep_subscribers_;   // lockstep starts once `state` has this many subscribers
   bool lockstep_started_ = false;
   double max_real_time_factor_;  // lockstep: at most this many sim seconds per wall second; 0 = unlimited
-  ros::WallTime last_step_wall_;
+  ros::WallTime last_step_wall_, lockstep_start_wall_;
   ros::Time start_time_;
 
   double command_[4] = {0, 0, 0, 0};  // last valid user command, model order, clamped
