@@ -1,15 +1,16 @@
 // Unit tests of the ROS-free model core: angle wrapping, command clamping and
 // mapping, hover equilibrium, and the shipped vehicle file against the spec.
 #include <gtest/gtest.h>
-#include <yaml-cpp/yaml.h>
 
 #include <cmath>
 #include <limits>
+#include <fstream>
 #include <sstream>
 
 #include "aurora_sim/ardrone_model.h"
 #include "aurora_sim/command_mapping.h"
 #include "aurora_sim/vehicle_keys.h"
+#include "aurora_sim/vehicle_yaml.h"
 
 using namespace aurora_sim;
 
@@ -112,21 +113,8 @@ TEST(ArdroneModel, FloatInstantiationTracksDouble) {
 }
 
 TEST(VehicleFile, ShippedArdrone2MatchesSpecExactly) {
-  const YAML::Node root = YAML::LoadFile(std::string(AURORA_CONFIG_DIR) + "/vehicles/ardrone2.yaml");
-  ArdroneParams<double> p{};
-  for (const VehicleKey& key : vehicleKeys()) {
-    std::stringstream path(key.name);
-    YAML::Node node = YAML::Clone(root);
-    std::string part;
-    while (std::getline(path, part, '/')) {
-      ASSERT_TRUE(node[part]) << "missing key " << key.name;
-      node = node[part];
-    }
-    const double value = node.as<double>();
-    EXPECT_EQ(checkVehicleValue("vehicle/", key, value), "");
-    setVehicleValue(p, key, value);
-  }
-  p.updateDerived();
+  const ArdroneParams<double> p =
+      loadVehicleYaml(std::string(AURORA_CONFIG_DIR) + "/vehicles/ardrone2.yaml");
   const ArdroneParams<double> ref = referenceArdrone2Params();
   // Bitwise equal: the ROS loop reads the file, the runner may use either.
   EXPECT_EQ(p.Ts, ref.Ts);
@@ -147,4 +135,18 @@ TEST(VehicleFile, RangeCheckNamesKeyAndRange) {
   EXPECT_NE(msg.find("/ardrone1/vehicle/mass"), std::string::npos) << msg;
   EXPECT_NE(msg.find("accepted range"), std::string::npos) << msg;
   EXPECT_NE(checkVehicleValue("v/", mass, std::nan("")), "");
+}
+
+TEST(VehicleFile, MissingKeyIsNamed) {
+  const std::string path = ::testing::TempDir() + "/vehicle_no_mass.yaml";
+  {
+    std::ofstream f(path);
+    f << "sample_time: 0.03333333333333333\ngravity: 9.8\n";
+  }
+  try {
+    loadVehicleYaml(path);
+    FAIL() << "accepted a file without mass";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("'mass'"), std::string::npos) << e.what();
+  }
 }

@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """NaN/Inf commands are rejected (hover, logged once per burst); big ones are clamped."""
 import math
 import time

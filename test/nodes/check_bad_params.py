@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Each bad parameter makes the node exit non-zero, naming the key and what is accepted."""
 import os
 import subprocess

@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """A bag recorded through sim.launch holds state, cmd_vel, control and tf."""
 import glob
 import os

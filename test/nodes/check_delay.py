@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """The delay in force equals the configured one, sample by sample."""
 import threading
 import unittest

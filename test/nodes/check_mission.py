@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """The mission reaches each waypoint within `~tolerance` before its quarter ends."""
 import math
 import threading

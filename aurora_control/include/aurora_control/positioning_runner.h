@@ -32,15 +32,17 @@ constexpr long kMaxRunnerDelay = 4095;
 
 struct NoObserver {
   template <typename... Args>
-  void operator()(const Args&...) const {}
+  AURORA_HD void operator()(const Args&...) const {}
 };
 
-namespace detail {
-
+// One whole simulation with a history of `Capacity` samples (delay <
+// Capacity, checked by the caller). No exceptions, no allocation: this is
+// also the CUDA kernel's per-thread body. `iterations` comes from
+// studyIterationCount() on the host.
 template <typename T, int Capacity, typename Observer>
-RunnerResult runPositioningWithCapacity(const aurora_sim::ArdroneParams<T>& p,
-                                        const RunnerConfig<T>& cfg, const PdGains<T>& gains,
-                                        long delay, Observer& observe) {
+AURORA_HD RunnerResult runPositioningCore(const aurora_sim::ArdroneParams<T>& p,
+                                          const RunnerConfig<T>& cfg, const PdGains<T>& gains,
+                                          long delay, long iterations, Observer& observe) {
   using Sim = PositioningSim<T, bool>;
   Sim sim;
   const T* first = cfg.task.position[cfg.task.activeIndex(T(0))];
@@ -48,7 +50,6 @@ RunnerResult runPositioningWithCapacity(const aurora_sim::ArdroneParams<T>& p,
   // On the stack: Capacity x 6 scalars, no allocation.
   DelayBuffer<PosVel<T>, Capacity> history;
   history.push(PosVel<T>::fromState(sim.model.X));
-  const long iterations = studyIterationCount(double(cfg.task.duration), double(p.Ts));
   long k = 0;
   while (k < iterations) {
     ++k;
@@ -72,8 +73,6 @@ RunnerResult runPositioningWithCapacity(const aurora_sim::ArdroneParams<T>& p,
   return r;
 }
 
-}  // namespace detail
-
 // Runs one simulation; `observe(k, sim, U, xc)` is called after each model
 // step (k 1-based) for callers that record the trajectory.
 template <typename T, typename Observer = NoObserver>
@@ -84,9 +83,10 @@ RunnerResult runPositioning(const aurora_sim::ArdroneParams<T>& p, const RunnerC
                                 " samples is outside the accepted range [0, " +
                                 std::to_string(kMaxRunnerDelay) + "]");
   }
-  if (delay < 64) return detail::runPositioningWithCapacity<T, 64>(p, cfg, gains, delay, observe);
-  if (delay < 512) return detail::runPositioningWithCapacity<T, 512>(p, cfg, gains, delay, observe);
-  return detail::runPositioningWithCapacity<T, 4096>(p, cfg, gains, delay, observe);
+  const long n = studyIterationCount(double(cfg.task.duration), double(p.Ts));
+  if (delay < 64) return runPositioningCore<T, 64>(p, cfg, gains, delay, n, observe);
+  if (delay < 512) return runPositioningCore<T, 512>(p, cfg, gains, delay, n, observe);
+  return runPositioningCore<T, 4096>(p, cfg, gains, delay, n, observe);
 }
 
 }  // namespace aurora_control

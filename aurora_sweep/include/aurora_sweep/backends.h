@@ -1,0 +1,47 @@
+// The sweep's execution backends (host side). Each fills one SimResult per
+// combination index of the spec.
+#pragma once
+
+#include <atomic>
+#include <string>
+#include <vector>
+
+#include "aurora_sweep/simulation.h"
+#include "aurora_sweep/sweep_spec.h"
+
+namespace aurora_sweep {
+
+// Progress counter the backends advance (finished simulations); a monitor
+// thread reads it for the ETA.
+using Progress = std::atomic<long>;
+
+template <typename T>
+SimSetup<T> makeSetup(const SweepSpec& spec) {
+  SimSetup<T> s;
+  s.params = spec.vehicle.cast<T>();
+  s.config.task = aurora_control::WaypointTask<T>::singlePoint(
+      T(spec.desired[0]), T(spec.desired[1]), T(spec.desired[2]), T(spec.duration));
+  s.config.criteria = spec.criteria.cast<T>();
+  s.config.clamp_commands = spec.clamp_commands;
+  s.config.early_stop = spec.early_stop;
+  s.iterations = aurora_control::studyIterationCount(spec.duration, spec.vehicle.Ts);
+  return s;
+}
+
+// History capacities the engines are compiled for; the smallest that holds
+// the sweep's largest delay is used.
+constexpr long kCapacities[] = {64, 512, 4096};
+
+// One simulation at a time on the calling thread: the plain reference loop.
+void runScalar(const SweepSpec& spec, std::vector<SimResult>& out, Progress& progress);
+
+// Many simulations at once: SIMD lanes (a finished lane takes the next
+// combination), on `threads` threads.
+void runCpuBatch(const SweepSpec& spec, int threads, std::vector<SimResult>& out,
+                 Progress& progress);
+
+// Lanes per SIMD batch the CPU engine uses for this precision (for the summary).
+int cpuBatchLanes(Precision precision);
+std::string cpuBatchArch(Precision precision);
+
+}  // namespace aurora_sweep

@@ -1,0 +1,299 @@
+// The `cpu` backend: the model and control templates instantiated on xsimd
+// batches, so one instruction stream advances L simulations (one per SIMD
+// lane). Lanes are independent: each has its own combination, iteration
+// count and delay; a lane whose simulation ends (early stop or the last
+// iteration) takes the next combination at once, so early stops keep paying.
+// Compiled with -march=native (CMakeLists) to use the widest vectors.
+#include <xsimd/xsimd.hpp>
+
+#include <algorithm>
+#include <thread>
+#include <vector>
+
+#include "aurora_control/delay_buffer.h"
+#include "aurora_sweep/backends.h"
+
+namespace aurora_sweep {
+
+namespace {
+
+// Work is handed out in chunks of consecutive indices (neighbouring
+// combinations run for similar lengths).
+constexpr long kChunk = 64;
+
+// Instruction set per precision, measured on the thesis grid (bench/sweep.sh):
+// float runs fastest with 8-lane AVX2 (xsimd's AVX-512 float gathers and
+// masks fall back to element-wise code), double with the widest the machine
+// has (8 lanes with AVX-512).
+template <typename T>
+struct ArchFor {
+  using type = xsimd::default_arch;
+};
+#if defined(__AVX2__) && defined(__FMA__)
+template <>
+struct ArchFor<float> {
+  using type = xsimd::fma3<xsimd::avx2>;
+};
+#endif
+
+template <typename T>
+struct Lanes {
+  using Arch = typename ArchFor<T>::type;
+  using B = xsimd::batch<T, Arch>;
+  using M = xsimd::batch_bool<T, Arch>;
+  static constexpr int L = static_cast<int>(B::size);
+
+  static void set(B& b, int lane, T v) {
+    alignas(64) T tmp[L];
+    b.store_aligned(tmp);
+    tmp[lane] = v;
+    b = B::load_aligned(tmp);
+  }
+  static T get(const B& b, int lane) {
+    alignas(64) T tmp[L];
+    b.store_aligned(tmp);
+    return tmp[lane];
+  }
+  static void set(M& m, int lane, bool v) {
+    B as_number = xsimd::select(m, B(T(1)), B(T(0)));
+    set(as_number, lane, v ? T(1) : T(0));
+    m = as_number != B(T(0));
+  }
+  static bool get(const M& m, int lane) {
+    alignas(64) bool tmp[L];
+    m.store_aligned(tmp);
+    return tmp[lane];
+  }
+};
+
+template <typename T, int Capacity>
+class BatchWorker {
+ public:
+  using LaneOps = Lanes<T>;
+  using B = typename LaneOps::B;
+  using M = typename LaneOps::M;
+  static constexpr int L = LaneOps::L;
+  // Integer lanes of the same width (int32 for float, int64 for double), for
+  // the per-lane history indices: gathers and scatters instead of lane loops.
+  using Int = xsimd::as_integer_t<T>;
+  using I = xsimd::batch<Int, typename LaneOps::Arch>;
+  static_assert((Capacity & (Capacity - 1)) == 0, "history capacity must be a power of two");
+
+  BatchWorker(const SweepSpec& spec, std::vector<SimResult>& out, std::atomic<long>& next,
+              Progress& progress)
+      : grid_(spec.view()), total_(grid_.size()), out_(out), next_(next), progress_(progress) {
+    const SimSetup<T> scalar = makeSetup<T>(spec);
+    params_ = scalar.params.template cast<B>();
+    criteria_ = scalar.config.criteria.template cast<B>();
+    clamp_ = spec.clamp_commands;
+    early_stop_ = spec.early_stop;
+    iterations_ = scalar.iterations;
+    for (int i = 0; i < 3; ++i) {
+      desired_[i] = B(T(spec.desired[i]));
+      desired_scalar_[i] = T(spec.desired[i]);
+    }
+    fresh_.reset(desired_scalar_);  // the initial state every lane starts from
+    sim_.reset(desired_);
+    history_.resize(static_cast<size_t>(Capacity) * 6 * L);
+    alignas(64) Int iota[L];
+    for (int l = 0; l < L; ++l) iota[l] = static_cast<Int>(l);
+    lane_ = I::load_aligned(iota);
+  }
+
+  void run() {
+    for (int l = 0; l < L; ++l) {
+      active_[l] = false;
+      startLane(l);
+    }
+    while (anyActive()) {
+      step();
+    }
+  }
+
+ private:
+  T& hist(long slot, int j, int lane) { return history_[(slot * 6 + j) * L + lane]; }
+
+  static void setInt(I& b, int lane, Int v) {
+    alignas(64) Int tmp[L];
+    b.store_aligned(tmp);
+    tmp[lane] = v;
+    b = I::load_aligned(tmp);
+  }
+  static Int getInt(const I& b, int lane) {
+    alignas(64) Int tmp[L];
+    b.store_aligned(tmp);
+    return tmp[lane];
+  }
+
+  bool takeIndex(long& index) {
+    if (chunk_next_ >= chunk_end_) {
+      chunk_next_ = next_.fetch_add(kChunk, std::memory_order_relaxed);
+      chunk_end_ = std::min(chunk_next_ + kChunk, total_);
+      if (chunk_next_ >= total_) return false;
+    }
+    index = chunk_next_++;
+    return true;
+  }
+
+  bool anyActive() const {
+    for (int l = 0; l < L; ++l) {
+      if (active_[l]) return true;
+    }
+    return false;
+  }
+
+  // Puts the next combination into lane l (or leaves it idle at the initial
+  // state with zero gains when the work is done).
+  void startLane(int l) {
+    long index = 0;
+    const bool have = takeIndex(index);
+    const Combination c = have ? grid_.decode(index) : Combination{0.0, 0.0, 0};
+    active_[l] = have;
+    index_[l] = index;
+    setInt(delay_, l, static_cast<Int>(c.delay));
+    setInt(count_, l, 1);  // history holds H(1) ...
+    setInt(start_, l, static_cast<Int>(step_ % Capacity));  // ... at ring slot `step_`
+    LaneOps::set(kp_, l, T(c.kp));
+    LaneOps::set(kd_, l, T(c.kd));
+    auto& m = sim_.model;
+    for (int i = 0; i < aurora_sim::kStateSize; ++i) LaneOps::set(m.X[i], l, fresh_.model.X[i]);
+    for (int i = 0; i < 4; ++i) {
+      LaneOps::set(m.Xa[i], l, fresh_.model.Xa[i]);
+      LaneOps::set(m.Xr[i], l, fresh_.model.Xr[i]);
+      LaneOps::set(m.Xra[i], l, fresh_.model.Xra[i]);
+      LaneOps::set(m.W[i], l, fresh_.model.W[i]);
+      LaneOps::set(sim_.metrics.ok[i], l, true);
+    }
+    LaneOps::set(sim_.metrics.iae, l, T(0));
+    LaneOps::set(sim_.metrics.itae, l, T(0));
+    LaneOps::set(sim_.metrics.iasc, l, T(0));
+    LaneOps::set(sim_.t, l, T(0));
+    LaneOps::set(sim_.initial_error, l, fresh_.initial_error);
+    const auto h0 = aurora_control::PosVel<T>::fromState(fresh_.model.X);
+    const long slot = step_ % Capacity;
+    for (int j = 0; j < 3; ++j) {
+      hist(slot, j, l) = h0.pos[j];
+      hist(slot, 3 + j, l) = h0.vel[j];
+    }
+  }
+
+  void finishLane(int l) {
+    aurora_control::RunnerResult r;
+    for (int i = 0; i < 4; ++i) r.ok[i] = LaneOps::get(sim_.metrics.ok[i], l);
+    r.feasible = r.ok[0] && r.ok[1] && r.ok[2] && r.ok[3];
+    r.iae = double(LaneOps::get(sim_.metrics.iae, l));
+    r.itae = double(LaneOps::get(sim_.metrics.itae, l));
+    r.iasc = double(LaneOps::get(sim_.metrics.iasc, l));
+    r.steps = getInt(count_, l) - 1;
+    for (int i = 0; i < 3; ++i) r.final_pos[i] = double(LaneOps::get(sim_.model.X[aurora_sim::kX + i], l));
+    out_[index_[l]] = compactResult(r);
+    progress_.fetch_add(1, std::memory_order_relaxed);
+  }
+
+  void step() {
+    // Loop step 1: the delayed sample of each lane, by the DelayBuffer rule
+    // H(k - d) if k > d else H(k) (k = count), gathered from the ring. All
+    // lanes write at the same slot each step (a plain vector store); lane l's
+    // H(i) sits at slot start_l + i - 1.
+    const I one(Int(1));
+    const I mask(Int(Capacity - 1));
+    const I index = xsimd::select(count_ > delay_, count_ - delay_, count_);  // 1-based
+    const I read_base = ((start_ + index - one) & mask) * I(Int(6 * L)) + lane_;
+    aurora_control::PosVel<B> xc;
+    for (int j = 0; j < 3; ++j) {
+      xc.pos[j] = B::gather(history_.data(), read_base + I(Int(j * L)));
+      xc.vel[j] = B::gather(history_.data(), read_base + I(Int((3 + j) * L)));
+    }
+    // Steps 2-5, the shared iteration.
+    const aurora_control::PdGains<B> gains{kp_, kd_};
+    B U[4];
+    aurora_control::positioningIteration(params_, criteria_, gains, desired_, clamp_, xc, sim_, U);
+    // Step 6: append X to every lane's history, H(count + 1) at slot step_ + 1.
+    ++step_;
+    const long slot = step_ % Capacity;
+    for (int j = 0; j < 3; ++j) {
+      sim_.model.X[aurora_sim::kX + j].store_aligned(&hist(slot, j, 0));
+      sim_.model.X[aurora_sim::kVx + j].store_aligned(&hist(slot, 3 + j, 0));
+    }
+    count_ = count_ + one;
+    // Lanes whose simulation ended: the last iteration ran, or a check failed.
+    auto ended = xsimd::bool_cast(count_ - one >= I(static_cast<Int>(iterations_)));
+    if (early_stop_) ended = ended | !sim_.metrics.feasible();
+    if (!xsimd::any(ended)) return;
+    alignas(64) bool ended_lanes[L];
+    ended.store_aligned(ended_lanes);
+    for (int l = 0; l < L; ++l) {
+      if (ended_lanes[l] && active_[l]) {
+        finishLane(l);
+        startLane(l);
+      }
+    }
+  }
+
+  const GridView grid_;
+  const long total_;
+  std::vector<SimResult>& out_;
+  std::atomic<long>& next_;
+  Progress& progress_;
+  long chunk_next_ = 0, chunk_end_ = 0;
+
+  aurora_sim::ArdroneParams<B> params_;
+  aurora_control::FeasibilityCriteria<B> criteria_;
+  bool clamp_ = false, early_stop_ = true;
+  long iterations_ = 0;
+  B desired_[3];
+  T desired_scalar_[3];
+  aurora_control::PositioningSim<T, bool> fresh_;
+  aurora_control::PositioningSim<B, M> sim_;
+  B kp_ = B(T(0)), kd_ = B(T(0));
+  std::vector<T, xsimd::aligned_allocator<T, 64>> history_;  // [slot][6][lane]
+  bool active_[L];
+  long index_[L];
+  I delay_ = I(Int(0));  // delay of each lane [samples]
+  I count_ = I(Int(1));  // history size of each lane (the iteration k about to run)
+  I start_ = I(Int(0));  // ring slot of each lane's H(1)
+  I lane_;               // 0, 1, ..., L - 1
+  long step_ = 0;        // batch steps done: the ring slot written last
+};
+
+template <typename T, int Capacity>
+void runBatchWith(const SweepSpec& spec, int threads, std::vector<SimResult>& out,
+                  Progress& progress) {
+  out.resize(spec.size());
+  std::atomic<long> next{0};
+  std::vector<std::thread> pool;
+  for (int t = 0; t < threads; ++t) {
+    pool.emplace_back([&] { BatchWorker<T, Capacity>(spec, out, next, progress).run(); });
+  }
+  for (auto& th : pool) th.join();
+}
+
+template <typename T>
+void runBatchPrecision(const SweepSpec& spec, int threads, std::vector<SimResult>& out,
+                       Progress& progress) {
+  if (spec.max_delay < 64) return runBatchWith<T, 64>(spec, threads, out, progress);
+  if (spec.max_delay < 512) return runBatchWith<T, 512>(spec, threads, out, progress);
+  return runBatchWith<T, 4096>(spec, threads, out, progress);
+}
+
+}  // namespace
+
+void runCpuBatch(const SweepSpec& spec, int threads, std::vector<SimResult>& out,
+                 Progress& progress) {
+  threads = std::max(1, threads);
+  if (spec.precision == Precision::kDouble) {
+    runBatchPrecision<double>(spec, threads, out, progress);
+  } else {
+    runBatchPrecision<float>(spec, threads, out, progress);
+  }
+}
+
+int cpuBatchLanes(Precision precision) {
+  return precision == Precision::kDouble ? Lanes<double>::L : Lanes<float>::L;
+}
+
+std::string cpuBatchArch(Precision precision) {
+  return precision == Precision::kDouble ? Lanes<double>::Arch::name() : Lanes<float>::Arch::name();
+}
+
+}  // namespace aurora_sweep

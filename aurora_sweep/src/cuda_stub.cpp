@@ -1,0 +1,21 @@
+// Stand-in for the CUDA backend in builds without nvcc.
+#include <stdexcept>
+
+#include "aurora_sweep/cuda_backend.h"
+
+namespace aurora_sweep {
+
+bool cudaCompiledIn() { return false; }
+
+CudaDevice probeCudaDevice() {
+  CudaDevice d;
+  d.error = "this build has no CUDA backend (nvcc was not found when it was built; "
+            "install the CUDA toolkit and rebuild)";
+  return d;
+}
+
+CudaRun runCuda(const SweepSpec&, int, std::vector<SimResult>&) {
+  throw std::runtime_error(probeCudaDevice().error);
+}
+
+}  // namespace aurora_sweep

@@ -1,0 +1,342 @@
+#include "aurora_sweep/sweep_file.h"
+
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "aurora_control/positioning_runner.h"
+#include "aurora_sim/vehicle_yaml.h"
+
+namespace aurora_sweep {
+
+namespace {
+
+std::string joinKeys(const std::vector<std::string>& keys) {
+  std::string out;
+  for (const auto& k : keys) out += (out.empty() ? "" : ", ") + k;
+  return out;
+}
+
+class Reader {
+ public:
+  explicit Reader(std::string file) : file_(std::move(file)) {}
+
+  [[noreturn]] void fail(const std::string& key, const std::string& what) const {
+    throw SweepFileError("sweep file '" + file_ + "': '" + key + "' " + what);
+  }
+
+  void onlyKeys(const YAML::Node& node, const std::string& key,
+                const std::vector<std::string>& accepted) const {
+    if (!node.IsMap()) fail(key, "must be a mapping with keys: " + joinKeys(accepted));
+    for (const auto& kv : node) {
+      const std::string name = kv.first.as<std::string>();
+      if (std::find(accepted.begin(), accepted.end(), name) == accepted.end()) {
+        fail(key.empty() ? name : key + "." + name,
+             "is not a known key: accepted " + joinKeys(accepted));
+      }
+    }
+  }
+
+  double number(const YAML::Node& node, const std::string& key) const {
+    try {
+      const double v = node.as<double>();
+      if (!std::isfinite(v)) fail(key, "must be a finite number");
+      return v;
+    } catch (const YAML::Exception&) {
+      fail(key, "must be a number");
+    }
+  }
+
+  long integer(const YAML::Node& node, const std::string& key) const {
+    const double v = number(node, key);
+    if (v != std::floor(v)) fail(key, "must be a whole number, got " + node.as<std::string>());
+    return static_cast<long>(v);
+  }
+
+  bool boolean(const YAML::Node& node, const std::string& key) const {
+    try {
+      return node.as<bool>();
+    } catch (const YAML::Exception&) {
+      fail(key, "must be true or false");
+    }
+  }
+
+  std::string text(const YAML::Node& node, const std::string& key) const {
+    if (!node.IsScalar()) fail(key, "must be a string");
+    return node.as<std::string>();
+  }
+
+  // A threshold: a number, or [factor, base] meaning factor x base as the
+  // thesis writes its limits (30 x 5.3218).
+  double threshold(const YAML::Node& node, const std::string& key) const {
+    if (node.IsSequence()) {
+      if (node.size() != 2) fail(key, "must be a number or [factor, base]");
+      return number(node[0], key + "[0]") * number(node[1], key + "[1]");
+    }
+    return number(node, key);
+  }
+
+  const std::string& file() const { return file_; }
+
+ private:
+  std::string file_;
+};
+
+std::string dirOf(const std::string& path) {
+  const auto slash = path.find_last_of('/');
+  return slash == std::string::npos ? "." : path.substr(0, slash);
+}
+
+bool fileExists(const std::string& path) { return std::ifstream(path).good(); }
+
+std::string resolve(const std::string& name, const std::string& sweep_dir,
+                    const std::string& config_dir) {
+  if (!name.empty() && name[0] == '/') return name;
+  if (fileExists(sweep_dir + "/" + name)) return sweep_dir + "/" + name;
+  if (!config_dir.empty() && fileExists(config_dir + "/" + name)) return config_dir + "/" + name;
+  return sweep_dir + "/" + name;
+}
+
+int paramIdOf(const std::string& name) {
+  if (name == "kp") return kParamKp;
+  if (name == "kd") return kParamKd;
+  if (name == "delay") return kParamDelay;
+  return -1;
+}
+
+void checkValue(const Reader& r, int id, double v, const std::string& key) {
+  if (id == kParamDelay) {
+    if (v != std::floor(v) || v < 0 || v > aurora_control::kMaxRunnerDelay) {
+      r.fail(key, "= " + std::to_string(v) + " is not a delay: accepted whole samples in [0, " +
+                      std::to_string(aurora_control::kMaxRunnerDelay) + "]");
+    }
+  } else if (v < 0.0 || v > 100.0) {
+    r.fail(key, "= " + std::to_string(v) + " is outside the accepted range [0, 100]");
+  }
+}
+
+std::vector<double> readPoints(const Reader& r, const std::string& path, const std::string& key) {
+  std::ifstream in(path);
+  if (!in) r.fail(key, "names '" + path + "', which cannot be read");
+  std::string line;
+  if (!std::getline(in, line)) r.fail(key, "file '" + path + "' is empty");
+  std::string header;
+  for (char c : line) {
+    if (c != ' ' && c != '\r') header += c;
+  }
+  if (header != "kp,kd,delay") {
+    r.fail(key, "file '" + path + "' must start with the header 'kp,kd,delay', found '" + line + "'");
+  }
+  std::vector<double> points;
+  long row = 1;
+  while (std::getline(in, line)) {
+    ++row;
+    if (line.find_first_not_of(" \r\t") == std::string::npos) continue;
+    std::stringstream ss(line);
+    std::string cell;
+    int col = 0;
+    while (std::getline(ss, cell, ',')) {
+      if (col >= 3) r.fail(key, "file '" + path + "' row " + std::to_string(row) + " has more than 3 columns");
+      char* end = nullptr;
+      const double v = std::strtod(cell.c_str(), &end);
+      if (end == cell.c_str() || !std::isfinite(v)) {
+        r.fail(key, "file '" + path + "' row " + std::to_string(row) + ": '" + cell + "' is not a number");
+      }
+      checkValue(r, col, v, key + " (" + path + " row " + std::to_string(row) + ", " + paramName(col) + ")");
+      points.push_back(v);
+      ++col;
+    }
+    if (col != 3) r.fail(key, "file '" + path + "' row " + std::to_string(row) + " needs 3 columns kp,kd,delay");
+  }
+  if (points.empty()) r.fail(key, "file '" + path + "' has no points");
+  return points;
+}
+
+}  // namespace
+
+aurora_sim::ArdroneParams<double> loadVehicleFile(const std::string& path) {
+  try {
+    return aurora_sim::loadVehicleYaml(path);
+  } catch (const std::runtime_error& e) {
+    throw SweepFileError(e.what());
+  }
+}
+
+SweepSpec loadSweepFile(const std::string& path, const std::string& config_dir) {
+  Reader r(path);
+  YAML::Node root;
+  try {
+    root = YAML::LoadFile(path);
+  } catch (const YAML::BadFile&) {
+    throw SweepFileError("sweep file '" + path + "' cannot be read (does it exist?)");
+  } catch (const YAML::Exception& e) {
+    throw SweepFileError("sweep file '" + path + "' is not valid YAML: " + e.what());
+  }
+  r.onlyKeys(root, "", {"sweep"});
+  const YAML::Node s = root["sweep"];
+  if (!s) r.fail("sweep", "is missing: the file's top level must be 'sweep:'");
+  r.onlyKeys(s, "sweep", {"name", "controller", "vehicle", "task", "parameters", "order", "points",
+                          "criteria", "early_stop", "clamp_commands", "precision"});
+  SweepSpec spec;
+  spec.file = path;
+  const std::string sweep_dir = dirOf(path);
+  spec.name = s["name"] ? r.text(s["name"], "sweep.name") : "sweep";
+
+  if (s["controller"]) {
+    spec.controller = r.text(s["controller"], "sweep.controller");
+    if (spec.controller != "pd_saturated") {
+      r.fail("sweep.controller", "= '" + spec.controller +
+                                     "' is not a known controller: accepted 'pd_saturated'");
+    }
+  }
+  const std::string vehicle = s["vehicle"] ? r.text(s["vehicle"], "sweep.vehicle")
+                                           : std::string("vehicles/ardrone2.yaml");
+  spec.vehicle_file = resolve(vehicle, sweep_dir, config_dir);
+  spec.vehicle = loadVehicleFile(spec.vehicle_file);
+
+  if (s["task"]) {
+    const YAML::Node t = s["task"];
+    r.onlyKeys(t, "sweep.task", {"desired", "duration"});
+    if (t["desired"]) {
+      if (!t["desired"].IsSequence() || t["desired"].size() != 3) {
+        r.fail("sweep.task.desired", "must be [x, y, z] in m (sweeps support one positioning point)");
+      }
+      for (int i = 0; i < 3; ++i) spec.desired[i] = r.number(t["desired"][i], "sweep.task.desired");
+    }
+    if (t["duration"]) {
+      spec.duration = r.number(t["duration"], "sweep.task.duration");
+      if (!(spec.duration > 0 && spec.duration <= 3600)) {
+        r.fail("sweep.task.duration", "is outside the accepted range (0, 3600] s");
+      }
+    }
+  }
+
+  if (s["criteria"]) {
+    const YAML::Node c = s["criteria"];
+    r.onlyKeys(c, "sweep.criteria", {"max_error", "max_iae", "max_itae", "error_growth", "metric_dt"});
+    auto& cr = spec.criteria;
+    if (c["max_error"]) cr.max_error = r.threshold(c["max_error"], "sweep.criteria.max_error");
+    if (c["max_iae"]) cr.max_iae = r.threshold(c["max_iae"], "sweep.criteria.max_iae");
+    if (c["max_itae"]) cr.max_itae = r.threshold(c["max_itae"], "sweep.criteria.max_itae");
+    if (c["error_growth"]) cr.error_growth = r.threshold(c["error_growth"], "sweep.criteria.error_growth");
+    if (c["metric_dt"]) cr.metric_dt = r.number(c["metric_dt"], "sweep.criteria.metric_dt");
+    const double all[] = {cr.max_error, cr.max_iae, cr.max_itae, cr.error_growth, cr.metric_dt};
+    const char* names[] = {"max_error", "max_iae", "max_itae", "error_growth", "metric_dt"};
+    for (int i = 0; i < 5; ++i) {
+      if (!(all[i] > 0)) r.fail(std::string("sweep.criteria.") + names[i], "must be > 0");
+    }
+  }
+
+  if (s["early_stop"]) spec.early_stop = r.boolean(s["early_stop"], "sweep.early_stop");
+  if (s["clamp_commands"]) spec.clamp_commands = r.boolean(s["clamp_commands"], "sweep.clamp_commands");
+  if (s["precision"]) {
+    const std::string p = r.text(s["precision"], "sweep.precision");
+    if (p == "double") spec.precision = Precision::kDouble;
+    else if (p == "float") spec.precision = Precision::kFloat;
+    else r.fail("sweep.precision", "= '" + p + "' is not accepted: 'double' or 'float'");
+  }
+
+  const bool has_points = static_cast<bool>(s["points"]);
+  if (has_points) {
+    if (s["parameters"] || s["order"]) {
+      r.fail("sweep.points", "excludes 'parameters' and 'order': a sweep is either a grid or a points file");
+    }
+    spec.points_file = resolve(r.text(s["points"], "sweep.points"), sweep_dir, config_dir);
+    spec.points = readPoints(r, spec.points_file, "sweep.points");
+    for (size_t i = 2; i < spec.points.size(); i += 3) {
+      spec.max_delay = std::max(spec.max_delay, static_cast<long>(spec.points[i]));
+    }
+    return spec;
+  }
+
+  const YAML::Node params = s["parameters"];
+  if (!params) r.fail("sweep.parameters", "is missing: give kp, kd and delay (a value or a range), or 'points'");
+  r.onlyKeys(params, "sweep.parameters", {"kp", "kd", "delay"});
+  std::vector<std::string> varied;
+  bool given[kParamCount] = {false, false, false};
+  std::vector<Axis> axes_by_name;
+  for (const auto& kv : params) {
+    const std::string name = kv.first.as<std::string>();
+    const int id = paramIdOf(name);
+    const std::string key = "sweep.parameters." + name;
+    given[id] = true;
+    const YAML::Node v = kv.second;
+    if (v.IsScalar()) {
+      spec.fixed[id] = r.number(v, key);
+      checkValue(r, id, spec.fixed[id], key);
+      continue;
+    }
+    Axis axis{static_cast<ParamId>(id), {}};
+    if (v.IsMap() && v["values"]) {
+      r.onlyKeys(v, key, {"values"});
+      if (!v["values"].IsSequence() || v["values"].size() == 0) {
+        r.fail(key + ".values", "is empty: give at least one value");
+      }
+      for (const auto& x : v["values"]) axis.values.push_back(r.number(x, key + ".values"));
+    } else if (v.IsMap()) {
+      r.onlyKeys(v, key, {"from", "to", "count"});
+      if (!v["from"] || !v["to"] || !v["count"]) r.fail(key, "needs from, to and count (or values: [...])");
+      const double from = r.number(v["from"], key + ".from");
+      const double to = r.number(v["to"], key + ".to");
+      const long count = r.integer(v["count"], key + ".count");
+      if (count < 1) r.fail(key + ".count", "= " + std::to_string(count) + " is below 1: accepted counts >= 1");
+      if (count == 1 && from != to) r.fail(key, "has count 1 but from != to: an empty range");
+      if (to < from) r.fail(key, "is an empty range: 'to' (" + std::to_string(to) + ") is below 'from' (" +
+                                 std::to_string(from) + ")");
+      // Written as from + (i (to - from)) / (count - 1), so kp = i 0.75 / 31
+      // has the bits of the thesis grid.
+      for (long i = 0; i < count; ++i) {
+        axis.values.push_back(count == 1 ? from : from + (double(i) * (to - from)) / double(count - 1));
+      }
+    } else {
+      r.fail(key, "must be a value, {from, to, count} or {values: [...]}");
+    }
+    for (double x : axis.values) checkValue(r, id, x, key);
+    varied.push_back(name);
+    axes_by_name.push_back(axis);
+  }
+  for (int id = 0; id < kParamCount; ++id) {
+    if (!given[id]) {
+      r.fail(std::string("sweep.parameters.") + paramName(id),
+             "is missing: give a value or a range for each of kp, kd, delay");
+    }
+  }
+  std::vector<std::string> order;
+  if (s["order"]) {
+    if (!s["order"].IsSequence()) r.fail("sweep.order", "must be a list of the varied parameters");
+    for (const auto& o : s["order"]) order.push_back(r.text(o, "sweep.order"));
+    std::set<std::string> seen;
+    for (const auto& o : order) {
+      if (paramIdOf(o) < 0) r.fail("sweep.order", "names unknown parameter '" + o + "': accepted kp, kd, delay");
+      if (!seen.insert(o).second) r.fail("sweep.order", "names '" + o + "' twice");
+      if (std::find(varied.begin(), varied.end(), o) == varied.end()) {
+        r.fail("sweep.order", "names '" + o + "', which is not varied (it has a single value)");
+      }
+    }
+    if (order.size() != varied.size()) {
+      r.fail("sweep.order", "must list every varied parameter (" + joinKeys(varied) + "), first varying fastest");
+    }
+  } else {
+    for (const char* n : {"kp", "kd", "delay"}) {
+      if (std::find(varied.begin(), varied.end(), n) != varied.end()) order.push_back(n);
+    }
+  }
+  for (const auto& o : order) {
+    for (const auto& a : axes_by_name) {
+      if (a.param == paramIdOf(o)) spec.axes.push_back(a);
+    }
+  }
+  spec.max_delay = static_cast<long>(spec.fixed[kParamDelay]);
+  for (const auto& a : spec.axes) {
+    if (a.param == kParamDelay) {
+      spec.max_delay = static_cast<long>(*std::max_element(a.values.begin(), a.values.end()));
+    }
+  }
+  return spec;
+}
+
+}  // namespace aurora_sweep

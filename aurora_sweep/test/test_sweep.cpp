@@ -1,0 +1,289 @@
+// The sweep: grid decoding, backend agreement (scalar vs SIMD batches),
+// points files, the sweep program's outputs, and refusal of bad sweep files.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "aurora_sweep/backends.h"
+#include "aurora_sweep/sweep_file.h"
+
+using namespace aurora_sweep;
+
+namespace {
+
+const std::string kConfig = AURORA_CONFIG_DIR;
+const std::string kData = std::string(AURORA_SWEEP_TEST_DIR) + "/data";
+
+SweepSpec load(const std::string& path) { return loadSweepFile(path, kConfig); }
+
+std::vector<SimResult> run(const SweepSpec& spec, const std::string& backend) {
+  std::vector<SimResult> out;
+  Progress progress{0};
+  if (backend == "scalar") {
+    runScalar(spec, out, progress);
+  } else {
+    runCpuBatch(spec, 2, out, progress);
+  }
+  EXPECT_EQ(progress.load(), spec.size());
+  return out;
+}
+
+bool relClose(double a, double b, double rel) {
+  return std::fabs(a - b) <= rel * std::max(std::fabs(a), std::fabs(b)) || a == b;
+}
+
+std::string writeTemp(const std::string& name, const std::string& text) {
+  const std::string path = ::testing::TempDir() + "/" + name;
+  std::ofstream(path) << text;
+  return path;
+}
+
+// The message of loading `yaml`; empty if it loaded.
+std::string refusal(const std::string& yaml) {
+  static int n = 0;
+  const std::string path = writeTemp("bad_sweep_" + std::to_string(n++) + ".yaml", yaml);
+  try {
+    load(path);
+  } catch (const SweepFileError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+const char* kGoodParams =
+    "  parameters:\n"
+    "    kp: {from: 0.0, to: 0.75, count: 4}\n"
+    "    kd: {from: 0.0, to: 1.0, count: 4}\n"
+    "    delay: {from: 0, to: 3, count: 4}\n";
+
+}  // namespace
+
+TEST(SweepFile, ThesisGridDecodesToTheThesisValues) {
+  const SweepSpec spec = load(kConfig + "/sweeps/positioning_delay.yaml");
+  EXPECT_EQ(spec.size(), 65536);
+  EXPECT_EQ(spec.max_delay, 63);
+  EXPECT_TRUE(spec.early_stop);
+  EXPECT_FALSE(spec.clamp_commands);
+  EXPECT_EQ(spec.criteria.max_iae, 30 * 5.3218);
+  EXPECT_EQ(spec.criteria.max_itae, 50 * 7.3256);
+  const GridView g = spec.view();
+  // order [kp, kd, delay]: kp fastest.
+  for (long d : {0L, 3L, 53L}) {
+    for (int i : {0, 1, 14, 31}) {
+      for (int j : {0, 5, 19, 31}) {
+        const Combination c = g.decode(i + 32 * (j + 32 * d));
+        EXPECT_EQ(c.kp, i * 0.75 / 31) << i;  // bit-identical to the thesis's formula
+        EXPECT_EQ(c.kd, j / 31.0) << j;
+        EXPECT_EQ(c.delay, d);
+      }
+    }
+  }
+}
+
+TEST(SweepFile, OrderChangesTheIndexing) {
+  const std::string path = writeTemp("order.yaml", std::string("sweep:\n") + kGoodParams +
+                                                       "  order: [delay, kp, kd]\n");
+  const SweepSpec spec = load(path);  // the view points into the spec
+  const GridView g = spec.view();
+  EXPECT_EQ(g.decode(1).delay, 1);
+  EXPECT_EQ(g.decode(1).kp, 0.0);
+  EXPECT_EQ(g.decode(4).kp, 0.25);
+}
+
+TEST(Backends, ScalarAndCpuAgreeInDouble) {
+  const SweepSpec spec = load(kData + "/small_grid.yaml");
+  ASSERT_EQ(spec.size(), 80);
+  const auto scalar = run(spec, "scalar");
+  const auto cpu = run(spec, "cpu");
+  int compared = 0, feasible = 0, infeasible = 0;
+  for (long i = 0; i < spec.size(); ++i) {
+    EXPECT_EQ(scalar[i].ok, cpu[i].ok) << "combination " << i;
+    EXPECT_EQ(scalar[i].steps, cpu[i].steps) << "combination " << i;
+    feasible += (scalar[i].ok >> 4) & 1;
+    infeasible += !((scalar[i].ok >> 4) & 1);
+    if (scalar[i].ok & 1) {  // check 1 held: the run did not diverge
+      ++compared;
+      EXPECT_PRED3(relClose, scalar[i].iae, cpu[i].iae, 1e-9) << i;
+      EXPECT_PRED3(relClose, scalar[i].itae, cpu[i].itae, 1e-9) << i;
+      EXPECT_PRED3(relClose, scalar[i].iasc, cpu[i].iasc, 1e-9) << i;
+      for (int k = 0; k < 3; ++k) {
+        EXPECT_NEAR(scalar[i].final_pos[k], cpu[i].final_pos[k], 1e-6) << i;
+      }
+    }
+  }
+  // The grid must exercise both outcomes and the metric comparison.
+  EXPECT_GT(compared, 20);
+  EXPECT_GT(feasible, 5);
+  EXPECT_GT(infeasible, 5);
+}
+
+TEST(Backends, KernelBodyOnTheHostMatchesTheCpuBackend) {
+  // simulateCombination() is what each CUDA thread runs; here it runs on the CPU.
+  const SweepSpec spec = load(kData + "/small_grid.yaml");
+  const SimSetup<double> setup = makeSetup<double>(spec);
+  const GridView grid = spec.view();
+  const auto cpu = run(spec, "cpu");
+  for (long i = 0; i < spec.size(); ++i) {
+    const SimResult r = simulateCombination<double, 64>(setup, grid, i);
+    EXPECT_EQ(r.ok, cpu[i].ok) << i;
+    EXPECT_EQ(r.steps, cpu[i].steps) << i;
+    if (r.ok & 1) {
+      EXPECT_PRED3(relClose, r.iae, cpu[i].iae, 1e-9) << i;
+      EXPECT_PRED3(relClose, r.itae, cpu[i].itae, 1e-9) << i;
+    }
+  }
+}
+
+TEST(Backends, EarlyStopKeepsTheFeasibleSetAndSavesSteps) {
+  SweepSpec spec = load(kData + "/small_grid.yaml");
+  const auto full = run(spec, "cpu");
+  spec.early_stop = true;
+  const auto early = run(spec, "cpu");
+  long steps_full = 0, steps_early = 0;
+  for (long i = 0; i < spec.size(); ++i) {
+    EXPECT_EQ((full[i].ok >> 4) & 1, (early[i].ok >> 4) & 1) << i;
+    steps_full += full[i].steps;
+    steps_early += early[i].steps;
+  }
+  EXPECT_LT(steps_early, steps_full);
+}
+
+TEST(Backends, FloatFeasibilityTracksDouble) {
+  SweepSpec spec = load(kData + "/small_grid.yaml");
+  const auto d = run(spec, "cpu");
+  spec.precision = Precision::kFloat;
+  const auto f_cpu = run(spec, "cpu");
+  const auto f_scalar = run(spec, "scalar");
+  int agree = 0;
+  for (long i = 0; i < spec.size(); ++i) {
+    agree += ((d[i].ok >> 4) & 1) == ((f_cpu[i].ok >> 4) & 1);
+    EXPECT_EQ((f_cpu[i].ok >> 4) & 1, (f_scalar[i].ok >> 4) & 1) << i;
+  }
+  EXPECT_GE(agree, 0.95 * spec.size());
+}
+
+TEST(Backends, PointsFileReproducesTheSpecSelfCheckRows) {
+  const SweepSpec spec = load(kData + "/points.yaml");
+  ASSERT_EQ(spec.size(), 3);
+  struct Row {
+    unsigned char ok;
+    double iae, itae, iasc, x;
+  } rows[] = {{0x1f, 9.696094275, 44.87231536, 2.489013563, 2.000003154},
+              {0x0b, 79.66617453, 1877.785809, 0.607348822, 1.666709805},
+              {0x00, 399.2117079, 13313.32912, 56.0389837, -5.025406388}};
+  for (const std::string backend : {"scalar", "cpu"}) {
+    const auto r = run(spec, backend);
+    for (int i = 0; i < 3; ++i) {
+      EXPECT_EQ(r[i].ok, rows[i].ok) << backend << " row " << i;
+      EXPECT_EQ(r[i].steps, 1801);
+      EXPECT_NEAR(r[i].iae, rows[i].iae, 1e-8 * rows[i].iae) << backend << " row " << i;
+      EXPECT_NEAR(r[i].itae, rows[i].itae, 1e-8 * rows[i].itae) << backend << " row " << i;
+      EXPECT_NEAR(r[i].iasc, rows[i].iasc, 1e-8 * rows[i].iasc) << backend << " row " << i;
+      EXPECT_NEAR(r[i].final_pos[0], rows[i].x, 1e-6) << backend << " row " << i;
+    }
+  }
+}
+
+TEST(SweepFileRefusal, UnknownKey) {
+  const std::string msg = refusal(std::string("sweep:\n") + kGoodParams + "  early_stopp: true\n");
+  EXPECT_NE(msg.find("'sweep.early_stopp' is not a known key"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("early_stop"), std::string::npos) << msg;
+}
+
+TEST(SweepFileRefusal, EmptyRange) {
+  std::string msg = refusal(
+      "sweep:\n  parameters:\n    kp: {from: 0.5, to: 0.1, count: 4}\n    kd: 0.5\n    delay: 0\n");
+  EXPECT_NE(msg.find("'sweep.parameters.kp' is an empty range"), std::string::npos) << msg;
+  msg = refusal("sweep:\n  parameters:\n    kp: {values: []}\n    kd: 0.5\n    delay: 0\n");
+  EXPECT_NE(msg.find("'sweep.parameters.kp.values' is empty"), std::string::npos) << msg;
+}
+
+TEST(SweepFileRefusal, UnknownController) {
+  const std::string msg =
+      refusal(std::string("sweep:\n  controller: lqr\n") + kGoodParams);
+  EXPECT_NE(msg.find("'sweep.controller' = 'lqr' is not a known controller: accepted 'pd_saturated'"),
+            std::string::npos)
+      << msg;
+}
+
+TEST(SweepFileRefusal, UnknownParameter) {
+  const std::string msg = refusal(std::string("sweep:\n") + kGoodParams + "    mass: 0.5\n");
+  EXPECT_NE(msg.find("'sweep.parameters.mass' is not a known key: accepted kp, kd, delay"),
+            std::string::npos)
+      << msg;
+}
+
+TEST(SweepFileRefusal, CountBelowOne) {
+  const std::string msg = refusal(
+      "sweep:\n  parameters:\n    kp: {from: 0, to: 1, count: 0}\n    kd: 0.5\n    delay: 0\n");
+  EXPECT_NE(msg.find("'sweep.parameters.kp.count' = 0 is below 1: accepted counts >= 1"),
+            std::string::npos)
+      << msg;
+}
+
+TEST(SweepFileRefusal, OtherMistakesAreNamed) {
+  EXPECT_NE(refusal("sweep:\n  parameters:\n    kp: 0.5\n    kd: 0.5\n").find("'sweep.parameters.delay' is missing"),
+            std::string::npos);
+  EXPECT_NE(refusal("sweep:\n  parameters:\n    kp: 0.5\n    kd: 0.5\n    delay: 2.5\n").find("accepted whole samples"),
+            std::string::npos);
+  EXPECT_NE(refusal(std::string("sweep:\n") + kGoodParams + "  precision: half\n").find("'double' or 'float'"),
+            std::string::npos);
+  EXPECT_NE(refusal(std::string("sweep:\n") + kGoodParams + "  order: [kp, kd]\n").find("must list every varied parameter"),
+            std::string::npos);
+  EXPECT_NE(refusal(std::string("sweep:\n") + kGoodParams + "  points: x.csv\n").find("excludes 'parameters'"),
+            std::string::npos);
+  EXPECT_NE(refusal("sweep:\n  points: missing.csv\n").find("cannot be read"), std::string::npos);
+  EXPECT_NE(refusal(std::string("sweep:\n  vehicle: nowhere.yaml\n") + kGoodParams).find("nowhere.yaml"),
+            std::string::npos);
+  EXPECT_NE(refusal("not_sweep: 1\n").find("'not_sweep' is not a known key"), std::string::npos);
+}
+
+#ifdef AURORA_SWEEP_BIN
+namespace {
+int runSweep(const std::string& args, std::string& output) {
+  FILE* p = popen((std::string(AURORA_SWEEP_BIN) + " " + args + " 2>&1").c_str(), "r");
+  char buf[512];
+  output.clear();
+  while (fgets(buf, sizeof buf, p)) output += buf;
+  const int status = pclose(p);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+}  // namespace
+
+TEST(SweepProgram, WritesResultsSummaryAndPlots) {
+  const std::string out = ::testing::TempDir() + "/sweep_program_out";
+  std::string log;
+  const int rc = runSweep("--config " + kData + "/small_grid.yaml --out " + out +
+                              " --backend cpu --threads 2 --quiet",
+                          log);
+  ASSERT_EQ(rc, 0) << log;
+  std::ifstream csv(out + "/results.csv");
+  std::string line;
+  int rows = -1;
+  while (std::getline(csv, line)) ++rows;
+  EXPECT_EQ(rows, 80);
+  std::ifstream summary(out + "/summary.json");
+  std::stringstream ss;
+  ss << summary.rdbuf();
+  EXPECT_NE(ss.str().find("\"combinations\": 80"), std::string::npos) << ss.str();
+  EXPECT_NE(ss.str().find("\"backend\": \"cpu\""), std::string::npos);
+  EXPECT_NE(ss.str().find("\"simulations_per_s\""), std::string::npos);
+  EXPECT_TRUE(std::ifstream(out + "/feasible_volume.png").good());
+  EXPECT_TRUE(std::ifstream(out + "/check1_region.png").good());  // early_stop false
+}
+
+TEST(SweepProgram, RefusesUnwritableOutputAndMissingDevice) {
+  std::string log;
+  EXPECT_EQ(runSweep("--config " + kData + "/small_grid.yaml --out /proc/aurora_sweep_out", log), 2);
+  EXPECT_NE(log.find("'/proc/aurora_sweep_out' is not writable"), std::string::npos) << log;
+  EXPECT_EQ(runSweep("--config " + kData + "/small_grid.yaml --out x --backend gpu", log), 2);
+  EXPECT_NE(log.find("accepted scalar, cpu, cuda, auto"), std::string::npos) << log;
+  EXPECT_EQ(runSweep("--config " + kData + "/nope.yaml --out x", log), 2);
+  EXPECT_NE(log.find("cannot be read"), std::string::npos) << log;
+}
+#endif
