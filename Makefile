@@ -31,6 +31,7 @@ demo: build
 
 bench: build
 	./bench/realtime_loop.sh $(BUILD)
+	./bench/sweep.sh $(BUILD)
 
 clean:
 	rm -rf $(BUILD) $(BUILD).cmake.log out
