@@ -18,6 +18,9 @@ deps:
 	./scripts/install_deps.sh
 
 build: deps
+	@# catkin bakes the test environment (setup_cached.sh) at configure time and
+	@# puts the devel python path in only if it exists then: create it first.
+	mkdir -p $(BUILD)/devel/lib/python3/dist-packages
 	$(SOURCE_ROS) cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release \
 	  -DPYTHON_EXECUTABLE=/usr/bin/python3 -DCATKIN_DEVEL_PREFIX=$(abspath $(BUILD))/devel \
 	  -DCATKIN_ENABLE_TESTING=ON > $(BUILD).cmake.log 2>&1 || { cat $(BUILD).cmake.log; exit 1; }
