@@ -35,6 +35,7 @@ demo: build
 bench: build
 	./bench/realtime_loop.sh $(BUILD)
 	./bench/sweep.sh $(BUILD)
+	./bench/report.sh $(BUILD)
 
 clean:
 	rm -rf $(BUILD) $(BUILD).cmake.log out

@@ -16,7 +16,7 @@ case "${ID}:${VERSION_ID}" in
           libroscpp-dev libtf2-ros-dev libtf2-dev libnav-msgs-dev libgeometry-msgs-dev
           libvisualization-msgs-dev libsensor-msgs-dev libstd-msgs-dev libros-rosgraph-msgs-dev
           python3-dynamic-reconfigure libdynamic-reconfigure-config-init-mutex-dev
-          rviz librosbag-dev python3-geometry-msgs python3-std-msgs python3-nav-msgs
+          rviz librosbag-dev librosbag-storage-dev python3-geometry-msgs python3-std-msgs python3-nav-msgs
           python3-rosgraph-msgs python3-tf2-msgs python3-visualization-msgs python3-sensor-msgs
           python3-rosparam python3-rosnode)
     ;;

@@ -80,10 +80,13 @@ ControllerNode::ControllerNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
     throw ParameterError("parameter '" + fullKey(pnh_, "controller/name") + "' = '" + name +
                          "' is unknown: accepted controllers: 'pd_saturated'");
   }
-  gains_.kp = requireGain(pnh_, "controller/kp");
-  gains_.kd = requireGain(pnh_, "controller/kd");
-  delay_samples_ = readDelaySamples();
-  clamp_commands_ = paramOr(pnh_, "clamp_commands", true);
+  core_.reset(new Core());
+  ControllerSettings& set = core_->settings;
+  set.Ts = Ts_;
+  set.gains.kp = requireGain(pnh_, "controller/kp");
+  set.gains.kd = requireGain(pnh_, "controller/kd");
+  set.delay = readDelaySamples();
+  set.clamp_commands = paramOr(pnh_, "clamp_commands", true);
   const std::string mode = paramOr<std::string>(pnh_, "mode", "realtime");
   if (mode != "realtime" && mode != "lockstep") {
     throw ParameterError("parameter '" + fullKey(pnh_, "mode") + "' = '" + mode +
@@ -106,8 +109,6 @@ ControllerNode::ControllerNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
                          "' is invalid: accepted range (0, 60] s");
   }
   task_ = loadTask(pnh_);
-  history_.reset(new History());
-  metrics_.reset();
 
   cmd_pub_ = nh_.advertise<geometry_msgs::Twist>("cmd_vel", 1000);
   control_pub_ = nh_.advertise<aurora_msgs::Control>("control", 1000);
@@ -117,9 +118,9 @@ ControllerNode::ControllerNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
                              ros::TransportHints().tcpNoDelay());
 
   ControllerConfig config;
-  config.kp = gains_.kp;
-  config.kd = gains_.kd;
-  config.delay_samples = static_cast<int>(delay_samples_);
+  config.kp = set.gains.kp;
+  config.kd = set.gains.kd;
+  config.delay_samples = static_cast<int>(set.delay);
   reconfigure_.updateConfig(config);
   reconfigure_.setCallback([this](ControllerConfig& c, uint32_t level) { onReconfigure(c, level); });
 
@@ -129,11 +130,12 @@ ControllerNode::ControllerNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
   publishTaskMarkers();
   ROS_INFO("controller: pd_saturated Kp=%g Kd=%g, delay %ld samples (%.4f s), %s commands, "
            "%s mode, task of %d waypoints over %.1f s",
-           gains_.kp, gains_.kd, delay_samples_, delay_samples_ * Ts_,
-           clamp_commands_ ? "clamped" : "unclamped", mode.c_str(), task_.count, task_.duration);
+           set.gains.kp, set.gains.kd, set.delay, set.delay * Ts_,
+           set.clamp_commands ? "clamped" : "unclamped", mode.c_str(), task_.count, task_.duration);
 }
 
 long ControllerNode::readDelaySamples() {
+  static_assert(Core::kMaxDelay == kHistoryCapacity - 1, "delay range follows the history");
   const bool has_samples = pnh_.hasParam("delay/samples");
   const bool has_seconds = pnh_.hasParam("delay/seconds");
   const std::string accepted = "integer samples in [0, " +
@@ -168,36 +170,35 @@ long ControllerNode::readDelaySamples() {
 }
 
 void ControllerNode::onReconfigure(ControllerConfig& config, uint32_t) {
-  if (config.kp != gains_.kp || config.kd != gains_.kd || config.delay_samples != delay_samples_) {
+  ControllerSettings& set = core_->settings;
+  if (config.kp != set.gains.kp || config.kd != set.gains.kd || config.delay_samples != set.delay) {
     ROS_INFO("controller: reconfigured Kp=%g Kd=%g delay=%d samples", config.kp, config.kd,
              config.delay_samples);
   }
-  gains_.kp = config.kp;
-  gains_.kd = config.kd;
-  delay_samples_ = config.delay_samples;
+  set.gains.kp = config.kp;
+  set.gains.kd = config.kd;
+  set.delay = config.delay_samples;
 }
 
 void ControllerNode::onState(const aurora_msgs::DroneState::ConstPtr& msg) {
-  const long step = static_cast<long>(msg->step);
-  if (step == last_step_) {
+  StateSample sample;
+  sample.step = static_cast<long>(msg->step);
+  sample.stamp_ns = static_cast<int64_t>(msg->header.stamp.toNSec());
+  aurora_sim::stateFromMsg(*msg, sample.X);
+  const bool went_back = !core_->empty() && sample.step < core_->newest().step;
+  if (!core_->push(sample)) {
     // The lockstep sim re-sends a state it got no answer to: answer again
     // with the same command; the history already holds this sample.
     if (lockstep_ && have_control_) {
       cmd_pub_.publish(aurora_sim::twistMsgFromModelCommand(last_control_.command.data()));
-    } else if (lockstep_) {
-      cycle(msg->header.stamp);
     }
     return;
   }
-  if (step < last_step_) {
-    ROS_INFO("controller: state step went back from %ld to %ld (sim reset): history cleared",
-             last_step_, step);
-    history_->clear();
-    metrics_.reset();
-    metrics_step_ = -1;
+  if (went_back) {
+    ROS_INFO("controller: state step went back to %ld (source reset): history cleared",
+             sample.step);
   }
-  history_->push(*msg);
-  last_step_ = step;
+  if (!msg->header.frame_id.empty()) state_frame_ = msg->header.frame_id;
   last_state_time_ = ros::Time::now();
   if (stale_) {
     ROS_INFO("controller: state stream is back");
@@ -216,67 +217,51 @@ void ControllerNode::onTimer(const ros::TimerEvent& event) {
 }
 
 void ControllerNode::cycle(const ros::Time& now) {
-  if (history_->size() == 0) return;  // waiting for the first state
+  if (core_->empty()) return;  // waiting for the first state
   boost::recursive_mutex::scoped_lock lock(config_mutex_);
+  const ControllerSettings& set = core_->settings;
+  const StateSample& newest = core_->newest();
+  const int wp = task_.activeIndex(WaypointTask<double>::timeOfStep(newest.step, Ts_));
+
+  const bool stale = !lockstep_ && (ros::Time::now() - last_state_time_).toSec() > stale_timeout_;
+  if (stale && !stale_) {
+    ROS_WARN("controller: no state for %.2f s (> %.2f s): commanding hover",
+             (ros::Time::now() - last_state_time_).toSec(), stale_timeout_);
+    stale_ = true;
+  }
+  const ControlOutput out = stale ? core_->hover() : core_->compute(task_.position[wp]);
+
   aurora_msgs::Control control;
   control.header.stamp = now;
   control.header.frame_id = "world";
-  const aurora_msgs::DroneState& newest = history_->delayed(0);
   control.step = newest.step;
-  const int wp = task_.activeIndex(WaypointTask<double>::timeOfStep(long(newest.step), Ts_));
   control.waypoint_index = wp;
   control.desired_position.x = task_.position[wp][0];
   control.desired_position.y = task_.position[wp][1];
   control.desired_position.z = task_.position[wp][2];
-  control.delay_samples = delay_samples_;
-  control.delay_seconds = delay_samples_ * Ts_;
+  control.delay_samples = set.delay;
+  control.delay_in_force = static_cast<uint32_t>(out.delay_in_force);
+  control.delay_seconds = set.delay * Ts_;
   control.sample_time = Ts_;
-  control.kp = gains_.kp;
-  control.kd = gains_.kd;
-  control.clamped = clamp_commands_;
-
-  const bool stale = !lockstep_ && (ros::Time::now() - last_state_time_).toSec() > stale_timeout_;
-  double U[4] = {0.0, 0.0, 0.0, 0.0};
-  if (stale) {
-    if (!stale_) {
-      ROS_WARN("controller: no state for %.2f s (> %.2f s): commanding hover",
-               (ros::Time::now() - last_state_time_).toSec(), stale_timeout_);
-      stale_ = true;
-    }
-    control.mode = "hover (stale state)";
-    control.state_used = newest;
-  } else {
-    const aurora_msgs::DroneState& used = history_->delayed(delay_samples_);
-    control.state_used = used;
-    control.delay_in_force = static_cast<uint32_t>(history_->delayInForce(delay_samples_));
-    const double pos[3] = {used.position.x, used.position.y, used.position.z};
-    const double vel[3] = {used.velocity.x, used.velocity.y, used.velocity.z};
-    const double zero[3] = {0.0, 0.0, 0.0};
-    double err[3];
-    pdSaturatedLaw(gains_, task_.position[wp], zero, zero, pos, vel, U, err);
-    control.position_error.x = err[0];
-    control.position_error.y = err[1];
-    control.position_error.z = err[2];
-    control.mode = "fly";
-  }
+  control.kp = set.gains.kp;
+  control.kd = set.gains.kd;
+  control.clamped = set.clamp_commands;
+  control.mode = stale ? "hover (stale state)" : "fly";
+  control.state_used.header.stamp.fromNSec(static_cast<uint64_t>(out.used->stamp_ns));
+  control.state_used.header.frame_id = state_frame_;
+  control.state_used.step = out.used->step;
+  aurora_sim::stateToMsg(out.used->X, control.state_used);
+  control.position_error.x = out.position_error[0];
+  control.position_error.y = out.position_error[1];
+  control.position_error.z = out.position_error[2];
   for (int i = 0; i < 4; ++i) {
-    control.command_unclamped[i] = U[i];
-    if (clamp_commands_) U[i] = aurora_sim::clampUnit(U[i]);
-    control.command[i] = U[i];
+    control.command[i] = out.U[i];
+    control.command_unclamped[i] = out.U_unclamped[i];
   }
-  // Metrics once per state step (a timer cycle without a new state, or a
-  // re-sent state, does not count twice).
-  if (static_cast<long>(newest.step) != metrics_step_) {
-    const double err[3] = {control.position_error.x, control.position_error.y,
-                           control.position_error.z};
-    metrics_.accumulate(criteria_, err, U,
-                        WaypointTask<double>::timeOfStep(long(newest.step), Ts_));
-    metrics_step_ = static_cast<long>(newest.step);
-  }
-  control.iae = metrics_.iae;
-  control.itae = metrics_.itae;
-  control.iasc = metrics_.iasc;
-  cmd_pub_.publish(aurora_sim::twistMsgFromModelCommand(U));
+  control.iae = out.iae;
+  control.itae = out.itae;
+  control.iasc = out.iasc;
+  cmd_pub_.publish(aurora_sim::twistMsgFromModelCommand(out.U));
   control_pub_.publish(control);
   last_control_ = control;
   have_control_ = true;

@@ -12,9 +12,7 @@
 #include <boost/thread/recursive_mutex.hpp>
 #include <string>
 
-#include "aurora_control/delay_buffer.h"
-#include "aurora_control/feasibility.h"
-#include "aurora_control/pd_controller.h"
+#include "aurora_control/delayed_controller.h"
 #include "aurora_control/waypoint_task.h"
 
 namespace aurora_control {
@@ -27,7 +25,7 @@ class ControllerNode {
   ControllerNode(ros::NodeHandle nh, ros::NodeHandle private_nh);
 
  private:
-  using History = DelayBuffer<aurora_msgs::DroneState, kHistoryCapacity>;
+  using Core = DelayedPdController<kHistoryCapacity>;
 
   void onState(const aurora_msgs::DroneState::ConstPtr& msg);
   void onTimer(const ros::TimerEvent& event);
@@ -38,21 +36,15 @@ class ControllerNode {
 
   ros::NodeHandle nh_, pnh_;
   double Ts_;
-  PdGains<double> gains_;
-  long delay_samples_;
-  bool clamp_commands_;
   bool lockstep_;
   bool timer_triggered_;  // realtime: compute on the 30 Hz timer instead of on each new state
   double stale_timeout_;
   WaypointTask<double> task_;
 
-  std::unique_ptr<History> history_;
+  std::unique_ptr<Core> core_;     // delay buffer, law, clamp, metrics (ROS-free)
+  std::string state_frame_ = "world";
   ros::Time last_state_time_;     // ROS time the newest state arrived
-  long last_step_ = -1;           // step of the newest state; -1: none yet
-  long metrics_step_ = -1;        // step the metrics last accumulated
   bool stale_ = false;
-  PositioningMetrics<double, bool> metrics_;
-  FeasibilityCriteria<double> criteria_ = FeasibilityCriteria<double>::study();
   aurora_msgs::Control last_control_;
   bool have_control_ = false;
 

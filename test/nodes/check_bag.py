@@ -1,39 +1,20 @@
 #!/usr/bin/python3
 """A bag recorded through sim.launch holds state, cmd_vel, control and tf."""
-import glob
 import os
-import subprocess
-import threading
-import time
 import unittest
 
 import rosbag
 import rospy
 import rostest
-from aurora_msgs.msg import DroneState
+
+from bag_helpers import record_until
 
 
 class BagTest(unittest.TestCase):
     def test_bag_has_analysis_topics(self):
         bag_dir = rospy.get_param("~bag_dir")
         prefix = rospy.get_param("~prefix")
-        started = time.time()
-        reached = threading.Event()
-        rospy.Subscriber("state", DroneState, lambda m: reached.set() if m.step >= 300 else None)
-        self.assertTrue(reached.wait(60.0), "the loop did not reach step 300")
-        # Stop the recorder the way roslaunch would at shutdown; it closes the bag.
-        subprocess.run(["rosnode", "kill", rospy.get_namespace() + "recorder"], check=True,
-                       stdout=subprocess.PIPE, stderr=subprocess.STDOUT)
-        bag_path = None
-        deadline = time.time() + 20
-        while time.time() < deadline and bag_path is None:
-            fresh = [p for p in glob.glob(os.path.join(bag_dir, prefix + "_*.bag"))
-                     if os.path.getmtime(p) >= started - 1]
-            if fresh:
-                bag_path = max(fresh, key=os.path.getmtime)
-            else:
-                time.sleep(0.2)
-        self.assertIsNotNone(bag_path, "no closed bag %s_*.bag in %s" % (prefix, bag_dir))
+        bag_path = record_until(300, bag_dir, prefix)
         ns = rospy.get_namespace()
         with rosbag.Bag(bag_path) as bag:
             info = bag.get_type_and_topic_info().topics

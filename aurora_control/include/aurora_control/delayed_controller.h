@@ -1,0 +1,121 @@
+// The controller node's per-cycle computation, ROS-free: received states go
+// into the delay buffer; each cycle the PD law with saturation runs on the
+// delayed state (ardrone-model.md, "Delayed feedback" and eq. 3.1), the
+// command is clamped as the drivers do (optional), and the study's metrics
+// accumulate once per state step. The node and the offline `replay` tool
+// both call this class, so a replay of a bag reproduces every command.
+#pragma once
+
+#include <cstdint>
+
+#include "aurora_control/delay_buffer.h"
+#include "aurora_control/feasibility.h"
+#include "aurora_control/pd_controller.h"
+#include "aurora_sim/scalar_math.h"
+#include "aurora_sim/state_index.h"
+
+namespace aurora_control {
+
+struct StateSample {
+  long step = 0;           // the source's sample index (DroneState.step)
+  int64_t stamp_ns = 0;    // header stamp [ns]
+  double X[aurora_sim::kStateSize] = {};
+};
+
+struct ControllerSettings {
+  PdGains<double> gains{0.0, 0.0};
+  long delay = 0;          // [samples]
+  bool clamp_commands = true;
+  double Ts = 1.0 / 30.0;  // [s], the vehicle's sample time (metric time = step Ts)
+};
+
+struct ControlOutput {
+  double U[4] = {0, 0, 0, 0};            // as sent (clamped when configured)
+  double U_unclamped[4] = {0, 0, 0, 0};  // as the law computed it
+  double position_error[3] = {0, 0, 0};  // desired - used position [m]
+  const StateSample* used = nullptr;     // the (delayed) state the law used
+  long delay_in_force = 0;               // samples between the newest state and `used`
+  double iae = 0, itae = 0, iasc = 0;    // running metrics after this cycle
+};
+
+template <int Capacity>
+class DelayedPdController {
+ public:
+  static constexpr long kMaxDelay = Capacity - 1;
+
+  ControllerSettings settings;
+
+  DelayedPdController() { reset(); }
+
+  void reset() {
+    history_.clear();
+    metrics_.reset();
+    metrics_step_ = -1;
+  }
+
+  // Adds a received state. A state whose step equals the newest one is a
+  // re-send (lockstep) and is not added (returns false); a step going back
+  // means the source was reset: the history and metrics start again.
+  bool push(const StateSample& s) {
+    if (history_.size() > 0) {
+      const long newest = history_.delayed(0).step;
+      if (s.step == newest) return false;
+      if (s.step < newest) reset();
+    }
+    history_.push(s);
+    return true;
+  }
+
+  bool empty() const { return history_.size() == 0; }
+  const StateSample& newest() const { return history_.delayed(0); }
+
+  // One cycle of the law towards `desired` (world frame [m], zero desired
+  // velocity and acceleration: a positioning task). Requires !empty().
+  ControlOutput compute(const double desired[3]) {
+    ControlOutput out;
+    const StateSample& used = history_.delayed(settings.delay);
+    out.used = &used;
+    out.delay_in_force = history_.delayInForce(settings.delay);
+    const double pos[3] = {used.X[aurora_sim::kX], used.X[aurora_sim::kY], used.X[aurora_sim::kZ]};
+    const double vel[3] = {used.X[aurora_sim::kVx], used.X[aurora_sim::kVy], used.X[aurora_sim::kVz]};
+    const double zero[3] = {0.0, 0.0, 0.0};
+    pdSaturatedLaw(settings.gains, desired, zero, zero, pos, vel, out.U_unclamped,
+                   out.position_error);
+    finish(out);
+    return out;
+  }
+
+  // The command while the state is stale: hover (all zero); the metrics
+  // gain nothing (zero error, zero command).
+  ControlOutput hover() {
+    ControlOutput out;
+    out.used = &newest();
+    finish(out);
+    return out;
+  }
+
+ private:
+  void finish(ControlOutput& out) {
+    for (int i = 0; i < 4; ++i) {
+      out.U[i] = settings.clamp_commands ? aurora_sim::clampUnit(out.U_unclamped[i])
+                                         : out.U_unclamped[i];
+    }
+    // Metrics once per state step (a timer cycle without a new state, or a
+    // re-sent state, does not count twice); t = step Ts.
+    const long step = newest().step;
+    if (step != metrics_step_) {
+      metrics_.accumulate(criteria_, out.position_error, out.U, double(step) * settings.Ts);
+      metrics_step_ = step;
+    }
+    out.iae = metrics_.iae;
+    out.itae = metrics_.itae;
+    out.iasc = metrics_.iasc;
+  }
+
+  DelayBuffer<StateSample, Capacity> history_;
+  PositioningMetrics<double, bool> metrics_;
+  FeasibilityCriteria<double> criteria_ = FeasibilityCriteria<double>::study();
+  long metrics_step_ = -1;
+};
+
+}  // namespace aurora_control

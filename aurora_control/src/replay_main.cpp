@@ -1,0 +1,265 @@
+// replay: feeds a recorded flight's state stream through the controller core
+// offline, with its recorded timing (each recorded control cycle sees the
+// states received up to it), and compares the commands with the recorded
+// ones. Same configuration: identical commands. Changed configuration: the
+// new commands next to the old. Any recorded flight becomes a regression
+// test for controller changes.
+#include <aurora_msgs/Control.h>
+#include <aurora_msgs/DroneState.h>
+#include <rosbag/bag.h>
+#include <rosbag/view.h>
+#include <yaml-cpp/yaml.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <map>
+#include <memory>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "aurora_control/delayed_controller.h"
+#include "aurora_sim/ros_conversions.h"
+
+namespace {
+
+using namespace aurora_control;
+
+const char* kUsage =
+    "usage: replay BAG [options]\n"
+    "\n"
+    "Replays the recorded states of BAG through the controller core and compares the\n"
+    "commands with the recorded control messages. Without options the recorded\n"
+    "configuration (gains, delay, clamping, as recorded cycle by cycle) is used and the\n"
+    "commands must be identical.\n"
+    "\n"
+    "options:\n"
+    "  --ns NAME             drone namespace (default: the only one in the bag)\n"
+    "  --controller FILE     controller YAML (config/controllers/*.yaml): gains and clamping\n"
+    "  --kp X, --kd X        gains\n"
+    "  --delay N             delay in samples\n"
+    "  --delay-seconds S     delay in seconds (rounded to whole samples)\n"
+    "  --clamp, --no-clamp   clamp commands to [-1, 1] or not\n"
+    "  --out FILE            CSV: step, recorded and replayed commands per cycle\n"
+    "  --expect-identical    exit 1 unless every command is identical\n"
+    "  -h, --help            this text\n";
+
+constexpr int kCapacity = 2048;
+
+[[noreturn]] void fail(const std::string& msg, int code = 2) {
+  std::fprintf(stderr, "replay: %s\n", msg.c_str());
+  std::exit(code);
+}
+
+double number(const std::string& flag, const std::string& v) {
+  char* end = nullptr;
+  const double x = std::strtod(v.c_str(), &end);
+  if (end == v.c_str() || *end != '\0' || !std::isfinite(x)) {
+    fail(flag + " '" + v + "' is not a number");
+  }
+  return x;
+}
+
+struct Overrides {
+  bool kp = false, kd = false, delay = false, delay_seconds = false, clamp = false;
+  double kp_value = 0, kd_value = 0, delay_seconds_value = 0;
+  long delay_value = 0;
+  bool clamp_value = true;
+  bool any() const { return kp || kd || delay || delay_seconds || clamp; }
+};
+
+void loadControllerFile(const std::string& path, Overrides& o) {
+  YAML::Node root;
+  try {
+    root = YAML::LoadFile(path);
+  } catch (const YAML::Exception& e) {
+    fail("controller file '" + path + "' cannot be read: " + e.what());
+  }
+  const YAML::Node c = root["controller"];
+  if (!c || !c["name"] || c["name"].as<std::string>() != "pd_saturated") {
+    fail("controller file '" + path + "': 'controller.name' must be 'pd_saturated'");
+  }
+  try {
+    if (c["kp"]) o.kp = true, o.kp_value = c["kp"].as<double>();
+    if (c["kd"]) o.kd = true, o.kd_value = c["kd"].as<double>();
+    if (root["clamp_commands"]) o.clamp = true, o.clamp_value = root["clamp_commands"].as<bool>();
+  } catch (const YAML::Exception& e) {
+    fail("controller file '" + path + "': " + e.what());
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::string bag_path, ns, out_path;
+  bool expect_identical = false;
+  Overrides o;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    auto value = [&]() -> std::string {
+      if (i + 1 >= argc) fail(a + " needs a value\n\n" + kUsage);
+      return argv[++i];
+    };
+    if (a == "-h" || a == "--help") {
+      std::fputs(kUsage, stdout);
+      return 0;
+    } else if (a == "--ns") {
+      ns = value();
+    } else if (a == "--controller") {
+      loadControllerFile(value(), o);
+    } else if (a == "--kp") {
+      o.kp = true, o.kp_value = number(a, value());
+    } else if (a == "--kd") {
+      o.kd = true, o.kd_value = number(a, value());
+    } else if (a == "--delay") {
+      const double d = number(a, value());
+      if (d < 0 || d != std::floor(d) || d > kCapacity - 1) {
+        fail("--delay must be whole samples in [0, " + std::to_string(kCapacity - 1) + "]");
+      }
+      o.delay = true, o.delay_value = static_cast<long>(d);
+    } else if (a == "--delay-seconds") {
+      o.delay_seconds = true, o.delay_seconds_value = number(a, value());
+      if (o.delay_seconds_value < 0) fail("--delay-seconds must be >= 0");
+    } else if (a == "--clamp") {
+      o.clamp = true, o.clamp_value = true;
+    } else if (a == "--no-clamp") {
+      o.clamp = true, o.clamp_value = false;
+    } else if (a == "--out") {
+      out_path = value();
+    } else if (a == "--expect-identical") {
+      expect_identical = true;
+    } else if (!a.empty() && a[0] == '-') {
+      fail("unknown option '" + a + "'\n\n" + kUsage);
+    } else if (bag_path.empty()) {
+      bag_path = a;
+    } else {
+      fail("one bag at a time ('" + a + "' is extra)");
+    }
+  }
+  if (bag_path.empty()) fail(std::string("a bag is required\n\n") + kUsage);
+
+  rosbag::Bag bag;
+  try {
+    bag.open(bag_path, rosbag::bagmode::Read);
+  } catch (const rosbag::BagException& e) {
+    fail("bag '" + bag_path + "' cannot be read (truncated, still recording, or not a bag?): " +
+         e.what());
+  }
+  // Find the drone's topics.
+  std::set<std::string> topics;
+  {
+    rosbag::View all(bag);
+    for (const rosbag::ConnectionInfo* c : all.getConnections()) topics.insert(c->topic);
+  }
+  if (ns.empty()) {
+    std::vector<std::string> candidates;
+    for (const std::string& t : topics) {
+      const std::string suffix = "/control";
+      if (t.size() > suffix.size() && t.compare(t.size() - suffix.size(), suffix.size(), suffix) == 0 &&
+          topics.count(t.substr(0, t.size() - suffix.size()) + "/state")) {
+        candidates.push_back(t.substr(0, t.size() - suffix.size()));
+      }
+    }
+    if (candidates.size() != 1) {
+      std::string present;
+      for (const auto& t : topics) present += " " + t;
+      fail(candidates.empty() ? "the bag has no <ns>/state and <ns>/control pair; present:" + present
+                              : "the bag has several drones: choose one with --ns");
+    }
+    ns = candidates[0];
+  }
+  if (ns.front() != '/') ns = "/" + ns;
+  for (const std::string t : {ns + "/state", ns + "/control"}) {
+    if (!topics.count(t)) {
+      std::string present;
+      for (const auto& p : topics) present += " " + p;
+      fail("the bag lacks " + t + "; present:" + present);
+    }
+  }
+
+  std::map<long, StateSample> states;
+  std::vector<aurora_msgs::Control> controls;
+  try {
+    rosbag::View view(bag, rosbag::TopicQuery(std::vector<std::string>{ns + "/state", ns + "/control"}));
+    for (const rosbag::MessageInstance& m : view) {
+      if (auto s = m.instantiate<aurora_msgs::DroneState>()) {
+        StateSample sample;
+        sample.step = static_cast<long>(s->step);
+        sample.stamp_ns = static_cast<int64_t>(s->header.stamp.toNSec());
+        aurora_sim::stateFromMsg(*s, sample.X);
+        states.emplace(sample.step, sample);  // keeps the first of a re-sent step
+      } else if (auto c = m.instantiate<aurora_msgs::Control>()) {
+        controls.push_back(*c);
+      }
+    }
+  } catch (const std::exception& e) {
+    fail(std::string("bag '") + bag_path + "' is damaged: " + e.what());
+  }
+  if (controls.empty() || states.empty()) fail("no " + ns + "/control or " + ns + "/state messages");
+
+  std::unique_ptr<DelayedPdController<kCapacity>> core(new DelayedPdController<kCapacity>());
+  FILE* csv = nullptr;
+  if (!out_path.empty()) {
+    csv = std::fopen(out_path.c_str(), "w");
+    if (!csv) fail("cannot write '" + out_path + "'");
+    std::fprintf(csv, "step,recorded_u1,recorded_u2,recorded_u3,recorded_u4,replayed_u1,replayed_u2,"
+                      "replayed_u3,replayed_u4,max_abs_diff\n");
+  }
+  long identical = 0, cycles = 0, missing = 0;
+  double max_diff = 0.0;
+  long next_step = states.begin()->first;
+  double last_iae = 0, last_itae = 0, last_iasc = 0;
+  for (const aurora_msgs::Control& c : controls) {
+    // The states the controller had received at this cycle: up to c.step.
+    while (next_step <= static_cast<long>(c.step)) {
+      auto it = states.find(next_step);
+      if (it != states.end()) {
+        core->push(it->second);
+      } else {
+        ++missing;
+      }
+      ++next_step;
+    }
+    if (core->empty()) continue;
+    ControllerSettings& set = core->settings;
+    set.Ts = c.sample_time;
+    set.gains.kp = o.kp ? o.kp_value : c.kp;
+    set.gains.kd = o.kd ? o.kd_value : c.kd;
+    set.delay = o.delay ? o.delay_value
+                        : (o.delay_seconds ? std::lround(o.delay_seconds_value / c.sample_time)
+                                           : static_cast<long>(c.delay_samples));
+    set.clamp_commands = o.clamp ? o.clamp_value : static_cast<bool>(c.clamped);
+    const double desired[3] = {c.desired_position.x, c.desired_position.y, c.desired_position.z};
+    const ControlOutput out = c.mode.rfind("hover", 0) == 0 ? core->hover() : core->compute(desired);
+    double diff = 0.0;
+    for (int i = 0; i < 4; ++i) diff = std::max(diff, std::fabs(out.U[i] - c.command[i]));
+    bool same = true;
+    for (int i = 0; i < 4; ++i) same = same && out.U[i] == c.command[i];
+    identical += same;
+    max_diff = std::max(max_diff, diff);
+    ++cycles;
+    last_iae = out.iae, last_itae = out.itae, last_iasc = out.iasc;
+    if (csv) {
+      std::fprintf(csv, "%lu,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n",
+                   static_cast<unsigned long>(c.step), c.command[0], c.command[1], c.command[2],
+                   c.command[3], out.U[0], out.U[1], out.U[2], out.U[3], diff);
+    }
+  }
+  if (csv) std::fclose(csv);
+  const aurora_msgs::Control& last = controls.back();
+  std::printf("replay: %s: %ld control cycles, %ld identical, %ld differ, max |dU| = %.6g%s\n",
+              ns.c_str(), cycles, identical, cycles - identical, max_diff,
+              o.any() ? " (changed configuration)" : " (recorded configuration)");
+  std::printf("replay: metrics recorded IAE %.10g ITAE %.10g IASC %.10g; replayed IAE %.10g "
+              "ITAE %.10g IASC %.10g\n",
+              last.iae, last.itae, last.iasc, last_iae, last_itae, last_iasc);
+  if (missing > 0) {
+    std::printf("replay: %ld state steps missing from the bag (the recorder dropped them); "
+                "the replayed history differs there\n", missing);
+  }
+  if (out_path.empty() && identical != cycles) {
+    std::printf("replay: write the commands side by side with --out FILE.csv\n");
+  }
+  return expect_identical && identical != cycles ? 1 : 0;
+}

@@ -1,0 +1,29 @@
+"""Shared by the bag rostests: wait for a lockstep run to reach a step, stop
+the recorder the way roslaunch would (it closes the bag), find the bag."""
+import glob
+import os
+import subprocess
+import threading
+import time
+
+import rospy
+from aurora_msgs.msg import DroneState
+
+
+def record_until(steps, bag_dir, prefix, timeout=120.0):
+    started = time.time()
+    reached = threading.Event()
+    sub = rospy.Subscriber("state", DroneState, lambda m: reached.set() if m.step >= steps else None)
+    if not reached.wait(timeout):
+        raise AssertionError("the loop did not reach step %d in %.0f s" % (steps, timeout))
+    sub.unregister()
+    subprocess.run(["rosnode", "kill", rospy.get_namespace() + "recorder"], check=True,
+                   stdout=subprocess.PIPE, stderr=subprocess.STDOUT)
+    deadline = time.time() + 30
+    while time.time() < deadline:
+        fresh = [p for p in glob.glob(os.path.join(bag_dir, prefix + "_*.bag"))
+                 if os.path.getmtime(p) >= started - 1]
+        if fresh:
+            return max(fresh, key=os.path.getmtime)
+        time.sleep(0.2)
+    raise AssertionError("no closed bag %s_*.bag in %s" % (prefix, bag_dir))
