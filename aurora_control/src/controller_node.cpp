@@ -6,8 +6,11 @@
 
 #include <cmath>
 
-#include "aurora_control/task_check.h"
+#include <limits>
+#include <std_msgs/Empty.h>
+
 #include "aurora_sim/command_mapping.h"
+#include "controller_params.h"
 #include "aurora_sim/ros_conversions.h"
 #include "aurora_sim/ros_params.h"
 
@@ -17,57 +20,6 @@ using aurora_sim::fullKey;
 using aurora_sim::ParameterError;
 using aurora_sim::paramOr;
 using aurora_sim::requireParam;
-
-namespace {
-
-double requireGain(const ros::NodeHandle& pnh, const std::string& key) {
-  const double value = requireParam<double>(pnh, key, "a number in [0, 10]");
-  if (!(std::isfinite(value) && value >= 0.0 && value <= 10.0)) {
-    throw ParameterError("parameter '" + fullKey(pnh, key) + "' = " + std::to_string(value) +
-                         " is invalid: accepted range [0, 10]");
-  }
-  return value;
-}
-
-double xmlNumber(XmlRpc::XmlRpcValue& v, const std::string& key) {
-  if (v.getType() == XmlRpc::XmlRpcValue::TypeDouble) return static_cast<double>(v);
-  if (v.getType() == XmlRpc::XmlRpcValue::TypeInt) return static_cast<int>(v);
-  throw ParameterError("'" + key + "' must be a number");
-}
-
-WaypointTask<double> loadTask(const ros::NodeHandle& pnh) {
-  const std::string prefix = fullKey(pnh, "task") + "/";
-  XmlRpc::XmlRpcValue waypoints, end_times;
-  if (!pnh.getParam("task/waypoints", waypoints) ||
-      waypoints.getType() != XmlRpc::XmlRpcValue::TypeArray) {
-    throw ParameterError("missing parameter '" + prefix +
-                         "waypoints' (accepted: a list of [x, y, z] in m; load a task file "
-                         "such as config/tasks/mission4.yaml, launch arg 'task')");
-  }
-  if (!pnh.getParam("task/end_times", end_times) ||
-      end_times.getType() != XmlRpc::XmlRpcValue::TypeArray ||
-      end_times.size() != waypoints.size()) {
-    throw ParameterError("parameter '" + prefix +
-                         "end_times' must be a list with one time [s] per waypoint");
-  }
-  WaypointTask<double> task;
-  task.count = waypoints.size();
-  if (task.count > 16) task.count = 17;  // rejected by checkTask with the accepted range
-  for (int i = 0; i < waypoints.size() && i < 16; ++i) {
-    const std::string key = prefix + "waypoints[" + std::to_string(i) + "]";
-    if (waypoints[i].getType() != XmlRpc::XmlRpcValue::TypeArray || waypoints[i].size() != 3) {
-      throw ParameterError("'" + key + "' must be [x, y, z] in m");
-    }
-    for (int j = 0; j < 3; ++j) task.position[i][j] = xmlNumber(waypoints[i][j], key);
-    task.end_time[i] = xmlNumber(end_times[i], prefix + "end_times");
-  }
-  task.duration = requireParam<double>(pnh, "task/duration", "a time in (0, 86400] s");
-  const std::string problem = checkTask(task, prefix);
-  if (!problem.empty()) throw ParameterError(problem);
-  return task;
-}
-
-}  // namespace
 
 ControllerNode::ControllerNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
     : nh_(nh), pnh_(private_nh), reconfigure_(config_mutex_, private_nh) {
@@ -103,17 +55,27 @@ ControllerNode::ControllerNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
                          "' is invalid: accepted values 'state', 'timer'");
   }
   timer_triggered_ = !lockstep_ && trigger == "timer";
-  stale_timeout_ = paramOr(pnh_, "stale_timeout", 0.5);
-  if (!(stale_timeout_ > 0.0 && stale_timeout_ <= 60.0)) {
-    throw ParameterError("parameter '" + fullKey(pnh_, "stale_timeout") +
-                         "' is invalid: accepted range (0, 60] s");
-  }
   task_ = loadTask(pnh_);
+  const SafetyConfig safety = loadSafetyConfig(pnh_);
+  supervisor_.configure(safety);
+  JoystickConfig joystick;
+  joystick_enabled_ = loadJoystickConfig(pnh_, joystick);
+  joystick_ = JoystickMapper(joystick);
+  resume_ = ResumeSlew(joystick.resume_max_step);
 
   cmd_pub_ = nh_.advertise<geometry_msgs::Twist>("cmd_vel", 1000);
   control_pub_ = nh_.advertise<aurora_msgs::Control>("control", 1000);
   markers_pub_ = nh_.advertise<visualization_msgs::MarkerArray>("waypoints", 1, true);
   desired_path_pub_ = nh_.advertise<nav_msgs::Path>("desired_path", 1, true);
+  // The drivers' names (ardrone_autonomy: ardrone/takeoff ...; bebop_autonomy:
+  // takeoff ...) are set by remapping in the launch file.
+  takeoff_pub_ = nh_.advertise<std_msgs::Empty>("takeoff", 1);
+  land_pub_ = nh_.advertise<std_msgs::Empty>("land", 1);
+  reset_pub_ = nh_.advertise<std_msgs::Empty>("reset", 1);
+  if (joystick_enabled_) {
+    joy_sub_ = nh_.subscribe("joy", 10, &ControllerNode::onJoy, this,
+                             ros::TransportHints().tcpNoDelay());
+  }
   state_sub_ = nh_.subscribe("state", 100, &ControllerNode::onState, this,
                              ros::TransportHints().tcpNoDelay());
 
@@ -126,12 +88,15 @@ ControllerNode::ControllerNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
 
   if (!lockstep_) {
     timer_ = nh_.createTimer(ros::Duration(Ts_), &ControllerNode::onTimer, this);
+    rate_timer_ = nh_.createWallTimer(ros::WallDuration(1.0), &ControllerNode::onRateCheck, this);
   }
   publishTaskMarkers();
   ROS_INFO("controller: pd_saturated Kp=%g Kd=%g, delay %ld samples (%.4f s), %s commands, "
-           "%s mode, task of %d waypoints over %.1f s",
+           "%s mode, task of %d waypoints over %.1f s%s%s",
            set.gains.kp, set.gains.kd, set.delay, set.delay * Ts_,
-           set.clamp_commands ? "clamped" : "unclamped", mode.c_str(), task_.count, task_.duration);
+           set.clamp_commands ? "clamped" : "unclamped", mode.c_str(), task_.count, task_.duration,
+           safety.flight_sequence ? ", flight sequence (take-off, task, landing)" : "",
+           joystick_enabled_ ? ", joystick override" : "");
 }
 
 long ControllerNode::readDelaySamples() {
@@ -181,6 +146,14 @@ void ControllerNode::onReconfigure(ControllerConfig& config, uint32_t) {
 }
 
 void ControllerNode::onState(const aurora_msgs::DroneState::ConstPtr& msg) {
+  if (msg->stale) {
+    // The estimator says its source stopped: not a fresh state; the
+    // watchdogs see the age grow.
+    if (!warned_stale_input_) ROS_WARN("controller: the state source reports stale states");
+    warned_stale_input_ = true;
+    return;
+  }
+  warned_stale_input_ = false;
   StateSample sample;
   sample.step = static_cast<long>(msg->step);
   sample.stamp_ns = static_cast<int64_t>(msg->header.stamp.toNSec());
@@ -189,9 +162,7 @@ void ControllerNode::onState(const aurora_msgs::DroneState::ConstPtr& msg) {
   if (!core_->push(sample)) {
     // The lockstep sim re-sends a state it got no answer to: answer again
     // with the same command; the history already holds this sample.
-    if (lockstep_ && have_control_) {
-      cmd_pub_.publish(aurora_sim::twistMsgFromModelCommand(last_control_.command.data()));
-    }
+    if (lockstep_ && have_control_) sendCommand(last_control_.command.data());
     return;
   }
   if (went_back) {
@@ -200,10 +171,6 @@ void ControllerNode::onState(const aurora_msgs::DroneState::ConstPtr& msg) {
   }
   if (!msg->header.frame_id.empty()) state_frame_ = msg->header.frame_id;
   last_state_time_ = ros::Time::now();
-  if (stale_) {
-    ROS_INFO("controller: state stream is back");
-    stale_ = false;
-  }
   if (lockstep_) {
     cycle(msg->header.stamp);
   } else if (!timer_triggered_) {
@@ -211,30 +178,107 @@ void ControllerNode::onState(const aurora_msgs::DroneState::ConstPtr& msg) {
   }
 }
 
+double ControllerNode::stateAge() const {
+  if (core_->empty()) return std::numeric_limits<double>::infinity();
+  return lockstep_ ? 0.0 : (ros::Time::now() - last_state_time_).toSec();
+}
+
 void ControllerNode::onTimer(const ros::TimerEvent& event) {
-  const bool stale = (ros::Time::now() - last_state_time_).toSec() > stale_timeout_;
-  if (timer_triggered_ || stale) cycle(event.current_real);
+  // The watchdogs run here when no state arrives; with trigger=timer the law too.
+  const bool fresh = stateAge() <= Ts_ * 1.5;
+  if (timer_triggered_ || !fresh || supervisor_.phase() != FlightPhase::kFly) cycle(event.current_real);
+}
+
+void ControllerNode::onRateCheck(const ros::WallTimerEvent&) {
+  const double rate = static_cast<double>(sent_in_window_);  // per 1 s window
+  sent_in_window_ = 0;
+  const bool flying = supervisor_.phase() == FlightPhase::kFly;
+  const bool low = flying && rate < 0.5 / Ts_;
+  if (low && !low_rate_) {
+    ROS_WARN("controller: command rate %.1f Hz is below half the nominal %.1f Hz", rate, 1.0 / Ts_);
+  } else if (!low && low_rate_) {
+    ROS_INFO("controller: command rate back to %.1f Hz", rate);
+  }
+  low_rate_ = low;
+}
+
+void ControllerNode::onJoy(const sensor_msgs::Joy::ConstPtr& msg) {
+  const bool was_held = joy_.deadman;
+  joy_ = joystick_.map(msg->axes, msg->buttons);
+  if (joy_.takeoff) {
+    ROS_INFO("controller: joystick take-off");
+    takeoff_pub_.publish(std_msgs::Empty());
+  }
+  if (joy_.land) {
+    ROS_WARN("controller: joystick land");
+    land_pub_.publish(std_msgs::Empty());
+  }
+  if (joy_.reset) {
+    ROS_WARN("controller: joystick emergency reset");
+    reset_pub_.publish(std_msgs::Empty());
+  }
+  if (joy_.deadman) {
+    if (!was_held) ROS_WARN("controller: joystick override (deadman held)");
+    // The joystick wins at once, not at the next cycle.
+    double U[4];
+    aurora_sim::modelCommandFromTwist(joy_.sticks, U);
+    sendCommand(U);
+  } else if (was_held) {
+    ROS_INFO("controller: joystick released: back to the controller");
+    resume_.start(last_sent_);
+  }
+}
+
+void ControllerNode::sendCommand(const double U[4]) {
+  cmd_pub_.publish(aurora_sim::twistMsgFromModelCommand(U));
+  for (int i = 0; i < 4; ++i) last_sent_[i] = U[i];
+  ++sent_in_window_;
 }
 
 void ControllerNode::cycle(const ros::Time& now) {
-  if (core_->empty()) return;  // waiting for the first state
   boost::recursive_mutex::scoped_lock lock(config_mutex_);
   const ControllerSettings& set = core_->settings;
-  const StateSample& newest = core_->newest();
-  const int wp = task_.activeIndex(WaypointTask<double>::timeOfStep(newest.step, Ts_));
-
-  const bool stale = !lockstep_ && (ros::Time::now() - last_state_time_).toSec() > stale_timeout_;
-  if (stale && !stale_) {
-    ROS_WARN("controller: no state for %.2f s (> %.2f s): commanding hover",
-             (ros::Time::now() - last_state_time_).toSec(), stale_timeout_);
-    stale_ = true;
+  const double age = stateAge();
+  static const double kNoState[aurora_sim::kStateSize] = {};
+  const bool have_state = !core_->empty();
+  const StateSample* newest = have_state ? &core_->newest() : nullptr;
+  const long task_step = have_state ? newest->step - supervisor_.flyStartStep() : 0;
+  const double task_time = WaypointTask<double>::timeOfStep(task_step, Ts_);
+  const FlightDecision decision = supervisor_.update(
+      now.toSec(), age, have_state ? newest->X : kNoState, have_state ? newest->step : 0,
+      task_time, task_.duration);
+  if (!decision.event.empty()) {
+    const bool safety = decision.event.rfind("hover", 0) == 0 || decision.event.rfind("land (", 0) == 0;
+    if (safety) {
+      ROS_WARN("controller: %s", decision.event.c_str());
+    } else {
+      ROS_INFO("controller: %s", decision.event.c_str());
+    }
   }
-  const ControlOutput out = stale ? core_->hover() : core_->compute(task_.position[wp]);
+  if (decision.send_takeoff) takeoff_pub_.publish(std_msgs::Empty());
+  if (decision.send_land) land_pub_.publish(std_msgs::Empty());
+  if (!have_state) {
+    const double hover[4] = {0, 0, 0, 0};
+    if (!lockstep_) sendCommand(hover);  // drivers expect a steady command stream
+    return;
+  }
+
+  const int wp = task_.activeIndex(task_time);
+  ControlOutput out = decision.run_law ? core_->compute(task_.position[wp]) : core_->hover();
+  std::string mode = decision.mode;
+  if (joy_.deadman) {
+    aurora_sim::modelCommandFromTwist(joy_.sticks, out.U);
+    mode = "joystick";
+  } else if (resume_.active()) {
+    resume_.apply(out.U);
+    mode += " (resuming from joystick)";
+  }
+  if (low_rate_) mode += " [low command rate]";
 
   aurora_msgs::Control control;
   control.header.stamp = now;
   control.header.frame_id = "world";
-  control.step = newest.step;
+  control.step = newest->step;
   control.waypoint_index = wp;
   control.desired_position.x = task_.position[wp][0];
   control.desired_position.y = task_.position[wp][1];
@@ -246,7 +290,7 @@ void ControllerNode::cycle(const ros::Time& now) {
   control.kp = set.gains.kp;
   control.kd = set.gains.kd;
   control.clamped = set.clamp_commands;
-  control.mode = stale ? "hover (stale state)" : "fly";
+  control.mode = mode;
   control.state_used.header.stamp.fromNSec(static_cast<uint64_t>(out.used->stamp_ns));
   control.state_used.header.frame_id = state_frame_;
   control.state_used.step = out.used->step;
@@ -261,7 +305,7 @@ void ControllerNode::cycle(const ros::Time& now) {
   control.iae = out.iae;
   control.itae = out.itae;
   control.iasc = out.iasc;
-  cmd_pub_.publish(aurora_sim::twistMsgFromModelCommand(out.U));
+  sendCommand(out.U);
   control_pub_.publish(control);
   last_control_ = control;
   have_control_ = true;

@@ -1,5 +1,7 @@
 // ROS wrapper of the delay-study controller: feeds received states into the
-// delay buffer and publishes the command computed from the delayed state.
+// delay buffer and publishes the command computed from the delayed state;
+// runs the flight sequence and safety watchdogs (FlightSupervisor) and the
+// joystick override. The same node flies the simulated and the real drone.
 #pragma once
 
 #include <aurora_control/ControllerConfig.h>
@@ -7,12 +9,15 @@
 #include <aurora_msgs/DroneState.h>
 #include <dynamic_reconfigure/server.h>
 #include <ros/ros.h>
+#include <sensor_msgs/Joy.h>
 
-#include <memory>
 #include <boost/thread/recursive_mutex.hpp>
+#include <memory>
 #include <string>
 
 #include "aurora_control/delayed_controller.h"
+#include "aurora_control/flight_supervisor.h"
+#include "aurora_control/joystick.h"
 #include "aurora_control/waypoint_task.h"
 
 namespace aurora_control {
@@ -28,31 +33,46 @@ class ControllerNode {
   using Core = DelayedPdController<kHistoryCapacity>;
 
   void onState(const aurora_msgs::DroneState::ConstPtr& msg);
+  void onJoy(const sensor_msgs::Joy::ConstPtr& msg);
   void onTimer(const ros::TimerEvent& event);
+  void onRateCheck(const ros::WallTimerEvent& event);
   void onReconfigure(ControllerConfig& config, uint32_t level);
   void cycle(const ros::Time& now);
+  void sendCommand(const double U[4]);
   void publishTaskMarkers();
   long readDelaySamples();
+  double stateAge() const;
 
   ros::NodeHandle nh_, pnh_;
   double Ts_;
   bool lockstep_;
   bool timer_triggered_;  // realtime: compute on the 30 Hz timer instead of on each new state
-  double stale_timeout_;
   WaypointTask<double> task_;
 
   std::unique_ptr<Core> core_;     // delay buffer, law, clamp, metrics (ROS-free)
+  FlightSupervisor supervisor_;    // flight sequence and watchdogs (ROS-free)
   std::string state_frame_ = "world";
-  ros::Time last_state_time_;     // ROS time the newest state arrived
-  bool stale_ = false;
+  ros::Time last_state_time_;      // ROS time the newest fresh state arrived
+  bool warned_stale_input_ = false;
   aurora_msgs::Control last_control_;
   bool have_control_ = false;
+
+  bool joystick_enabled_ = false;
+  JoystickMapper joystick_;
+  JoystickInput joy_;              // newest joystick input
+  ResumeSlew resume_;
+  double last_sent_[4] = {0, 0, 0, 0};
+
+  long sent_in_window_ = 0;        // cmd_vel messages since the last rate check
+  bool low_rate_ = false;
 
   boost::recursive_mutex config_mutex_;
   dynamic_reconfigure::Server<ControllerConfig> reconfigure_;
   ros::Publisher cmd_pub_, control_pub_, markers_pub_, desired_path_pub_;
-  ros::Subscriber state_sub_;
+  ros::Publisher takeoff_pub_, land_pub_, reset_pub_;
+  ros::Subscriber state_sub_, joy_sub_;
   ros::Timer timer_;
+  ros::WallTimer rate_timer_;
 };
 
 }  // namespace aurora_control

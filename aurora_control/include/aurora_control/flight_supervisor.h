@@ -1,0 +1,151 @@
+// Flight sequence and safety watchdogs of the controller (ROS-free): wait for
+// a fresh state, take off, wait until hovering at the start altitude, fly
+// the task, land at the end; hover when the state goes stale, land when it
+// stays stale or the drone leaves the safety box. Each safety action is
+// reported once (`event`) and named in `mode` for the control message.
+#pragma once
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "aurora_sim/state_index.h"
+
+namespace aurora_control {
+
+struct SafetyConfig {
+  bool flight_sequence = false;   // false: fly from the first state (simulation, the study)
+  double takeoff_altitude = 0.75; // [m] hover altitude after take-off (the study's start)
+  double takeoff_tolerance = 0.1; // [m] "at the start altitude" within this
+  double takeoff_timeout = 15.0;  // [s] give up and land after this
+  double landed_altitude = 0.1;   // [m] below this while landing: landed
+  double hover_after = 0.5;       // [s] state age that commands hover
+  double land_after = 0.0;        // [s] state age that commands landing; 0 = never
+  bool box_enabled = false;       // land when the drone leaves [box_min, box_max]
+  double box_min[3] = {0, 0, 0};  // [m] world frame
+  double box_max[3] = {0, 0, 0};
+};
+
+enum class FlightPhase { kWaitState, kTakeoff, kFly, kLand, kLanded };
+
+struct FlightDecision {
+  bool run_law = false;      // true: the control law; false: hover (all zero)
+  bool send_takeoff = false;
+  bool send_land = false;
+  std::string mode;          // for the control message
+  std::string event;         // non-empty once, when a safety action or phase change begins
+};
+
+class FlightSupervisor {
+ public:
+  explicit FlightSupervisor(const SafetyConfig& cfg = SafetyConfig()) { configure(cfg); }
+
+  void configure(const SafetyConfig& cfg) {
+    cfg_ = cfg;
+    phase_ = cfg.flight_sequence ? FlightPhase::kWaitState : FlightPhase::kFly;
+    fly_start_step_ = 0;
+    last_mode_.clear();
+  }
+
+  FlightPhase phase() const { return phase_; }
+  // Step of the state at which the task started (task time = (step - this) Ts).
+  long flyStartStep() const { return fly_start_step_; }
+
+  // now [s]; state_age: time since the last fresh state [s] (infinite if
+  // none); X and step: the newest state; task_time [s] since the task
+  // started; task_duration [s].
+  FlightDecision update(double now, double state_age, const double X[aurora_sim::kStateSize],
+                        long step, double task_time, double task_duration) {
+    FlightDecision d;
+    const bool have_state = std::isfinite(state_age);
+    switch (phase_) {
+      case FlightPhase::kWaitState:
+        if (have_state && state_age <= cfg_.hover_after) {
+          d.send_takeoff = true;
+          phase_ = FlightPhase::kTakeoff;
+          takeoff_started_ = now;
+          return finish(d, "takeoff");
+        }
+        return finish(d, "wait for state");
+      case FlightPhase::kTakeoff:
+        if (staleLand(d, state_age)) return d;
+        if (std::fabs(X[aurora_sim::kZ] - cfg_.takeoff_altitude) <= cfg_.takeoff_tolerance &&
+            std::fabs(X[aurora_sim::kVz]) < 0.2) {
+          phase_ = FlightPhase::kFly;
+          fly_start_step_ = step;
+          d.run_law = true;
+          return finish(d, "fly");
+        }
+        if (now - takeoff_started_ > cfg_.takeoff_timeout) {
+          return land(d, "land (take-off did not reach the start altitude)");
+        }
+        return finish(d, "takeoff");
+      case FlightPhase::kFly:
+        if (staleLand(d, state_age)) return d;
+        if (state_age > cfg_.hover_after) {
+          return finish(d, "hover (no fresh state for " + seconds(cfg_.hover_after) + ")");
+        }
+        if (cfg_.box_enabled && outsideBox(X)) {
+          char buf[96];
+          std::snprintf(buf, sizeof buf, "land (left the safety box at %.2f, %.2f, %.2f)",
+                        X[aurora_sim::kX], X[aurora_sim::kY], X[aurora_sim::kZ]);
+          return land(d, buf);
+        }
+        if (cfg_.flight_sequence && task_time > task_duration) return land(d, "land (task complete)");
+        d.run_law = true;
+        return finish(d, "fly");
+      case FlightPhase::kLand:
+        if (have_state && X[aurora_sim::kZ] < cfg_.landed_altitude) {
+          phase_ = FlightPhase::kLanded;
+          return finish(d, "landed");
+        }
+        return finish(d, last_mode_);
+      case FlightPhase::kLanded:
+        return finish(d, "landed");
+    }
+    return d;
+  }
+
+ private:
+  static std::string seconds(double s) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%g s", s);
+    return buf;
+  }
+
+  bool outsideBox(const double X[aurora_sim::kStateSize]) const {
+    for (int i = 0; i < 3; ++i) {
+      if (X[aurora_sim::kX + i] < cfg_.box_min[i] || X[aurora_sim::kX + i] > cfg_.box_max[i]) return true;
+    }
+    return false;
+  }
+
+  bool staleLand(FlightDecision& d, double state_age) {
+    if (cfg_.land_after > 0.0 && state_age > cfg_.land_after) {
+      land(d, "land (no fresh state for " + seconds(cfg_.land_after) + ")");
+      return true;
+    }
+    return false;
+  }
+
+  FlightDecision& land(FlightDecision& d, const std::string& mode) {
+    phase_ = FlightPhase::kLand;
+    d.send_land = true;
+    return finish(d, mode);
+  }
+
+  FlightDecision& finish(FlightDecision& d, const std::string& mode) {
+    d.mode = mode;
+    if (mode != last_mode_) d.event = mode;
+    last_mode_ = mode;
+    return d;
+  }
+
+  SafetyConfig cfg_;
+  FlightPhase phase_ = FlightPhase::kFly;
+  long fly_start_step_ = 0;
+  double takeoff_started_ = 0.0;
+  std::string last_mode_;
+};
+
+}  // namespace aurora_control

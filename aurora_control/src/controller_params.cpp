@@ -1,0 +1,151 @@
+#include "controller_params.h"
+
+#include <cmath>
+
+#include "aurora_control/task_check.h"
+#include "aurora_sim/ros_params.h"
+
+namespace aurora_control {
+
+using aurora_sim::fullKey;
+using aurora_sim::ParameterError;
+using aurora_sim::paramOr;
+using aurora_sim::requireParam;
+
+double requireGain(const ros::NodeHandle& pnh, const std::string& key) {
+  const double value = requireParam<double>(pnh, key, "a number in [0, 10]");
+  if (!(std::isfinite(value) && value >= 0.0 && value <= 10.0)) {
+    throw ParameterError("parameter '" + fullKey(pnh, key) + "' = " + std::to_string(value) +
+                         " is invalid: accepted range [0, 10]");
+  }
+  return value;
+}
+
+static double xmlNumber(XmlRpc::XmlRpcValue& v, const std::string& key) {
+  if (v.getType() == XmlRpc::XmlRpcValue::TypeDouble) return static_cast<double>(v);
+  if (v.getType() == XmlRpc::XmlRpcValue::TypeInt) return static_cast<int>(v);
+  throw ParameterError("'" + key + "' must be a number");
+}
+
+WaypointTask<double> loadTask(const ros::NodeHandle& pnh) {
+  const std::string prefix = fullKey(pnh, "task") + "/";
+  XmlRpc::XmlRpcValue waypoints, end_times;
+  if (!pnh.getParam("task/waypoints", waypoints) ||
+      waypoints.getType() != XmlRpc::XmlRpcValue::TypeArray) {
+    throw ParameterError("missing parameter '" + prefix +
+                         "waypoints' (accepted: a list of [x, y, z] in m; load a task file "
+                         "such as config/tasks/mission4.yaml, launch arg 'task')");
+  }
+  if (!pnh.getParam("task/end_times", end_times) ||
+      end_times.getType() != XmlRpc::XmlRpcValue::TypeArray ||
+      end_times.size() != waypoints.size()) {
+    throw ParameterError("parameter '" + prefix +
+                         "end_times' must be a list with one time [s] per waypoint");
+  }
+  WaypointTask<double> task;
+  task.count = waypoints.size();
+  if (task.count > 16) task.count = 17;  // rejected by checkTask with the accepted range
+  for (int i = 0; i < waypoints.size() && i < 16; ++i) {
+    const std::string key = prefix + "waypoints[" + std::to_string(i) + "]";
+    if (waypoints[i].getType() != XmlRpc::XmlRpcValue::TypeArray || waypoints[i].size() != 3) {
+      throw ParameterError("'" + key + "' must be [x, y, z] in m");
+    }
+    for (int j = 0; j < 3; ++j) task.position[i][j] = xmlNumber(waypoints[i][j], key);
+    task.end_time[i] = xmlNumber(end_times[i], prefix + "end_times");
+  }
+  task.duration = requireParam<double>(pnh, "task/duration", "a time in (0, 86400] s");
+  const std::string problem = checkTask(task, prefix);
+  if (!problem.empty()) throw ParameterError(problem);
+  return task;
+}
+
+
+namespace {
+
+double rangeParam(const ros::NodeHandle& pnh, const std::string& key, double fallback, double lo,
+                  double hi, const std::string& unit) {
+  const double v = paramOr(pnh, key, fallback);
+  if (!(std::isfinite(v) && v >= lo && v <= hi)) {
+    throw ParameterError("parameter '" + fullKey(pnh, key) + "' = " + std::to_string(v) +
+                         " is invalid: accepted range [" + std::to_string(lo) + ", " +
+                         std::to_string(hi) + "] " + unit);
+  }
+  return v;
+}
+
+void readVector3(const ros::NodeHandle& pnh, const std::string& key, double out[3]) {
+  std::vector<double> v;
+  if (!pnh.getParam(key, v) || v.size() != 3) {
+    throw ParameterError("parameter '" + fullKey(pnh, key) + "' must be [x, y, z] in m");
+  }
+  for (int i = 0; i < 3; ++i) out[i] = v[i];
+}
+
+int buttonParam(const ros::NodeHandle& pnh, const std::string& key, int fallback) {
+  const int b = paramOr(pnh, key, fallback);
+  if (b < -1 || b > 63) {
+    throw ParameterError("parameter '" + fullKey(pnh, key) + "' = " + std::to_string(b) +
+                         " is invalid: accepted a button index in [0, 63], or -1 for none");
+  }
+  return b;
+}
+
+AxisMap axisParam(const ros::NodeHandle& pnh, const std::string& key, const AxisMap& fallback) {
+  AxisMap m;
+  m.axis = paramOr(pnh, key + "/axis", fallback.axis);
+  m.scale = paramOr(pnh, key + "/scale", fallback.scale);
+  if (m.axis < -1 || m.axis > 63 || !std::isfinite(m.scale) || std::fabs(m.scale) > 1.0) {
+    throw ParameterError("parameter '" + fullKey(pnh, key) +
+                         "' is invalid: accepted axis in [0, 63] (-1: none) and |scale| <= 1");
+  }
+  return m;
+}
+
+}  // namespace
+
+SafetyConfig loadSafetyConfig(const ros::NodeHandle& pnh) {
+  SafetyConfig c;
+  c.flight_sequence = paramOr(pnh, "safety/flight_sequence", false);
+  c.takeoff_altitude = rangeParam(pnh, "safety/takeoff_altitude", 0.75, 0.2, 5.0, "m");
+  c.takeoff_timeout = rangeParam(pnh, "safety/takeoff_timeout", 15.0, 1.0, 120.0, "s");
+  c.hover_after = rangeParam(pnh, "safety/hover_after", 0.5, 0.01, 60.0, "s");
+  c.land_after = rangeParam(pnh, "safety/land_after", 0.0, 0.0, 600.0, "s (0 = never)");
+  if (c.land_after > 0.0 && c.land_after <= c.hover_after) {
+    throw ParameterError("parameter '" + fullKey(pnh, "safety/land_after") +
+                         "' must be 0 (never) or longer than safety/hover_after");
+  }
+  c.box_enabled = pnh.hasParam("safety/box/min") || pnh.hasParam("safety/box/max");
+  if (c.box_enabled) {
+    readVector3(pnh, "safety/box/min", c.box_min);
+    readVector3(pnh, "safety/box/max", c.box_max);
+    for (int i = 0; i < 3; ++i) {
+      if (!(c.box_min[i] < c.box_max[i])) {
+        throw ParameterError("parameter '" + fullKey(pnh, "safety/box") +
+                             "' is empty: min must be below max on every axis");
+      }
+    }
+  }
+  return c;
+}
+
+bool loadJoystickConfig(const ros::NodeHandle& pnh, JoystickConfig& c) {
+  if (!paramOr(pnh, "joystick/enabled", false)) return false;
+  const JoystickConfig d;
+  c.deadman_button = buttonParam(pnh, "joystick/buttons/deadman", d.deadman_button);
+  if (c.deadman_button < 0) {
+    throw ParameterError("parameter '" + fullKey(pnh, "joystick/buttons/deadman") +
+                         "' is required when the joystick is enabled: a button index in [0, 63]");
+  }
+  c.takeoff_button = buttonParam(pnh, "joystick/buttons/takeoff", d.takeoff_button);
+  c.land_button = buttonParam(pnh, "joystick/buttons/land", d.land_button);
+  c.reset_button = buttonParam(pnh, "joystick/buttons/reset", d.reset_button);
+  c.linear_x = axisParam(pnh, "joystick/axes/linear_x", d.linear_x);
+  c.linear_y = axisParam(pnh, "joystick/axes/linear_y", d.linear_y);
+  c.linear_z = axisParam(pnh, "joystick/axes/linear_z", d.linear_z);
+  c.angular_z = axisParam(pnh, "joystick/axes/angular_z", d.angular_z);
+  c.resume_max_step = rangeParam(pnh, "joystick/resume_max_step", d.resume_max_step, 0.001, 2.0,
+                                 "(command change per cycle)");
+  return true;
+}
+
+}  // namespace aurora_control
