@@ -61,7 +61,7 @@ ControllerNode::ControllerNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
   JoystickConfig joystick;
   joystick_enabled_ = loadJoystickConfig(pnh_, joystick);
   joystick_ = JoystickMapper(joystick);
-  resume_ = ResumeSlew(joystick.resume_max_step);
+  resume_ = ResumeSlew(joystick.resume_max_step, joystick.resume_min_cycles);
 
   cmd_pub_ = nh_.advertise<geometry_msgs::Twist>("cmd_vel", 1000);
   control_pub_ = nh_.advertise<aurora_msgs::Control>("control", 1000);
@@ -184,9 +184,11 @@ double ControllerNode::stateAge() const {
 }
 
 void ControllerNode::onTimer(const ros::TimerEvent& event) {
-  // The watchdogs run here when no state arrives; with trigger=timer the law too.
+  // The watchdogs run here when no state arrives; with trigger=timer the law
+  // too. (With trigger=state a fresh state already ran the cycle: running it
+  // here as well would double the command rate.)
   const bool fresh = stateAge() <= Ts_ * 1.5;
-  if (timer_triggered_ || !fresh || supervisor_.phase() != FlightPhase::kFly) cycle(event.current_real);
+  if (timer_triggered_ || !fresh) cycle(event.current_real);
 }
 
 void ControllerNode::onRateCheck(const ros::WallTimerEvent&) {
@@ -263,8 +265,10 @@ void ControllerNode::cycle(const ros::Time& now) {
     return;
   }
 
+  if (decision.event == "fly") core_->resetMetrics();  // the task starts now
   const int wp = task_.activeIndex(task_time);
-  ControlOutput out = decision.run_law ? core_->compute(task_.position[wp]) : core_->hover();
+  const double* target = decision.hold ? decision.hold_point : task_.position[wp];
+  ControlOutput out = decision.run_law ? core_->compute(target) : core_->hover();
   std::string mode = decision.mode;
   if (joy_.deadman) {
     aurora_sim::modelCommandFromTwist(joy_.sticks, out.U);
@@ -280,9 +284,9 @@ void ControllerNode::cycle(const ros::Time& now) {
   control.header.frame_id = "world";
   control.step = newest->step;
   control.waypoint_index = wp;
-  control.desired_position.x = task_.position[wp][0];
-  control.desired_position.y = task_.position[wp][1];
-  control.desired_position.z = task_.position[wp][2];
+  control.desired_position.x = target[0];
+  control.desired_position.y = target[1];
+  control.desired_position.z = target[2];
   control.delay_samples = set.delay;
   control.delay_in_force = static_cast<uint32_t>(out.delay_in_force);
   control.delay_seconds = set.delay * Ts_;

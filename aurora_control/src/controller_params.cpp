@@ -145,6 +145,8 @@ bool loadJoystickConfig(const ros::NodeHandle& pnh, JoystickConfig& c) {
   c.angular_z = axisParam(pnh, "joystick/axes/angular_z", d.angular_z);
   c.resume_max_step = rangeParam(pnh, "joystick/resume_max_step", d.resume_max_step, 0.001, 2.0,
                                  "(command change per cycle)");
+  c.resume_min_cycles = static_cast<int>(rangeParam(pnh, "joystick/resume_min_cycles",
+                                                    d.resume_min_cycles, 0, 3000, "cycles"));
   return true;
 }
 

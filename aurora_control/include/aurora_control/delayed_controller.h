@@ -49,6 +49,11 @@ class DelayedPdController {
 
   void reset() {
     history_.clear();
+    resetMetrics();
+  }
+
+  // The metrics start again (e.g. when the task starts after take-off).
+  void resetMetrics() {
     metrics_.reset();
     metrics_step_ = -1;
   }

@@ -16,7 +16,9 @@ namespace aurora_control {
 struct SafetyConfig {
   bool flight_sequence = false;   // false: fly from the first state (simulation, the study)
   double takeoff_altitude = 0.75; // [m] hover altitude after take-off (the study's start)
-  double takeoff_tolerance = 0.1; // [m] "at the start altitude" within this
+  double takeoff_tolerance = 0.05; // [m] "at the start point" within this
+  double hover_speed = 0.1;        // [m/s] "hovering" below this speed (above mocap velocity noise)
+  double takeoff_climbed = 0.3;    // [m] the driver's take-off is done above this
   double takeoff_timeout = 15.0;  // [s] give up and land after this
   double landed_altitude = 0.1;   // [m] below this while landing: landed
   double hover_after = 0.5;       // [s] state age that commands hover
@@ -30,6 +32,8 @@ enum class FlightPhase { kWaitState, kTakeoff, kFly, kLand, kLanded };
 
 struct FlightDecision {
   bool run_law = false;      // true: the control law; false: hover (all zero)
+  bool hold = false;         // with run_law: fly to hold_point instead of the task
+  double hold_point[3] = {0, 0, 0};
   bool send_takeoff = false;
   bool send_land = false;
   std::string mode;          // for the control message
@@ -64,20 +68,29 @@ class FlightSupervisor {
           d.send_takeoff = true;
           phase_ = FlightPhase::kTakeoff;
           takeoff_started_ = now;
+          // Hover above the take-off spot at the start altitude: the task
+          // starts from rest there, as the simulation starts at z = 0.75 m.
+          start_point_[0] = X[aurora_sim::kX];
+          start_point_[1] = X[aurora_sim::kY];
+          start_point_[2] = cfg_.takeoff_altitude;
           return finish(d, "takeoff");
         }
         return finish(d, "wait for state");
       case FlightPhase::kTakeoff:
         if (staleLand(d, state_age)) return d;
-        if (std::fabs(X[aurora_sim::kZ] - cfg_.takeoff_altitude) <= cfg_.takeoff_tolerance &&
-            std::fabs(X[aurora_sim::kVz]) < 0.2) {
+        if (atStartPoint(X)) {
           phase_ = FlightPhase::kFly;
           fly_start_step_ = step;
           d.run_law = true;
           return finish(d, "fly");
         }
         if (now - takeoff_started_ > cfg_.takeoff_timeout) {
-          return land(d, "land (take-off did not reach the start altitude)");
+          return land(d, "land (take-off did not reach the start point)");
+        }
+        if (X[aurora_sim::kZ] > cfg_.takeoff_climbed) {  // the driver's take-off is done: hold
+          d.run_law = true;
+          d.hold = true;
+          for (int i = 0; i < 3; ++i) d.hold_point[i] = start_point_[i];
         }
         return finish(d, "takeoff");
       case FlightPhase::kFly:
@@ -113,6 +126,16 @@ class FlightSupervisor {
     return buf;
   }
 
+  bool atStartPoint(const double X[aurora_sim::kStateSize]) const {
+    double e2 = 0.0, v2 = 0.0;
+    for (int i = 0; i < 3; ++i) {
+      e2 += (X[aurora_sim::kX + i] - start_point_[i]) * (X[aurora_sim::kX + i] - start_point_[i]);
+      v2 += X[aurora_sim::kVx + i] * X[aurora_sim::kVx + i];
+    }
+    return e2 <= cfg_.takeoff_tolerance * cfg_.takeoff_tolerance &&
+           v2 <= cfg_.hover_speed * cfg_.hover_speed;
+  }
+
   bool outsideBox(const double X[aurora_sim::kStateSize]) const {
     for (int i = 0; i < 3; ++i) {
       if (X[aurora_sim::kX + i] < cfg_.box_min[i] || X[aurora_sim::kX + i] > cfg_.box_max[i]) return true;
@@ -145,6 +168,7 @@ class FlightSupervisor {
   FlightPhase phase_ = FlightPhase::kFly;
   long fly_start_step_ = 0;
   double takeoff_started_ = 0.0;
+  double start_point_[3] = {0, 0, 0};
   std::string last_mode_;
 };
 

@@ -28,6 +28,7 @@ struct JoystickConfig {
   AxisMap linear_z{1, 1.0};   // left stick up: climb
   AxisMap angular_z{0, 1.0};  // left stick left: counter-clockwise yaw
   double resume_max_step = 0.05;  // largest change of any command per cycle after release
+  int resume_min_cycles = 30;     // ... applied for at least this many cycles (1 s)
 };
 
 struct JoystickInput {
@@ -73,14 +74,18 @@ class JoystickMapper {
 };
 
 // Limits the per-cycle change of the command after the joystick hands back,
-// until the controller's command is reached; then passes it through.
+// for at least `min_cycles` and until the controller's command is reached;
+// then passes it through. The minimum lets the law's own transient after the
+// manual flight settle under the same limit.
 class ResumeSlew {
  public:
-  explicit ResumeSlew(double max_step = 0.05) : max_step_(max_step) {}
+  explicit ResumeSlew(double max_step = 0.05, int min_cycles = 30)
+      : max_step_(max_step), min_cycles_(min_cycles) {}
 
   void start(const double from[4]) {
     for (int i = 0; i < 4; ++i) last_[i] = from[i];
     active_ = true;
+    cycles_ = 0;
   }
   bool active() const { return active_; }
 
@@ -95,11 +100,14 @@ class ResumeSlew {
       }
       last_[i] = U[i];
     }
-    active_ = !reached;
+    ++cycles_;
+    active_ = !reached || cycles_ < min_cycles_;
   }
 
  private:
   double max_step_;
+  int min_cycles_;
+  int cycles_ = 0;
   double last_[4] = {0, 0, 0, 0};
   bool active_ = false;
 };

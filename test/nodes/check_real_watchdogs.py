@@ -1,0 +1,145 @@
+#!/usr/bin/python3
+"""Joystick override and mocap watchdogs through real.launch against the fake driver."""
+import threading
+import time
+import unittest
+
+import rospy
+import rostest
+from aurora_msgs.msg import Control
+from geometry_msgs.msg import Twist
+from sensor_msgs.msg import Joy
+from std_msgs.msg import Empty, Float64
+
+CYCLE = 1.0 / 30.0
+
+
+class Recorder:
+    def __init__(self):
+        self.lock = threading.Lock()
+        self.cmds = []      # (receive time, (x, y, z, yaw))
+        self.modes = []     # (receive time, mode)
+        self.lands = []
+        self.controls = []  # (receive time, mode, command as cmd_vel)
+        rospy.Subscriber("/cmd_vel", Twist, self.on_cmd, queue_size=100, tcp_nodelay=True)
+        rospy.Subscriber("control", Control, self.on_control, queue_size=100)
+        rospy.Subscriber("/ardrone/land", Empty, lambda m: self.lands.append(time.time()))
+
+    def on_cmd(self, m):
+        with self.lock:
+            self.cmds.append((time.time(), (m.linear.x, m.linear.y, m.linear.z, m.angular.z)))
+
+    def on_control(self, m):
+        with self.lock:
+            self.modes.append((time.time(), m.mode))
+            # command in model order -> cmd_vel order (x, y, z, yaw) as sent
+            u = m.command
+            self.controls.append((time.time(), m.mode, (-u[1], -u[0], u[2], -u[3])))
+
+    def cmds_between(self, a, b):
+        with self.lock:
+            return [c for t, c in self.cmds if a <= t <= b]
+
+    def modes_between(self, a, b):
+        with self.lock:
+            return [m for t, m in self.modes if a <= t <= b]
+
+    def wait_mode(self, mode, timeout):
+        end = time.time() + timeout
+        while time.time() < end:
+            with self.lock:
+                if self.modes and self.modes[-1][1] == mode:
+                    return True
+            time.sleep(0.01)
+        return False
+
+
+def max_step(cmds):
+    return max((max(abs(a - b) for a, b in zip(c0, c1)) for c0, c1 in zip(cmds, cmds[1:])), default=0.0)
+
+
+class RealWatchdogsTest(unittest.TestCase):
+    def test_joystick_then_dropouts(self):
+        rec = Recorder()
+        joy = rospy.Publisher("joy", Joy, queue_size=10, tcp_nodelay=True)
+        pause = rospy.Publisher("/fake_ardrone/pause_mocap", Float64, queue_size=1, latch=True)
+        self.assertTrue(rec.wait_mode("fly", 40.0), "never reached 'fly'")
+        end = time.time() + 10
+        while (joy.get_num_connections() == 0 or pause.get_num_connections() == 0) and time.time() < end:
+            time.sleep(0.05)
+        time.sleep(3.0)
+        t = time.time()
+        normal = max_step(rec.cmds_between(t - 2.5, t))
+        rospy.loginfo("normal per-cycle command change: %.4f", normal)
+
+        # Deadman held, right stick up 0.3: cmd_vel.linear.x = 0.3 within one cycle.
+        def joy_msg(deadman, stick):
+            m = Joy()
+            m.header.stamp = rospy.Time.now()
+            m.axes = [0.0] * 8
+            m.buttons = [0] * 11
+            m.axes[4] = stick
+            m.buttons[4] = 1 if deadman else 0
+            return m
+        sent = time.time()
+        joy.publish(joy_msg(True, 0.3))
+        first = None
+        while time.time() - sent < 0.5 and first is None:
+            for t_cmd, c in list(rec.cmds):
+                if t_cmd >= sent and abs(c[0] - 0.3) < 1e-6:
+                    first = t_cmd
+                    break
+            time.sleep(0.002)
+        self.assertIsNotNone(first, "cmd_vel never followed the stick")
+        rospy.loginfo("joystick reached cmd_vel after %.1f ms", 1e3 * (first - sent))
+        self.assertLessEqual(first - sent, CYCLE, "the joystick took longer than one cycle")
+        for _ in range(30):  # 1 s of held stick at the joystick's 30 Hz
+            joy.publish(joy_msg(True, 0.3))
+            time.sleep(CYCLE)
+        held = rec.cmds_between(first + 0.05, time.time())
+        self.assertTrue(held and all(abs(c[0] - 0.3) < 1e-6 and c[1:] == (0.0, 0.0, 0.0) for c in held), held[:5])
+        self.assertIn("joystick", rec.modes_between(first, time.time()))
+
+        released = time.time()
+        joy.publish(joy_msg(False, 0.0))
+        time.sleep(2.0)
+        with rec.lock:
+            after = [(m, c) for t_c, m, c in rec.controls if t_c >= released]
+        self.assertGreater(len(after), 40)
+        resuming = [c for m, c in after if "resuming" in m]
+        self.assertTrue(resuming, "no resuming phase after the release")
+        # The hand-back: from the last joystick command through the resuming
+        # phase to the first plain controller command.
+        first_plain = next(c for m, c in after if "resuming" not in m)
+        resume = max_step([held[-1]] + resuming + [first_plain])
+        rospy.loginfo("largest per-cycle change while handing back: %.4f over %d cycles (normal %.4f)",
+                      resume, len(resuming), normal)
+        self.assertLessEqual(resume, max(normal, 0.05) + 1e-9)
+        recent = rec.modes_between(time.time() - 0.5, time.time())
+        self.assertTrue(recent and all(m == "fly" for m in recent), recent[-3:])
+
+        # Poses stop for 0.5 s: hover (zero command), then fly again.
+        self.assertTrue(rec.wait_mode("fly", 10.0))
+        stop = time.time()
+        pause.publish(Float64(0.5))
+        time.sleep(1.5)
+        modes = rec.modes_between(stop, time.time())
+        self.assertIn("hover (no fresh state for 0.2 s)", modes)
+        self.assertNotIn("land (no fresh state for 1 s)", modes)
+        self.assertEqual(rec.modes[-1][1], "fly")
+        hover_cmds = [c for t_c, c in rec.cmds if stop + 0.35 <= t_c <= stop + 0.45]
+        self.assertTrue(hover_cmds and all(c == (0.0, 0.0, 0.0, 0.0) for c in hover_cmds), hover_cmds)
+        self.assertEqual(rec.lands, [])
+
+        # Poses stop for 2 s: land.
+        stop = time.time()
+        pause.publish(Float64(2.0))
+        time.sleep(2.5)
+        self.assertIn("land (no fresh state for 1 s)", rec.modes_between(stop, time.time()))
+        self.assertEqual(len(rec.lands), 1, "expected one land command on /ardrone/land")
+        self.assertGreater(rec.lands[0] - stop, 0.9)
+
+
+if __name__ == "__main__":
+    rospy.init_node("check_real_watchdogs")
+    rostest.rosrun("aurora_tests", "real_watchdogs", RealWatchdogsTest)

@@ -1,0 +1,212 @@
+// Driver-compatible fake for the real-drone tests: listens on the driver's
+// topics (ardrone_autonomy: /cmd_vel, /ardrone/takeoff|land|reset;
+// bebop_autonomy: /bebop/cmd_vel, /bebop/takeoff|land|reset), flies the model
+// core on cmd_vel with the drivers' sign conventions and clamping, and
+// publishes a motion-capture PoseStamped at 120 Hz with small noise,
+// occasional dropouts and out-of-order stamps (seeded, deterministic).
+// Test hooks: ~true_state (DroneState), ~pause_mocap (Float64: seconds).
+#include <aurora_msgs/DroneState.h>
+#include <geometry_msgs/PoseStamped.h>
+#include <geometry_msgs/Twist.h>
+#include <ros/ros.h>
+#include <std_msgs/Empty.h>
+#include <std_msgs/Float64.h>
+#include <std_msgs/String.h>
+#include <tf2/LinearMath/Quaternion.h>
+#include <tf2/LinearMath/Transform.h>
+
+#include <algorithm>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "aurora_sim/ardrone_model.h"
+#include "aurora_sim/command_mapping.h"
+#include "aurora_sim/ros_conversions.h"
+#include "aurora_sim/ros_params.h"
+
+namespace {
+
+using namespace aurora_sim;
+
+class FakeDriver {
+ public:
+  FakeDriver(ros::NodeHandle nh, ros::NodeHandle pnh) : rng_(pnh.param("seed", 1)) {
+    params_ = loadVehicleParams(pnh, "vehicle");
+    const std::string driver = pnh.param<std::string>("driver", "ardrone");
+    if (driver != "ardrone" && driver != "bebop") throw ParameterError("~driver: ardrone or bebop");
+    const std::string prefix = driver == "ardrone" ? "/ardrone/" : "/bebop/";
+    const std::string cmd = driver == "ardrone" ? "/cmd_vel" : "/bebop/cmd_vel";
+    noise_pos_ = pnh.param("noise_position", 0.0005);
+    noise_ang_ = pnh.param("noise_angle", 0.05 * 3.141592653589793 / 180.0);
+    dropout_ = pnh.param("dropout_probability", 0.03);
+    reorder_ = pnh.param("reorder_probability", 0.02);
+    frame_ = pnh.param<std::string>("mocap_frame", "world");
+    std::vector<double> xyz{0, 0, 0}, rpy{0, 0, 0};
+    pnh.getParam("mocap_to_world/xyz", xyz);
+    pnh.getParam("mocap_to_world/rpy", rpy);
+    tf2::Quaternion q;
+    q.setRPY(rpy[0], rpy[1], rpy[2]);
+    world_to_mocap_ = tf2::Transform(q, tf2::Vector3(xyz[0], xyz[1], xyz[2])).inverse();
+
+    model_.reset(0.0);  // on the ground, rotors stopped
+    const ros::TransportHints hints = ros::TransportHints().tcpNoDelay();
+    subs_.push_back(nh.subscribe(cmd, 10, &FakeDriver::onCmd, this, hints));
+    subs_.push_back(nh.subscribe(prefix + "takeoff", 1, &FakeDriver::onTakeoff, this));
+    subs_.push_back(nh.subscribe(prefix + "land", 1, &FakeDriver::onLand, this));
+    subs_.push_back(nh.subscribe(prefix + "reset", 1, &FakeDriver::onReset, this));
+    subs_.push_back(pnh.subscribe("pause_mocap", 1, &FakeDriver::onPause, this));
+    pose_pub_ = nh.advertise<geometry_msgs::PoseStamped>(pnh.param<std::string>("pose_topic", "/mocap/pose"), 50);
+    true_pub_ = pnh.advertise<aurora_msgs::DroneState>("true_state", 100);
+    status_pub_ = pnh.advertise<std_msgs::String>("status", 10, true);
+    step_timer_ = nh.createTimer(ros::Duration(params_.Ts), &FakeDriver::onStep, this);
+    mocap_timer_ = nh.createTimer(ros::Duration(1.0 / pnh.param("mocap_rate", 120.0)), &FakeDriver::onMocap, this);
+    status("landed");
+  }
+
+ private:
+  enum class Phase { kLanded, kTakingOff, kFlying, kLanding };
+
+  void status(const std::string& s) {
+    std_msgs::String m;
+    m.data = s;
+    status_pub_.publish(m);
+  }
+  void onCmd(const geometry_msgs::Twist::ConstPtr& msg) {
+    double U[4];
+    modelCommandFromTwist(twistCommandFromMsg(*msg), U);
+    if (!allFinite(U, 4)) return;
+    for (int i = 0; i < 4; ++i) cmd_[i] = clampUnit(U[i]);
+    cmd_time_ = ros::Time::now();
+  }
+  void onTakeoff(const std_msgs::Empty::ConstPtr&) {
+    if (phase_ == Phase::kLanded) phase_ = Phase::kTakingOff, status("taking off");
+  }
+  void onLand(const std_msgs::Empty::ConstPtr&) {
+    if (phase_ != Phase::kLanded) phase_ = Phase::kLanding, status("landing");
+  }
+  void onReset(const std_msgs::Empty::ConstPtr&) {
+    phase_ = Phase::kLanded;
+    touchDown();
+    status("landed (reset)");
+  }
+  void onPause(const std_msgs::Float64::ConstPtr& msg) {
+    paused_until_ = ros::Time::now() + ros::Duration(msg->data);
+  }
+  void touchDown() {
+    const double x = model_.X[kX], y = model_.X[kY], yaw = model_.X[kYaw];
+    model_.reset(0.0);
+    model_.X[kX] = x, model_.X[kY] = y, model_.X[kYaw] = yaw;
+  }
+
+  // The model steps on its own clock (time passes at the real rate whatever
+  // the command rate); the newest command applies at each step.
+  void onStep(const ros::TimerEvent&) {
+    double U[4] = {0, 0, 0, 0};
+    switch (phase_) {
+      case Phase::kLanded:
+        break;
+      case Phase::kTakingOff:  // the drivers' automatic take-off: climb, then hover
+        U[kUClimb] = 0.5;
+        if (model_.X[kZ] >= 0.75) phase_ = Phase::kFlying, status("flying");
+        break;
+      case Phase::kFlying:  // cmd_vel, or hover when it stops (bebop: 0.2 s)
+        if ((ros::Time::now() - cmd_time_).toSec() <= 0.2) {
+          for (int i = 0; i < 4; ++i) U[i] = cmd_[i];
+        }
+        break;
+      case Phase::kLanding:
+        U[kUClimb] = -0.5;
+        break;
+    }
+    if (phase_ != Phase::kLanded) {
+      ardroneStep(params_, model_, U, Disturbance<double>::zero());
+      if (model_.X[kZ] < 0.0) {  // the ground
+        model_.X[kZ] = 0.0;
+        if (model_.X[kVz] < 0.0) model_.X[kVz] = 0.0;
+      }
+      if (phase_ == Phase::kLanding && model_.X[kZ] <= 0.05) {
+        phase_ = Phase::kLanded;
+        touchDown();
+        status("landed");
+      }
+    }
+    last_step_time_ = ros::Time::now();
+    aurora_msgs::DroneState s;
+    s.header.stamp = last_step_time_;
+    s.header.frame_id = "world";
+    s.step = step_++;
+    stateToMsg(model_.X, s);
+    true_pub_.publish(s);
+  }
+
+  void onMocap(const ros::TimerEvent&) {
+    const ros::Time now = ros::Time::now();
+    if (now < paused_until_) return;
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    std::normal_distribution<double> np(0.0, noise_pos_), na(0.0, noise_ang_);
+    if (u(rng_) < dropout_) return;
+    // A real drone moves between the model's steps: the pose advances with
+    // the current velocities since the last step (what the model's next
+    // integration does), so the mocap stream is smooth, not a 30 Hz staircase.
+    const double dt = phase_ == Phase::kLanded ? 0.0 : std::min((now - last_step_time_).toSec(), params_.Ts);
+    double X[kStateSize];
+    for (int i = 0; i < kStateSize; ++i) X[i] = model_.X[i];
+    for (int i = 0; i < 6; ++i) X[i] += X[i + 6] * dt;
+    tf2::Quaternion q;
+    q.setRPY(X[kRoll] + na(rng_), X[kPitch] + na(rng_), X[kYaw] + na(rng_));
+    const tf2::Transform world(q, tf2::Vector3(X[kX] + np(rng_), X[kY] + np(rng_), X[kZ] + np(rng_)));
+    const tf2::Transform in_mocap = world_to_mocap_ * world;
+    geometry_msgs::PoseStamped p;
+    p.header.stamp = now;
+    p.header.frame_id = frame_;
+    p.pose.position.x = in_mocap.getOrigin().x();
+    p.pose.position.y = in_mocap.getOrigin().y();
+    p.pose.position.z = in_mocap.getOrigin().z();
+    p.pose.orientation.x = in_mocap.getRotation().x();
+    p.pose.orientation.y = in_mocap.getRotation().y();
+    p.pose.orientation.z = in_mocap.getRotation().z();
+    p.pose.orientation.w = in_mocap.getRotation().w();
+    if (held_) {  // the held pose goes out after a newer one: out-of-order stamps
+      pose_pub_.publish(p);
+      pose_pub_.publish(held_pose_);
+      held_ = false;
+    } else if (u(rng_) < reorder_) {
+      held_pose_ = p;
+      held_ = true;
+    } else {
+      pose_pub_.publish(p);
+    }
+  }
+
+  ArdroneParams<double> params_;
+  ArdroneState<double> model_;
+  Phase phase_ = Phase::kLanded;
+  double cmd_[4] = {0, 0, 0, 0};
+  ros::Time cmd_time_, paused_until_, last_step_time_;
+  unsigned long step_ = 0;
+  std::mt19937 rng_;
+  double noise_pos_, noise_ang_, dropout_, reorder_;
+  std::string frame_;
+  tf2::Transform world_to_mocap_;
+  bool held_ = false;
+  geometry_msgs::PoseStamped held_pose_;
+  std::vector<ros::Subscriber> subs_;
+  ros::Publisher pose_pub_, true_pub_, status_pub_;
+  ros::Timer step_timer_, mocap_timer_;
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "fake_driver");
+  ros::NodeHandle nh, pnh("~");
+  try {
+    FakeDriver fake(nh, pnh);
+    ros::spin();
+  } catch (const ParameterError& e) {
+    ROS_FATAL("fake_driver: %s", e.what());
+    return 2;
+  }
+  return 0;
+}
