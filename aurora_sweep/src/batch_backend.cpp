@@ -43,14 +43,17 @@ struct Lanes {
   using M = xsimd::batch_bool<T, Arch>;
   static constexpr int L = static_cast<int>(B::size);
 
-  static void set(B& b, int lane, T v) {
-    alignas(64) T tmp[L];
+  // One lane of a batch (of T or of integers of T's width).
+  template <class Batch>
+  static void set(Batch& b, int lane, typename Batch::value_type v) {
+    alignas(64) typename Batch::value_type tmp[L];
     b.store_aligned(tmp);
     tmp[lane] = v;
-    b = B::load_aligned(tmp);
+    b = Batch::load_aligned(tmp);
   }
-  static T get(const B& b, int lane) {
-    alignas(64) T tmp[L];
+  template <class Batch>
+  static typename Batch::value_type get(const Batch& b, int lane) {
+    alignas(64) typename Batch::value_type tmp[L];
     b.store_aligned(tmp);
     return tmp[lane];
   }
@@ -113,18 +116,6 @@ class BatchWorker {
  private:
   T& hist(long slot, int j, int lane) { return history_[(slot * 6 + j) * L + lane]; }
 
-  static void setInt(I& b, int lane, Int v) {
-    alignas(64) Int tmp[L];
-    b.store_aligned(tmp);
-    tmp[lane] = v;
-    b = I::load_aligned(tmp);
-  }
-  static Int getInt(const I& b, int lane) {
-    alignas(64) Int tmp[L];
-    b.store_aligned(tmp);
-    return tmp[lane];
-  }
-
   bool takeIndex(long& index) {
     if (chunk_next_ >= chunk_end_) {
       chunk_next_ = next_.fetch_add(kChunk, std::memory_order_relaxed);
@@ -150,9 +141,9 @@ class BatchWorker {
     const Combination c = have ? grid_.decode(index) : Combination{0.0, 0.0, 0};
     active_[l] = have;
     index_[l] = index;
-    setInt(delay_, l, static_cast<Int>(c.delay));
-    setInt(count_, l, 1);  // history holds H(1) ...
-    setInt(start_, l, static_cast<Int>(step_ % Capacity));  // ... at ring slot `step_`
+    LaneOps::set(delay_, l, static_cast<Int>(c.delay));
+    LaneOps::set(count_, l, 1);  // history holds H(1) ...
+    LaneOps::set(start_, l, static_cast<Int>(step_ % Capacity));  // ... at ring slot `step_`
     LaneOps::set(kp_, l, T(c.kp));
     LaneOps::set(kd_, l, T(c.kd));
     auto& m = sim_.model;
@@ -184,7 +175,7 @@ class BatchWorker {
     r.iae = double(LaneOps::get(sim_.metrics.iae, l));
     r.itae = double(LaneOps::get(sim_.metrics.itae, l));
     r.iasc = double(LaneOps::get(sim_.metrics.iasc, l));
-    r.steps = getInt(count_, l) - 1;
+    r.steps = LaneOps::get(count_, l) - 1;
     for (int i = 0; i < 3; ++i) r.final_pos[i] = double(LaneOps::get(sim_.model.X[aurora_sim::kX + i], l));
     out_[index_[l]] = compactResult(r);
     progress_.fetch_add(1, std::memory_order_relaxed);
