@@ -6,6 +6,17 @@
 // Compiled with -march=native (CMakeLists) to use the widest vectors.
 #include <xsimd/xsimd.hpp>
 
+namespace xsimd {
+// The model's sin and cos of one angle in one go (found by argument-dependent
+// lookup from aurora_sim::ardroneStep): xsimd shares the range reduction.
+template <class T, class A>
+inline void sinCos(const batch<T, A>& x, batch<T, A>& s, batch<T, A>& c) {
+  const auto sc = xsimd::sincos(x);
+  s = sc.first;
+  c = sc.second;
+}
+}  // namespace xsimd
+
 #include <algorithm>
 #include <thread>
 #include <vector>

@@ -130,8 +130,6 @@ AURORA_HD inline void solve3(const T M[3][3], const T b[3], T x[3]) {
 template <typename T>
 AURORA_HD inline void ardroneStep(const ArdroneParams<T>& p, ArdroneState<T>& s, const T U[4],
                                   const Disturbance<T>& dist) {
-  using std::cos;
-  using std::sin;
   using std::tanh;
   T* X = s.X;
 
@@ -177,9 +175,10 @@ AURORA_HD inline void ardroneStep(const ArdroneParams<T>& p, ArdroneState<T>& s,
   // 6. Previous state (on-board channels only; see onboardChannel).
   for (int c = 0; c < 4; ++c) s.Xa[c] = X[onboardChannel(c)];
 
-  const T sphi = sin(X[kRoll]), cphi = cos(X[kRoll]);
-  const T sth = sin(X[kPitch]), cth = cos(X[kPitch]);
-  const T spsi = sin(X[kYaw]), cpsi = cos(X[kYaw]);
+  T sphi, cphi, sth, cth, spsi, cpsi;
+  sinCos(X[kRoll], sphi, cphi);
+  sinCos(X[kPitch], sth, cth);
+  sinCos(X[kYaw], spsi, cpsi);
 
   // 7. Translation: v += ((R [0 0 sum F]' - D) - [0 0 m g]') / m * Ts.
   const T thrust = F[0] + F[1] + F[2] + F[3];

@@ -15,6 +15,17 @@ AURORA_HD inline T select(bool condition, const T& a, const T& b) {
   return condition ? a : b;
 }
 
+// sin and cos of one angle. Scalars use the C library's sin and cos (the
+// reference's values); a SIMD batch type provides its own sinCos overload
+// (found by argument-dependent lookup) that shares the range reduction.
+template <typename T>
+AURORA_HD inline void sinCos(const T& x, T& s, T& c) {
+  using std::cos;
+  using std::sin;
+  s = sin(x);
+  c = cos(x);
+}
+
 // Wraps an angle once into [-pi, pi] as the reference does (step 9 of the
 // model): above pi subtract 2 pi, below -pi add 2 pi.
 template <typename T>
