@@ -90,8 +90,7 @@ CudaRun launch(const SweepSpec& spec, int block_size, std::vector<SimResult>& ou
 template <typename T>
 CudaRun launchPrecision(const SweepSpec& spec, int block_size, std::vector<SimResult>& out) {
   if (spec.max_delay < 64) return launch<T, 64>(spec, block_size, out);
-  if (spec.max_delay < 512) return launch<T, 512>(spec, block_size, out);
-  return launch<T, 4096>(spec, block_size, out);
+  return launch<T, 512>(spec, block_size, out);  // cudaMaxDelay() is checked by runCuda
 }
 
 }  // namespace
@@ -127,7 +126,14 @@ CudaDevice probeCudaDevice() {
   return d;
 }
 
+long cudaMaxDelay() { return 511; }
+
 CudaRun runCuda(const SweepSpec& spec, int block_size, std::vector<SimResult>& out) {
+  if (spec.max_delay > cudaMaxDelay()) {
+    throw std::runtime_error("the cuda backend holds delays up to " + std::to_string(cudaMaxDelay()) +
+                             " samples (each GPU thread keeps its history in local memory); this "
+                             "sweep reaches " + std::to_string(spec.max_delay) + ": use --backend cpu");
+  }
   if (spec.precision == Precision::kDouble) return launchPrecision<double>(spec, block_size, out);
   return launchPrecision<float>(spec, block_size, out);
 }

@@ -14,6 +14,8 @@ CudaDevice probeCudaDevice() {
   return d;
 }
 
+long cudaMaxDelay() { return 0; }
+
 CudaRun runCuda(const SweepSpec&, int, std::vector<SimResult>&) {
   throw std::runtime_error(probeCudaDevice().error);
 }

@@ -194,7 +194,12 @@ int main(int argc, char** argv) {
   RunInfo info;
   std::string backend = opt.backend;
   if (backend == "cuda" || backend == "auto") {
-    const CudaDevice dev = probeCudaDevice();
+    CudaDevice dev = probeCudaDevice();
+    if (dev.usable && spec.max_delay > cudaMaxDelay() && backend == "auto") {
+      dev.usable = false;
+      dev.error = "the sweep's delays reach " + std::to_string(spec.max_delay) +
+                  " samples, above the cuda backend's " + std::to_string(cudaMaxDelay());
+    }
     if (dev.usable) {
       backend = "cuda";
       info.device = dev.name;

@@ -26,6 +26,8 @@ struct CudaRun {
 };
 
 bool cudaCompiledIn();
+// Largest delay [samples] the kernel's per-thread history holds.
+long cudaMaxDelay();
 CudaDevice probeCudaDevice();
 
 // block_size 0 picks one (occupancy API). Throws std::runtime_error with the
