@@ -75,6 +75,19 @@ class BadInputTest(unittest.TestCase):
         self.assertGreater(max(climb), 0.8, "the drone did not climb")
         self.assertLess(max(climb), 1.05, "climb rate above the clamped 1 m/s: command not clamped")
 
+    def test_4_hovers_when_commands_stop(self):
+        # cmd_timeout 0.2 s (bebop_autonomy's): a climb command that stops is
+        # not held forever; the sim falls back to hover.
+        t = Twist()
+        t.linear.z = 1.0
+        self.send_for(t, 0.6)
+        stopped = len(self.states)
+        self.assertGreater(self.states[-1].velocity.z, 0.5, "the climb command had no effect")
+        time.sleep(1.0)
+        later = self.states[stopped + 24:]  # from 0.8 s after the last command
+        self.assertTrue(later)
+        self.assertLess(max(abs(s.velocity.z) for s in later), 0.1, "still climbing: no hover after cmd_timeout")
+
 
 if __name__ == "__main__":
     rospy.init_node("check_bad_input")
