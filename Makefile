@@ -23,7 +23,7 @@ build: deps
 	mkdir -p $(BUILD)/devel/lib/python3/dist-packages
 	$(SOURCE_ROS) cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release \
 	  -DPYTHON_EXECUTABLE=/usr/bin/python3 -DCATKIN_DEVEL_PREFIX=$(abspath $(BUILD))/devel \
-	  -DCATKIN_ENABLE_TESTING=ON > $(BUILD).cmake.log 2>&1 || { cat $(BUILD).cmake.log; exit 1; }
+	  -DCATKIN_ENABLE_TESTING=ON > $(BUILD)/cmake.log 2>&1 || { cat $(BUILD)/cmake.log; exit 1; }
 	$(SOURCE_ROS) $(MAKE) -C $(BUILD) -j$(JOBS) all tests
 
 test: build
@@ -38,4 +38,4 @@ bench: build
 	./bench/report.sh $(BUILD)
 
 clean:
-	rm -rf $(BUILD) $(BUILD).cmake.log out
+	rm -rf $(BUILD) out
