@@ -102,7 +102,8 @@ ArdroneSimNode::ArdroneSimNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
 }
 
 void ArdroneSimNode::resetModel() {
-  model_.reset();
+  // In the air at the study's initial state, or on the ground when landed.
+  model_.reset(flight_ == Flight::kLanded ? 0.0 : 0.75);
   step_ = 0;
   have_command_ = false;
   for (double& u : command_) u = 0.0;
@@ -167,8 +168,8 @@ void ArdroneSimNode::onLand(const std_msgs::Empty::ConstPtr&) {
 
 void ArdroneSimNode::onReset(const std_msgs::Empty::ConstPtr&) {
   ROS_INFO("ardrone_sim: reset to the initial state");
-  resetModel();
   flight_ = paramOr(pnh_, "start_flying", true) ? Flight::kFlying : Flight::kLanded;
+  resetModel();
 }
 
 void ArdroneSimNode::onRealtimeTimer(const ros::TimerEvent& event) {
@@ -226,6 +227,13 @@ void ArdroneSimNode::stepAndPublish(const ros::Time& now, bool command_fresh) {
   }
   ardroneStep(params_, model_, U, Disturbance<double>::zero());
   ++step_;
+  // The ground holds the drone while its rotors spin up or it touches down.
+  // (In flight there is no ground, as in the study's model, so a flight
+  // stays identical to the offline runner's.)
+  if ((flight_ == Flight::kTakingOff || flight_ == Flight::kLanding) && model_.X[kZ] < 0.0) {
+    model_.X[kZ] = 0.0;
+    if (model_.X[kVz] < 0.0) model_.X[kVz] = 0.0;
+  }
   if (flight_ == Flight::kLanding && model_.X[kZ] <= kLandedAltitude) {
     ROS_INFO("ardrone_sim: landed");
     flight_ = Flight::kLanded;
