@@ -2,17 +2,16 @@
 
 #include <geometry_msgs/Twist.h>
 #include <nav_msgs/Path.h>
+#include <std_msgs/Empty.h>
 #include <visualization_msgs/MarkerArray.h>
 
 #include <cmath>
-
 #include <limits>
-#include <std_msgs/Empty.h>
 
 #include "aurora_sim/command_mapping.h"
-#include "controller_params.h"
 #include "aurora_sim/ros_conversions.h"
 #include "aurora_sim/ros_params.h"
+#include "controller_params.h"
 
 namespace aurora_control {
 
