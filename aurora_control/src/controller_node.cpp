@@ -161,7 +161,7 @@ void ControllerNode::onState(const aurora_msgs::DroneState::ConstPtr& msg) {
   if (!core_->push(sample)) {
     // The lockstep sim re-sends a state it got no answer to: answer again
     // with the same command; the history already holds this sample.
-    if (lockstep_ && have_control_) sendCommand(last_control_.command.data());
+    if (lockstep_) sendCommand(last_sent_);
     return;
   }
   if (went_back) {
@@ -310,8 +310,6 @@ void ControllerNode::cycle(const ros::Time& now) {
   control.iasc = out.iasc;
   sendCommand(out.U);
   control_pub_.publish(control);
-  last_control_ = control;
-  have_control_ = true;
 }
 
 void ControllerNode::publishTaskMarkers() {

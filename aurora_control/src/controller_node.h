@@ -54,14 +54,12 @@ class ControllerNode {
   std::string state_frame_ = "world";
   ros::Time last_state_time_;      // ROS time the newest fresh state arrived
   bool warned_stale_input_ = false;
-  aurora_msgs::Control last_control_;
-  bool have_control_ = false;
 
   bool joystick_enabled_ = false;
   JoystickMapper joystick_;
   JoystickInput joy_;              // newest joystick input
   ResumeSlew resume_;
-  double last_sent_[4] = {0, 0, 0, 0};
+  double last_sent_[4] = {0, 0, 0, 0};  // the newest command sent (re-sent on a repeated state)
 
   long sent_in_window_ = 0;        // cmd_vel messages since the last rate check
   bool low_rate_ = false;

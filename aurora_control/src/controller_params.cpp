@@ -10,6 +10,7 @@ namespace aurora_control {
 using aurora_sim::fullKey;
 using aurora_sim::ParameterError;
 using aurora_sim::paramOr;
+using aurora_sim::rangedParam;
 using aurora_sim::requireParam;
 
 double requireGain(const ros::NodeHandle& pnh, const std::string& key) {
@@ -62,17 +63,6 @@ WaypointTask<double> loadTask(const ros::NodeHandle& pnh) {
 
 namespace {
 
-double rangeParam(const ros::NodeHandle& pnh, const std::string& key, double fallback, double lo,
-                  double hi, const std::string& unit) {
-  const double v = paramOr(pnh, key, fallback);
-  if (!(std::isfinite(v) && v >= lo && v <= hi)) {
-    throw ParameterError("parameter '" + fullKey(pnh, key) + "' = " + std::to_string(v) +
-                         " is invalid: accepted range [" + std::to_string(lo) + ", " +
-                         std::to_string(hi) + "] " + unit);
-  }
-  return v;
-}
-
 void readVector3(const ros::NodeHandle& pnh, const std::string& key, double out[3]) {
   std::vector<double> v;
   if (!pnh.getParam(key, v) || v.size() != 3) {
@@ -106,10 +96,10 @@ AxisMap axisParam(const ros::NodeHandle& pnh, const std::string& key, const Axis
 SafetyConfig loadSafetyConfig(const ros::NodeHandle& pnh) {
   SafetyConfig c;
   c.flight_sequence = paramOr(pnh, "safety/flight_sequence", false);
-  c.takeoff_altitude = rangeParam(pnh, "safety/takeoff_altitude", 0.75, 0.2, 5.0, "m");
-  c.takeoff_timeout = rangeParam(pnh, "safety/takeoff_timeout", 15.0, 1.0, 120.0, "s");
-  c.hover_after = rangeParam(pnh, "safety/hover_after", 0.5, 0.01, 60.0, "s");
-  c.land_after = rangeParam(pnh, "safety/land_after", 0.0, 0.0, 600.0, "s (0 = never)");
+  c.takeoff_altitude = rangedParam(pnh, "safety/takeoff_altitude", 0.75, 0.2, 5.0, "m");
+  c.takeoff_timeout = rangedParam(pnh, "safety/takeoff_timeout", 15.0, 1.0, 120.0, "s");
+  c.hover_after = rangedParam(pnh, "safety/hover_after", 0.5, 0.01, 60.0, "s");
+  c.land_after = rangedParam(pnh, "safety/land_after", 0.0, 0.0, 600.0, "s (0 = never)");
   if (c.land_after > 0.0 && c.land_after <= c.hover_after) {
     throw ParameterError("parameter '" + fullKey(pnh, "safety/land_after") +
                          "' must be 0 (never) or longer than safety/hover_after");
@@ -143,9 +133,9 @@ bool loadJoystickConfig(const ros::NodeHandle& pnh, JoystickConfig& c) {
   c.linear_y = axisParam(pnh, "joystick/axes/linear_y", d.linear_y);
   c.linear_z = axisParam(pnh, "joystick/axes/linear_z", d.linear_z);
   c.angular_z = axisParam(pnh, "joystick/axes/angular_z", d.angular_z);
-  c.resume_max_step = rangeParam(pnh, "joystick/resume_max_step", d.resume_max_step, 0.001, 2.0,
+  c.resume_max_step = rangedParam(pnh, "joystick/resume_max_step", d.resume_max_step, 0.001, 2.0,
                                  "(command change per cycle)");
-  c.resume_min_cycles = static_cast<int>(rangeParam(pnh, "joystick/resume_min_cycles",
+  c.resume_min_cycles = static_cast<int>(rangedParam(pnh, "joystick/resume_min_cycles",
                                                     d.resume_min_cycles, 0, 3000, "cycles"));
   return true;
 }

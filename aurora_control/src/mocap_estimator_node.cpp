@@ -17,15 +17,6 @@ using aurora_sim::paramOr;
 
 namespace {
 
-double positive(const ros::NodeHandle& pnh, const std::string& key, double fallback, double max) {
-  const double v = paramOr(pnh, key, fallback);
-  if (!(std::isfinite(v) && v > 0.0 && v <= max)) {
-    throw ParameterError("parameter '" + fullKey(pnh, key) + "' = " + std::to_string(v) +
-                         " is invalid: accepted range (0, " + std::to_string(max) + "]");
-  }
-  return v;
-}
-
 std::vector<double> triple(const ros::NodeHandle& pnh, const std::string& key) {
   std::vector<double> v{0.0, 0.0, 0.0};
   if (pnh.hasParam(key) && (!pnh.getParam(key, v) || v.size() != 3)) {
@@ -40,11 +31,14 @@ MocapEstimatorNode::MocapEstimatorNode(ros::NodeHandle nh, ros::NodeHandle priva
     : nh_(nh), pnh_(private_nh) {
   const double Ts = aurora_sim::loadVehicleParams(nh_, "vehicle").Ts;
   MocapFilterConfig filter;
-  filter.velocity_cutoff_hz = positive(pnh_, "filter/velocity_cutoff_hz", filter.velocity_cutoff_hz, 100.0);
-  filter.rate_cutoff_hz = positive(pnh_, "filter/rate_cutoff_hz", filter.rate_cutoff_hz, 100.0);
-  filter.max_gap = positive(pnh_, "filter/max_gap", filter.max_gap, 10.0);
+  using aurora_sim::rangedParam;
+  filter.velocity_cutoff_hz =
+      rangedParam(pnh_, "filter/velocity_cutoff_hz", filter.velocity_cutoff_hz, 0.0, 100.0, "Hz", false);
+  filter.rate_cutoff_hz =
+      rangedParam(pnh_, "filter/rate_cutoff_hz", filter.rate_cutoff_hz, 0.0, 100.0, "Hz", false);
+  filter.max_gap = rangedParam(pnh_, "filter/max_gap", filter.max_gap, 0.0, 10.0, "s", false);
   estimator_ = MocapEstimator(filter);
-  stale_timeout_ = positive(pnh_, "stale_timeout", 0.1, 10.0);
+  stale_timeout_ = rangedParam(pnh_, "stale_timeout", 0.1, 0.0, 10.0, "s", false);
   world_frame_ = paramOr<std::string>(pnh_, "world_frame", "world");
   // Poses in another frame (e.g. the mocap system's own) are mapped to the
   // world frame by a fixed transform, applied before differentiation so the

@@ -6,6 +6,7 @@
 #include <tf2/LinearMath/Quaternion.h>
 
 #include <cmath>
+#include <limits>
 
 #include "aurora_sim/command_mapping.h"
 #include "aurora_sim/ros_conversions.h"
@@ -32,16 +33,8 @@ ArdroneSimNode::ArdroneSimNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
     throw ParameterError("parameter '" + fullKey(pnh_, "mode") + "' = '" + mode +
                          "' is invalid: accepted values 'realtime', 'lockstep'");
   }
-  cmd_timeout_ = paramOr(pnh_, "cmd_timeout", 0.2);
-  if (!(cmd_timeout_ > 0.0 && cmd_timeout_ <= 10.0)) {
-    throw ParameterError("parameter '" + fullKey(pnh_, "cmd_timeout") + "' = " +
-                         std::to_string(cmd_timeout_) + " is invalid: accepted range (0, 10] s");
-  }
-  takeoff_altitude_ = paramOr(pnh_, "takeoff_altitude", 0.75);
-  if (!(takeoff_altitude_ > kLandedAltitude && takeoff_altitude_ <= 5.0)) {
-    throw ParameterError("parameter '" + fullKey(pnh_, "takeoff_altitude") +
-                         "' is invalid: accepted range (0.05, 5] m");
-  }
+  cmd_timeout_ = rangedParam(pnh_, "cmd_timeout", 0.2, 0.0, 10.0, "s", false);
+  takeoff_altitude_ = rangedParam(pnh_, "takeoff_altitude", 0.75, kLandedAltitude, 5.0, "m", false);
   frame_id_ = paramOr<std::string>(pnh_, "frame_id", "world");
   std::string ns = nh_.getNamespace();
   while (!ns.empty() && ns.front() == '/') ns.erase(ns.begin());
@@ -52,21 +45,15 @@ ArdroneSimNode::ArdroneSimNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
     throw ParameterError("parameter '" + fullKey(pnh_, "path_decimation") +
                          "' is invalid: accepted values integers >= 1");
   }
-  stop_after_ = paramOr(pnh_, "stop_after", 0.0);
-  if (!(stop_after_ >= 0.0 && std::isfinite(stop_after_))) {
-    throw ParameterError("parameter '" + fullKey(pnh_, "stop_after") +
-                         "' is invalid: accepted a time >= 0 s (0 = run until stopped)");
-  }
+  const double kNoLimit = std::numeric_limits<double>::max();
+  stop_after_ = rangedParam(pnh_, "stop_after", 0.0, 0.0, kNoLimit, "s (0 = run until stopped)");
   lockstep_subscribers_ = paramOr(pnh_, "lockstep_subscribers", 1);
   if (lockstep_subscribers_ < 0) {
     throw ParameterError("parameter '" + fullKey(pnh_, "lockstep_subscribers") +
                          "' is invalid: accepted integers >= 0");
   }
-  max_real_time_factor_ = paramOr(pnh_, "max_real_time_factor", 0.0);
-  if (!(max_real_time_factor_ >= 0.0 && std::isfinite(max_real_time_factor_))) {
-    throw ParameterError("parameter '" + fullKey(pnh_, "max_real_time_factor") +
-                         "' is invalid: accepted a factor >= 0 (0 = as fast as possible)");
-  }
+  max_real_time_factor_ = rangedParam(pnh_, "max_real_time_factor", 0.0, 0.0, kNoLimit,
+                                      "(0 = as fast as possible)");
   // The study's initial state (z = 0.75 m, in the air); false starts landed.
   flight_ = paramOr(pnh_, "start_flying", true) ? Flight::kFlying : Flight::kLanded;
 

@@ -5,6 +5,7 @@
 
 #include <ros/ros.h>
 
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -35,6 +36,21 @@ template <typename V>
 V paramOr(const ros::NodeHandle& nh, const std::string& key, const V& fallback) {
   V value;
   return nh.getParam(key, value) ? value : fallback;
+}
+
+// An optional number with a default, checked against [lo, hi] (or (lo, hi]
+// with lo_inclusive false); the error names the full key, the value and the range.
+inline double rangedParam(const ros::NodeHandle& nh, const std::string& key, double fallback,
+                          double lo, double hi, const std::string& unit,
+                          bool lo_inclusive = true) {
+  const double v = paramOr(nh, key, fallback);
+  const bool above = lo_inclusive ? v >= lo : v > lo;
+  if (!(std::isfinite(v) && above && v <= hi)) {
+    throw ParameterError("parameter '" + fullKey(nh, key) + "' = " + std::to_string(v) +
+                         " is invalid: accepted range " + (lo_inclusive ? "[" : "(") +
+                         std::to_string(lo) + ", " + std::to_string(hi) + "] " + unit);
+  }
+  return v;
 }
 
 // Reads every vehicle key under `ns` (e.g. "vehicle") and checks its range.
