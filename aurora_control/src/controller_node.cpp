@@ -18,6 +18,7 @@ namespace aurora_control {
 using aurora_sim::fullKey;
 using aurora_sim::ParameterError;
 using aurora_sim::paramOr;
+using aurora_sim::rangedParam;
 using aurora_sim::requireParam;
 
 ControllerNode::ControllerNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
@@ -54,8 +55,17 @@ ControllerNode::ControllerNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
                          "' is invalid: accepted values 'state', 'timer'");
   }
   timer_triggered_ = !lockstep_ && trigger == "timer";
+  // Lockstep: the first state is answered only once the subscribers that
+  // must see every step are connected (a recorder, test nodes); until then
+  // the sim re-sends it. Without this a link that connects late misses the
+  // first steps, depending on machine load.
+  lockstep_cmd_subscribers_ = static_cast<int>(
+      rangedParam(pnh_, "lockstep_subscribers/cmd_vel", 1, 0, 100, "(subscribers of cmd_vel)"));
+  lockstep_control_subscribers_ = static_cast<int>(
+      rangedParam(pnh_, "lockstep_subscribers/control", 0, 0, 100, "(subscribers of control)"));
   task_ = loadTask(pnh_);
-  const SafetyConfig safety = loadSafetyConfig(pnh_);
+  safety_ = loadSafetyConfig(pnh_);
+  const SafetyConfig& safety = safety_;
   supervisor_.configure(safety);
   JoystickConfig joystick;
   joystick_enabled_ = loadJoystickConfig(pnh_, joystick);
@@ -68,9 +78,13 @@ ControllerNode::ControllerNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
   desired_path_pub_ = nh_.advertise<nav_msgs::Path>("desired_path", 1, true);
   // The drivers' names (ardrone_autonomy: ardrone/takeoff ...; bebop_autonomy:
   // takeoff ...) are set by remapping in the launch file.
-  takeoff_pub_ = nh_.advertise<std_msgs::Empty>("takeoff", 1);
-  land_pub_ = nh_.advertise<std_msgs::Empty>("land", 1);
-  reset_pub_ = nh_.advertise<std_msgs::Empty>("reset", 1);
+  DeliveryPolicy until_shown;
+  until_shown.resend_period = safety.command_resend_period;
+  DeliveryPolicy land_policy = until_shown;
+  land_policy.timeout = safety.land_resend_timeout;
+  takeoff_ = DriverCommandChannel(nh_, "takeoff", "take-off", until_shown);
+  land_ = DriverCommandChannel(nh_, "land", "land", land_policy);
+  reset_ = DriverCommandChannel(nh_, "reset", "reset", DeliveryPolicy());  // once: a toggle
   if (joystick_enabled_) {
     joy_sub_ = nh_.subscribe("joy", 10, &ControllerNode::onJoy, this,
                              ros::TransportHints().tcpNoDelay());
@@ -153,6 +167,7 @@ void ControllerNode::onState(const aurora_msgs::DroneState::ConstPtr& msg) {
     return;
   }
   warned_stale_input_ = false;
+  if (lockstep_ && core_->empty() && !lockstepListenersReady()) return;  // the sim re-sends it
   StateSample sample;
   sample.step = static_cast<long>(msg->step);
   sample.stamp_ns = static_cast<int64_t>(msg->header.stamp.toNSec());
@@ -175,6 +190,17 @@ void ControllerNode::onState(const aurora_msgs::DroneState::ConstPtr& msg) {
   } else if (!timer_triggered_) {
     cycle(ros::Time::now());
   }
+}
+
+bool ControllerNode::lockstepListenersReady() const {
+  const int cmd = static_cast<int>(cmd_pub_.getNumSubscribers());
+  const int control = static_cast<int>(control_pub_.getNumSubscribers());
+  if (cmd >= lockstep_cmd_subscribers_ && control >= lockstep_control_subscribers_) return true;
+  ROS_INFO_THROTTLE(5.0, "controller: lockstep waits for %d subscriber(s) of %s (%d now) and %d of "
+                    "%s (%d now) before the first step", lockstep_cmd_subscribers_,
+                    cmd_pub_.getTopic().c_str(), cmd, lockstep_control_subscribers_,
+                    control_pub_.getTopic().c_str(), control);
+  return false;
 }
 
 double ControllerNode::stateAge() const {
@@ -206,18 +232,23 @@ void ControllerNode::onRateCheck(const ros::WallTimerEvent&) {
 void ControllerNode::onJoy(const sensor_msgs::Joy::ConstPtr& msg) {
   const bool was_held = joy_.deadman;
   joy_ = joystick_.map(msg->axes, msg->buttons);
+  const double now = ros::Time::now().toSec();
+  const double z = core_->empty() ? 0.0 : core_->newest().X[aurora_sim::kZ];
   if (joy_.takeoff) {
     ROS_INFO("controller: joystick take-off");
-    takeoff_pub_.publish(std_msgs::Empty());
+    land_.cancel();
+    takeoff_.request(now, z);
   }
   if (joy_.land) {
     ROS_WARN("controller: joystick land");
-    land_pub_.publish(std_msgs::Empty());
+    takeoff_.cancel();
+    land_.request(now);
   }
   if (joy_.reset) {
     ROS_WARN("controller: joystick emergency reset");
-    reset_pub_.publish(std_msgs::Empty());
+    reset_.request(now);
   }
+  if (joy_.takeoff || joy_.land || joy_.reset) serviceDriverCommands(now, nullptr);
   if (joy_.deadman) {
     if (!was_held) ROS_WARN("controller: joystick override (deadman held)");
     // The joystick wins at once, not at the next cycle.
@@ -228,6 +259,14 @@ void ControllerNode::onJoy(const sensor_msgs::Joy::ConstPtr& msg) {
     ROS_INFO("controller: joystick released: back to the controller");
     resume_.start(last_sent_);
   }
+}
+
+void ControllerNode::serviceDriverCommands(double now, const double* fresh_X) {
+  // Only a fresh state can show that the driver acted.
+  const DriverCommand& t = takeoff_.command();
+  takeoff_.service(now, fresh_X && climbShown(fresh_X, t.reference(), safety_.takeoff_rise));
+  land_.service(now, fresh_X && descentShown(fresh_X, safety_.descent_speed, safety_.landed_altitude));
+  reset_.service(now, false);
 }
 
 void ControllerNode::sendCommand(const double U[4]) {
@@ -256,8 +295,15 @@ void ControllerNode::cycle(const ros::Time& now) {
       ROS_INFO("controller: %s", decision.event.c_str());
     }
   }
-  if (decision.send_takeoff) takeoff_pub_.publish(std_msgs::Empty());
-  if (decision.send_land) land_pub_.publish(std_msgs::Empty());
+  if (decision.send_takeoff) {
+    land_.cancel();
+    takeoff_.request(now.toSec(), have_state ? newest->X[aurora_sim::kZ] : 0.0);
+  }
+  if (decision.send_land) {
+    takeoff_.cancel();
+    land_.request(now.toSec());
+  }
+  serviceDriverCommands(now.toSec(), have_state && age <= safety_.hover_after ? newest->X : nullptr);
   if (!have_state) {
     const double hover[4] = {0, 0, 0, 0};
     if (!lockstep_) sendCommand(hover);  // drivers expect a steady command stream
@@ -294,6 +340,8 @@ void ControllerNode::cycle(const ros::Time& now) {
   control.kd = set.gains.kd;
   control.clamped = set.clamp_commands;
   control.mode = mode;
+  control.takeoff_attempts = static_cast<uint32_t>(takeoff_.command().attempts());
+  control.land_attempts = static_cast<uint32_t>(land_.command().attempts());
   control.state_used.header.stamp.fromNSec(static_cast<uint64_t>(out.used->stamp_ns));
   control.state_used.header.frame_id = state_frame_;
   control.state_used.step = out.used->step;

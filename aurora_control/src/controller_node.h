@@ -19,6 +19,7 @@
 #include "aurora_control/flight_supervisor.h"
 #include "aurora_control/joystick.h"
 #include "aurora_control/waypoint_task.h"
+#include "driver_command_channel.h"
 
 namespace aurora_control {
 
@@ -39,14 +40,18 @@ class ControllerNode {
   void onReconfigure(ControllerConfig& config, uint32_t level);
   void cycle(const ros::Time& now);
   void sendCommand(const double U[4]);
+  void serviceDriverCommands(double now, const double* fresh_X);
   void publishTaskMarkers();
   long readDelaySamples();
   double stateAge() const;
+  bool lockstepListenersReady() const;
 
   ros::NodeHandle nh_, pnh_;
   double Ts_;
   bool lockstep_;
   bool timer_triggered_;  // realtime: compute on the 30 Hz timer instead of on each new state
+  int lockstep_cmd_subscribers_ = 1;      // lockstep: subscribers of cmd_vel before the first step
+  int lockstep_control_subscribers_ = 0;  // ... and of control
   WaypointTask<double> task_;
 
   std::unique_ptr<Core> core_;     // delay buffer, law, clamp, metrics (ROS-free)
@@ -67,7 +72,9 @@ class ControllerNode {
   boost::recursive_mutex config_mutex_;
   dynamic_reconfigure::Server<ControllerConfig> reconfigure_;
   ros::Publisher cmd_pub_, control_pub_, markers_pub_, desired_path_pub_;
-  ros::Publisher takeoff_pub_, land_pub_, reset_pub_;
+  // take-off, land, reset: held until the driver listens, re-sent until shown
+  DriverCommandChannel takeoff_, land_, reset_;
+  SafetyConfig safety_;
   ros::Subscriber state_sub_, joy_sub_;
   ros::Timer timer_;
   ros::WallTimer rate_timer_;

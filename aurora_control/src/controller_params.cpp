@@ -94,12 +94,19 @@ AxisMap axisParam(const ros::NodeHandle& pnh, const std::string& key, const Axis
 }  // namespace
 
 SafetyConfig loadSafetyConfig(const ros::NodeHandle& pnh) {
+  const SafetyConfig d;  // the defaults, written once in flight_supervisor.h
   SafetyConfig c;
-  c.flight_sequence = paramOr(pnh, "safety/flight_sequence", false);
-  c.takeoff_altitude = rangedParam(pnh, "safety/takeoff_altitude", 0.75, 0.2, 5.0, "m");
-  c.takeoff_timeout = rangedParam(pnh, "safety/takeoff_timeout", 15.0, 1.0, 120.0, "s");
-  c.hover_after = rangedParam(pnh, "safety/hover_after", 0.5, 0.01, 60.0, "s");
-  c.land_after = rangedParam(pnh, "safety/land_after", 0.0, 0.0, 600.0, "s (0 = never)");
+  c.flight_sequence = paramOr(pnh, "safety/flight_sequence", d.flight_sequence);
+  c.takeoff_altitude = rangedParam(pnh, "safety/takeoff_altitude", d.takeoff_altitude, 0.2, 5.0, "m");
+  c.takeoff_timeout = rangedParam(pnh, "safety/takeoff_timeout", d.takeoff_timeout, 1.0, 120.0, "s");
+  c.hover_after = rangedParam(pnh, "safety/hover_after", d.hover_after, 0.01, 60.0, "s");
+  c.land_after = rangedParam(pnh, "safety/land_after", d.land_after, 0.0, 600.0, "s (0 = never)");
+  c.command_resend_period =
+      rangedParam(pnh, "safety/command_resend_period", d.command_resend_period, 0.1, 10.0, "s");
+  c.land_resend_timeout =
+      rangedParam(pnh, "safety/land_resend_timeout", d.land_resend_timeout, 1.0, 120.0, "s");
+  c.takeoff_rise = rangedParam(pnh, "safety/takeoff_rise", d.takeoff_rise, 0.02, 1.0, "m");
+  c.descent_speed = rangedParam(pnh, "safety/descent_speed", d.descent_speed, 0.02, 1.0, "m/s");
   if (c.land_after > 0.0 && c.land_after <= c.hover_after) {
     throw ParameterError("parameter '" + fullKey(pnh, "safety/land_after") +
                          "' must be 0 (never) or longer than safety/hover_after");

@@ -10,6 +10,8 @@ from aurora_msgs.msg import DroneState
 from geometry_msgs.msg import Twist
 from rosgraph_msgs.msg import Log
 
+from ros_links import wait_linked
+
 
 class BadInputTest(unittest.TestCase):
     @classmethod
@@ -17,8 +19,11 @@ class BadInputTest(unittest.TestCase):
         cls.states = []
         cls.warnings = []
         rospy.Subscriber("state", DroneState, lambda m: cls.states.append(m), queue_size=1000)
-        rospy.Subscriber("/rosout", Log, cls.on_log, queue_size=1000)
+        rosout = rospy.Subscriber("/rosout", Log, cls.on_log, queue_size=1000)
         cls.pub = rospy.Publisher("cmd_vel", Twist, queue_size=10)
+        # The warnings are counted from /rosout: its link to the sim must be up
+        # before the first bad command, or the one warning is lost.
+        cls.rosout_linked = wait_linked(rosout, rospy.get_namespace() + "ardrone_sim")
         deadline = time.time() + 20
         # Two seconds of hover first: the rotors start at rest (spec initial state).
         while (len(cls.states) < 60 or cls.pub.get_num_connections() == 0) and time.time() < deadline:
@@ -35,8 +40,15 @@ class BadInputTest(unittest.TestCase):
             self.pub.publish(twist)
             time.sleep(1.0 / 30.0)
 
+    def wait_for(self, predicate, timeout):
+        end = time.time() + timeout
+        while not predicate() and time.time() < end:
+            time.sleep(0.02)
+        return predicate()
+
     def test_1_nan_and_inf_never_reach_the_model(self):
         self.assertTrue(self.states, "no state from the sim")
+        self.assertTrue(self.rosout_linked, "/rosout never linked to the sim")
         start = len(self.states)
         for bad in (float("nan"), float("inf"), -float("inf")):
             t = Twist()
@@ -62,7 +74,8 @@ class BadInputTest(unittest.TestCase):
         t = Twist()
         t.linear.y = float("nan")
         self.send_for(t, 0.3)
-        time.sleep(0.3)
+        self.assertTrue(self.wait_for(lambda: len(self.warnings) >= 2, 5.0), "no warning for the new burst")
+        time.sleep(0.3)  # nothing more may come
         self.assertEqual(len(self.warnings), 2)
 
     def test_3_out_of_range_is_clamped(self):

@@ -4,7 +4,11 @@
 // core on cmd_vel with the drivers' sign conventions and clamping, and
 // publishes a motion-capture PoseStamped at 120 Hz with small noise,
 // occasional dropouts and out-of-order stamps (seeded, deterministic).
-// Test hooks: ~true_state (DroneState), ~pause_mocap (Float64: seconds).
+// Test hooks: ~true_state (DroneState), ~pause_mocap (Float64: seconds),
+// ~received (String, latched: "takeoff=N land=N reset=N", every message
+// received, ignored ones included). A late or not-yet-ready driver:
+// ~takeoff_subscribe_after [s] subscribes to take-off only after that long;
+// ~ignore_takeoffs, ~ignore_lands [count] drop the first ones received.
 #include <aurora_msgs/DroneState.h>
 #include <geometry_msgs/PoseStamped.h>
 #include <geometry_msgs/Twist.h>
@@ -52,13 +56,27 @@ class FakeDriver {
     model_.reset(0.0);  // on the ground, rotors stopped
     const ros::TransportHints hints = ros::TransportHints().tcpNoDelay();
     subs_.push_back(nh.subscribe(cmd, 10, &FakeDriver::onCmd, this, hints));
-    subs_.push_back(nh.subscribe(prefix + "takeoff", 1, &FakeDriver::onTakeoff, this));
+    ignore_takeoffs_ = pnh.param("ignore_takeoffs", 0);
+    ignore_lands_ = pnh.param("ignore_lands", 0);
+    const double late = pnh.param("takeoff_subscribe_after", 0.0);
+    const std::string takeoff = prefix + "takeoff";
+    if (late > 0.0) {
+      late_timer_ = nh.createWallTimer(ros::WallDuration(late), [this, nh, takeoff](const ros::WallTimerEvent&) {
+        ros::NodeHandle n(nh);
+        subs_.push_back(n.subscribe(takeoff, 1, &FakeDriver::onTakeoff, this));
+        ROS_INFO("fake_driver: subscribed to %s late", takeoff.c_str());
+      }, true);
+    } else {
+      subs_.push_back(nh.subscribe(takeoff, 1, &FakeDriver::onTakeoff, this));
+    }
     subs_.push_back(nh.subscribe(prefix + "land", 1, &FakeDriver::onLand, this));
     subs_.push_back(nh.subscribe(prefix + "reset", 1, &FakeDriver::onReset, this));
     subs_.push_back(pnh.subscribe("pause_mocap", 1, &FakeDriver::onPause, this));
     pose_pub_ = nh.advertise<geometry_msgs::PoseStamped>(pnh.param<std::string>("pose_topic", "/mocap/pose"), 50);
     true_pub_ = pnh.advertise<aurora_msgs::DroneState>("true_state", 100);
     status_pub_ = pnh.advertise<std_msgs::String>("status", 10, true);
+    received_pub_ = pnh.advertise<std_msgs::String>("received", 10, true);
+    countReceived(0, 0, 0);
     step_timer_ = nh.createTimer(ros::Duration(params_.Ts), &FakeDriver::onStep, this);
     mocap_timer_ = nh.createTimer(ros::Duration(1.0 / pnh.param("mocap_rate", 120.0)), &FakeDriver::onMocap, this);
     status("landed");
@@ -79,13 +97,26 @@ class FakeDriver {
     for (int i = 0; i < 4; ++i) cmd_[i] = clampUnit(U[i]);
     cmd_time_ = ros::Time::now();
   }
+  void countReceived(int takeoff, int land, int reset) {
+    received_[0] += takeoff, received_[1] += land, received_[2] += reset;
+    std_msgs::String m;
+    m.data = "takeoff=" + std::to_string(received_[0]) + " land=" + std::to_string(received_[1]) +
+             " reset=" + std::to_string(received_[2]);
+    received_pub_.publish(m);
+  }
+  // As both drivers: a take-off while flying and a land while landing change nothing.
   void onTakeoff(const std_msgs::Empty::ConstPtr&) {
+    countReceived(1, 0, 0);
+    if (ignore_takeoffs_ > 0) return (void)--ignore_takeoffs_;
     if (phase_ == Phase::kLanded) phase_ = Phase::kTakingOff, status("taking off");
   }
   void onLand(const std_msgs::Empty::ConstPtr&) {
+    countReceived(0, 1, 0);
+    if (ignore_lands_ > 0) return (void)--ignore_lands_;
     if (phase_ != Phase::kLanded) phase_ = Phase::kLanding, status("landing");
   }
   void onReset(const std_msgs::Empty::ConstPtr&) {
+    countReceived(0, 0, 1);
     phase_ = Phase::kLanded;
     touchDown();
     status("landed (reset)");
@@ -192,7 +223,10 @@ class FakeDriver {
   bool held_ = false;
   geometry_msgs::PoseStamped held_pose_;
   std::vector<ros::Subscriber> subs_;
-  ros::Publisher pose_pub_, true_pub_, status_pub_;
+  ros::Publisher pose_pub_, true_pub_, status_pub_, received_pub_;
+  int ignore_takeoffs_ = 0, ignore_lands_ = 0;
+  int received_[3] = {0, 0, 0};
+  ros::WallTimer late_timer_;
   ros::Timer step_timer_, mocap_timer_;
 };
 

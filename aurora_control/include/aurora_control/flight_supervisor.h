@@ -23,6 +23,11 @@ struct SafetyConfig {
   double landed_altitude = 0.1;   // [m] below this while landing: landed
   double hover_after = 0.5;       // [s] state age that commands hover
   double land_after = 0.0;        // [s] state age that commands landing; 0 = never
+  // Delivery of take-off and land to the driver (driver_command.h).
+  double command_resend_period = 1.0;  // [s] re-send until the state shows the effect
+  double land_resend_timeout = 10.0;   // [s] after the first land: stop re-sending, warn
+  double takeoff_rise = 0.1;           // [m] climb above the request altitude that shows a take-off
+  double descent_speed = 0.1;          // [m/s] sinking faster shows a landing (above mocap noise)
   bool box_enabled = false;       // land when the drone leaves [box_min, box_max]
   double box_min[3] = {0, 0, 0};  // [m] world frame
   double box_max[3] = {0, 0, 0};
