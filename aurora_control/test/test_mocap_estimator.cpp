@@ -10,7 +10,7 @@
 using aurora_control::MocapEstimator;
 
 namespace {
-const double kPi = 3.141592653589793;
+using aurora_sim::kPi;
 }
 
 TEST(MocapEstimator, VelocityOfKnownTrajectoryWithNoise) {

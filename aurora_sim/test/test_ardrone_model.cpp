@@ -15,7 +15,7 @@
 using namespace aurora_sim;
 
 namespace {
-const double kPi = 3.141592653589793;
+using aurora_sim::kPi;
 }
 
 TEST(AngleWrap, WrapsOnceIntoPiRange) {

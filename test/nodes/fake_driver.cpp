@@ -42,7 +42,7 @@ class FakeDriver {
     const std::string prefix = driver == "ardrone" ? "/ardrone/" : "/bebop/";
     const std::string cmd = driver == "ardrone" ? "/cmd_vel" : "/bebop/cmd_vel";
     noise_pos_ = pnh.param("noise_position", 0.0005);
-    noise_ang_ = pnh.param("noise_angle", 0.05 * 3.141592653589793 / 180.0);
+    noise_ang_ = pnh.param("noise_angle", 0.05 * kPi / 180.0);
     dropout_ = pnh.param("dropout_probability", 0.03);
     reorder_ = pnh.param("reorder_probability", 0.02);
     frame_ = pnh.param<std::string>("mocap_frame", "world");

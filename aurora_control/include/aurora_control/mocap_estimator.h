@@ -15,8 +15,11 @@
 // across the gap.
 #pragma once
 
+#include <angles/angles.h>
+
 #include <cmath>
 
+#include "aurora_sim/scalar_math.h"
 #include "aurora_sim/state_index.h"
 
 namespace aurora_control {
@@ -47,11 +50,11 @@ class MocapEstimator {
       store(t, pos, rpy);
       return Result::kRestarted;
     }
-    const double av = dt / (dt + 1.0 / (2.0 * kPi * cfg_.velocity_cutoff_hz));
-    const double ar = dt / (dt + 1.0 / (2.0 * kPi * cfg_.rate_cutoff_hz));
+    const double av = dt / (dt + 1.0 / (2.0 * aurora_sim::kPi * cfg_.velocity_cutoff_hz));
+    const double ar = dt / (dt + 1.0 / (2.0 * aurora_sim::kPi * cfg_.rate_cutoff_hz));
     for (int i = 0; i < 3; ++i) {
       vel_[i] += av * ((pos[i] - pos_[i]) / dt - vel_[i]);
-      rate_[i] += ar * (wrap(rpy[i] - rpy_[i]) / dt - rate_[i]);
+      rate_[i] += ar * (angles::normalize_angle(rpy[i] - rpy_[i]) / dt - rate_[i]);
     }
     store(t, pos, rpy);
     return Result::kAccepted;
@@ -71,14 +74,6 @@ class MocapEstimator {
   }
 
  private:
-  static constexpr double kPi = 3.141592653589793;
-
-  static double wrap(double a) {
-    while (a > kPi) a -= 2.0 * kPi;
-    while (a <= -kPi) a += 2.0 * kPi;
-    return a;
-  }
-
   void store(double t, const double pos[3], const double rpy[3]) {
     t_ = t;
     for (int i = 0; i < 3; ++i) {

@@ -9,6 +9,7 @@
 
 #include "aurora_sim/ardrone_params.h"
 #include "aurora_sim/host_device.h"
+#include "aurora_sim/rotation.h"
 #include "aurora_sim/scalar_math.h"
 #include "aurora_sim/state_index.h"
 
@@ -50,18 +51,6 @@ struct Disturbance {
     return d;
   }
 };
-
-// Rotation matrix R = Rz(psi) Ry(theta) Rx(phi), column 3 only: the thrust
-// acts along the body z axis.
-template <typename T>
-AURORA_HD inline void thrustAxis(const T& sphi, const T& cphi, const T& sth, const T& cth,
-                                 const T& spsi, const T& cpsi, T out[3]) {
-  // (Rz Ry)(:, 2) * (-sphi) + (Rz Ry)(:, 3) * cphi, with (Rz Ry)(:, 2) = [-spsi, cpsi, 0]
-  // and (Rz Ry)(:, 3) = [cpsi sth, spsi sth, cth].
-  out[0] = (-spsi) * (-sphi) + (cpsi * sth) * cphi;
-  out[1] = cpsi * (-sphi) + (spsi * sth) * cphi;
-  out[2] = cth * cphi;
-}
 
 // Rotational inertia matrix Mr(eta) (ardrone-model.md, "Mr and Cr").
 template <typename T>
@@ -181,12 +170,13 @@ AURORA_HD inline void ardroneStep(const ArdroneParams<T>& p, ArdroneState<T>& s,
   sinCos(X[kYaw], spsi, cpsi);
 
   // 7. Translation: v += ((R [0 0 sum F]' - D) - [0 0 m g]') / m * Ts.
+  // The thrust acts along the body z axis, R's third column.
   const T thrust = F[0] + F[1] + F[2] + F[3];
-  T axis[3];
-  thrustAxis(sphi, cphi, sth, cth, spsi, cpsi, axis);
+  T R[3][3];
+  rotationMatrix(sphi, cphi, sth, cth, spsi, cpsi, R);
   const T weight[3] = {T(0), T(0), p.m * p.g};
   for (int i = 0; i < 3; ++i) {
-    X[kVx + i] = X[kVx + i] + ((axis[i] * thrust - dist.force[i]) - weight[i]) / p.m * p.Ts;
+    X[kVx + i] = X[kVx + i] + ((R[i][2] * thrust - dist.force[i]) - weight[i]) / p.m * p.Ts;
   }
 
   // 8. Rotation: eta_dot += Mr^-1 (tau - Q - Cr eta_dot) Ts.

@@ -10,6 +10,9 @@
 
 namespace aurora_sim {
 
+// pi, written once for the whole project (the double nearest to it).
+constexpr double kPi = 3.141592653589793;
+
 template <typename T>
 AURORA_HD inline T select(bool condition, const T& a, const T& b) {
   return condition ? a : b;
@@ -30,10 +33,22 @@ AURORA_HD inline void sinCos(const T& x, T& s, T& c) {
 // model): above pi subtract 2 pi, below -pi add 2 pi.
 template <typename T>
 AURORA_HD inline T wrapAngleOnce(const T& angle) {
-  const T pi = T(3.141592653589793);
-  const T two_pi = T(2.0 * 3.141592653589793);
+  const T pi = T(kPi);
+  const T two_pi = T(2.0 * kPi);
   T wrapped = select(angle > pi, angle - two_pi, angle);
   return select(wrapped < -pi, wrapped + two_pi, wrapped);
+}
+
+// The underactuated controller's angle-error rule, as the reference writes
+// it (docs: underactuated controller, step 1): if |e| > pi then e -= 2 pi;
+// then if e < -pi, e += 2 pi. Unlike wrapAngleOnce, an error below -pi goes
+// down and back up by 2 pi (rounding included), as in the reference.
+template <typename T>
+AURORA_HD inline T wrapErrorAsReference(const T& e) {
+  const T pi = T(kPi);
+  const T two_pi = T(2.0 * kPi);
+  const T once = select((e > pi) | (e < -pi), e - two_pi, e);
+  return select(once < -pi, once + two_pi, once);
 }
 
 // Clamps a command to [-1, 1], as the AR.Drone and Bebop drivers do. NaN is

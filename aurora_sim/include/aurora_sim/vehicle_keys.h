@@ -4,6 +4,8 @@
 // fall-back to built-in constants.
 #pragma once
 
+#include "aurora_sim/scalar_math.h"
+
 #include <cmath>
 #include <string>
 #include <vector>
@@ -63,7 +65,7 @@ inline void setVehicleValue(ArdroneParams<double>& p, const VehicleKey& key, dou
   } else if (key.usat_index == 2) {
     p.uSat[2] = value;
   } else {
-    p.uSat[key.usat_index] = value * 3.141592653589793 / 180.0;
+    p.uSat[key.usat_index] = value * kPi / 180.0;
   }
 }
 

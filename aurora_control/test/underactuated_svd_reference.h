@@ -1,8 +1,8 @@
-// Underactuated nonlinear controller with 12 gains (Brandão, Sarcinelli-Filho
-// & Carelli 2013), as ardrone-model.md ("Underactuated nonlinear controller")
-// writes it: a dynamic-inversion law on the AR.Drone model that computes the
-// desired rotor speeds and inverts the on-board PD to find the SDK commands.
-// ROS-free; Eigen for the small matrices (pinv of the 6x4 actuation matrix).
+// TEST REFERENCE ONLY: the underactuated 12-gain controller written the
+// direct way, with Eigen matrices and the pseudo-inverse through an SVD, as
+// the spec's steps 1-11 read. The product uses underactuated_law.h (closed-
+// form pseudo-inverse, templated); test_underactuated.cpp checks that both
+// agree.
 #pragma once
 
 #include <Eigen/Dense>
@@ -12,16 +12,16 @@
 
 namespace aurora_control {
 
-struct UnderactuatedGains {
+struct SvdReferenceGains {
   // (k1, k2) per axis in the order x, y, z, phi, theta, psi.
   double k1[6] = {0.5, 0.5, 5.0, 1.0, 1.0, 1.0};
   double k2[6] = {2.0, 2.0, 2.0, 20.0, 20.0, 2.5};
 };
 
-class UnderactuatedController {
+class UnderactuatedSvdReference {
  public:
-  explicit UnderactuatedController(const aurora_sim::ArdroneParams<double>& p,
-                                   const UnderactuatedGains& g = UnderactuatedGains())
+  explicit UnderactuatedSvdReference(const aurora_sim::ArdroneParams<double>& p,
+                                     const SvdReferenceGains& g = SvdReferenceGains())
       : p_(p), g_(g) {
     reset();
   }
@@ -40,7 +40,7 @@ class UnderactuatedController {
   void compute(const double Xd_in[aurora_sim::kStateSize], const double dXd_acc[6],
                const double X[aurora_sim::kStateSize], double U[4]) {
     using Eigen::Matrix;
-    const double pi = 3.141592653589793;
+    const double pi = aurora_sim::kPi;
     const aurora_sim::ArdroneParams<double>& p = p_;
     double Xd[aurora_sim::kStateSize];
     for (int i = 0; i < aurora_sim::kStateSize; ++i) Xd[i] = Xd_in[i];
@@ -154,7 +154,7 @@ class UnderactuatedController {
 
  private:
   aurora_sim::ArdroneParams<double> p_;
-  UnderactuatedGains g_;
+  SvdReferenceGains g_;
   Eigen::Vector4d Wd_;
   Eigen::Vector4d Xr_;  // own references on the on-board channels (roll, pitch, climb, yaw rate)
   double roll_d_ = 0.0, pitch_d_ = 0.0;
