@@ -11,7 +11,10 @@
 #include "aurora_sim/command_mapping.h"
 #include "aurora_sim/ros_conversions.h"
 #include "aurora_sim/ros_params.h"
+#include "aurora_control/law_yaml.h"
 #include "controller_params.h"
+#include "param_tree.h"
+#include "task_markers.h"
 
 namespace aurora_control {
 
@@ -25,18 +28,14 @@ ControllerNode::ControllerNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
     : nh_(nh), pnh_(private_nh), reconfigure_(config_mutex_, private_nh) {
   // The controller needs only Ts of the vehicle; it is read with the same
   // range rules as the sim's.
-  Ts_ = aurora_sim::loadVehicleParams(nh_, "vehicle").Ts;
-
-  const std::string name = requireParam<std::string>(pnh_, "controller/name", "'pd_saturated'");
-  if (name != "pd_saturated") {
-    throw ParameterError("parameter '" + fullKey(pnh_, "controller/name") + "' = '" + name +
-                         "' is unknown: accepted controllers: 'pd_saturated'");
-  }
+  // The vehicle, with the same range rules as the sim's: Ts for every law,
+  // the whole model for the underactuated law, which inverts it.
+  const aurora_sim::ArdroneParams<double> vehicle = aurora_sim::loadVehicleParams(nh_, "vehicle");
+  Ts_ = vehicle.Ts;
   core_.reset(new Core());
   ControllerSettings& set = core_->settings;
   set.Ts = Ts_;
-  set.gains.kp = requireGain(pnh_, "controller/kp");
-  set.gains.kd = requireGain(pnh_, "controller/kd");
+  loadLaw(pnh_, vehicle, set);
   set.delay = readDelaySamples();
   set.clamp_commands = paramOr(pnh_, "clamp_commands", true);
   const std::string mode = paramOr<std::string>(pnh_, "mode", "realtime");
@@ -64,6 +63,7 @@ ControllerNode::ControllerNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
   lockstep_control_subscribers_ = static_cast<int>(
       rangedParam(pnh_, "lockstep_subscribers/control", 0, 0, 100, "(subscribers of control)"));
   task_ = loadTask(pnh_);
+  refuseUnknownTopLevelKeys();
   safety_ = loadSafetyConfig(pnh_);
   const SafetyConfig& safety = safety_;
   supervisor_.configure(safety);
@@ -96,6 +96,7 @@ ControllerNode::ControllerNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
   config.kp = set.gains.kp;
   config.kd = set.gains.kd;
   config.delay_samples = static_cast<int>(set.delay);
+  writeUnderactuatedGains(set.underactuated, config);
   reconfigure_.updateConfig(config);
   reconfigure_.setCallback([this](ControllerConfig& c, uint32_t level) { onReconfigure(c, level); });
 
@@ -104,12 +105,21 @@ ControllerNode::ControllerNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
     rate_timer_ = nh_.createWallTimer(ros::WallDuration(1.0), &ControllerNode::onRateCheck, this);
   }
   publishTaskMarkers();
-  ROS_INFO("controller: pd_saturated Kp=%g Kd=%g, delay %ld samples (%.4f s), %s commands, "
-           "%s mode, task of %d waypoints over %.1f s%s%s",
-           set.gains.kp, set.gains.kd, set.delay, set.delay * Ts_,
-           set.clamp_commands ? "clamped" : "unclamped", mode.c_str(), task_.count, task_.duration,
-           safety.flight_sequence ? ", flight sequence (take-off, task, landing)" : "",
+  ROS_INFO("controller: %s (%s), delay %ld samples (%.4f s), %s commands, %s mode, %s task over "
+           "%.1f s%s%s", lawName(set.law), gainsText(set).c_str(), set.delay, set.delay * Ts_,
+           set.clamp_commands ? "clamped" : "unclamped", mode.c_str(), taskTypeName(task_.type),
+           task_.duration(), safety.flight_sequence ? ", flight sequence (take-off, task, landing)" : "",
            joystick_enabled_ ? ", joystick override" : "");
+}
+
+void ControllerNode::refuseUnknownTopLevelKeys() {
+  // The node's own keys and those the reconfigure server writes beside them.
+  std::vector<std::string> accepted{"controller", "task", "safety", "joystick", "mode", "trigger",
+                                    "delay", "clamp_commands", "lockstep_subscribers", "kp", "kd",
+                                    "delay_samples"};
+  for (int i = 0; i < 2 * kAxes; ++i) accepted.push_back(underactuatedGainName(i));
+  refuseUnknownParams(pnh_, "", accepted, "a typo, or a key of another file");
+  refuseUnknownParams(pnh_, "delay", {"samples", "seconds"}, "");
 }
 
 long ControllerNode::readDelaySamples() {
@@ -149,13 +159,16 @@ long ControllerNode::readDelaySamples() {
 
 void ControllerNode::onReconfigure(ControllerConfig& config, uint32_t) {
   ControllerSettings& set = core_->settings;
-  if (config.kp != set.gains.kp || config.kd != set.gains.kd || config.delay_samples != set.delay) {
-    ROS_INFO("controller: reconfigured Kp=%g Kd=%g delay=%d samples", config.kp, config.kd,
-             config.delay_samples);
+  ControllerSettings next = set;
+  next.gains.kp = config.kp;
+  next.gains.kd = config.kd;
+  next.delay = config.delay_samples;
+  readUnderactuatedGains(config, next.underactuated);
+  const std::string before = gainsText(set), after = gainsText(next);
+  if (before != after || next.delay != set.delay) {
+    ROS_INFO("controller: reconfigured %s, delay %ld samples", after.c_str(), next.delay);
   }
-  set.gains.kp = config.kp;
-  set.gains.kd = config.kd;
-  set.delay = config.delay_samples;
+  set = next;
 }
 
 void ControllerNode::onState(const aurora_msgs::DroneState::ConstPtr& msg) {
@@ -283,10 +296,10 @@ void ControllerNode::cycle(const ros::Time& now) {
   const bool have_state = !core_->empty();
   const StateSample* newest = have_state ? &core_->newest() : nullptr;
   const long task_step = have_state ? newest->step - supervisor_.flyStartStep() : 0;
-  const double task_time = WaypointTask<double>::timeOfStep(task_step, Ts_);
+  const double task_time = WaypointTask<double>::timeOfStep(task_step, Ts_);  // step Ts
   const FlightDecision decision = supervisor_.update(
       now.toSec(), age, have_state ? newest->X : kNoState, have_state ? newest->step : 0,
-      task_time, task_.duration);
+      task_time, task_.duration());
   if (!decision.event.empty()) {
     const bool safety = decision.event.rfind("hover", 0) == 0 || decision.event.rfind("land (", 0) == 0;
     if (safety) {
@@ -312,8 +325,9 @@ void ControllerNode::cycle(const ros::Time& now) {
 
   if (decision.event == "fly") core_->resetMetrics();  // the task starts now
   const int wp = task_.activeIndex(task_time);
-  const double* target = decision.hold ? decision.hold_point : task_.position[wp];
-  ControlOutput out = decision.run_law ? core_->compute(target) : core_->hover();
+  const Reference<double> ref =
+      decision.hold ? Core::restingAt(decision.hold_point) : task_.at(task_time);
+  ControlOutput out = decision.run_law ? core_->compute(ref) : core_->hover();
   std::string mode = decision.mode;
   if (joy_.deadman) {
     aurora_sim::modelCommandFromTwist(joy_.sticks, out.U);
@@ -329,15 +343,14 @@ void ControllerNode::cycle(const ros::Time& now) {
   control.header.frame_id = "world";
   control.step = newest->step;
   control.waypoint_index = wp;
-  control.desired_position.x = target[0];
-  control.desired_position.y = target[1];
-  control.desired_position.z = target[2];
+  fillReference(ref, control);
+  control.law_ran = decision.run_law;
+  control.overridden = joy_.deadman || resume_.active();
   control.delay_samples = set.delay;
   control.delay_in_force = static_cast<uint32_t>(out.delay_in_force);
   control.delay_seconds = set.delay * Ts_;
   control.sample_time = Ts_;
-  control.kp = set.gains.kp;
-  control.kd = set.gains.kd;
+  fillLaw(control);
   control.clamped = set.clamp_commands;
   control.mode = mode;
   control.takeoff_attempts = static_cast<uint32_t>(takeoff_.command().attempts());
@@ -360,40 +373,35 @@ void ControllerNode::cycle(const ros::Time& now) {
   control_pub_.publish(control);
 }
 
+void ControllerNode::fillLaw(aurora_msgs::Control& control) const {
+  const ControllerSettings& set = core_->settings;
+  control.controller = lawName(set.law);
+  control.gain_names = lawGainNames(set.law);
+  control.gains.clear();
+  for (size_t i = 0; i < control.gain_names.size(); ++i) control.gains.push_back(lawGain(set, int(i)));
+  const bool pd = set.law == LawType::kPdSaturated;
+  control.kp = pd ? set.gains.kp : 0.0;
+  control.kd = pd ? set.gains.kd : 0.0;
+}
+
+void ControllerNode::fillReference(const Reference<double>& ref, aurora_msgs::Control& control) const {
+  control.desired_position.x = ref.pos[0];
+  control.desired_position.y = ref.pos[1];
+  control.desired_position.z = ref.pos[2];
+  control.desired_velocity.x = ref.vel[0];
+  control.desired_velocity.y = ref.vel[1];
+  control.desired_velocity.z = ref.vel[2];
+  control.desired_acceleration.x = ref.acc[0];
+  control.desired_acceleration.y = ref.acc[1];
+  control.desired_acceleration.z = ref.acc[2];
+  control.desired_yaw = ref.yaw;
+  control.desired_yaw_rate = ref.yaw_rate;
+  control.desired_yaw_acceleration = ref.yaw_acc;
+}
+
 void ControllerNode::publishTaskMarkers() {
-  visualization_msgs::MarkerArray markers;
-  nav_msgs::Path path;
-  path.header.frame_id = "world";
-  path.header.stamp = ros::Time(0);
-  for (int i = 0; i < task_.count; ++i) {
-    visualization_msgs::Marker m;
-    m.header.frame_id = "world";
-    m.ns = "waypoints";
-    m.id = i;
-    m.type = visualization_msgs::Marker::SPHERE;
-    m.action = visualization_msgs::Marker::ADD;
-    m.pose.position.x = task_.position[i][0];
-    m.pose.position.y = task_.position[i][1];
-    m.pose.position.z = task_.position[i][2];
-    m.pose.orientation.w = 1.0;
-    m.scale.x = m.scale.y = m.scale.z = 0.12;
-    m.color.r = 0.9f;
-    m.color.a = 1.0f;
-    markers.markers.push_back(m);
-    visualization_msgs::Marker label = m;
-    label.ns = "waypoint_labels";
-    label.type = visualization_msgs::Marker::TEXT_VIEW_FACING;
-    label.text = std::to_string(i + 1);
-    label.pose.position.z += 0.15;
-    label.color.r = label.color.g = label.color.b = 1.0f;
-    markers.markers.push_back(label);
-    geometry_msgs::PoseStamped pose;
-    pose.header = path.header;
-    pose.pose = m.pose;
-    path.poses.push_back(pose);
-  }
-  markers_pub_.publish(markers);
-  desired_path_pub_.publish(path);
+  markers_pub_.publish(waypointMarkers(task_));
+  desired_path_pub_.publish(desiredPath(task_));
 }
 
 }  // namespace aurora_control

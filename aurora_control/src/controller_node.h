@@ -18,7 +18,7 @@
 #include "aurora_control/delayed_controller.h"
 #include "aurora_control/flight_supervisor.h"
 #include "aurora_control/joystick.h"
-#include "aurora_control/waypoint_task.h"
+#include "aurora_control/task.h"
 #include "driver_command_channel.h"
 
 namespace aurora_control {
@@ -31,7 +31,7 @@ class ControllerNode {
   ControllerNode(ros::NodeHandle nh, ros::NodeHandle private_nh);
 
  private:
-  using Core = DelayedPdController<kHistoryCapacity>;
+  using Core = DelayedController<kHistoryCapacity>;
 
   void onState(const aurora_msgs::DroneState::ConstPtr& msg);
   void onJoy(const sensor_msgs::Joy::ConstPtr& msg);
@@ -42,7 +42,10 @@ class ControllerNode {
   void sendCommand(const double U[4]);
   void serviceDriverCommands(double now, const double* fresh_X);
   void publishTaskMarkers();
+  void fillLaw(aurora_msgs::Control& control) const;
+  void fillReference(const Reference<double>& ref, aurora_msgs::Control& control) const;
   long readDelaySamples();
+  void refuseUnknownTopLevelKeys();
   double stateAge() const;
   bool lockstepListenersReady() const;
 
@@ -52,7 +55,7 @@ class ControllerNode {
   bool timer_triggered_;  // realtime: compute on the 30 Hz timer instead of on each new state
   int lockstep_cmd_subscribers_ = 1;      // lockstep: subscribers of cmd_vel before the first step
   int lockstep_control_subscribers_ = 0;  // ... and of control
-  WaypointTask<double> task_;
+  Task<double> task_;
 
   std::unique_ptr<Core> core_;     // delay buffer, law, clamp, metrics (ROS-free)
   FlightSupervisor supervisor_;    // flight sequence and watchdogs (ROS-free)

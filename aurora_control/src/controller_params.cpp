@@ -1,8 +1,11 @@
 #include "controller_params.h"
 
 #include <cmath>
+#include <cstdio>
 
-#include "aurora_control/task_check.h"
+#include "aurora_control/law_yaml.h"
+#include "aurora_control/task_yaml.h"
+#include "param_tree.h"
 #include "aurora_sim/ros_params.h"
 
 namespace aurora_control {
@@ -13,53 +16,43 @@ using aurora_sim::paramOr;
 using aurora_sim::rangedParam;
 using aurora_sim::requireParam;
 
-double requireGain(const ros::NodeHandle& pnh, const std::string& key) {
-  const double value = requireParam<double>(pnh, key, "a number in [0, 10]");
-  if (!(std::isfinite(value) && value >= 0.0 && value <= 10.0)) {
-    throw ParameterError("parameter '" + fullKey(pnh, key) + "' = " + std::to_string(value) +
-                         " is invalid: accepted range [0, 10]");
+void loadLaw(const ros::NodeHandle& pnh, const aurora_sim::ArdroneParams<double>& vehicle,
+             ControllerSettings& set) {
+  try {
+    readLaw(YamlReader("parameter ", "/"), paramAsYaml(pnh, "controller"), fullKey(pnh, "controller"), set);
+  } catch (const ConfigError& e) {
+    throw ParameterError(e.what());
   }
-  return value;
+  set.vehicle = vehicle;
 }
 
-static double xmlNumber(XmlRpc::XmlRpcValue& v, const std::string& key) {
-  if (v.getType() == XmlRpc::XmlRpcValue::TypeDouble) return static_cast<double>(v);
-  if (v.getType() == XmlRpc::XmlRpcValue::TypeInt) return static_cast<int>(v);
-  throw ParameterError("'" + key + "' must be a number");
+std::string gainsText(const ControllerSettings& set) {
+  std::string out;
+  const std::vector<std::string> names = lawGainNames(set.law);
+  for (size_t i = 0; i < names.size(); ++i) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%s%s=%g", i ? " " : "", names[i].c_str(), lawGain(set, int(i)));
+    out += buf;
+  }
+  return out;
 }
 
-WaypointTask<double> loadTask(const ros::NodeHandle& pnh) {
-  const std::string prefix = fullKey(pnh, "task") + "/";
-  XmlRpc::XmlRpcValue waypoints, end_times;
-  if (!pnh.getParam("task/waypoints", waypoints) ||
-      waypoints.getType() != XmlRpc::XmlRpcValue::TypeArray) {
-    throw ParameterError("missing parameter '" + prefix +
-                         "waypoints' (accepted: a list of [x, y, z] in m; load a task file "
-                         "such as config/tasks/mission4.yaml, launch arg 'task')");
-  }
-  if (!pnh.getParam("task/end_times", end_times) ||
-      end_times.getType() != XmlRpc::XmlRpcValue::TypeArray ||
-      end_times.size() != waypoints.size()) {
-    throw ParameterError("parameter '" + prefix +
-                         "end_times' must be a list with one time [s] per waypoint");
-  }
-  WaypointTask<double> task;
-  task.count = waypoints.size();
-  if (task.count > 16) task.count = 17;  // rejected by checkTask with the accepted range
-  for (int i = 0; i < waypoints.size() && i < 16; ++i) {
-    const std::string key = prefix + "waypoints[" + std::to_string(i) + "]";
-    if (waypoints[i].getType() != XmlRpc::XmlRpcValue::TypeArray || waypoints[i].size() != 3) {
-      throw ParameterError("'" + key + "' must be [x, y, z] in m");
-    }
-    for (int j = 0; j < 3; ++j) task.position[i][j] = xmlNumber(waypoints[i][j], key);
-    task.end_time[i] = xmlNumber(end_times[i], prefix + "end_times");
-  }
-  task.duration = requireParam<double>(pnh, "task/duration", "a time in (0, 86400] s");
-  const std::string problem = checkTask(task, prefix);
-  if (!problem.empty()) throw ParameterError(problem);
-  return task;
+const char* taskTypeName(TaskType type) {
+  return type == TaskType::kCircle ? "circle" : (type == TaskType::kLemniscate ? "lemniscate" : "waypoint");
 }
 
+Task<double> loadTask(const ros::NodeHandle& pnh) {
+  const YAML::Node task = paramAsYaml(pnh, "task");
+  if (!task) {
+    throw ParameterError("missing parameter '" + fullKey(pnh, "task") +
+                         "': load a task file such as config/tasks/mission4.yaml (launch arg 'task')");
+  }
+  try {
+    return readTask(YamlReader("parameter ", "/"), task, fullKey(pnh, "task"));
+  } catch (const ConfigError& e) {
+    throw ParameterError(e.what());
+  }
+}
 
 namespace {
 

@@ -20,6 +20,8 @@
 #include <vector>
 
 #include "aurora_control/delayed_controller.h"
+#include "aurora_control/law_yaml.h"
+#include "aurora_sim/vehicle_yaml.h"
 #include "aurora_sim/ros_conversions.h"
 
 namespace {
@@ -36,8 +38,10 @@ const char* kUsage =
     "\n"
     "options:\n"
     "  --ns NAME             drone namespace (default: the only one in the bag)\n"
-    "  --controller FILE     controller YAML (config/controllers/*.yaml): gains and clamping\n"
-    "  --kp X, --kd X        gains\n"
+    "  --controller FILE     controller YAML (config/controllers/*.yaml): law, gains, clamping\n"
+    "  --kp X, --kd X        gains of the PD law\n"
+    "  --vehicle FILE        vehicle YAML the underactuated law inverts\n"
+    "                        (default: config/vehicles/ardrone2.yaml)\n"
     "  --delay N             delay in samples\n"
     "  --delay-seconds S     delay in seconds (rounded to whole samples)\n"
     "  --clamp, --no-clamp   clamp commands to [-1, 1] or not\n"
@@ -62,11 +66,12 @@ double number(const std::string& flag, const std::string& v) {
 }
 
 struct Overrides {
-  bool kp = false, kd = false, delay = false, delay_seconds = false, clamp = false;
+  bool kp = false, kd = false, delay = false, delay_seconds = false, clamp = false, law = false;
   double kp_value = 0, kd_value = 0, delay_seconds_value = 0;
   long delay_value = 0;
   bool clamp_value = true;
-  bool any() const { return kp || kd || delay || delay_seconds || clamp; }
+  ControllerSettings law_settings;  // --controller FILE: the law and all its gains
+  bool any() const { return kp || kd || delay || delay_seconds || clamp || law; }
 };
 
 void loadControllerFile(const std::string& path, Overrides& o) {
@@ -76,23 +81,45 @@ void loadControllerFile(const std::string& path, Overrides& o) {
   } catch (const YAML::Exception& e) {
     fail("controller file '" + path + "' cannot be read: " + e.what());
   }
-  const YAML::Node c = root["controller"];
-  if (!c || !c["name"] || c["name"].as<std::string>() != "pd_saturated") {
-    fail("controller file '" + path + "': 'controller.name' must be 'pd_saturated'");
-  }
   try {
-    if (c["kp"]) o.kp = true, o.kp_value = c["kp"].as<double>();
-    if (c["kd"]) o.kd = true, o.kd_value = c["kd"].as<double>();
-    if (root["clamp_commands"]) o.clamp = true, o.clamp_value = root["clamp_commands"].as<bool>();
-  } catch (const YAML::Exception& e) {
-    fail("controller file '" + path + "': " + e.what());
+    const YamlReader r("controller file '" + path + "': ");
+    r.onlyKeys(root, "", {"controller", "clamp_commands"});
+    readLaw(r, root["controller"], "controller", o.law_settings);
+    o.law = true;
+    if (root["clamp_commands"]) o.clamp = true, o.clamp_value = r.boolean(root["clamp_commands"], "clamp_commands");
+  } catch (const ConfigError& e) {
+    fail(e.what());
   }
+}
+
+// The law and gains recorded in a control message (the node writes them
+// each cycle, so a live reconfiguration replays too).
+void recordedLaw(const aurora_msgs::Control& c, ControllerSettings& set) {
+  set.law = c.controller == "underactuated" ? LawType::kUnderactuated : LawType::kPdSaturated;
+  const std::vector<std::string> names = lawGainNames(set.law);
+  for (size_t i = 0; i < names.size() && i < c.gains.size(); ++i) {
+    if (c.gain_names[i] != names[i]) fail("control message of step " + std::to_string(c.step) + ": gain '" + c.gain_names[i] + "' where '" + names[i] + "' was expected");
+    lawGain(set, static_cast<int>(i)) = c.gains[i];
+  }
+}
+
+Reference<double> recordedReference(const aurora_msgs::Control& c) {
+  Reference<double> r;
+  const double pos[3] = {c.desired_position.x, c.desired_position.y, c.desired_position.z};
+  const double vel[3] = {c.desired_velocity.x, c.desired_velocity.y, c.desired_velocity.z};
+  const double acc[3] = {c.desired_acceleration.x, c.desired_acceleration.y, c.desired_acceleration.z};
+  for (int i = 0; i < 3; ++i) r.pos[i] = pos[i], r.vel[i] = vel[i], r.acc[i] = acc[i];
+  r.yaw = c.desired_yaw;
+  r.yaw_rate = c.desired_yaw_rate;
+  r.yaw_acc = c.desired_yaw_acceleration;
+  return r;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
   std::string bag_path, ns, out_path;
+  std::string vehicle_path = std::string(AURORA_CONFIG_DIR) + "/vehicles/ardrone2.yaml";
   bool expect_identical = false;
   Overrides o;
   for (int i = 1; i < argc; ++i) {
@@ -108,6 +135,8 @@ int main(int argc, char** argv) {
       ns = value();
     } else if (a == "--controller") {
       loadControllerFile(value(), o);
+    } else if (a == "--vehicle") {
+      vehicle_path = value();
     } else if (a == "--kp") {
       o.kp = true, o.kp_value = number(a, value());
     } else if (a == "--kd") {
@@ -198,7 +227,12 @@ int main(int argc, char** argv) {
   }
   if (controls.empty() || states.empty()) fail("no " + ns + "/control or " + ns + "/state messages");
 
-  std::unique_ptr<DelayedPdController<kCapacity>> core(new DelayedPdController<kCapacity>());
+  std::unique_ptr<DelayedController<kCapacity>> core(new DelayedController<kCapacity>());
+  try {
+    core->settings.vehicle = aurora_sim::loadVehicleYaml(vehicle_path);
+  } catch (const std::runtime_error& e) {
+    fail(std::string("--vehicle: ") + e.what());
+  }
   FILE* csv = nullptr;
   if (!out_path.empty()) {
     csv = std::fopen(out_path.c_str(), "w");
@@ -224,18 +258,29 @@ int main(int argc, char** argv) {
     if (core->empty()) continue;
     ControllerSettings& set = core->settings;
     set.Ts = c.sample_time;
-    set.gains.kp = o.kp ? o.kp_value : c.kp;
-    set.gains.kd = o.kd ? o.kd_value : c.kd;
+    if (o.law) {
+      set.law = o.law_settings.law, set.gains = o.law_settings.gains;
+      set.underactuated = o.law_settings.underactuated;
+    } else {
+      recordedLaw(c, set);
+    }
+    if (o.kp) set.gains.kp = o.kp_value;
+    if (o.kd) set.gains.kd = o.kd_value;
     set.delay = o.delay ? o.delay_value
                         : (o.delay_seconds ? std::lround(o.delay_seconds_value / c.sample_time)
                                            : static_cast<long>(c.delay_samples));
     set.clamp_commands = o.clamp ? o.clamp_value : static_cast<bool>(c.clamped);
-    const double desired[3] = {c.desired_position.x, c.desired_position.y, c.desired_position.z};
-    const ControlOutput out = c.mode.rfind("hover", 0) == 0 ? core->hover() : core->compute(desired);
+    // The law ran when the node says it did; where the joystick replaced
+    // the command, the law's own command (command_unclamped) is compared.
+    const ControlOutput out = c.law_ran ? core->compute(recordedReference(c)) : core->hover();
+    const double* mine = c.overridden ? out.U_unclamped : out.U;
+    const double* theirs = c.overridden ? c.command_unclamped.data() : c.command.data();
     double diff = 0.0;
-    for (int i = 0; i < 4; ++i) diff = std::max(diff, std::fabs(out.U[i] - c.command[i]));
     bool same = true;
-    for (int i = 0; i < 4; ++i) same = same && out.U[i] == c.command[i];
+    for (int i = 0; i < 4; ++i) {
+      diff = std::max(diff, std::fabs(mine[i] - theirs[i]));
+      same = same && mine[i] == theirs[i];
+    }
     identical += same;
     max_diff = std::max(max_diff, diff);
     ++cycles;
@@ -251,8 +296,8 @@ int main(int argc, char** argv) {
   std::printf("replay: %s: %ld control cycles, %ld identical, %ld differ, max |dU| = %.6g%s\n",
               ns.c_str(), cycles, identical, cycles - identical, max_diff,
               o.any() ? " (changed configuration)" : " (recorded configuration)");
-  std::printf("replay: metrics recorded IAE %.10g ITAE %.10g IASC %.10g; replayed IAE %.10g "
-              "ITAE %.10g IASC %.10g\n",
+  std::printf("replay: metrics recorded IAE %.10g ITAE %.10g IASC %.10g; replayed (open loop on "
+              "the recorded states) IAE %.10g ITAE %.10g IASC %.10g\n",
               last.iae, last.itae, last.iasc, last_iae, last_itae, last_iasc);
   if (missing > 0) {
     std::printf("replay: %ld state steps missing from the bag (the recorder dropped them); "

@@ -17,8 +17,8 @@ StateSample sample(long step, double x) {
 const double kDesired[3] = {2.0, 1.0, 2.0};
 }  // namespace
 
-TEST(DelayedPdController, UsesTheStateDSamplesOld) {
-  DelayedPdController<16> c;
+TEST(DelayedController, UsesTheStateDSamplesOld) {
+  DelayedController<16> c;
   c.settings.gains = {0.5, 0.85};
   c.settings.delay = 3;
   for (long k = 0; k < 10; ++k) {
@@ -31,8 +31,8 @@ TEST(DelayedPdController, UsesTheStateDSamplesOld) {
   }
 }
 
-TEST(DelayedPdController, ResentStateIsNotAddedAndMetricsCountOnce) {
-  DelayedPdController<16> c;
+TEST(DelayedController, ResentStateIsNotAddedAndMetricsCountOnce) {
+  DelayedController<16> c;
   c.settings.gains = {0.5, 0.85};
   c.push(sample(0, 0.0));
   const ControlOutput a = c.compute(kDesired);
@@ -44,8 +44,8 @@ TEST(DelayedPdController, ResentStateIsNotAddedAndMetricsCountOnce) {
   EXPECT_GT(c.compute(kDesired).iae, a.iae);
 }
 
-TEST(DelayedPdController, StepGoingBackRestarts) {
-  DelayedPdController<16> c;
+TEST(DelayedController, StepGoingBackRestarts) {
+  DelayedController<16> c;
   c.settings.delay = 2;
   for (long k = 0; k < 5; ++k) c.push(sample(k, 0.0)), c.compute(kDesired);
   c.push(sample(0, 0.5));
@@ -54,8 +54,8 @@ TEST(DelayedPdController, StepGoingBackRestarts) {
   EXPECT_EQ(out.delay_in_force, 0);
 }
 
-TEST(DelayedPdController, ClampsWhenConfigured) {
-  DelayedPdController<16> c;
+TEST(DelayedController, ClampsWhenConfigured) {
+  DelayedController<16> c;
   c.settings.gains = {5.0, 5.0};
   c.push(sample(0, -10.0));
   c.settings.clamp_commands = true;
@@ -67,8 +67,8 @@ TEST(DelayedPdController, ClampsWhenConfigured) {
   EXPECT_EQ(out.U[1], out.U_unclamped[1]);
 }
 
-TEST(DelayedPdController, HoverCommandsZero) {
-  DelayedPdController<16> c;
+TEST(DelayedController, HoverCommandsZero) {
+  DelayedController<16> c;
   c.settings.gains = {0.5, 0.85};
   c.push(sample(0, 0.0));
   const ControlOutput out = c.hover();

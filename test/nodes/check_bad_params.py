@@ -50,6 +50,32 @@ class BadParamsTest(unittest.TestCase):
         self.assert_refused(rc, out, "/bad_name/controller/controller/name", "accepted controllers: 'pd_saturated'")
         self.assertIn("'lqr'", out)
 
+    def test_unknown_controller_key(self):
+        rc, out = self.controller_case("/typo", lambda p: rospy.set_param(p + "controller/kpp", 0.6))
+        self.assert_refused(rc, out, "/typo/controller/controller/kpp", "is not a known key: accepted name, kp, kd")
+
+    def test_unknown_override_key(self):
+        # An overrides file loaded into the controller's namespace with a typo.
+        rc, out = self.controller_case("/typo_top", lambda p: rospy.set_param(p + "clamp_comands", False))
+        self.assert_refused(rc, out, "/typo_top/controller/clamp_comands", "is not a known key: accepted controller, task")
+
+    def test_unknown_task_key(self):
+        rc, out = self.controller_case("/typo_task", lambda p: rospy.set_param(p + "task/radius", 1.0))
+        self.assert_refused(rc, out, "/typo_task/controller/task/radius",
+                            "is not a known key: accepted name, type, duration, waypoints, end_times")
+
+    def test_gain_of_the_wrong_type(self):
+        rc, out = self.controller_case("/str_gain", lambda p: rospy.set_param(p + "controller/kp", "0.5"))
+        self.assert_refused(rc, out, "/str_gain/controller/controller/kp", "has the wrong type: expected a number")
+
+    def test_underactuated_missing_gain(self):
+        def edit(p):
+            rospy.delete_param(p + "controller")
+            load_yaml(os.path.join(self.config, "controllers/underactuated.yaml"), p[:-1])
+            rospy.delete_param(p + "controller/k2_psi")
+        rc, out = self.controller_case("/no_k2_psi", edit)
+        self.assert_refused(rc, out, "/no_k2_psi/controller/controller/k2_psi", "accepted: a number in [0.001, 100]")
+
     def test_missing_gain(self):
         rc, out = self.controller_case("/no_kd", lambda p: rospy.delete_param(p + "controller/kd"))
         self.assert_refused(rc, out, "/no_kd/controller/controller/kd", "accepted: a number in [0, 10]")

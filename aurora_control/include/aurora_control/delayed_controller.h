@@ -1,9 +1,10 @@
 // The controller node's per-cycle computation, ROS-free: received states go
-// into the delay buffer; each cycle the PD law with saturation runs on the
-// delayed state (ardrone-model.md, "Delayed feedback" and eq. 3.1), the
-// command is clamped as the drivers do (optional), and the study's metrics
-// accumulate once per state step. The node and the offline `replay` tool
-// both call this class, so a replay of a bag reproduces every command.
+// into the delay buffer; each cycle the chosen law (the delay study's PD law
+// with saturation, eq. 3.1, or the underactuated 12-gain law) runs on the
+// delayed state (docs: "Delayed feedback"), the command is clamped as the
+// drivers do (optional), and the study's metrics accumulate once per state
+// step. The node and the offline `replay` tool both call this class, so a
+// replay of a bag reproduces every command.
 #pragma once
 
 #include <cstdint>
@@ -11,6 +12,9 @@
 #include "aurora_control/delay_buffer.h"
 #include "aurora_control/feasibility.h"
 #include "aurora_control/pd_controller.h"
+#include "aurora_control/trajectory_task.h"
+#include "aurora_control/underactuated_law.h"
+#include "aurora_sim/ardrone_params.h"
 #include "aurora_sim/scalar_math.h"
 #include "aurora_sim/state_index.h"
 
@@ -22,8 +26,13 @@ struct StateSample {
   double X[aurora_sim::kStateSize] = {};
 };
 
+enum class LawType : int { kPdSaturated = 0, kUnderactuated = 1 };
+
 struct ControllerSettings {
+  LawType law = LawType::kPdSaturated;
   PdGains<double> gains{0.0, 0.0};
+  UnderactuatedGains<double> underactuated = UnderactuatedGains<double>::defaults();
+  aurora_sim::ArdroneParams<double> vehicle{};  // the model the underactuated law inverts
   long delay = 0;          // [samples]
   bool clamp_commands = true;
   double Ts = 1.0 / 30.0;  // [s], the vehicle's sample time (metric time = step Ts)
@@ -39,16 +48,17 @@ struct ControlOutput {
 };
 
 template <int Capacity>
-class DelayedPdController {
+class DelayedController {
  public:
   static constexpr long kMaxDelay = Capacity - 1;
 
   ControllerSettings settings;
 
-  DelayedPdController() { reset(); }
+  DelayedController() { reset(); }
 
   void reset() {
     history_.clear();
+    memory_.reset();
     resetMetrics();
   }
 
@@ -74,20 +84,53 @@ class DelayedPdController {
   bool empty() const { return history_.size() == 0; }
   const StateSample& newest() const { return history_.delayed(0); }
 
-  // One cycle of the law towards `desired` (world frame [m], zero desired
-  // velocity and acceleration: a positioning task). Requires !empty().
-  ControlOutput compute(const double desired[3]) {
+  // One cycle of the law towards a point at rest (positioning). Requires !empty().
+  ControlOutput compute(const double desired[3]) { return compute(restingAt(desired)); }
+
+  // One cycle of the law on the delayed state towards `ref`. The PD law uses
+  // position, velocity and acceleration; the underactuated law also the yaw
+  // and its rates (feed-forward). Requires !empty().
+  ControlOutput compute(const Reference<double>& ref) {
     ControlOutput out;
     const StateSample& used = history_.delayed(settings.delay);
     out.used = &used;
     out.delay_in_force = history_.delayInForce(settings.delay);
     const double pos[3] = {used.X[aurora_sim::kX], used.X[aurora_sim::kY], used.X[aurora_sim::kZ]};
     const double vel[3] = {used.X[aurora_sim::kVx], used.X[aurora_sim::kVy], used.X[aurora_sim::kVz]};
-    const double zero[3] = {0.0, 0.0, 0.0};
-    pdSaturatedLaw(settings.gains, desired, zero, zero, pos, vel, out.U_unclamped,
-                   out.position_error);
+    if (settings.law == LawType::kPdSaturated) {
+      pdSaturatedLaw(settings.gains, ref.pos, ref.vel, ref.acc, pos, vel, out.U_unclamped,
+                     out.position_error);
+    } else {
+      double Xd[aurora_sim::kStateSize], acc[6];
+      underactuatedDesired(ref, Xd, acc);
+      underactuatedCommand(settings.vehicle, settings.underactuated, memory_, Xd, acc, used.X,
+                           out.U_unclamped);
+      for (int i = 0; i < 3; ++i) out.position_error[i] = ref.pos[i] - pos[i];
+    }
     finish(out);
     return out;
+  }
+
+  static Reference<double> restingAt(const double desired[3]) {
+    Reference<double> r;
+    for (int i = 0; i < 3; ++i) r.pos[i] = desired[i], r.vel[i] = 0.0, r.acc[i] = 0.0;
+    r.yaw = r.yaw_rate = r.yaw_acc = 0.0;
+    return r;
+  }
+
+  // The underactuated law's desired state and feed-forward from a reference.
+  static void underactuatedDesired(const Reference<double>& ref, double Xd[aurora_sim::kStateSize],
+                                   double acc[6]) {
+    for (int i = 0; i < aurora_sim::kStateSize; ++i) Xd[i] = 0.0;
+    for (int i = 0; i < 3; ++i) {
+      Xd[aurora_sim::kX + i] = ref.pos[i];
+      Xd[aurora_sim::kVx + i] = ref.vel[i];
+      acc[i] = ref.acc[i];
+    }
+    Xd[aurora_sim::kYaw] = ref.yaw;
+    Xd[aurora_sim::kYawRate] = ref.yaw_rate;
+    acc[3] = acc[4] = 0.0;
+    acc[5] = ref.yaw_acc;
   }
 
   // The command while the state is stale: hover (all zero); the metrics
@@ -118,6 +161,7 @@ class DelayedPdController {
   }
 
   DelayBuffer<StateSample, Capacity> history_;
+  UnderactuatedMemory<double> memory_;  // the underactuated law's own state
   PositioningMetrics<double, bool> metrics_;
   FeasibilityCriteria<double> criteria_ = FeasibilityCriteria<double>::study();
   long metrics_step_ = -1;

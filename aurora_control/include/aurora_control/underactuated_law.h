@@ -229,3 +229,21 @@ AURORA_HD inline void underactuatedCommand(const aurora_sim::ArdroneParams<T>& p
 }
 
 }  // namespace aurora_control
+
+namespace aurora_control {
+
+// Configuration names of the 12 gains, in the order k1, k2 per axis
+// (x, y, z, phi, theta, psi): name 2i is k1[i], name 2i+1 is k2[i].
+inline const char* underactuatedGainName(int i) {
+  static const char* const kNames[2 * kAxes] = {"k1_x",     "k2_x",     "k1_y",   "k2_y",
+                                                "k1_z",     "k2_z",     "k1_phi", "k2_phi",
+                                                "k1_theta", "k2_theta", "k1_psi", "k2_psi"};
+  return kNames[i];
+}
+
+template <typename T>
+T& underactuatedGain(UnderactuatedGains<T>& g, int i) {
+  return i % 2 == 0 ? g.k1[i / 2] : g.k2[i / 2];
+}
+
+}  // namespace aurora_control

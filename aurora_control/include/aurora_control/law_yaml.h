@@ -1,0 +1,62 @@
+// The controller files' schema (config/controllers/*.yaml, 'controller:'),
+// read strictly for the node, replay and the sweep: the law's name, all of
+// its gains (none may be missing), nothing else.
+//   pd_saturated:   kp, kd in [0, 10]
+//   underactuated:  k1_x, k2_x, ..., k1_psi, k2_psi in [0.001, 100]
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "aurora_control/delayed_controller.h"
+#include "aurora_control/yaml_reader.h"
+
+namespace aurora_control {
+
+inline const char* lawName(LawType law) {
+  return law == LawType::kUnderactuated ? "underactuated" : "pd_saturated";
+}
+
+// The gains of `law` by configuration name, in the order Control lists them.
+inline std::vector<std::string> lawGainNames(LawType law) {
+  if (law == LawType::kPdSaturated) return {"kp", "kd"};
+  std::vector<std::string> names;
+  for (int i = 0; i < 2 * kAxes; ++i) names.push_back(underactuatedGainName(i));
+  return names;
+}
+
+inline double& lawGain(ControllerSettings& set, int i) {
+  if (set.law == LawType::kPdSaturated) return i == 0 ? set.gains.kp : set.gains.kd;
+  return underactuatedGain(set.underactuated, i);
+}
+
+inline double lawGain(const ControllerSettings& set, int i) {
+  return lawGain(const_cast<ControllerSettings&>(set), i);
+}
+
+// Reads the mapping under `key` into settings.law and its gains.
+inline void readLaw(const YamlReader& r, const YAML::Node& node, const std::string& key,
+                    ControllerSettings& set) {
+  if (!node || !node.IsMap()) r.fail(key, "is missing or not a mapping: load a controller file such as config/controllers/pd_saturated.yaml");
+  const std::string name =
+      r.text(r.require(node, key, "name", "'pd_saturated' or 'underactuated'"), r.key(key, "name"));
+  if (name == "pd_saturated") {
+    set.law = LawType::kPdSaturated;
+  } else if (name == "underactuated") {
+    set.law = LawType::kUnderactuated;
+  } else {
+    r.fail(r.key(key, "name"), "= '" + name + "' is unknown: accepted controllers: 'pd_saturated', 'underactuated'");
+  }
+  std::vector<std::string> accepted{"name"};
+  const std::vector<std::string> gains = lawGainNames(set.law);
+  accepted.insert(accepted.end(), gains.begin(), gains.end());
+  r.onlyKeys(node, key, accepted);
+  const bool pd = set.law == LawType::kPdSaturated;
+  for (size_t i = 0; i < gains.size(); ++i) {
+    const YAML::Node v = r.require(node, key, gains[i], pd ? "a number in [0, 10]" : "a number in [0.001, 100]");
+    lawGain(set, static_cast<int>(i)) =
+        pd ? r.numberIn(v, r.key(key, gains[i]), 0.0, 10.0, "") : r.numberIn(v, r.key(key, gains[i]), 0.001, 100.0, "");
+  }
+}
+
+}  // namespace aurora_control

@@ -1,0 +1,47 @@
+// A task: what the drone should do at each time. Either waypoints (one point
+// per time slot: the thesis's mission, the study's single point) or a
+// trajectory (circle, lemniscate: trajectory_task.h). One type for the node,
+// replay, the offline runner and the sweep; loaded from one YAML schema
+// (task_yaml.h).
+#pragma once
+
+#include "aurora_control/trajectory_task.h"
+#include "aurora_control/waypoint_task.h"
+#include "aurora_sim/host_device.h"
+#include "aurora_sim/scalar_math.h"
+
+namespace aurora_control {
+
+enum class TaskType : int { kWaypoints = 0, kCircle = 1, kLemniscate = 2 };
+
+template <typename T>
+struct Task {
+  TaskType type = TaskType::kWaypoints;
+  WaypointTask<T> waypoints;    // kWaypoints
+  TrajectoryTask<T> trajectory; // kCircle, kLemniscate
+
+  AURORA_HD bool isTrajectory() const { return type != TaskType::kWaypoints; }
+  AURORA_HD T duration() const { return isTrajectory() ? trajectory.duration() : waypoints.duration; }
+
+  // The reference at task time t [s]. Waypoints: the active point at rest,
+  // yaw 0; chosen by selects, so lanes at different times work.
+  template <typename Time>
+  AURORA_HD Reference<Time> at(const Time& t) const {
+    if (isTrajectory()) return trajectory.at(t);
+    using aurora_sim::select;
+    Reference<Time> r;
+    for (int j = 0; j < 3; ++j) r.pos[j] = Time(waypoints.position[0][j]);
+    for (int i = 1; i < waypoints.count; ++i) {
+      const auto later = t > Time(waypoints.end_time[i - 1]);
+      for (int j = 0; j < 3; ++j) r.pos[j] = select(later, Time(waypoints.position[i][j]), r.pos[j]);
+    }
+    for (int j = 0; j < 3; ++j) r.vel[j] = r.acc[j] = Time(0);
+    r.yaw = r.yaw_rate = r.yaw_acc = Time(0);
+    return r;
+  }
+
+  // Index of the active waypoint (0 for trajectories), for messages and rviz.
+  int activeIndex(T t) const { return isTrajectory() ? 0 : waypoints.activeIndex(t); }
+};
+
+}  // namespace aurora_control

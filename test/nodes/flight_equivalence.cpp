@@ -1,0 +1,98 @@
+// Bit-for-bit equality of the ROS lockstep loop and the offline flight
+// runner (flight_runner.h) for any law and task: the controller and task
+// come from the same parameters the node was given.
+#include <aurora_msgs/DroneState.h>
+#include <gtest/gtest.h>
+#include <ros/ros.h>
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <map>
+#include <vector>
+
+#include "aurora_control/flight_runner.h"
+#include "aurora_control/law_yaml.h"
+#include "aurora_control/task_yaml.h"
+#include "aurora_sim/ros_conversions.h"
+#include "aurora_sim/ros_params.h"
+
+using namespace aurora_control;
+
+namespace {
+
+bool bitEqual(double a, double b) { return std::memcmp(&a, &b, sizeof(double)) == 0; }
+
+// The test's private parameters hold the same controller and task files as
+// the node's; read them with the node's loaders (through their YAML text).
+YAML::Node fileParam(const ros::NodeHandle& pnh, const std::string& key) {
+  std::string path;
+  EXPECT_TRUE(pnh.getParam(key, path)) << key;
+  return YAML::LoadFile(path);
+}
+
+}  // namespace
+
+TEST(FlightEquivalence, RosLoopEqualsTheFlightRunnerBitForBit) {
+  ros::NodeHandle nh, pnh("~");
+  const int steps = pnh.param("steps", 900);
+  std::map<unsigned long, aurora_msgs::DroneState> flown;
+  ros::Subscriber sub = nh.subscribe<aurora_msgs::DroneState>(
+      "state", 4000, [&](const aurora_msgs::DroneState::ConstPtr& m) { flown[m->step] = *m; });
+  const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(90.0);
+  while (ros::ok() && ros::WallTime::now() < deadline &&
+         (flown.empty() || flown.rbegin()->first < static_cast<unsigned long>(steps))) {
+    ros::spinOnce();
+    ros::WallDuration(0.005).sleep();
+  }
+  ASSERT_GE(flown.size(), static_cast<size_t>(steps + 1)) << "ROS loop did not complete in time";
+
+  const auto params = aurora_sim::loadVehicleParams(nh, "vehicle");
+  ControllerSettings set;
+  const YAML::Node controller = fileParam(pnh, "controller_file");
+  readLaw(YamlReader(), controller["controller"], "controller", set);
+  set.vehicle = params;
+  set.Ts = params.Ts;
+  set.delay = pnh.param("delay", 0);
+  set.clamp_commands = controller["clamp_commands"] ? controller["clamp_commands"].as<bool>() : true;
+  const Task<double> task = readTask(YamlReader(), fileParam(pnh, "task_file")["task"], "task");
+  std::vector<std::vector<double>> offline(1);
+  aurora_sim::ArdroneState<double> s0;
+  s0.reset();
+  offline[0].assign(s0.X, s0.X + 12);
+  const FlightResult r = runFlight(params, set, task, steps,
+                                   [&](long, const aurora_sim::ArdroneState<double>& s,
+                                       const Reference<double>&, const double*) {
+                                     offline.emplace_back(s.X, s.X + 12);
+                                   });
+  std::printf("flight runner: %s on a %g s task, delay %ld: RMS tracking error %.4f m, max %.4f m\n",
+              lawName(set.law), task.duration(), set.delay, r.rms_tracking_error, r.max_tracking_error);
+
+  long mismatches = 0;
+  for (int k = 0; k <= steps; ++k) {
+    ASSERT_TRUE(flown.count(k)) << "state of step " << k << " missing";
+    double X[12];
+    aurora_sim::stateFromMsg(flown[k], X);
+    for (int i = 0; i < 12; ++i) {
+      if (bitEqual(X[i], offline[k][i])) continue;
+      if (mismatches++ < 5) ADD_FAILURE() << "step " << k << " state " << i << ": ROS " << X[i] << " offline " << offline[k][i];
+    }
+  }
+  EXPECT_EQ(mismatches, 0);
+  // Guard against a vacuous pass: the drone went at least 0.5 m from its start.
+  double farthest = 0.0;
+  for (const auto& kv : flown) {
+    const double dx = kv.second.position.x - flown[0].position.x;
+    const double dy = kv.second.position.y - flown[0].position.y;
+    farthest = std::max(farthest, std::sqrt(dx * dx + dy * dy));
+  }
+  EXPECT_GT(farthest, 0.5);
+}
+
+int main(int argc, char** argv) {
+  testing::InitGoogleTest(&argc, argv);
+  ros::init(argc, argv, "flight_equivalence");
+  ros::NodeHandle nh;
+  return RUN_ALL_TESTS();
+}
