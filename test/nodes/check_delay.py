@@ -1,6 +1,7 @@
 #!/usr/bin/python3
 """The delay in force equals the configured one, sample by sample."""
 import threading
+import time
 import unittest
 
 import rospy
@@ -28,6 +29,15 @@ class DelayTest(unittest.TestCase):
         rospy.Subscriber("state", DroneState, on_state, queue_size=1000)
         rospy.Subscriber("control", Control, on_control, queue_size=1000)
         self.assertTrue(done.wait(60.0), "no control message for step %d within 60 s" % n)
+        # state and control arrive on two connections, each with its own
+        # thread: the control of step k can be handled before the state of
+        # step k. Wait until every state up to the last control's step is in.
+        last = max(c.step for c in controls)
+        deadline = time.time() + 10.0
+        while any(k not in stamps for k in range(last + 1)) and time.time() < deadline:
+            time.sleep(0.01)
+        missing = [k for k in range(last + 1) if k not in stamps]
+        self.assertEqual(missing, [], "states never received (the sim published every step)")
         by_step = {}
         for c in controls:
             by_step.setdefault(c.step, c)  # a re-sent state is answered again: keep the first
