@@ -32,6 +32,7 @@ case "${ID}:${VERSION_ID}" in
     ;;
 esac
 PKGS+=(build-essential cmake libeigen3-dev libyaml-cpp-dev libgtest-dev googletest libxsimd-dev
+       libboost-program-options-dev
        python3-matplotlib python3-numpy python3-yaml ffmpeg xvfb xauth imagemagick)
 
 missing=()

@@ -40,7 +40,10 @@ class Recorder:
             self.land_attempts = m.land_attempts
             # command in model order -> cmd_vel order (x, y, z, yaw) as sent
             u = m.command
-            self.controls.append((time.time(), m.mode, (-u[1], -u[0], u[2], -u[3])))
+            # the law's own command (command_unclamped, clamped as sent) too
+            law = [max(-1.0, min(1.0, v)) for v in m.command_unclamped]
+            self.controls.append((time.time(), m.mode, (-u[1], -u[0], u[2], -u[3]),
+                                  (-law[1], -law[0], law[2], -law[3])))
 
     def cmds_between(self, a, b):
         with self.lock:
@@ -123,17 +126,27 @@ class RealWatchdogsTest(unittest.TestCase):
         joy.publish(joy_msg(False, 0.0))
         time.sleep(2.0)
         with rec.lock:
-            after = [(m, c) for t_c, m, c in rec.controls if t_c >= released]
+            after = [(m, c, law) for t_c, m, c, law in rec.controls if t_c >= released]
         self.assertGreater(len(after), 40)
-        resuming = [c for m, c in after if "resuming" in m]
-        self.assertTrue(resuming, "no resuming phase after the release")
-        # The hand-back: from the last joystick command through the resuming
-        # phase to the first plain controller command.
-        first_plain = next(c for m, c in after if "resuming" not in m)
-        resume = max_step([held[-1]] + resuming + [first_plain])
-        rospy.loginfo("largest per-cycle change while handing back: %.4f over %d cycles (normal %.4f)",
-                      resume, len(resuming), normal)
-        self.assertLessEqual(resume, max(normal, 0.05) + 1e-9)
+        # From the first resuming cycle on (a joystick cycle sent just before
+        # the release may still arrive after it).
+        start = next((i for i, a in enumerate(after) if "resuming" in a[0]), None)
+        self.assertIsNotNone(start, "no resuming phase after the release")
+        after = after[start:]
+        end = next(i for i, a in enumerate(after) if "resuming" not in a[0])
+        resuming, plain = after[:end], after[end]
+        # What the slew promises: from the last joystick command, each
+        # resuming cycle moves at most resume_max_step (0.05) ...
+        slew = max_step([held[-1]] + [c for _, c, _ in resuming])
+        # ... and the first plain cycle moves no more than the law's own
+        # command moved between those two cycles, plus at most one step.
+        handover = max(abs(p - r) - abs(lp - lr)
+                       for p, r, lp, lr in zip(plain[1], resuming[-1][1], plain[2], resuming[-1][2]))
+        rospy.loginfo("hand-back: largest per-cycle change %.4f over %d resuming cycles; hand-over "
+                      "beyond the law's own change %.4f (normal flight %.4f)", slew, len(resuming),
+                      handover, normal)
+        self.assertLessEqual(slew, 0.05 + 1e-9)
+        self.assertLessEqual(handover, 0.05 + 1e-9)
         recent = rec.modes_between(time.time() - 0.5, time.time())
         self.assertTrue(recent and all(m == "fly" for m in recent), recent[-3:])
 
@@ -148,7 +161,7 @@ class RealWatchdogsTest(unittest.TestCase):
         self.assertTrue(rec.wait_sequence([hover, "fly"], stop, 10.0),
                         "no hover when the poses stopped, then 'fly' when they came back")
         with rec.lock:
-            during = [(m, c) for t_c, m, c in rec.controls if t_c >= stop]
+            during = [(m, c) for t_c, m, c, _ in rec.controls if t_c >= stop]
         hover_cmds = [c for m, c in during if m == hover]
         rospy.loginfo("0.5 s without poses: %d hover cycles", len(hover_cmds))
         self.assertGreaterEqual(len(hover_cmds), 3, [m for m, _ in during])

@@ -10,7 +10,12 @@
 #include <map>
 #include <vector>
 
-#include "aurora_control/positioning_runner.h"
+#include <yaml-cpp/yaml.h>
+
+#include "aurora_control/flight_runner.h"
+#include "aurora_control/law_yaml.h"
+#include "aurora_control/positioning_study.h"
+#include "aurora_control/task_yaml.h"
 #include "aurora_sim/ros_conversions.h"
 #include "aurora_sim/ros_params.h"
 
@@ -72,26 +77,24 @@ TEST(RealLaunch, MissionCompletesCloseToTheSimulatedRun) {
   EXPECT_TRUE(saw_complete);
   ASSERT_GE(s0, 0) << "never flew";
 
-  // The simulated run: the offline runner with the same configuration.
+  // The simulated run: the offline flight runner with the same controller
+  // and task files as the launch (either law), delay and clamping.
   const auto params = aurora_sim::loadVehicleParams(nh, "vehicle");
-  RunnerConfig<double> cfg;
-  std::vector<double> end_times;
-  XmlRpc::XmlRpcValue wps;
-  ASSERT_TRUE(pnh.getParam("task/waypoints", wps));
-  ASSERT_TRUE(pnh.getParam("task/end_times", end_times));
-  cfg.task.count = wps.size();
-  for (int i = 0; i < wps.size(); ++i) {
-    for (int j = 0; j < 3; ++j) cfg.task.position[i][j] = static_cast<double>(wps[i][j]);
-    cfg.task.end_time[i] = end_times[i];
-  }
-  ASSERT_TRUE(pnh.getParam("task/duration", cfg.task.duration));
-  cfg.clamp_commands = true;
+  ControllerSettings set;
+  std::string controller_file, task_file;
+  ASSERT_TRUE(pnh.getParam("controller_file", controller_file));
+  ASSERT_TRUE(pnh.getParam("task_file", task_file));
+  readLaw(YamlReader(), YAML::LoadFile(controller_file)["controller"], "controller", set);
+  set.vehicle = params;
+  set.Ts = params.Ts;
+  set.delay = pnh.param("delay", 0);
+  set.clamp_commands = true;
+  const Task<double> task = readTask(YamlReader(), YAML::LoadFile(task_file)["task"], "task");
   std::vector<std::vector<double>> sim(1, std::vector<double>{0.0, 0.0, 0.75});
-  runPositioning(params, cfg, PdGains<double>{pnh.param("controller/kp", 0.5), pnh.param("controller/kd", 0.85)},
-                 pnh.param("delay", 0),
-                 [&](long, const PositioningSim<double, bool>& s, const double*, const PosVel<double>&) {
-                   sim.push_back({s.model.X[0], s.model.X[1], s.model.X[2]});
-                 });
+  runFlight(params, set, task, studyIterationCount(task.duration(), params.Ts),
+            [&](long, const aurora_sim::ArdroneState<double>& s, const Reference<double>&, const double*) {
+              sim.push_back({s.X[0], s.X[1], s.X[2]});
+            });
 
   double worst = 0.0, worst_t = 0.0;
   long compared = 0;
@@ -109,8 +112,8 @@ TEST(RealLaunch, MissionCompletesCloseToTheSimulatedRun) {
     if (e > worst) worst = e, worst_t = k * params.Ts;
     ++compared;
   }
-  std::printf("real.launch vs simulated run: %ld cycles compared, largest position difference "
-              "%.3f m at task time %.2f s\n", compared, worst, worst_t);
+  std::printf("real.launch (%s) vs simulated run: %ld cycles compared, largest position difference "
+              "%.3f m at task time %.2f s\n", lawName(set.law), compared, worst, worst_t);
   EXPECT_GT(compared, 1700);
   EXPECT_LE(worst, tolerance);
 }

@@ -1,0 +1,109 @@
+// flight: one whole flight offline (no roscore) with either law and any
+// task, on the same core as the controller node (flight_runner.h): the
+// lockstep ROS loop flies exactly this trajectory. Prints the tracking error
+// per lap (per waypoint segment for missions), the controller's metrics and
+// the cost of the law per step; --csv writes the trajectory.
+#include <boost/program_options.hpp>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "aurora_control/flight_runner.h"
+#include "aurora_control/law_yaml.h"
+#include "aurora_control/positioning_study.h"
+#include "aurora_control/task_yaml.h"
+#include "aurora_sim/vehicle_yaml.h"
+
+namespace po = boost::program_options;
+using namespace aurora_control;
+
+namespace {
+
+struct Options {
+  std::string controller, task, vehicle, csv;
+  long delay = 0;
+  bool no_clamp = false;
+};
+
+bool parse(int argc, char** argv, Options& o) {
+  const std::string config = AURORA_CONFIG_DIR;
+  po::options_description d("usage: flight [options]\n\nFlies one task offline with the controller node's core and prints its tracking error.\n\noptions");
+  d.add_options()("help,h", "this text")
+      ("controller", po::value(&o.controller)->default_value(config + "/controllers/pd_saturated.yaml"), "controller YAML (law and gains)")
+      ("task", po::value(&o.task)->default_value(config + "/tasks/mission4.yaml"), "task YAML (waypoints, circle, lemniscate)")
+      ("vehicle", po::value(&o.vehicle)->default_value(config + "/vehicles/ardrone2.yaml"), "vehicle YAML")
+      ("delay", po::value(&o.delay)->default_value(0), "feedback delay [samples of Ts], 0 to 2047")
+      ("no-clamp", po::bool_switch(&o.no_clamp), "do not clamp the law's commands (the sim still does, as the drivers)")
+      ("csv", po::value(&o.csv), "write step, t, x, y, z, desired x, y, z, error per step");
+  po::variables_map vm;
+  po::store(po::parse_command_line(argc, argv, d), vm);
+  if (vm.count("help")) {
+    std::cout << d;
+    return false;
+  }
+  po::notify(vm);
+  return true;
+}
+
+ControllerSettings loadSettings(const Options& o, const aurora_sim::ArdroneParams<double>& p) {
+  ControllerSettings set;
+  const YAML::Node root = YAML::LoadFile(o.controller);
+  const YamlReader r("controller file '" + o.controller + "': ");
+  r.onlyKeys(root, "", {"controller", "clamp_commands"});
+  readLaw(r, root["controller"], "controller", set);
+  set.clamp_commands = !o.no_clamp;
+  set.vehicle = p;
+  set.Ts = p.Ts;
+  set.delay = o.delay;
+  return set;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options o;
+  try {
+    if (!parse(argc, argv, o)) return 0;
+    const auto p = aurora_sim::loadVehicleYaml(o.vehicle);
+    const ControllerSettings set = loadSettings(o, p);
+    const Task<double> task = readTask(YamlReader("task file '" + o.task + "': "), YAML::LoadFile(o.task)["task"], "task");
+    // A lap (trajectories) or a waypoint's segment (missions), in steps.
+    const double segment = task.isTrajectory() ? task.trajectory.period : 0.0;
+    std::vector<double> seg_sq, seg_max;
+    std::vector<long> seg_n;
+    FILE* csv = o.csv.empty() ? nullptr : std::fopen(o.csv.c_str(), "w");
+    if (!o.csv.empty() && !csv) throw std::runtime_error("cannot write '" + o.csv + "'");
+    if (csv) std::fprintf(csv, "step,t,x,y,z,xd,yd,zd,error\n");
+    const long n = studyIterationCount(task.duration(), p.Ts);
+    const auto t0 = std::chrono::steady_clock::now();
+    const FlightResult r = runFlight(p, set, task, n, [&](long k, const aurora_sim::ArdroneState<double>& s,
+                                                          const Reference<double>& ref, const double*) {
+      const double t = double(k - 1) * p.Ts;
+      const size_t i = segment > 0 ? size_t(t / segment) : size_t(task.activeIndex(t));
+      if (seg_sq.size() <= i) seg_sq.resize(i + 1, 0.0), seg_max.resize(i + 1, 0.0), seg_n.resize(i + 1, 0);
+      double e2 = 0.0;
+      for (int j = 0; j < 3; ++j) e2 += (ref.pos[j] - s.X[j]) * (ref.pos[j] - s.X[j]);
+      seg_sq[i] += e2, seg_n[i] += 1, seg_max[i] = std::max(seg_max[i], std::sqrt(e2));
+      if (csv) std::fprintf(csv, "%ld,%.4f,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", k, t, s.X[0], s.X[1], s.X[2], ref.pos[0], ref.pos[1], ref.pos[2], std::sqrt(e2));
+    });
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (csv) std::fclose(csv);
+    std::printf("flight: %s, %s task of %.1f s, delay %ld samples: %ld steps in %.3f s (%.2f us per step, model included)\n",
+                lawName(set.law), task.isTrajectory() ? (task.type == TaskType::kCircle ? "circle" : "lemniscate") : "waypoint",
+                task.duration(), set.delay, r.steps, seconds, 1e6 * seconds / double(r.steps));
+    for (size_t i = 0; i < seg_n.size(); ++i) {
+      std::printf("  %s %zu: RMS tracking error %.4f m, max %.4f m\n", segment > 0 ? "lap" : "segment", i + 1,
+                  std::sqrt(seg_sq[i] / double(seg_n[i])), seg_max[i]);
+    }
+    std::printf("  whole flight: RMS %.4f m, max %.4f m; IAE %.4f, ITAE %.4f, IASC %.4f\n", r.rms_tracking_error,
+                r.max_tracking_error, r.iae, r.itae, r.iasc);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "flight: %s\n", e.what());
+    return 2;
+  }
+  return 0;
+}
