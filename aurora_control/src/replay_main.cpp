@@ -213,6 +213,7 @@ int main(int argc, char** argv) {
     rosbag::View view(bag, rosbag::TopicQuery(std::vector<std::string>{ns + "/state", ns + "/control"}));
     for (const rosbag::MessageInstance& m : view) {
       if (auto s = m.instantiate<aurora_msgs::DroneState>()) {
+        if (s->stale) continue;  // the node ignores states its source marked stale
         StateSample sample;
         sample.step = static_cast<long>(s->step);
         sample.stamp_ns = static_cast<int64_t>(s->header.stamp.toNSec());

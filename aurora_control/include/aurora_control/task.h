@@ -40,8 +40,13 @@ struct Task {
     return r;
   }
 
-  // Index of the active waypoint (0 for trajectories), for messages and rviz.
-  int activeIndex(T t) const { return isTrajectory() ? 0 : waypoints.activeIndex(t); }
+  // Index of the active waypoint, or of the lap of a trajectory (0-based;
+  // the last one after the end): the segments the report measures.
+  int activeIndex(T t) const {
+    if (!isTrajectory()) return waypoints.activeIndex(t);
+    const int lap = t > T(0) ? static_cast<int>(t / trajectory.period) : 0;
+    return lap < trajectory.laps ? lap : trajectory.laps - 1;
+  }
 };
 
 }  // namespace aurora_control
