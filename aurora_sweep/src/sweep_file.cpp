@@ -9,77 +9,19 @@
 #include <sstream>
 
 #include "aurora_control/positioning_runner.h"
+#include "aurora_control/task_yaml.h"
 #include "aurora_sim/vehicle_yaml.h"
 
 namespace aurora_sweep {
 
 namespace {
 
-std::string joinKeys(const std::vector<std::string>& keys) {
-  std::string out;
-  for (const auto& k : keys) out += (out.empty() ? "" : ", ") + k;
-  return out;
-}
+using aurora_control::joinKeys;
 
-class Reader {
+// The shared strict reader, with the sweep file named in every message.
+class Reader : public aurora_control::YamlReader {
  public:
-  explicit Reader(std::string file) : file_(std::move(file)) {}
-
-  [[noreturn]] void fail(const std::string& key, const std::string& what) const {
-    throw SweepFileError("sweep file '" + file_ + "': '" + key + "' " + what);
-  }
-
-  void onlyKeys(const YAML::Node& node, const std::string& key,
-                const std::vector<std::string>& accepted) const {
-    if (!node.IsMap()) fail(key, "must be a mapping with keys: " + joinKeys(accepted));
-    for (const auto& kv : node) {
-      const std::string name = kv.first.as<std::string>();
-      if (std::find(accepted.begin(), accepted.end(), name) == accepted.end()) {
-        fail(key.empty() ? name : key + "." + name,
-             "is not a known key: accepted " + joinKeys(accepted));
-      }
-    }
-  }
-
-  double number(const YAML::Node& node, const std::string& key) const {
-    try {
-      const double v = node.as<double>();
-      if (!std::isfinite(v)) fail(key, "must be a finite number");
-      return v;
-    } catch (const YAML::Exception&) {
-      fail(key, "must be a number");
-    }
-  }
-
-  long integer(const YAML::Node& node, const std::string& key) const {
-    const double v = number(node, key);
-    if (v != std::floor(v)) fail(key, "must be a whole number, got " + node.as<std::string>());
-    return static_cast<long>(v);
-  }
-
-  bool boolean(const YAML::Node& node, const std::string& key) const {
-    try {
-      return node.as<bool>();
-    } catch (const YAML::Exception&) {
-      fail(key, "must be true or false");
-    }
-  }
-
-  std::string text(const YAML::Node& node, const std::string& key) const {
-    if (!node.IsScalar()) fail(key, "must be a string");
-    return node.as<std::string>();
-  }
-
-  // A threshold: a number, or [factor, base] meaning factor x base as the
-  // thesis writes its limits (30 x 5.3218).
-  double threshold(const YAML::Node& node, const std::string& key) const {
-    if (node.IsSequence()) {
-      if (node.size() != 2) fail(key, "must be a number or [factor, base]");
-      return number(node[0], key + "[0]") * number(node[1], key + "[1]");
-    }
-    return number(node, key);
-  }
-
+  explicit Reader(std::string file) : YamlReader("sweep file '" + file + "': "), file_(std::move(file)) {}
   const std::string& file() const { return file_; }
 
  private:
@@ -156,6 +98,34 @@ std::vector<double> readPoints(const Reader& r, const std::string& path, const s
   return points;
 }
 
+// sweep.task: a task file's name (e.g. tasks/positioning.yaml) or the task
+// inline, in the one task schema (aurora_control/task_yaml.h).
+void readSweepTask(const Reader& r, const YAML::Node& t, const std::string& sweep_dir,
+                   const std::string& config_dir, SweepSpec& spec) {
+  aurora_control::Task<double> task;
+  if (t.IsScalar()) {
+    const std::string path = resolve(r.text(t, "sweep.task"), sweep_dir, config_dir);
+    YAML::Node file;
+    try {
+      file = YAML::LoadFile(path);
+    } catch (const YAML::Exception& e) {
+      r.fail("sweep.task", "names '" + path + "', which cannot be read: " + e.what());
+    }
+    const aurora_control::YamlReader tr("task file '" + path + "': ");
+    task = aurora_control::readTask(tr, file["task"], "task");
+  } else {
+    task = aurora_control::readTask(r, t, "sweep.task");
+  }
+  if (task.type != aurora_control::TaskType::kWaypoints || task.waypoints.count != 1) {
+    r.fail("sweep.task", "is a " + std::string(task.isTrajectory() ? "trajectory" : "multi-waypoint") +
+                             " task: the sweep's engines fly single-point positioning tasks (one waypoint) "
+                             "so far; the study's task is tasks/positioning.yaml");
+  }
+  for (int i = 0; i < 3; ++i) spec.desired[i] = task.waypoints.position[0][i];
+  spec.duration = task.waypoints.duration;
+  if (!(spec.duration <= 3600)) r.fail("sweep.task.duration", "is outside the accepted range (0, 3600] s");
+}
+
 }  // namespace
 
 aurora_sim::ArdroneParams<double> loadVehicleFile(const std::string& path) {
@@ -198,22 +168,7 @@ SweepSpec loadSweepFile(const std::string& path, const std::string& config_dir) 
   spec.vehicle_file = resolve(vehicle, sweep_dir, config_dir);
   spec.vehicle = loadVehicleFile(spec.vehicle_file);
 
-  if (s["task"]) {
-    const YAML::Node t = s["task"];
-    r.onlyKeys(t, "sweep.task", {"desired", "duration"});
-    if (t["desired"]) {
-      if (!t["desired"].IsSequence() || t["desired"].size() != 3) {
-        r.fail("sweep.task.desired", "must be [x, y, z] in m (sweeps support one positioning point)");
-      }
-      for (int i = 0; i < 3; ++i) spec.desired[i] = r.number(t["desired"][i], "sweep.task.desired");
-    }
-    if (t["duration"]) {
-      spec.duration = r.number(t["duration"], "sweep.task.duration");
-      if (!(spec.duration > 0 && spec.duration <= 3600)) {
-        r.fail("sweep.task.duration", "is outside the accepted range (0, 3600] s");
-      }
-    }
-  }
+  if (s["task"]) readSweepTask(r, s["task"], sweep_dir, config_dir, spec);
 
   if (s["criteria"]) {
     const YAML::Node c = s["criteria"];

@@ -287,3 +287,26 @@ TEST(SweepProgram, RefusesUnwritableOutputAndMissingDevice) {
   EXPECT_NE(log.find("cannot be read"), std::string::npos) << log;
 }
 #endif
+
+// sweep.task is the node's task schema: a task file or the same keys inline.
+TEST(SweepFileTask, OneSchemaWithTheNode) {
+  const SweepSpec byFile = load(kConfig + "/sweeps/positioning_delay.yaml");  // task: tasks/positioning.yaml
+  EXPECT_EQ(byFile.desired[0], 2.0);
+  EXPECT_EQ(byFile.duration, 60.0);
+  const std::string inline_task =
+      "sweep:\n  task: {waypoints: [[1.5, -1, 1]], end_times: [30], duration: 30}\n" + std::string(kGoodParams);
+  const SweepSpec in = load(writeTemp("inline_task.yaml", inline_task));
+  EXPECT_EQ(in.desired[0], 1.5);
+  EXPECT_EQ(in.desired[1], -1.0);
+  EXPECT_EQ(in.duration, 30.0);
+  // What the engines cannot fly yet is refused plainly.
+  EXPECT_NE(refusal("sweep:\n  task: tasks/circle.yaml\n" + std::string(kGoodParams))
+                .find("'sweep.task' is a trajectory task: the sweep's engines fly single-point positioning tasks"),
+            std::string::npos);
+  EXPECT_NE(refusal("sweep:\n  task: tasks/mission4.yaml\n" + std::string(kGoodParams)).find("multi-waypoint"),
+            std::string::npos);
+  // Task keys are checked by the node's loader, naming them under sweep.task.
+  EXPECT_NE(refusal("sweep:\n  task: {desired: [2, 1, 2], duration: 60}\n" + std::string(kGoodParams))
+                .find("'sweep.task.desired' is not a known key: accepted name, type, duration, waypoints, end_times"),
+            std::string::npos);
+}

@@ -5,13 +5,14 @@
 #include <stdexcept>
 #include <string>
 
+#include "aurora_control/yaml_reader.h"
 #include "aurora_sweep/sweep_spec.h"
 
 namespace aurora_sweep {
 
-struct SweepFileError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
+// The shared configuration error (aurora_control/yaml_reader.h): the sweep
+// file, the task and controller schemas are read with the same rules.
+using SweepFileError = aurora_control::ConfigError;
 
 // Reads `path`. Relative file names inside (vehicle, points) resolve against
 // the sweep file's folder first, then `config_dir` (the shipped config/).
