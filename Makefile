@@ -36,6 +36,7 @@ bench: build
 	./bench/realtime_loop.sh $(BUILD)
 	./bench/sweep.sh $(BUILD)
 	./bench/report.sh $(BUILD)
+	./bench/laws.sh $(BUILD)
 
 clean:
 	rm -rf $(BUILD) out

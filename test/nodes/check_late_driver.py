@@ -1,13 +1,14 @@
 #!/usr/bin/python3
 """Take-off and land reach a driver that subscribes late and drops the first of each."""
 import threading
-import time
 import unittest
 
 import rospy
 import rostest
 from aurora_msgs.msg import Control
 from std_msgs.msg import String
+
+from flight_checks import wait_for
 
 
 def counts(text):
@@ -37,13 +38,7 @@ class LateDriverTest(unittest.TestCase):
             self.status.append(m.data)
 
     def wait_for(self, predicate, timeout):
-        end = time.time() + timeout
-        while time.time() < end and not rospy.is_shutdown():
-            with self.lock:
-                if predicate():
-                    return True
-            time.sleep(0.02)
-        return False
+        return wait_for(self.lock, predicate, timeout)
 
     def test_takeoff_and_land_are_delivered(self):
         # The state arrives long before the driver listens to take-off; the

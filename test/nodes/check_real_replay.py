@@ -15,6 +15,8 @@ from aurora_msgs.msg import Control
 from sensor_msgs.msg import Joy
 from std_msgs.msg import Float64
 
+from flight_checks import joy_msg, wait_for
+
 
 class RealReplayTest(unittest.TestCase):
     def setUp(self):
@@ -27,22 +29,7 @@ class RealReplayTest(unittest.TestCase):
             self.modes.append(m.mode)
 
     def wait_mode(self, mode, timeout):
-        end = time.time() + timeout
-        while time.time() < end and not rospy.is_shutdown():
-            with self.lock:
-                if self.modes and self.modes[-1] == mode:
-                    return True
-            time.sleep(0.01)
-        return False
-
-    def joy(self, pub, deadman, stick):
-        m = Joy()
-        m.header.stamp = rospy.Time.now()
-        m.axes = [0.0] * 8
-        m.buttons = [0] * 11
-        m.axes[4] = stick
-        m.buttons[4] = 1 if deadman else 0
-        pub.publish(m)
+        return wait_for(self.lock, lambda: self.modes and self.modes[-1] == mode, timeout)
 
     def test_real_flight_replays_identically(self):
         started = time.time()
@@ -50,9 +37,9 @@ class RealReplayTest(unittest.TestCase):
         pause = rospy.Publisher("/fake_ardrone/pause_mocap", Float64, queue_size=1, latch=True)
         self.assertTrue(self.wait_mode("fly", 40.0), "never reached 'fly'")
         for _ in range(15):  # 0.5 s of stick at 30 Hz, deadman held
-            self.joy(joy, True, 0.3)
+            joy.publish(joy_msg(True, 0.3))
             time.sleep(1.0 / 30.0)
-        self.joy(joy, False, 0.0)
+        joy.publish(joy_msg(False, 0.0))
         time.sleep(1.5)
         pause.publish(Float64(0.5))
         self.assertTrue(self.wait_mode("landed", 40.0), "the flight did not end with 'landed'")

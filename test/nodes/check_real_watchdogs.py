@@ -11,6 +11,8 @@ from geometry_msgs.msg import Twist
 from sensor_msgs.msg import Joy
 from std_msgs.msg import Empty, Float64
 
+from flight_checks import joy_msg, wait_for
+
 CYCLE = 1.0 / 30.0
 
 
@@ -54,13 +56,7 @@ class Recorder:
             return [m for t, m in self.modes if a <= t <= b]
 
     def wait_for(self, predicate, timeout):
-        end = time.time() + timeout
-        while time.time() < end and not rospy.is_shutdown():
-            with self.lock:
-                if predicate():
-                    return True
-            time.sleep(0.01)
-        return False
+        return wait_for(self.lock, predicate, timeout)
 
     def wait_mode(self, mode, timeout):
         return self.wait_for(lambda: self.modes and self.modes[-1][1] == mode, timeout)
@@ -95,14 +91,6 @@ class RealWatchdogsTest(unittest.TestCase):
         rospy.loginfo("normal per-cycle command change: %.4f", normal)
 
         # Deadman held, right stick up 0.3: cmd_vel.linear.x = 0.3 within one cycle.
-        def joy_msg(deadman, stick):
-            m = Joy()
-            m.header.stamp = rospy.Time.now()
-            m.axes = [0.0] * 8
-            m.buttons = [0] * 11
-            m.axes[4] = stick
-            m.buttons[4] = 1 if deadman else 0
-            return m
         sent = time.time()
         joy.publish(joy_msg(True, 0.3))
         first = None

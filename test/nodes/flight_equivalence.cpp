@@ -17,12 +17,11 @@
 #include "aurora_control/task_yaml.h"
 #include "aurora_sim/ros_conversions.h"
 #include "aurora_sim/ros_params.h"
+#include "lockstep_states.h"
 
 using namespace aurora_control;
 
 namespace {
-
-bool bitEqual(double a, double b) { return std::memcmp(&a, &b, sizeof(double)) == 0; }
 
 // The test's private parameters hold the same controller and task files as
 // the node's; read them with the node's loaders (through their YAML text).
@@ -37,15 +36,7 @@ YAML::Node fileParam(const ros::NodeHandle& pnh, const std::string& key) {
 TEST(FlightEquivalence, RosLoopEqualsTheFlightRunnerBitForBit) {
   ros::NodeHandle nh, pnh("~");
   const int steps = pnh.param("steps", 900);
-  std::map<unsigned long, aurora_msgs::DroneState> flown;
-  ros::Subscriber sub = nh.subscribe<aurora_msgs::DroneState>(
-      "state", 4000, [&](const aurora_msgs::DroneState::ConstPtr& m) { flown[m->step] = *m; });
-  const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(90.0);
-  while (ros::ok() && ros::WallTime::now() < deadline &&
-         (flown.empty() || flown.rbegin()->first < static_cast<unsigned long>(steps))) {
-    ros::spinOnce();
-    ros::WallDuration(0.005).sleep();
-  }
+  auto flown = aurora_tests::collectStates(nh, steps);
   ASSERT_GE(flown.size(), static_cast<size_t>(steps + 1)) << "ROS loop did not complete in time";
 
   const auto params = aurora_sim::loadVehicleParams(nh, "vehicle");
@@ -69,16 +60,7 @@ TEST(FlightEquivalence, RosLoopEqualsTheFlightRunnerBitForBit) {
   std::printf("flight runner: %s on a %g s task, delay %ld: RMS tracking error %.4f m, max %.4f m\n",
               lawName(set.law), task.duration(), set.delay, r.rms_tracking_error, r.max_tracking_error);
 
-  long mismatches = 0;
-  for (int k = 0; k <= steps; ++k) {
-    ASSERT_TRUE(flown.count(k)) << "state of step " << k << " missing";
-    double X[12];
-    aurora_sim::stateFromMsg(flown[k], X);
-    for (int i = 0; i < 12; ++i) {
-      if (bitEqual(X[i], offline[k][i])) continue;
-      if (mismatches++ < 5) ADD_FAILURE() << "step " << k << " state " << i << ": ROS " << X[i] << " offline " << offline[k][i];
-    }
-  }
+  const long mismatches = aurora_tests::bitMismatches(flown, offline, steps);
   EXPECT_EQ(mismatches, 0);
   // Guard against a vacuous pass: the drone went at least 0.5 m from its start.
   double farthest = 0.0;

@@ -10,6 +10,7 @@
 #include "aurora_control/positioning_runner.h"
 #include "aurora_sim/ros_conversions.h"
 #include "aurora_sim/ros_params.h"
+#include "lockstep_states.h"
 
 using namespace aurora_control;
 
@@ -30,8 +31,6 @@ WaypointTask<double> taskFromParams(const ros::NodeHandle& pnh) {
   return task;
 }
 
-bool bitEqual(double a, double b) { return std::memcmp(&a, &b, sizeof(double)) == 0; }
-
 }  // namespace
 
 TEST(TrajectoryEquivalence, RosLoopEqualsOfflineRunnerBitForBit) {
@@ -40,15 +39,7 @@ TEST(TrajectoryEquivalence, RosLoopEqualsOfflineRunnerBitForBit) {
   const int steps = pnh.param("steps", 1800);
   ASSERT_GT(delay, 0) << "the test must use a nonzero delay";
 
-  std::map<unsigned long, aurora_msgs::DroneState> flown;
-  ros::Subscriber sub = nh.subscribe<aurora_msgs::DroneState>(
-      "state", 4000, [&](const aurora_msgs::DroneState::ConstPtr& m) { flown[m->step] = *m; });
-  const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(90.0);
-  while (ros::ok() && ros::WallTime::now() < deadline &&
-         (flown.empty() || flown.rbegin()->first < static_cast<unsigned long>(steps))) {
-    ros::spinOnce();
-    ros::WallDuration(0.005).sleep();
-  }
+  auto flown = aurora_tests::collectStates(nh, steps);
   ASSERT_GE(flown.size(), static_cast<size_t>(steps + 1)) << "ROS loop did not complete in time";
 
   // The offline runner with the same vehicle file, task, gains and delay.
@@ -72,24 +63,8 @@ TEST(TrajectoryEquivalence, RosLoopEqualsOfflineRunnerBitForBit) {
                  });
   ASSERT_GE(offline.size(), static_cast<size_t>(steps + 1));
 
-  long mismatches = 0;
-  double max_diff = 0.0;
-  for (int k = 0; k <= steps; ++k) {
-    ASSERT_TRUE(flown.count(k)) << "state of step " << k << " missing";
-    double X[12];
-    aurora_sim::stateFromMsg(flown[k], X);
-    for (int i = 0; i < 12; ++i) {
-      if (!bitEqual(X[i], offline[k][i])) {
-        if (mismatches < 5) {
-          ADD_FAILURE() << "step " << k << " state " << i << ": ROS " << X[i] << " offline "
-                        << offline[k][i];
-        }
-        ++mismatches;
-        max_diff = std::max(max_diff, std::fabs(X[i] - offline[k][i]));
-      }
-    }
-  }
-  EXPECT_EQ(mismatches, 0) << "max |diff| " << max_diff;
+  const long mismatches = aurora_tests::bitMismatches(flown, offline, steps);
+  EXPECT_EQ(mismatches, 0);
   // Guard against a vacuous pass: the drone actually flew the mission.
   EXPECT_GT(std::fabs(flown[steps].position.x - flown[0].position.x) +
                 std::fabs(flown[450].position.z - flown[0].position.z),
