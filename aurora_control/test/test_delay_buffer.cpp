@@ -1,4 +1,4 @@
-// DelayBuffer semantics (ardrone-model.md, "Delayed feedback").
+// DelayBuffer semantics (docs/delay-and-study.md, "Delayed feedback").
 #include <gtest/gtest.h>
 
 #include "aurora_control/delay_buffer.h"

@@ -1,4 +1,4 @@
-// The spec's self-check rows (ardrone-model.md, "Self-check values"),
+// The spec's self-check rows (docs/delay-and-study.md, "Self-check values"),
 // reproduced through the runner, full 1801 iterations, no early stop.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// Delayed feedback (ardrone-model.md, "Delayed feedback"): the loop keeps the
+// Delayed feedback (docs/delay-and-study.md, "Delayed feedback"): the loop keeps the
 // history H(1) = X0, H(k+1) = X after k steps; at iteration k (1-based) with a
 // delay of d samples the controller receives H(k - d) if k > d, otherwise the
 // current state H(k).

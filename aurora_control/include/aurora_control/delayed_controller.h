@@ -1,7 +1,7 @@
 // The controller node's per-cycle computation, ROS-free: received states go
 // into the delay buffer; each cycle the chosen law (the delay study's PD law
 // with saturation, eq. 3.1, or the underactuated 12-gain law) runs on the
-// delayed state (docs: "Delayed feedback"), the command is clamped as the
+// delayed state (docs/delay-and-study.md), the command is clamped as the
 // drivers do (optional), and the study's metrics accumulate once per state
 // step. The node and the offline `replay` tool both call this class, so a
 // replay of a bag reproduces every command.

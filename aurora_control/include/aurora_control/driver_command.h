@@ -105,7 +105,7 @@ class DriverCommand {
 };
 
 // Evidence in a fresh state that the driver acted (state indices of
-// ardrone-model.md). Take-off: the drone rose `rise` [m] above the altitude
+// docs/model.md). Take-off: the drone rose `rise` [m] above the altitude
 // at the request. Land: it descends faster than `speed` [m/s], or is below
 // `landed_altitude` [m].
 inline bool climbShown(const double X[aurora_sim::kStateSize], double z_at_request, double rise) {

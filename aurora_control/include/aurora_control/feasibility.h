@@ -1,5 +1,5 @@
 // Metrics and the four feasibility checks of the positioning study
-// (ardrone-model.md, "The positioning delay study"). Each check, once failed,
+// (docs/delay-and-study.md, "The positioning delay study"). Each check, once failed,
 // stays failed. Works for scalars (Mask = bool) and SIMD batches (Mask = the
 // batch's mask type).
 #pragma once

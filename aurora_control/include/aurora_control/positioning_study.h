@@ -1,4 +1,4 @@
-// One iteration of the positioning delay study (ardrone-model.md, "The
+// One iteration of the positioning delay study (docs/delay-and-study.md, "The
 // positioning delay study", loop steps 2-5), shared by the scalar runner,
 // the SIMD sweep engine and the CUDA kernel so the physics and the law exist
 // once. History handling (step 1 and 6) is the caller's: a scalar DelayBuffer

@@ -1,6 +1,6 @@
 // Underactuated nonlinear controller with 12 gains (Brandão, Sarcinelli-Filho
 // & Carelli 2013), steps 1-11 of the underactuated controller in
-// docs/ (ardrone-model.md of the spec). Like ardroneStep: templated on the
+// docs/controllers.md. Like ardroneStep: templated on the
 // scalar (double, float, a SIMD batch), host and CUDA device, no allocation,
 // no exceptions, no Eigen; data-dependent branches are selects.
 //

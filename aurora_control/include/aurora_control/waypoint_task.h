@@ -1,6 +1,6 @@
 // Tasks: where the drone should be at a given time. A positioning task is a
 // single point; the thesis's mission is four waypoints, one per quarter of a
-// 60 s run (thesis, Simulation #1; ardrone-model.md "The positioning delay
+// 60 s run (thesis, Simulation #1; docs/delay-and-study.md "The positioning delay
 // study" for the single point).
 #pragma once
 

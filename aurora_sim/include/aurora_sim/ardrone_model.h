@@ -1,4 +1,4 @@
-// One step of the AR.Drone 2.0 dynamic model, exactly as ardrone-model.md
+// One step of the AR.Drone 2.0 dynamic model, exactly as docs/model.md
 // ("One model step") writes it. ROS-free, allocation-free, no virtual calls;
 // templated on the scalar T (double, float, or a SIMD batch) and callable on
 // a CUDA device. Time is passed in through the parameters (Ts); nothing here
@@ -52,7 +52,7 @@ struct Disturbance {
   }
 };
 
-// Rotational inertia matrix Mr(eta) (ardrone-model.md, "Mr and Cr").
+// Rotational inertia matrix Mr(eta) (docs/model.md, "Mr and Cr").
 template <typename T>
 AURORA_HD inline void inertiaMatrix(const ArdroneParams<T>& p, const T& sphi, const T& cphi,
                                     const T& sth, const T& cth, T Mr[3][3]) {
@@ -69,7 +69,7 @@ AURORA_HD inline void inertiaMatrix(const ArdroneParams<T>& p, const T& sphi, co
   Mr[2][2] = p.Ixx * sth2 + p.Iyy * sphi2 * cth2 + p.Izz * cphi2 * cth2;
 }
 
-// Coriolis matrix Cr(eta, eta_dot) (ardrone-model.md, "Mr and Cr"),
+// Coriolis matrix Cr(eta, eta_dot) (docs/model.md, "Mr and Cr"),
 // including the reference's Cr12 quirk (s_phi c_theta, not s_phi c_phi).
 template <typename T>
 AURORA_HD inline void coriolisMatrix(const ArdroneParams<T>& p, const T& sphi, const T& cphi,
@@ -115,7 +115,7 @@ AURORA_HD inline void solve3(const T M[3][3], const T b[3], T x[3]) {
 
 // Advances the model by one robot sample Ts with command U (model order
 // [u_phi u_theta u_zdot u_psidot]; not clamped here: the delay study does not
-// clamp, the ROS sim clamps before calling). Steps 1-9 of ardrone-model.md.
+// clamp, the ROS sim clamps before calling). Steps 1-9 of docs/model.md.
 template <typename T>
 AURORA_HD inline void ardroneStep(const ArdroneParams<T>& p, ArdroneState<T>& s, const T U[4],
                                   const Disturbance<T>& dist) {

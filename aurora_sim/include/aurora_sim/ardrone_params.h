@@ -1,5 +1,5 @@
 // Physical and on-board controller parameters of the Parrot AR.Drone 2.0
-// model (ardrone-model.md, "Parameters"). Plain data, templated on the
+// model (docs/model.md, "Parameters"). Plain data, templated on the
 // scalar so the float sweep converts once instead of at every use.
 #pragma once
 
@@ -33,7 +33,7 @@ struct ArdroneParams {
   T uSat[4];  // command scaling: roll [rad], pitch [rad], climb [m/s], yaw rate [rad/s]
   T Vbat;   // battery voltage [V]
 
-  // Derived quantities (ardrone-model.md: k2 = Ct/Cf, Wo, Vo, Tsm = Ts/4).
+  // Derived quantities (docs/model.md: k2 = Ct/Cf, Wo, Vo, Tsm = Ts/4).
   T k2;     // yaw-moment coefficient
   T Tsm;    // motor sub-step [s]
   T Wo;     // hover rotor speed
@@ -67,7 +67,7 @@ struct ArdroneParams {
   }
 };
 
-// The reference parameter set of ardrone-model.md (Li's identification,
+// The reference parameter set of docs/model.md (Li's identification,
 // g = 9.8 as in the reference code). The ROS nodes do not use this: they read
 // config/vehicles/ardrone2.yaml strictly; a test checks both agree.
 inline ArdroneParams<double> referenceArdrone2Params() {

@@ -40,7 +40,7 @@ AURORA_HD inline T wrapAngleOnce(const T& angle) {
 }
 
 // The underactuated controller's angle-error rule, as the reference writes
-// it (docs: underactuated controller, step 1): if |e| > pi then e -= 2 pi;
+// it (docs/controllers.md, underactuated law, step 1): if |e| > pi then e -= 2 pi;
 // then if e < -pi, e += 2 pi. Unlike wrapAngleOnce, an error below -pi goes
 // down and back up by 2 pi (rounding included), as in the reference.
 template <typename T>
