@@ -126,8 +126,7 @@ long ControllerNode::readDelaySamples() {
   static_assert(Core::kMaxDelay == kHistoryCapacity - 1, "delay range follows the history");
   const bool has_samples = pnh_.hasParam("delay/samples");
   const bool has_seconds = pnh_.hasParam("delay/seconds");
-  const std::string accepted = "integer samples in [0, " +
-                               std::to_string(kHistoryCapacity - 1) + "]";
+  const std::string accepted = delayRangeText();
   if (has_samples && has_seconds) {
     throw ParameterError("both '" + fullKey(pnh_, "delay/samples") + "' and '" +
                          fullKey(pnh_, "delay/seconds") + "' are set: give only one");

@@ -18,6 +18,7 @@
 #include "aurora_control/delayed_controller.h"
 #include "aurora_control/flight_supervisor.h"
 #include "aurora_control/joystick.h"
+#include "aurora_control/limits.h"
 #include "aurora_control/task.h"
 #include "driver_command_channel.h"
 
@@ -25,7 +26,7 @@ namespace aurora_control {
 
 class ControllerNode {
  public:
-  static constexpr int kHistoryCapacity = 2048;  // largest delay: 2047 samples (68 s)
+  static constexpr int kHistoryCapacity = kDelayHistory;  // limits.h: delays up to 2047 samples (68 s)
 
   // Throws aurora_sim::ParameterError on a missing or invalid parameter.
   ControllerNode(ros::NodeHandle nh, ros::NodeHandle private_nh);

@@ -36,7 +36,7 @@ bool parse(int argc, char** argv, Options& o) {
       ("controller", po::value(&o.controller)->default_value(config + "/controllers/pd_saturated.yaml"), "controller YAML (law and gains)")
       ("task", po::value(&o.task)->default_value(config + "/tasks/mission4.yaml"), "task YAML (waypoints, circle, lemniscate)")
       ("vehicle", po::value(&o.vehicle)->default_value(config + "/vehicles/ardrone2.yaml"), "vehicle YAML")
-      ("delay", po::value(&o.delay)->default_value(0), "feedback delay [samples of Ts], 0 to 2047")
+      ("delay", po::value(&o.delay)->default_value(0), "feedback delay [samples of Ts], 0 to 2047 (limits.h)")
       ("no-clamp", po::bool_switch(&o.no_clamp), "do not clamp the law's commands (the sim still does, as the drivers)")
       ("csv", po::value(&o.csv), "write step, t, x, y, z, desired x, y, z, error per step");
   po::variables_map vm;

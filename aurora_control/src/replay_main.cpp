@@ -21,6 +21,7 @@
 
 #include "aurora_control/delayed_controller.h"
 #include "aurora_control/law_yaml.h"
+#include "aurora_control/limits.h"
 #include "aurora_sim/vehicle_yaml.h"
 #include "aurora_sim/ros_conversions.h"
 
@@ -49,11 +50,23 @@ const char* kUsage =
     "  --expect-identical    exit 1 unless every command is identical\n"
     "  -h, --help            this text\n";
 
-constexpr int kCapacity = 2048;
+constexpr int kCapacity = kDelayHistory;  // limits.h, as the node
 
 [[noreturn]] void fail(const std::string& msg, int code = 2) {
   std::fprintf(stderr, "replay: %s\n", msg.c_str());
   std::exit(code);
+}
+
+double number(const std::string& flag, const std::string& v);
+
+// A PD gain, with the node's range (limits.h).
+double gain(const std::string& flag, const std::string& v) {
+  const double x = number(flag, v);
+  if (x < kPdGainMin || x > kPdGainMax) {
+    fail(flag + " " + v + " is outside the accepted range [" + YamlReader::fmt(kPdGainMin) + ", " +
+         YamlReader::fmt(kPdGainMax) + "]");
+  }
+  return x;
 }
 
 double number(const std::string& flag, const std::string& v) {
@@ -138,22 +151,19 @@ int main(int argc, char** argv) {
     } else if (a == "--vehicle") {
       vehicle_path = value();
     } else if (a == "--kp") {
-      o.kp = true, o.kp_value = number(a, value());
+      o.kp = true, o.kp_value = gain(a, value());
     } else if (a == "--kd") {
-      o.kd = true, o.kd_value = number(a, value());
+      o.kd = true, o.kd_value = gain(a, value());
     } else if (a == "--delay") {
       const double d = number(a, value());
-      if (d < 0 || d != std::floor(d) || d > kCapacity - 1) {
-        fail("--delay must be whole samples in [0, " + std::to_string(kCapacity - 1) + "]");
-      }
+      if (d < 0 || d != std::floor(d) || d > kMaxDelaySamples) fail("--delay must be " + delayRangeText());
       o.delay = true, o.delay_value = static_cast<long>(d);
     } else if (a == "--delay-seconds") {
       o.delay_seconds = true, o.delay_seconds_value = number(a, value());
       if (o.delay_seconds_value < 0) fail("--delay-seconds must be >= 0");
-    } else if (a == "--clamp") {
-      o.clamp = true, o.clamp_value = true;
-    } else if (a == "--no-clamp") {
-      o.clamp = true, o.clamp_value = false;
+    } else if (a == "--clamp" || a == "--no-clamp") {
+      if (o.clamp && o.clamp_value != (a == "--clamp")) fail("--clamp and --no-clamp exclude each other: give one");
+      o.clamp = true, o.clamp_value = a == "--clamp";
     } else if (a == "--out") {
       out_path = value();
     } else if (a == "--expect-identical") {
@@ -167,6 +177,7 @@ int main(int argc, char** argv) {
     }
   }
   if (bag_path.empty()) fail(std::string("a bag is required\n\n") + kUsage);
+  if (o.delay && o.delay_seconds) fail("--delay and --delay-seconds exclude each other: give one");
 
   rosbag::Bag bag;
   try {
@@ -270,6 +281,10 @@ int main(int argc, char** argv) {
     set.delay = o.delay ? o.delay_value
                         : (o.delay_seconds ? std::lround(o.delay_seconds_value / c.sample_time)
                                            : static_cast<long>(c.delay_samples));
+    if (set.delay > kMaxDelaySamples) {
+      fail("--delay-seconds " + std::to_string(o.delay_seconds_value) + " is " + std::to_string(set.delay) +
+           " samples of " + std::to_string(c.sample_time) + " s: accepted " + delayRangeText());
+    }
     set.clamp_commands = o.clamp ? o.clamp_value : static_cast<bool>(c.clamped);
     // The law ran when the node says it did; where the joystick replaced
     // the command, the law's own command (command_unclamped) is compared.

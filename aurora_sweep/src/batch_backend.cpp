@@ -275,7 +275,7 @@ void runBatchPrecision(const SweepSpec& spec, int threads, std::vector<SimResult
                        Progress& progress) {
   if (spec.max_delay < 64) return runBatchWith<T, 64>(spec, threads, out, progress);
   if (spec.max_delay < 512) return runBatchWith<T, 512>(spec, threads, out, progress);
-  return runBatchWith<T, 4096>(spec, threads, out, progress);
+  return runBatchWith<T, aurora_control::kDelayHistory>(spec, threads, out, progress);
 }
 
 }  // namespace

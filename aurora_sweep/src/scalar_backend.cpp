@@ -20,7 +20,7 @@ template <typename T>
 void runScalarPrecision(const SweepSpec& spec, std::vector<SimResult>& out, Progress& progress) {
   if (spec.max_delay < 64) return runScalarWith<T, 64>(spec, out, progress);
   if (spec.max_delay < 512) return runScalarWith<T, 512>(spec, out, progress);
-  return runScalarWith<T, 4096>(spec, out, progress);
+  return runScalarWith<T, aurora_control::kDelayHistory>(spec, out, progress);
 }
 
 }  // namespace

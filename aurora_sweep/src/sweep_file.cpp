@@ -56,8 +56,9 @@ void checkValue(const Reader& r, int id, double v, const std::string& key) {
       r.fail(key, "= " + std::to_string(v) + " is not a delay: accepted whole samples in [0, " +
                       std::to_string(aurora_control::kMaxRunnerDelay) + "]");
     }
-  } else if (v < 0.0 || v > 100.0) {
-    r.fail(key, "= " + std::to_string(v) + " is outside the accepted range [0, 100]");
+  } else if (v < aurora_control::kPdGainMin || v > aurora_control::kPdGainMax) {
+    r.fail(key, "= " + Reader::fmt(v) + " is outside the accepted range [" + Reader::fmt(aurora_control::kPdGainMin) +
+                    ", " + Reader::fmt(aurora_control::kPdGainMax) + "] (the controller node's)");
   }
 }
 

@@ -36,7 +36,7 @@ template <typename T>
 void runPrecision(const SweepSpec& spec, int threads, std::vector<SimResult>& out, Progress& progress) {
   if (spec.max_delay < 64) return runThreaded<T, 64>(spec, threads, out, progress);
   if (spec.max_delay < 512) return runThreaded<T, 512>(spec, threads, out, progress);
-  return runThreaded<T, 4096>(spec, threads, out, progress);
+  return runThreaded<T, aurora_control::kDelayHistory>(spec, threads, out, progress);
 }
 
 }  // namespace

@@ -310,3 +310,11 @@ TEST(SweepFileTask, OneSchemaWithTheNode) {
                 .find("'sweep.task.desired' is not a known key: accepted name, type, duration, waypoints, end_times"),
             std::string::npos);
 }
+
+// The delay limit is the node's and replay's (limits.h), not a sweep's own.
+TEST(SweepFileRefusal, DelayLimitIsTheNodes) {
+  const std::string msg = refusal("sweep:\n  parameters:\n    kp: 0.5\n    kd: 0.5\n    delay: 3000\n");
+  EXPECT_NE(msg.find("[0, " + std::to_string(aurora_control::kMaxDelaySamples) + "]"), std::string::npos) << msg;
+  EXPECT_EQ(aurora_control::kMaxDelaySamples, 2047);
+  EXPECT_EQ(refusal("sweep:\n  parameters:\n    kp: 0.5\n    kd: 0.5\n    delay: 2047\n"), "");
+}

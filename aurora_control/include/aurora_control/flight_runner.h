@@ -12,6 +12,7 @@
 #include <string>
 
 #include "aurora_control/delayed_controller.h"
+#include "aurora_control/limits.h"
 #include "aurora_control/task.h"
 #include "aurora_control/waypoint_task.h"
 #include "aurora_sim/ardrone_model.h"
@@ -26,7 +27,7 @@ struct FlightResult {
   double final_pos[3] = {0, 0, 0};    // [m]
 };
 
-constexpr int kFlightHistory = 2048;  // the node's history: delays up to 2047 samples
+constexpr int kFlightHistory = kDelayHistory;  // the node's history (limits.h)
 
 // observe(k, state after step k, reference of iteration k, command) after
 // each model step (k 1-based).

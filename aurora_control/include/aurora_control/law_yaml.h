@@ -1,14 +1,15 @@
 // The controller files' schema (config/controllers/*.yaml, 'controller:'),
 // read strictly for the node, replay and the sweep: the law's name, all of
 // its gains (none may be missing), nothing else.
-//   pd_saturated:   kp, kd in [0, 10]
-//   underactuated:  k1_x, k2_x, ..., k1_psi, k2_psi in [0.001, 100]
+//   pd_saturated:   kp, kd in [kPdGainMin, kPdGainMax] = [0, 10]
+//   underactuated:  k1_x, k2_x, ..., k1_psi, k2_psi in [0.001, 100] (limits.h)
 #pragma once
 
 #include <string>
 #include <vector>
 
 #include "aurora_control/delayed_controller.h"
+#include "aurora_control/limits.h"
 #include "aurora_control/yaml_reader.h"
 
 namespace aurora_control {
@@ -52,10 +53,10 @@ inline void readLaw(const YamlReader& r, const YAML::Node& node, const std::stri
   accepted.insert(accepted.end(), gains.begin(), gains.end());
   r.onlyKeys(node, key, accepted);
   const bool pd = set.law == LawType::kPdSaturated;
+  const double lo = pd ? kPdGainMin : kUnderactuatedGainMin, hi = pd ? kPdGainMax : kUnderactuatedGainMax;
   for (size_t i = 0; i < gains.size(); ++i) {
-    const YAML::Node v = r.require(node, key, gains[i], pd ? "a number in [0, 10]" : "a number in [0.001, 100]");
-    lawGain(set, static_cast<int>(i)) =
-        pd ? r.numberIn(v, r.key(key, gains[i]), 0.0, 10.0, "") : r.numberIn(v, r.key(key, gains[i]), 0.001, 100.0, "");
+    const YAML::Node v = r.require(node, key, gains[i], "a number in [" + YamlReader::fmt(lo) + ", " + YamlReader::fmt(hi) + "]");
+    lawGain(set, static_cast<int>(i)) = r.numberIn(v, r.key(key, gains[i]), lo, hi, "");
   }
 }
 

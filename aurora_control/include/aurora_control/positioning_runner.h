@@ -7,6 +7,7 @@
 #include <string>
 
 #include "aurora_control/delay_buffer.h"
+#include "aurora_control/limits.h"
 #include "aurora_control/positioning_study.h"
 
 namespace aurora_control {
@@ -27,8 +28,9 @@ struct RunnerResult {
   double final_pos[3];  // [m], world frame
 };
 
-// Largest delay (samples) the runner's history holds.
-constexpr long kMaxRunnerDelay = 4095;
+// Largest delay (samples) the runner's history holds: the same limit as the
+// node's (limits.h).
+constexpr long kMaxRunnerDelay = kMaxDelaySamples;
 
 struct NoObserver {
   template <typename... Args>
@@ -86,7 +88,7 @@ RunnerResult runPositioning(const aurora_sim::ArdroneParams<T>& p, const RunnerC
   const long n = studyIterationCount(double(cfg.task.duration), double(p.Ts));
   if (delay < 64) return runPositioningCore<T, 64>(p, cfg, gains, delay, n, observe);
   if (delay < 512) return runPositioningCore<T, 512>(p, cfg, gains, delay, n, observe);
-  return runPositioningCore<T, 4096>(p, cfg, gains, delay, n, observe);
+  return runPositioningCore<T, kDelayHistory>(p, cfg, gains, delay, n, observe);
 }
 
 }  // namespace aurora_control

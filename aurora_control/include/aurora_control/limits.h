@@ -1,0 +1,20 @@
+// Accepted ranges shared by every entry point (controller node, replay, the
+// flight tool, the sweep), written once so that they agree.
+#pragma once
+
+#include <string>
+
+namespace aurora_control {
+
+// Feedback delay [samples of Ts]: 0 to 2047 (68 s at 30 Hz). Histories hold
+// kDelayHistory states so the largest delay still finds its sample.
+constexpr long kMaxDelaySamples = 2047;
+constexpr int kDelayHistory = static_cast<int>(kMaxDelaySamples) + 1;
+
+// Gains of the two laws.
+constexpr double kPdGainMin = 0.0, kPdGainMax = 10.0;
+constexpr double kUnderactuatedGainMin = 0.001, kUnderactuatedGainMax = 100.0;
+
+inline std::string delayRangeText() { return "integer samples in [0, " + std::to_string(kMaxDelaySamples) + "]"; }
+
+}  // namespace aurora_control
