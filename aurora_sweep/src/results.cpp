@@ -40,11 +40,17 @@ std::string readFile(const std::string& path) {
 
 }  // namespace
 
-Counts countResults(const std::vector<SimResult>& results) {
+Counts countResults(const std::vector<SimResult>& results, long iterations) {
   Counts c;
   c.combinations = static_cast<long>(results.size());
   for (const SimResult& r : results) {
-    for (int i = 0; i < 4; ++i) c.passed[i] += (r.ok >> i) & 1;
+    const bool complete = r.steps >= iterations;
+    for (int i = 0; i < 4; ++i) {
+      const bool held = (r.ok >> i) & 1;
+      c.passed[i] += held && complete;
+      c.failed[i] += !held;
+      c.not_reached[i] += held && !complete;
+    }
     c.feasible += (r.ok >> 4) & 1;
     c.steps += r.steps;
   }
@@ -89,8 +95,14 @@ void writeSummaryJson(const std::string& path, const SweepSpec& spec, const RunI
   f << "],\n";
   f << "  \"combinations\": " << counts.combinations << ",\n";
   f << "  \"feasible\": " << counts.feasible << ",\n";
-  f << "  \"passed_checks\": [" << counts.passed[0] << ", " << counts.passed[1] << ", "
-    << counts.passed[2] << ", " << counts.passed[3] << "],\n";
+  // Per check 1-4: held through a complete run / failed / not reached (the
+  // run stopped early at another check's failure while this one held).
+  const auto list = [](const long v[4]) {
+    return "[" + std::to_string(v[0]) + ", " + std::to_string(v[1]) + ", " + std::to_string(v[2]) + ", " +
+           std::to_string(v[3]) + "]";
+  };
+  f << "  \"checks\": {\"passed\": " << list(counts.passed) << ", \"failed\": " << list(counts.failed)
+    << ", \"not_reached\": " << list(counts.not_reached) << "},\n";
   f << "  \"control_steps\": " << counts.steps << ",\n";
   f << "  \"early_stop\": " << (spec.early_stop ? "true" : "false") << ",\n";
   f << "  \"clamp_commands\": " << (spec.clamp_commands ? "true" : "false") << ",\n";

@@ -245,7 +245,8 @@ int main(int argc, char** argv) {
     return 4;
   }
   info.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  const Counts counts = countResults(results);
+  const Counts counts =
+      countResults(results, aurora_control::studyIterationCount(spec.duration, spec.vehicle.Ts));
   try {
     writeResultsCsv(opt.out + "/results.csv", spec, results);
     writeSummaryJson(opt.out + "/summary.json", spec, info, counts);
@@ -253,10 +254,13 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "sweep: %s\n", e.what());
     return 5;
   }
-  std::printf("sweep: %ld combinations, %ld feasible (checks passed: %ld %ld %ld %ld), "
+  std::printf("sweep: %ld combinations, %ld feasible; checks 1-4 passed %ld %ld %ld %ld, failed %ld %ld %ld "
+              "%ld, not reached (early stop) %ld %ld %ld %ld; "
               "%.3f s, %.0f sims/s, %.3g control steps/s, backend %s (%s), %s\n",
               counts.combinations, counts.feasible, counts.passed[0], counts.passed[1],
-              counts.passed[2], counts.passed[3], info.wall_time_s,
+              counts.passed[2], counts.passed[3], counts.failed[0], counts.failed[1], counts.failed[2],
+              counts.failed[3], counts.not_reached[0], counts.not_reached[1], counts.not_reached[2],
+              counts.not_reached[3], info.wall_time_s,
               counts.combinations / std::max(info.wall_time_s, 1e-9),
               counts.steps / std::max(info.wall_time_s, 1e-9), backend.c_str(), info.device.c_str(),
               precisionName(spec.precision));

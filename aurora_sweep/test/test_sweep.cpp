@@ -10,6 +10,7 @@
 #include <string>
 
 #include "aurora_sweep/backends.h"
+#include "aurora_sweep/results.h"
 #include "aurora_sweep/sweep_file.h"
 
 using namespace aurora_sweep;
@@ -317,4 +318,25 @@ TEST(SweepFileRefusal, DelayLimitIsTheNodes) {
   EXPECT_NE(msg.find("[0, " + std::to_string(aurora_control::kMaxDelaySamples) + "]"), std::string::npos) << msg;
   EXPECT_EQ(aurora_control::kMaxDelaySamples, 2047);
   EXPECT_EQ(refusal("sweep:\n  parameters:\n    kp: 0.5\n    kd: 0.5\n    delay: 2047\n"), "");
+}
+
+// With early stop a run ends at its first failed check: the checks it had
+// not failed by then are "not reached", not "passed".
+TEST(SweepCounts, EarlyStopChecksAreNotReached) {
+  const std::string yaml =
+      "sweep:\n  parameters:\n    kp: 0.5\n    kd: 0.85\n    delay: {values: [0, 53]}\n  early_stop: true\n";
+  const SweepSpec spec = load(writeTemp("early_counts.yaml", yaml));
+  const std::vector<SimResult> results = run(spec, "scalar");
+  const Counts c = countResults(results, aurora_control::studyIterationCount(spec.duration, spec.vehicle.Ts));
+  ASSERT_EQ(c.combinations, 2);
+  EXPECT_EQ(c.feasible, 1);  // delay 0 flies; delay 53 fails early
+  for (int i = 0; i < 4; ++i) {
+    EXPECT_EQ(c.passed[i] + c.failed[i] + c.not_reached[i], 2) << "check " << i + 1;
+    EXPECT_EQ(c.passed[i], 1) << "check " << i + 1 << ": only the complete run passes";
+  }
+  long failed = 0, not_reached = 0;
+  for (int i = 0; i < 4; ++i) failed += c.failed[i], not_reached += c.not_reached[i];
+  EXPECT_GE(failed, 1);
+  EXPECT_GE(not_reached, 1);  // the stopped run's other checks
+  EXPECT_EQ(failed + not_reached, 4);
 }

@@ -19,14 +19,19 @@ struct RunInfo {
   std::string note;         // how `auto` chose, etc.
 };
 
+// Per check: passed (held through a complete run), failed, or not reached
+// (the run stopped early at another check's failure while this one held).
 struct Counts {
   long combinations = 0;
   long feasible = 0;
   long passed[4] = {0, 0, 0, 0};
+  long failed[4] = {0, 0, 0, 0};
+  long not_reached[4] = {0, 0, 0, 0};
   long long steps = 0;
 };
 
-Counts countResults(const std::vector<SimResult>& results);
+// `iterations`: the steps of a complete run (studyIterationCount).
+Counts countResults(const std::vector<SimResult>& results, long iterations);
 
 // Throws std::runtime_error naming the file when it cannot be written.
 void writeResultsCsv(const std::string& path, const SweepSpec& spec,
