@@ -9,12 +9,17 @@
 
 namespace aurora_sweep {
 
-int publishFeasibleMarkers(int argc, char** argv, const SweepSpec& spec,
-                           const std::vector<SimResult>& results) {
+bool rvizMasterReachable(int argc, char** argv) {
   ros::init(argc, argv, "sweep", ros::init_options::AnonymousName);
+  if (ros::master::check()) return true;
+  std::fprintf(stderr, "sweep: --rviz: no ROS master at %s: start roscore first, or drop --rviz "
+               "(nothing was run)\n", ros::master::getURI().c_str());
+  return false;
+}
+
+int publishFeasibleMarkers(int, char**, const SweepSpec& spec, const std::vector<SimResult>& results) {
   if (!ros::master::check()) {
-    std::fprintf(stderr, "sweep: --rviz: no ROS master at %s (start roscore first)\n",
-                 ros::master::getURI().c_str());
+    std::fprintf(stderr, "sweep: --rviz: the ROS master at %s went away\n", ros::master::getURI().c_str());
     return 7;
   }
   ros::NodeHandle nh;

@@ -269,10 +269,12 @@ SweepSpec loadSweepFile(const std::string& path, const std::string& config_dir) 
     for (const auto& o : order) {
       if (paramIdOf(o) < 0) r.fail("sweep.order", "names unknown parameter '" + o + "': accepted kp, kd, delay");
       if (!seen.insert(o).second) r.fail("sweep.order", "names '" + o + "' twice");
-      if (std::find(varied.begin(), varied.end(), o) == varied.end()) {
-        r.fail("sweep.order", "names '" + o + "', which is not varied (it has a single value)");
-      }
     }
+    // A fixed parameter in the order is accepted: it does not vary, so its
+    // place does not matter (e.g. 'delay: 600' with the usual order).
+    order.erase(std::remove_if(order.begin(), order.end(), [&](const std::string& o) {
+                  return std::find(varied.begin(), varied.end(), o) == varied.end();
+                }), order.end());
     if (order.size() != varied.size()) {
       r.fail("sweep.order", "must list every varied parameter (" + joinKeys(varied) + "), first varying fastest");
     }

@@ -16,6 +16,7 @@
 
 #include "aurora_sweep/backends.h"
 #include "aurora_sweep/cuda_backend.h"
+#include "aurora_sweep/recent_rate.h"
 #include "aurora_sweep/results.h"
 #include "aurora_sweep/rviz_markers.h"
 #include "aurora_sweep/sweep_file.h"
@@ -159,7 +160,7 @@ class ProgressMonitor {
     while (!cv_.wait_for(lock, std::chrono::seconds(1), [this] { return done_; })) {
       const long done = progress_.load(std::memory_order_relaxed);
       const double elapsed = std::chrono::duration<double>(Clock::now() - start_).count();
-      const double rate = done / std::max(elapsed, 1e-9);
+      const double rate = recent_.add(elapsed, done);  // the last 10 s, not since the start
       const double eta = rate > 0 ? (total_ - done) / rate : 0.0;
       std::fprintf(stderr, "sweep: %ld/%ld (%.1f%%) %.0f sims/s, ETA %.0f s\n", done, total_,
                    100.0 * done / std::max(total_, 1L), rate, eta);
@@ -169,6 +170,7 @@ class ProgressMonitor {
   const long total_;
   const bool quiet_;
   const Clock::time_point start_;
+  RecentRate recent_;
   std::mutex mutex_;
   std::condition_variable cv_;
   bool done_ = false;
@@ -189,7 +191,9 @@ int main(int argc, char** argv) {
   if (!opt.precision.empty()) {
     spec.precision = opt.precision == "float" ? Precision::kFloat : Precision::kDouble;
   }
-  makeWritableDir(opt.out);
+  // Everything that can refuse the run is checked before the output folder
+  // is created and before any simulation: the device, the ROS master.
+  if (opt.rviz && !rvizMasterReachable(argc, argv)) return 7;
 
   RunInfo info;
   std::string backend = opt.backend;
@@ -214,6 +218,7 @@ int main(int argc, char** argv) {
     if (opt.backend == "auto") std::fprintf(stderr, "sweep: %s\n", info.note.c_str());
   }
   info.backend = backend;
+  makeWritableDir(opt.out);
 
   const long total = spec.size();
   std::fprintf(stderr, "sweep: %s: %ld combinations, backend %s, %s precision%s\n",

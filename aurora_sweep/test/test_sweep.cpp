@@ -1,6 +1,7 @@
 // The sweep: grid decoding, backend agreement (scalar vs SIMD batches),
 // points files, the sweep program's outputs, and refusal of bad sweep files.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 
 #include <cmath>
@@ -10,6 +11,7 @@
 #include <string>
 
 #include "aurora_sweep/backends.h"
+#include "aurora_sweep/recent_rate.h"
 #include "aurora_sweep/results.h"
 #include "aurora_sweep/sweep_file.h"
 
@@ -339,4 +341,47 @@ TEST(SweepCounts, EarlyStopChecksAreNotReached) {
   EXPECT_GE(failed, 1);
   EXPECT_GE(not_reached, 1);  // the stopped run's other checks
   EXPECT_EQ(failed + not_reached, 4);
+}
+
+#ifdef AURORA_SWEEP_BIN
+// Refusals that used to come after work or leave traces: no CUDA device
+// leaves no output folder; --rviz without a master is refused before any
+// simulation.
+TEST(SweepProgram, RefusalsLeaveNothingBehind) {
+  std::string log;
+  const std::string out = ::testing::TempDir() + "/sweep_no_device_out";
+  std::remove(out.c_str());
+  const int rc = runSweep("--config " + kData + "/small_grid.yaml --out " + out + " --backend cuda", log);
+  if (rc == 3) {  // no usable device here (CI); with one, the run is legitimate
+    struct stat st;
+    EXPECT_NE(stat(out.c_str(), &st), 0) << "output folder created although nothing ran: " << log;
+  }
+  const std::string out2 = ::testing::TempDir() + "/sweep_no_master_out";
+  EXPECT_EQ(runSweep("--config " + kData + "/small_grid.yaml --out " + out2 +
+                         " --rviz __master:=http://localhost:1 --no-plots",
+                     log), 7);
+  EXPECT_NE(log.find("no ROS master"), std::string::npos) << log;
+  EXPECT_EQ(log.find("combinations, backend"), std::string::npos) << "work started before the check: " << log;
+  struct stat st;
+  EXPECT_NE(stat((out2 + "/results.csv").c_str(), &st), 0);
+}
+#endif
+
+// A fixed parameter may stand in `order` (it does not vary).
+TEST(SweepFile, FixedValueInOrderIsAccepted) {
+  const SweepSpec spec = load(writeTemp("fixed_order.yaml",
+      "sweep:\n  parameters:\n    kp: {from: 0.1, to: 0.5, count: 3}\n    kd: {from: 0.2, to: 0.8, count: 2}\n"
+      "    delay: 600\n  order: [kp, kd, delay]\n"));
+  EXPECT_EQ(spec.size(), 6);
+  EXPECT_EQ(spec.max_delay, 600);
+}
+
+TEST(RecentRate, FollowsTheRecentThroughput) {
+  RecentRate r(10.0);
+  double rate = 0;
+  for (int t = 1; t <= 30; ++t) rate = r.add(t, 100L * t);  // 100 per s
+  EXPECT_DOUBLE_EQ(rate, 100.0);
+  long done = 3000;
+  for (int t = 31; t <= 60; ++t) rate = r.add(t, done += 200);  // twice as fast later
+  EXPECT_DOUBLE_EQ(rate, 200.0);  // the whole-run average would say 150
 }
