@@ -38,8 +38,9 @@ print("demo: %s delay %d samples (%.3f s), Kp %g Kd %g" % (m["namespace"], m["de
 print("demo: IAE %.4f  ITAE %.4f  IASC %.4f  max error %.3f m  final error %.4f m" % (
     m["iae"], m["itae"], m["iasc"], m["max_position_error_m"], m["final_position_error_m"]))
 for s in m["segments"]:
-    st = "%.2f s" % s["settling_time_s"] if s["settling_time_s"] is not None else "not settled"
-    print("demo:   waypoint %d: settling %s, overshoot %.1f %%, closest %.3f m" % (
+    st = ("settled after %.2f s" % s["settling_time_s"] if s["settling_time_s"] is not None
+          else "not settled (still swinging %.3f m at the end)" % s["final_swing_m"])
+    print("demo:   waypoint %d: %s, overshoot %.1f %%, closest %.3f m" % (
         s["waypoint_index"] + 1, st, s["overshoot_percent"], s["closest_approach_m"]))
 PY
 echo "demo: report in $OUT/report/report.md"
