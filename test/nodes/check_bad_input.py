@@ -1,6 +1,8 @@
 #!/usr/bin/python3
 """NaN/Inf commands are rejected (hover, logged once per burst); big ones are clamped."""
 import math
+import os
+import sys
 import time
 import unittest
 
@@ -10,7 +12,10 @@ from aurora_msgs.msg import DroneState
 from geometry_msgs.msg import Twist
 from rosgraph_msgs.msg import Log
 
-from ros_links import wait_linked
+# The shared helpers sit beside this script (catkin's devel-space relay runs
+# it with __file__ set to this path; an install puts them beside it too).
+sys.path.insert(0, os.path.dirname(os.path.realpath(__file__)))
+from ros_links import wait_linked  # noqa: E402
 
 
 class BadInputTest(unittest.TestCase):

@@ -1,13 +1,17 @@
 #!/usr/bin/python3
 """A bag recorded through sim.launch holds state, cmd_vel, control and tf."""
 import os
+import sys
 import unittest
 
 import rosbag
 import rospy
 import rostest
 
-from bag_helpers import record_until
+# The shared helpers sit beside this script (catkin's devel-space relay runs
+# it with __file__ set to this path; an install puts them beside it too).
+sys.path.insert(0, os.path.dirname(os.path.realpath(__file__)))
+from bag_helpers import record_until  # noqa: E402
 
 
 class BagTest(unittest.TestCase):

@@ -1,5 +1,7 @@
 #!/usr/bin/python3
 """Take-off and land reach a driver that subscribes late and drops the first of each."""
+import os
+import sys
 import threading
 import unittest
 
@@ -8,7 +10,10 @@ import rostest
 from aurora_msgs.msg import Control
 from std_msgs.msg import String
 
-from flight_checks import wait_for
+# The shared helpers sit beside this script (catkin's devel-space relay runs
+# it with __file__ set to this path; an install puts them beside it too).
+sys.path.insert(0, os.path.dirname(os.path.realpath(__file__)))
+from flight_checks import wait_for  # noqa: E402
 
 
 def counts(text):

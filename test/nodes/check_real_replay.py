@@ -4,6 +4,7 @@ a hover while the poses stop, the landing; every command reproduced."""
 import glob
 import os
 import subprocess
+import sys
 import threading
 import time
 import unittest
@@ -15,7 +16,10 @@ from aurora_msgs.msg import Control
 from sensor_msgs.msg import Joy
 from std_msgs.msg import Float64
 
-from flight_checks import joy_msg, wait_for
+# The shared helpers sit beside this script (catkin's devel-space relay runs
+# it with __file__ set to this path; an install puts them beside it too).
+sys.path.insert(0, os.path.dirname(os.path.realpath(__file__)))
+from flight_checks import joy_msg, wait_for  # noqa: E402
 
 
 class RealReplayTest(unittest.TestCase):

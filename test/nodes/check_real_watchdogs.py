@@ -1,5 +1,7 @@
 #!/usr/bin/python3
 """Joystick override and mocap watchdogs through real.launch against the fake driver."""
+import os
+import sys
 import threading
 import time
 import unittest
@@ -11,7 +13,10 @@ from geometry_msgs.msg import Twist
 from sensor_msgs.msg import Joy
 from std_msgs.msg import Empty, Float64
 
-from flight_checks import joy_msg, wait_for
+# The shared helpers sit beside this script (catkin's devel-space relay runs
+# it with __file__ set to this path; an install puts them beside it too).
+sys.path.insert(0, os.path.dirname(os.path.realpath(__file__)))
+from flight_checks import joy_msg, wait_for  # noqa: E402
 
 CYCLE = 1.0 / 30.0
 

@@ -4,13 +4,17 @@ command; the report names the law and measures tracking per lap."""
 import json
 import os
 import subprocess
+import sys
 import tempfile
 import unittest
 
 import rospy
 import rostest
 
-from bag_helpers import record_until
+# The shared helpers sit beside this script (catkin's devel-space relay runs
+# it with __file__ set to this path; an install puts them beside it too).
+sys.path.insert(0, os.path.dirname(os.path.realpath(__file__)))
+from bag_helpers import record_until  # noqa: E402
 
 
 def run(cmd):
