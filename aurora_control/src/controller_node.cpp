@@ -26,8 +26,6 @@ using aurora_sim::requireParam;
 
 ControllerNode::ControllerNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
     : nh_(nh), pnh_(private_nh), reconfigure_(config_mutex_, private_nh) {
-  // The controller needs only Ts of the vehicle; it is read with the same
-  // range rules as the sim's.
   // The vehicle, with the same range rules as the sim's: Ts for every law,
   // the whole model for the underactuated law, which inverts it.
   const aurora_sim::ArdroneParams<double> vehicle = aurora_sim::loadVehicleParams(nh_, "vehicle");
@@ -117,7 +115,8 @@ void ControllerNode::refuseUnknownTopLevelKeys() {
   std::vector<std::string> accepted{"controller", "task", "safety", "joystick", "mode", "trigger",
                                     "delay", "clamp_commands", "lockstep_subscribers", "kp", "kd",
                                     "delay_samples"};
-  for (int i = 0; i < 2 * kAxes; ++i) accepted.push_back(underactuatedGainName(i));
+  const std::vector<std::string> gains = lawGainNames(LawType::kUnderactuated);
+  accepted.insert(accepted.end(), gains.begin(), gains.end());
   refuseUnknownParams(pnh_, "", accepted, "a typo, or a key of another file");
   refuseUnknownParams(pnh_, "delay", {"samples", "seconds"}, "");
 }

@@ -50,11 +50,7 @@ bool parse(int argc, char** argv, Options& o) {
 }
 
 ControllerSettings loadSettings(const Options& o, const aurora_sim::ArdroneParams<double>& p) {
-  ControllerSettings set;
-  const YAML::Node root = YAML::LoadFile(o.controller);
-  const YamlReader r("controller file '" + o.controller + "': ");
-  r.onlyKeys(root, "", {"controller", "clamp_commands"});
-  readLaw(r, root["controller"], "controller", set);
+  ControllerSettings set = readControllerFile(o.controller).settings;
   set.clamp_commands = !o.no_clamp;
   set.vehicle = p;
   set.Ts = p.Ts;

@@ -88,18 +88,11 @@ struct Overrides {
 };
 
 void loadControllerFile(const std::string& path, Overrides& o) {
-  YAML::Node root;
   try {
-    root = YAML::LoadFile(path);
-  } catch (const YAML::Exception& e) {
-    fail("controller file '" + path + "' cannot be read: " + e.what());
-  }
-  try {
-    const YamlReader r("controller file '" + path + "': ");
-    r.onlyKeys(root, "", {"controller", "clamp_commands"});
-    readLaw(r, root["controller"], "controller", o.law_settings);
+    const ControllerFile f = readControllerFile(path);
+    o.law_settings = f.settings;
     o.law = true;
-    if (root["clamp_commands"]) o.clamp = true, o.clamp_value = r.boolean(root["clamp_commands"], "clamp_commands");
+    if (f.has_clamp) o.clamp = true, o.clamp_value = f.clamp;
   } catch (const ConfigError& e) {
     fail(e.what());
   }

@@ -40,13 +40,14 @@ TEST(FlightEquivalence, RosLoopEqualsTheFlightRunnerBitForBit) {
   ASSERT_GE(flown.size(), static_cast<size_t>(steps + 1)) << "ROS loop did not complete in time";
 
   const auto params = aurora_sim::loadVehicleParams(nh, "vehicle");
-  ControllerSettings set;
-  const YAML::Node controller = fileParam(pnh, "controller_file");
-  readLaw(YamlReader(), controller["controller"], "controller", set);
+  std::string controller_file;
+  ASSERT_TRUE(pnh.getParam("controller_file", controller_file));
+  const ControllerFile controller = readControllerFile(controller_file);
+  ControllerSettings set = controller.settings;
   set.vehicle = params;
   set.Ts = params.Ts;
   set.delay = pnh.param("delay", 0);
-  set.clamp_commands = controller["clamp_commands"] ? controller["clamp_commands"].as<bool>() : true;
+  set.clamp_commands = controller.has_clamp ? controller.clamp : true;
   const Task<double> task = readTask(YamlReader(), fileParam(pnh, "task_file")["task"], "task");
   std::vector<std::vector<double>> offline(1);
   aurora_sim::ArdroneState<double> s0;

@@ -80,11 +80,10 @@ TEST(RealLaunch, MissionCompletesCloseToTheSimulatedRun) {
   // The simulated run: the offline flight runner with the same controller
   // and task files as the launch (either law), delay and clamping.
   const auto params = aurora_sim::loadVehicleParams(nh, "vehicle");
-  ControllerSettings set;
   std::string controller_file, task_file;
   ASSERT_TRUE(pnh.getParam("controller_file", controller_file));
   ASSERT_TRUE(pnh.getParam("task_file", task_file));
-  readLaw(YamlReader(), YAML::LoadFile(controller_file)["controller"], "controller", set);
+  ControllerSettings set = readControllerFile(controller_file).settings;
   set.vehicle = params;
   set.Ts = params.Ts;
   set.delay = pnh.param("delay", 0);

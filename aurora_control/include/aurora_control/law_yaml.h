@@ -32,7 +32,8 @@ inline double& lawGain(ControllerSettings& set, int i) {
 }
 
 inline double lawGain(const ControllerSettings& set, int i) {
-  return lawGain(const_cast<ControllerSettings&>(set), i);
+  if (set.law == LawType::kPdSaturated) return i == 0 ? set.gains.kp : set.gains.kd;
+  return underactuatedGain(set.underactuated, i);
 }
 
 // Reads the mapping under `key` into settings.law and its gains.
@@ -58,6 +59,30 @@ inline void readLaw(const YamlReader& r, const YAML::Node& node, const std::stri
     const YAML::Node v = r.require(node, key, gains[i], "a number in [" + YamlReader::fmt(lo) + ", " + YamlReader::fmt(hi) + "]");
     lawGain(set, static_cast<int>(i)) = r.numberIn(v, r.key(key, gains[i]), lo, hi, "");
   }
+}
+
+// A controller file (config/controllers/*.yaml): 'controller:' (the law and
+// its gains) and an optional 'clamp_commands'. Read by replay, the flight tool
+// and the tests that fly a file's law offline.
+struct ControllerFile {
+  ControllerSettings settings;  // law and gains
+  bool has_clamp = false;       // the file sets clamp_commands
+  bool clamp = true;
+};
+
+inline ControllerFile readControllerFile(const std::string& path) {
+  YAML::Node root;
+  try {
+    root = YAML::LoadFile(path);
+  } catch (const YAML::Exception& e) {
+    throw ConfigError("controller file '" + path + "' cannot be read: " + e.what());
+  }
+  const YamlReader r("controller file '" + path + "': ");
+  r.onlyKeys(root, "", {"controller", "clamp_commands"});
+  ControllerFile f;
+  readLaw(r, root["controller"], "controller", f.settings);
+  if (root["clamp_commands"]) f.has_clamp = true, f.clamp = r.boolean(root["clamp_commands"], "clamp_commands");
+  return f;
 }
 
 }  // namespace aurora_control

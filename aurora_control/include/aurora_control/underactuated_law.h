@@ -246,4 +246,9 @@ T& underactuatedGain(UnderactuatedGains<T>& g, int i) {
   return i % 2 == 0 ? g.k1[i / 2] : g.k2[i / 2];
 }
 
+template <typename T>
+const T& underactuatedGain(const UnderactuatedGains<T>& g, int i) {
+  return i % 2 == 0 ? g.k1[i / 2] : g.k2[i / 2];
+}
+
 }  // namespace aurora_control
