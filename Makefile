@@ -10,7 +10,7 @@ JOBS ?= 2
 ROS_SETUP := $(firstword $(wildcard /opt/ros/noetic/setup.bash))
 SOURCE_ROS := $(if $(ROS_SETUP),source $(ROS_SETUP) &&,)
 
-.PHONY: all deps build test demo bench clean
+.PHONY: all deps build install test demo bench clean
 
 all: build
 
@@ -23,8 +23,14 @@ build: deps
 	mkdir -p $(BUILD)/devel/lib/python3/dist-packages
 	$(SOURCE_ROS) cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release \
 	  -DPYTHON_EXECUTABLE=/usr/bin/python3 -DCATKIN_DEVEL_PREFIX=$(abspath $(BUILD))/devel \
+	  -DCMAKE_INSTALL_PREFIX=$(abspath $(BUILD))/install \
 	  -DCATKIN_ENABLE_TESTING=ON > $(BUILD)/cmake.log 2>&1 || { cat $(BUILD)/cmake.log; exit 1; }
 	$(SOURCE_ROS) $(MAKE) -C $(BUILD) -j$(JOBS) all tests
+
+# The install space (catkin_make's layout): $(BUILD)/install; source its
+# setup.bash to run from there (the install_space rostest does).
+install: build
+	cmake --install $(BUILD)
 
 test: build
 	./scripts/run_tests.sh $(BUILD)

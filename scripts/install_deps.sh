@@ -18,7 +18,7 @@ case "${ID}:${VERSION_ID}" in
           python3-dynamic-reconfigure libdynamic-reconfigure-config-init-mutex-dev
           rviz librosbag-dev librosbag-storage-dev python3-geometry-msgs python3-std-msgs python3-nav-msgs
           python3-rosgraph-msgs python3-tf2-msgs python3-visualization-msgs python3-sensor-msgs
-          python3-rosparam python3-rosnode libangles-dev catkin-lint)
+          python3-rosparam python3-rosnode libangles-dev catkin-lint libroslib-dev python3-roslib)
     ;;
   ubuntu:20.04)
     PKGS=(ros-noetic-ros-base ros-noetic-rostest ros-noetic-rosbag ros-noetic-tf2-ros

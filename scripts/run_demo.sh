@@ -16,15 +16,17 @@ export ROS_MASTER_URI=http://localhost:${DEMO_PORT:-11391}
 
 echo "demo: flying mission4 with a delay of $DELAY samples ($(python3 -c "print(round($DELAY/30, 4))") s), lockstep, recording to $OUT/bags"
 start=$(date +%s.%N)
-roslaunch --wait -p "${DEMO_PORT:-11391}" launch/sim.launch mode:=lockstep task:=mission4 delay:="$DELAY" \
-  record:=true bag_dir:="$PWD/$OUT/bags" bag_name:=demo stop_after:=60 sim_output:=log \
-  > "$OUT/demo_launch.log" 2>&1 &
-launch_pid=$!
-roscore -p "${DEMO_PORT:-11391}" > "$OUT/demo_roscore.log" 2>&1 &
-core_pid=$!
-wait "$launch_pid" || { echo "demo: the launch failed, see $OUT/demo_launch.log" >&2; kill "$core_pid"; exit 1; }
-kill "$core_pid" 2>/dev/null || true
-wait "$core_pid" 2>/dev/null || true
+# aurora_launch (package aurora_bringup): roslaunch that starts its own master
+# on the port, ends quietly when the sim stops at stop_after, and returns
+# non-zero, naming the node, when one fails (plain roslaunch returns 0).
+rosrun aurora_bringup aurora_launch -p "${DEMO_PORT:-11391}" aurora_bringup sim.launch mode:=lockstep \
+  task:=mission4 delay:="$DELAY" record:=true bag_dir:="$PWD/$OUT/bags" bag_name:=demo stop_after:=60 \
+  sim_output:=log > "$OUT/demo_launch.log" 2>&1 || {
+  grep -E "FAILED|FATAL|ERROR" "$OUT/demo_launch.log" >&2
+  echo "demo: the launch failed, see $OUT/demo_launch.log" >&2
+  exit 1
+}
+grep -h "mission complete" "$OUT/demo_launch.log" | sed -E 's/\x1b\[[0-9;]*m//g; s/^.*controller: /demo: controller: /' || true
 end=$(date +%s.%N)
 bag=$(ls -t "$OUT"/bags/demo_*.bag 2>/dev/null | head -1)
 [ -n "$bag" ] || { echo "demo: no bag was written, see $OUT/demo_launch.log" >&2; exit 1; }

@@ -166,7 +166,23 @@ void ControllerNode::onReconfigure(ControllerConfig& config, uint32_t) {
   if (before != after || next.delay != set.delay) {
     ROS_INFO("controller: reconfigured %s, delay %ld samples", after.c_str(), next.delay);
   }
+  if (next.delay != set.delay) announceDelayChange(next.delay);
   set = next;
+}
+
+void ControllerNode::announceDelayChange(long delay) {
+  // The delay rule (docs/delay-and-study.md) sends the current state while
+  // fewer than delay + 1 states are kept: a live raise beyond the history
+  // means no delay at all for a while. Say so now, and again when it holds.
+  const long pending = core_->empty() ? 0 : core_->delayPending(delay);
+  // A raise still waiting stays announced until a delay is in force again.
+  delay_pending_announced_ = delay_pending_announced_ || pending > 0;
+  if (pending > 0) {
+    ROS_WARN("controller: delay raised live to %ld samples (%.3f s) but only %ld states are kept: "
+             "the delay rule sends the current state (NO delay, Control.delay_in_force 0) for the next "
+             "%ld states (%.1f s), until the history holds %ld",
+             delay, delay * Ts_, delay + 1 - pending, pending, pending * Ts_, delay + 1);
+  }
 }
 
 void ControllerNode::onState(const aurora_msgs::DroneState::ConstPtr& msg) {
@@ -191,6 +207,7 @@ void ControllerNode::onState(const aurora_msgs::DroneState::ConstPtr& msg) {
     return;
   }
   if (went_back) {
+    mission_reported_ = false;
     ROS_INFO("controller: state step went back to %ld (source reset): history cleared",
              sample.step);
   }
@@ -288,7 +305,6 @@ void ControllerNode::sendCommand(const double U[4]) {
 
 void ControllerNode::cycle(const ros::Time& now) {
   boost::recursive_mutex::scoped_lock lock(config_mutex_);
-  const ControllerSettings& set = core_->settings;
   const double age = stateAge();
   static const double kNoState[aurora_sim::kStateSize] = {};
   const bool have_state = !core_->empty();
@@ -298,14 +314,7 @@ void ControllerNode::cycle(const ros::Time& now) {
   const FlightDecision decision = supervisor_.update(
       now.toSec(), age, have_state ? newest->X : kNoState, have_state ? newest->step : 0,
       task_time, task_.duration());
-  if (!decision.event.empty()) {
-    const bool safety = decision.event.rfind("hover", 0) == 0 || decision.event.rfind("land (", 0) == 0;
-    if (safety) {
-      ROS_WARN("controller: %s", decision.event.c_str());
-    } else {
-      ROS_INFO("controller: %s", decision.event.c_str());
-    }
-  }
+  logEvent(decision.event);
   if (decision.send_takeoff) {
     land_.cancel();
     takeoff_.request(now.toSec(), have_state ? newest->X[aurora_sim::kZ] : 0.0);
@@ -321,8 +330,10 @@ void ControllerNode::cycle(const ros::Time& now) {
     return;
   }
 
-  if (decision.event == "fly") core_->resetMetrics();  // the task starts now
-  const int wp = task_.activeIndex(task_time);
+  if (decision.event == "fly") {  // the task starts now
+    core_->resetMetrics();
+    mission_reported_ = false;
+  }
   const Reference<double> ref =
       decision.hold ? Core::restingAt(decision.hold_point) : task_.at(task_time);
   ControlOutput out = decision.run_law ? core_->compute(ref) : core_->hover();
@@ -340,19 +351,40 @@ void ControllerNode::cycle(const ros::Time& now) {
   control.header.stamp = now;
   control.header.frame_id = "world";
   control.step = newest->step;
-  control.waypoint_index = wp;
+  control.waypoint_index = task_.activeIndex(task_time);
+  control.task_time = task_time;
+  control.task_duration = task_.duration();
   fillReference(ref, control);
   control.law_ran = decision.run_law;
   control.overridden = joy_.deadman || resume_.active();
-  control.delay_samples = set.delay;
-  control.delay_in_force = static_cast<uint32_t>(out.delay_in_force);
-  control.delay_seconds = set.delay * Ts_;
-  control.sample_time = Ts_;
-  fillLaw(control);
-  control.clamped = set.clamp_commands;
   control.mode = mode;
   control.takeoff_attempts = static_cast<uint32_t>(takeoff_.command().attempts());
   control.land_attempts = static_cast<uint32_t>(land_.command().attempts());
+  fillLaw(control);
+  fillOutput(out, control);
+  sendCommand(out.U);
+  control_pub_.publish(control);
+  reportProgress(out, ref, decision, task_time);
+}
+
+void ControllerNode::logEvent(const std::string& event) const {
+  if (event.empty()) return;
+  const bool safety = event.rfind("hover", 0) == 0 || event.rfind("land (", 0) == 0;
+  if (safety) {
+    ROS_WARN("controller: %s", event.c_str());
+  } else {
+    ROS_INFO("controller: %s", event.c_str());
+  }
+}
+
+void ControllerNode::fillOutput(const ControlOutput& out, aurora_msgs::Control& control) const {
+  const ControllerSettings& set = core_->settings;
+  control.delay_samples = set.delay;
+  control.delay_in_force = static_cast<uint32_t>(out.delay_in_force);
+  control.delay_pending = static_cast<uint32_t>(out.delay_pending);
+  control.delay_seconds = set.delay * Ts_;
+  control.sample_time = Ts_;
+  control.clamped = set.clamp_commands;
   control.state_used.header.stamp.fromNSec(static_cast<uint64_t>(out.used->stamp_ns));
   control.state_used.header.frame_id = state_frame_;
   control.state_used.step = out.used->step;
@@ -367,8 +399,30 @@ void ControllerNode::cycle(const ros::Time& now) {
   control.iae = out.iae;
   control.itae = out.itae;
   control.iasc = out.iasc;
-  sendCommand(out.U);
-  control_pub_.publish(control);
+}
+
+void ControllerNode::reportProgress(const ControlOutput& out, const Reference<double>& ref,
+                                    const FlightDecision& decision, double task_time) {
+  if (delay_pending_announced_ && out.delay_pending == 0 && decision.run_law) {
+    ROS_INFO("controller: the delay of %ld samples is in force again", out.delay_in_force);
+    delay_pending_announced_ = false;
+  }
+  // Once, when the task's time is up (the last step lands on its end).
+  const bool on_task = (decision.run_law && !decision.hold) || decision.event == "land (task complete)";
+  if (mission_reported_ || !on_task || task_time + 0.5 * Ts_ < task_.duration()) return;
+  mission_reported_ = true;
+  // The true final error: the newest state against this step's reference
+  // (out.position_error is the delayed state's, what the law saw).
+  const double* X = core_->newest().X;
+  double e2 = 0.0;
+  for (int i = 0; i < 3; ++i) {
+    const double e = ref.pos[i] - X[aurora_sim::kX + i];
+    e2 += e * e;
+  }
+  ROS_INFO("controller: mission complete: %s task of %.1f s with a delay of %ld samples (%.3f s): "
+           "IAE %.4f m s, ITAE %.4f m s^2, IASC %.4f s, final position error %.4f m",
+           taskTypeName(task_.type), task_.duration(), core_->settings.delay,
+           core_->settings.delay * Ts_, out.iae, out.itae, out.iasc, std::sqrt(e2));
 }
 
 void ControllerNode::fillLaw(aurora_msgs::Control& control) const {

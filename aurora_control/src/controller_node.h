@@ -40,6 +40,13 @@ class ControllerNode {
   void onRateCheck(const ros::WallTimerEvent& event);
   void onReconfigure(ControllerConfig& config, uint32_t level);
   void cycle(const ros::Time& now);
+  void logEvent(const std::string& event) const;
+  void fillOutput(const ControlOutput& out, aurora_msgs::Control& control) const;
+  // Says once when the task's time is up ("mission complete", the headline
+  // metrics) and when a delay raised live is in force again.
+  void reportProgress(const ControlOutput& out, const Reference<double>& ref,
+                      const FlightDecision& decision, double task_time);
+  void announceDelayChange(long delay);
   void sendCommand(const double U[4]);
   void serviceDriverCommands(double now, const double* fresh_X);
   void publishTaskMarkers();
@@ -63,6 +70,8 @@ class ControllerNode {
   std::string state_frame_ = "world";
   ros::Time last_state_time_;      // ROS time the newest fresh state arrived
   bool warned_stale_input_ = false;
+  bool mission_reported_ = false;          // "mission complete" said for this task
+  bool delay_pending_announced_ = false;   // a live delay raise waits for history
 
   bool joystick_enabled_ = false;
   JoystickMapper joystick_;

@@ -16,6 +16,7 @@
 #include "aurora_control/law_yaml.h"
 #include "aurora_control/positioning_study.h"
 #include "aurora_control/task_yaml.h"
+#include "aurora_sim/config_dir.h"
 #include "aurora_sim/vehicle_yaml.h"
 
 namespace po = boost::program_options;
@@ -30,7 +31,7 @@ struct Options {
 };
 
 bool parse(int argc, char** argv, Options& o) {
-  const std::string config = AURORA_CONFIG_DIR;
+  const std::string config = aurora_sim::configDir();  // throws: says what to source
   po::options_description d("usage: flight [options]\n\nFlies one task offline with the controller node's core and prints its tracking error.\n\noptions");
   d.add_options()("help,h", "this text")
       ("controller", po::value(&o.controller)->default_value(config + "/controllers/pd_saturated.yaml"), "controller YAML (law and gains)")

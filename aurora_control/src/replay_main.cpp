@@ -22,6 +22,7 @@
 #include "aurora_control/delayed_controller.h"
 #include "aurora_control/law_yaml.h"
 #include "aurora_control/limits.h"
+#include "aurora_sim/config_dir.h"
 #include "aurora_sim/vehicle_yaml.h"
 #include "aurora_sim/ros_conversions.h"
 
@@ -42,7 +43,7 @@ const char* kUsage =
     "  --controller FILE     controller YAML (config/controllers/*.yaml): law, gains, clamping\n"
     "  --kp X, --kd X        gains of the PD law\n"
     "  --vehicle FILE        vehicle YAML the underactuated law inverts\n"
-    "                        (default: config/vehicles/ardrone2.yaml)\n"
+    "                        (default: vehicles/ardrone2.yaml of the aurora_config package)\n"
     "  --delay N             delay in samples\n"
     "  --delay-seconds S     delay in seconds (rounded to whole samples)\n"
     "  --clamp, --no-clamp   clamp commands to [-1, 1] or not\n"
@@ -125,7 +126,7 @@ Reference<double> recordedReference(const aurora_msgs::Control& c) {
 
 int main(int argc, char** argv) {
   std::string bag_path, ns, out_path;
-  std::string vehicle_path = std::string(AURORA_CONFIG_DIR) + "/vehicles/ardrone2.yaml";
+  std::string vehicle_path;  // default: configDir()/vehicles/ardrone2.yaml
   bool expect_identical = false;
   Overrides o;
   for (int i = 1; i < argc; ++i) {
@@ -234,6 +235,7 @@ int main(int argc, char** argv) {
 
   std::unique_ptr<DelayedController<kCapacity>> core(new DelayedController<kCapacity>());
   try {
+    if (vehicle_path.empty()) vehicle_path = aurora_sim::configDir() + "/vehicles/ardrone2.yaml";
     core->settings.vehicle = aurora_sim::loadVehicleYaml(vehicle_path);
   } catch (const std::runtime_error& e) {
     fail(std::string("--vehicle: ") + e.what());

@@ -47,3 +47,19 @@ TEST(DelayBuffer, ClearRestartsHistory) {
   buffer.push(42);
   EXPECT_EQ(buffer.delayed(3), 42);  // fewer samples than the delay: current state
 }
+
+TEST(DelayBuffer, PendingCountsTheStatesUntilTheDelayIsInForce) {
+  // A delay raised live beyond the history kept is not in force (0) until
+  // d + 1 samples exist: the pending count says how many more are needed.
+  DelayBuffer<long, 64> buffer;
+  for (long k = 1; k <= 10; ++k) buffer.push(k);
+  EXPECT_EQ(buffer.pendingUntilInForce(5), 0);
+  EXPECT_EQ(buffer.delayInForce(5), 5);
+  EXPECT_EQ(buffer.pendingUntilInForce(40), 31);  // raised to 40 with 10 kept
+  EXPECT_EQ(buffer.delayInForce(40), 0);
+  for (long k = 11; k <= 40; ++k) buffer.push(k);
+  EXPECT_EQ(buffer.pendingUntilInForce(40), 1);
+  buffer.push(41);
+  EXPECT_EQ(buffer.pendingUntilInForce(40), 0);
+  EXPECT_EQ(buffer.delayInForce(40), 40);
+}

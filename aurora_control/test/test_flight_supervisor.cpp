@@ -99,3 +99,24 @@ TEST(FlightSupervisor, SimulationDefaultsFlyAtOnceAndNeverLand) {
   EXPECT_FALSE(d.send_land);
   EXPECT_EQ(s.update(0, 100.0, X0, 0, 100, 60).send_land, false);
 }
+
+TEST(FlightSupervisor, NoHoverWarningBeforeTheFirstState) {
+  // Without a flight sequence the supervisor starts in "fly": before the
+  // first state arrives that is a wait, not a stale state (no hover event).
+  for (const double land_after : {0.0, 1.0}) {
+    SafetyConfig c = realFlight();
+    c.flight_sequence = false;
+    c.land_after = land_after;
+    FlightSupervisor s(c);
+    const double inf = std::numeric_limits<double>::infinity();
+    FlightDecision d = s.update(0.0, inf, X0, 0, 0, 60);
+    EXPECT_EQ(d.mode, "wait for state");
+    EXPECT_FALSE(d.send_land);
+    d = s.update(0.9, inf, X0, 0, 0, 60);
+    EXPECT_EQ(d.mode, "wait for state");
+    EXPECT_TRUE(d.event.empty());
+    d = s.update(1.0, 0.0, X0, 1, 0, 60);
+    EXPECT_EQ(d.mode, "fly");
+    EXPECT_TRUE(d.run_law);
+  }
+}

@@ -46,6 +46,11 @@ ArdroneSimNode::ArdroneSimNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
                          "' is invalid: accepted values integers >= 1");
   }
   const double kNoLimit = std::numeric_limits<double>::max();
+  nan_quiet_period_ = rangedParam(pnh_, "nan_burst/quiet_period", 1.0, 0.0, 60.0,
+                                  "s", false);
+  const double summary = rangedParam(pnh_, "nan_burst/summary_period", 5.0, 0.1, 3600.0,
+                                     "s");
+  nan_burst_ = RejectionBurst(nan_quiet_period_, summary);
   stop_after_ = rangedParam(pnh_, "stop_after", 0.0, 0.0, kNoLimit, "s (0 = run until stopped)");
   lockstep_subscribers_ = paramOr(pnh_, "lockstep_subscribers", 1);
   if (lockstep_subscribers_ < 0) {
@@ -105,22 +110,18 @@ ros::Time ArdroneSimNode::lockstepTime() const {
 void ArdroneSimNode::onCmdVel(const geometry_msgs::Twist::ConstPtr& msg) {
   double U[4];
   modelCommandFromTwist(twistCommandFromMsg(*msg), U);
-  const bool valid = allFinite(U, 4);
-  if (!valid) {
-    ++nan_rejected_;
-    if (!in_nan_burst_) {
-      ROS_WARN("ardrone_sim: rejected cmd_vel with NaN/Inf (linear %g %g %g, angular.z %g); "
-               "hovering until a finite command arrives",
-               msg->linear.x, msg->linear.y, msg->linear.z, msg->angular.z);
-      in_nan_burst_ = true;
+  const double t = ros::WallTime::now().toSec();
+  logBurst(nan_burst_.poll(t));
+  if (!allFinite(U, 4)) {
+    const BurstReport started = nan_burst_.rejected(t);
+    if (started.kind == BurstReport::kStarted) {
+      ROS_WARN("ardrone_sim: rejected cmd_vel with NaN/Inf (linear %g %g %g, angular.z %g): the "
+               "drone hovers on each such command; further ones are counted until none for %.1f s",
+               msg->linear.x, msg->linear.y, msg->linear.z, msg->angular.z, nan_quiet_period_);
     }
     for (double& u : command_) u = 0.0;
   } else {
-    if (in_nan_burst_) {
-      ROS_INFO("ardrone_sim: finite cmd_vel again after %lu rejected", nan_rejected_);
-      in_nan_burst_ = false;
-      nan_rejected_ = 0;
-    }
+    nan_burst_.accepted();
     for (int i = 0; i < 4; ++i) command_[i] = clampUnit(U[i]);
   }
   have_command_ = true;
@@ -136,6 +137,16 @@ void ArdroneSimNode::onCmdVel(const geometry_msgs::Twist::ConstPtr& msg) {
     }
     last_step_wall_ = ros::WallTime::now();
     stepAndPublish(lockstepTime(), true);
+  }
+}
+
+void ArdroneSimNode::logBurst(const BurstReport& r) const {
+  if (r.kind == BurstReport::kSummary) {
+    ROS_WARN("ardrone_sim: still rejecting NaN/Inf cmd_vel: %lu rejected (and %lu finite accepted) "
+             "in the last %.1f s", r.rejected, r.accepted, r.span);
+  } else if (r.kind == BurstReport::kEnded) {
+    ROS_INFO("ardrone_sim: no NaN/Inf cmd_vel for %.1f s: the burst ended after %lu rejected (and "
+             "%lu finite accepted) over %.1f s", nan_quiet_period_, r.rejected, r.accepted, r.span);
   }
 }
 
@@ -160,6 +171,7 @@ void ArdroneSimNode::onReset(const std_msgs::Empty::ConstPtr&) {
 }
 
 void ArdroneSimNode::onRealtimeTimer(const ros::TimerEvent& event) {
+  logBurst(nan_burst_.poll(ros::WallTime::now().toSec()));
   const ros::Time now = event.current_real;
   const bool fresh = have_command_ && (now - command_time_).toSec() <= cmd_timeout_;
   stepAndPublish(now, fresh);
@@ -195,10 +207,13 @@ void ArdroneSimNode::onLockstepRetry(const ros::WallTimerEvent&) {
 
 void ArdroneSimNode::stepAndPublish(const ros::Time& now, bool command_fresh) {
   double U[4] = {0.0, 0.0, 0.0, 0.0};  // hover
+  // Landed, the drone rests (no model step) but time goes on: each state is
+  // a new sample (a new step), so a listener sees a live source, not
+  // re-sends, and a lockstep run still reaches stop_after.
+  const bool resting = flight_ == Flight::kLanded;
   switch (flight_) {
     case Flight::kLanded:
-      publishState(mode_ == Mode::kLockstep ? lockstepTime() : now);
-      return;
+      break;
     case Flight::kTakingOff:
       U[kUClimb] = kTakeoffClimb;
       if (model_.X[kZ] >= takeoff_altitude_) flight_ = Flight::kFlying;
@@ -212,7 +227,7 @@ void ArdroneSimNode::stepAndPublish(const ros::Time& now, bool command_fresh) {
       }
       break;
   }
-  ardroneStep(params_, model_, U, Disturbance<double>::zero());
+  if (!resting) ardroneStep(params_, model_, U, Disturbance<double>::zero());
   ++step_;
   // The ground holds the drone while its rotors spin up or it touches down.
   // (In flight there is no ground, as in the study's model, so a flight

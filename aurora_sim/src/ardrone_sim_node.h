@@ -12,6 +12,7 @@
 #include <string>
 
 #include "aurora_sim/ardrone_model.h"
+#include "aurora_sim/rejection_burst.h"
 
 namespace aurora_sim {
 
@@ -28,6 +29,7 @@ class ArdroneSimNode {
   void onTakeoff(const std_msgs::Empty::ConstPtr&);
   void onLand(const std_msgs::Empty::ConstPtr&);
   void onReset(const std_msgs::Empty::ConstPtr&);
+  void logBurst(const BurstReport& r) const;
   void onRealtimeTimer(const ros::TimerEvent&);
   void onLockstepRetry(const ros::WallTimerEvent&);
 
@@ -57,8 +59,8 @@ class ArdroneSimNode {
   double command_[4] = {0, 0, 0, 0};  // last valid user command, model order, clamped
   ros::Time command_time_;
   bool have_command_ = false;
-  bool in_nan_burst_ = false;
-  unsigned long nan_rejected_ = 0;
+  RejectionBurst nan_burst_;   // NaN/Inf cmd_vel: one warning per burst, summaries
+  double nan_quiet_period_ = 1.0;
 
   ros::Publisher state_pub_, odom_pub_, path_pub_, clock_pub_;
   ros::Subscriber cmd_sub_, takeoff_sub_, land_sub_, reset_sub_;

@@ -14,6 +14,7 @@
 #include <string>
 #include <thread>
 
+#include "aurora_sim/config_dir.h"
 #include "aurora_sweep/backends.h"
 #include "aurora_sweep/cuda_backend.h"
 #include "aurora_sweep/recent_rate.h"
@@ -40,7 +41,8 @@ const char* kUsage =
     "  --precision P        double or float (default: the sweep file's, else double)\n"
     "  --threads N          cpu backend threads (default: all cores)\n"
     "  --block-size N       cuda threads per block (default: chosen by occupancy)\n"
-    "  --config-dir DIR     where vehicle files are looked up (default: the package's config/)\n"
+    "  --config-dir DIR     where vehicle files are looked up (default: $AURORA_CONFIG_DIR, else\n"
+    "                       the aurora_config package on the ROS package path)\n"
     "  --no-plots           skip the PNG plots\n"
     "  --rviz               publish the feasible set as a latched MarkerArray\n"
     "                       (/sweep/feasible, frame 'sweep') and keep running until Ctrl-C\n"
@@ -48,11 +50,21 @@ const char* kUsage =
     "  -h, --help           this text\n";
 
 struct Options {
-  std::string config, out, backend = "auto", precision, config_dir = AURORA_CONFIG_DIR;
+  std::string config, out, backend = "auto", precision, config_dir;  // empty: configDir()
   int threads = 0;
   int block_size = 0;
   bool plots = true, rviz = false, quiet = false;
 };
+
+// plot_sweep is installed beside this program (devel space: catkin's relay;
+// install space: the script), so it is found without a source path.
+std::string besideThisProgram(const std::string& name) {
+  char self[4096];
+  const ssize_t n = readlink("/proc/self/exe", self, sizeof self - 1);
+  if (n <= 0) return name;  // let the shell look it up on PATH
+  std::string dir(self, static_cast<size_t>(n));
+  return dir.substr(0, dir.rfind('/') + 1) + name;
+}
 
 [[noreturn]] void usageError(const std::string& msg) {
   std::fprintf(stderr, "sweep: %s\n\n%s", msg.c_str(), kUsage);
@@ -183,8 +195,8 @@ int main(int argc, char** argv) {
   const Options opt = parse(argc, argv);
   SweepSpec spec;
   try {
-    spec = loadSweepFile(opt.config, opt.config_dir);
-  } catch (const SweepFileError& e) {
+    spec = loadSweepFile(opt.config, opt.config_dir.empty() ? aurora_sim::configDir() : opt.config_dir);
+  } catch (const std::exception& e) {
     std::fprintf(stderr, "sweep: %s\n", e.what());
     return 2;
   }
@@ -271,7 +283,7 @@ int main(int argc, char** argv) {
               precisionName(spec.precision));
   std::fflush(stdout);
   if (opt.plots) {
-    const std::string cmd = "\"" + std::string(AURORA_SWEEP_PLOT) + "\" \"" + opt.out + "\"";
+    const std::string cmd = "\"" + besideThisProgram("plot_sweep") + "\" \"" + opt.out + "\"";
     if (std::system(cmd.c_str()) != 0) {
       std::fprintf(stderr, "sweep: plotting failed (results.csv and summary.json are written)\n");
       return 6;

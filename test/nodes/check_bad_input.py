@@ -23,6 +23,8 @@ class BadInputTest(unittest.TestCase):
     def setUpClass(cls):
         cls.states = []
         cls.warnings = []
+        cls.summaries = []
+        cls.ends = []
         rospy.Subscriber("state", DroneState, lambda m: cls.states.append(m), queue_size=1000)
         rosout = rospy.Subscriber("/rosout", Log, cls.on_log, queue_size=1000)
         cls.pub = rospy.Publisher("cmd_vel", Twist, queue_size=10)
@@ -36,8 +38,13 @@ class BadInputTest(unittest.TestCase):
 
     @classmethod
     def on_log(cls, msg):
-        if msg.level >= Log.WARN and "NaN/Inf" in msg.msg:
+        # Burst starts (the one warning), summaries while a burst lasts, ends.
+        if "rejected cmd_vel with NaN/Inf" in msg.msg and msg.level >= Log.WARN:
             cls.warnings.append(msg)
+        elif "still rejecting NaN/Inf" in msg.msg:
+            cls.summaries.append(msg)
+        elif "the burst ended after" in msg.msg:
+            cls.ends.append(msg)
 
     def send_for(self, twist, seconds):
         end = time.time() + seconds
@@ -75,13 +82,41 @@ class BadInputTest(unittest.TestCase):
                          "expected one warning for the burst, got %d" % len(self.warnings))
 
     def test_2_a_new_burst_warns_again(self):
-        self.send_for(Twist(), 0.3)  # finite command ends the burst
+        # A burst ends after nan_burst/quiet_period (1 s) without a NaN.
+        self.send_for(Twist(), 1.5)
+        self.assertTrue(self.wait_for(lambda: len(self.ends) >= 1, 2.0), "the first burst never ended")
         t = Twist()
         t.linear.y = float("nan")
         self.send_for(t, 0.3)
         self.assertTrue(self.wait_for(lambda: len(self.warnings) >= 2, 5.0), "no warning for the new burst")
         time.sleep(0.3)  # nothing more may come
         self.assertEqual(len(self.warnings), 2)
+
+    def test_2b_valid_commands_in_between_do_not_end_a_burst(self):
+        # A NaN publisher beside a controller still publishing valid commands:
+        # one warning, summaries every nan_burst/summary_period (1 s here),
+        # one end line once the NaNs stop (the old rule logged ~100 of each).
+        self.send_for(Twist(), 1.5)
+        warned, summarized = len(self.warnings), len(self.summaries)
+        ended = len(self.ends)
+        bad = Twist()
+        bad.angular.z = float("nan")
+        end = time.time() + 3.4
+        while time.time() < end:
+            self.pub.publish(bad)
+            time.sleep(1.0 / 60.0)
+            self.pub.publish(Twist())
+            time.sleep(1.0 / 60.0)
+        self.send_for(Twist(), 1.5)
+        self.assertTrue(self.wait_for(lambda: len(self.ends) > ended, 2.0), "the burst never ended")
+        self.assertEqual(len(self.warnings) - warned, 1, "expected one warning for the whole burst")
+        summaries = self.summaries[summarized:]
+        # one per second of NaNs (3.4 s), maybe one more in the quiet second after
+        self.assertIn(len(summaries), (3, 4), [m.msg for m in summaries])
+        end_line = self.ends[-1].msg
+        rejected = int(end_line.split("after ")[1].split(" rejected")[0])
+        self.assertGreater(rejected, 60, end_line)  # ~100 NaN commands in 3.4 s, all counted
+        self.assertLess(rejected, 120, end_line)
 
     def test_3_out_of_range_is_clamped(self):
         start = len(self.states)

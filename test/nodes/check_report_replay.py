@@ -69,6 +69,13 @@ class ReportReplayTest(unittest.TestCase):
         md = open(os.path.join(out, "report.md")).read()
         self.assertIn("ardrone1_route3d.png", md)
         self.assertIn("IAE", md)
+        # 20 s of the 60 s mission were recorded: the report says so.
+        self.assertFalse(m["task_complete"])
+        self.assertEqual(m["task_duration_s"], 60.0)
+        recorded = m["task_time_recorded_s"][1] - m["task_time_recorded_s"][0]
+        self.assertAlmostEqual(recorded, m["duration_s"], places=6)
+        self.assertIn("TRUNCATED: only %.1f s of the 60.0 s task were recorded" % recorded, md)
+        self.assertIn("warning: TRUNCATED", log)
 
     def test_2_replay_same_configuration_is_identical(self):
         rc, log = run(["rosrun", "aurora_control", "replay", self.bag, "--expect-identical"])

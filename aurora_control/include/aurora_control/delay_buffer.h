@@ -47,6 +47,11 @@ class DelayBuffer {
   // history exist, 0 before (the spec's "otherwise the current state").
   AURORA_HD long delayInForce(long d) const { return count_ > d ? d : 0; }
 
+  // Further samples needed before a delay of d is in force (0 once it is):
+  // the same rule, counted forward. Raising d live beyond the history kept
+  // makes this positive again, and the delay in force drops to 0 until then.
+  AURORA_HD long pendingUntilInForce(long d) const { return count_ > d ? 0 : d + 1 - count_; }
+
  private:
   Sample ring_[Capacity];
   long count_;

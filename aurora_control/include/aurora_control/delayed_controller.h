@@ -44,6 +44,7 @@ struct ControlOutput {
   double position_error[3] = {0, 0, 0};  // desired - used position [m]
   const StateSample* used = nullptr;     // the (delayed) state the law used
   long delay_in_force = 0;               // samples between the newest state and `used`
+  long delay_pending = 0;                // further states before settings.delay is in force
   double iae = 0, itae = 0, iasc = 0;    // running metrics after this cycle
 };
 
@@ -82,6 +83,8 @@ class DelayedController {
   }
 
   bool empty() const { return history_.size() == 0; }
+  // Further states before a delay of d samples is in force (0 once it is).
+  long delayPending(long d) const { return history_.pendingUntilInForce(d); }
   const StateSample& newest() const { return history_.delayed(0); }
 
   // One cycle of the law towards a point at rest (positioning). Requires !empty().
@@ -95,6 +98,7 @@ class DelayedController {
     const StateSample& used = history_.delayed(settings.delay);
     out.used = &used;
     out.delay_in_force = history_.delayInForce(settings.delay);
+    out.delay_pending = history_.pendingUntilInForce(settings.delay);
     const double pos[3] = {used.X[aurora_sim::kX], used.X[aurora_sim::kY], used.X[aurora_sim::kZ]};
     const double vel[3] = {used.X[aurora_sim::kVx], used.X[aurora_sim::kVy], used.X[aurora_sim::kVz]};
     if (settings.law == LawType::kPdSaturated) {

@@ -99,6 +99,9 @@ class FlightSupervisor {
         }
         return finish(d, "takeoff");
       case FlightPhase::kFly:
+        // No state yet: nothing has gone stale (a warning here would come
+        // before the first state could arrive).
+        if (!have_state) return finish(d, "wait for state");
         if (staleLand(d, state_age)) return d;
         if (state_age > cfg_.hover_after) {
           return finish(d, "hover (no fresh state for " + seconds(cfg_.hover_after) + ")");

@@ -1,0 +1,90 @@
+#!/usr/bin/python3
+"""Live delay raise beyond the history; the controller after a landing."""
+import os
+import sys
+import time
+import unittest
+
+import dynamic_reconfigure.client
+import rospy
+import rostest
+from aurora_msgs.msg import Control, DroneState
+from rosgraph_msgs.msg import Log
+from std_msgs.msg import Empty
+
+sys.path.insert(0, os.path.dirname(os.path.realpath(__file__)))
+from ros_links import wait_linked  # noqa: E402
+
+
+class LiveChangesTest(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.controls, cls.states, cls.logs = [], [], []
+        rospy.Subscriber("control", Control, cls.controls.append, queue_size=1000)
+        rospy.Subscriber("state", DroneState, cls.states.append, queue_size=1000)
+        rosout = rospy.Subscriber("/rosout", Log, cls.logs.append, queue_size=1000)
+        cls.rosout_linked = wait_linked(rosout, rospy.get_namespace() + "controller")
+        cls.land = rospy.Publisher("land", Empty, queue_size=1, latch=True)
+        cls.reconfigure = dynamic_reconfigure.client.Client("controller", timeout=30)
+
+    def wait_for(self, predicate, timeout):
+        end = time.time() + timeout
+        while not predicate() and time.time() < end:
+            time.sleep(0.02)
+        return predicate()
+
+    def controller_logs(self, text, since=0):
+        return [m for m in self.logs[since:] if m.name.endswith("/controller") and text in m.msg]
+
+    def test_1_delay_raised_beyond_the_history_is_said(self):
+        self.assertTrue(self.rosout_linked, "/rosout never linked to the controller")
+        self.assertTrue(self.wait_for(lambda: len(self.controls) >= 60, 20), "no control messages")
+        logs_before = len(self.logs)
+        self.reconfigure.update_configuration({"delay_samples": 2047})
+        start = len(self.controls)
+        self.assertTrue(self.wait_for(lambda: len(self.controls) >= start + 30, 5))
+        raised = [c for c in self.controls[start:] if c.delay_samples == 2047]
+        self.assertGreater(len(raised), 20)
+        for c in raised:
+            self.assertEqual(c.delay_in_force, 0, "step %d" % c.step)
+            self.assertTrue(0 < c.delay_pending < 2048, "step %d: pending %d" % (c.step, c.delay_pending))
+        for a, b in zip(raised, raised[1:]):  # one state fewer to wait for per new state
+            self.assertEqual(a.delay_pending - b.delay_pending, b.step - a.step)
+        self.assertTrue(self.wait_for(lambda: self.controller_logs("delay raised live to 2047", logs_before), 3),
+                        "no warning at the change")
+        warning = self.controller_logs("delay raised live to 2047", logs_before)[0]
+        self.assertEqual(warning.level, Log.WARN)
+        self.assertIn("NO delay", warning.msg)
+        kept = int(warning.msg.split("only ")[1].split(" states")[0])
+        # the history held `kept` states at the change; 2048 are needed
+        self.assertIn(2048 - kept - raised[0].delay_pending, (0, 1, 2), warning.msg)
+
+        # back to a delay the history covers: in force at once, and said so
+        self.reconfigure.update_configuration({"delay_samples": 10})
+        start = len(self.controls)
+        self.assertTrue(self.wait_for(lambda: len(self.controls) >= start + 30, 5))
+        lowered = [c for c in self.controls[start:] if c.delay_samples == 10]
+        self.assertTrue(lowered)
+        for c in lowered:
+            self.assertEqual((c.delay_in_force, c.delay_pending), (10, 0))
+        self.assertTrue(self.wait_for(lambda: self.controller_logs("in force again", logs_before), 3))
+
+    def test_2_a_landed_drone_is_still_a_fresh_source(self):
+        self.land.publish(Empty())
+        self.assertTrue(self.wait_for(lambda: self.states and self.states[-1].position.z < 0.05, 30),
+                        "the sim never landed")
+        landed_at = len(self.controls)
+        landed_state = len(self.states)
+        time.sleep(1.5)  # three times hover_after (0.5 s)
+        after = self.controls[landed_at:]
+        self.assertGreater(len(after), 30, "the controller stopped publishing after the landing")
+        steps = [s.step for s in self.states[landed_state:]]
+        self.assertEqual(steps, sorted(set(steps)), "landed states must still be new samples")
+        stale = [c.mode for c in after if "no fresh state" in c.mode]
+        self.assertEqual(stale, [], "hover on a landed drone whose states still arrive")
+        self.assertEqual(self.controller_logs("no fresh state"), [])
+
+
+if __name__ == "__main__":
+    rospy.init_node("check_live_changes")
+    rostest.rosrun("aurora_tests", "live_changes", LiveChangesTest)
