@@ -9,6 +9,8 @@
 set -eo pipefail
 BUILD=${1:-build}
 SWEEP=${2:-config/sweeps/positioning_delay.yaml}
+[ -f /opt/ros/noetic/setup.bash ] && source /opt/ros/noetic/setup.bash
+source "$BUILD/devel/setup.bash"  # the sweep finds aurora_config through the package path
 BIN=$BUILD/devel/lib/aurora_sweep/sweep
 OUT=$(mktemp -d /tmp/aurora_sweep_bench.XXXXXX)
 export PATH=/usr/bin:/bin:$PATH

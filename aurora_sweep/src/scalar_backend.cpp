@@ -16,21 +16,17 @@ void runScalarWith(const SweepSpec& spec, std::vector<SimResult>& out, Progress&
   }
 }
 
-template <typename T>
-void runScalarPrecision(const SweepSpec& spec, std::vector<SimResult>& out, Progress& progress) {
-  if (spec.max_delay < 64) return runScalarWith<T, 64>(spec, out, progress);
-  if (spec.max_delay < 512) return runScalarWith<T, 512>(spec, out, progress);
-  return runScalarWith<T, aurora_control::kDelayHistory>(spec, out, progress);
-}
-
 }  // namespace
 
 void runScalar(const SweepSpec& spec, std::vector<SimResult>& out, Progress& progress) {
-  if (spec.precision == Precision::kDouble) {
-    runScalarPrecision<double>(spec, out, progress);
-  } else {
-    runScalarPrecision<float>(spec, out, progress);
-  }
+  aurora_control::withHistoryCapacity(spec.max_delay, [&](auto capacity) {
+    constexpr int kCapacity = decltype(capacity)::value;
+    if (spec.precision == Precision::kDouble) {
+      runScalarWith<double, kCapacity>(spec, out, progress);
+    } else {
+      runScalarWith<float, kCapacity>(spec, out, progress);
+    }
+  });
 }
 
 }  // namespace aurora_sweep

@@ -47,7 +47,10 @@ const char* kUsage =
     "  --rviz               publish the feasible set as a latched MarkerArray\n"
     "                       (/sweep/feasible, frame 'sweep') and keep running until Ctrl-C\n"
     "  --quiet              no progress on stderr\n"
-    "  -h, --help           this text\n";
+    "  -h, --help           this text\n"
+    "\n"
+    "The cpu backend picks at run time the widest SIMD build this CPU runs;\n"
+    "AURORA_SWEEP_SIMD=avx512|avx2|sse4_2|none forces one (none: no SIMD lanes).\n";
 
 struct Options {
   std::string config, out, backend = "auto", precision, config_dir;  // empty: configDir()
@@ -228,6 +231,14 @@ int main(int argc, char** argv) {
       info.note = "auto: no usable CUDA device (" + dev.error + "), using the cpu backend";
     }
     if (opt.backend == "auto") std::fprintf(stderr, "sweep: %s\n", info.note.c_str());
+  }
+  if (backend == "cpu") {
+    try {
+      cpuBatchArch(spec.precision);  // an AURORA_SWEEP_SIMD this CPU cannot run is refused here
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "sweep: %s\n", e.what());
+      return 2;
+    }
   }
   info.backend = backend;
   makeWritableDir(opt.out);

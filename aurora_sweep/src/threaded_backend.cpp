@@ -1,13 +1,15 @@
-// The `cpu` backend where xsimd 8 is not available (Ubuntu 20.04 ships
-// xsimd 7): the same per-simulation body as the scalar backend
-// (simulateCombination) on every core, one simulation per thread at a time.
-// Slower than the SIMD engine (batch_backend.cpp), same results.
+// The `cpu` backend without SIMD lanes: where xsimd 8 is not available
+// (Ubuntu 20.04 ships xsimd 7), on a CPU none of the engine builds runs, or
+// with AURORA_SWEEP_SIMD=none. The same per-simulation body as the scalar
+// backend (simulateCombination) on every core, one simulation per thread at
+// a time. Slower than the SIMD engine (batch_engine.h), same results.
 #include <algorithm>
 #include <atomic>
 #include <thread>
 #include <vector>
 
 #include "aurora_sweep/backends.h"
+#include "batch_isa.h"
 
 namespace aurora_sweep {
 
@@ -32,26 +34,19 @@ void runThreaded(const SweepSpec& spec, int threads, std::vector<SimResult>& out
   for (auto& th : pool) th.join();
 }
 
-template <typename T>
-void runPrecision(const SweepSpec& spec, int threads, std::vector<SimResult>& out, Progress& progress) {
-  if (spec.max_delay < 64) return runThreaded<T, 64>(spec, threads, out, progress);
-  if (spec.max_delay < 512) return runThreaded<T, 512>(spec, threads, out, progress);
-  return runThreaded<T, aurora_control::kDelayHistory>(spec, threads, out, progress);
-}
-
 }  // namespace
 
-void runCpuBatch(const SweepSpec& spec, int threads, std::vector<SimResult>& out, Progress& progress) {
+void runThreadedScalar(const SweepSpec& spec, int threads, std::vector<SimResult>& out,
+                       Progress& progress) {
   threads = std::max(1, threads);
-  if (spec.precision == Precision::kDouble) {
-    runPrecision<double>(spec, threads, out, progress);
-  } else {
-    runPrecision<float>(spec, threads, out, progress);
-  }
+  aurora_control::withHistoryCapacity(spec.max_delay, [&](auto capacity) {
+    constexpr int kCapacity = decltype(capacity)::value;
+    if (spec.precision == Precision::kDouble) {
+      runThreaded<double, kCapacity>(spec, threads, out, progress);
+    } else {
+      runThreaded<float, kCapacity>(spec, threads, out, progress);
+    }
+  });
 }
-
-int cpuBatchLanes(Precision) { return 1; }
-
-std::string cpuBatchArch(Precision) { return "threads without SIMD lanes (xsimd 8 not found)"; }
 
 }  // namespace aurora_sweep

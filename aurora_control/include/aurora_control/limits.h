@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <type_traits>
 
 namespace aurora_control {
 
@@ -10,6 +11,17 @@ namespace aurora_control {
 // kDelayHistory states so the largest delay still finds its sample.
 constexpr long kMaxDelaySamples = 2047;
 constexpr int kDelayHistory = static_cast<int>(kMaxDelaySamples) + 1;
+
+// The history capacities the loops are compiled for: the smallest that holds
+// `max_delay` (a short history keeps a batch of lanes in cache). Calls
+// f(std::integral_constant<int, capacity>()); every runner and sweep backend
+// picks its capacity here.
+template <class F>
+void withHistoryCapacity(long max_delay, F&& f) {
+  if (max_delay < 64) return f(std::integral_constant<int, 64>());
+  if (max_delay < 512) return f(std::integral_constant<int, 512>());
+  return f(std::integral_constant<int, kDelayHistory>());
+}
 
 // Gains of the two laws.
 constexpr double kPdGainMin = 0.0, kPdGainMax = 10.0;

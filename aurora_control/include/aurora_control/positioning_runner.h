@@ -86,9 +86,11 @@ RunnerResult runPositioning(const aurora_sim::ArdroneParams<T>& p, const RunnerC
                                 std::to_string(kMaxRunnerDelay) + "]");
   }
   const long n = studyIterationCount(double(cfg.task.duration), double(p.Ts));
-  if (delay < 64) return runPositioningCore<T, 64>(p, cfg, gains, delay, n, observe);
-  if (delay < 512) return runPositioningCore<T, 512>(p, cfg, gains, delay, n, observe);
-  return runPositioningCore<T, kDelayHistory>(p, cfg, gains, delay, n, observe);
+  RunnerResult result;
+  withHistoryCapacity(delay, [&](auto capacity) {
+    result = runPositioningCore<T, decltype(capacity)::value>(p, cfg, gains, delay, n, observe);
+  });
+  return result;
 }
 
 }  // namespace aurora_control

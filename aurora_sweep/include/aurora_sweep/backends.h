@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "aurora_control/limits.h"
 #include "aurora_sweep/simulation.h"
 #include "aurora_sweep/sweep_spec.h"
 
@@ -28,10 +29,6 @@ SimSetup<T> makeSetup(const SweepSpec& spec) {
   return s;
 }
 
-// History capacities the engines are compiled for; the smallest that holds
-// the sweep's largest delay is used.
-constexpr long kCapacities[] = {64, 512, 4096};
-
 // One simulation at a time on the calling thread: the plain reference loop.
 void runScalar(const SweepSpec& spec, std::vector<SimResult>& out, Progress& progress);
 
@@ -40,8 +37,22 @@ void runScalar(const SweepSpec& spec, std::vector<SimResult>& out, Progress& pro
 void runCpuBatch(const SweepSpec& spec, int threads, std::vector<SimResult>& out,
                  Progress& progress);
 
-// Lanes per SIMD batch the CPU engine uses for this precision (for the summary).
+// Lanes per SIMD batch the CPU engine uses for this precision, and the
+// instruction set chosen at run time (for the summary): the widest this CPU
+// runs among those built (cpu_dispatch.cpp), unless AURORA_SWEEP_SIMD names one.
+// Throws std::runtime_error when AURORA_SWEEP_SIMD names a build that is
+// missing or that this CPU cannot run.
 int cpuBatchLanes(Precision precision);
 std::string cpuBatchArch(Precision precision);
+
+// The engine's builds, widest first ("none": threads without SIMD lanes),
+// and whether this CPU runs each; running a chosen one (tests, benchmarks).
+struct CpuIsa {
+  std::string key, name;
+  bool supported;
+};
+std::vector<CpuIsa> cpuBatchIsas();
+void runCpuBatchOn(const std::string& key, const SweepSpec& spec, int threads,
+                   std::vector<SimResult>& out, Progress& progress);
 
 }  // namespace aurora_sweep

@@ -1,9 +1,17 @@
-// The `cpu` backend: the model and control templates instantiated on xsimd
-// batches, so one instruction stream advances L simulations (one per SIMD
-// lane). Lanes are independent: each has its own combination, iteration
-// count and delay; a lane whose simulation ends (early stop or the last
-// iteration) takes the next combination at once, so early stops keep paying.
-// Compiled with -march=native (CMakeLists) to use the widest vectors.
+// The `cpu` backend's engine: the model and control templates instantiated on
+// xsimd batches of an instruction set `Arch`, so one instruction stream
+// advances L simulations (one per SIMD lane). Lanes are independent: each has
+// its own combination, iteration count and delay; a lane whose simulation
+// ends (early stop or the last iteration) takes the next combination at once,
+// so early stops keep paying.
+//
+// Included only by batch_isa.cpp, which is compiled once per instruction set
+// into its own shared library that exports nothing but its entry points
+// (CMakeLists, batch_isa.map): every inline function and template of this
+// code, the model's and the standard library's, stays inside the library of
+// its instruction set. cpu_dispatch.cpp picks the library at run time.
+#pragma once
+
 #include <xsimd/xsimd.hpp>
 
 namespace xsimd {
@@ -32,24 +40,29 @@ namespace {
 // combinations run for similar lengths).
 constexpr long kChunk = 64;
 
-// Instruction set per precision, measured on the thesis grid (bench/sweep.sh):
-// float runs fastest with 8-lane AVX2 (xsimd's AVX-512 float gathers and
-// masks fall back to element-wise code), double with the widest the machine
-// has (8 lanes with AVX-512).
-template <typename T>
-struct ArchFor {
-  using type = xsimd::default_arch;
-};
-#if defined(__AVX2__) && defined(__FMA__)
+// Per-lane loads at per-lane indices. xsimd 8.1 sends the AVX-512 float
+// gather to its element-wise generic code (over half the engine's time under
+// perf); these overloads issue the gather instructions themselves.
+template <class B, class I>
+inline B gatherLanes(const typename B::value_type* base, const I& index) {
+  return B::gather(base, index);
+}
+#if defined(__AVX512F__)
 template <>
-struct ArchFor<float> {
-  using type = xsimd::fma3<xsimd::avx2>;
-};
+inline xsimd::batch<float, xsimd::avx512bw> gatherLanes(const float* base,
+                                                       const xsimd::batch<int32_t, xsimd::avx512bw>& index) {
+  return _mm512_i32gather_ps(index, base, sizeof(float));
+}
+template <>
+inline xsimd::batch<double, xsimd::avx512bw> gatherLanes(const double* base,
+                                                        const xsimd::batch<int64_t, xsimd::avx512bw>& index) {
+  return _mm512_i64gather_pd(index, base, sizeof(double));
+}
 #endif
 
-template <typename T>
+template <typename T, class A>
 struct Lanes {
-  using Arch = typename ArchFor<T>::type;
+  using Arch = A;
   using B = xsimd::batch<T, Arch>;
   using M = xsimd::batch_bool<T, Arch>;
   static constexpr int L = static_cast<int>(B::size);
@@ -80,10 +93,10 @@ struct Lanes {
   }
 };
 
-template <typename T, int Capacity>
+template <typename T, class Arch, int Capacity>
 class BatchWorker {
  public:
-  using LaneOps = Lanes<T>;
+  using LaneOps = Lanes<T, Arch>;
   using B = typename LaneOps::B;
   using M = typename LaneOps::M;
   static constexpr int L = LaneOps::L;
@@ -203,8 +216,8 @@ class BatchWorker {
     const I read_base = ((start_ + index - one) & mask) * I(Int(6 * L)) + lane_;
     aurora_control::PosVel<B> xc;
     for (int j = 0; j < 3; ++j) {
-      xc.pos[j] = B::gather(history_.data(), read_base + I(Int(j * L)));
-      xc.vel[j] = B::gather(history_.data(), read_base + I(Int((3 + j) * L)));
+      xc.pos[j] = gatherLanes<B>(history_.data(), read_base + I(Int(j * L)));
+      xc.vel[j] = gatherLanes<B>(history_.data(), read_base + I(Int((3 + j) * L)));
     }
     // Steps 2-5, the shared iteration.
     const aurora_control::PdGains<B> gains{kp_, kd_};
@@ -258,44 +271,38 @@ class BatchWorker {
   long step_ = 0;        // batch steps done: the ring slot written last
 };
 
-template <typename T, int Capacity>
+template <typename T, class Arch, int Capacity>
 void runBatchWith(const SweepSpec& spec, int threads, std::vector<SimResult>& out,
                   Progress& progress) {
   out.resize(spec.size());
   std::atomic<long> next{0};
   std::vector<std::thread> pool;
   for (int t = 0; t < threads; ++t) {
-    pool.emplace_back([&] { BatchWorker<T, Capacity>(spec, out, next, progress).run(); });
+    pool.emplace_back([&] { BatchWorker<T, Arch, Capacity>(spec, out, next, progress).run(); });
   }
   for (auto& th : pool) th.join();
 }
 
-template <typename T>
-void runBatchPrecision(const SweepSpec& spec, int threads, std::vector<SimResult>& out,
-                       Progress& progress) {
-  if (spec.max_delay < 64) return runBatchWith<T, 64>(spec, threads, out, progress);
-  if (spec.max_delay < 512) return runBatchWith<T, 512>(spec, threads, out, progress);
-  return runBatchWith<T, aurora_control::kDelayHistory>(spec, threads, out, progress);
-}
-
 }  // namespace
 
-void runCpuBatch(const SweepSpec& spec, int threads, std::vector<SimResult>& out,
-                 Progress& progress) {
-  threads = std::max(1, threads);
-  if (spec.precision == Precision::kDouble) {
-    runBatchPrecision<double>(spec, threads, out, progress);
-  } else {
-    runBatchPrecision<float>(spec, threads, out, progress);
-  }
+// The whole sweep on `threads` threads with batches of instruction set Arch.
+template <class Arch>
+void runBatchArch(const SweepSpec& spec, int threads, std::vector<SimResult>& out,
+                  Progress& progress) {
+  aurora_control::withHistoryCapacity(spec.max_delay, [&](auto capacity) {
+    constexpr int kCapacity = decltype(capacity)::value;
+    if (spec.precision == Precision::kDouble) {
+      runBatchWith<double, Arch, kCapacity>(spec, threads, out, progress);
+    } else {
+      runBatchWith<float, Arch, kCapacity>(spec, threads, out, progress);
+    }
+  });
 }
 
-int cpuBatchLanes(Precision precision) {
-  return precision == Precision::kDouble ? Lanes<double>::L : Lanes<float>::L;
-}
-
-std::string cpuBatchArch(Precision precision) {
-  return precision == Precision::kDouble ? Lanes<double>::Arch::name() : Lanes<float>::Arch::name();
+template <class Arch>
+int batchLanes(Precision precision) {
+  return precision == Precision::kDouble ? int(xsimd::batch<double, Arch>::size)
+                                         : int(xsimd::batch<float, Arch>::size);
 }
 
 }  // namespace aurora_sweep
