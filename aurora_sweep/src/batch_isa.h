@@ -7,13 +7,17 @@
 
 #include "aurora_sweep/backends.h"
 
-#define AURORA_SWEEP_DECLARE_ISA(ns)                                                       \
-  namespace aurora_sweep {                                                                 \
-  namespace isa_##ns {                                                                     \
-  void run(const SweepSpec& spec, int threads, std::vector<SimResult>& out, Progress& p); \
-  int lanes(Precision precision);                                                          \
-  const char* name();                                                                      \
-  }                                                                                        \
+// The libraries are compiled with hidden visibility (direct calls inside, no
+// interposition): the entry points say they are exported.
+#define AURORA_SWEEP_ISA_API __attribute__((visibility("default")))
+#define AURORA_SWEEP_DECLARE_ISA(ns)                                                  \
+  namespace aurora_sweep {                                                            \
+  namespace isa_##ns {                                                                \
+  AURORA_SWEEP_ISA_API void run(const SweepSpec& spec, int threads,                   \
+                                std::vector<SimResult>& out, Progress& p);            \
+  AURORA_SWEEP_ISA_API int lanes(Precision precision);                                \
+  AURORA_SWEEP_ISA_API const char* name();                                            \
+  }                                                                                   \
   }
 
 AURORA_SWEEP_DECLARE_ISA(sse4_2)
