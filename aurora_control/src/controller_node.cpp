@@ -12,6 +12,7 @@
 #include "aurora_sim/ros_conversions.h"
 #include "aurora_sim/ros_params.h"
 #include "aurora_control/law_yaml.h"
+#include "aurora_control/positioning_study.h"
 #include "controller_params.h"
 #include "param_tree.h"
 #include "task_markers.h"
@@ -61,6 +62,7 @@ ControllerNode::ControllerNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
   lockstep_control_subscribers_ = static_cast<int>(
       rangedParam(pnh_, "lockstep_subscribers/control", 0, 0, 100, "(subscribers of control)"));
   task_ = loadTask(pnh_);
+  refuseDelayBeyondTheTask(set.delay);
   refuseUnknownTopLevelKeys();
   safety_ = loadSafetyConfig(pnh_);
   const SafetyConfig& safety = safety_;
@@ -108,6 +110,14 @@ ControllerNode::ControllerNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
            set.clamp_commands ? "clamped" : "unclamped", mode.c_str(), taskTypeName(task_.type),
            task_.duration(), safety.flight_sequence ? ", flight sequence (take-off, task, landing)" : "",
            joystick_enabled_ ? ", joystick override" : "");
+}
+
+void ControllerNode::refuseDelayBeyondTheTask(long delay) const {
+  const long iterations = studyIterationCount(task_.duration(), Ts_);
+  if (delayShorterThanRun(delay, iterations)) return;
+  const std::string key = pnh_.hasParam("delay/seconds") ? "delay/seconds" : "delay/samples";
+  throw ParameterError("parameter '" + fullKey(pnh_, key) + "' = " +
+                       delayRunText(delay, iterations, Ts_));
 }
 
 void ControllerNode::refuseUnknownTopLevelKeys() {
@@ -161,6 +171,14 @@ void ControllerNode::onReconfigure(ControllerConfig& config, uint32_t) {
   next.gains.kp = config.kp;
   next.gains.kd = config.kd;
   next.delay = config.delay_samples;
+  const long iterations = studyIterationCount(task_.duration(), Ts_);
+  if (!delayShorterThanRun(next.delay, iterations)) {
+    // Refused as at start-up (limits.h); the server shows the delay kept.
+    ROS_ERROR("controller: delay_samples %ld refused: %s; keeping %ld samples", next.delay,
+              delayRunText(next.delay, iterations, Ts_).c_str(), set.delay);
+    next.delay = set.delay;
+    config.delay_samples = static_cast<int>(set.delay);
+  }
   readUnderactuatedGains(config, next.underactuated);
   const std::string before = gainsText(set), after = gainsText(next);
   if (before != after || next.delay != set.delay) {

@@ -53,6 +53,7 @@ class ControllerNode {
   void fillLaw(aurora_msgs::Control& control) const;
   void fillReference(const Reference<double>& ref, aurora_msgs::Control& control) const;
   long readDelaySamples();
+  void refuseDelayBeyondTheTask(long delay) const;  // limits.h: shorter than the run
   void refuseUnknownTopLevelKeys();
   double stateAge() const;
   bool lockstepListenersReady() const;

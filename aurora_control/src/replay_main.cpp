@@ -22,6 +22,7 @@
 #include "aurora_control/delayed_controller.h"
 #include "aurora_control/law_yaml.h"
 #include "aurora_control/limits.h"
+#include "aurora_control/positioning_study.h"
 #include "aurora_sim/config_dir.h"
 #include "aurora_sim/vehicle_yaml.h"
 #include "aurora_sim/ros_conversions.h"
@@ -279,6 +280,13 @@ int main(int argc, char** argv) {
     if (set.delay > kMaxDelaySamples) {
       fail("--delay-seconds " + std::to_string(o.delay_seconds_value) + " is " + std::to_string(set.delay) +
            " samples of " + std::to_string(c.sample_time) + " s: accepted " + delayRangeText());
+    }
+    // The recorded task's length (Control.task_duration) bounds the delay as
+    // in the node and the sweep (limits.h).
+    const long iterations = studyIterationCount(c.task_duration, c.sample_time);
+    if (c.task_duration > 0.0 && !delayShorterThanRun(set.delay, iterations)) {
+      fail(std::string(o.delay ? "--delay" : o.delay_seconds ? "--delay-seconds" : "the recorded delay") +
+           ": " + delayRunText(set.delay, iterations, c.sample_time));
     }
     set.clamp_commands = o.clamp ? o.clamp_value : static_cast<bool>(c.clamped);
     // The law ran when the node says it did; where the joystick replaced

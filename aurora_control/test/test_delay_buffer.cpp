@@ -16,6 +16,7 @@ TEST(DelayBuffer, FollowsTheSpecRule) {
       const long expected = k > d ? k - d : k;
       EXPECT_EQ(buffer.delayed(d), expected) << "k=" << k << " d=" << d;
       EXPECT_EQ(delayedHistoryIndex(k, d), expected);
+      EXPECT_EQ(delayedHistoryIndex(int(k), int(d)), int(expected));
       EXPECT_EQ(buffer.delayInForce(d), k > d ? d : 0);
     }
   }

@@ -206,13 +206,13 @@ class BatchWorker {
   }
 
   void step() {
-    // Loop step 1: the delayed sample of each lane, by the DelayBuffer rule
-    // H(k - d) if k > d else H(k) (k = count), gathered from the ring. All
-    // lanes write at the same slot each step (a plain vector store); lane l's
-    // H(i) sits at slot start_l + i - 1.
+    // Loop step 1: the delayed sample of each lane, by the delay rule
+    // (delay_buffer.h, the same function on integer lanes; k = count),
+    // gathered from the ring. All lanes write at the same slot each step (a
+    // plain vector store); lane l's H(i) sits at slot start_l + i - 1.
     const I one(Int(1));
     const I mask(Int(Capacity - 1));
-    const I index = xsimd::select(count_ > delay_, count_ - delay_, count_);  // 1-based
+    const I index = aurora_control::delayedHistoryIndex(count_, delay_);  // 1-based
     const I read_base = ((start_ + index - one) & mask) * I(Int(6 * L)) + lane_;
     aurora_control::PosVel<B> xc;
     for (int j = 0; j < 3; ++j) {

@@ -137,7 +137,9 @@ aurora_sim::ArdroneParams<double> loadVehicleFile(const std::string& path) {
   }
 }
 
-SweepSpec loadSweepFile(const std::string& path, const std::string& config_dir) {
+namespace {
+
+SweepSpec parseSweepFile(const std::string& path, const std::string& config_dir) {
   Reader r(path);
   YAML::Node root;
   try {
@@ -293,6 +295,19 @@ SweepSpec loadSweepFile(const std::string& path, const std::string& config_dir) 
     if (a.param == kParamDelay) {
       spec.max_delay = static_cast<long>(*std::max_element(a.values.begin(), a.values.end()));
     }
+  }
+  return spec;
+}
+
+}  // namespace
+
+SweepSpec loadSweepFile(const std::string& path, const std::string& config_dir) {
+  SweepSpec spec = parseSweepFile(path, config_dir);
+  const long iterations = aurora_control::studyIterationCount(spec.duration, spec.vehicle.Ts);
+  if (!aurora_control::delayShorterThanRun(spec.max_delay, iterations)) {
+    Reader(path).fail(spec.points.empty() ? "sweep.parameters.delay" : "sweep.points",
+                      "= " + aurora_control::delayRunText(spec.max_delay, iterations,
+                                                                           spec.vehicle.Ts));
   }
   return spec;
 }

@@ -319,7 +319,15 @@ TEST(SweepFileRefusal, DelayLimitIsTheNodes) {
   const std::string msg = refusal("sweep:\n  parameters:\n    kp: 0.5\n    kd: 0.5\n    delay: 3000\n");
   EXPECT_NE(msg.find("[0, " + std::to_string(aurora_control::kMaxDelaySamples) + "]"), std::string::npos) << msg;
   EXPECT_EQ(aurora_control::kMaxDelaySamples, 2047);
-  EXPECT_EQ(refusal("sweep:\n  parameters:\n    kp: 0.5\n    kd: 0.5\n    delay: 2047\n"), "");
+  // The default task is 60 s (1801 iterations): a delay of 1801 would never
+  // take force and is refused naming the key; 1800 is the longest accepted.
+  EXPECT_EQ(refusal("sweep:\n  parameters:\n    kp: 0.5\n    kd: 0.5\n    delay: 1800\n"), "");
+  const std::string beyond = refusal("sweep:\n  parameters:\n    kp: 0.5\n    kd: 0.5\n    delay: 2000\n");
+  EXPECT_NE(beyond.find("'sweep.parameters.delay' = 2000 samples is not shorter than the "
+                        "run's 1801 iterations"), std::string::npos) << beyond;
+  EXPECT_NE(beyond.find("accepted delays up to 1800 samples"), std::string::npos) << beyond;
+  EXPECT_EQ(refusal("sweep:\n  task: {waypoints: [[1, 1, 1]], end_times: [60], duration: 100}\n"
+                    "  parameters:\n    kp: 0.5\n    kd: 0.5\n    delay: 2047\n"), "");
 }
 
 // With early stop a run ends at its first failed check: the checks it had

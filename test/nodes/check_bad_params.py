@@ -41,6 +41,12 @@ class BadParamsTest(unittest.TestCase):
         rc, out = self.controller_case("/bad_delay", lambda p: rospy.set_param(p + "delay/samples", -3))
         self.assert_refused(rc, out, "/bad_delay/controller/delay/samples", "accepted integer samples in [0, 2047]")
 
+    def test_delay_not_shorter_than_the_task(self):
+        # mission4 is 60 s = 1801 iterations: a delay of 2000 would never take force
+        rc, out = self.controller_case("/long_delay", lambda p: rospy.set_param(p + "delay/samples", 2000))
+        self.assert_refused(rc, out, "/long_delay/controller/delay/samples",
+                            "accepted delays up to 1800 samples for this task")
+
     def test_negative_delay_seconds(self):
         rc, out = self.controller_case("/bad_delay_s", lambda p: rospy.set_param(p + "delay/seconds", -0.5))
         self.assert_refused(rc, out, "/bad_delay_s/controller/delay/seconds", "accepted range [0,")

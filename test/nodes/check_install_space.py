@@ -4,21 +4,20 @@ flight tool from the install space alone."""
 import json
 import os
 import shutil
-import socket
 import subprocess
+import sys
 import tempfile
 import unittest
 
 import rospy
 import rostest
 
+# The shared helpers sit beside this script (catkin's relay runs it with
+# __file__ set to this path; an install puts them beside it too).
+sys.path.insert(0, os.path.dirname(os.path.realpath(__file__)))
+from ros_links import free_port  # noqa: E402
+
 NOETIC = "/opt/ros/noetic/setup.bash"
-
-
-def free_port():
-    with socket.socket() as s:
-        s.bind(("localhost", 0))
-        return s.getsockname()[1]
 
 
 class InstallSpaceTest(unittest.TestCase):

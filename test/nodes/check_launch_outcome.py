@@ -1,18 +1,17 @@
 #!/usr/bin/python3
 """aurora_launch's exit status and wording for a normal end and a failed node."""
 import os
-import socket
 import subprocess
+import sys
 import unittest
 
 import rospy
 import rostest
 
-
-def free_port():
-    with socket.socket() as s:
-        s.bind(("localhost", 0))
-        return s.getsockname()[1]
+# The shared helpers sit beside this script (catkin's relay runs it with
+# __file__ set to this path; an install puts them beside it too).
+sys.path.insert(0, os.path.dirname(os.path.realpath(__file__)))
+from ros_links import free_port  # noqa: E402
 
 
 def aurora_launch(*launch_args):

@@ -40,24 +40,26 @@ class LiveChangesTest(unittest.TestCase):
         self.assertTrue(self.rosout_linked, "/rosout never linked to the controller")
         self.assertTrue(self.wait_for(lambda: len(self.controls) >= 60, 20), "no control messages")
         logs_before = len(self.logs)
-        self.reconfigure.update_configuration({"delay_samples": 2047})
+        # 1500 samples (50 s): shorter than mission4's 1801 iterations, longer
+        # than the history kept after a few seconds.
+        self.reconfigure.update_configuration({"delay_samples": 1500})
         start = len(self.controls)
         self.assertTrue(self.wait_for(lambda: len(self.controls) >= start + 30, 5))
-        raised = [c for c in self.controls[start:] if c.delay_samples == 2047]
+        raised = [c for c in self.controls[start:] if c.delay_samples == 1500]
         self.assertGreater(len(raised), 20)
         for c in raised:
             self.assertEqual(c.delay_in_force, 0, "step %d" % c.step)
-            self.assertTrue(0 < c.delay_pending < 2048, "step %d: pending %d" % (c.step, c.delay_pending))
+            self.assertTrue(0 < c.delay_pending < 1501, "step %d: pending %d" % (c.step, c.delay_pending))
         for a, b in zip(raised, raised[1:]):  # one state fewer to wait for per new state
             self.assertEqual(a.delay_pending - b.delay_pending, b.step - a.step)
-        self.assertTrue(self.wait_for(lambda: self.controller_logs("delay raised live to 2047", logs_before), 3),
+        self.assertTrue(self.wait_for(lambda: self.controller_logs("delay raised live to 1500", logs_before), 3),
                         "no warning at the change")
-        warning = self.controller_logs("delay raised live to 2047", logs_before)[0]
+        warning = self.controller_logs("delay raised live to 1500", logs_before)[0]
         self.assertEqual(warning.level, Log.WARN)
         self.assertIn("NO delay", warning.msg)
         kept = int(warning.msg.split("only ")[1].split(" states")[0])
-        # the history held `kept` states at the change; 2048 are needed
-        self.assertIn(2048 - kept - raised[0].delay_pending, (0, 1, 2), warning.msg)
+        # the history held `kept` states at the change; 1501 are needed
+        self.assertIn(1501 - kept - raised[0].delay_pending, (0, 1, 2), warning.msg)
 
         # back to a delay the history covers: in force at once, and said so
         self.reconfigure.update_configuration({"delay_samples": 10})
@@ -68,6 +70,19 @@ class LiveChangesTest(unittest.TestCase):
         for c in lowered:
             self.assertEqual((c.delay_in_force, c.delay_pending), (10, 0))
         self.assertTrue(self.wait_for(lambda: self.controller_logs("in force again", logs_before), 3))
+
+    def test_1b_a_delay_not_shorter_than_the_task_is_refused_live(self):
+        # mission4: 1801 iterations; 2047 would never take force (limits.h)
+        logs_before = len(self.logs)
+        before = self.controls[-1].delay_samples
+        kept = self.reconfigure.update_configuration({"delay_samples": 2047})
+        self.assertEqual(kept["delay_samples"], before, "the server must show the delay kept")
+        start = len(self.controls)
+        self.assertTrue(self.wait_for(lambda: len(self.controls) >= start + 10, 5))
+        self.assertEqual({c.delay_samples for c in self.controls[start:]}, {before})
+        self.assertTrue(self.wait_for(lambda: self.controller_logs("delay_samples 2047 refused", logs_before), 3))
+        self.assertIn("accepted delays up to 1800 samples",
+                      self.controller_logs("delay_samples 2047 refused", logs_before)[0].msg)
 
     def test_2_a_landed_drone_is_still_a_fresh_source(self):
         self.land.publish(Empty())

@@ -93,6 +93,15 @@ class ReportReplayTest(unittest.TestCase):
         rc, _ = run(["rosrun", "aurora_control", "replay", self.bag, "--delay", "2", "--expect-identical"])
         self.assertEqual(rc, 1)
 
+    def test_3b_replay_delay_not_shorter_than_the_task_is_refused(self):
+        # The recorded task (mission4, 60 s = 1801 iterations) bounds the delay
+        # as in the node and the sweep.
+        rc, log = run(["rosrun", "aurora_control", "replay", self.bag, "--delay", "2000"])
+        self.assertEqual(rc, 2, log)
+        self.assertIn("--delay: 2000 samples is not shorter than the run's 1801 iterations", log)
+        rc, log = run(["rosrun", "aurora_control", "replay", self.bag, "--delay", "1800"])
+        self.assertEqual(rc, 0, log)
+
     def test_4_bag_without_control_is_refused(self):
         stripped = os.path.join(self.tmp, "no_control.bag")
         with rosbag.Bag(self.bag) as src, rosbag.Bag(stripped, "w") as dst:

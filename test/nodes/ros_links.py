@@ -1,5 +1,7 @@
 """Waiting for a subscriber's link to one publisher node, instead of sleeping:
-a message published before the link is up is lost, whatever the margin."""
+a message published before the link is up is lost, whatever the margin.
+And a free port for a test's own master."""
+import socket
 import time
 
 import rosgraph
@@ -20,3 +22,10 @@ def wait_linked(subscriber, node, timeout=20.0):
             return True
         time.sleep(0.05)
     return False
+
+
+def free_port():
+    """A TCP port nobody listens on now (for a launch with its own master)."""
+    with socket.socket() as s:
+        s.bind(("localhost", 0))
+        return s.getsockname()[1]

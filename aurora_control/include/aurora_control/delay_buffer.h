@@ -5,13 +5,20 @@
 #pragma once
 
 #include "aurora_sim/host_device.h"
+#include "aurora_sim/scalar_math.h"
 
 namespace aurora_control {
 
 // 1-based index into the history of the sample the controller receives at
 // iteration k with delay d. The one place the rule is written; the ring
-// buffer below and the SIMD/CUDA sweep engines all call it.
-AURORA_HD inline long delayedHistoryIndex(long k, long d) { return k > d ? k - d : k; }
+// buffer below (node, replay, runners, CUDA threads) and the SIMD engine
+// (on integer batches, one k and d per lane: select() is xsimd's there)
+// all call it.
+template <typename Index>
+AURORA_HD inline Index delayedHistoryIndex(const Index& k, const Index& d) {
+  using aurora_sim::select;
+  return select(k > d, k - d, k);
+}
 
 // Fixed-capacity ring of the most recent samples (no allocation after
 // construction, so it runs inside a GPU thread). A delay d needs
@@ -39,7 +46,7 @@ class DelayBuffer {
   // The sample the controller receives with a delay of d samples; requires
   // size() >= 1 and supportsDelay(d).
   AURORA_HD const Sample& delayed(long d) const {
-    const long index = delayedHistoryIndex(count_, d);  // 1-based
+    const long index = delayedHistoryIndex<long>(count_, d);  // 1-based
     return ring_[(index - 1) % Capacity];
   }
 

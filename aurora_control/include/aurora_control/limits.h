@@ -27,6 +27,18 @@ void withHistoryCapacity(long max_delay, F&& f) {
 constexpr double kPdGainMin = 0.0, kPdGainMax = 10.0;
 constexpr double kUnderactuatedGainMin = 0.001, kUnderactuatedGainMax = 100.0;
 
+// A delay must be shorter than the run: the delay rule sends the current
+// state while k <= d, so with d at least the run's iteration count the
+// delayed state never reaches the controller and the run equals one without
+// delay. Every entry point (sweep, node, replay) refuses it with this text.
+inline bool delayShorterThanRun(long delay, long iterations) { return delay < iterations; }
+inline std::string delayRunText(long delay, long iterations, double Ts) {
+  return std::to_string(delay) + " samples is not shorter than the run's " + std::to_string(iterations) +
+         " iterations (" + std::to_string(iterations * Ts) + " s of task at Ts " + std::to_string(Ts) +
+         " s): the delayed state would never reach the controller, the run would equal one without "
+         "delay; accepted delays up to " + std::to_string(iterations - 1) + " samples for this task";
+}
+
 inline std::string delayRangeText() { return "integer samples in [0, " + std::to_string(kMaxDelaySamples) + "]"; }
 
 }  // namespace aurora_control
