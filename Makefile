@@ -41,6 +41,7 @@ demo: build
 bench: build
 	./bench/realtime_loop.sh $(BUILD)
 	./bench/sweep.sh $(BUILD)
+	./bench/sweep_scale.sh $(BUILD)
 	./bench/report.sh $(BUILD)
 	./bench/laws.sh $(BUILD)
 

@@ -22,10 +22,10 @@ void check(cudaError_t err, const char* what) {
 }
 
 template <typename T, int Capacity>
-__global__ void sweepKernel(SimSetup<T> setup, GridView grid, long n, SimResult* out) {
+__global__ void sweepKernel(SimSetup<T> setup, GridView grid, long first, long n, SimResult* out) {
   const long i = static_cast<long>(blockIdx.x) * blockDim.x + threadIdx.x;
   if (i >= n) return;
-  out[i] = simulateCombination<T, Capacity>(setup, grid, i);
+  out[i] = simulateCombination<T, Capacity>(setup, grid, first + i);  // the spec's range
 }
 
 // Device copies of the per-axis values (not a table of combinations).
@@ -50,7 +50,7 @@ CudaRun launch(const SweepSpec& spec, int block_size, std::vector<SimResult>& ou
   const auto t0 = Clock::now();
   const SimSetup<T> setup = makeSetup<T>(spec);
   const GridView host = spec.view();
-  const long n = host.size();
+  const long first = spec.rangeBegin(), n = spec.rangeSize();
   DeviceGrid grid;
   grid.view = host;
   for (int a = 0; a < host.n_axes; ++a) grid.view.values[a] = grid.upload(host.values[a], host.count[a]);
@@ -70,7 +70,7 @@ CudaRun launch(const SweepSpec& spec, int block_size, std::vector<SimResult>& ou
   check(cudaEventCreate(&start), "cudaEventCreate");
   check(cudaEventCreate(&stop), "cudaEventCreate");
   check(cudaEventRecord(start), "cudaEventRecord");
-  sweepKernel<T, Capacity><<<static_cast<unsigned>(run.grid_size), block_size>>>(setup, grid.view, n, dev_out);
+  sweepKernel<T, Capacity><<<static_cast<unsigned>(run.grid_size), block_size>>>(setup, grid.view, first, n, dev_out);
   check(cudaGetLastError(), "kernel launch");
   check(cudaEventRecord(stop), "cudaEventRecord");
   check(cudaEventSynchronize(stop), "kernel");
@@ -97,6 +97,15 @@ CudaRun launchPrecision(const SweepSpec& spec, int block_size, std::vector<SimRe
 
 bool cudaCompiledIn() { return true; }
 
+void selectCudaDevice(int local_rank) {
+  int count = 0;
+  if (cudaGetDeviceCount(&count) != cudaSuccess || count == 0) {
+    cudaGetLastError();  // clear: probeCudaDevice reports the error
+    return;
+  }
+  cudaSetDevice(local_rank % count);
+}
+
 CudaDevice probeCudaDevice() {
   CudaDevice d;
   int count = 0;
@@ -110,8 +119,10 @@ CudaDevice probeCudaDevice() {
     d.error = "the CUDA runtime reports no device";
     return d;
   }
+  int device = 0;  // the current one (selectCudaDevice under MPI)
+  cudaGetDevice(&device);
   cudaDeviceProp prop;
-  const cudaError_t perr = cudaGetDeviceProperties(&prop, 0);
+  const cudaError_t perr = cudaGetDeviceProperties(&prop, device);
   if (perr != cudaSuccess) {
     d.error = std::string("cudaGetDeviceProperties: ") + cudaGetErrorString(perr);
     return d;

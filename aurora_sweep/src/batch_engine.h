@@ -108,7 +108,8 @@ class BatchWorker {
 
   BatchWorker(const SweepSpec& spec, std::vector<SimResult>& out, std::atomic<long>& next,
               Progress& progress)
-      : grid_(spec.view()), total_(grid_.size()), out_(out), next_(next), progress_(progress) {
+      : grid_(spec.view()), first_(spec.rangeBegin()), total_(spec.rangeEnd()), out_(out), next_(next),
+        progress_(progress) {
     const SimSetup<T> scalar = makeSetup<T>(spec);
     params_ = scalar.params.template cast<B>();
     criteria_ = scalar.config.criteria.template cast<B>();
@@ -201,7 +202,7 @@ class BatchWorker {
     r.iasc = double(LaneOps::get(sim_.metrics.iasc, l));
     r.steps = LaneOps::get(count_, l) - 1;
     for (int i = 0; i < 3; ++i) r.final_pos[i] = double(LaneOps::get(sim_.model.X[aurora_sim::kX + i], l));
-    out_[index_[l]] = compactResult(r);
+    out_[index_[l] - first_] = compactResult(r);
     progress_.fetch_add(1, std::memory_order_relaxed);
   }
 
@@ -246,6 +247,7 @@ class BatchWorker {
   }
 
   const GridView grid_;
+  const long first_;  // the range computed: [first_, total_)
   const long total_;
   std::vector<SimResult>& out_;
   std::atomic<long>& next_;
@@ -274,8 +276,8 @@ class BatchWorker {
 template <typename T, class Arch, int Capacity>
 void runBatchWith(const SweepSpec& spec, int threads, std::vector<SimResult>& out,
                   Progress& progress) {
-  out.resize(spec.size());
-  std::atomic<long> next{0};
+  out.resize(spec.rangeSize());
+  std::atomic<long> next{spec.rangeBegin()};
   std::vector<std::thread> pool;
   for (int t = 0; t < threads; ++t) {
     pool.emplace_back([&] { BatchWorker<T, Arch, Capacity>(spec, out, next, progress).run(); });

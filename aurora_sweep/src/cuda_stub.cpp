@@ -16,6 +16,8 @@ CudaDevice probeCudaDevice() {
 
 long cudaMaxDelay() { return 0; }
 
+void selectCudaDevice(int) {}
+
 CudaRun runCuda(const SweepSpec&, int, std::vector<SimResult>&) {
   throw std::runtime_error(probeCudaDevice().error);
 }

@@ -5,31 +5,11 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "aurora_sweep/chunk_store.h"
+
 namespace aurora_sweep {
 
 namespace {
-
-std::string jsonString(const std::string& s) {
-  std::string out = "\"";
-  for (char c : s) {
-    switch (c) {
-      case '"': out += "\\\""; break;
-      case '\\': out += "\\\\"; break;
-      case '\n': out += "\\n"; break;
-      case '\t': out += "\\t"; break;
-      case '\r': break;
-      default:
-        if (static_cast<unsigned char>(c) < 0x20) {
-          char buf[8];
-          std::snprintf(buf, sizeof buf, "\\u%04x", c);
-          out += buf;
-        } else {
-          out += c;
-        }
-    }
-  }
-  return out + "\"";
-}
 
 std::string readFile(const std::string& path) {
   std::ifstream in(path);
@@ -38,11 +18,50 @@ std::string readFile(const std::string& path) {
   return ss.str();
 }
 
+// One CSV row per combination, in index order.
+class CsvWriter : public ResultsWriter {
+ public:
+  CsvWriter(const std::string& path, const SweepSpec& spec, bool feasible_only)
+      : path_(path), grid_(spec.view()), feasible_only_(feasible_only) {
+    f_ = std::fopen(path.c_str(), "w");
+    if (!f_) throw std::runtime_error("cannot write '" + path + "'");
+    std::fprintf(f_, "index,kp,kd,delay,ok1,ok2,ok3,ok4,feasible,iae,itae,iasc,steps,x,y,z\n");
+  }
+  ~CsvWriter() override {
+    if (f_) std::fclose(f_);
+  }
+  void append(long first, const std::vector<SimResult>& results) override {
+    for (size_t i = 0; i < results.size(); ++i) {
+      const SimResult& r = results[i];
+      if (feasible_only_ && !((r.ok >> 4) & 1)) continue;
+      const long index = first + static_cast<long>(i);
+      const Combination c = grid_.decode(index);
+      std::fprintf(f_, "%ld,%.17g,%.17g,%ld,%d,%d,%d,%d,%d,%.17g,%.17g,%.17g,%d,%.9g,%.9g,%.9g\n", index,
+                   c.kp, c.kd, c.delay, r.ok & 1, (r.ok >> 1) & 1, (r.ok >> 2) & 1, (r.ok >> 3) & 1,
+                   (r.ok >> 4) & 1, r.iae, r.itae, r.iasc, r.steps, r.final_pos[0], r.final_pos[1],
+                   r.final_pos[2]);
+      ++rows_;
+    }
+  }
+  void close() override {
+    FILE* f = f_;
+    f_ = nullptr;
+    if (std::fclose(f) != 0) throw std::runtime_error("cannot finish writing '" + path_ + "'");
+  }
+  long rows() const override { return rows_; }
+
+ private:
+  std::string path_;
+  GridView grid_;
+  bool feasible_only_;
+  FILE* f_ = nullptr;
+  long rows_ = 0;
+};
+
 }  // namespace
 
-Counts countResults(const std::vector<SimResult>& results, long iterations) {
-  Counts c;
-  c.combinations = static_cast<long>(results.size());
+void addCounts(Counts& c, const std::vector<SimResult>& results, long iterations) {
+  c.combinations += static_cast<long>(results.size());
   for (const SimResult& r : results) {
     const bool complete = r.steps >= iterations;
     for (int i = 0; i < 4; ++i) {
@@ -54,70 +73,70 @@ Counts countResults(const std::vector<SimResult>& results, long iterations) {
     c.feasible += (r.ok >> 4) & 1;
     c.steps += r.steps;
   }
+}
+
+Counts countResults(const std::vector<SimResult>& results, long iterations) {
+  Counts c;
+  addCounts(c, results, iterations);
   return c;
+}
+
+std::unique_ptr<ResultsWriter> openCsvWriter(const std::string& path, const SweepSpec& spec,
+                                             bool feasible_only) {
+  return std::unique_ptr<ResultsWriter>(new CsvWriter(path, spec, feasible_only));
 }
 
 void writeResultsCsv(const std::string& path, const SweepSpec& spec,
                      const std::vector<SimResult>& results) {
-  FILE* f = std::fopen(path.c_str(), "w");
-  if (!f) throw std::runtime_error("cannot write '" + path + "'");
-  std::fprintf(f, "index,kp,kd,delay,ok1,ok2,ok3,ok4,feasible,iae,itae,iasc,steps,x,y,z\n");
-  const GridView grid = spec.view();
-  for (size_t i = 0; i < results.size(); ++i) {
-    const SimResult& r = results[i];
-    const Combination c = grid.decode(static_cast<long>(i));
-    std::fprintf(f, "%zu,%.17g,%.17g,%ld,%d,%d,%d,%d,%d,%.17g,%.17g,%.17g,%d,%.9g,%.9g,%.9g\n", i,
-                 c.kp, c.kd, c.delay, r.ok & 1, (r.ok >> 1) & 1, (r.ok >> 2) & 1, (r.ok >> 3) & 1,
-                 (r.ok >> 4) & 1, r.iae, r.itae, r.iasc, r.steps, r.final_pos[0], r.final_pos[1],
-                 r.final_pos[2]);
-  }
-  if (std::fclose(f) != 0) throw std::runtime_error("cannot finish writing '" + path + "'");
+  const std::unique_ptr<ResultsWriter> w = openCsvWriter(path, spec, false);
+  w->append(0, results);
+  w->close();
 }
 
 void writeSummaryJson(const std::string& path, const SweepSpec& spec, const RunInfo& info,
-                      const Counts& counts) {
+                      const Counts& counts, const nlohmann::json& extra) {
+  using nlohmann::json;
+  const double sims = info.computed_combinations >= 0 ? info.computed_combinations : counts.combinations;
+  const double steps = info.computed_steps >= 0 ? info.computed_steps : counts.steps;
+  const double sims_per_s = info.wall_time_s > 0 ? sims / info.wall_time_s : 0;
+  const double steps_per_s = info.wall_time_s > 0 ? steps / info.wall_time_s : 0;
+  json order = json::array();
+  for (const Axis& a : spec.axes) order.push_back(paramName(a.param));
+  const auto list = [](const long v[4]) { return json::array({v[0], v[1], v[2], v[3]}); };
+  json j = {
+      {"name", spec.name},
+      {"sweep_file", spec.file},
+      {"sweep_file_text", readFile(spec.file)},
+      {"definition_hash", hashText(definitionHash(spec))},
+      {"vehicle_file", spec.vehicle_file},
+      {"controller", spec.controller},
+      {"order", order},
+      {"combinations", counts.combinations},
+      {"feasible", counts.feasible},
+      // Per check 1-4: held through a complete run / failed / not reached
+      // (the run stopped early at another check's failure while this one held).
+      {"checks", {{"passed", list(counts.passed)}, {"failed", list(counts.failed)},
+                  {"not_reached", list(counts.not_reached)}}},
+      {"control_steps", counts.steps},
+      {"early_stop", spec.early_stop},
+      {"clamp_commands", spec.clamp_commands},
+      {"backend", info.backend},
+      {"device", info.device},
+      {"precision", precisionName(spec.precision)},
+      {"threads", info.threads},
+      {"lanes", info.lanes},
+      {"wall_time_s", info.wall_time_s},
+      {"total_time_s", info.wall_time_s},
+      {"simulations_per_s", sims_per_s},
+      {"control_steps_per_s", steps_per_s},
+      {"note", info.note},
+  };
+  if (!spec.points_file.empty()) j["points_file"] = spec.points_file;
+  if (info.kernel_time_s >= 0) j["kernel_time_s"] = info.kernel_time_s;
+  for (auto it = extra.begin(); it != extra.end(); ++it) j[it.key()] = it.value();
   std::ofstream f(path);
   if (!f) throw std::runtime_error("cannot write '" + path + "'");
-  f.precision(10);
-  const double sims_per_s = info.wall_time_s > 0 ? counts.combinations / info.wall_time_s : 0;
-  const double steps_per_s = info.wall_time_s > 0 ? counts.steps / info.wall_time_s : 0;
-  f << "{\n";
-  f << "  \"name\": " << jsonString(spec.name) << ",\n";
-  f << "  \"sweep_file\": " << jsonString(spec.file) << ",\n";
-  f << "  \"sweep_file_text\": " << jsonString(readFile(spec.file)) << ",\n";
-  f << "  \"vehicle_file\": " << jsonString(spec.vehicle_file) << ",\n";
-  if (!spec.points_file.empty()) f << "  \"points_file\": " << jsonString(spec.points_file) << ",\n";
-  f << "  \"controller\": " << jsonString(spec.controller) << ",\n";
-  f << "  \"order\": [";
-  for (size_t a = 0; a < spec.axes.size(); ++a) {
-    f << (a ? ", " : "") << jsonString(paramName(spec.axes[a].param));
-  }
-  f << "],\n";
-  f << "  \"combinations\": " << counts.combinations << ",\n";
-  f << "  \"feasible\": " << counts.feasible << ",\n";
-  // Per check 1-4: held through a complete run / failed / not reached (the
-  // run stopped early at another check's failure while this one held).
-  const auto list = [](const long v[4]) {
-    return "[" + std::to_string(v[0]) + ", " + std::to_string(v[1]) + ", " + std::to_string(v[2]) + ", " +
-           std::to_string(v[3]) + "]";
-  };
-  f << "  \"checks\": {\"passed\": " << list(counts.passed) << ", \"failed\": " << list(counts.failed)
-    << ", \"not_reached\": " << list(counts.not_reached) << "},\n";
-  f << "  \"control_steps\": " << counts.steps << ",\n";
-  f << "  \"early_stop\": " << (spec.early_stop ? "true" : "false") << ",\n";
-  f << "  \"clamp_commands\": " << (spec.clamp_commands ? "true" : "false") << ",\n";
-  f << "  \"backend\": " << jsonString(info.backend) << ",\n";
-  f << "  \"device\": " << jsonString(info.device) << ",\n";
-  f << "  \"precision\": " << jsonString(precisionName(spec.precision)) << ",\n";
-  f << "  \"threads\": " << info.threads << ",\n";
-  f << "  \"lanes\": " << info.lanes << ",\n";
-  f << "  \"wall_time_s\": " << info.wall_time_s << ",\n";
-  if (info.kernel_time_s >= 0) f << "  \"kernel_time_s\": " << info.kernel_time_s << ",\n";
-  f << "  \"total_time_s\": " << info.wall_time_s << ",\n";
-  f << "  \"simulations_per_s\": " << sims_per_s << ",\n";
-  f << "  \"control_steps_per_s\": " << steps_per_s << ",\n";
-  f << "  \"note\": " << jsonString(info.note) << "\n";
-  f << "}\n";
+  f << j.dump(2) << "\n";
   if (!f) throw std::runtime_error("cannot finish writing '" + path + "'");
 }
 

@@ -8,10 +8,10 @@ template <typename T, int Capacity>
 void runScalarWith(const SweepSpec& spec, std::vector<SimResult>& out, Progress& progress) {
   const SimSetup<T> setup = makeSetup<T>(spec);
   const GridView grid = spec.view();
-  const long n = grid.size();
+  const long first = spec.rangeBegin(), n = spec.rangeSize();
   out.resize(n);
   for (long i = 0; i < n; ++i) {
-    out[i] = simulateCombination<T, Capacity>(setup, grid, i);
+    out[i] = simulateCombination<T, Capacity>(setup, grid, first + i);
     progress.fetch_add(1, std::memory_order_relaxed);
   }
 }

@@ -5,7 +5,9 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
+#include <memory>
 #include <condition_variable>
 #include <cstdio>
 #include <cstdlib>
@@ -21,6 +23,8 @@
 #include "aurora_sweep/results.h"
 #include "aurora_sweep/rviz_markers.h"
 #include "aurora_sweep/sweep_file.h"
+#include "chunk_runner.h"
+#include "mpi_ranks.h"
 
 namespace {
 
@@ -43,6 +47,15 @@ const char* kUsage =
     "  --block-size N       cuda threads per block (default: chosen by occupancy)\n"
     "  --config-dir DIR     where vehicle files are looked up (default: $AURORA_CONFIG_DIR, else\n"
     "                       the aurora_config package on the ROS package path)\n"
+    "  --output FORMAT      csv (results.csv), hdf5 (results.h5, columns; h5py reads it), both,\n"
+    "                       or none (summary.json and plots only). Default: csv up to 1,000,000\n"
+    "                       combinations, hdf5 above\n"
+    "  --rows WHICH         all (default) or feasible: which combinations the results hold\n"
+    "  --chunk-size N       combinations per chunk (default: a 64th of the sweep, within\n"
+    "                       [4096, 262144]): each finished chunk is\n"
+    "                       written to DIR/progress/ at once; the same command on the same\n"
+    "                       DIR after a crash computes only the missing chunks\n"
+    "  --overwrite          replace another sweep's results in DIR (otherwise refused)\n"
     "  --no-plots           skip the PNG plots\n"
     "  --rviz               publish the feasible set as a latched MarkerArray\n"
     "                       (/sweep/feasible, frame 'sweep') and keep running until Ctrl-C\n"
@@ -54,9 +67,11 @@ const char* kUsage =
 
 struct Options {
   std::string config, out, backend = "auto", precision, config_dir;  // empty: configDir()
+  std::string output = "auto", rows = "all";
   int threads = 0;
   int block_size = 0;
-  bool plots = true, rviz = false, quiet = false;
+  long chunk_size = 0;  // 0: chunkSizeFor()
+  bool plots = true, rviz = false, quiet = false, overwrite = false;
 };
 
 // plot_sweep is installed beside this program (devel space: catkin's relay;
@@ -114,6 +129,25 @@ Options parse(int argc, char** argv) {
       o.block_size = positive("--block-size");
     } else if (a == "--config-dir") {
       o.config_dir = value("--config-dir");
+    } else if (a == "--output") {
+      o.output = value("--output");
+      if (o.output != "csv" && o.output != "hdf5" && o.output != "both" && o.output != "none") {
+        usageError("--output '" + o.output + "' is unknown: accepted csv, hdf5, both, none");
+      }
+    } else if (a == "--rows") {
+      o.rows = value("--rows");
+      if (o.rows != "all" && o.rows != "feasible") {
+        usageError("--rows '" + o.rows + "' is unknown: accepted all, feasible");
+      }
+    } else if (a == "--chunk-size") {
+      const std::string v = value("--chunk-size");
+      char* end = nullptr;
+      o.chunk_size = std::strtol(v.c_str(), &end, 10);
+      if (*end != '\0' || o.chunk_size < 1 || o.chunk_size > (1L << 30)) {
+        usageError("--chunk-size '" + v + "' is invalid: accepted a whole number in [1, 1073741824]");
+      }
+    } else if (a == "--overwrite") {
+      o.overwrite = true;
     } else if (a == "--no-plots") {
       o.plots = false;
     } else if (a == "--rviz") {
@@ -155,7 +189,8 @@ void makeWritableDir(const std::string& dir) {
 class ProgressMonitor {
  public:
   ProgressMonitor(const Progress& progress, long total, bool quiet)
-      : progress_(progress), total_(total), quiet_(quiet), start_(Clock::now()) {
+      : progress_(progress), total_(total), quiet_(quiet), start_(Clock::now()),
+        recent_(10.0, progress.load()) {
     if (!quiet_) thread_ = std::thread([this] { loop(); });
   }
   ~ProgressMonitor() { stop(); }
@@ -192,25 +227,9 @@ class ProgressMonitor {
   std::thread thread_;
 };
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  const Options opt = parse(argc, argv);
-  SweepSpec spec;
-  try {
-    spec = loadSweepFile(opt.config, opt.config_dir.empty() ? aurora_sim::configDir() : opt.config_dir);
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "sweep: %s\n", e.what());
-    return 2;
-  }
-  if (!opt.precision.empty()) {
-    spec.precision = opt.precision == "float" ? Precision::kFloat : Precision::kDouble;
-  }
-  // Everything that can refuse the run is checked before the output folder
-  // is created and before any simulation: the device, the ROS master.
-  if (opt.rviz && !rvizMasterReachable(argc, argv)) return 7;
-
-  RunInfo info;
+// Picks the backend (auto: cuda when a device works, else cpu) and checks
+// that it can run, before anything is written. Returns an exit status, 0 = go.
+int chooseBackend(const Options& opt, const SweepSpec& spec, RunInfo& info) {
   std::string backend = opt.backend;
   if (backend == "cuda" || backend == "auto") {
     CudaDevice dev = probeCudaDevice();
@@ -232,56 +251,74 @@ int main(int argc, char** argv) {
     }
     if (opt.backend == "auto") std::fprintf(stderr, "sweep: %s\n", info.note.c_str());
   }
-  if (backend == "cpu") {
-    try {
-      cpuBatchArch(spec.precision);  // an AURORA_SWEEP_SIMD this CPU cannot run is refused here
-    } catch (const std::exception& e) {
-      std::fprintf(stderr, "sweep: %s\n", e.what());
-      return 2;
-    }
-  }
   info.backend = backend;
-  makeWritableDir(opt.out);
-
-  const long total = spec.size();
-  std::fprintf(stderr, "sweep: %s: %ld combinations, backend %s, %s precision%s\n",
-               spec.name.c_str(), total, backend.c_str(), precisionName(spec.precision),
-               spec.early_stop ? ", early stop" : "");
-  std::vector<SimResult> results;
-  Progress progress{0};
-  const auto t0 = std::chrono::steady_clock::now();
+  info.threads = backend == "scalar" ? 1 : opt.threads;
   try {
-    ProgressMonitor monitor(progress, total, opt.quiet);
-    if (backend == "scalar") {
-      info.threads = 1;
-      info.device = "scalar loop";
-      runScalar(spec, results, progress);
-    } else if (backend == "cpu") {
-      info.threads = opt.threads;
-      info.lanes = cpuBatchLanes(spec.precision);
+    if (backend == "scalar") info.device = "scalar loop";
+    if (backend == "cpu") {  // an AURORA_SWEEP_SIMD this CPU cannot run is refused here
       info.device = cpuBatchArch(spec.precision);
-      runCpuBatch(spec, opt.threads, results, progress);
-    } else {
-      const CudaRun run = runCuda(spec, opt.block_size, results);
-      info.kernel_time_s = run.kernel_s;
-      info.threads = run.block_size;
-      info.note += (info.note.empty() ? "" : "; ") + std::string("grid ") +
-                   std::to_string(run.grid_size) + " x block " + std::to_string(run.block_size);
+      info.lanes = cpuBatchLanes(spec.precision);
     }
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "sweep: the %s backend failed: %s\n", backend.c_str(), e.what());
-    return 4;
-  }
-  info.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  const Counts counts =
-      countResults(results, aurora_control::studyIterationCount(spec.duration, spec.vehicle.Ts));
-  try {
-    writeResultsCsv(opt.out + "/results.csv", spec, results);
-    writeSummaryJson(opt.out + "/summary.json", spec, info, counts);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "sweep: %s\n", e.what());
-    return 5;
+    return 2;
   }
+  if ((opt.output == "hdf5" || opt.output == "both") && !hdf5Available()) {
+    std::fprintf(stderr, "sweep: --output %s: this build has no HDF5 (install libhdf5-dev and rebuild)\n",
+                 opt.output.c_str());
+    return 2;
+  }
+  return 0;
+}
+
+// --output auto: CSV for spreadsheets up to a million rows, HDF5 beyond.
+std::string outputFormat(const Options& opt, long combinations) {
+  if (opt.output != "auto") return opt.output;
+  return combinations > 1000000 && hdf5Available() ? "hdf5" : "csv";
+}
+
+struct Outputs {
+  std::vector<std::unique_ptr<ResultsWriter>> writers;
+  std::vector<std::string> files, temporary;  // temporary: written for the plots only
+};
+
+Outputs openOutputs(const Options& opt, const SweepSpec& spec) {
+  Outputs o;
+  const std::string format = outputFormat(opt, spec.size());
+  const bool feasible_only = opt.rows == "feasible";
+  const bool h5 = format == "hdf5" || format == "both", csv = format == "csv" || format == "both";
+  if (csv) o.files.push_back("results.csv");
+  if (h5) o.files.push_back("results.h5");
+  if (format == "none" && opt.plots) {  // the plots read a results file: a temporary one
+    o.files.push_back(hdf5Available() ? "results.h5" : "results.csv");
+    o.temporary.push_back(o.files.back());
+  }
+  for (const std::string& f : o.files) {
+    const std::string path = opt.out + "/" + f;
+    o.writers.push_back(f == "results.h5" ? openHdf5Writer(path, spec, feasible_only)
+                                          : openCsvWriter(path, spec, feasible_only));
+  }
+  return o;
+}
+
+// Rows, seconds and rows per second of each results file written.
+nlohmann::json runFacts(const Options& opt, const ChunkStore& store, const ChunkWork& work,
+                        const Outputs& out, const std::vector<double>& writer_s, double merge_s) {
+  nlohmann::json written = nlohmann::json::object();
+  for (size_t i = 0; i < out.files.size(); ++i) {
+    if (std::find(out.temporary.begin(), out.temporary.end(), out.files[i]) != out.temporary.end()) continue;
+    const long rows = out.writers[i]->rows();
+    written[out.files[i]] = {{"rows", rows}, {"write_s", writer_s[i]},
+                             {"rows_per_s", writer_s[i] > 0 ? rows / writer_s[i] : 0.0}};
+  }
+  return {{"chunks", {{"size", store.plan().size}, {"count", store.plan().count()},
+                      {"resumed", work.resumed_chunks}, {"computed", work.computed_chunks},
+                      {"computed_combinations", work.computed_combinations}}},
+          {"output", {{"rows", opt.rows}, {"files", written}, {"merge_s", merge_s}}},
+          {"timing", {{"compute_s", work.compute_s}, {"chunk_write_s", work.write_s}}}};
+}
+
+void printCounts(const Counts& counts, const RunInfo& info, const SweepSpec& spec) {
   std::printf("sweep: %ld combinations, %ld feasible; checks 1-4 passed %ld %ld %ld %ld, failed %ld %ld %ld "
               "%ld, not reached (early stop) %ld %ld %ld %ld; "
               "%.3f s, %.0f sims/s, %.3g control steps/s, backend %s (%s), %s\n",
@@ -289,17 +326,179 @@ int main(int argc, char** argv) {
               counts.passed[2], counts.passed[3], counts.failed[0], counts.failed[1], counts.failed[2],
               counts.failed[3], counts.not_reached[0], counts.not_reached[1], counts.not_reached[2],
               counts.not_reached[3], info.wall_time_s,
-              counts.combinations / std::max(info.wall_time_s, 1e-9),
-              counts.steps / std::max(info.wall_time_s, 1e-9), backend.c_str(), info.device.c_str(),
+              std::max(info.computed_combinations, 0L) / std::max(info.wall_time_s, 1e-9),
+              std::max(info.computed_steps, 0LL) / std::max(info.wall_time_s, 1e-9), info.backend.c_str(),
+              info.device.c_str(),
               precisionName(spec.precision));
   std::fflush(stdout);
+}
+
+// Reads the chunks into the outputs, writes summary.json, plots; the
+// progress folder goes once everything is written.
+int finish(const Options& opt, const SweepSpec& spec, const ChunkStore& store, RunInfo info,
+           const ChunkWork& work, const nlohmann::json& ranks, int argc, char** argv) {
+  Counts counts;
+  std::vector<SimResult> all;
+  Outputs out;
+  double merge_s = 0;
+  try {
+    out = openOutputs(opt, spec);
+    std::vector<ResultsWriter*> writers;
+    for (auto& w : out.writers) writers.push_back(w.get());
+    const auto t0 = std::chrono::steady_clock::now();
+    std::vector<double> writer_s;
+    counts = mergeChunks(spec, store, writers, opt.rviz ? &all : nullptr, &writer_s);
+    merge_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (work.kernel_s > 0) info.kernel_time_s = work.kernel_s;
+    nlohmann::json facts = runFacts(opt, store, work, out, writer_s, merge_s);
+    if (!ranks.is_null()) facts["mpi"] = {{"ranks", ranks.size()}, {"per_rank", ranks}};
+    writeSummaryJson(opt.out + "/summary.json", spec, info, counts, facts);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "sweep: %s (the finished chunks stay in %s/progress)\n", e.what(), opt.out.c_str());
+    return 5;
+  }
+  store.removeProgress();
+  printCounts(counts, info, spec);
   if (opt.plots) {
     const std::string cmd = "\"" + besideThisProgram("plot_sweep") + "\" \"" + opt.out + "\"";
-    if (std::system(cmd.c_str()) != 0) {
-      std::fprintf(stderr, "sweep: plotting failed (results.csv and summary.json are written)\n");
+    const int rc = std::system(cmd.c_str());
+    for (const std::string& f : out.temporary) std::remove((opt.out + "/" + f).c_str());
+    if (rc != 0) {
+      std::fprintf(stderr, "sweep: plotting failed (the results and summary.json are written)\n");
       return 6;
     }
   }
-  if (opt.rviz) return publishFeasibleMarkers(argc, argv, spec, results);
+  if (opt.rviz) return publishFeasibleMarkers(argc, argv, spec, all);
   return 0;
+}
+
+// Default chunk size: about 64 chunks (ranks and threads balance, a crash
+// loses little), but not so small that file writes count, nor so large that
+// a GPU launch or the memory of one chunk grows without bound.
+long chunkSizeFor(long combinations) {
+  return std::min(262144L, std::max(4096L, combinations / 64));
+}
+
+// The output folder's chunk store: rank 0 prepares the folder (refusing
+// another sweep's, cleaning old outputs) before the other ranks open it.
+std::unique_ptr<ChunkStore> openStore(const Options& opt, const SweepSpec& spec, const MpiRanks* mpi) {
+  std::unique_ptr<ChunkStore> store;
+  int status = 0;
+  const ChunkPlan plan{spec.size(), opt.chunk_size > 0 ? opt.chunk_size : chunkSizeFor(spec.size())};
+  if (!mpi || mpi->rank() == 0) {
+    try {
+      store.reset(new ChunkStore(opt.out, spec, plan, opt.overwrite));
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "sweep: %s\n", e.what());
+      status = 2;
+    }
+  }
+  if (mpi && mpi->broadcast(status) == 0 && mpi->rank() != 0) {
+    store.reset(new ChunkStore(opt.out, spec, plan, false));  // rank 0's folder: resumes it
+  }
+  return store;
+}
+
+nlohmann::json rankFacts(const RunInfo& info, const ChunkWork& work, const MpiRanks& mpi) {
+  return {{"rank", mpi.rank()}, {"host", mpi.host()}, {"backend", info.backend}, {"device", info.device},
+          {"chunks_computed", work.computed_chunks}, {"combinations", work.computed_combinations},
+          {"chunks_resumed", work.resumed_chunks}, {"steps", work.computed_steps},
+          {"compute_s", work.compute_s},
+          {"simulations_per_s", work.compute_s > 0 ? work.computed_combinations / work.compute_s : 0.0}};
+}
+
+// The whole run's work from every rank's facts (rank 0's kernel figures kept).
+ChunkWork overRanks(const nlohmann::json& ranks, ChunkWork work) {
+  work.computed_chunks = work.resumed_chunks = work.computed_combinations = 0;
+  work.computed_steps = 0;
+  for (const auto& r : ranks) {
+    work.computed_chunks += r["chunks_computed"].get<long>();
+    work.resumed_chunks += r["chunks_resumed"].get<long>();
+    work.computed_combinations += r["combinations"].get<long>();
+    work.computed_steps += r["steps"].get<long long>();
+    work.compute_s = std::max(work.compute_s, r["compute_s"].get<double>());
+  }
+  return work;
+}
+
+int runSweep(int argc, char** argv, const Options& opt, MpiRanks* mpi) {
+  SweepSpec spec;
+  try {
+    spec = loadSweepFile(opt.config, opt.config_dir.empty() ? aurora_sim::configDir() : opt.config_dir);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "sweep: %s\n", e.what());
+    return 2;
+  }
+  if (!opt.precision.empty()) {
+    spec.precision = opt.precision == "float" ? Precision::kFloat : Precision::kDouble;
+  }
+  // Everything that can refuse the run is checked before the output folder
+  // is created and before any simulation: the device, the ROS master.
+  if (opt.rviz && !rvizMasterReachable(argc, argv)) return 7;
+  if (mpi) selectCudaDevice(mpi->localRank());  // one GPU per rank on a node
+  RunInfo info;
+  if (const int rc = chooseBackend(opt, spec, info)) return rc;
+  makeWritableDir(opt.out);
+  const std::unique_ptr<ChunkStore> store = openStore(opt, spec, mpi);
+  if (!store) return 2;
+  const ChunkPlan& plan = store->plan();
+  Progress progress{0};
+  for (long c = 0; c < plan.count(); ++c) progress += store->done(c) ? plan.end(c) - plan.begin(c) : 0;
+  const bool lead = !mpi || mpi->rank() == 0;
+  if (lead) {
+    std::fprintf(stderr, "sweep: %s: %ld combinations in %ld chunks, backend %s, %s precision%s%s%s\n",
+                 spec.name.c_str(), spec.size(), plan.count(), info.backend.c_str(),
+                 precisionName(spec.precision), spec.early_stop ? ", early stop" : "",
+                 mpi ? (", " + std::to_string(mpi->size()) + " MPI ranks").c_str() : "",
+                 store->resumed() ? (", resuming: " + std::to_string(store->doneCount()) + " chunks (" +
+                                     std::to_string(progress.load()) + " combinations) already done").c_str()
+                                  : "");
+  }
+  ChunkWork work;
+  int status = 0;
+  const auto t0 = std::chrono::steady_clock::now();
+  try {
+    // MPI: no per-rank progress lines (each rank sees only its own chunks).
+    ProgressMonitor monitor(progress, spec.size(), opt.quiet || mpi);
+    std::unique_ptr<ChunkSource> chunks =
+        mpi ? mpi->chunks(plan.count()) : std::unique_ptr<ChunkSource>(new SequentialChunks(plan.count()));
+    work = runChunks(spec, *store, *chunks, BackendChoice{info.backend, opt.threads, opt.block_size}, progress);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "sweep: the %s backend failed: %s\n", info.backend.c_str(), e.what());
+    status = 4;
+  }
+  if (mpi) status = mpi->maxOverRanks(status);  // also waits for every rank's chunks
+  if (status != 0) return status;
+  info.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const nlohmann::json ranks = mpi ? mpi->gather(rankFacts(info, work, *mpi)) : nlohmann::json();
+  if (mpi && lead) work = overRanks(ranks, work);
+  info.computed_combinations = work.computed_combinations;
+  info.computed_steps = work.computed_steps;
+  if (work.block_size > 0) {
+    info.threads = work.block_size;
+    info.note += (info.note.empty() ? "" : "; ") + std::string("grid ") + std::to_string(work.grid_size) +
+                 " x block " + std::to_string(work.block_size);
+  }
+  const int rc = lead ? finish(opt, spec, *store, info, work, ranks, argc, argv) : 0;
+  return mpi ? mpi->broadcast(rc) : rc;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::unique_ptr<MpiRanks> mpi;
+  if (MpiRanks::launchedByMpi()) {
+    try {
+      mpi.reset(new MpiRanks(&argc, &argv));
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "sweep: %s\n", e.what());
+      return 2;
+    }
+  }
+  const Options opt = parse(argc, argv);
+  if (mpi && opt.rviz) {
+    std::fprintf(stderr, "sweep: --rviz is for a single process: run without mpirun\n");
+    return 2;
+  }
+  return runSweep(argc, argv, opt, mpi.get());
 }

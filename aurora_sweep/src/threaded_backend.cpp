@@ -19,14 +19,14 @@ template <typename T, int Capacity>
 void runThreaded(const SweepSpec& spec, int threads, std::vector<SimResult>& out, Progress& progress) {
   const SimSetup<T> setup = makeSetup<T>(spec);
   const GridView grid = spec.view();
-  const long n = grid.size();
+  const long first = spec.rangeBegin(), n = spec.rangeSize();
   out.resize(n);
   std::atomic<long> next{0};
   std::vector<std::thread> pool;
   for (int t = 0; t < threads; ++t) {
     pool.emplace_back([&] {
       for (long i = next.fetch_add(1); i < n; i = next.fetch_add(1)) {
-        out[i] = simulateCombination<T, Capacity>(setup, grid, i);
+        out[i] = simulateCombination<T, Capacity>(setup, grid, first + i);
         progress.fetch_add(1, std::memory_order_relaxed);
       }
     });

@@ -29,6 +29,9 @@ bool cudaCompiledIn();
 // Largest delay [samples] the kernel's per-thread history holds.
 long cudaMaxDelay();
 CudaDevice probeCudaDevice();
+// MPI ranks on a multi-GPU node: rank `local_rank` uses device local_rank mod
+// the device count (before probeCudaDevice). No-op without devices or CUDA.
+void selectCudaDevice(int local_rank);
 
 // block_size 0 picks one (occupancy API). Throws std::runtime_error with the
 // CUDA error text on failure.

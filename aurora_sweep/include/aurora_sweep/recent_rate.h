@@ -10,7 +10,10 @@ namespace aurora_sweep {
 
 class RecentRate {
  public:
-  explicit RecentRate(double window = 10.0) : window_(window) {}
+  // done_at_start: items already done at t = 0 (a resumed run's chunks), so
+  // they do not count as throughput.
+  explicit RecentRate(double window = 10.0, long done_at_start = 0)
+      : window_(window), samples_{{0.0, done_at_start}} {}
 
   // t [s] since the start, done: items finished by then. Returns items/s over
   // the last `window` seconds (over everything while less has passed).
@@ -24,7 +27,7 @@ class RecentRate {
 
  private:
   double window_;
-  std::deque<std::pair<double, long>> samples_{{0.0, 0}};
+  std::deque<std::pair<double, long>> samples_;
 };
 
 }  // namespace aurora_sweep

@@ -1,6 +1,8 @@
 // Writing a sweep's results: one CSV row per combination and a JSON summary.
 #pragma once
 
+#include <memory>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -17,6 +19,10 @@ struct RunInfo {
   double wall_time_s = 0;   // whole run, transfers included
   double kernel_time_s = -1;  // CUDA kernel only (-1: not applicable)
   std::string note;         // how `auto` chose, etc.
+  // Simulated by this run (a resumed run computes only the missing chunks);
+  // -1: all of them. The rates in summary.json are over these.
+  long computed_combinations = -1;
+  long long computed_steps = -1;
 };
 
 // Per check: passed (held through a complete run), failed, or not reached
@@ -32,11 +38,35 @@ struct Counts {
 
 // `iterations`: the steps of a complete run (studyIterationCount).
 Counts countResults(const std::vector<SimResult>& results, long iterations);
+// Adds one chunk's results to running counts.
+void addCounts(Counts& c, const std::vector<SimResult>& results, long iterations);
 
-// Throws std::runtime_error naming the file when it cannot be written.
+// Results written chunk by chunk, in index order, so that no second copy of
+// all results is held in memory. Throw std::runtime_error naming the file.
+class ResultsWriter {
+ public:
+  virtual ~ResultsWriter() = default;
+  // Results of combinations first, first + 1, ...
+  virtual void append(long first, const std::vector<SimResult>& results) = 0;
+  virtual void close() = 0;
+  virtual long rows() const = 0;  // rows written
+};
+
+// `feasible_only`: only the rows of feasible combinations.
+std::unique_ptr<ResultsWriter> openCsvWriter(const std::string& path, const SweepSpec& spec,
+                                             bool feasible_only);
+// HDF5 (h5py reads it): one column per field, chunked. Only where libhdf5 was
+// found at build time (hdf5Available()).
+bool hdf5Available();
+std::unique_ptr<ResultsWriter> openHdf5Writer(const std::string& path, const SweepSpec& spec,
+                                              bool feasible_only);
+
+// Whole-vector convenience (tests, small sweeps).
 void writeResultsCsv(const std::string& path, const SweepSpec& spec,
                      const std::vector<SimResult>& results);
+
+// `extra`: further members (resume, ranks, outputs) added to summary.json.
 void writeSummaryJson(const std::string& path, const SweepSpec& spec, const RunInfo& info,
-                      const Counts& counts);
+                      const Counts& counts, const nlohmann::json& extra = nlohmann::json::object());
 
 }  // namespace aurora_sweep

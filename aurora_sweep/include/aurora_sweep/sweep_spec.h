@@ -54,6 +54,16 @@ struct SweepSpec {
     return g;
   }
   long size() const { return view().size(); }
+
+  // The part of the index space a backend computes, [range_begin, range_end):
+  // one chunk of a resumable or MPI run (chunk_store.h); range_end < 0: to
+  // the end. A backend's output holds rangeSize() results, result i being
+  // combination rangeBegin() + i.
+  long range_begin = 0;
+  long range_end = -1;
+  long rangeBegin() const { return range_begin; }
+  long rangeEnd() const { return range_end < 0 ? size() : range_end; }
+  long rangeSize() const { return rangeEnd() - rangeBegin(); }
 };
 
 inline const char* paramName(int id) {

@@ -1,0 +1,215 @@
+#include "aurora_sweep/chunk_store.h"
+
+#include <dirent.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <boost/crc.hpp>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+namespace aurora_sweep {
+
+namespace {
+
+// A chunk file: this header, then `count` SimResult records.
+struct ChunkHeader {
+  char magic[8];          // "AURCHNK1"
+  uint32_t hash;          // definitionHash of the sweep
+  uint32_t record_size;   // sizeof(SimResult)
+  int64_t begin, count;   // combinations [begin, begin + count)
+};
+constexpr char kMagic[8] = {'A', 'U', 'R', 'C', 'H', 'N', 'K', '1'};
+
+class Crc {
+ public:
+  template <typename V>
+  void add(const V& v) {
+    crc_.process_bytes(&v, sizeof v);
+  }
+  void add(const std::string& s) {
+    add(s.size());
+    crc_.process_bytes(s.data(), s.size());
+  }
+  void add(const std::vector<double>& v) {
+    add(v.size());
+    crc_.process_bytes(v.data(), v.size() * sizeof(double));
+  }
+  uint32_t value() const { return crc_.checksum(); }
+
+ private:
+  boost::crc_32_type crc_;
+};
+
+bool exists(const std::string& path) {
+  struct stat st;
+  return stat(path.c_str(), &st) == 0;
+}
+
+std::string readAll(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+// The definition hash a finished run recorded in its summary.json ("" if none).
+std::string summaryHash(const std::string& path) {
+  const std::string text = readAll(path);
+  const std::string key = "\"definition_hash\": \"";
+  const size_t at = text.find(key);
+  return at == std::string::npos ? "" : text.substr(at + key.size(), 8);
+}
+
+void removeFile(const std::string& path) {
+  if (std::remove(path.c_str()) != 0 && errno != ENOENT) {
+    throw std::runtime_error("cannot remove '" + path + "': " + std::strerror(errno));
+  }
+}
+
+}  // namespace
+
+uint32_t definitionHash(const SweepSpec& spec) {
+  static_assert(sizeof(spec.vehicle) % sizeof(double) == 0, "vehicle constants are doubles");
+  Crc crc;
+  crc.add(std::string("aurora_sweep definition v1"));
+  crc.add(spec.controller);
+  crc.add(spec.vehicle);
+  for (double d : spec.desired) crc.add(d);
+  crc.add(spec.duration);
+  crc.add(spec.criteria);
+  for (const Axis& a : spec.axes) {
+    crc.add(static_cast<int>(a.param));
+    crc.add(a.values);
+  }
+  for (double f : spec.fixed) crc.add(f);
+  crc.add(spec.points);
+  crc.add(spec.early_stop);
+  crc.add(spec.clamp_commands);
+  crc.add(static_cast<int>(spec.precision));
+  return crc.value();
+}
+
+std::string hashText(uint32_t hash) {
+  char buf[16];
+  std::snprintf(buf, sizeof buf, "%08x", hash);
+  return buf;
+}
+
+const std::vector<std::string>& sweepOutputFiles() {
+  static const std::vector<std::string> files{
+      "results.csv", "results.h5", "summary.json", "feasible_volume.png", "check1_region.png",
+      "check2_region.png", "check3_region.png", "check4_region.png"};
+  return files;
+}
+
+ChunkStore::ChunkStore(const std::string& out_dir, const SweepSpec& spec, const ChunkPlan& plan,
+                       bool overwrite)
+    : out_dir_(out_dir), progress_dir_(out_dir + "/progress"), plan_(plan), hash_(definitionHash(spec)) {
+  openOrCreate(overwrite);
+}
+
+void ChunkStore::openOrCreate(bool overwrite) {
+  const std::string definition = progress_dir_ + "/definition";
+  const std::string mine = hashText(hash_) + " " + std::to_string(plan_.total) + " " +
+                           std::to_string(plan_.size) + "\n";
+  std::string other;
+  if (exists(definition)) {
+    const std::string theirs = readAll(definition);
+    if (theirs == mine) {
+      resumed_ = true;
+      return;
+    }
+    // "HASH TOTAL CHUNK": another definition, or the same one in other chunks
+    other = theirs.substr(0, theirs.find('\n')) + " (hash, combinations, chunk size; in progress)";
+  } else {
+    const std::string finished = summaryHash(out_dir_ + "/summary.json");
+    if (!finished.empty() && finished != hashText(hash_)) other = finished + " (hash; finished)";
+  }
+  if (!other.empty() && !overwrite) {
+    throw std::runtime_error("'" + out_dir_ + "' holds another sweep (" + other + "; this one: " +
+                             mine.substr(0, mine.size() - 1) +
+                             "): choose another --out, or give --overwrite to replace it");
+  }
+  // A fresh run: nothing of an earlier one may stay beside the new results.
+  for (const std::string& f : sweepOutputFiles()) removeFile(out_dir_ + "/" + f);
+  removeProgress();
+  if (mkdir(progress_dir_.c_str(), 0755) != 0) {
+    throw std::runtime_error("cannot create '" + progress_dir_ + "': " + std::strerror(errno));
+  }
+  std::ofstream(definition) << mine;
+}
+
+std::string ChunkStore::chunkPath(long chunk) const {
+  char name[32];
+  std::snprintf(name, sizeof name, "/chunk_%08ld.bin", chunk);
+  return progress_dir_ + name;
+}
+
+bool ChunkStore::done(long chunk) const { return exists(chunkPath(chunk)); }
+
+long ChunkStore::doneCount() const {
+  long n = 0;
+  for (long c = 0; c < plan_.count(); ++c) n += done(c);
+  return n;
+}
+
+void ChunkStore::write(long chunk, const std::vector<SimResult>& results) const {
+  ChunkHeader h;
+  std::memcpy(h.magic, kMagic, sizeof kMagic);
+  h.hash = hash_;
+  h.record_size = sizeof(SimResult);
+  h.begin = plan_.begin(chunk);
+  h.count = plan_.end(chunk) - plan_.begin(chunk);
+  if (static_cast<int64_t>(results.size()) != h.count) {
+    throw std::logic_error("chunk " + std::to_string(chunk) + ": " + std::to_string(results.size()) +
+                           " results for " + std::to_string(h.count) + " combinations");
+  }
+  const std::string path = chunkPath(chunk), tmp = path + ".tmp." + std::to_string(getpid());
+  FILE* f = std::fopen(tmp.c_str(), "wb");
+  bool ok = f && std::fwrite(&h, sizeof h, 1, f) == 1 &&
+            std::fwrite(results.data(), sizeof(SimResult), results.size(), f) == results.size();
+  ok = f && std::fflush(f) == 0 && fsync(fileno(f)) == 0 && ok;
+  if (f) ok = std::fclose(f) == 0 && ok;
+  if (!ok || std::rename(tmp.c_str(), path.c_str()) != 0) {
+    std::remove(tmp.c_str());
+    throw std::runtime_error("cannot write '" + path + "': " + std::strerror(errno));
+  }
+}
+
+void ChunkStore::read(long chunk, std::vector<SimResult>& results) const {
+  const std::string path = chunkPath(chunk);
+  FILE* f = std::fopen(path.c_str(), "rb");
+  if (!f) throw std::runtime_error("cannot read '" + path + "': " + std::strerror(errno));
+  ChunkHeader h;
+  const long expected = plan_.end(chunk) - plan_.begin(chunk);
+  bool ok = std::fread(&h, sizeof h, 1, f) == 1 && std::memcmp(h.magic, kMagic, sizeof kMagic) == 0 &&
+            h.hash == hash_ && h.record_size == sizeof(SimResult) && h.begin == plan_.begin(chunk) &&
+            h.count == expected;
+  if (ok) {
+    results.resize(static_cast<size_t>(expected));
+    ok = std::fread(results.data(), sizeof(SimResult), results.size(), f) == results.size();
+  }
+  std::fclose(f);
+  if (!ok) {
+    throw std::runtime_error("chunk file '" + path + "' is damaged or of another sweep: delete it and run "
+                             "the same command again (it is recomputed)");
+  }
+}
+
+void ChunkStore::removeProgress() const {
+  DIR* d = opendir(progress_dir_.c_str());
+  if (!d) return;
+  while (dirent* e = readdir(d)) {
+    const std::string name = e->d_name;
+    if (name != "." && name != "..") removeFile(progress_dir_ + "/" + name);
+  }
+  closedir(d);
+  rmdir(progress_dir_.c_str());
+}
+
+}  // namespace aurora_sweep

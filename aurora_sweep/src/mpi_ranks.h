@@ -1,0 +1,48 @@
+// MPI ranks, when the sweep is started by mpirun or srun (OpenMPI from
+// Debian; built only where MPI is found: mpi_ranks_stub.cpp otherwise). The
+// ranks share the output folder (a shared file system on a cluster): rank 0
+// prepares it, every rank takes chunk numbers from one counter in rank 0's
+// memory (MPI one-sided fetch-and-add: uneven, early-stopping chunks balance
+// themselves) and writes the chunks it computes; rank 0 then merges them, so
+// the result is the single-process one byte for byte.
+#pragma once
+
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "chunk_runner.h"
+
+namespace aurora_sweep {
+
+class MpiRanks {
+ public:
+  // True when this process was started as an MPI rank (mpirun, srun).
+  static bool launchedByMpi();
+  static bool compiledIn();
+
+  // MPI_Init; throws std::runtime_error when this build has no MPI.
+  MpiRanks(int* argc, char*** argv);
+  ~MpiRanks();  // MPI_Finalize
+  MpiRanks(const MpiRanks&) = delete;
+  MpiRanks& operator=(const MpiRanks&) = delete;
+
+  int rank() const { return rank_; }
+  int size() const { return size_; }
+  int localRank() const;  // rank on this host (one GPU each)
+  std::string host() const;
+
+  // The shared chunk counter (collective: every rank calls it).
+  std::unique_ptr<ChunkSource> chunks(long count);
+  void barrier() const;
+  // Rank 0's value to every rank; the largest value of any rank to every rank.
+  int broadcast(int value) const;
+  int maxOverRanks(int value) const;
+  // Every rank's facts, at rank 0 (an array in rank order); others get null.
+  nlohmann::json gather(const nlohmann::json& mine) const;
+
+ private:
+  int rank_ = 0, size_ = 1;
+};
+
+}  // namespace aurora_sweep
