@@ -2,6 +2,7 @@
 // flight tool, the sweep), written once so that they agree.
 #pragma once
 
+#include <cstdio>
 #include <string>
 #include <type_traits>
 
@@ -33,9 +34,10 @@ constexpr double kUnderactuatedGainMin = 0.001, kUnderactuatedGainMax = 100.0;
 // delay. Every entry point (sweep, node, replay) refuses it with this text.
 inline bool delayShorterThanRun(long delay, long iterations) { return delay < iterations; }
 inline std::string delayRunText(long delay, long iterations, double Ts) {
+  char run[96];
+  std::snprintf(run, sizeof run, " iterations (%.4g s at Ts = %.4g s)", (iterations - 1) * Ts, Ts);
   return std::to_string(delay) + " samples is not shorter than the run's " + std::to_string(iterations) +
-         " iterations (" + std::to_string(iterations * Ts) + " s of task at Ts " + std::to_string(Ts) +
-         " s): the delayed state would never reach the controller, the run would equal one without "
+         run + ": the delayed state would never reach the controller, the run would equal one without "
          "delay; accepted delays up to " + std::to_string(iterations - 1) + " samples for this task";
 }
 
