@@ -57,7 +57,7 @@ ChunkWork runChunks(const SweepSpec& spec, const ChunkStore& store, ChunkSource&
 }
 
 Counts mergeChunks(const SweepSpec& spec, const ChunkStore& store,
-                   const std::vector<ResultsWriter*>& writers, std::vector<SimResult>* all,
+                   const std::vector<ResultsWriter*>& writers, const ChunkConsumer& consume,
                    std::vector<double>* writer_s) {
   const long iterations = aurora_control::studyIterationCount(spec.duration, spec.vehicle.Ts);
   Counts counts;
@@ -71,7 +71,7 @@ Counts mergeChunks(const SweepSpec& spec, const ChunkStore& store,
       writers[w]->append(store.plan().begin(c), chunk);
       seconds[w] += since(t0);
     }
-    if (all) all->insert(all->end(), chunk.begin(), chunk.end());
+    if (consume) consume(store.plan().begin(c), chunk);
   }
   for (size_t w = 0; w < writers.size(); ++w) {
     const Clock::time_point t0 = Clock::now();

@@ -4,6 +4,7 @@
 // and MPI ranks; only the source of chunk numbers differs.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -51,11 +52,14 @@ struct ChunkWork {
 ChunkWork runChunks(const SweepSpec& spec, const ChunkStore& store, ChunkSource& source,
                     const BackendChoice& choice, Progress& progress);
 
-// Reads every chunk in index order into `writers` and the counts; `all`
-// (optional) receives every result (for --rviz); `writer_s` (optional) the
-// seconds spent in each writer. Returns the counts.
+// Sees each chunk's results during the merge (e.g. --rviz's copy, the delay
+// monotony count).
+using ChunkConsumer = std::function<void(long first, const std::vector<SimResult>& results)>;
+
+// Reads every chunk in index order into `writers`, `consume` (optional) and
+// the counts; `writer_s` (optional) gets the seconds spent in each writer.
 Counts mergeChunks(const SweepSpec& spec, const ChunkStore& store,
-                   const std::vector<ResultsWriter*>& writers, std::vector<SimResult>* all,
+                   const std::vector<ResultsWriter*>& writers, const ChunkConsumer& consume,
                    std::vector<double>* writer_s = nullptr);
 
 }  // namespace aurora_sweep

@@ -102,7 +102,8 @@ std::string hashText(uint32_t hash) {
 
 const std::vector<std::string>& sweepOutputFiles() {
   static const std::vector<std::string> files{
-      "results.csv", "results.h5", "summary.json", "feasible_volume.png", "check1_region.png",
+      "results.csv", "results.h5", "summary.json", "feasible_volume.png", "feasible_marginals.png",
+      "feasible_pairs.png", "max_tolerable_delay.png", "check1_region.png",
       "check2_region.png", "check3_region.png", "check4_region.png"};
   return files;
 }

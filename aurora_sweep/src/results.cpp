@@ -1,5 +1,6 @@
 #include "aurora_sweep/results.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
@@ -59,6 +60,43 @@ class CsvWriter : public ResultsWriter {
 };
 
 }  // namespace
+
+DelayMonotony::DelayMonotony(const SweepSpec& spec) : grid_(spec.view()) {
+  if (!spec.points.empty() || spec.axes.size() != 3) return;
+  for (const Axis& a : spec.axes) {
+    std::vector<double>& v = a.param == kParamKp ? kps_ : a.param == kParamKd ? kds_ : delays_;
+    v = a.values;
+    std::sort(v.begin(), v.end());  // a `values:` list may come in any order
+  }
+  applies_ = true;
+  feasible_.assign(kps_.size() * kds_.size() * delays_.size(), 0);
+}
+
+void DelayMonotony::add(long first, const std::vector<SimResult>& results) {
+  if (!applies_) return;
+  const auto at = [](const std::vector<double>& v, double x) {
+    return static_cast<size_t>(std::lower_bound(v.begin(), v.end(), x) - v.begin());
+  };
+  for (size_t i = 0; i < results.size(); ++i) {
+    const Combination c = grid_.decode(first + static_cast<long>(i));
+    const size_t pair = at(kps_, c.kp) * kds_.size() + at(kds_, c.kd);
+    feasible_[pair * delays_.size() + at(delays_, double(c.delay))] = (results[i].ok >> 4) & 1;
+  }
+}
+
+long DelayMonotony::nonMonotonePairs() const {
+  long count = 0;
+  const size_t n = delays_.size();
+  for (size_t p = 0; p + n <= feasible_.size(); p += n) {
+    bool failed = false, again = false;
+    for (size_t d = 0; d < n; ++d) {
+      again = again || (failed && feasible_[p + d]);
+      failed = failed || !feasible_[p + d];
+    }
+    count += again;
+  }
+  return count;
+}
 
 void addCounts(Counts& c, const std::vector<SimResult>& results, long iterations) {
   c.combinations += static_cast<long>(results.size());
@@ -132,6 +170,8 @@ void writeSummaryJson(const std::string& path, const SweepSpec& spec, const RunI
       {"note", info.note},
   };
   if (!spec.points_file.empty()) j["points_file"] = spec.points_file;
+  j["design"] = spec.design;
+  if (spec.design != "grid") j["design_samples"] = {{"samples", spec.samples}, {"seed", spec.seed}};
   if (info.kernel_time_s >= 0) j["kernel_time_s"] = info.kernel_time_s;
   for (auto it = extra.begin(); it != extra.end(); ++it) j[it.key()] = it.value();
   std::ofstream f(path);

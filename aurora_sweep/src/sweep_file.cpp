@@ -10,6 +10,7 @@
 
 #include "aurora_control/positioning_runner.h"
 #include "aurora_control/task_yaml.h"
+#include "aurora_sweep/design.h"
 #include "aurora_sim/vehicle_yaml.h"
 
 namespace aurora_sweep {
@@ -139,6 +140,90 @@ aurora_sim::ArdroneParams<double> loadVehicleFile(const std::string& path) {
 
 namespace {
 
+// {from, to[, scale]} of one parameter: a non-empty range inside the
+// parameter's accepted values; scale linear (default) or log (from > 0).
+SampledRange readRange(const Reader& r, const YAML::Node& v, const std::string& key, int id) {
+  SampledRange range;
+  range.from = r.number(v["from"], key + ".from");
+  range.to = r.number(v["to"], key + ".to");
+  range.integer = id == kParamDelay;
+  if (range.to < range.from) {
+    r.fail(key, "is an empty range: 'to' (" + Reader::fmt(range.to) + ") is below 'from' (" +
+                    Reader::fmt(range.from) + ")");
+  }
+  checkValue(r, id, range.from, key + ".from");
+  checkValue(r, id, range.to, key + ".to");
+  if (v["scale"]) {
+    const std::string scale = r.text(v["scale"], key + ".scale");
+    if (scale != "linear" && scale != "log") r.fail(key + ".scale", "= '" + scale + "': accepted linear, log");
+    range.log = scale == "log";
+    if (range.log && range.integer) r.fail(key + ".scale", "= log: a delay takes whole samples, scale linear");
+    if (range.log && !(range.from > 0)) r.fail(key + ".scale", "= log needs 'from' > 0");
+  }
+  return range;
+}
+
+// sweep.design (default grid), with samples and seed for the others.
+bool readDesign(const Reader& r, const YAML::Node& s, SweepSpec& spec) {
+  Design design = Design::kGrid;
+  if (s["design"]) {
+    spec.design = r.text(s["design"], "sweep.design");
+    if (!designFromName(spec.design, design)) {
+      r.fail("sweep.design", "= '" + spec.design + "' is unknown: accepted grid, random, latin_hypercube, sobol");
+    }
+  }
+  if (design == Design::kGrid) {
+    if (s["samples"] || s["seed"]) r.fail(s["samples"] ? "sweep.samples" : "sweep.seed", "is for sampling designs: "
+                                          "give design: random, latin_hypercube or sobol, or remove it");
+    return false;
+  }
+  if (!s["samples"]) r.fail("sweep.samples", "is missing: a " + spec.design + " design needs the number of samples");
+  spec.samples = r.integer(s["samples"], "sweep.samples");
+  if (spec.samples < 1 || spec.samples > (1L << 31)) r.fail("sweep.samples", "is outside the accepted range [1, 2^31]");
+  const long seed = s["seed"] ? r.integer(s["seed"], "sweep.seed") : 0;
+  if (seed < 0) r.fail("sweep.seed", "must be >= 0");
+  spec.seed = static_cast<unsigned long long>(seed);
+  if (s["order"]) r.fail("sweep.order", "is for grids: a " + spec.design + " design has no axes to order");
+  return true;
+}
+
+// The design's samples as points (kp, kd, delay): varied parameters from
+// their ranges, the others fixed.
+void sampleDesign(const Reader& r, const YAML::Node& params, SweepSpec& spec) {
+  r.onlyKeys(params, "sweep.parameters", {"kp", "kd", "delay"});
+  std::vector<int> varied;
+  std::vector<SampledRange> ranges;
+  for (int id = 0; id < kParamCount; ++id) {
+    const std::string key = std::string("sweep.parameters.") + paramName(id);
+    const YAML::Node v = params[paramName(id)];
+    if (!v) r.fail(key, "is missing: give a value or a range for each of kp, kd, delay");
+    if (v.IsScalar()) {
+      spec.fixed[id] = r.number(v, key);
+      checkValue(r, id, spec.fixed[id], key);
+      continue;
+    }
+    if (!v.IsMap() || v["values"] || v["count"]) {
+      r.fail(key, "must be a value or a range {from, to[, scale]}: a " + spec.design + " design samples ranges");
+    }
+    r.onlyKeys(v, key, {"from", "to", "scale"});
+    if (!v["from"] || !v["to"]) r.fail(key, "needs from and to");
+    varied.push_back(id);
+    ranges.push_back(readRange(r, v, key, id));
+  }
+  if (varied.empty()) r.fail("sweep.parameters", "vary none: a design needs at least one range");
+  Design design = Design::kGrid;
+  designFromName(spec.design, design);
+  const int dims = static_cast<int>(varied.size());
+  const std::vector<double> u = unitSamples(design, spec.samples, dims, spec.seed);
+  spec.points.resize(static_cast<size_t>(spec.samples) * kParamCount);
+  for (long i = 0; i < spec.samples; ++i) {
+    double* p = &spec.points[static_cast<size_t>(i) * kParamCount];
+    for (int id = 0; id < kParamCount; ++id) p[id] = spec.fixed[id];
+    for (int j = 0; j < dims; ++j) p[varied[j]] = ranges[j].at(u[static_cast<size_t>(i) * dims + j]);
+    spec.max_delay = std::max(spec.max_delay, static_cast<long>(p[kParamDelay]));
+  }
+}
+
 SweepSpec parseSweepFile(const std::string& path, const std::string& config_dir) {
   Reader r(path);
   YAML::Node root;
@@ -153,7 +238,8 @@ SweepSpec parseSweepFile(const std::string& path, const std::string& config_dir)
   const YAML::Node s = root["sweep"];
   if (!s) r.fail("sweep", "is missing: the file's top level must be 'sweep:'");
   r.onlyKeys(s, "sweep", {"name", "controller", "vehicle", "task", "parameters", "order", "points",
-                          "criteria", "early_stop", "clamp_commands", "precision"});
+                          "criteria", "early_stop", "clamp_commands", "precision", "design", "samples",
+                          "seed"});
   SweepSpec spec;
   spec.file = path;
   const std::string sweep_dir = dirOf(path);
@@ -213,6 +299,10 @@ SweepSpec parseSweepFile(const std::string& path, const std::string& config_dir)
 
   const YAML::Node params = s["parameters"];
   if (!params) r.fail("sweep.parameters", "is missing: give kp, kd and delay (a value or a range), or 'points'");
+  if (readDesign(r, s, spec)) {
+    sampleDesign(r, params, spec);
+    return spec;
+  }
   r.onlyKeys(params, "sweep.parameters", {"kp", "kd", "delay"});
   std::vector<std::string> varied;
   bool given[kParamCount] = {false, false, false};
@@ -236,19 +326,19 @@ SweepSpec parseSweepFile(const std::string& path, const std::string& config_dir)
       }
       for (const auto& x : v["values"]) axis.values.push_back(r.number(x, key + ".values"));
     } else if (v.IsMap()) {
-      r.onlyKeys(v, key, {"from", "to", "count"});
+      r.onlyKeys(v, key, {"from", "to", "count", "scale"});
       if (!v["from"] || !v["to"] || !v["count"]) r.fail(key, "needs from, to and count (or values: [...])");
-      const double from = r.number(v["from"], key + ".from");
-      const double to = r.number(v["to"], key + ".to");
+      const SampledRange range = readRange(r, v, key, id);
       const long count = r.integer(v["count"], key + ".count");
       if (count < 1) r.fail(key + ".count", "= " + std::to_string(count) + " is below 1: accepted counts >= 1");
-      if (count == 1 && from != to) r.fail(key, "has count 1 but from != to: an empty range");
-      if (to < from) r.fail(key, "is an empty range: 'to' (" + std::to_string(to) + ") is below 'from' (" +
-                                 std::to_string(from) + ")");
-      // Written as from + (i (to - from)) / (count - 1), so kp = i 0.75 / 31
-      // has the bits of the thesis grid.
+      if (count == 1 && range.from != range.to) r.fail(key, "has count 1 but from != to: an empty range");
+      // Linear: from + (i (to - from)) / (count - 1), so kp = i 0.75 / 31 has
+      // the bits of the thesis grid; log: from (to / from)^(i / (count - 1)).
       for (long i = 0; i < count; ++i) {
-        axis.values.push_back(count == 1 ? from : from + (double(i) * (to - from)) / double(count - 1));
+        const double t = count == 1 ? 0.0 : double(i) / double(count - 1);
+        axis.values.push_back(count == 1 ? range.from
+                              : range.log ? range.at(t)
+                                          : range.from + (double(i) * (range.to - range.from)) / double(count - 1));
       }
     } else {
       r.fail(key, "must be a value, {from, to, count} or {values: [...]}");

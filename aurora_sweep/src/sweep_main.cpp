@@ -347,11 +347,21 @@ int finish(const Options& opt, const SweepSpec& spec, const ChunkStore& store, R
     for (auto& w : out.writers) writers.push_back(w.get());
     const auto t0 = std::chrono::steady_clock::now();
     std::vector<double> writer_s;
-    counts = mergeChunks(spec, store, writers, opt.rviz ? &all : nullptr, &writer_s);
+    DelayMonotony monotony(spec);
+    const ChunkConsumer consume = [&](long first, const std::vector<SimResult>& results) {
+      monotony.add(first, results);
+      if (opt.rviz) all.insert(all.end(), results.begin(), results.end());
+    };
+    counts = mergeChunks(spec, store, writers, consume, &writer_s);
     merge_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (work.kernel_s > 0) info.kernel_time_s = work.kernel_s;
     nlohmann::json facts = runFacts(opt, store, work, out, writer_s, merge_s);
     if (!ranks.is_null()) facts["mpi"] = {{"ranks", ranks.size()}, {"per_rank", ranks}};
+    if (monotony.applies()) {
+      // Gain pairs whose feasibility comes back at a longer delay after failing.
+      facts["delay_monotony"] = {{"gain_pairs", monotony.pairs()},
+                                 {"not_monotone", monotony.nonMonotonePairs()}};
+    }
     writeSummaryJson(opt.out + "/summary.json", spec, info, counts, facts);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "sweep: %s (the finished chunks stay in %s/progress)\n", e.what(), opt.out.c_str());

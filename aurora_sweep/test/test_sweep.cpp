@@ -278,6 +278,31 @@ TEST(SweepProgram, WritesResultsSummaryAndPlots) {
   EXPECT_NE(ss.str().find("\"simulations_per_s\""), std::string::npos);
   EXPECT_TRUE(std::ifstream(out + "/feasible_volume.png").good());
   EXPECT_TRUE(std::ifstream(out + "/check1_region.png").good());  // early_stop false
+  // Readable in many dimensions: marginals, pairs, and for a 3-parameter
+  // grid the max tolerable delay and the count of non-monotone gain pairs.
+  EXPECT_TRUE(std::ifstream(out + "/feasible_marginals.png").good());
+  EXPECT_TRUE(std::ifstream(out + "/feasible_pairs.png").good());
+  EXPECT_TRUE(std::ifstream(out + "/max_tolerable_delay.png").good());
+  EXPECT_NE(ss.str().find("\"delay_monotony\""), std::string::npos) << ss.str();
+  EXPECT_NE(ss.str().find("\"gain_pairs\": 16"), std::string::npos) << ss.str();
+}
+
+TEST(DelayMonotony, CountsPairsThatComeBackAtALongerDelay) {
+  const SweepSpec spec = load(kData + "/small_grid.yaml");  // 4 kp x 4 kd x 5 delays, kp fastest
+  DelayMonotony m(spec);
+  ASSERT_TRUE(m.applies());
+  std::vector<SimResult> r(static_cast<size_t>(spec.size()));
+  for (SimResult& x : r) x.ok = 0x1f;  // all feasible: monotone
+  const GridView g = spec.view();
+  for (long i = 0; i < spec.size(); ++i) {
+    const Combination c = g.decode(i);
+    if (c.kp == 0.0 && c.kd == 0.0 && c.delay == 3) r[i].ok = 0;  // fails at 3, holds at 20: not monotone
+    if (c.kp == 0.75 && c.kd == 1.0 && c.delay >= 20) r[i].ok = 0;  // fails from 20 on: monotone
+  }
+  m.add(0, std::vector<SimResult>(r.begin(), r.begin() + 37));  // in two pieces, as chunks come
+  m.add(37, std::vector<SimResult>(r.begin() + 37, r.end()));
+  EXPECT_EQ(m.pairs(), 16);
+  EXPECT_EQ(m.nonMonotonePairs(), 1);
 }
 
 TEST(SweepProgram, RefusesUnwritableOutputAndMissingDevice) {

@@ -61,6 +61,24 @@ bool hdf5Available();
 std::unique_ptr<ResultsWriter> openHdf5Writer(const std::string& path, const SweepSpec& spec,
                                               bool feasible_only);
 
+// For grids varying kp, kd and delay: per gain pair, is feasibility monotone
+// in the delay (feasible up to some delay, infeasible beyond)? A pair that
+// fails, then holds again at a longer delay is counted (summary.json).
+class DelayMonotony {
+ public:
+  explicit DelayMonotony(const SweepSpec& spec);
+  bool applies() const { return applies_; }
+  void add(long first, const std::vector<SimResult>& results);
+  long pairs() const { return static_cast<long>(feasible_.size() / delays_.size()); }
+  long nonMonotonePairs() const;
+
+ private:
+  bool applies_ = false;
+  GridView grid_;
+  std::vector<double> kps_, kds_, delays_;
+  std::vector<unsigned char> feasible_;  // [pair][delay]
+};
+
 // Whole-vector convenience (tests, small sweeps).
 void writeResultsCsv(const std::string& path, const SweepSpec& spec,
                      const std::vector<SimResult>& results);

@@ -38,6 +38,11 @@ struct SweepSpec {
   bool clamp_commands = false;
   Precision precision = Precision::kDouble;
   long max_delay = 0;               // largest delay of any combination [samples]
+  // How the points were made: grid (axes or a points file) or a sampling
+  // design (design.h) of `samples` points from `seed`, stored in `points`.
+  std::string design = "grid";
+  long samples = 0;
+  unsigned long long seed = 0;
 
   // A view for decoding indices; valid while this spec lives and is unchanged.
   GridView view() const {
