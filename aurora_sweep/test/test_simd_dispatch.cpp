@@ -104,7 +104,12 @@ TEST(SimdDispatch, EveryBuildThisCpuRunsAgreesWithTheScalarLoop) {
     expectAgreement(isa.key, spec, 2e-3);
     ++forced;
   }
-  EXPECT_GE(forced, 2);  // at least one SIMD build and the fallback
+  EXPECT_GE(forced, 1);  // the fallback always runs
+#if defined(__x86_64__)
+  // With SIMD builds (xsimd 8; Ubuntu 20.04's xsimd 7 has none), an SSE4.2
+  // CPU runs at least the sse4_2 one besides the fallback.
+  if (cpuBatchIsas().size() > 1 && __builtin_cpu_supports("sse4.2")) EXPECT_GE(forced, 2);
+#endif
 }
 
 TEST(SimdDispatch, AnUnknownOrUnsupportedBuildIsRefused) {
