@@ -193,16 +193,17 @@ class BatchWorker {
     }
   }
 
+  // Lane l's run as a scalar sim, assembled into its result by the runner's
+  // own rule (runnerResult).
   void finishLane(int l) {
-    aurora_control::RunnerResult r;
-    for (int i = 0; i < 4; ++i) r.ok[i] = LaneOps::get(sim_.metrics.ok[i], l);
-    r.feasible = r.ok[0] && r.ok[1] && r.ok[2] && r.ok[3];
-    r.iae = double(LaneOps::get(sim_.metrics.iae, l));
-    r.itae = double(LaneOps::get(sim_.metrics.itae, l));
-    r.iasc = double(LaneOps::get(sim_.metrics.iasc, l));
-    r.steps = LaneOps::get(count_, l) - 1;
-    for (int i = 0; i < 3; ++i) r.final_pos[i] = double(LaneOps::get(sim_.model.X[aurora_sim::kX + i], l));
-    out_[index_[l] - first_] = compactResult(r);
+    aurora_control::PositioningSim<T, bool> lane;
+    for (int i = 0; i < 4; ++i) lane.metrics.ok[i] = LaneOps::get(sim_.metrics.ok[i], l);
+    lane.metrics.iae = LaneOps::get(sim_.metrics.iae, l);
+    lane.metrics.itae = LaneOps::get(sim_.metrics.itae, l);
+    lane.metrics.iasc = LaneOps::get(sim_.metrics.iasc, l);
+    for (int i = 0; i < aurora_sim::kStateSize; ++i) lane.model.X[i] = LaneOps::get(sim_.model.X[i], l);
+    const long steps = LaneOps::get(count_, l) - 1;
+    out_[index_[l] - first_] = compactResult(aurora_control::runnerResult(lane, steps));
     progress_.fetch_add(1, std::memory_order_relaxed);
   }
 
@@ -233,8 +234,8 @@ class BatchWorker {
     }
     count_ = count_ + one;
     // Lanes whose simulation ended: the last iteration ran, or a check failed.
-    auto ended = xsimd::bool_cast(count_ - one >= I(static_cast<Int>(iterations_)));
-    if (early_stop_) ended = ended | !sim_.metrics.feasible();
+    const M ended = xsimd::bool_cast(count_ - one >= I(static_cast<Int>(iterations_))) |
+                    aurora_control::stoppedEarly(early_stop_, sim_.metrics.feasible());
     if (!xsimd::any(ended)) return;
     alignas(64) bool ended_lanes[L];
     ended.store_aligned(ended_lanes);

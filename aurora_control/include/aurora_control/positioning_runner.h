@@ -37,6 +37,27 @@ struct NoObserver {
   AURORA_HD void operator()(const Args&...) const {}
 };
 
+// The early stop, written once for the runner and the SIMD engine (masks
+// of lanes there): with early_stop, a run ends at its first failed check.
+template <typename Mask>
+AURORA_HD inline Mask stoppedEarly(bool early_stop, const Mask& feasible) {
+  return early_stop ? !feasible : (feasible & !feasible);
+}
+
+// A finished run's result (the SIMD engine builds one lane's sim and calls it).
+template <typename T>
+AURORA_HD inline RunnerResult runnerResult(const PositioningSim<T, bool>& sim, long steps) {
+  RunnerResult r;
+  for (int i = 0; i < 4; ++i) r.ok[i] = sim.metrics.ok[i];
+  r.feasible = sim.metrics.feasible();
+  r.iae = double(sim.metrics.iae);
+  r.itae = double(sim.metrics.itae);
+  r.iasc = double(sim.metrics.iasc);
+  r.steps = steps;
+  for (int i = 0; i < 3; ++i) r.final_pos[i] = double(sim.model.X[aurora_sim::kX + i]);
+  return r;
+}
+
 // One whole simulation with a history of `Capacity` samples (delay <
 // Capacity, checked by the caller). No exceptions, no allocation: this is
 // also the CUDA kernel's per-thread body. `iterations` comes from
@@ -62,17 +83,9 @@ AURORA_HD RunnerResult runPositioningCore(const aurora_sim::ArdroneParams<T>& p,
     positioningIteration(p, cfg.criteria, gains, desired, cfg.clamp_commands, xc, sim, U);
     history.push(PosVel<T>::fromState(sim.model.X));
     observe(k, sim, U, xc);
-    if (cfg.early_stop && !sim.metrics.feasible()) break;
+    if (stoppedEarly(cfg.early_stop, sim.metrics.feasible())) break;
   }
-  RunnerResult r;
-  for (int i = 0; i < 4; ++i) r.ok[i] = sim.metrics.ok[i];
-  r.feasible = sim.metrics.feasible();
-  r.iae = double(sim.metrics.iae);
-  r.itae = double(sim.metrics.itae);
-  r.iasc = double(sim.metrics.iasc);
-  r.steps = k;
-  for (int i = 0; i < 3; ++i) r.final_pos[i] = double(sim.model.X[aurora_sim::kX + i]);
-  return r;
+  return runnerResult(sim, k);
 }
 
 // Runs one simulation; `observe(k, sim, U, xc)` is called after each model
