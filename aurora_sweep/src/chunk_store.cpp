@@ -9,7 +9,7 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
-#include <sstream>
+#include <nlohmann/json.hpp>
 #include <stdexcept>
 
 namespace aurora_sweep {
@@ -50,19 +50,15 @@ bool exists(const std::string& path) {
   return stat(path.c_str(), &st) == 0;
 }
 
-std::string readAll(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
-// The definition hash a finished run recorded in its summary.json ("" if none).
+// The definition hash a finished run recorded in its summary.json ("" if none
+// or unreadable).
 std::string summaryHash(const std::string& path) {
-  const std::string text = readAll(path);
-  const std::string key = "\"definition_hash\": \"";
-  const size_t at = text.find(key);
-  return at == std::string::npos ? "" : text.substr(at + key.size(), 8);
+  std::ifstream in(path);
+  if (!in) return "";
+  const nlohmann::json summary = nlohmann::json::parse(in, nullptr, false);  // no throw: discarded if damaged
+  const bool has = summary.is_object() && summary.contains("definition_hash") &&
+                   summary["definition_hash"].is_string();
+  return has ? summary["definition_hash"].get<std::string>() : "";
 }
 
 void removeFile(const std::string& path) {
@@ -116,24 +112,25 @@ ChunkStore::ChunkStore(const std::string& out_dir, const SweepSpec& spec, const 
 
 void ChunkStore::openOrCreate(bool overwrite) {
   const std::string definition = progress_dir_ + "/definition";
+  // "HASH TOTAL CHUNK": another line is another definition, or this one in other chunks.
   const std::string mine = hashText(hash_) + " " + std::to_string(plan_.total) + " " +
-                           std::to_string(plan_.size) + "\n";
+                           std::to_string(plan_.size);
   std::string other;
   if (exists(definition)) {
-    const std::string theirs = readAll(definition);
+    std::ifstream in(definition);
+    std::string theirs;
+    std::getline(in, theirs);
     if (theirs == mine) {
       resumed_ = true;
       return;
     }
-    // "HASH TOTAL CHUNK": another definition, or the same one in other chunks
-    other = theirs.substr(0, theirs.find('\n')) + " (hash, combinations, chunk size; in progress)";
+    other = theirs + " (hash, combinations, chunk size; in progress)";
   } else {
     const std::string finished = summaryHash(out_dir_ + "/summary.json");
     if (!finished.empty() && finished != hashText(hash_)) other = finished + " (hash; finished)";
   }
   if (!other.empty() && !overwrite) {
-    throw std::runtime_error("'" + out_dir_ + "' holds another sweep (" + other + "; this one: " +
-                             mine.substr(0, mine.size() - 1) +
+    throw std::runtime_error("'" + out_dir_ + "' holds another sweep (" + other + "; this one: " + mine +
                              "): choose another --out, or give --overwrite to replace it");
   }
   // A fresh run: nothing of an earlier one may stay beside the new results.
@@ -142,7 +139,7 @@ void ChunkStore::openOrCreate(bool overwrite) {
   if (mkdir(progress_dir_.c_str(), 0755) != 0) {
     throw std::runtime_error("cannot create '" + progress_dir_ + "': " + std::strerror(errno));
   }
-  std::ofstream(definition) << mine;
+  std::ofstream(definition) << mine << "\n";
 }
 
 std::string ChunkStore::chunkPath(long chunk) const {
@@ -156,6 +153,12 @@ bool ChunkStore::done(long chunk) const { return exists(chunkPath(chunk)); }
 long ChunkStore::doneCount() const {
   long n = 0;
   for (long c = 0; c < plan_.count(); ++c) n += done(c);
+  return n;
+}
+
+long ChunkStore::doneCombinations() const {
+  long n = 0;
+  for (long c = 0; c < plan_.count(); ++c) n += done(c) ? plan_.end(c) - plan_.begin(c) : 0;
   return n;
 }
 

@@ -452,8 +452,7 @@ int runSweep(int argc, char** argv, const Options& opt, MpiRanks* mpi) {
   const std::unique_ptr<ChunkStore> store = openStore(opt, spec, mpi);
   if (!store) return 2;
   const ChunkPlan& plan = store->plan();
-  Progress progress{0};
-  for (long c = 0; c < plan.count(); ++c) progress += store->done(c) ? plan.end(c) - plan.begin(c) : 0;
+  Progress progress{store->doneCombinations()};
   const bool lead = !mpi || mpi->rank() == 0;
   if (lead) {
     std::fprintf(stderr, "sweep: %s: %ld combinations in %ld chunks, backend %s, %s precision%s%s%s\n",

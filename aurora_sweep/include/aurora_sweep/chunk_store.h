@@ -47,6 +47,7 @@ class ChunkStore {
   uint32_t hash() const { return hash_; }
   bool done(long chunk) const;
   long doneCount() const;
+  long doneCombinations() const;  // combinations in the chunks already done
   // Atomic: a temporary file renamed into place. Throws std::runtime_error.
   void write(long chunk, const std::vector<SimResult>& results) const;
   // Throws std::runtime_error when the chunk file is missing or damaged.
