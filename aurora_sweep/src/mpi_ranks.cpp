@@ -47,10 +47,6 @@ const char* env(const char* name) {
 
 }  // namespace
 
-bool MpiRanks::launchedByMpi() {
-  return env("OMPI_COMM_WORLD_SIZE") || env("PMI_SIZE") || env("PMIX_RANK") || env("SLURM_STEP_NUM_TASKS");
-}
-
 bool MpiRanks::compiledIn() { return true; }
 
 MpiRanks::MpiRanks(int* argc, char*** argv) {

@@ -7,6 +7,7 @@
 // the result is the single-process one byte for byte.
 #pragma once
 
+#include <cstdlib>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -17,8 +18,16 @@ namespace aurora_sweep {
 
 class MpiRanks {
  public:
-  // True when this process was started as an MPI rank (mpirun, srun).
-  static bool launchedByMpi();
+  // True when this process was started as an MPI rank (mpirun, srun): the
+  // launchers' environment, so a plain run never initialises MPI. The same
+  // rule with or without MPI built in (the stub refuses such a launch).
+  static bool launchedByMpi() {
+    for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_RANK", "SLURM_STEP_NUM_TASKS"}) {
+      const char* v = std::getenv(name);
+      if (v && *v) return true;
+    }
+    return false;
+  }
   static bool compiledIn();
 
   // MPI_Init; throws std::runtime_error when this build has no MPI.

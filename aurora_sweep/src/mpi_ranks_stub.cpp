@@ -1,19 +1,10 @@
 // Built where MPI is not found: a sweep started by mpirun is refused (every
 // rank would otherwise run the whole sweep into the same folder).
-#include <cstdlib>
 #include <stdexcept>
 
 #include "mpi_ranks.h"
 
 namespace aurora_sweep {
-
-bool MpiRanks::launchedByMpi() {
-  for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_RANK", "SLURM_STEP_NUM_TASKS"}) {
-    const char* v = std::getenv(name);
-    if (v && *v) return true;
-  }
-  return false;
-}
 
 bool MpiRanks::compiledIn() { return false; }
 
