@@ -62,6 +62,7 @@ ControllerNode::ControllerNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
   lockstep_control_subscribers_ = static_cast<int>(
       rangedParam(pnh_, "lockstep_subscribers/control", 0, 0, 100, "(subscribers of control)"));
   task_ = loadTask(pnh_);
+  task_iterations_ = studyIterationCount(task_.duration(), Ts_);
   refuseDelayBeyondTheTask(set.delay);
   refuseUnknownTopLevelKeys();
   safety_ = loadSafetyConfig(pnh_);
@@ -113,11 +114,10 @@ ControllerNode::ControllerNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
 }
 
 void ControllerNode::refuseDelayBeyondTheTask(long delay) const {
-  const long iterations = studyIterationCount(task_.duration(), Ts_);
-  if (delayShorterThanRun(delay, iterations)) return;
+  if (delayShorterThanRun(delay, task_iterations_)) return;
   const std::string key = pnh_.hasParam("delay/seconds") ? "delay/seconds" : "delay/samples";
   throw ParameterError("parameter '" + fullKey(pnh_, key) + "' = " +
-                       delayRunText(delay, iterations, Ts_));
+                       delayRunText(delay, task_iterations_, Ts_));
 }
 
 void ControllerNode::refuseUnknownTopLevelKeys() {
@@ -171,11 +171,10 @@ void ControllerNode::onReconfigure(ControllerConfig& config, uint32_t) {
   next.gains.kp = config.kp;
   next.gains.kd = config.kd;
   next.delay = config.delay_samples;
-  const long iterations = studyIterationCount(task_.duration(), Ts_);
-  if (!delayShorterThanRun(next.delay, iterations)) {
+  if (!delayShorterThanRun(next.delay, task_iterations_)) {
     // Refused as at start-up (limits.h); the server shows the delay kept.
     ROS_ERROR("controller: delay_samples %ld refused: %s; keeping %ld samples", next.delay,
-              delayRunText(next.delay, iterations, Ts_).c_str(), set.delay);
+              delayRunText(next.delay, task_iterations_, Ts_).c_str(), set.delay);
     next.delay = set.delay;
     config.delay_samples = static_cast<int>(set.delay);
   }

@@ -65,6 +65,7 @@ class ControllerNode {
   int lockstep_cmd_subscribers_ = 1;      // lockstep: subscribers of cmd_vel before the first step
   int lockstep_control_subscribers_ = 0;  // ... and of control
   Task<double> task_;
+  long task_iterations_ = 0;  // the task's iteration count: a delay must be shorter
 
   std::unique_ptr<Core> core_;     // delay buffer, law, clamp, metrics (ROS-free)
   FlightSupervisor supervisor_;    // flight sequence and watchdogs (ROS-free)

@@ -248,6 +248,10 @@ int main(int argc, char** argv) {
     std::fprintf(csv, "step,recorded_u1,recorded_u2,recorded_u3,recorded_u4,replayed_u1,replayed_u2,"
                       "replayed_u3,replayed_u4,max_abs_diff\n");
   }
+  // The recorded task's length (Control.task_duration; one task per bag, as
+  // the report assumes) bounds the delay as in the node and the sweep.
+  const aurora_msgs::Control& recorded = controls.front();
+  const long iterations = studyIterationCount(recorded.task_duration, recorded.sample_time);
   long identical = 0, cycles = 0, missing = 0;
   double max_diff = 0.0;
   long next_step = states.begin()->first;
@@ -281,10 +285,7 @@ int main(int argc, char** argv) {
       fail("--delay-seconds " + std::to_string(o.delay_seconds_value) + " is " + std::to_string(set.delay) +
            " samples of " + std::to_string(c.sample_time) + " s: accepted " + delayRangeText());
     }
-    // The recorded task's length (Control.task_duration) bounds the delay as
-    // in the node and the sweep (limits.h).
-    const long iterations = studyIterationCount(c.task_duration, c.sample_time);
-    if (c.task_duration > 0.0 && !delayShorterThanRun(set.delay, iterations)) {
+    if (recorded.task_duration > 0.0 && !delayShorterThanRun(set.delay, iterations)) {
       fail(std::string(o.delay ? "--delay" : o.delay_seconds ? "--delay-seconds" : "the recorded delay") +
            ": " + delayRunText(set.delay, iterations, c.sample_time));
     }
