@@ -4,6 +4,7 @@
 #include <hdf5.h>
 
 #include <cstdint>
+#include <cstring>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -26,6 +27,7 @@ struct Column {
   hid_t type;      // memory and file type (native)
   size_t size;     // bytes per value
   hid_t dataset = -1;
+  std::vector<unsigned char> buffer;  // rows not written yet, `size` bytes each
 };
 
 class Hdf5Writer : public ResultsWriter {
@@ -53,7 +55,7 @@ class Hdf5Writer : public ResultsWriter {
     }
     H5Pclose(props);
     H5Sclose(space);
-    reserve(kFlushRows + (1 << 18));  // a flush's rows plus one sweep chunk: no reallocation
+    for (Column& c : columns_) c.buffer.reserve((kFlushRows + (1 << 18)) * c.size);  // a flush plus a chunk
     writeAttribute("definition_hash", hashText(definitionHash(spec)));
     writeAttribute("sweep", spec.name);
   }
@@ -62,7 +64,7 @@ class Hdf5Writer : public ResultsWriter {
 
   void append(long first, const std::vector<SimResult>& results) override {
     fillColumns(first, results);
-    if (index_.size() >= kFlushRows) flush();
+    if (buffered_ >= kFlushRows) flush();
   }
 
   void close() override {
@@ -71,55 +73,55 @@ class Hdf5Writer : public ResultsWriter {
     if (!ok) throw std::runtime_error("cannot finish writing '" + path_ + "' (HDF5)");
   }
 
-  long rows() const override { return rows_ + static_cast<long>(index_.size()); }
+  long rows() const override { return rows_ + static_cast<long>(buffered_); }
 
  private:
   // Writes the buffered rows at the end of every column, then empties them.
   void flush() {
-    const hsize_t n = static_cast<hsize_t>(index_.size());
+    const hsize_t n = static_cast<hsize_t>(buffered_);
     if (n == 0) return;
     const hsize_t offset = static_cast<hsize_t>(rows_), total = offset + n;
-    const void* data[] = {index_.data(), kp_.data(), kd_.data(), delay_.data(), ok_[0].data(),
-                          ok_[1].data(), ok_[2].data(), ok_[3].data(), ok_[4].data(), iae_.data(),
-                          itae_.data(), iasc_.data(), steps_.data(), pos_[0].data(), pos_[1].data(),
-                          pos_[2].data()};
-    for (size_t k = 0; k < columns_.size(); ++k) {
-      const hid_t d = columns_[k].dataset;
-      bool ok = H5Dset_extent(d, &total) >= 0;
-      const hid_t file_space = H5Dget_space(d);
+    for (Column& c : columns_) {
+      if (c.buffer.size() != n * c.size) {  // fillColumns put a value of another width here
+        throw std::logic_error("column '" + std::string(c.name) + "' holds " + std::to_string(c.buffer.size()) +
+                               " bytes for " + std::to_string(n) + " rows");
+      }
+      bool ok = H5Dset_extent(c.dataset, &total) >= 0;
+      const hid_t file_space = H5Dget_space(c.dataset);
       ok = ok && H5Sselect_hyperslab(file_space, H5S_SELECT_SET, &offset, nullptr, &n, nullptr) >= 0;
       const hid_t mem_space = H5Screate_simple(1, &n, nullptr);
-      ok = ok && H5Dwrite(d, columns_[k].type, mem_space, file_space, H5P_DEFAULT, data[k]) >= 0;
+      ok = ok && H5Dwrite(c.dataset, c.type, mem_space, file_space, H5P_DEFAULT, c.buffer.data()) >= 0;
       H5Sclose(mem_space);
       H5Sclose(file_space);
-      if (!ok) throw std::runtime_error("cannot write column '" + std::string(columns_[k].name) + "' of '" + path_ + "'");
+      if (!ok) throw std::runtime_error("cannot write column '" + std::string(c.name) + "' of '" + path_ + "'");
+      c.buffer.clear();
     }
     rows_ += static_cast<long>(n);
-    index_.clear(), kp_.clear(), kd_.clear(), delay_.clear(), iae_.clear(), itae_.clear(), iasc_.clear();
-    steps_.clear();
-    for (auto& o : ok_) o.clear();
-    for (auto& p : pos_) p.clear();
+    buffered_ = 0;
   }
 
-  void reserve(size_t n) {
-    index_.reserve(n), kp_.reserve(n), kd_.reserve(n), delay_.reserve(n), iae_.reserve(n);
-    itae_.reserve(n), iasc_.reserve(n), steps_.reserve(n);
-    for (auto& o : ok_) o.reserve(n);
-    for (auto& p : pos_) p.reserve(n);
+  // Row `row`'s value of column k (its native type, as declared).
+  template <typename V>
+  void put(size_t k, size_t row, V value) {
+    std::memcpy(&columns_[k].buffer[row * sizeof value], &value, sizeof value);
   }
 
-  // Appends the rows of one sweep chunk to the column buffers.
+  // Appends the rows of one sweep chunk, in the columns' order: the buffers
+  // grow once per chunk, then shrink to the rows kept.
   void fillColumns(long first, const std::vector<SimResult>& results) {
+    for (Column& c : columns_) c.buffer.resize((buffered_ + results.size()) * c.size);
     for (size_t i = 0; i < results.size(); ++i) {
       const SimResult& r = results[i];
       if (feasible_only_ && !((r.ok >> 4) & 1)) continue;
       const long index = first + static_cast<long>(i);
       const Combination c = grid_.decode(index);
-      index_.push_back(index), kp_.push_back(c.kp), kd_.push_back(c.kd), delay_.push_back(c.delay);
-      for (int k = 0; k < 5; ++k) ok_[k].push_back(static_cast<uint8_t>((r.ok >> k) & 1));
-      iae_.push_back(r.iae), itae_.push_back(r.itae), iasc_.push_back(r.iasc), steps_.push_back(r.steps);
-      for (int k = 0; k < 3; ++k) pos_[k].push_back(r.final_pos[k]);
+      const size_t row = buffered_++;
+      put(0, row, int64_t(index)), put(1, row, c.kp), put(2, row, c.kd), put(3, row, int64_t(c.delay));
+      for (int k = 0; k < 5; ++k) put(4 + k, row, static_cast<uint8_t>((r.ok >> k) & 1));
+      put(9, row, r.iae), put(10, row, r.itae), put(11, row, r.iasc), put(12, row, int32_t(r.steps));
+      for (int k = 0; k < 3; ++k) put(13 + k, row, r.final_pos[k]);
     }
+    for (Column& c : columns_) c.buffer.resize(buffered_ * c.size);
   }
 
   void writeAttribute(const char* name, const std::string& value) {
@@ -149,12 +151,8 @@ class Hdf5Writer : public ResultsWriter {
   bool feasible_only_;
   hid_t file_ = -1;
   std::vector<Column> columns_;
-  long rows_ = 0;
-  std::vector<int64_t> index_, delay_;
-  std::vector<double> kp_, kd_, iae_, itae_, iasc_;
-  std::vector<int32_t> steps_;
-  std::vector<uint8_t> ok_[5];
-  std::vector<float> pos_[3];
+  long rows_ = 0;        // written
+  size_t buffered_ = 0;  // in the column buffers
 };
 
 }  // namespace
