@@ -80,7 +80,7 @@ TEST(Runner, ClampOptionBoundsCommands) {
   double max_abs = 0.0;
   runPositioning(p, cfg, PdGains<double>{0.75, 1.0}, 10,
                  [&](long, const PositioningSim<double, bool>&, const double* U,
-                     const PosVel<double>&) {
+                     const double*) {
                    for (int i = 0; i < 4; ++i) max_abs = std::max(max_abs, std::fabs(U[i]));
                  });
   EXPECT_LE(max_abs, 1.0);

@@ -21,11 +21,11 @@ void check(cudaError_t err, const char* what) {
   }
 }
 
-template <typename T, int Capacity>
+template <aurora_control::LawType Law, typename T, int Capacity>
 __global__ void sweepKernel(SimSetup<T> setup, GridView grid, long first, long n, SimResult* out) {
   const long i = static_cast<long>(blockIdx.x) * blockDim.x + threadIdx.x;
   if (i >= n) return;
-  out[i] = simulateCombination<T, Capacity>(setup, grid, first + i);  // the spec's range
+  out[i] = simulateCombination<Law, T, Capacity>(setup, grid, first + i);  // the spec's range
 }
 
 // Device copies of the per-axis values (not a table of combinations).
@@ -44,7 +44,7 @@ struct DeviceGrid {
   }
 };
 
-template <typename T, int Capacity>
+template <aurora_control::LawType Law, typename T, int Capacity>
 CudaRun launch(const SweepSpec& spec, int block_size, std::vector<SimResult>& out) {
   using Clock = std::chrono::steady_clock;
   const auto t0 = Clock::now();
@@ -54,12 +54,12 @@ CudaRun launch(const SweepSpec& spec, int block_size, std::vector<SimResult>& ou
   DeviceGrid grid;
   grid.view = host;
   for (int a = 0; a < host.n_axes; ++a) grid.view.values[a] = grid.upload(host.values[a], host.count[a]);
-  if (host.n_points > 0) grid.view.points = grid.upload(host.points, 3 * host.n_points);
+  if (host.n_points > 0) grid.view.points = grid.upload(host.points, static_cast<size_t>(host.point_cols) * host.n_points);
 
   CudaRun run;
   if (block_size <= 0) {
     int min_grid = 0;
-    check(cudaOccupancyMaxPotentialBlockSize(&min_grid, &block_size, sweepKernel<T, Capacity>),
+    check(cudaOccupancyMaxPotentialBlockSize(&min_grid, &block_size, sweepKernel<Law, T, Capacity>),
           "cudaOccupancyMaxPotentialBlockSize");
   }
   run.block_size = block_size;
@@ -70,7 +70,7 @@ CudaRun launch(const SweepSpec& spec, int block_size, std::vector<SimResult>& ou
   check(cudaEventCreate(&start), "cudaEventCreate");
   check(cudaEventCreate(&stop), "cudaEventCreate");
   check(cudaEventRecord(start), "cudaEventRecord");
-  sweepKernel<T, Capacity><<<static_cast<unsigned>(run.grid_size), block_size>>>(setup, grid.view, first, n, dev_out);
+  sweepKernel<Law, T, Capacity><<<static_cast<unsigned>(run.grid_size), block_size>>>(setup, grid.view, first, n, dev_out);
   check(cudaGetLastError(), "kernel launch");
   check(cudaEventRecord(stop), "cudaEventRecord");
   check(cudaEventSynchronize(stop), "kernel");
@@ -89,8 +89,13 @@ CudaRun launch(const SweepSpec& spec, int block_size, std::vector<SimResult>& ou
 
 template <typename T>
 CudaRun launchPrecision(const SweepSpec& spec, int block_size, std::vector<SimResult>& out) {
-  if (spec.max_delay < 64) return launch<T, 64>(spec, block_size, out);
-  return launch<T, 512>(spec, block_size, out);  // cudaMaxDelay() is checked by runCuda
+  CudaRun run;
+  aurora_control::withLaw(spec.law, [&](auto law) {
+    constexpr aurora_control::LawType kLaw = decltype(law)::value;
+    run = spec.max_delay < 64 ? launch<kLaw, T, 64>(spec, block_size, out)
+                              : launch<kLaw, T, 512>(spec, block_size, out);  // runCuda checks cudaMaxDelay()
+  });
+  return run;
 }
 
 }  // namespace

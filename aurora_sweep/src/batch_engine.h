@@ -93,7 +93,7 @@ struct Lanes {
   }
 };
 
-template <typename T, class Arch, int Capacity>
+template <typename T, class Arch, int Capacity, aurora_control::LawType Law>
 class BatchWorker {
  public:
   using LaneOps = Lanes<T, Arch>;
@@ -104,25 +104,23 @@ class BatchWorker {
   // the per-lane history indices: gathers and scatters instead of lane loops.
   using Int = xsimd::as_integer_t<T>;
   using I = xsimd::batch<Int, typename LaneOps::Arch>;
+  // What the history keeps of a state: what the law reads (6 or 12).
+  using Input = aurora_control::LawInput<Law>;
+  static constexpr int W = Input::kWidth;
   static_assert((Capacity & (Capacity - 1)) == 0, "history capacity must be a power of two");
 
   BatchWorker(const SweepSpec& spec, std::vector<SimResult>& out, std::atomic<long>& next,
               Progress& progress)
       : grid_(spec.view()), first_(spec.rangeBegin()), total_(spec.rangeEnd()), out_(out), next_(next),
-        progress_(progress) {
-    const SimSetup<T> scalar = makeSetup<T>(spec);
-    params_ = scalar.params.template cast<B>();
-    criteria_ = scalar.config.criteria.template cast<B>();
-    clamp_ = spec.clamp_commands;
-    early_stop_ = spec.early_stop;
-    iterations_ = scalar.iterations;
-    for (int i = 0; i < 3; ++i) {
-      desired_[i] = B(T(spec.desired[i]));
-      desired_scalar_[i] = T(spec.desired[i]);
-    }
-    fresh_.reset(desired_scalar_);  // the initial state every lane starts from
-    sim_.reset(desired_);
-    history_.resize(static_cast<size_t>(Capacity) * 6 * L);
+        progress_(progress), setup_(makeSetup<T>(spec)) {
+    model_ = setup_.model.template cast<B>();
+    plant_ = model_;  // per lane when the model varies (startLane)
+    criteria_ = setup_.config.criteria.template cast<B>();
+    fresh_.reset(setup_.config.task.at(T(0)).pos);  // the initial state every lane starts from
+    B start[3];
+    for (int i = 0; i < 3; ++i) start[i] = B(fresh_.model.X[aurora_sim::kX + i]);
+    sim_.reset(start);
+    history_.resize(static_cast<size_t>(Capacity) * W * L);
     alignas(64) Int iota[L];
     for (int l = 0; l < L; ++l) iota[l] = static_cast<Int>(l);
     lane_ = I::load_aligned(iota);
@@ -139,7 +137,7 @@ class BatchWorker {
   }
 
  private:
-  T& hist(long slot, int j, int lane) { return history_[(slot * 6 + j) * L + lane]; }
+  T& hist(long slot, int j, int lane) { return history_[(slot * W + j) * L + lane]; }
 
   bool takeIndex(long& index) {
     if (chunk_next_ >= chunk_end_) {
@@ -158,39 +156,41 @@ class BatchWorker {
     return false;
   }
 
-  // Puts the next combination into lane l (or leaves it idle at the initial
-  // state with zero gains when the work is done).
+  // Lane `lane` of every field of a struct of batches set from the struct of
+  // scalars (gains, model parameters, the law's memory: structs of T only).
+  template <template <class> class S>
+  static void setLane(S<B>& batches, int lane, const S<T>& scalars) {
+    constexpr size_t n = sizeof(S<T>) / sizeof(T);
+    static_assert(sizeof(S<T>) == n * sizeof(T) && sizeof(S<B>) == n * sizeof(B), "a struct of T only");
+    B* to = reinterpret_cast<B*>(&batches);
+    const T* from = reinterpret_cast<const T*>(&scalars);
+    for (size_t i = 0; i < n; ++i) LaneOps::set(to[i], lane, from[i]);
+  }
+
+  // Puts the next combination into lane l (or leaves it idle, rerunning the
+  // range's first combination, when the work is done).
   void startLane(int l) {
-    long index = 0;
+    long index = first_;
     const bool have = takeIndex(index);
-    const Combination c = have ? grid_.decode(index) : Combination{0.0, 0.0, 0};
+    const aurora_control::StudyRun<T> run = studyRun(setup_, grid_.decode(have ? index : first_));
     active_[l] = have;
     index_[l] = index;
-    LaneOps::set(delay_, l, static_cast<Int>(c.delay));
+    LaneOps::set(delay_, l, static_cast<Int>(run.delay));
     LaneOps::set(count_, l, 1);  // history holds H(1) ...
     LaneOps::set(start_, l, static_cast<Int>(step_ % Capacity));  // ... at ring slot `step_`
-    LaneOps::set(kp_, l, T(c.kp));
-    LaneOps::set(kd_, l, T(c.kd));
-    auto& m = sim_.model;
-    for (int i = 0; i < aurora_sim::kStateSize; ++i) LaneOps::set(m.X[i], l, fresh_.model.X[i]);
-    for (int i = 0; i < 4; ++i) {
-      LaneOps::set(m.Xa[i], l, fresh_.model.Xa[i]);
-      LaneOps::set(m.Xr[i], l, fresh_.model.Xr[i]);
-      LaneOps::set(m.Xra[i], l, fresh_.model.Xra[i]);
-      LaneOps::set(m.W[i], l, fresh_.model.W[i]);
-      LaneOps::set(sim_.metrics.ok[i], l, true);
-    }
+    setLane(gains_, l, run.gains);
+    if (setup_.varies_model) setLane(plant_, l, run.plant);
+    setLane(sim_.model, l, fresh_.model);
+    setLane(sim_.memory, l, fresh_.memory);
+    for (int i = 0; i < 4; ++i) LaneOps::set(sim_.metrics.ok[i], l, true);
     LaneOps::set(sim_.metrics.iae, l, T(0));
     LaneOps::set(sim_.metrics.itae, l, T(0));
     LaneOps::set(sim_.metrics.iasc, l, T(0));
     LaneOps::set(sim_.t, l, T(0));
     LaneOps::set(sim_.initial_error, l, fresh_.initial_error);
-    const auto h0 = aurora_control::PosVel<T>::fromState(fresh_.model.X);
+    const auto h0 = aurora_control::LawSample<T, Law>::fromState(fresh_.model.X);
     const long slot = step_ % Capacity;
-    for (int j = 0; j < 3; ++j) {
-      hist(slot, j, l) = h0.pos[j];
-      hist(slot, 3 + j, l) = h0.vel[j];
-    }
+    for (int j = 0; j < W; ++j) hist(slot, j, l) = h0.v[j];
   }
 
   // Lane l's run as a scalar sim, assembled into its result by the runner's
@@ -215,27 +215,26 @@ class BatchWorker {
     const I one(Int(1));
     const I mask(Int(Capacity - 1));
     const I index = aurora_control::delayedHistoryIndex(count_, delay_);  // 1-based
-    const I read_base = ((start_ + index - one) & mask) * I(Int(6 * L)) + lane_;
-    aurora_control::PosVel<B> xc;
-    for (int j = 0; j < 3; ++j) {
-      xc.pos[j] = gatherLanes<B>(history_.data(), read_base + I(Int(j * L)));
-      xc.vel[j] = gatherLanes<B>(history_.data(), read_base + I(Int((3 + j) * L)));
-    }
+    const I read_base = ((start_ + index - one) & mask) * I(Int(W * L)) + lane_;
+    aurora_control::LawSample<B, Law> delayed;
+    for (int j = 0; j < W; ++j) delayed.v[j] = gatherLanes<B>(history_.data(), read_base + I(Int(j * L)));
+    B xc[aurora_sim::kStateSize];
+    delayed.toState(xc);
+    // The task's reference at each lane's own time (k - 1) Ts (runner: timeOfStep).
+    const B t = xsimd::batch_cast<T>(count_ - one) * B(setup_.model.Ts);
+    const aurora_control::Reference<B> ref = setup_.config.task.at(t);
     // Steps 2-5, the shared iteration.
-    const aurora_control::PdGains<B> gains{kp_, kd_};
     B U[4];
-    aurora_control::positioningIteration(params_, criteria_, gains, desired_, clamp_, xc, sim_, U);
+    aurora_control::positioningIteration<Law>(plant_, model_, criteria_, gains_, ref,
+                                              setup_.config.clamp_commands, xc, sim_, U);
     // Step 6: append X to every lane's history, H(count + 1) at slot step_ + 1.
     ++step_;
     const long slot = step_ % Capacity;
-    for (int j = 0; j < 3; ++j) {
-      sim_.model.X[aurora_sim::kX + j].store_aligned(&hist(slot, j, 0));
-      sim_.model.X[aurora_sim::kVx + j].store_aligned(&hist(slot, 3 + j, 0));
-    }
+    for (int j = 0; j < W; ++j) sim_.model.X[Input::state(j)].store_aligned(&hist(slot, j, 0));
     count_ = count_ + one;
     // Lanes whose simulation ended: the last iteration ran, or a check failed.
-    const M ended = xsimd::bool_cast(count_ - one >= I(static_cast<Int>(iterations_))) |
-                    aurora_control::stoppedEarly(early_stop_, sim_.metrics.feasible());
+    const M ended = xsimd::bool_cast(count_ - one >= I(static_cast<Int>(setup_.iterations))) |
+                    aurora_control::stoppedEarly(setup_.config.early_stop, sim_.metrics.feasible());
     if (!xsimd::any(ended)) return;
     alignas(64) bool ended_lanes[L];
     ended.store_aligned(ended_lanes);
@@ -255,16 +254,14 @@ class BatchWorker {
   Progress& progress_;
   long chunk_next_ = 0, chunk_end_ = 0;
 
-  aurora_sim::ArdroneParams<B> params_;
+  const SimSetup<T> setup_;
+  aurora_sim::ArdroneParams<B> model_;  // nominal: what the underactuated law inverts
+  aurora_sim::ArdroneParams<B> plant_;  // each lane's simulated drone
   aurora_control::FeasibilityCriteria<B> criteria_;
-  bool clamp_ = false, early_stop_ = true;
-  long iterations_ = 0;
-  B desired_[3];
-  T desired_scalar_[3];
+  aurora_control::LawGains<B> gains_;
   aurora_control::PositioningSim<T, bool> fresh_;
   aurora_control::PositioningSim<B, M> sim_;
-  B kp_ = B(T(0)), kd_ = B(T(0));
-  std::vector<T, xsimd::aligned_allocator<T, 64>> history_;  // [slot][6][lane]
+  std::vector<T, xsimd::aligned_allocator<T, 64>> history_;  // [slot][W][lane]
   bool active_[L];
   long index_[L];
   I delay_ = I(Int(0));  // delay of each lane [samples]
@@ -274,14 +271,14 @@ class BatchWorker {
   long step_ = 0;        // batch steps done: the ring slot written last
 };
 
-template <typename T, class Arch, int Capacity>
+template <typename T, class Arch, int Capacity, aurora_control::LawType Law>
 void runBatchWith(const SweepSpec& spec, int threads, std::vector<SimResult>& out,
                   Progress& progress) {
   out.resize(spec.rangeSize());
   std::atomic<long> next{spec.rangeBegin()};
   std::vector<std::thread> pool;
   for (int t = 0; t < threads; ++t) {
-    pool.emplace_back([&] { BatchWorker<T, Arch, Capacity>(spec, out, next, progress).run(); });
+    pool.emplace_back([&] { BatchWorker<T, Arch, Capacity, Law>(spec, out, next, progress).run(); });
   }
   for (auto& th : pool) th.join();
 }
@@ -292,13 +289,9 @@ void runBatchWith(const SweepSpec& spec, int threads, std::vector<SimResult>& ou
 template <class Arch>
 void runBatchArch(const SweepSpec& spec, int threads, std::vector<SimResult>& out,
                   Progress& progress) {
-  aurora_control::withHistoryCapacity(spec.max_delay, [&](auto capacity) {
-    constexpr int kCapacity = decltype(capacity)::value;
-    if (spec.precision == Precision::kDouble) {
-      runBatchWith<double, Arch, kCapacity>(spec, threads, out, progress);
-    } else {
-      runBatchWith<float, Arch, kCapacity>(spec, threads, out, progress);
-    }
+  withSweepTypes(spec, [&](auto type, auto capacity, auto law) {
+    runBatchWith<decltype(type), Arch, decltype(capacity)::value, decltype(law)::value>(spec, threads, out,
+                                                                                      progress);
   });
 }
 

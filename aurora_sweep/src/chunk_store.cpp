@@ -67,16 +67,36 @@ void removeFile(const std::string& path) {
   }
 }
 
+// The task's defining values only (a waypoint task leaves the trajectory's
+// fields unset).
+void addTask(Crc& crc, const aurora_control::Task<double>& task) {
+  crc.add(static_cast<int>(task.type));
+  if (task.isTrajectory()) {
+    const auto& t = task.trajectory;
+    crc.add(static_cast<int>(t.kind));
+    for (double v : {t.centre[0], t.centre[1], t.centre[2], t.size[0], t.size[1], t.period, t.yaw}) crc.add(v);
+    crc.add(t.laps);
+    crc.add(t.yaw_along_path);
+    return;
+  }
+  const auto& w = task.waypoints;
+  crc.add(w.count);
+  for (int i = 0; i < w.count; ++i) {
+    for (int j = 0; j < 3; ++j) crc.add(w.position[i][j]);
+    crc.add(w.end_time[i]);
+  }
+  crc.add(w.duration);
+}
+
 }  // namespace
 
 uint32_t definitionHash(const SweepSpec& spec) {
   static_assert(sizeof(spec.vehicle) % sizeof(double) == 0, "vehicle constants are doubles");
   Crc crc;
-  crc.add(std::string("aurora_sweep definition v1"));
+  crc.add(std::string("aurora_sweep definition v2"));
   crc.add(spec.controller);
   crc.add(spec.vehicle);
-  for (double d : spec.desired) crc.add(d);
-  crc.add(spec.duration);
+  addTask(crc, spec.task);
   crc.add(spec.criteria);
   for (const Axis& a : spec.axes) {
     crc.add(static_cast<int>(a.param));
@@ -84,6 +104,7 @@ uint32_t definitionHash(const SweepSpec& spec) {
   }
   for (double f : spec.fixed) crc.add(f);
   crc.add(spec.points);
+  for (int p : spec.point_params) crc.add(p);
   crc.add(spec.early_stop);
   crc.add(spec.clamp_commands);
   crc.add(static_cast<int>(spec.precision));

@@ -23,10 +23,12 @@ std::string readFile(const std::string& path) {
 class CsvWriter : public ResultsWriter {
  public:
   CsvWriter(const std::string& path, const SweepSpec& spec, bool feasible_only)
-      : path_(path), grid_(spec.view()), feasible_only_(feasible_only) {
+      : path_(path), grid_(spec.view()), params_(spec.columns()), feasible_only_(feasible_only) {
     f_ = std::fopen(path.c_str(), "w");
     if (!f_) throw std::runtime_error("cannot write '" + path + "'");
-    std::fprintf(f_, "index,kp,kd,delay,ok1,ok2,ok3,ok4,feasible,iae,itae,iasc,steps,x,y,z\n");
+    std::fprintf(f_, "index");
+    for (int id : params_) std::fprintf(f_, ",%s", paramName(id));
+    std::fprintf(f_, ",ok1,ok2,ok3,ok4,feasible,iae,itae,iasc,steps,x,y,z\n");
   }
   ~CsvWriter() override {
     if (f_) std::fclose(f_);
@@ -37,8 +39,12 @@ class CsvWriter : public ResultsWriter {
       if (feasible_only_ && !((r.ok >> 4) & 1)) continue;
       const long index = first + static_cast<long>(i);
       const Combination c = grid_.decode(index);
-      std::fprintf(f_, "%ld,%.17g,%.17g,%ld,%d,%d,%d,%d,%d,%.17g,%.17g,%.17g,%d,%.9g,%.9g,%.9g\n", index,
-                   c.kp, c.kd, c.delay, r.ok & 1, (r.ok >> 1) & 1, (r.ok >> 2) & 1, (r.ok >> 3) & 1,
+      std::fprintf(f_, "%ld", index);
+      for (int id : params_) {
+        if (id == kParamDelay) std::fprintf(f_, ",%ld", c.delay());
+        else std::fprintf(f_, ",%.17g", c.v[id]);
+      }
+      std::fprintf(f_, ",%d,%d,%d,%d,%d,%.17g,%.17g,%.17g,%d,%.9g,%.9g,%.9g\n", r.ok & 1, (r.ok >> 1) & 1, (r.ok >> 2) & 1, (r.ok >> 3) & 1,
                    (r.ok >> 4) & 1, r.iae, r.itae, r.iasc, r.steps, r.final_pos[0], r.final_pos[1],
                    r.final_pos[2]);
       ++rows_;
@@ -54,6 +60,7 @@ class CsvWriter : public ResultsWriter {
  private:
   std::string path_;
   GridView grid_;
+  std::vector<int> params_;  // ParamIds of the parameter columns
   bool feasible_only_;
   FILE* f_ = nullptr;
   long rows_ = 0;
@@ -62,7 +69,11 @@ class CsvWriter : public ResultsWriter {
 }  // namespace
 
 DelayMonotony::DelayMonotony(const SweepSpec& spec) : grid_(spec.view()) {
+  // Applies to grids of exactly the axes kp, kd and delay.
   if (!spec.points.empty() || spec.axes.size() != 3) return;
+  for (const Axis& a : spec.axes) {
+    if (a.param != kParamKp && a.param != kParamKd && a.param != kParamDelay) return;
+  }
   for (const Axis& a : spec.axes) {
     std::vector<double>& v = a.param == kParamKp ? kps_ : a.param == kParamKd ? kds_ : delays_;
     v = a.values;
@@ -79,8 +90,8 @@ void DelayMonotony::add(long first, const std::vector<SimResult>& results) {
   };
   for (size_t i = 0; i < results.size(); ++i) {
     const Combination c = grid_.decode(first + static_cast<long>(i));
-    const size_t pair = at(kps_, c.kp) * kds_.size() + at(kds_, c.kd);
-    feasible_[pair * delays_.size() + at(delays_, double(c.delay))] = (results[i].ok >> 4) & 1;
+    const size_t pair = at(kps_, c.v[kParamKp]) * kds_.size() + at(kds_, c.v[kParamKd]);
+    feasible_[pair * delays_.size() + at(delays_, c.v[kParamDelay])] = (results[i].ok >> 4) & 1;
   }
 }
 
@@ -140,6 +151,12 @@ void writeSummaryJson(const std::string& path, const SweepSpec& spec, const RunI
   const double steps_per_s = info.wall_time_s > 0 ? steps / info.wall_time_s : 0;
   json order = json::array();
   for (const Axis& a : spec.axes) order.push_back(paramName(a.param));
+  // The result rows' parameter columns, and the values of those not varied.
+  json parameters = json::array(), fixed = json::object();
+  for (int id : spec.columns()) {
+    parameters.push_back(paramName(id));
+    if (!spec.varies(id)) fixed[paramName(id)] = spec.fixed[id];
+  }
   const auto list = [](const long v[4]) { return json::array({v[0], v[1], v[2], v[3]}); };
   json j = {
       {"name", spec.name},
@@ -148,6 +165,9 @@ void writeSummaryJson(const std::string& path, const SweepSpec& spec, const RunI
       {"definition_hash", hashText(definitionHash(spec))},
       {"vehicle_file", spec.vehicle_file},
       {"controller", spec.controller},
+      {"parameters", parameters},
+      {"fixed", fixed},
+      {"task_duration_s", spec.duration()},
       {"order", order},
       {"combinations", counts.combinations},
       {"feasible", counts.feasible},

@@ -33,17 +33,22 @@ struct Column {
 class Hdf5Writer : public ResultsWriter {
  public:
   Hdf5Writer(const std::string& path, const SweepSpec& spec, bool feasible_only)
-      : path_(path), grid_(spec.view()), feasible_only_(feasible_only) {
+      : path_(path), grid_(spec.view()), params_(spec.columns()), feasible_only_(feasible_only) {
     file_ = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
     if (file_ < 0) throw std::runtime_error("cannot write '" + path + "' (HDF5)");
-    columns_ = {{"index", H5T_NATIVE_INT64, 8}, {"kp", H5T_NATIVE_DOUBLE, 8},
-                {"kd", H5T_NATIVE_DOUBLE, 8},   {"delay", H5T_NATIVE_INT64, 8},
+    // index, the parameters (results.h: the delay whole), the results.
+    columns_ = {{"index", H5T_NATIVE_INT64, 8}};
+    for (int id : params_) {
+      columns_.push_back(id == kParamDelay ? Column{paramName(id), H5T_NATIVE_INT64, 8}
+                                           : Column{paramName(id), H5T_NATIVE_DOUBLE, 8});
+    }
+    columns_.insert(columns_.end(), {
                 {"ok1", H5T_NATIVE_UINT8, 1},   {"ok2", H5T_NATIVE_UINT8, 1},
                 {"ok3", H5T_NATIVE_UINT8, 1},   {"ok4", H5T_NATIVE_UINT8, 1},
                 {"feasible", H5T_NATIVE_UINT8, 1}, {"iae", H5T_NATIVE_DOUBLE, 8},
                 {"itae", H5T_NATIVE_DOUBLE, 8}, {"iasc", H5T_NATIVE_DOUBLE, 8},
                 {"steps", H5T_NATIVE_INT32, 4}, {"x", H5T_NATIVE_FLOAT, 4},
-                {"y", H5T_NATIVE_FLOAT, 4},     {"z", H5T_NATIVE_FLOAT, 4}};
+                {"y", H5T_NATIVE_FLOAT, 4},     {"z", H5T_NATIVE_FLOAT, 4}});
     const hsize_t zero = 0, unlimited = H5S_UNLIMITED, chunk = kRowsPerChunk;
     const hid_t space = H5Screate_simple(1, &zero, &unlimited);
     const hid_t props = H5Pcreate(H5P_DATASET_CREATE);
@@ -116,10 +121,15 @@ class Hdf5Writer : public ResultsWriter {
       const long index = first + static_cast<long>(i);
       const Combination c = grid_.decode(index);
       const size_t row = buffered_++;
-      put(0, row, int64_t(index)), put(1, row, c.kp), put(2, row, c.kd), put(3, row, int64_t(c.delay));
-      for (int k = 0; k < 5; ++k) put(4 + k, row, static_cast<uint8_t>((r.ok >> k) & 1));
-      put(9, row, r.iae), put(10, row, r.itae), put(11, row, r.iasc), put(12, row, int32_t(r.steps));
-      for (int k = 0; k < 3; ++k) put(13 + k, row, r.final_pos[k]);
+      put(0, row, int64_t(index));
+      size_t col = 1;
+      for (int id : params_) {
+        if (id == kParamDelay) put(col++, row, int64_t(c.delay()));
+        else put(col++, row, c.v[id]);
+      }
+      for (int k = 0; k < 5; ++k) put(col++, row, static_cast<uint8_t>((r.ok >> k) & 1));
+      put(col++, row, r.iae), put(col++, row, r.itae), put(col++, row, r.iasc), put(col++, row, int32_t(r.steps));
+      for (int k = 0; k < 3; ++k) put(col++, row, r.final_pos[k]);
     }
     for (Column& c : columns_) c.buffer.resize(buffered_ * c.size);
   }
@@ -148,6 +158,7 @@ class Hdf5Writer : public ResultsWriter {
 
   std::string path_;
   GridView grid_;
+  std::vector<int> params_;  // ParamIds of the parameter columns
   bool feasible_only_;
   hid_t file_ = -1;
   std::vector<Column> columns_;

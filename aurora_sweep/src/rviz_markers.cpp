@@ -5,6 +5,7 @@
 #include <tf2_ros/static_transform_broadcaster.h>
 #include <visualization_msgs/MarkerArray.h>
 
+#include <algorithm>
 #include <cstdio>
 
 namespace aurora_sweep {
@@ -34,6 +35,15 @@ int publishFeasibleMarkers(int, char**, const SweepSpec& spec, const std::vector
 
   const GridView grid = spec.view();
   const double ts = spec.vehicle.Ts;
+  // x and y: the first two varied parameters besides the delay (kp and kd
+  // for the PD law's grids), else the first columns.
+  std::vector<int> xy;
+  for (int id : spec.columns()) {
+    if (id != kParamDelay && spec.varies(id)) xy.push_back(id);
+  }
+  for (int id : spec.columns()) {
+    if (id != kParamDelay && std::find(xy.begin(), xy.end(), id) == xy.end()) xy.push_back(id);
+  }
   visualization_msgs::MarkerArray array;
   visualization_msgs::Marker points;
   points.header.frame_id = "sweep";
@@ -50,19 +60,19 @@ int publishFeasibleMarkers(int, char**, const SweepSpec& spec, const std::vector
     if (!((results[i].ok >> 4) & 1)) continue;
     const Combination c = grid.decode(static_cast<long>(i));
     geometry_msgs::Point p;
-    p.x = c.kp;
-    p.y = c.kd;
-    p.z = c.delay * ts;
+    p.x = c.v[xy[0]];
+    p.y = c.v[xy[1]];
+    p.z = c.delay() * ts;
     points.points.push_back(p);
     std_msgs::ColorRGBA color;
-    color.r = static_cast<float>(c.delay * ts / std::max(1e-9, spec.max_delay * ts));
+    color.r = static_cast<float>(c.delay() * ts / std::max(1e-9, spec.max_delay * ts));
     color.g = 0.3f;
     color.b = 1.0f - color.r;
     color.a = 1.0f;
     points.colors.push_back(color);
   }
   array.markers.push_back(points);
-  const char* labels[] = {"Kp", "Kd", "delay [s]"};
+  const std::string labels[] = {paramName(xy[0]), paramName(xy[1]), "delay [s]"};
   for (int a = 0; a < 3; ++a) {
     visualization_msgs::Marker text;
     text.header = points.header;
@@ -81,7 +91,8 @@ int publishFeasibleMarkers(int, char**, const SweepSpec& spec, const std::vector
   }
   pub.publish(array);
   std::fprintf(stderr, "sweep: published %zu feasible combinations on /sweep/feasible "
-               "(x = Kp, y = Kd, z = delay [s]); Ctrl-C to quit\n", points.points.size());
+               "(x = %s, y = %s, z = delay [s]); Ctrl-C to quit\n", points.points.size(), paramName(xy[0]),
+               paramName(xy[1]));
   ros::spin();
   return 0;
 }

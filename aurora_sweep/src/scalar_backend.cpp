@@ -2,29 +2,16 @@
 
 namespace aurora_sweep {
 
-namespace {
-
-template <typename T, int Capacity>
-void runScalarWith(const SweepSpec& spec, std::vector<SimResult>& out, Progress& progress) {
-  const SimSetup<T> setup = makeSetup<T>(spec);
-  const GridView grid = spec.view();
-  const long first = spec.rangeBegin(), n = spec.rangeSize();
-  out.resize(n);
-  for (long i = 0; i < n; ++i) {
-    out[i] = simulateCombination<T, Capacity>(setup, grid, first + i);
-    progress.fetch_add(1, std::memory_order_relaxed);
-  }
-}
-
-}  // namespace
-
 void runScalar(const SweepSpec& spec, std::vector<SimResult>& out, Progress& progress) {
-  aurora_control::withHistoryCapacity(spec.max_delay, [&](auto capacity) {
-    constexpr int kCapacity = decltype(capacity)::value;
-    if (spec.precision == Precision::kDouble) {
-      runScalarWith<double, kCapacity>(spec, out, progress);
-    } else {
-      runScalarWith<float, kCapacity>(spec, out, progress);
+  withSweepTypes(spec, [&](auto type, auto capacity, auto law) {
+    using T = decltype(type);
+    const SimSetup<T> setup = makeSetup<T>(spec);
+    const GridView grid = spec.view();
+    const long first = spec.rangeBegin(), n = spec.rangeSize();
+    out.resize(n);
+    for (long i = 0; i < n; ++i) {
+      out[i] = simulateCombination<decltype(law)::value, T, decltype(capacity)::value>(setup, grid, first + i);
+      progress.fetch_add(1, std::memory_order_relaxed);
     }
   });
 }

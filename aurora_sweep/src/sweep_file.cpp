@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -44,60 +45,79 @@ std::string resolve(const std::string& name, const std::string& sweep_dir,
   return sweep_dir + "/" + name;
 }
 
-int paramIdOf(const std::string& name) {
-  if (name == "kp") return kParamKp;
-  if (name == "kd") return kParamKd;
-  if (name == "delay") return kParamDelay;
-  return -1;
+// A parameter named in the file, for the sweep's controller: its ParamId,
+// or a refusal listing the names that controller accepts.
+int paramOf(const Reader& r, const SweepSpec& spec, const std::string& name, const std::string& key) {
+  const int id = paramIdOf(name);
+  if (id < 0 || !paramApplies(id, spec.law)) {
+    r.fail(key, "is not a parameter of the " + spec.controller + " controller: accepted " +
+                    acceptedParamNames(spec.law));
+  }
+  return id;
 }
 
+// A value inside the parameter's accepted range (parameters.h), naming it.
 void checkValue(const Reader& r, int id, double v, const std::string& key) {
-  if (id == kParamDelay) {
-    if (v != std::floor(v) || v < 0 || v > aurora_control::kMaxRunnerDelay) {
-      r.fail(key, "= " + std::to_string(v) + " is not a delay: accepted whole samples in [0, " +
+  const ParamInfo& p = paramInfo(id);
+  if (p.group == ParamGroup::kDelay) {
+    if (v != std::floor(v) || v < p.min || v > p.max) {
+      r.fail(key, "= " + Reader::fmt(v) + " is not a delay: accepted whole samples in [0, " +
                       std::to_string(aurora_control::kMaxRunnerDelay) + "]");
     }
-  } else if (v < aurora_control::kPdGainMin || v > aurora_control::kPdGainMax) {
-    r.fail(key, "= " + Reader::fmt(v) + " is outside the accepted range [" + Reader::fmt(aurora_control::kPdGainMin) +
-                    ", " + Reader::fmt(aurora_control::kPdGainMax) + "] (the controller node's)");
+  } else if (!(v >= p.min && v <= p.max)) {
+    r.fail(key, "= " + Reader::fmt(v) + " is outside the accepted range [" + Reader::fmt(p.min) + ", " +
+                    Reader::fmt(p.max) + "] of " + p.name + " (" + p.limit + ")");
   }
 }
 
-std::vector<double> readPoints(const Reader& r, const std::string& path, const std::string& key) {
+// The header of a points file: parameter names, each once.
+std::vector<int> readPointsHeader(const Reader& r, const SweepSpec& spec, const std::string& line,
+                                  const std::string& where) {
+  std::vector<int> ids;
+  std::stringstream ss(line);
+  std::string cell;
+  while (std::getline(ss, cell, ',')) {
+    std::string name;
+    for (char c : cell) {
+      if (c != ' ' && c != '\r') name += c;
+    }
+    const int id = paramOf(r, spec, name, where + " header column '" + name + "'");
+    if (std::find(ids.begin(), ids.end(), id) != ids.end()) r.fail(where, "names column '" + name + "' twice");
+    ids.push_back(id);
+  }
+  return ids;
+}
+
+// A points file: a header of parameter names, then one row of values per
+// combination.
+void readPoints(const Reader& r, const std::string& path, const std::string& key, SweepSpec& spec) {
   std::ifstream in(path);
   if (!in) r.fail(key, "names '" + path + "', which cannot be read");
   std::string line;
   if (!std::getline(in, line)) r.fail(key, "file '" + path + "' is empty");
-  std::string header;
-  for (char c : line) {
-    if (c != ' ' && c != '\r') header += c;
-  }
-  if (header != "kp,kd,delay") {
-    r.fail(key, "file '" + path + "' must start with the header 'kp,kd,delay', found '" + line + "'");
-  }
-  std::vector<double> points;
+  const std::string where = key + " ('" + path + "')";
+  spec.point_params = readPointsHeader(r, spec, line, where);
+  const size_t cols = spec.point_params.size();
   long row = 1;
   while (std::getline(in, line)) {
     ++row;
     if (line.find_first_not_of(" \r\t") == std::string::npos) continue;
+    const std::string at = where + " row " + std::to_string(row);
     std::stringstream ss(line);
     std::string cell;
-    int col = 0;
+    size_t col = 0;
     while (std::getline(ss, cell, ',')) {
-      if (col >= 3) r.fail(key, "file '" + path + "' row " + std::to_string(row) + " has more than 3 columns");
+      if (col >= cols) r.fail(at, "has more than the header's " + std::to_string(cols) + " columns");
       char* end = nullptr;
       const double v = std::strtod(cell.c_str(), &end);
-      if (end == cell.c_str() || !std::isfinite(v)) {
-        r.fail(key, "file '" + path + "' row " + std::to_string(row) + ": '" + cell + "' is not a number");
-      }
-      checkValue(r, col, v, key + " (" + path + " row " + std::to_string(row) + ", " + paramName(col) + ")");
-      points.push_back(v);
+      if (end == cell.c_str() || !std::isfinite(v)) r.fail(at, "'" + cell + "' is not a number");
+      checkValue(r, spec.point_params[col], v, at + " " + paramName(spec.point_params[col]));
+      spec.points.push_back(v);
       ++col;
     }
-    if (col != 3) r.fail(key, "file '" + path + "' row " + std::to_string(row) + " needs 3 columns kp,kd,delay");
+    if (col != cols) r.fail(at, "needs the header's " + std::to_string(cols) + " columns");
   }
-  if (points.empty()) r.fail(key, "file '" + path + "' has no points");
-  return points;
+  if (spec.points.empty()) r.fail(key, "file '" + path + "' has no points");
 }
 
 // sweep.task: a task file's name (e.g. tasks/positioning.yaml) or the task
@@ -118,14 +138,10 @@ void readSweepTask(const Reader& r, const YAML::Node& t, const std::string& swee
   } else {
     task = aurora_control::readTask(r, t, "sweep.task");
   }
-  if (task.type != aurora_control::TaskType::kWaypoints || task.waypoints.count != 1) {
-    r.fail("sweep.task", "is a " + std::string(task.isTrajectory() ? "trajectory" : "multi-waypoint") +
-                             " task: the sweep's engines fly single-point positioning tasks (one waypoint) "
-                             "so far; the study's task is tasks/positioning.yaml");
+  spec.task = task;
+  if (!(spec.duration() <= 3600)) {
+    r.fail("sweep.task", "lasts " + Reader::fmt(spec.duration()) + " s: accepted up to 3600 s per simulation");
   }
-  for (int i = 0; i < 3; ++i) spec.desired[i] = task.waypoints.position[0][i];
-  spec.duration = task.waypoints.duration;
-  if (!(spec.duration <= 3600)) r.fail("sweep.task.duration", "is outside the accepted range (0, 3600] s");
 }
 
 }  // namespace
@@ -187,41 +203,138 @@ bool readDesign(const Reader& r, const YAML::Node& s, SweepSpec& spec) {
   return true;
 }
 
-// The design's samples as points (kp, kd, delay): varied parameters from
-// their ranges, the others fixed.
-void sampleDesign(const Reader& r, const YAML::Node& params, SweepSpec& spec) {
-  r.onlyKeys(params, "sweep.parameters", {"kp", "kd", "delay"});
-  std::vector<int> varied;
+// Values of one grid axis: {values: [...]} or {from, to, count[, scale]}.
+std::vector<double> readAxisValues(const Reader& r, const YAML::Node& v, const std::string& key, int id) {
+  std::vector<double> values;
+  if (v["values"]) {
+    r.onlyKeys(v, key, {"values"});
+    if (!v["values"].IsSequence() || v["values"].size() == 0) r.fail(key + ".values", "is empty: give at least one value");
+    for (const auto& x : v["values"]) values.push_back(r.number(x, key + ".values"));
+    for (double x : values) checkValue(r, id, x, key);
+    return values;
+  }
+  r.onlyKeys(v, key, {"from", "to", "count", "scale"});
+  if (!v["from"] || !v["to"] || !v["count"]) r.fail(key, "needs from, to and count (or values: [...])");
+  const SampledRange range = readRange(r, v, key, id);
+  const long count = r.integer(v["count"], key + ".count");
+  if (count < 1) r.fail(key + ".count", "= " + std::to_string(count) + " is below 1: accepted counts >= 1");
+  if (count == 1 && range.from != range.to) r.fail(key, "has count 1 but from != to: an empty range");
+  // Linear: from + (i (to - from)) / (count - 1), so kp = i 0.75 / 31 has
+  // the bits of the thesis grid; log: from (to / from)^(i / (count - 1)).
+  for (long i = 0; i < count; ++i) {
+    const double t = count == 1 ? 0.0 : double(i) / double(count - 1);
+    values.push_back(count == 1 ? range.from
+                     : range.log ? range.at(t)
+                                 : range.from + (double(i) * (range.to - range.from)) / double(count - 1));
+  }
+  for (double x : values) checkValue(r, id, x, key);
+  return values;
+}
+
+// sweep.parameters: each entry fixes a value, or varies the parameter (a
+// grid axis, or a design's range {from, to[, scale]}; `points` given: only
+// fixed values). Returns the varied parameters' axes (grid) or ranges
+// (design), in ParamId order.
+struct Varied {
+  std::vector<Axis> axes;
+  std::vector<int> sampled;
   std::vector<SampledRange> ranges;
-  for (int id = 0; id < kParamCount; ++id) {
+};
+
+Varied readParameters(const Reader& r, const YAML::Node& params, bool design, bool points, SweepSpec& spec) {
+  if (!params.IsMap()) r.fail("sweep.parameters", "must be a mapping of parameter names: accepted " +
+                                                      acceptedParamNames(spec.law));
+  std::map<int, YAML::Node> entries;
+  for (const auto& kv : params) {
+    const std::string name = kv.first.as<std::string>();
+    entries[paramOf(r, spec, name, "sweep.parameters." + name)] = kv.second;
+  }
+  Varied varied;
+  for (const auto& e : entries) {
+    const int id = e.first;
     const std::string key = std::string("sweep.parameters.") + paramName(id);
-    const YAML::Node v = params[paramName(id)];
-    if (!v) r.fail(key, "is missing: give a value or a range for each of kp, kd, delay");
+    const YAML::Node& v = e.second;
     if (v.IsScalar()) {
       spec.fixed[id] = r.number(v, key);
       checkValue(r, id, spec.fixed[id], key);
-      continue;
+    } else if (points) {
+      r.fail(key, "is a range, but 'points' lists the combinations: with points, parameters only fix values");
+    } else if (!v.IsMap()) {
+      r.fail(key, "must be a value, {from, to, count} or {values: [...]}");
+    } else if (design) {
+      if (v["values"] || v["count"]) r.fail(key, "must be a value or a range {from, to[, scale]}: a " + spec.design + " design samples ranges");
+      r.onlyKeys(v, key, {"from", "to", "scale"});
+      if (!v["from"] || !v["to"]) r.fail(key, "needs from and to");
+      varied.sampled.push_back(id);
+      varied.ranges.push_back(readRange(r, v, key, id));
+    } else {
+      varied.axes.push_back(Axis{static_cast<ParamId>(id), readAxisValues(r, v, key, id)});
     }
-    if (!v.IsMap() || v["values"] || v["count"]) {
-      r.fail(key, "must be a value or a range {from, to[, scale]}: a " + spec.design + " design samples ranges");
-    }
-    r.onlyKeys(v, key, {"from", "to", "scale"});
-    if (!v["from"] || !v["to"]) r.fail(key, "needs from and to");
-    varied.push_back(id);
-    ranges.push_back(readRange(r, v, key, id));
   }
-  if (varied.empty()) r.fail("sweep.parameters", "vary none: a design needs at least one range");
+  return varied;
+}
+
+// The design's samples as points: the varied parameters' columns.
+void sampleDesign(const Reader& r, const Varied& varied, SweepSpec& spec) {
+  if (varied.sampled.empty()) r.fail("sweep.parameters", "vary none: a design needs at least one range");
   Design design = Design::kGrid;
   designFromName(spec.design, design);
-  const int dims = static_cast<int>(varied.size());
+  const int dims = static_cast<int>(varied.sampled.size());
   const std::vector<double> u = unitSamples(design, spec.samples, dims, spec.seed);
-  spec.points.resize(static_cast<size_t>(spec.samples) * kParamCount);
-  for (long i = 0; i < spec.samples; ++i) {
-    double* p = &spec.points[static_cast<size_t>(i) * kParamCount];
-    for (int id = 0; id < kParamCount; ++id) p[id] = spec.fixed[id];
-    for (int j = 0; j < dims; ++j) p[varied[j]] = ranges[j].at(u[static_cast<size_t>(i) * dims + j]);
-    spec.max_delay = std::max(spec.max_delay, static_cast<long>(p[kParamDelay]));
+  spec.point_params = varied.sampled;
+  spec.points.resize(u.size());
+  for (size_t i = 0; i < u.size(); ++i) spec.points[i] = varied.ranges[i % dims].at(u[i]);
+}
+
+// sweep.order: the grid's axes, first varying fastest (default: ParamId order).
+void orderAxes(const Reader& r, const YAML::Node& s, std::vector<Axis> axes, SweepSpec& spec) {
+  if (!s["order"]) {
+    spec.axes = axes;
+    return;
   }
+  if (!s["order"].IsSequence()) r.fail("sweep.order", "must be a list of the varied parameters");
+  std::vector<int> order;
+  for (const auto& o : s["order"]) {
+    const int id = paramOf(r, spec, r.text(o, "sweep.order"), "sweep.order");
+    if (std::find(order.begin(), order.end(), id) != order.end()) r.fail("sweep.order", std::string("names '") + paramName(id) + "' twice");
+    order.push_back(id);
+  }
+  // A fixed parameter in the order is accepted: it does not vary, so its
+  // place does not matter (e.g. 'delay: 600' with the usual order).
+  std::vector<std::string> names;
+  for (const Axis& a : axes) names.push_back(paramName(a.param));
+  for (int id : order) {
+    for (const Axis& a : axes) {
+      if (a.param == id) spec.axes.push_back(a);
+    }
+  }
+  if (spec.axes.size() != axes.size()) {
+    r.fail("sweep.order", "must list every varied parameter (" + joinKeys(names) + "), first varying fastest");
+  }
+}
+
+// Every parameter the law needs has a value: given, varied or a default.
+void requireAll(const Reader& r, const SweepSpec& spec) {
+  for (int id = 0; id < kParamCount; ++id) {
+    if (paramApplies(id, spec.law) && std::isnan(spec.fixed[id]) && !spec.varies(id)) {
+      r.fail(std::string("sweep.parameters.") + paramName(id), "is missing: the " + spec.controller +
+                 " controller has no default for it; give a value or a range (or a points column)");
+    }
+  }
+}
+
+// The largest delay of any combination [samples].
+long maxDelay(const SweepSpec& spec) {
+  double d = spec.fixed[kParamDelay];
+  for (const Axis& a : spec.axes) {
+    if (a.param == kParamDelay) d = *std::max_element(a.values.begin(), a.values.end());
+  }
+  const size_t cols = spec.point_params.size();
+  for (size_t j = 0; j < cols; ++j) {
+    if (spec.point_params[j] != kParamDelay) continue;
+    for (size_t i = j; i < spec.points.size(); i += cols) d = std::max(d, spec.points[i]);
+  }
+  return static_cast<long>(d);
 }
 
 SweepSpec parseSweepFile(const std::string& path, const std::string& config_dir) {
@@ -247,9 +360,9 @@ SweepSpec parseSweepFile(const std::string& path, const std::string& config_dir)
 
   if (s["controller"]) {
     spec.controller = r.text(s["controller"], "sweep.controller");
-    if (spec.controller != "pd_saturated") {
+    if (!lawFromName(spec.controller, spec.law)) {
       r.fail("sweep.controller", "= '" + spec.controller +
-                                     "' is not a known controller: accepted 'pd_saturated'");
+                                     "' is not a known controller: accepted 'pd_saturated', 'underactuated'");
     }
   }
   const std::string vehicle = s["vehicle"] ? r.text(s["vehicle"], "sweep.vehicle")
@@ -285,107 +398,30 @@ SweepSpec parseSweepFile(const std::string& path, const std::string& config_dir)
   }
 
   const bool has_points = static_cast<bool>(s["points"]);
-  if (has_points) {
-    if (s["parameters"] || s["order"]) {
-      r.fail("sweep.points", "excludes 'parameters' and 'order': a sweep is either a grid or a points file");
-    }
-    spec.points_file = resolve(r.text(s["points"], "sweep.points"), sweep_dir, config_dir);
-    spec.points = readPoints(r, spec.points_file, "sweep.points");
-    for (size_t i = 2; i < spec.points.size(); i += 3) {
-      spec.max_delay = std::max(spec.max_delay, static_cast<long>(spec.points[i]));
-    }
-    return spec;
-  }
-
+  if (has_points && s["order"]) r.fail("sweep.order", "is for grids: a points file lists the combinations in its order");
+  const bool design = readDesign(r, s, spec);
+  if (has_points && design) r.fail("sweep.points", "excludes a sampling design: give one or the other");
   const YAML::Node params = s["parameters"];
-  if (!params) r.fail("sweep.parameters", "is missing: give kp, kd and delay (a value or a range), or 'points'");
-  if (readDesign(r, s, spec)) {
-    sampleDesign(r, params, spec);
-    return spec;
+  if (!params && !has_points) {
+    r.fail("sweep.parameters", "is missing: give each parameter a value or a range (accepted " +
+                                   acceptedParamNames(spec.law) + "), or 'points'");
   }
-  r.onlyKeys(params, "sweep.parameters", {"kp", "kd", "delay"});
-  std::vector<std::string> varied;
-  bool given[kParamCount] = {false, false, false};
-  std::vector<Axis> axes_by_name;
-  for (const auto& kv : params) {
-    const std::string name = kv.first.as<std::string>();
-    const int id = paramIdOf(name);
-    const std::string key = "sweep.parameters." + name;
-    given[id] = true;
-    const YAML::Node v = kv.second;
-    if (v.IsScalar()) {
-      spec.fixed[id] = r.number(v, key);
-      checkValue(r, id, spec.fixed[id], key);
-      continue;
-    }
-    Axis axis{static_cast<ParamId>(id), {}};
-    if (v.IsMap() && v["values"]) {
-      r.onlyKeys(v, key, {"values"});
-      if (!v["values"].IsSequence() || v["values"].size() == 0) {
-        r.fail(key + ".values", "is empty: give at least one value");
+  const Varied varied = params ? readParameters(r, params, design, has_points, spec) : Varied();
+  if (has_points) {
+    spec.points_file = resolve(r.text(s["points"], "sweep.points"), sweep_dir, config_dir);
+    readPoints(r, spec.points_file, "sweep.points", spec);
+    for (int id : spec.point_params) {
+      if (params && params[paramName(id)]) {
+        r.fail(std::string("sweep.parameters.") + paramName(id), "is also a column of the points file: give it once");
       }
-      for (const auto& x : v["values"]) axis.values.push_back(r.number(x, key + ".values"));
-    } else if (v.IsMap()) {
-      r.onlyKeys(v, key, {"from", "to", "count", "scale"});
-      if (!v["from"] || !v["to"] || !v["count"]) r.fail(key, "needs from, to and count (or values: [...])");
-      const SampledRange range = readRange(r, v, key, id);
-      const long count = r.integer(v["count"], key + ".count");
-      if (count < 1) r.fail(key + ".count", "= " + std::to_string(count) + " is below 1: accepted counts >= 1");
-      if (count == 1 && range.from != range.to) r.fail(key, "has count 1 but from != to: an empty range");
-      // Linear: from + (i (to - from)) / (count - 1), so kp = i 0.75 / 31 has
-      // the bits of the thesis grid; log: from (to / from)^(i / (count - 1)).
-      for (long i = 0; i < count; ++i) {
-        const double t = count == 1 ? 0.0 : double(i) / double(count - 1);
-        axis.values.push_back(count == 1 ? range.from
-                              : range.log ? range.at(t)
-                                          : range.from + (double(i) * (range.to - range.from)) / double(count - 1));
-      }
-    } else {
-      r.fail(key, "must be a value, {from, to, count} or {values: [...]}");
     }
-    for (double x : axis.values) checkValue(r, id, x, key);
-    varied.push_back(name);
-    axes_by_name.push_back(axis);
-  }
-  for (int id = 0; id < kParamCount; ++id) {
-    if (!given[id]) {
-      r.fail(std::string("sweep.parameters.") + paramName(id),
-             "is missing: give a value or a range for each of kp, kd, delay");
-    }
-  }
-  std::vector<std::string> order;
-  if (s["order"]) {
-    if (!s["order"].IsSequence()) r.fail("sweep.order", "must be a list of the varied parameters");
-    for (const auto& o : s["order"]) order.push_back(r.text(o, "sweep.order"));
-    std::set<std::string> seen;
-    for (const auto& o : order) {
-      if (paramIdOf(o) < 0) r.fail("sweep.order", "names unknown parameter '" + o + "': accepted kp, kd, delay");
-      if (!seen.insert(o).second) r.fail("sweep.order", "names '" + o + "' twice");
-    }
-    // A fixed parameter in the order is accepted: it does not vary, so its
-    // place does not matter (e.g. 'delay: 600' with the usual order).
-    order.erase(std::remove_if(order.begin(), order.end(), [&](const std::string& o) {
-                  return std::find(varied.begin(), varied.end(), o) == varied.end();
-                }), order.end());
-    if (order.size() != varied.size()) {
-      r.fail("sweep.order", "must list every varied parameter (" + joinKeys(varied) + "), first varying fastest");
-    }
+  } else if (design) {
+    sampleDesign(r, varied, spec);
   } else {
-    for (const char* n : {"kp", "kd", "delay"}) {
-      if (std::find(varied.begin(), varied.end(), n) != varied.end()) order.push_back(n);
-    }
+    orderAxes(r, s, varied.axes, spec);
   }
-  for (const auto& o : order) {
-    for (const auto& a : axes_by_name) {
-      if (a.param == paramIdOf(o)) spec.axes.push_back(a);
-    }
-  }
-  spec.max_delay = static_cast<long>(spec.fixed[kParamDelay]);
-  for (const auto& a : spec.axes) {
-    if (a.param == kParamDelay) {
-      spec.max_delay = static_cast<long>(*std::max_element(a.values.begin(), a.values.end()));
-    }
-  }
+  requireAll(r, spec);
+  spec.max_delay = maxDelay(spec);
   return spec;
 }
 
@@ -393,9 +429,9 @@ SweepSpec parseSweepFile(const std::string& path, const std::string& config_dir)
 
 SweepSpec loadSweepFile(const std::string& path, const std::string& config_dir) {
   SweepSpec spec = parseSweepFile(path, config_dir);
-  const long iterations = aurora_control::studyIterationCount(spec.duration, spec.vehicle.Ts);
+  const long iterations = aurora_control::studyIterationCount(spec.duration(), spec.vehicle.Ts);
   if (!aurora_control::delayShorterThanRun(spec.max_delay, iterations)) {
-    Reader(path).fail(spec.points.empty() ? "sweep.parameters.delay" : "sweep.points",
+    Reader(path).fail(spec.points_file.empty() ? "sweep.parameters.delay" : "sweep.points",
                       "= " + aurora_control::delayRunText(spec.max_delay, iterations,
                                                                            spec.vehicle.Ts));
   }

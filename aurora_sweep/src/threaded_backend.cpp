@@ -13,39 +13,26 @@
 
 namespace aurora_sweep {
 
-namespace {
-
-template <typename T, int Capacity>
-void runThreaded(const SweepSpec& spec, int threads, std::vector<SimResult>& out, Progress& progress) {
-  const SimSetup<T> setup = makeSetup<T>(spec);
-  const GridView grid = spec.view();
-  const long first = spec.rangeBegin(), n = spec.rangeSize();
-  out.resize(n);
-  std::atomic<long> next{0};
-  std::vector<std::thread> pool;
-  for (int t = 0; t < threads; ++t) {
-    pool.emplace_back([&] {
-      for (long i = next.fetch_add(1); i < n; i = next.fetch_add(1)) {
-        out[i] = simulateCombination<T, Capacity>(setup, grid, first + i);
-        progress.fetch_add(1, std::memory_order_relaxed);
-      }
-    });
-  }
-  for (auto& th : pool) th.join();
-}
-
-}  // namespace
-
 void runThreadedScalar(const SweepSpec& spec, int threads, std::vector<SimResult>& out,
                        Progress& progress) {
   threads = std::max(1, threads);
-  aurora_control::withHistoryCapacity(spec.max_delay, [&](auto capacity) {
-    constexpr int kCapacity = decltype(capacity)::value;
-    if (spec.precision == Precision::kDouble) {
-      runThreaded<double, kCapacity>(spec, threads, out, progress);
-    } else {
-      runThreaded<float, kCapacity>(spec, threads, out, progress);
+  withSweepTypes(spec, [&](auto type, auto capacity, auto law) {
+    using T = decltype(type);
+    const SimSetup<T> setup = makeSetup<T>(spec);
+    const GridView grid = spec.view();
+    const long first = spec.rangeBegin(), n = spec.rangeSize();
+    out.resize(n);
+    std::atomic<long> next{0};
+    std::vector<std::thread> pool;
+    for (int t = 0; t < threads; ++t) {
+      pool.emplace_back([&] {
+        for (long i = next.fetch_add(1); i < n; i = next.fetch_add(1)) {
+          out[i] = simulateCombination<decltype(law)::value, T, decltype(capacity)::value>(setup, grid, first + i);
+          progress.fetch_add(1, std::memory_order_relaxed);
+        }
+      });
     }
+    for (auto& th : pool) th.join();
   });
 }
 

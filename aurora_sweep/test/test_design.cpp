@@ -90,19 +90,19 @@ TEST(Design, SweepFileSamplesTheRanges) {
   std::set<long> delays;
   for (long i = 0; i < spec.size(); ++i) {
     const Combination c = g.decode(i);
-    EXPECT_GE(c.kp, 0.05);
-    EXPECT_LE(c.kp, 0.75);
-    EXPECT_GE(c.kd, 0.0);
-    EXPECT_LE(c.kd, 1.0);
-    EXPECT_GE(c.delay, 0);
-    EXPECT_LE(c.delay, 40);
-    delays.insert(c.delay);
+    EXPECT_GE(c.v[kParamKp], 0.05);
+    EXPECT_LE(c.v[kParamKp], 0.75);
+    EXPECT_GE(c.v[kParamKd], 0.0);
+    EXPECT_LE(c.v[kParamKd], 1.0);
+    EXPECT_GE(c.delay(), 0);
+    EXPECT_LE(c.delay(), 40);
+    delays.insert(c.delay());
   }
   EXPECT_EQ(delays.size(), 41u);  // every whole delay of the range is drawn
   EXPECT_LE(spec.max_delay, 40);
   // log scale: half the samples below the geometric mean of the range
   long below = 0;
-  for (long i = 0; i < spec.size(); ++i) below += g.decode(i).kp < std::sqrt(0.05 * 0.75);
+  for (long i = 0; i < spec.size(); ++i) below += g.decode(i).v[kParamKp] < std::sqrt(0.05 * 0.75);
   EXPECT_NEAR(double(below) / spec.size(), 0.5, 0.03);
 }
 

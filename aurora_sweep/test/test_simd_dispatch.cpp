@@ -153,7 +153,7 @@ TEST(SimdDispatch, TheEnvironmentPicksTheBuild) {
     std::string log;
     ASSERT_EQ(runSweepWith("AURORA_SWEEP_SIMD=" + isa.key,
                            "--config " + kData + "/small_grid.yaml --config-dir " + kConfig + " --out " +
-                               out + " --backend cpu --no-plots --quiet",
+                               out + " --backend cpu --no-plots --quiet --overwrite",
                            log),
               0)
         << log;

@@ -80,9 +80,9 @@ TEST(SweepFile, ThesisGridDecodesToTheThesisValues) {
     for (int i : {0, 1, 14, 31}) {
       for (int j : {0, 5, 19, 31}) {
         const Combination c = g.decode(i + 32 * (j + 32 * d));
-        EXPECT_EQ(c.kp, i * 0.75 / 31) << i;  // bit-identical to the thesis's formula
-        EXPECT_EQ(c.kd, j / 31.0) << j;
-        EXPECT_EQ(c.delay, d);
+        EXPECT_EQ(c.v[kParamKp], i * 0.75 / 31) << i;  // bit-identical to the thesis's formula
+        EXPECT_EQ(c.v[kParamKd], j / 31.0) << j;
+        EXPECT_EQ(c.delay(), d);
       }
     }
   }
@@ -93,9 +93,9 @@ TEST(SweepFile, OrderChangesTheIndexing) {
                                                        "  order: [delay, kp, kd]\n");
   const SweepSpec spec = load(path);  // the view points into the spec
   const GridView g = spec.view();
-  EXPECT_EQ(g.decode(1).delay, 1);
-  EXPECT_EQ(g.decode(1).kp, 0.0);
-  EXPECT_EQ(g.decode(4).kp, 0.25);
+  EXPECT_EQ(g.decode(1).delay(), 1);
+  EXPECT_EQ(g.decode(1).v[kParamKp], 0.0);
+  EXPECT_EQ(g.decode(4).v[kParamKp], 0.25);
 }
 
 TEST(Backends, ScalarAndCpuAgreeInDouble) {
@@ -132,7 +132,7 @@ TEST(Backends, KernelBodyOnTheHostMatchesTheCpuBackend) {
   const GridView grid = spec.view();
   const auto cpu = run(spec, "cpu");
   for (long i = 0; i < spec.size(); ++i) {
-    const SimResult r = simulateCombination<double, 64>(setup, grid, i);
+    const SimResult r = simulateCombination<aurora_control::LawType::kPdSaturated, double, 64>(setup, grid, i);
     EXPECT_EQ(r.ok, cpu[i].ok) << i;
     EXPECT_EQ(r.steps, cpu[i].steps) << i;
     if (r.ok & 1) {
@@ -209,14 +209,15 @@ TEST(SweepFileRefusal, EmptyRange) {
 TEST(SweepFileRefusal, UnknownController) {
   const std::string msg =
       refusal(std::string("sweep:\n  controller: lqr\n") + kGoodParams);
-  EXPECT_NE(msg.find("'sweep.controller' = 'lqr' is not a known controller: accepted 'pd_saturated'"),
+  EXPECT_NE(msg.find("'sweep.controller' = 'lqr' is not a known controller: accepted 'pd_saturated', 'underactuated'"),
             std::string::npos)
       << msg;
 }
 
 TEST(SweepFileRefusal, UnknownParameter) {
   const std::string msg = refusal(std::string("sweep:\n") + kGoodParams + "    mass: 0.5\n");
-  EXPECT_NE(msg.find("'sweep.parameters.mass' is not a known key: accepted kp, kd, delay"),
+  EXPECT_NE(msg.find("'sweep.parameters.mass' is not a parameter of the pd_saturated controller: accepted kp, kd, "
+                     "delay, m, Ixx, Iyy, Izz, Cf, Ct, Km, Jm"),
             std::string::npos)
       << msg;
 }
@@ -238,7 +239,7 @@ TEST(SweepFileRefusal, OtherMistakesAreNamed) {
             std::string::npos);
   EXPECT_NE(refusal(std::string("sweep:\n") + kGoodParams + "  order: [kp, kd]\n").find("must list every varied parameter"),
             std::string::npos);
-  EXPECT_NE(refusal(std::string("sweep:\n") + kGoodParams + "  points: x.csv\n").find("excludes 'parameters'"),
+  EXPECT_NE(refusal(std::string("sweep:\n") + kGoodParams + "  points: x.csv\n").find("with points, parameters only fix values"),
             std::string::npos);
   EXPECT_NE(refusal("sweep:\n  points: missing.csv\n").find("cannot be read"), std::string::npos);
   EXPECT_NE(refusal(std::string("sweep:\n  vehicle: nowhere.yaml\n") + kGoodParams).find("nowhere.yaml"),
@@ -262,7 +263,7 @@ TEST(SweepProgram, WritesResultsSummaryAndPlots) {
   const std::string out = ::testing::TempDir() + "/sweep_program_out";
   std::string log;
   const int rc = runSweep("--config " + kData + "/small_grid.yaml --out " + out +
-                              " --backend cpu --threads 2 --quiet",
+                              " --backend cpu --threads 2 --quiet --overwrite",
                           log);
   ASSERT_EQ(rc, 0) << log;
   std::ifstream csv(out + "/results.csv");
@@ -296,8 +297,8 @@ TEST(DelayMonotony, CountsPairsThatComeBackAtALongerDelay) {
   const GridView g = spec.view();
   for (long i = 0; i < spec.size(); ++i) {
     const Combination c = g.decode(i);
-    if (c.kp == 0.0 && c.kd == 0.0 && c.delay == 3) r[i].ok = 0;  // fails at 3, holds at 20: not monotone
-    if (c.kp == 0.75 && c.kd == 1.0 && c.delay >= 20) r[i].ok = 0;  // fails from 20 on: monotone
+    if (c.v[kParamKp] == 0.0 && c.v[kParamKd] == 0.0 && c.delay() == 3) r[i].ok = 0;  // fails at 3, holds at 20: not monotone
+    if (c.v[kParamKp] == 0.75 && c.v[kParamKd] == 1.0 && c.delay() >= 20) r[i].ok = 0;  // fails from 20 on: monotone
   }
   m.add(0, std::vector<SimResult>(r.begin(), r.begin() + 37));  // in two pieces, as chunks come
   m.add(37, std::vector<SimResult>(r.begin() + 37, r.end()));
@@ -319,20 +320,19 @@ TEST(SweepProgram, RefusesUnwritableOutputAndMissingDevice) {
 // sweep.task is the node's task schema: a task file or the same keys inline.
 TEST(SweepFileTask, OneSchemaWithTheNode) {
   const SweepSpec byFile = load(kConfig + "/sweeps/positioning_delay.yaml");  // task: tasks/positioning.yaml
-  EXPECT_EQ(byFile.desired[0], 2.0);
-  EXPECT_EQ(byFile.duration, 60.0);
+  EXPECT_EQ(byFile.task.waypoints.position[0][0], 2.0);
+  EXPECT_EQ(byFile.duration(), 60.0);
   const std::string inline_task =
       "sweep:\n  task: {waypoints: [[1.5, -1, 1]], end_times: [30], duration: 30}\n" + std::string(kGoodParams);
   const SweepSpec in = load(writeTemp("inline_task.yaml", inline_task));
-  EXPECT_EQ(in.desired[0], 1.5);
-  EXPECT_EQ(in.desired[1], -1.0);
-  EXPECT_EQ(in.duration, 30.0);
-  // What the engines cannot fly yet is refused plainly.
-  EXPECT_NE(refusal("sweep:\n  task: tasks/circle.yaml\n" + std::string(kGoodParams))
-                .find("'sweep.task' is a trajectory task: the sweep's engines fly single-point positioning tasks"),
-            std::string::npos);
-  EXPECT_NE(refusal("sweep:\n  task: tasks/mission4.yaml\n" + std::string(kGoodParams)).find("multi-waypoint"),
-            std::string::npos);
+  EXPECT_EQ(in.task.waypoints.position[0][0], 1.5);
+  EXPECT_EQ(in.task.waypoints.position[0][1], -1.0);
+  EXPECT_EQ(in.duration(), 30.0);
+  // Every task of the node's schema: trajectories and waypoint missions.
+  const SweepSpec circle = load(writeTemp("circle.yaml", "sweep:\n  task: tasks/circle.yaml\n" + std::string(kGoodParams)));
+  EXPECT_TRUE(circle.task.isTrajectory());
+  const SweepSpec mission = load(writeTemp("mission.yaml", "sweep:\n  task: tasks/mission4.yaml\n" + std::string(kGoodParams)));
+  EXPECT_EQ(mission.task.waypoints.count, 4);
   // Task keys are checked by the node's loader, naming them under sweep.task.
   EXPECT_NE(refusal("sweep:\n  task: {desired: [2, 1, 2], duration: 60}\n" + std::string(kGoodParams))
                 .find("'sweep.task.desired' is not a known key: accepted name, type, duration, waypoints, end_times"),
@@ -362,7 +362,7 @@ TEST(SweepCounts, EarlyStopChecksAreNotReached) {
       "sweep:\n  parameters:\n    kp: 0.5\n    kd: 0.85\n    delay: {values: [0, 53]}\n  early_stop: true\n";
   const SweepSpec spec = load(writeTemp("early_counts.yaml", yaml));
   const std::vector<SimResult> results = run(spec, "scalar");
-  const Counts c = countResults(results, aurora_control::studyIterationCount(spec.duration, spec.vehicle.Ts));
+  const Counts c = countResults(results, aurora_control::studyIterationCount(spec.duration(), spec.vehicle.Ts));
   ASSERT_EQ(c.combinations, 2);
   EXPECT_EQ(c.feasible, 1);  // delay 0 flies; delay 53 fails early
   for (int i = 0; i < 4; ++i) {

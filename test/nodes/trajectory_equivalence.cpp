@@ -45,7 +45,7 @@ TEST(TrajectoryEquivalence, RosLoopEqualsOfflineRunnerBitForBit) {
   // The offline runner with the same vehicle file, task, gains and delay.
   const auto params = aurora_sim::loadVehicleParams(nh, "vehicle");
   RunnerConfig<double> cfg;
-  cfg.task = taskFromParams(pnh);
+  cfg.task.waypoints = taskFromParams(pnh);
   cfg.clamp_commands = true;
   double kp = 0, kd = 0;
   ASSERT_TRUE(pnh.getParam("controller/kp", kp));
@@ -58,7 +58,7 @@ TEST(TrajectoryEquivalence, RosLoopEqualsOfflineRunnerBitForBit) {
   }
   runPositioning(params, cfg, PdGains<double>{kp, kd}, delay,
                  [&](long, const PositioningSim<double, bool>& sim, const double*,
-                     const PosVel<double>&) {
+                     const double*) {
                    offline.emplace_back(sim.model.X, sim.model.X + 12);
                  });
   ASSERT_GE(offline.size(), static_cast<size_t>(steps + 1));

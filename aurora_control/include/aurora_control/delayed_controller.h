@@ -9,6 +9,7 @@
 
 #include <cstdint>
 
+#include "aurora_control/control_law.h"
 #include "aurora_control/delay_buffer.h"
 #include "aurora_control/feasibility.h"
 #include "aurora_control/pd_controller.h"
@@ -25,8 +26,6 @@ struct StateSample {
   int64_t stamp_ns = 0;    // header stamp [ns]
   double X[aurora_sim::kStateSize] = {};
 };
-
-enum class LawType : int { kPdSaturated = 0, kUnderactuated = 1 };
 
 struct ControllerSettings {
   LawType law = LawType::kPdSaturated;
@@ -99,17 +98,13 @@ class DelayedController {
     out.used = &used;
     out.delay_in_force = history_.delayInForce(settings.delay);
     out.delay_pending = history_.pendingUntilInForce(settings.delay);
-    const double pos[3] = {used.X[aurora_sim::kX], used.X[aurora_sim::kY], used.X[aurora_sim::kZ]};
-    const double vel[3] = {used.X[aurora_sim::kVx], used.X[aurora_sim::kVy], used.X[aurora_sim::kVz]};
+    const LawGains<double> gains{settings.gains, settings.underactuated};
     if (settings.law == LawType::kPdSaturated) {
-      pdSaturatedLaw(settings.gains, ref.pos, ref.vel, ref.acc, pos, vel, out.U_unclamped,
-                     out.position_error);
+      lawCommand<LawType::kPdSaturated>(settings.vehicle, gains, memory_, ref, used.X, out.U_unclamped,
+                                        out.position_error);
     } else {
-      double Xd[aurora_sim::kStateSize], acc[6];
-      underactuatedDesired(ref, Xd, acc);
-      underactuatedCommand(settings.vehicle, settings.underactuated, memory_, Xd, acc, used.X,
-                           out.U_unclamped);
-      for (int i = 0; i < 3; ++i) out.position_error[i] = ref.pos[i] - pos[i];
+      lawCommand<LawType::kUnderactuated>(settings.vehicle, gains, memory_, ref, used.X, out.U_unclamped,
+                                          out.position_error);
     }
     finish(out);
     return out;
@@ -120,21 +115,6 @@ class DelayedController {
     for (int i = 0; i < 3; ++i) r.pos[i] = desired[i], r.vel[i] = 0.0, r.acc[i] = 0.0;
     r.yaw = r.yaw_rate = r.yaw_acc = 0.0;
     return r;
-  }
-
-  // The underactuated law's desired state and feed-forward from a reference.
-  static void underactuatedDesired(const Reference<double>& ref, double Xd[aurora_sim::kStateSize],
-                                   double acc[6]) {
-    for (int i = 0; i < aurora_sim::kStateSize; ++i) Xd[i] = 0.0;
-    for (int i = 0; i < 3; ++i) {
-      Xd[aurora_sim::kX + i] = ref.pos[i];
-      Xd[aurora_sim::kVx + i] = ref.vel[i];
-      acc[i] = ref.acc[i];
-    }
-    Xd[aurora_sim::kYaw] = ref.yaw;
-    Xd[aurora_sim::kYawRate] = ref.yaw_rate;
-    acc[3] = acc[4] = 0.0;
-    acc[5] = ref.yaw_acc;
   }
 
   // The command while the state is stale: hover (all zero); the metrics

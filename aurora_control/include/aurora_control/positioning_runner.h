@@ -14,10 +14,21 @@ namespace aurora_control {
 
 template <typename T>
 struct RunnerConfig {
-  WaypointTask<T> task = WaypointTask<T>::singlePoint(T(2), T(1), T(2), T(60));
+  Task<T> task = positioningTask(T(2), T(1), T(2), T(60));
   FeasibilityCriteria<T> criteria = FeasibilityCriteria<T>::study();
   bool clamp_commands = false;  // false reproduces the study; true matches the drivers
   bool early_stop = false;      // stop at the first failed check
+};
+
+// One simulation's own parameters: the simulated drone, the gains and the
+// delay. `model` is what the underactuated law inverts (the vehicle file's
+// nominal values; `plant` differs from it in a robustness study).
+template <typename T>
+struct StudyRun {
+  aurora_sim::ArdroneParams<T> plant;
+  aurora_sim::ArdroneParams<T> model;
+  LawGains<T> gains;
+  long delay;  // [samples]
 };
 
 struct RunnerResult {
@@ -58,30 +69,31 @@ AURORA_HD inline RunnerResult runnerResult(const PositioningSim<T, bool>& sim, l
   return r;
 }
 
-// One whole simulation with a history of `Capacity` samples (delay <
-// Capacity, checked by the caller). No exceptions, no allocation: this is
-// also the CUDA kernel's per-thread body. `iterations` comes from
-// studyIterationCount() on the host.
-template <typename T, int Capacity, typename Observer>
-AURORA_HD RunnerResult runPositioningCore(const aurora_sim::ArdroneParams<T>& p,
-                                          const RunnerConfig<T>& cfg, const PdGains<T>& gains,
-                                          long delay, long iterations, Observer& observe) {
+// One whole simulation of law `Law` with a history of `Capacity` samples
+// (delay < Capacity, checked by the caller). No exceptions, no allocation:
+// this is also the CUDA kernel's per-thread body. `iterations` comes from
+// studyIterationCount() on the host. Iteration k (1-based) gives the law the
+// delayed state by the delay rule and the task's reference at (k - 1) Ts.
+template <LawType Law, typename T, int Capacity, typename Observer>
+AURORA_HD RunnerResult runPositioningCore(const StudyRun<T>& run, const RunnerConfig<T>& cfg,
+                                          long iterations, Observer& observe) {
   using Sim = PositioningSim<T, bool>;
+  using Sample = LawSample<T, Law>;
   Sim sim;
-  const T* first = cfg.task.position[cfg.task.activeIndex(T(0))];
-  sim.reset(first);
-  // On the stack: Capacity x 6 scalars, no allocation.
-  DelayBuffer<PosVel<T>, Capacity> history;
-  history.push(PosVel<T>::fromState(sim.model.X));
+  sim.reset(cfg.task.at(T(0)).pos);
+  // On the stack: Capacity x (6 or 12) scalars, no allocation.
+  DelayBuffer<Sample, Capacity> history;
+  history.push(Sample::fromState(sim.model.X));
   long k = 0;
   while (k < iterations) {
     ++k;
-    const PosVel<T> xc = history.delayed(delay);
-    const T* desired = cfg.task.position[cfg.task.activeIndex(
-        WaypointTask<T>::timeOfStep(k - 1, p.Ts))];
+    T xc[aurora_sim::kStateSize];
+    history.delayed(run.delay).toState(xc);
+    const Reference<T> ref = cfg.task.at(WaypointTask<T>::timeOfStep(k - 1, run.plant.Ts));
     T U[4];
-    positioningIteration(p, cfg.criteria, gains, desired, cfg.clamp_commands, xc, sim, U);
-    history.push(PosVel<T>::fromState(sim.model.X));
+    positioningIteration<Law>(run.plant, run.model, cfg.criteria, run.gains, ref, cfg.clamp_commands, xc,
+                              sim, U);
+    history.push(Sample::fromState(sim.model.X));
     observe(k, sim, U, xc);
     if (stoppedEarly(cfg.early_stop, sim.metrics.feasible())) break;
   }
@@ -89,21 +101,32 @@ AURORA_HD RunnerResult runPositioningCore(const aurora_sim::ArdroneParams<T>& p,
 }
 
 // Runs one simulation; `observe(k, sim, U, xc)` is called after each model
-// step (k 1-based) for callers that record the trajectory.
+// step (k 1-based, xc the 12-state the law received) for callers that record
+// the trajectory.
 template <typename T, typename Observer = NoObserver>
-RunnerResult runPositioning(const aurora_sim::ArdroneParams<T>& p, const RunnerConfig<T>& cfg,
-                            const PdGains<T>& gains, long delay, Observer observe = Observer()) {
-  if (delay < 0 || delay > kMaxRunnerDelay) {
-    throw std::invalid_argument("delay " + std::to_string(delay) +
+RunnerResult runStudy(LawType law, const StudyRun<T>& run, const RunnerConfig<T>& cfg,
+                      Observer observe = Observer()) {
+  if (run.delay < 0 || run.delay > kMaxRunnerDelay) {
+    throw std::invalid_argument("delay " + std::to_string(run.delay) +
                                 " samples is outside the accepted range [0, " +
                                 std::to_string(kMaxRunnerDelay) + "]");
   }
-  const long n = studyIterationCount(double(cfg.task.duration), double(p.Ts));
+  const long n = studyIterationCount(double(cfg.task.duration()), double(run.plant.Ts));
   RunnerResult result;
-  withHistoryCapacity(delay, [&](auto capacity) {
-    result = runPositioningCore<T, decltype(capacity)::value>(p, cfg, gains, delay, n, observe);
+  withHistoryCapacity(run.delay, [&](auto capacity) {
+    withLaw(law, [&](auto law_tag) {
+      result = runPositioningCore<decltype(law_tag)::value, T, decltype(capacity)::value>(run, cfg, n, observe);
+    });
   });
   return result;
+}
+
+// The delay study's PD law on drone `p` (the thesis's runs).
+template <typename T, typename Observer = NoObserver>
+RunnerResult runPositioning(const aurora_sim::ArdroneParams<T>& p, const RunnerConfig<T>& cfg,
+                            const PdGains<T>& gains, long delay, Observer observe = Observer()) {
+  StudyRun<T> run{p, p, LawGains<T>{gains, UnderactuatedGains<T>::defaults()}, delay};
+  return runStudy(LawType::kPdSaturated, run, cfg, observe);
 }
 
 }  // namespace aurora_control

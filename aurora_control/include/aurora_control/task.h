@@ -47,6 +47,36 @@ struct Task {
     const int lap = t > T(0) ? static_cast<int>(t / trajectory.period) : 0;
     return lap < trajectory.laps ? lap : trajectory.laps - 1;
   }
+
+  // The same task in another precision (the float sweep converts once).
+  template <typename U>
+  AURORA_HD Task<U> cast() const {
+    Task<U> c;
+    c.type = type;
+    c.waypoints.count = waypoints.count;
+    for (int i = 0; i < waypoints.count; ++i) {
+      for (int j = 0; j < 3; ++j) c.waypoints.position[i][j] = U(waypoints.position[i][j]);
+      c.waypoints.end_time[i] = U(waypoints.end_time[i]);
+    }
+    c.waypoints.duration = U(waypoints.duration);
+    if (!isTrajectory()) return c;  // (a waypoint task leaves the trajectory unset)
+    const TrajectoryTask<T>& a = trajectory;
+    TrajectoryTask<U>& b = c.trajectory;
+    b.kind = a.kind;
+    for (int j = 0; j < 3; ++j) b.centre[j] = U(a.centre[j]);
+    b.size[0] = U(a.size[0]), b.size[1] = U(a.size[1]);
+    b.period = U(a.period), b.laps = a.laps, b.yaw_along_path = a.yaw_along_path, b.yaw = U(a.yaw);
+    return c;
+  }
 };
+
+// A positioning task: one point for the whole run (the delay study's).
+template <typename T>
+AURORA_HD inline Task<T> positioningTask(T x, T y, T z, T duration) {
+  Task<T> t;
+  t.type = TaskType::kWaypoints;
+  t.waypoints = WaypointTask<T>::singlePoint(x, y, z, duration);
+  return t;
+}
 
 }  // namespace aurora_control

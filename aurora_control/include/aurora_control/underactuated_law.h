@@ -242,12 +242,12 @@ inline const char* underactuatedGainName(int i) {
 }
 
 template <typename T>
-T& underactuatedGain(UnderactuatedGains<T>& g, int i) {
+AURORA_HD T& underactuatedGain(UnderactuatedGains<T>& g, int i) {
   return i % 2 == 0 ? g.k1[i / 2] : g.k2[i / 2];
 }
 
 template <typename T>
-const T& underactuatedGain(const UnderactuatedGains<T>& g, int i) {
+AURORA_HD const T& underactuatedGain(const UnderactuatedGains<T>& g, int i) {
   return i % 2 == 0 ? g.k1[i / 2] : g.k2[i / 2];
 }
 

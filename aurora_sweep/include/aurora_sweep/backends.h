@@ -19,14 +19,31 @@ using Progress = std::atomic<long>;
 template <typename T>
 SimSetup<T> makeSetup(const SweepSpec& spec) {
   SimSetup<T> s;
-  s.params = spec.vehicle.cast<T>();
-  s.config.task = aurora_control::WaypointTask<T>::singlePoint(
-      T(spec.desired[0]), T(spec.desired[1]), T(spec.desired[2]), T(spec.duration));
+  s.vehicle = spec.vehicle;
+  s.model = spec.vehicle.cast<T>();
+  s.config.task = spec.task.cast<T>();
   s.config.criteria = spec.criteria.cast<T>();
   s.config.clamp_commands = spec.clamp_commands;
   s.config.early_stop = spec.early_stop;
-  s.iterations = aurora_control::studyIterationCount(spec.duration, spec.vehicle.Ts);
+  s.iterations = aurora_control::studyIterationCount(spec.duration(), spec.vehicle.Ts);
+  s.varies_model = spec.variesModel();
   return s;
+}
+
+// Calls f(T(), capacity, law): the sweep's precision, history capacity
+// (limits.h) and law as compile-time values. The CPU backends instantiate
+// their loops here, once.
+template <class F>
+void withSweepTypes(const SweepSpec& spec, F&& f) {
+  aurora_control::withHistoryCapacity(spec.max_delay, [&](auto capacity) {
+    aurora_control::withLaw(spec.law, [&](auto law) {
+      if (spec.precision == Precision::kDouble) {
+        f(double(), capacity, law);
+      } else {
+        f(float(), capacity, law);
+      }
+    });
+  });
 }
 
 // One simulation at a time on the calling thread: the plain reference loop.

@@ -8,26 +8,42 @@
 
 namespace aurora_sweep {
 
-enum ParamId : int { kParamKp = 0, kParamKd = 1, kParamDelay = 2, kParamCount = 3 };
+// Every parameter a sweep can vary (names and accepted ranges: parameters.h).
+// The PD law's gains, the delay, the underactuated law's 12 gains in the
+// order of underactuatedGainName (k1_x, k2_x, ..., k2_psi), and factors of
+// the simulated drone's model parameters (1 = the vehicle file's value).
+enum ParamId : int {
+  kParamKp = 0,
+  kParamKd = 1,
+  kParamDelay = 2,
+  kParamFirstUnderactuatedGain = 3,  // 12 of them
+  kParamFirstModelFactor = 15,       // m, Ixx, Iyy, Izz, Cf, Ct, Km, Jm
+  kParamCount = 23
+};
+constexpr int kUnderactuatedGainCount = 12;
+constexpr int kModelFactorCount = 8;
 
 struct Combination {
-  double kp;    // proportional gain
-  double kd;    // derivative gain
-  long delay;   // feedback delay [samples of Ts]
+  double v[kParamCount];  // every parameter's value, ParamId order
+  AURORA_HD long delay() const { return static_cast<long>(v[kParamDelay]); }
 };
 
-// A grid: up to three axes, axis 0 varies fastest (the order of the sweep
-// file's `order`). Values of an axis are precomputed per axis on the host
+// A grid: axes, axis 0 varies fastest (the order of the sweep file's
+// `order`). Values of an axis are precomputed per axis on the host
 // (from/to/count or an explicit list). Alternatively a list of points
-// (n_points > 0): combination i is points[3 i .. 3 i + 2] = (kp, kd, delay).
+// (n_points > 0, from a CSV file or a sampling design): row i holds the
+// values of the `point_cols` parameters point_param[0..point_cols).
+// Parameters on no axis and in no column take `fixed`.
 struct GridView {
   int n_axes;
   int param[kParamCount];          // ParamId of each axis
   long count[kParamCount];         // values on each axis
   const double* values[kParamCount];
-  double fixed[kParamCount];       // value of each parameter not on an axis
+  double fixed[kParamCount];       // value of each parameter not varied
   const double* points;
   long n_points;
+  int point_cols;
+  int point_param[kParamCount];
 
   AURORA_HD long size() const {
     if (n_points > 0) return n_points;
@@ -37,17 +53,18 @@ struct GridView {
   }
 
   AURORA_HD Combination decode(long index) const {
-    double v[kParamCount] = {fixed[0], fixed[1], fixed[2]};
+    Combination c;
+    for (int i = 0; i < kParamCount; ++i) c.v[i] = fixed[i];
     if (n_points > 0) {
-      for (int i = 0; i < kParamCount; ++i) v[i] = points[3 * index + i];
+      for (int j = 0; j < point_cols; ++j) c.v[point_param[j]] = points[index * point_cols + j];
     } else {
       long rest = index;
       for (int a = 0; a < n_axes; ++a) {
-        v[param[a]] = values[a][rest % count[a]];
+        c.v[param[a]] = values[a][rest % count[a]];
         rest /= count[a];
       }
     }
-    return Combination{v[kParamKp], v[kParamKd], static_cast<long>(v[kParamDelay])};
+    return c;
   }
 };
 

@@ -1,6 +1,7 @@
 // One simulation of a sweep, from its combination index: the per-thread body
 // of the CUDA kernel and the body of the scalar backend's loop (host and
-// device, no allocation, no exceptions).
+// device, no allocation, no exceptions). The SIMD engine builds each lane's
+// run with the same studyRun().
 #pragma once
 
 #include "aurora_control/positioning_runner.h"
@@ -11,10 +12,47 @@ namespace aurora_sweep {
 // Everything a simulation needs besides its combination, in precision T.
 template <typename T>
 struct SimSetup {
-  aurora_sim::ArdroneParams<T> params;
+  aurora_sim::ArdroneParams<double> vehicle;  // the vehicle file's (nominal) values
+  aurora_sim::ArdroneParams<T> model;         // the same in T: what the underactuated law inverts
   aurora_control::RunnerConfig<T> config;
-  long iterations;  // loop iterations of the study (1801 for 60 s)
+  long iterations;    // loop iterations of the task (1801 for 60 s)
+  bool varies_model;  // some model factor is not 1: each run scales its own drone
 };
+
+// The model parameters the factors multiply (factor i is parameter
+// kParamFirstModelFactor + i: m, Ixx, Iyy, Izz, Cf, Ct, Km, Jm); then the
+// derived quantities follow (k2 = Ct/Cf, hover speed and voltage). In
+// double, as the vehicle file is loaded, then converted: every backend and
+// precision scales the same way.
+AURORA_HD inline aurora_sim::ArdroneParams<double> scaledModel(aurora_sim::ArdroneParams<double> p,
+                                                               const double* factor) {
+  p.m *= factor[0];
+  p.Ixx *= factor[1];
+  p.Iyy *= factor[2];
+  p.Izz *= factor[3];
+  p.Cf *= factor[4];
+  p.Ct *= factor[5];
+  p.Km *= factor[6];
+  p.Jm *= factor[7];
+  p.updateDerived();
+  return p;
+}
+
+// A combination's own run: its gains, its delay and its drone.
+template <typename T>
+AURORA_HD inline aurora_control::StudyRun<T> studyRun(const SimSetup<T>& s, const Combination& c) {
+  aurora_control::StudyRun<T> run;
+  run.model = s.model;
+  run.plant = s.varies_model ? scaledModel(s.vehicle, c.v + kParamFirstModelFactor).template cast<T>()
+                             : s.model;
+  run.gains.pd.kp = T(c.v[kParamKp]);
+  run.gains.pd.kd = T(c.v[kParamKd]);
+  for (int i = 0; i < kUnderactuatedGainCount; ++i) {
+    aurora_control::underactuatedGain(run.gains.underactuated, i) = T(c.v[kParamFirstUnderactuatedGain + i]);
+  }
+  run.delay = c.delay();
+  return run;
+}
 
 // Compact result (what the kernel writes back; 48 bytes).
 struct SimResult {
@@ -37,14 +75,13 @@ AURORA_HD inline SimResult compactResult(const aurora_control::RunnerResult& r) 
   return s;
 }
 
-template <typename T, int Capacity>
+template <aurora_control::LawType Law, typename T, int Capacity>
 AURORA_HD inline SimResult simulateCombination(const SimSetup<T>& setup, const GridView& grid,
                                                long index) {
-  const Combination c = grid.decode(index);
-  const aurora_control::PdGains<T> gains{T(c.kp), T(c.kd)};
+  const aurora_control::StudyRun<T> run = studyRun(setup, grid.decode(index));
   aurora_control::NoObserver none;
-  return compactResult(aurora_control::runPositioningCore<T, Capacity>(
-      setup.params, setup.config, gains, c.delay, setup.iterations, none));
+  return compactResult(aurora_control::runPositioningCore<Law, T, Capacity>(run, setup.config,
+                                                                            setup.iterations, none));
 }
 
 }  // namespace aurora_sweep

@@ -6,8 +6,10 @@
 #include <vector>
 
 #include "aurora_control/feasibility.h"
+#include "aurora_control/task.h"
 #include "aurora_sim/ardrone_params.h"
 #include "aurora_sweep/combination.h"
+#include "aurora_sweep/parameters.h"
 
 namespace aurora_sweep {
 
@@ -24,15 +26,19 @@ struct SweepSpec {
   std::string file;                 // the sweep file it came from
   std::string name;
   std::string controller = "pd_saturated";
+  aurora_control::LawType law = aurora_control::LawType::kPdSaturated;
   std::string vehicle_file;
   aurora_sim::ArdroneParams<double> vehicle{};
-  double desired[3] = {2.0, 1.0, 2.0};  // positioning target [m]
-  double duration = 60.0;               // [s]
+  // The task (one schema with the node: positioning point, waypoints,
+  // circle, lemniscate); the study's by default.
+  aurora_control::Task<double> task = aurora_control::positioningTask(2.0, 1.0, 2.0, 60.0);
+  double duration() const { return task.duration(); }
   aurora_control::FeasibilityCriteria<double> criteria =
       aurora_control::FeasibilityCriteria<double>::study();
   std::vector<Axis> axes;           // in variation order: axes[0] varies fastest
-  double fixed[kParamCount] = {0.0, 0.0, 0.0};
-  std::vector<double> points;       // (kp, kd, delay) triples, when read from a CSV
+  double fixed[kParamCount];        // parameters not varied (parameters.h defaults)
+  std::vector<double> points;       // rows of the point_params' values (CSV file or design)
+  std::vector<int> point_params;    // ParamId of each column of `points`
   std::string points_file;
   bool early_stop = true;
   bool clamp_commands = false;
@@ -55,8 +61,45 @@ struct SweepSpec {
     }
     for (int i = 0; i < kParamCount; ++i) g.fixed[i] = fixed[i];
     g.points = points.empty() ? nullptr : points.data();
-    g.n_points = static_cast<long>(points.size() / 3);
+    g.point_cols = static_cast<int>(point_params.size());
+    for (int j = 0; j < g.point_cols; ++j) g.point_param[j] = point_params[j];
+    g.n_points = g.point_cols > 0 ? static_cast<long>(points.size()) / g.point_cols : 0;
     return g;
+  }
+
+  SweepSpec() {
+    for (int id = 0; id < kParamCount; ++id) fixed[id] = paramDefault(id);
+  }
+
+  // Whether a parameter varies (on an axis or a points column).
+  bool varies(int id) const {
+    for (const Axis& a : axes) {
+      if (a.param == id) return true;
+    }
+    for (int p : point_params) {
+      if (p == id) return true;
+    }
+    return false;
+  }
+
+  // Some model factor varies or is not 1: each run scales its own drone.
+  bool variesModel() const {
+    for (int i = 0; i < kModelFactorCount; ++i) {
+      const int id = kParamFirstModelFactor + i;
+      if (varies(id) || fixed[id] != 1.0) return true;
+    }
+    return false;
+  }
+
+  // The parameters of each result row: the law's gains, the delay, and the
+  // model factors that vary or are not 1 (ParamId order).
+  std::vector<int> columns() const {
+    std::vector<int> c;
+    for (int id = 0; id < kParamCount; ++id) {
+      const bool model = paramInfo(id).group == ParamGroup::kModelFactor;
+      if (paramApplies(id, law) && (!model || varies(id) || fixed[id] != 1.0)) c.push_back(id);
+    }
+    return c;
   }
   long size() const { return view().size(); }
 
@@ -70,13 +113,5 @@ struct SweepSpec {
   long rangeEnd() const { return range_end < 0 ? size() : range_end; }
   long rangeSize() const { return rangeEnd() - rangeBegin(); }
 };
-
-inline const char* paramName(int id) {
-  switch (id) {
-    case kParamKp: return "kp";
-    case kParamKd: return "kd";
-    default: return "delay";
-  }
-}
 
 }  // namespace aurora_sweep

@@ -1,0 +1,43 @@
+// The names a sweep file may vary, per controller, and each one's accepted
+// range (host only). Model parameters are factors of the vehicle file's
+// value: m 1.2 flies a drone 20 % heavier than config/vehicles/ardrone2.yaml
+// (docs/delay-and-study.md, "Sweeping any parameter").
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "aurora_control/control_law.h"
+#include "aurora_sweep/combination.h"
+
+namespace aurora_sweep {
+
+enum class ParamGroup { kPdGain, kDelay, kUnderactuatedGain, kModelFactor };
+
+struct ParamInfo {
+  std::string name;
+  ParamGroup group;
+  double min, max;    // accepted values (inclusive)
+  std::string limit;  // why: shown when a value or range is refused
+};
+
+const ParamInfo& paramInfo(int id);
+// -1 for a name no controller accepts.
+int paramIdOf(const std::string& name);
+// A short name; "kp", "k1_theta", "m", ...
+inline const char* paramName(int id) { return paramInfo(id).name.c_str(); }
+
+// Whether law `law` uses parameter `id` (its gains, the delay, the model).
+bool paramApplies(int id, aurora_control::LawType law);
+// The accepted names for a law, in ParamId order, comma separated.
+std::string acceptedParamNames(aurora_control::LawType law);
+// "pd_saturated" / "underactuated"; false for another name.
+bool lawFromName(const std::string& name, aurora_control::LawType& law);
+const char* lawName(aurora_control::LawType law);
+
+// The value of a parameter a sweep file leaves out: the underactuated law's
+// gains default to the spec's (UnderactuatedGains::defaults), model factors
+// to 1. The PD gains and the delay have none (NaN: the file must give them).
+double paramDefault(int id);
+
+}  // namespace aurora_sweep
