@@ -325,7 +325,7 @@ void requireAll(const Reader& r, const SweepSpec& spec) {
 
 // The largest delay of any combination [samples].
 long maxDelay(const SweepSpec& spec) {
-  double d = spec.fixed[kParamDelay];
+  double d = spec.varies(kParamDelay) ? 0.0 : spec.fixed[kParamDelay];
   for (const Axis& a : spec.axes) {
     if (a.param == kParamDelay) d = *std::max_element(a.values.begin(), a.values.end());
   }
@@ -422,6 +422,10 @@ SweepSpec parseSweepFile(const std::string& path, const std::string& config_dir)
   }
   requireAll(r, spec);
   spec.max_delay = maxDelay(spec);
+  // A design's delay range counts whole, whichever samples it happened to draw.
+  for (size_t j = 0; j < varied.sampled.size(); ++j) {
+    if (varied.sampled[j] == kParamDelay) spec.max_delay = std::max(spec.max_delay, static_cast<long>(varied.ranges[j].to));
+  }
   return spec;
 }
 
