@@ -13,6 +13,7 @@
 #include "aurora_control/flight_runner.h"
 #include "aurora_sweep/backends.h"
 #include "aurora_sweep/sweep_file.h"
+#include "study_files.h"
 
 using namespace aurora_sweep;
 using aurora_control::LawType;
@@ -21,35 +22,9 @@ namespace {
 
 const std::string kConfig = AURORA_CONFIG_DIR;
 
-std::string writeTemp(const std::string& name, const std::string& text) {
-  const std::string path = ::testing::TempDir() + "/" + name;
-  std::ofstream(path) << text;
-  return path;
-}
-
-std::string readText(const std::string& path) {
-  std::ifstream in(path);
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
-
-// A shipped study with fewer samples (relative names resolve in config/).
-SweepSpec shippedStudy(const std::string& name, const std::string& samples_line, long samples,
-                       Precision precision) {
-  std::string text = readText(kConfig + "/sweeps/" + name + ".yaml");
-  const size_t at = text.find(samples_line);
-  EXPECT_NE(at, std::string::npos) << name;
-  text.replace(at, samples_line.size(), "samples: " + std::to_string(samples));
-  SweepSpec spec = loadSweepFile(writeTemp(name + "_small.yaml", text), kConfig);
-  spec.precision = precision;
-  return spec;
-}
-
-SweepSpec study13(long samples, Precision p = Precision::kDouble) {
-  return shippedStudy("underactuated_13", "samples: 65536", samples, p);
-}
-SweepSpec robustness(long samples, Precision p = Precision::kDouble) {
-  return shippedStudy("robustness", "samples: 4096", samples, p);
-}
+using test::robustness;
+using test::study13;
+using test::writeTemp;
 
 std::vector<SimResult> runOn(const std::string& key, const SweepSpec& spec, int threads = 2) {
   std::vector<SimResult> out;
