@@ -92,8 +92,11 @@ CudaRun launchPrecision(const SweepSpec& spec, int block_size, std::vector<SimRe
   CudaRun run;
   aurora_control::withLaw(spec.law, [&](auto law) {
     constexpr aurora_control::LawType kLaw = decltype(law)::value;
-    run = spec.max_delay < 64 ? launch<kLaw, T, 64>(spec, block_size, out)
-                              : launch<kLaw, T, 512>(spec, block_size, out);  // runCuda checks cudaMaxDelay()
+    using aurora_control::kMediumHistory;
+    using aurora_control::kShortHistory;
+    // The tiers of withHistoryCapacity up to kMediumHistory: runCuda checks cudaMaxDelay().
+    run = spec.max_delay < kShortHistory ? launch<kLaw, T, kShortHistory>(spec, block_size, out)
+                                         : launch<kLaw, T, kMediumHistory>(spec, block_size, out);
   });
   return run;
 }
@@ -142,7 +145,7 @@ CudaDevice probeCudaDevice() {
   return d;
 }
 
-long cudaMaxDelay() { return 511; }
+long cudaMaxDelay() { return aurora_control::kMediumHistory - 1; }
 
 CudaRun runCuda(const SweepSpec& spec, int block_size, std::vector<SimResult>& out) {
   if (spec.max_delay > cudaMaxDelay()) {

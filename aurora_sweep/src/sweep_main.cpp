@@ -1,5 +1,6 @@
-// sweep: runs a grid search (or a list of points) of controller gains x delay
-// and tells which combinations fly safely.
+// sweep: runs a grid search, a sampling design or a list of points over a
+// law's gains, the delay and the model's parameters, and tells which
+// combinations fly safely.
 //   rosrun aurora_sweep sweep --config FILE --out DIR [--backend scalar|cpu|cuda|auto]
 //                             [--precision double|float] [--threads N] [--no-plots] [--rviz]
 #include <sys/stat.h>
@@ -33,11 +34,13 @@ using namespace aurora_sweep;
 const char* kUsage =
     "usage: sweep --config FILE --out DIR [options]\n"
     "\n"
-    "Runs every combination of a sweep file (controller gains x delay) and writes\n"
-    "DIR/results.csv (one row per combination), DIR/summary.json and DIR/*.png.\n"
+    "Runs every combination of a sweep file (a law's gains x delay x model factors, on\n"
+    "any task: a grid, a sampling design or a points file) and writes DIR/results.csv\n"
+    "(one row per combination), DIR/summary.json and DIR/*.png.\n"
     "\n"
     "options:\n"
-    "  --config FILE        sweep file (YAML), e.g. config/sweeps/positioning_delay.yaml\n"
+    "  --config FILE        sweep file (YAML), e.g. config/sweeps/positioning_delay.yaml (the\n"
+    "                       thesis grid) or config/sweeps/underactuated_13.yaml (13 parameters)\n"
     "  --out DIR            output folder (created; must be writable)\n"
     "  --backend NAME       scalar (one simulation at a time, one thread), cpu (SIMD lanes\n"
     "                       on all cores), cuda (one simulation per GPU thread), or auto\n"

@@ -16,20 +16,12 @@ namespace aurora_sweep {
 void runThreadedScalar(const SweepSpec& spec, int threads, std::vector<SimResult>& out,
                        Progress& progress) {
   threads = std::max(1, threads);
-  withSweepTypes(spec, [&](auto type, auto capacity, auto law) {
-    using T = decltype(type);
-    const SimSetup<T> setup = makeSetup<T>(spec);
-    const GridView grid = spec.view();
-    const long first = spec.rangeBegin(), n = spec.rangeSize();
-    out.resize(n);
+  runEachCombination(spec, out, progress, [threads](long n, const std::function<void(long)>& simulate) {
     std::atomic<long> next{0};
     std::vector<std::thread> pool;
     for (int t = 0; t < threads; ++t) {
       pool.emplace_back([&] {
-        for (long i = next.fetch_add(1); i < n; i = next.fetch_add(1)) {
-          out[i] = simulateCombination<decltype(law)::value, T, decltype(capacity)::value>(setup, grid, first + i);
-          progress.fetch_add(1, std::memory_order_relaxed);
-        }
+        for (long i = next.fetch_add(1); i < n; i = next.fetch_add(1)) simulate(i);
       });
     }
     for (auto& th : pool) th.join();

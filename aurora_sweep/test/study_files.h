@@ -17,13 +17,17 @@ inline std::string writeTemp(const std::string& name, const std::string& text) {
   return path;
 }
 
+inline std::string readText(const std::string& path) {
+  std::ifstream in(path);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
 // config/sweeps/NAME.yaml with `samples_line` replaced by `samples` (relative
 // names resolve in config/).
 inline SweepSpec shippedStudy(const std::string& name, const std::string& samples_line, long samples,
                               Precision precision) {
   const std::string config = AURORA_CONFIG_DIR;
-  std::ifstream in(config + "/sweeps/" + name + ".yaml");
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::string text = readText(config + "/sweeps/" + name + ".yaml");
   const size_t at = text.find(samples_line);
   EXPECT_NE(at, std::string::npos) << name;
   if (at != std::string::npos) text.replace(at, samples_line.size(), "samples: " + std::to_string(samples));

@@ -22,6 +22,7 @@ namespace {
 
 const std::string kConfig = AURORA_CONFIG_DIR;
 
+using test::readText;
 using test::robustness;
 using test::study13;
 using test::writeTemp;
@@ -293,3 +294,32 @@ TEST(Study13, PointsFileTakesAnyParameterColumns) {
   EXPECT_EQ(c.delay(), 0);
   EXPECT_TRUE(spec.variesModel());
 }
+
+#ifdef AURORA_SWEEP_BIN
+// The program on a small 13-parameter design: one column per parameter of
+// the law, summary.json names them, the marginal and pair plots are drawn
+// (the Kp x Kd figures are not: this law has no Kp, Kd).
+TEST(Study13, TheProgramWritesEveryParameterAndItsPlots) {
+  const SweepSpec small = study13(256);
+  const std::string out = ::testing::TempDir() + "/study13_program";
+  const std::string cmd = std::string(AURORA_SWEEP_BIN) + " --config " + small.file + " --config-dir " + kConfig +
+                          " --out " + out + " --backend cpu --output both --quiet --overwrite 2>&1";
+  FILE* p = popen(cmd.c_str(), "r");
+  std::string log;
+  char buf[512];
+  while (fgets(buf, sizeof buf, p)) log += buf;
+  ASSERT_EQ(pclose(p), 0) << log;
+  std::ifstream csv(out + "/results.csv");
+  std::string header;
+  std::getline(csv, header);
+  EXPECT_EQ(header.rfind("index,delay,k1_x,k2_x,k1_y,k2_y,k1_z,k2_z,k1_phi,k2_phi,k1_theta,k2_theta,k1_psi,k2_psi,ok1,", 0),
+            0u) << header;
+  const std::string summary = readText(out + "/summary.json");
+  EXPECT_NE(summary.find("\"controller\": \"underactuated\""), std::string::npos);
+  EXPECT_NE(summary.find("\"k2_psi\""), std::string::npos);
+  EXPECT_TRUE(std::ifstream(out + "/results.h5").good());
+  EXPECT_TRUE(std::ifstream(out + "/feasible_marginals.png").good()) << log;
+  EXPECT_TRUE(std::ifstream(out + "/feasible_pairs.png").good()) << log;
+  EXPECT_FALSE(std::ifstream(out + "/feasible_volume.png").good());
+}
+#endif

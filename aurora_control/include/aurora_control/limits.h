@@ -17,10 +17,12 @@ constexpr int kDelayHistory = static_cast<int>(kMaxDelaySamples) + 1;
 // `max_delay` (a short history keeps a batch of lanes in cache). Calls
 // f(std::integral_constant<int, capacity>()); every runner and sweep backend
 // picks its capacity here.
+// The tiers below the full history (the CUDA backend compiles these two).
+constexpr int kShortHistory = 64, kMediumHistory = 512;
 template <class F>
 void withHistoryCapacity(long max_delay, F&& f) {
-  if (max_delay < 64) return f(std::integral_constant<int, 64>());
-  if (max_delay < 512) return f(std::integral_constant<int, 512>());
+  if (max_delay < kShortHistory) return f(std::integral_constant<int, kShortHistory>());
+  if (max_delay < kMediumHistory) return f(std::integral_constant<int, kMediumHistory>());
   return f(std::integral_constant<int, kDelayHistory>());
 }
 

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <atomic>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -42,6 +43,24 @@ void withSweepTypes(const SweepSpec& spec, F&& f) {
       } else {
         f(float(), capacity, law);
       }
+    });
+  });
+}
+
+// The scalar loops' body (scalar and threaded backends): `loop(n, simulate)`
+// calls simulate(i) once for each i in [0, n), in any order and on any
+// thread; simulate(i) runs combination rangeBegin() + i into out[i].
+template <class Loop>
+void runEachCombination(const SweepSpec& spec, std::vector<SimResult>& out, Progress& progress, Loop&& loop) {
+  withSweepTypes(spec, [&](auto type, auto capacity, auto law) {
+    using T = decltype(type);
+    const SimSetup<T> setup = makeSetup<T>(spec);
+    const GridView grid = spec.view();
+    const long first = spec.rangeBegin();
+    out.resize(spec.rangeSize());
+    loop(spec.rangeSize(), [&](long i) {
+      out[i] = simulateCombination<decltype(law)::value, T, decltype(capacity)::value>(setup, grid, first + i);
+      progress.fetch_add(1, std::memory_order_relaxed);
     });
   });
 }
