@@ -81,7 +81,7 @@ std::vector<int> readPointsHeader(const Reader& r, const SweepSpec& spec, const 
     for (char c : cell) {
       if (c != ' ' && c != '\r') name += c;
     }
-    const int id = paramOf(r, spec, name, where + " header column '" + name + "'");
+    const int id = paramOf(r, spec, name, where + " header column " + name);
     if (std::find(ids.begin(), ids.end(), id) != ids.end()) r.fail(where, "names column '" + name + "' twice");
     ids.push_back(id);
   }

@@ -277,7 +277,7 @@ TEST(Study13Refusal, MistakesNameTheKey) {
   const std::string csv = writeTemp("ua_points.csv", "k1_z,delay,m\n5,3,1.1\n4,0,12\n");
   expectRefused(ua + "  points: " + csv + "\n", "row 3 m' = 12 is outside the accepted range [0.1, 10] of m");
   const std::string bad = writeTemp("ua_bad_points.csv", "k1_z,kp\n5,0.5\n");
-  expectRefused(ua + "  points: " + bad + "\n", "header column 'kp'' is not a parameter of the underactuated controller");
+  expectRefused(ua + "  points: " + bad + "\n", "header column kp' is not a parameter of the underactuated controller");
 }
 
 TEST(Study13, PointsFileTakesAnyParameterColumns) {

@@ -16,8 +16,8 @@ constexpr int kDelayHistory = static_cast<int>(kMaxDelaySamples) + 1;
 // The history capacities the loops are compiled for: the smallest that holds
 // `max_delay` (a short history keeps a batch of lanes in cache). Calls
 // f(std::integral_constant<int, capacity>()); every runner and sweep backend
-// picks its capacity here.
-// The tiers below the full history (the CUDA backend compiles these two).
+// picks its capacity here; the CUDA backend compiles the two tiers below the
+// full history.
 constexpr int kShortHistory = 64, kMediumHistory = 512;
 template <class F>
 void withHistoryCapacity(long max_delay, F&& f) {
