@@ -11,6 +11,7 @@
 #include "aurora_sweep/backends.h"
 #include "aurora_sweep/design.h"
 #include "aurora_sweep/sweep_file.h"
+#include "sweep_test_support.h"
 
 using namespace aurora_sweep;
 
@@ -18,20 +19,11 @@ namespace {
 
 const std::string kConfig = AURORA_CONFIG_DIR;
 
-std::string writeSweep(const std::string& name, const std::string& yaml) {
-  const std::string path = ::testing::TempDir() + "/" + name + ".yaml";
-  std::ofstream(path) << yaml;
-  return path;
-}
+using test::refusal;
+using test::runOn;
 
-std::string refusal(const std::string& yaml) {
-  static int n = 0;
-  try {
-    loadSweepFile(writeSweep("bad_design_" + std::to_string(n++), yaml), kConfig);
-  } catch (const SweepFileError& e) {
-    return e.what();
-  }
-  return "";
+std::string writeSweep(const std::string& name, const std::string& yaml) {
+  return test::writeTemp(name + ".yaml", yaml);
 }
 
 const char* kSobolSweep =
@@ -108,10 +100,7 @@ TEST(Design, SweepFileSamplesTheRanges) {
 
 TEST(Design, ScalarAndCpuAgreeOnADesign) {
   const SweepSpec spec = loadSweepFile(writeSweep("sobol_backends", kSobolSweep), kConfig);
-  std::vector<SimResult> scalar, cpu;
-  Progress p1{0}, p2{0};
-  runScalar(spec, scalar, p1);
-  runCpuBatch(spec, 2, cpu, p2);
+  const std::vector<SimResult> scalar = runOn("scalar", spec), cpu = runOn("cpu", spec);
   int feasible = 0;
   for (long i = 0; i < spec.size(); ++i) {
     EXPECT_EQ(scalar[i].ok, cpu[i].ok) << i;

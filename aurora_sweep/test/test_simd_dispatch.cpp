@@ -14,6 +14,7 @@
 
 #include "aurora_sweep/backends.h"
 #include "aurora_sweep/sweep_file.h"
+#include "sweep_test_support.h"
 
 using namespace aurora_sweep;
 
@@ -22,21 +23,8 @@ namespace {
 const std::string kConfig = AURORA_CONFIG_DIR;
 const std::string kData = std::string(AURORA_SWEEP_TEST_DIR) + "/data";
 
-bool relClose(double a, double b, double rel) {
-  return std::fabs(a - b) <= rel * std::max(std::fabs(a), std::fabs(b)) || a == b;
-}
-
-std::vector<SimResult> runOn(const std::string& key, const SweepSpec& spec) {
-  std::vector<SimResult> out;
-  Progress progress{0};
-  if (key == "scalar") {
-    runScalar(spec, out, progress);
-  } else {
-    runCpuBatchOn(key, spec, 2, out, progress);
-  }
-  EXPECT_EQ(progress.load(), spec.size()) << key;
-  return out;
-}
+using test::relClose;
+using test::runOn;
 
 // Compares one build with the scalar loop on the same spec.
 void expectAgreement(const std::string& key, const SweepSpec& spec, double rel) {

@@ -13,7 +13,7 @@
 #include "aurora_control/flight_runner.h"
 #include "aurora_sweep/backends.h"
 #include "aurora_sweep/sweep_file.h"
-#include "study_files.h"
+#include "sweep_test_support.h"
 
 using namespace aurora_sweep;
 using aurora_control::LawType;
@@ -23,18 +23,13 @@ namespace {
 const std::string kConfig = AURORA_CONFIG_DIR;
 
 using test::readText;
+using test::refusal;
+using test::relClose;
 using test::robustness;
+using test::runOn;
 using test::study13;
+using test::widestIsa;
 using test::writeTemp;
-
-std::vector<SimResult> runOn(const std::string& key, const SweepSpec& spec, int threads = 2) {
-  std::vector<SimResult> out;
-  Progress progress{0};
-  if (key == "scalar") runScalar(spec, out, progress);
-  else runCpuBatchOn(key, spec, threads, out, progress);
-  EXPECT_EQ(progress.load(), spec.size()) << key;
-  return out;
-}
 
 // The kernel's per-thread function (simulateCombination) on the host.
 std::vector<SimResult> runKernelBody(const SweepSpec& spec) {
@@ -47,10 +42,6 @@ std::vector<SimResult> runKernelBody(const SweepSpec& spec) {
                       : simulateCombination<LawType::kUnderactuated, double, 64>(setup, grid, i));
   }
   return out;
-}
-
-bool relClose(double a, double b, double rel) {
-  return a == b || std::fabs(a - b) <= rel * std::max(std::fabs(a), std::fabs(b));
 }
 
 // Double: identical flags and step counts, metrics to 1e-9 relative (the
@@ -80,14 +71,6 @@ void expectBackendsAgree(const SweepSpec& spec) {
   for (const CpuIsa& isa : cpuBatchIsas()) {
     if (isa.supported) expectSameResults(scalar, runOn(isa.key, spec), "cpu " + isa.key);
   }
-}
-
-// The build the cpu backend picks on this CPU (the first supported one).
-std::string widestIsa() {
-  for (const CpuIsa& isa : cpuBatchIsas()) {
-    if (isa.supported) return isa.key;
-  }
-  return "none";
 }
 
 double flagAgreement(const std::vector<SimResult>& a, const std::vector<SimResult>& b) {
@@ -237,15 +220,6 @@ TEST(SweepVsFlight, TrajectoryTasksAndMissionsFlyTheSame) {
 }
 
 namespace {
-
-std::string refusal(const std::string& yaml) {
-  try {
-    loadSweepFile(writeTemp("refused.yaml", yaml), kConfig);
-  } catch (const SweepFileError& e) {
-    return e.what();
-  }
-  return "";
-}
 
 void expectRefused(const std::string& yaml, const std::string& text) {
   const std::string msg = refusal(yaml);

@@ -14,6 +14,7 @@
 #include "aurora_sweep/recent_rate.h"
 #include "aurora_sweep/results.h"
 #include "aurora_sweep/sweep_file.h"
+#include "sweep_test_support.h"
 
 using namespace aurora_sweep;
 
@@ -24,39 +25,10 @@ const std::string kData = std::string(AURORA_SWEEP_TEST_DIR) + "/data";
 
 SweepSpec load(const std::string& path) { return loadSweepFile(path, kConfig); }
 
-std::vector<SimResult> run(const SweepSpec& spec, const std::string& backend) {
-  std::vector<SimResult> out;
-  Progress progress{0};
-  if (backend == "scalar") {
-    runScalar(spec, out, progress);
-  } else {
-    runCpuBatch(spec, 2, out, progress);
-  }
-  EXPECT_EQ(progress.load(), spec.size());
-  return out;
-}
-
-bool relClose(double a, double b, double rel) {
-  return std::fabs(a - b) <= rel * std::max(std::fabs(a), std::fabs(b)) || a == b;
-}
-
-std::string writeTemp(const std::string& name, const std::string& text) {
-  const std::string path = ::testing::TempDir() + "/" + name;
-  std::ofstream(path) << text;
-  return path;
-}
-
-// The message of loading `yaml`; empty if it loaded.
-std::string refusal(const std::string& yaml) {
-  static int n = 0;
-  const std::string path = writeTemp("bad_sweep_" + std::to_string(n++) + ".yaml", yaml);
-  try {
-    load(path);
-  } catch (const SweepFileError& e) {
-    return e.what();
-  }
-  return "";
-}
+using test::refusal;
+using test::relClose;
+using test::runOn;
+using test::writeTemp;
 
 const char* kGoodParams =
     "  parameters:\n"
@@ -101,8 +73,8 @@ TEST(SweepFile, OrderChangesTheIndexing) {
 TEST(Backends, ScalarAndCpuAgreeInDouble) {
   const SweepSpec spec = load(kData + "/small_grid.yaml");
   ASSERT_EQ(spec.size(), 80);
-  const auto scalar = run(spec, "scalar");
-  const auto cpu = run(spec, "cpu");
+  const auto scalar = runOn("scalar", spec);
+  const auto cpu = runOn("cpu", spec);
   int compared = 0, feasible = 0, infeasible = 0;
   for (long i = 0; i < spec.size(); ++i) {
     EXPECT_EQ(scalar[i].ok, cpu[i].ok) << "combination " << i;
@@ -130,7 +102,7 @@ TEST(Backends, KernelBodyOnTheHostMatchesTheCpuBackend) {
   const SweepSpec spec = load(kData + "/small_grid.yaml");
   const SimSetup<double> setup = makeSetup<double>(spec);
   const GridView grid = spec.view();
-  const auto cpu = run(spec, "cpu");
+  const auto cpu = runOn("cpu", spec);
   for (long i = 0; i < spec.size(); ++i) {
     const SimResult r = simulateCombination<aurora_control::LawType::kPdSaturated, double, 64>(setup, grid, i);
     EXPECT_EQ(r.ok, cpu[i].ok) << i;
@@ -144,9 +116,9 @@ TEST(Backends, KernelBodyOnTheHostMatchesTheCpuBackend) {
 
 TEST(Backends, EarlyStopKeepsTheFeasibleSetAndSavesSteps) {
   SweepSpec spec = load(kData + "/small_grid.yaml");
-  const auto full = run(spec, "cpu");
+  const auto full = runOn("cpu", spec);
   spec.early_stop = true;
-  const auto early = run(spec, "cpu");
+  const auto early = runOn("cpu", spec);
   long steps_full = 0, steps_early = 0;
   for (long i = 0; i < spec.size(); ++i) {
     EXPECT_EQ((full[i].ok >> 4) & 1, (early[i].ok >> 4) & 1) << i;
@@ -158,10 +130,10 @@ TEST(Backends, EarlyStopKeepsTheFeasibleSetAndSavesSteps) {
 
 TEST(Backends, FloatFeasibilityTracksDouble) {
   SweepSpec spec = load(kData + "/small_grid.yaml");
-  const auto d = run(spec, "cpu");
+  const auto d = runOn("cpu", spec);
   spec.precision = Precision::kFloat;
-  const auto f_cpu = run(spec, "cpu");
-  const auto f_scalar = run(spec, "scalar");
+  const auto f_cpu = runOn("cpu", spec);
+  const auto f_scalar = runOn("scalar", spec);
   int agree = 0;
   for (long i = 0; i < spec.size(); ++i) {
     agree += ((d[i].ok >> 4) & 1) == ((f_cpu[i].ok >> 4) & 1);
@@ -180,7 +152,7 @@ TEST(Backends, PointsFileReproducesTheSpecSelfCheckRows) {
               {0x0b, 79.66617453, 1877.785809, 0.607348822, 1.666709805},
               {0x00, 399.2117079, 13313.32912, 56.0389837, -5.025406388}};
   for (const std::string backend : {"scalar", "cpu"}) {
-    const auto r = run(spec, backend);
+    const auto r = runOn(backend, spec);
     for (int i = 0; i < 3; ++i) {
       EXPECT_EQ(r[i].ok, rows[i].ok) << backend << " row " << i;
       EXPECT_EQ(r[i].steps, 1801);
@@ -361,7 +333,7 @@ TEST(SweepCounts, EarlyStopChecksAreNotReached) {
   const std::string yaml =
       "sweep:\n  parameters:\n    kp: 0.5\n    kd: 0.85\n    delay: {values: [0, 53]}\n  early_stop: true\n";
   const SweepSpec spec = load(writeTemp("early_counts.yaml", yaml));
-  const std::vector<SimResult> results = run(spec, "scalar");
+  const std::vector<SimResult> results = runOn("scalar", spec);
   const Counts c = countResults(results, aurora_control::studyIterationCount(spec.duration(), spec.vehicle.Ts));
   ASSERT_EQ(c.combinations, 2);
   EXPECT_EQ(c.feasible, 1);  // delay 0 flies; delay 53 fails early

@@ -7,7 +7,7 @@
 #include "aurora_sweep/backends.h"
 #include "aurora_sweep/cuda_backend.h"
 #include "aurora_sweep/sweep_file.h"
-#include "study_files.h"
+#include "sweep_test_support.h"
 
 using namespace aurora_sweep;
 

@@ -1,0 +1,92 @@
+// What the sweep's gtests share: temporary sweep files, loading one and
+// catching its refusal, running a spec on a backend, the relative metric
+// comparison, and the shipped studies (config/sweeps/) cut to fewer samples.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "aurora_sweep/backends.h"
+#include "aurora_sweep/sweep_file.h"
+
+namespace aurora_sweep {
+namespace test {
+
+inline const std::string& configDir() {
+  static const std::string dir = AURORA_CONFIG_DIR;
+  return dir;
+}
+
+inline std::string writeTemp(const std::string& name, const std::string& text) {
+  const std::string path = ::testing::TempDir() + "/" + name;
+  std::ofstream(path) << text;
+  return path;
+}
+
+inline std::string readText(const std::string& path) {
+  std::ifstream in(path);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+// The message of loading sweep file text `yaml`; empty if it loaded.
+inline std::string refusal(const std::string& yaml) {
+  static int n = 0;
+  try {
+    loadSweepFile(writeTemp("bad_sweep_" + std::to_string(n++) + ".yaml", yaml), configDir());
+  } catch (const SweepFileError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// `spec` on backend `key`: "scalar", "cpu" (the build chosen at run time) or
+// one of the cpu backend's builds (cpuBatchIsas) on `threads` threads.
+inline std::vector<SimResult> runOn(const std::string& key, const SweepSpec& spec, int threads = 2) {
+  std::vector<SimResult> out;
+  Progress progress{0};
+  if (key == "scalar") runScalar(spec, out, progress);
+  else if (key == "cpu") runCpuBatch(spec, threads, out, progress);
+  else runCpuBatchOn(key, spec, threads, out, progress);
+  EXPECT_EQ(progress.load(), spec.size()) << key;
+  return out;
+}
+
+// The build the cpu backend picks on this CPU (the first supported one).
+inline std::string widestIsa() {
+  for (const CpuIsa& isa : cpuBatchIsas()) {
+    if (isa.supported) return isa.key;
+  }
+  return "none";
+}
+
+inline bool relClose(double a, double b, double rel) {
+  return a == b || std::fabs(a - b) <= rel * std::max(std::fabs(a), std::fabs(b));
+}
+
+// config/sweeps/NAME.yaml with `samples_line` replaced by `samples` (relative
+// names resolve in config/).
+inline SweepSpec shippedStudy(const std::string& name, const std::string& samples_line, long samples,
+                              Precision precision) {
+  std::string text = readText(configDir() + "/sweeps/" + name + ".yaml");
+  const size_t at = text.find(samples_line);
+  EXPECT_NE(at, std::string::npos) << name;
+  if (at != std::string::npos) text.replace(at, samples_line.size(), "samples: " + std::to_string(samples));
+  SweepSpec spec = loadSweepFile(writeTemp(name + "_small.yaml", text), configDir());
+  spec.precision = precision;
+  return spec;
+}
+
+inline SweepSpec study13(long samples, Precision p = Precision::kDouble) {
+  return shippedStudy("underactuated_13", "samples: 65536", samples, p);
+}
+inline SweepSpec robustness(long samples, Precision p = Precision::kDouble) {
+  return shippedStudy("robustness", "samples: 4096", samples, p);
+}
+
+}  // namespace test
+}  // namespace aurora_sweep
