@@ -116,10 +116,12 @@ class BatchWorker {
     model_ = setup_.model.template cast<B>();
     plant_ = model_;  // per lane when the model varies (startLane)
     criteria_ = setup_.config.criteria.template cast<B>();
-    fresh_.reset(setup_.config.task.at(T(0)).pos);  // the initial state every lane starts from
-    B start[3];
-    for (int i = 0; i < 3; ++i) start[i] = B(fresh_.model.X[aurora_sim::kX + i]);
-    sim_.reset(start);
+    // The initial state every lane starts from, towards the task's first
+    // reference; every lane of sim_ starts there (startLane then sets a lane's run).
+    const aurora_control::Reference<T> start = setup_.config.task.at(T(0));
+    fresh_.reset(start.pos);
+    const B start_pos[3] = {B(start.pos[0]), B(start.pos[1]), B(start.pos[2])};
+    sim_.reset(start_pos);
     history_.resize(static_cast<size_t>(Capacity) * W * L);
     alignas(64) Int iota[L];
     for (int l = 0; l < L; ++l) iota[l] = static_cast<Int>(l);
