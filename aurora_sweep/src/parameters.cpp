@@ -1,6 +1,5 @@
 #include "aurora_sweep/parameters.h"
 
-#include <cmath>
 #include <limits>
 
 #include "aurora_control/limits.h"
