@@ -7,12 +7,14 @@
 
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 #include "aurora_sim/command_mapping.h"
 #include "aurora_sim/ros_conversions.h"
 #include "aurora_sim/ros_params.h"
 #include "aurora_control/law_yaml.h"
-#include "aurora_control/positioning_study.h"
+#include "aurora_control/live_settings.h"
+#include "aurora_control/tracking.h"
 #include "controller_params.h"
 #include "param_tree.h"
 #include "task_markers.h"
@@ -26,7 +28,7 @@ using aurora_sim::rangedParam;
 using aurora_sim::requireParam;
 
 ControllerNode::ControllerNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
-    : nh_(nh), pnh_(private_nh), reconfigure_(config_mutex_, private_nh) {
+    : nh_(nh), pnh_(private_nh) {
   // The vehicle, with the same range rules as the sim's: Ts for every law,
   // the whole model for the underactuated law, which inverts it.
   const aurora_sim::ArdroneParams<double> vehicle = aurora_sim::loadVehicleParams(nh_, "vehicle");
@@ -36,7 +38,7 @@ ControllerNode::ControllerNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
   set.Ts = Ts_;
   loadLaw(pnh_, vehicle, set);
   set.delay = readDelaySamples();
-  set.clamp_commands = paramOr(pnh_, "clamp_commands", true);
+  set.clamp_commands = aurora_sim::boolParam(pnh_, "clamp_commands", true);
   const std::string mode = paramOr<std::string>(pnh_, "mode", "realtime");
   if (mode != "realtime" && mode != "lockstep") {
     throw ParameterError("parameter '" + fullKey(pnh_, "mode") + "' = '" + mode +
@@ -62,7 +64,7 @@ ControllerNode::ControllerNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
   lockstep_control_subscribers_ = static_cast<int>(
       rangedParam(pnh_, "lockstep_subscribers/control", 0, 0, 100, "(subscribers of control)"));
   task_ = loadTask(pnh_);
-  task_iterations_ = studyIterationCount(task_.duration(), Ts_);
+  task_iterations_ = taskStepCount(task_.duration(), Ts_);  // steps 0..N (docs/controllers.md)
   refuseDelayBeyondTheTask(set.delay);
   refuseUnknownTopLevelKeys();
   safety_ = loadSafetyConfig(pnh_);
@@ -93,13 +95,7 @@ ControllerNode::ControllerNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
   state_sub_ = nh_.subscribe("state", 100, &ControllerNode::onState, this,
                              ros::TransportHints().tcpNoDelay());
 
-  ControllerConfig config;
-  config.kp = set.gains.kp;
-  config.kd = set.gains.kd;
-  config.delay_samples = static_cast<int>(set.delay);
-  writeUnderactuatedGains(set.underactuated, config);
-  reconfigure_.updateConfig(config);
-  reconfigure_.setCallback([this](ControllerConfig& c, uint32_t level) { onReconfigure(c, level); });
+  advertiseLiveSettings();
 
   if (!lockstep_) {
     timer_ = nh_.createTimer(ros::Duration(Ts_), &ControllerNode::onTimer, this);
@@ -142,11 +138,12 @@ long ControllerNode::readDelaySamples() {
   }
   if (has_seconds) {
     double seconds = 0.0;
-    if (!pnh_.getParam("delay/seconds", seconds) || !std::isfinite(seconds) || seconds < 0.0 ||
-        seconds / Ts_ > kHistoryCapacity - 1) {
-      throw ParameterError("parameter '" + fullKey(pnh_, "delay/seconds") +
-                           "' is invalid: accepted range [0, " +
-                           std::to_string((kHistoryCapacity - 1) * Ts_) + "] s");
+    const bool number = pnh_.getParam("delay/seconds", seconds);
+    if (!number || !std::isfinite(seconds) || seconds < 0.0 || seconds / Ts_ > kHistoryCapacity - 1) {
+      throw ParameterError("parameter '" + fullKey(pnh_, "delay/seconds") + "' = " +
+                           (number ? aurora_sim::numberText(seconds) : std::string("(not a number)")) +
+                           " is invalid: accepted range [0, " +
+                           aurora_sim::numberText((kHistoryCapacity - 1) * Ts_) + "] s");
     }
     const long samples = std::lround(seconds / Ts_);
     ROS_INFO("controller: delay %.6f s rounded to %ld whole samples of Ts = %.6f s (%.6f s)",
@@ -165,26 +162,56 @@ long ControllerNode::readDelaySamples() {
   return samples;
 }
 
-void ControllerNode::onReconfigure(ControllerConfig& config, uint32_t) {
+ControllerConfig ControllerNode::liveConfig() const {
+  const ControllerSettings& set = core_->settings;
+  ControllerConfig config = ControllerConfig::__getDefault__();
+  config.kp = set.gains.kp;
+  config.kd = set.gains.kd;
+  config.delay_samples = static_cast<double>(set.delay);
+  writeUnderactuatedGains(set.underactuated, config);
+  return config;
+}
+
+void ControllerNode::advertiseLiveSettings() {
+  descriptions_pub_ = pnh_.advertise<dynamic_reconfigure::ConfigDescription>("parameter_descriptions", 1, true);
+  descriptions_pub_.publish(ControllerConfig::__getDescriptionMessage__());
+  updates_pub_ = pnh_.advertise<dynamic_reconfigure::Config>("parameter_updates", 1, true);
+  dynamic_reconfigure::Config update;
+  liveConfig().__toMessage__(update);
+  updates_pub_.publish(update);
+  set_parameters_ = pnh_.advertiseService("set_parameters", &ControllerNode::onSetParameters, this);
+}
+
+bool ControllerNode::onSetParameters(dynamic_reconfigure::Reconfigure::Request& req,
+                                     dynamic_reconfigure::Reconfigure::Response& rsp) {
+  boost::recursive_mutex::scoped_lock lock(config_mutex_);
+  std::vector<LiveChange> changes;
+  for (const auto& d : req.config.doubles) changes.push_back({d.name, d.value});
+  for (const auto& i : req.config.ints) changes.push_back({i.name, static_cast<double>(i.value)});
+  for (const auto& b : req.config.bools) changes.push_back({b.name, std::nan("")});  // no boolean setting
+  for (const auto& t : req.config.strs) changes.push_back({t.name, std::nan("")});
   ControllerSettings& set = core_->settings;
   ControllerSettings next = set;
-  next.gains.kp = config.kp;
-  next.gains.kd = config.kd;
-  next.delay = config.delay_samples;
-  if (!delayShorterThanRun(next.delay, task_iterations_)) {
-    // Refused as at start-up (limits.h); the server shows the delay kept.
-    ROS_ERROR("controller: delay_samples %ld refused: %s; keeping %ld samples", next.delay,
-              delayRunText(next.delay, task_iterations_, Ts_).c_str(), set.delay);
-    next.delay = set.delay;
-    config.delay_samples = static_cast<int>(set.delay);
+  for (const LiveChange& c : changes) {
+    const std::string problem = checkLiveChange(next, c, task_iterations_);
+    if (!problem.empty()) {
+      // The caller's request fails (dynparam and the Python client raise);
+      // nothing of it is applied. Logged too, for rqt users.
+      ROS_ERROR("controller: live change refused, settings unchanged (%s): %s", gainsText(set).c_str(),
+                problem.c_str());
+      throw std::invalid_argument(problem);
+    }
+    applyLiveChange(next, c);
   }
-  readUnderactuatedGains(config, next.underactuated);
-  const std::string before = gainsText(set), after = gainsText(next);
-  if (before != after || next.delay != set.delay) {
-    ROS_INFO("controller: reconfigured %s, delay %ld samples", after.c_str(), next.delay);
+  if (gainsText(set) != gainsText(next) || next.delay != set.delay) {
+    ROS_INFO("controller: reconfigured %s, delay %ld samples", gainsText(next).c_str(), next.delay);
   }
   if (next.delay != set.delay) announceDelayChange(next.delay);
   set = next;
+  const ControllerConfig config = liveConfig();
+  config.__toMessage__(rsp.config);
+  updates_pub_.publish(rsp.config);
+  return true;
 }
 
 void ControllerNode::announceDelayChange(long delay) {
@@ -430,16 +457,11 @@ void ControllerNode::reportProgress(const ControlOutput& out, const Reference<do
   mission_reported_ = true;
   // The true final error: the newest state against this step's reference
   // (out.position_error is the delayed state's, what the law saw).
-  const double* X = core_->newest().X;
-  double e2 = 0.0;
-  for (int i = 0; i < 3; ++i) {
-    const double e = ref.pos[i] - X[aurora_sim::kX + i];
-    e2 += e * e;
-  }
   ROS_INFO("controller: mission complete: %s task of %.1f s with a delay of %ld samples (%.3f s): "
            "IAE %.4f m s, ITAE %.4f m s^2, IASC %.4f s, final position error %.4f m",
            taskTypeName(task_.type), task_.duration(), core_->settings.delay,
-           core_->settings.delay * Ts_, out.iae, out.itae, out.iasc, std::sqrt(e2));
+           core_->settings.delay * Ts_, out.iae, out.itae, out.iasc,
+           trackingError(ref, core_->newest().X));
 }
 
 void ControllerNode::fillLaw(aurora_msgs::Control& control) const {

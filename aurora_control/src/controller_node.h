@@ -7,7 +7,7 @@
 #include <aurora_control/ControllerConfig.h>
 #include <aurora_msgs/Control.h>
 #include <aurora_msgs/DroneState.h>
-#include <dynamic_reconfigure/server.h>
+#include <dynamic_reconfigure/Reconfigure.h>
 #include <ros/ros.h>
 #include <sensor_msgs/Joy.h>
 
@@ -38,7 +38,13 @@ class ControllerNode {
   void onJoy(const sensor_msgs::Joy::ConstPtr& msg);
   void onTimer(const ros::TimerEvent& event);
   void onRateCheck(const ros::WallTimerEvent& event);
-  void onReconfigure(ControllerConfig& config, uint32_t level);
+  // dynamic_reconfigure's set_parameters, served here so that each value is
+  // seen as the caller gave it (the stock server clamps first) and a refused
+  // change fails the call (live_settings.h).
+  bool onSetParameters(dynamic_reconfigure::Reconfigure::Request& req,
+                       dynamic_reconfigure::Reconfigure::Response& rsp);
+  void advertiseLiveSettings();
+  ControllerConfig liveConfig() const;  // the settings in force, as the server shows them
   void cycle(const ros::Time& now);
   void logEvent(const std::string& event) const;
   void fillOutput(const ControlOutput& out, aurora_msgs::Control& control) const;
@@ -85,7 +91,8 @@ class ControllerNode {
   bool low_rate_ = false;
 
   boost::recursive_mutex config_mutex_;
-  dynamic_reconfigure::Server<ControllerConfig> reconfigure_;
+  ros::ServiceServer set_parameters_;
+  ros::Publisher descriptions_pub_, updates_pub_;
   ros::Publisher cmd_pub_, control_pub_, markers_pub_, desired_path_pub_;
   // take-off, land, reset: held until the driver listens, re-sent until shown
   DriverCommandChannel takeoff_, land_, reset_;

@@ -14,7 +14,7 @@
 
 #include "aurora_control/flight_runner.h"
 #include "aurora_control/law_yaml.h"
-#include "aurora_control/positioning_study.h"
+#include "aurora_control/limits.h"
 #include "aurora_control/task_yaml.h"
 #include "aurora_sim/config_dir.h"
 #include "aurora_sim/vehicle_yaml.h"
@@ -39,7 +39,7 @@ bool parse(int argc, char** argv, Options& o) {
       ("vehicle", po::value(&o.vehicle)->default_value(config + "/vehicles/ardrone2.yaml"), "vehicle YAML")
       ("delay", po::value(&o.delay)->default_value(0), "feedback delay [samples of Ts], 0 to 2047 (limits.h)")
       ("no-clamp", po::bool_switch(&o.no_clamp), "do not clamp the law's commands (the sim still does, as the drivers)")
-      ("csv", po::value(&o.csv), "write step, t, x, y, z, desired x, y, z, error per step");
+      ("csv", po::value(&o.csv), "write step, t, x, y, z, desired x, y, z, tracking error per step k = 0..N (state k against the reference of step k)");
   po::variables_map vm;
   po::store(po::parse_command_line(argc, argv, d), vm);
   if (vm.count("help")) {
@@ -59,6 +59,37 @@ ControllerSettings loadSettings(const Options& o, const aurora_sim::ArdroneParam
   return set;
 }
 
+// RMS and maximum tracking error per segment (a waypoint's, or a lap), on
+// the one definition of docs/controllers.md: state k against reference k.
+class SegmentErrors {
+ public:
+  explicit SegmentErrors(const Task<double>& task) : task_(task) {}
+  void add(long k, double Ts, double error) {
+    const size_t i = static_cast<size_t>(task_.activeIndex(WaypointTask<double>::timeOfStep(k, Ts)));
+    if (sq_.size() <= i) sq_.resize(i + 1, 0.0), max_.resize(i + 1, 0.0), n_.resize(i + 1, 0);
+    sq_[i] += error * error, n_[i] += 1, max_[i] = std::max(max_[i], error);
+  }
+  void print() const {
+    for (size_t i = 0; i < n_.size(); ++i) {
+      if (n_[i] == 0) continue;
+      std::printf("  %s %zu: RMS tracking error %.4f m, max %.4f m\n", task_.isTrajectory() ? "lap" : "segment",
+                  i + 1, std::sqrt(sq_[i] / double(n_[i])), max_[i]);
+    }
+  }
+
+ private:
+  const Task<double>& task_;
+  std::vector<double> sq_, max_;
+  std::vector<long> n_;
+};
+
+void refuseDelayBeyondTheTask(long delay, long steps, double Ts) {
+  if (delay < 0 || delay > kMaxDelaySamples) {
+    throw std::runtime_error("--delay " + std::to_string(delay) + " is invalid: accepted " + delayRangeText());
+  }
+  if (!delayShorterThanRun(delay, steps)) throw std::runtime_error("--delay " + delayRunText(delay, steps, Ts));
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -68,34 +99,31 @@ int main(int argc, char** argv) {
     const auto p = aurora_sim::loadVehicleYaml(o.vehicle);
     const ControllerSettings set = loadSettings(o, p);
     const Task<double> task = readTask(YamlReader("task file '" + o.task + "': "), YAML::LoadFile(o.task)["task"], "task");
-    // A lap (trajectories) or a waypoint's segment (missions), in steps.
-    const double segment = task.isTrajectory() ? task.trajectory.period : 0.0;
-    std::vector<double> seg_sq, seg_max;
-    std::vector<long> seg_n;
+    const long n = taskStepCount(task.duration(), p.Ts);  // steps 0..N, as the node and report
+    refuseDelayBeyondTheTask(set.delay, n, p.Ts);
     FILE* csv = o.csv.empty() ? nullptr : std::fopen(o.csv.c_str(), "w");
     if (!o.csv.empty() && !csv) throw std::runtime_error("cannot write '" + o.csv + "'");
     if (csv) std::fprintf(csv, "step,t,x,y,z,xd,yd,zd,error\n");
-    const long n = studyIterationCount(task.duration(), p.Ts);
+    SegmentErrors segments(task);
+    aurora_sim::ArdroneState<double> state;  // state k, before iteration k's command
+    state.reset();
     const auto t0 = std::chrono::steady_clock::now();
-    const FlightResult r = runFlight(p, set, task, n, [&](long k, const aurora_sim::ArdroneState<double>& s,
+    const FlightResult r = runFlight(p, set, task, n, [&](long k, const aurora_sim::ArdroneState<double>& next,
                                                           const Reference<double>& ref, const double*) {
-      const double t = double(k - 1) * p.Ts;
-      const size_t i = segment > 0 ? size_t(t / segment) : size_t(task.activeIndex(t));
-      if (seg_sq.size() <= i) seg_sq.resize(i + 1, 0.0), seg_max.resize(i + 1, 0.0), seg_n.resize(i + 1, 0);
-      double e2 = 0.0;
-      for (int j = 0; j < 3; ++j) e2 += (ref.pos[j] - s.X[j]) * (ref.pos[j] - s.X[j]);
-      seg_sq[i] += e2, seg_n[i] += 1, seg_max[i] = std::max(seg_max[i], std::sqrt(e2));
-      if (csv) std::fprintf(csv, "%ld,%.4f,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", k, t, s.X[0], s.X[1], s.X[2], ref.pos[0], ref.pos[1], ref.pos[2], std::sqrt(e2));
+      const long step = k - 1;  // the iteration whose state and reference are paired
+      const double e = trackingError(ref, state.X);
+      segments.add(step, p.Ts, e);
+      if (csv) std::fprintf(csv, "%ld,%.4f,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", step,
+                            WaypointTask<double>::timeOfStep(step, p.Ts), state.X[0], state.X[1], state.X[2],
+                            ref.pos[0], ref.pos[1], ref.pos[2], e);
+      state = next;
     });
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (csv) std::fclose(csv);
     std::printf("flight: %s, %s task of %.1f s, delay %ld samples: %ld steps in %.3f s (%.2f us per step, model included)\n",
                 lawName(set.law), task.isTrajectory() ? (task.type == TaskType::kCircle ? "circle" : "lemniscate") : "waypoint",
                 task.duration(), set.delay, r.steps, seconds, 1e6 * seconds / double(r.steps));
-    for (size_t i = 0; i < seg_n.size(); ++i) {
-      std::printf("  %s %zu: RMS tracking error %.4f m, max %.4f m\n", segment > 0 ? "lap" : "segment", i + 1,
-                  std::sqrt(seg_sq[i] / double(seg_n[i])), seg_max[i]);
-    }
+    segments.print();
     std::printf("  whole flight: RMS %.4f m, max %.4f m; IAE %.4f, ITAE %.4f, IASC %.4f\n", r.rms_tracking_error,
                 r.max_tracking_error, r.iae, r.itae, r.iasc);
   } catch (const std::exception& e) {

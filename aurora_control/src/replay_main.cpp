@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
 #include <map>
 #include <memory>
 #include <set>
@@ -22,7 +23,7 @@
 #include "aurora_control/delayed_controller.h"
 #include "aurora_control/law_yaml.h"
 #include "aurora_control/limits.h"
-#include "aurora_control/positioning_study.h"
+#include "aurora_control/tracking.h"
 #include "aurora_sim/config_dir.h"
 #include "aurora_sim/vehicle_yaml.h"
 #include "aurora_sim/ros_conversions.h"
@@ -174,6 +175,11 @@ int main(int argc, char** argv) {
   if (bag_path.empty()) fail(std::string("a bag is required\n\n") + kUsage);
   if (o.delay && o.delay_seconds) fail("--delay and --delay-seconds exclude each other: give one");
 
+  if (!std::ifstream(bag_path).good()) {
+    fail("bag '" + bag_path + "' does not exist or cannot be read" +
+         (bag_path.size() > 7 && bag_path.compare(bag_path.size() - 7, 7, ".active") == 0
+              ? std::string(" (an .active bag is still being recorded)") : std::string()));
+  }
   rosbag::Bag bag;
   try {
     bag.open(bag_path, rosbag::bagmode::Read);
@@ -251,7 +257,7 @@ int main(int argc, char** argv) {
   // The recorded task's length (Control.task_duration; one task per bag, as
   // the report assumes) bounds the delay as in the node and the sweep.
   const aurora_msgs::Control& recorded = controls.front();
-  const long iterations = studyIterationCount(recorded.task_duration, recorded.sample_time);
+  const long iterations = taskStepCount(recorded.task_duration, recorded.sample_time);
   long identical = 0, cycles = 0, missing = 0;
   double max_diff = 0.0;
   long next_step = states.begin()->first;
@@ -275,6 +281,12 @@ int main(int argc, char** argv) {
       set.underactuated = o.law_settings.underactuated;
     } else {
       recordedLaw(c, set);
+    }
+    if ((o.kp || o.kd) && set.law != LawType::kPdSaturated) {
+      fail(std::string(o.kp ? "--kp" : "--kd") + " is a gain of the pd_saturated law, but the " +
+           (o.law ? "--controller file's" : "bag's") + " controller is " + lawName(set.law) +
+           " (step " + std::to_string(c.step) + "): give its gains in a controller file with "
+           "--controller FILE (e.g. config/controllers/underactuated.yaml)");
     }
     if (o.kp) set.gains.kp = o.kp_value;
     if (o.kd) set.gains.kd = o.kd_value;

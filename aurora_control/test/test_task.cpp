@@ -47,3 +47,23 @@ TEST(WaypointTask, ValidationNamesTheKey) {
   t.count = 0;
   EXPECT_NE(checkTask(t, "task/").find("waypoints"), std::string::npos);
 }
+
+// A waypoint under the ground (or on it) is refused like a circle's height
+// below 0.2 m; an end time after the task's end is refused, not cut.
+TEST(WaypointTask, RefusesWaypointsBelowTheGroundAndEndTimesAfterTheTask) {
+  auto t = mission();
+  t.position[1][2] = -2.0;
+  std::string msg = checkTask(t, "task/");
+  EXPECT_NE(msg.find("'task/waypoints[1]' has z = -2 m: accepted heights [0.2, 100] m"), std::string::npos) << msg;
+  t.position[1][2] = 0.1;
+  EXPECT_NE(checkTask(t, "task/").find("waypoints[1]"), std::string::npos);
+  t.position[1][2] = 0.2;
+  EXPECT_EQ(checkTask(t, "task/"), "");
+  t = mission();
+  t.count = 1;
+  t.end_time[0] = 90.0;
+  msg = checkTask(t, "task/");
+  EXPECT_NE(msg.find("'task/end_times[0]' = 90 is after the task's duration (60 s)"), std::string::npos) << msg;
+  t.end_time[0] = 60.0;
+  EXPECT_EQ(checkTask(t, "task/"), "");
+}

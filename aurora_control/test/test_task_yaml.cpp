@@ -80,3 +80,13 @@ TEST(TaskYaml, RefusalsNameTheKey) {
   // Every message says where the value came from.
   EXPECT_EQ(refusal("task: {type: spiral}").rfind("task file 't.yaml': ", 0), 0u);
 }
+
+// YAML 1.1 readers (rosparam) take 6e1 as text: the refusal says how to
+// write it so that both readers see a number.
+TEST(TaskYaml, AnExponentReadAsTextSaysHowToWriteIt) {
+  const std::string msg = refusal("task: {duration: '6e1', waypoints: [[1, 2, 3]], end_times: [20]}");
+  EXPECT_NE(msg.find("not a string (YAML 1.1, which rosparam reads, takes '6e1' as text: write 6.0e+1)"),
+            std::string::npos) << msg;
+  EXPECT_EQ(refusal("task: {duration: '60', waypoints: [[1, 2, 3]], end_times: [20]}").find("YAML 1.1"),
+            std::string::npos);
+}

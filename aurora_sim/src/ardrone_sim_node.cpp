@@ -60,7 +60,7 @@ ArdroneSimNode::ArdroneSimNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
   max_real_time_factor_ = rangedParam(pnh_, "max_real_time_factor", 0.0, 0.0, kNoLimit,
                                       "(0 = as fast as possible)");
   // The study's initial state (z = 0.75 m, in the air); false starts landed.
-  flight_ = paramOr(pnh_, "start_flying", true) ? Flight::kFlying : Flight::kLanded;
+  flight_ = aurora_sim::boolParam(pnh_, "start_flying", true) ? Flight::kFlying : Flight::kLanded;
 
   resetModel();
   path_.header.frame_id = frame_id_;
@@ -166,7 +166,7 @@ void ArdroneSimNode::onLand(const std_msgs::Empty::ConstPtr&) {
 
 void ArdroneSimNode::onReset(const std_msgs::Empty::ConstPtr&) {
   ROS_INFO("ardrone_sim: reset to the initial state");
-  flight_ = paramOr(pnh_, "start_flying", true) ? Flight::kFlying : Flight::kLanded;
+  flight_ = aurora_sim::boolParam(pnh_, "start_flying", true) ? Flight::kFlying : Flight::kLanded;
   resetModel();
 }
 

@@ -30,6 +30,12 @@ void runRange(const SweepSpec& part, const BackendChoice& choice, std::vector<Si
 
 }  // namespace
 
+void runCombinations(const SweepSpec& part, const BackendChoice& choice, std::vector<SimResult>& out) {
+  Progress progress{0};
+  ChunkWork work;
+  runRange(part, choice, out, progress, work);
+}
+
 ChunkWork runChunks(const SweepSpec& spec, const ChunkStore& store, ChunkSource& source,
                     const BackendChoice& choice, Progress& progress) {
   ChunkWork work;

@@ -47,6 +47,10 @@ struct ChunkWork {
   int block_size = 0;
 };
 
+// Computes the combinations of `part`'s range on the chosen backend (the
+// sweep plan's calibration).
+void runCombinations(const SweepSpec& part, const BackendChoice& choice, std::vector<SimResult>& out);
+
 // Computes each chunk `source` hands out that `store` has not got, writing
 // it at once. Throws std::runtime_error (backend or file errors).
 ChunkWork runChunks(const SweepSpec& spec, const ChunkStore& store, ChunkSource& source,

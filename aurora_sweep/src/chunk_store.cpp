@@ -50,15 +50,31 @@ bool exists(const std::string& path) {
   return stat(path.c_str(), &st) == 0;
 }
 
-// The definition hash a finished run recorded in its summary.json ("" if none
-// or unreadable).
-std::string summaryHash(const std::string& path) {
+// A string field of a finished run's summary.json ("" if none or unreadable).
+std::string summaryField(const std::string& path, const char* field) {
   std::ifstream in(path);
   if (!in) return "";
   const nlohmann::json summary = nlohmann::json::parse(in, nullptr, false);  // no throw: discarded if damaged
-  const bool has = summary.is_object() && summary.contains("definition_hash") &&
-                   summary["definition_hash"].is_string();
-  return has ? summary["definition_hash"].get<std::string>() : "";
+  const bool has = summary.is_object() && summary.contains(field) && summary[field].is_string();
+  return has ? summary[field].get<std::string>() : "";
+}
+
+// progress/definition: "HASH TOTAL CHUNK", then "computed_by ...", then
+// "sweep NAME" (for the messages).
+struct Definition {
+  std::string line, computed_by, name;
+};
+
+Definition readDefinition(const std::string& path) {
+  Definition d;
+  std::ifstream in(path);
+  std::getline(in, d.line);
+  std::string l;
+  while (std::getline(in, l)) {
+    if (l.rfind("computed_by ", 0) == 0) d.computed_by = l.substr(12);
+    if (l.rfind("sweep ", 0) == 0) d.name = l.substr(6);
+  }
+  return d;
 }
 
 void removeFile(const std::string& path) {
@@ -126,8 +142,9 @@ const std::vector<std::string>& sweepOutputFiles() {
 }
 
 ChunkStore::ChunkStore(const std::string& out_dir, const SweepSpec& spec, const ChunkPlan& plan,
-                       bool overwrite)
-    : out_dir_(out_dir), progress_dir_(out_dir + "/progress"), plan_(plan), hash_(definitionHash(spec)) {
+                       bool overwrite, const std::string& computed_by)
+    : out_dir_(out_dir), progress_dir_(out_dir + "/progress"), name_(spec.name), computed_by_(computed_by),
+      plan_(plan), hash_(definitionHash(spec)) {
   openOrCreate(overwrite);
 }
 
@@ -138,21 +155,29 @@ void ChunkStore::openOrCreate(bool overwrite) {
                            std::to_string(plan_.size);
   std::string other;
   if (exists(definition)) {
-    std::ifstream in(definition);
-    std::string theirs;
-    std::getline(in, theirs);
-    if (theirs == mine) {
+    const Definition theirs = readDefinition(definition);
+    if (theirs.line == mine && theirs.computed_by == computed_by_) {
       resumed_ = true;
       return;
     }
-    other = theirs + " (hash, combinations, chunk size; in progress)";
+    if (theirs.line == mine && !overwrite) {
+      throw std::runtime_error("'" + out_dir_ + "' holds this sweep in progress, computed so far by the " +
+                               theirs.computed_by + " backend: resuming with " + computed_by_ +
+                               " would mix numbers that differ in the last bits; resume with --backend " +
+                               theirs.computed_by.substr(0, theirs.computed_by.find(' ')) +
+                               " (and the same SIMD build), or give --overwrite to start again");
+    }
+    other = "'" + theirs.name + "', in progress: hash, combinations, chunk size " + theirs.line;
   } else {
-    const std::string finished = summaryHash(out_dir_ + "/summary.json");
-    if (!finished.empty() && finished != hashText(hash_)) other = finished + " (hash; finished)";
+    const std::string summary = out_dir_ + "/summary.json";
+    const std::string finished = summaryField(summary, "definition_hash");
+    if (!finished.empty() && finished != hashText(hash_)) {
+      other = "'" + summaryField(summary, "name") + "', finished: hash " + finished;
+    }
   }
   if (!other.empty() && !overwrite) {
-    throw std::runtime_error("'" + out_dir_ + "' holds another sweep (" + other + "; this one: " + mine +
-                             "): choose another --out, or give --overwrite to replace it");
+    throw std::runtime_error("'" + out_dir_ + "' holds another sweep (" + other + "; this one: '" + name_ +
+                             "', " + mine + "): choose another --out, or give --overwrite to replace it");
   }
   // A fresh run: nothing of an earlier one may stay beside the new results.
   for (const std::string& f : sweepOutputFiles()) removeFile(out_dir_ + "/" + f);
@@ -160,7 +185,7 @@ void ChunkStore::openOrCreate(bool overwrite) {
   if (mkdir(progress_dir_.c_str(), 0755) != 0) {
     throw std::runtime_error("cannot create '" + progress_dir_ + "': " + std::strerror(errno));
   }
-  std::ofstream(definition) << mine << "\n";
+  std::ofstream(definition) << mine << "\ncomputed_by " << computed_by_ << "\nsweep " << name_ << "\n";
 }
 
 std::string ChunkStore::chunkPath(long chunk) const {

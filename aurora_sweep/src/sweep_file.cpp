@@ -1,10 +1,12 @@
 #include "aurora_sweep/sweep_file.h"
 
+#include <csv.h>
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <sstream>
 
@@ -69,17 +71,42 @@ void checkValue(const Reader& r, int id, double v, const std::string& key) {
   }
 }
 
+// A CSV file's rows of fields, through libcsv (RFC 4180: quoted fields, as
+// pandas and Excel write them; spaces around fields trimmed). A UTF-8 byte
+// order mark (Excel writes one) is skipped. Blank lines are no rows.
+std::vector<std::vector<std::string>> readCsvRows(const Reader& r, const std::string& path, const std::string& key) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) r.fail(key, "names '" + path + "', which cannot be read");
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (text.compare(0, 3, "\xEF\xBB\xBF") == 0) text.erase(0, 3);
+  struct Rows {
+    std::vector<std::vector<std::string>> rows;
+    std::vector<std::string> row;
+  } rows;
+  const auto field = [](void* s, size_t n, void* data) {
+    static_cast<Rows*>(data)->row.emplace_back(static_cast<const char*>(s), n);
+  };
+  const auto row_end = [](int, void* data) {
+    Rows& d = *static_cast<Rows*>(data);
+    const bool blank = d.row.size() == 1 && d.row[0].empty();
+    if (!blank) d.rows.push_back(d.row);
+    d.row.clear();
+  };
+  csv_parser parser;
+  csv_init(&parser, CSV_STRICT | CSV_STRICT_FINI);
+  const bool parsed = csv_parse(&parser, text.data(), text.size(), field, row_end, &rows) == text.size() &&
+                      csv_fini(&parser, field, row_end, &rows) == 0;
+  const std::string problem = parsed ? "" : csv_strerror(csv_error(&parser));
+  csv_free(&parser);
+  if (!parsed) r.fail(key, "file '" + path + "' is not valid CSV (" + problem + ": a quote not closed?)");
+  return rows.rows;
+}
+
 // The header of a points file: parameter names, each once.
-std::vector<int> readPointsHeader(const Reader& r, const SweepSpec& spec, const std::string& line,
+std::vector<int> readPointsHeader(const Reader& r, const SweepSpec& spec, const std::vector<std::string>& header,
                                   const std::string& where) {
   std::vector<int> ids;
-  std::stringstream ss(line);
-  std::string cell;
-  while (std::getline(ss, cell, ',')) {
-    std::string name;
-    for (char c : cell) {
-      if (c != ' ' && c != '\r') name += c;
-    }
+  for (const std::string& name : header) {
     const int id = paramOf(r, spec, name, where + " header column " + name);
     if (std::find(ids.begin(), ids.end(), id) != ids.end()) r.fail(where, "names column '" + name + "' twice");
     ids.push_back(id);
@@ -90,31 +117,24 @@ std::vector<int> readPointsHeader(const Reader& r, const SweepSpec& spec, const 
 // A points file: a header of parameter names, then one row of values per
 // combination.
 void readPoints(const Reader& r, const std::string& path, const std::string& key, SweepSpec& spec) {
-  std::ifstream in(path);
-  if (!in) r.fail(key, "names '" + path + "', which cannot be read");
-  std::string line;
-  if (!std::getline(in, line)) r.fail(key, "file '" + path + "' is empty");
+  const std::vector<std::vector<std::string>> rows = readCsvRows(r, path, key);
+  if (rows.empty()) r.fail(key, "file '" + path + "' is empty");
   const std::string where = key + " ('" + path + "')";
-  spec.point_params = readPointsHeader(r, spec, line, where);
+  spec.point_params = readPointsHeader(r, spec, rows[0], where);
   const size_t cols = spec.point_params.size();
-  long row = 1;
-  while (std::getline(in, line)) {
-    ++row;
-    if (line.find_first_not_of(" \r\t") == std::string::npos) continue;
-    const std::string at = where + " row " + std::to_string(row);
-    std::stringstream ss(line);
-    std::string cell;
-    size_t col = 0;
-    while (std::getline(ss, cell, ',')) {
-      if (col >= cols) r.fail(at, "has more than the header's " + std::to_string(cols) + " columns");
+  for (size_t row = 1; row < rows.size(); ++row) {
+    const std::string at = where + " row " + std::to_string(row + 1);
+    if (rows[row].size() != cols) {
+      r.fail(at, "has " + std::to_string(rows[row].size()) + " columns: the header has " + std::to_string(cols));
+    }
+    for (size_t col = 0; col < cols; ++col) {
+      const std::string& cell = rows[row][col];
       char* end = nullptr;
       const double v = std::strtod(cell.c_str(), &end);
-      if (end == cell.c_str() || !std::isfinite(v)) r.fail(at, "'" + cell + "' is not a number");
+      if (cell.empty() || *end != '\0' || !std::isfinite(v)) r.fail(at, "'" + cell + "' is not a number");
       checkValue(r, spec.point_params[col], v, at + " " + paramName(spec.point_params[col]));
       spec.points.push_back(v);
-      ++col;
     }
-    if (col != cols) r.fail(at, "needs the header's " + std::to_string(cols) + " columns");
   }
   if (spec.points.empty()) r.fail(key, "file '" + path + "' has no points");
 }

@@ -16,6 +16,7 @@
 #include <mutex>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include "aurora_sim/config_dir.h"
 #include "aurora_sweep/backends.h"
@@ -26,6 +27,7 @@
 #include "aurora_sweep/sweep_file.h"
 #include "chunk_runner.h"
 #include "mpi_ranks.h"
+#include "sweep_plan.h"
 
 namespace {
 
@@ -59,6 +61,8 @@ const char* kUsage =
     "                       written to DIR/progress/ at once; the same command on the same\n"
     "                       DIR after a crash computes only the missing chunks\n"
     "  --overwrite          replace another sweep's results in DIR (otherwise refused)\n"
+    "  --ignore-free-space  run even when the estimated bytes exceed the free space\n"
+    "                       (the plan printed at the start says both)\n"
     "  --no-plots           skip the PNG plots\n"
     "  --rviz               publish the feasible set as a latched MarkerArray\n"
     "                       (/sweep/feasible, frame 'sweep') and keep running until Ctrl-C\n"
@@ -75,6 +79,7 @@ struct Options {
   int block_size = 0;
   long chunk_size = 0;  // 0: chunkSizeFor()
   bool plots = true, rviz = false, quiet = false, overwrite = false;
+  bool ignore_free_space = false;
 };
 
 // plot_sweep is installed beside this program (devel space: catkin's relay;
@@ -151,6 +156,8 @@ Options parse(int argc, char** argv) {
       }
     } else if (a == "--overwrite") {
       o.overwrite = true;
+    } else if (a == "--ignore-free-space") {
+      o.ignore_free_space = true;
     } else if (a == "--no-plots") {
       o.plots = false;
     } else if (a == "--rviz") {
@@ -169,11 +176,14 @@ Options parse(int argc, char** argv) {
   return o;
 }
 
-void makeWritableDir(const std::string& dir) {
+// Creates `dir` (and its parents) and checks that it is writable; returns
+// the folders it created, deepest last (a later refusal removes them).
+std::vector<std::string> makeWritableDir(const std::string& dir) {
+  std::vector<std::string> created;
   std::string partial;
   for (size_t i = 0; i <= dir.size(); ++i) {
     if (i == dir.size() || dir[i] == '/') {
-      if (!partial.empty()) mkdir(partial.c_str(), 0755);
+      if (!partial.empty() && mkdir(partial.c_str(), 0755) == 0) created.push_back(partial);
     }
     if (i < dir.size()) partial += dir[i];
   }
@@ -186,6 +196,7 @@ void makeWritableDir(const std::string& dir) {
   }
   std::fclose(f);
   std::remove(probe.c_str());
+  return created;
 }
 
 // Prints progress with an ETA to stderr once a second while `total` runs.
@@ -322,10 +333,10 @@ nlohmann::json runFacts(const Options& opt, const ChunkStore& store, const Chunk
 }
 
 void printCounts(const Counts& counts, const RunInfo& info, const SweepSpec& spec) {
-  std::printf("sweep: %ld combinations, %ld feasible; checks 1-4 passed %ld %ld %ld %ld, failed %ld %ld %ld "
+  std::printf("sweep: %s, %ld feasible; checks 1-4 passed %ld %ld %ld %ld, failed %ld %ld %ld "
               "%ld, not reached (early stop) %ld %ld %ld %ld; "
               "%.3f s, %.0f sims/s, %.3g control steps/s, backend %s (%s), %s\n",
-              counts.combinations, counts.feasible, counts.passed[0], counts.passed[1],
+              counted(counts.combinations, "combination", "combinations").c_str(), counts.feasible, counts.passed[0], counts.passed[1],
               counts.passed[2], counts.passed[3], counts.failed[0], counts.failed[1], counts.failed[2],
               counts.failed[3], counts.not_reached[0], counts.not_reached[1], counts.not_reached[2],
               counts.not_reached[3], info.wall_time_s,
@@ -385,6 +396,34 @@ int finish(const Options& opt, const SweepSpec& spec, const ChunkStore& store, R
   return 0;
 }
 
+// What computed the chunks: a resume must use the same (the backends agree
+// to rounding only, so mixed chunks would equal no uninterrupted run).
+std::string computedBy(const RunInfo& info) {
+  return info.backend == "cpu" ? "cpu (" + info.device + ")" : info.backend;
+}
+
+// Says up front what the sweep costs (time at a measured rate, bytes) and
+// refuses one that cannot fit on the disk. Returns an exit status, 0 = go.
+int checkPlan(const Options& opt, const SweepSpec& spec, const RunInfo& info, long chunk_size, bool lead) {
+  SweepPlan plan;
+  try {
+    plan = planSweep(spec, BackendChoice{info.backend, opt.threads, opt.block_size}, opt.out,
+                     outputFormat(opt, spec.size()), chunk_size);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "sweep: the %s backend failed: %s\n", info.backend.c_str(), e.what());
+    return 4;
+  }
+  const long chunks = (spec.size() + chunk_size - 1) / chunk_size;
+  if (lead && !opt.quiet) std::fprintf(stderr, "sweep: plan: %s\n", planText(plan, chunks).c_str());
+  if (plan.fits() || opt.ignore_free_space) return 0;
+  if (lead) {
+    std::fprintf(stderr, "sweep: refused: %s cannot hold this sweep (%s): choose another --out, fewer "
+                 "combinations, --rows feasible or --output hdf5, or give --ignore-free-space\n",
+                 plan.volume.c_str(), planText(plan, chunks).c_str());
+  }
+  return 2;
+}
+
 // Default chunk size: about 64 chunks (ranks and threads balance, a crash
 // loses little), but not so small that file writes count, nor so large that
 // a GPU launch or the memory of one chunk grows without bound.
@@ -394,20 +433,21 @@ long chunkSizeFor(long combinations) {
 
 // The output folder's chunk store: rank 0 prepares the folder (refusing
 // another sweep's, cleaning old outputs) before the other ranks open it.
-std::unique_ptr<ChunkStore> openStore(const Options& opt, const SweepSpec& spec, const MpiRanks* mpi) {
+std::unique_ptr<ChunkStore> openStore(const Options& opt, const SweepSpec& spec, const MpiRanks* mpi,
+                                      const std::string& computed_by) {
   std::unique_ptr<ChunkStore> store;
   int status = 0;
   const ChunkPlan plan{spec.size(), opt.chunk_size > 0 ? opt.chunk_size : chunkSizeFor(spec.size())};
   if (!mpi || mpi->rank() == 0) {
     try {
-      store.reset(new ChunkStore(opt.out, spec, plan, opt.overwrite));
+      store.reset(new ChunkStore(opt.out, spec, plan, opt.overwrite, computed_by));
     } catch (const std::exception& e) {
       std::fprintf(stderr, "sweep: %s\n", e.what());
       status = 2;
     }
   }
   if (mpi && mpi->broadcast(status) == 0 && mpi->rank() != 0) {
-    store.reset(new ChunkStore(opt.out, spec, plan, false));  // rank 0's folder: resumes it
+    store.reset(new ChunkStore(opt.out, spec, plan, false, computed_by));  // rank 0's folder: resumes it
   }
   return store;
 }
@@ -451,19 +491,29 @@ int runSweep(int argc, char** argv, const Options& opt, MpiRanks* mpi) {
   if (mpi) selectCudaDevice(mpi->localRank());  // one GPU per rank on a node
   RunInfo info;
   if (const int rc = chooseBackend(opt, spec, info)) return rc;
-  makeWritableDir(opt.out);
-  const std::unique_ptr<ChunkStore> store = openStore(opt, spec, mpi);
+  const long chunk_size = opt.chunk_size > 0 ? opt.chunk_size : chunkSizeFor(spec.size());
+  const std::vector<std::string> created = makeWritableDir(opt.out);
+  const int planned = checkPlan(opt, spec, info, chunk_size, !mpi || mpi->rank() == 0);
+  if (const int rc = mpi ? mpi->maxOverRanks(planned) : planned) {
+    if (!mpi || mpi->rank() == 0) {
+      for (auto d = created.rbegin(); d != created.rend(); ++d) rmdir(d->c_str());  // nothing left behind
+    }
+    return rc;
+  }
+  const std::unique_ptr<ChunkStore> store = openStore(opt, spec, mpi, computedBy(info));
   if (!store) return 2;
   const ChunkPlan& plan = store->plan();
   Progress progress{store->doneCombinations()};
   const bool lead = !mpi || mpi->rank() == 0;
   if (lead) {
-    std::fprintf(stderr, "sweep: %s: %ld combinations in %ld chunks, backend %s, %s precision%s%s%s\n",
-                 spec.name.c_str(), spec.size(), plan.count(), info.backend.c_str(),
+    std::fprintf(stderr, "sweep: %s: %s in %s, backend %s, %s precision%s%s%s\n", spec.name.c_str(),
+                 counted(spec.size(), "combination", "combinations").c_str(),
+                 counted(plan.count(), "chunk", "chunks").c_str(), info.backend.c_str(),
                  precisionName(spec.precision), spec.early_stop ? ", early stop" : "",
                  mpi ? (", " + std::to_string(mpi->size()) + " MPI ranks").c_str() : "",
-                 store->resumed() ? (", resuming: " + std::to_string(store->doneCount()) + " chunks (" +
-                                     std::to_string(progress.load()) + " combinations) already done").c_str()
+                 store->resumed() ? (", resuming: " + counted(store->doneCount(), "chunk", "chunks") + " (" +
+                                     counted(progress.load(), "combination", "combinations") +
+                                     ") already done").c_str()
                                   : "");
   }
   ChunkWork work;

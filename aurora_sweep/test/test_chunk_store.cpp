@@ -57,13 +57,13 @@ TEST(ChunkStore, WritesReadsAndResumes) {
   const std::string dir = freshDir("chunks_resume");
   const ChunkPlan plan{spec.size(), 7};
   {
-    ChunkStore store(dir, spec, plan, false);
+    ChunkStore store(dir, spec, plan, false, "scalar");
     EXPECT_FALSE(store.resumed());
     store.write(3, fakeResults(7, 3));
     store.write(11, fakeResults(3, 11));
     EXPECT_THROW(store.write(0, fakeResults(5, 0)), std::logic_error);  // wrong length
   }
-  ChunkStore again(dir, spec, plan, false);  // the same command after a crash
+  ChunkStore again(dir, spec, plan, false, "scalar");  // the same command after a crash
   EXPECT_TRUE(again.resumed());
   EXPECT_EQ(again.doneCount(), 2);
   EXPECT_TRUE(again.done(3));
@@ -84,21 +84,44 @@ TEST(ChunkStore, AnotherSweepIsRefusedAndOldOutputsGo) {
   other.early_stop = !spec.early_stop;
   EXPECT_NE(definitionHash(spec), definitionHash(other));
   const std::string dir = freshDir("chunks_refuse");
-  { ChunkStore store(dir, spec, ChunkPlan{spec.size(), 7}, false); }
+  { ChunkStore store(dir, spec, ChunkPlan{spec.size(), 7}, false, "scalar"); }
   try {
-    ChunkStore refused(dir, other, ChunkPlan{spec.size(), 7}, false);
+    ChunkStore refused(dir, other, ChunkPlan{spec.size(), 7}, false, "scalar");
     FAIL() << "another sweep accepted";
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find("holds another sweep"), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find(hashText(definitionHash(other))), std::string::npos) << e.what();
+    // Which sweep is there, by name, not only by hash.
+    EXPECT_NE(std::string(e.what()).find("another sweep ('" + spec.name + "', in progress"), std::string::npos)
+        << e.what();
   }
   // The same sweep in other chunks is another layout of the progress: refused too.
-  EXPECT_THROW(ChunkStore(dir, spec, ChunkPlan{spec.size(), 8}, false), std::runtime_error);
+  EXPECT_THROW(ChunkStore(dir, spec, ChunkPlan{spec.size(), 8}, false, "scalar"), std::runtime_error);
   // --overwrite: a fresh run; the earlier run's outputs are gone first.
   std::ofstream(dir + "/check3_region.png") << "old";
   std::ofstream(dir + "/notes.txt") << "the user's own file";
-  ChunkStore replaced(dir, other, ChunkPlan{spec.size(), 7}, true);
+  ChunkStore replaced(dir, other, ChunkPlan{spec.size(), 7}, true, "scalar");
   EXPECT_FALSE(replaced.resumed());
   EXPECT_FALSE(exists(dir + "/check3_region.png"));
   EXPECT_TRUE(exists(dir + "/notes.txt"));
+}
+
+// A run killed on one backend and resumed on another would mix numbers that
+// agree to rounding only: refused, naming the backend to resume with.
+TEST(ChunkStore, ResumingWithAnotherBackendIsRefused) {
+  const SweepSpec spec = loadSweepFile(kData + "/small_grid.yaml", kConfig);
+  const std::string dir = freshDir("chunks_backend");
+  const ChunkPlan plan{spec.size(), 7};
+  { ChunkStore store(dir, spec, plan, false, "scalar"); store.write(0, fakeResults(7, 0)); }
+  try {
+    ChunkStore other(dir, spec, plan, false, "cpu (avx2)");
+    FAIL() << "resumed with another backend";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("computed so far by the scalar backend: resuming with cpu (avx2) would "
+                                         "mix"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("resume with --backend scalar"), std::string::npos) << e.what();
+  }
+  ChunkStore same(dir, spec, plan, false, "scalar");
+  EXPECT_TRUE(same.resumed());
+  EXPECT_TRUE(same.done(0));
 }

@@ -246,7 +246,7 @@ TEST(Study13Refusal, MistakesNameTheKey) {
   expectRefused("sweep:\n  parameters: {kp: 0.5, delay: 0}\n", "'sweep.parameters.kd' is missing");
   // A delay not shorter than the task, in a design's range.
   expectRefused(ua + "  design: random\n  samples: 8\n  parameters: {delay: {from: 0, to: 1801}}\n",
-                "'sweep.parameters.delay' = 1801 samples is not shorter than the run's 1801 iterations");
+                "'sweep.parameters.delay' = 1801 samples is not shorter than the run's 1801 steps");
   // Points files: any parameter names as columns, checked the same way.
   const std::string csv = writeTemp("ua_points.csv", "k1_z,delay,m\n5,3,1.1\n4,0,12\n");
   expectRefused(ua + "  points: " + csv + "\n", "row 3 m' = 12 is outside the accepted range [0.1, 10] of m");

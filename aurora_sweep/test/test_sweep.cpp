@@ -321,7 +321,7 @@ TEST(SweepFileRefusal, DelayLimitIsTheNodes) {
   EXPECT_EQ(refusal("sweep:\n  parameters:\n    kp: 0.5\n    kd: 0.5\n    delay: 1800\n"), "");
   const std::string beyond = refusal("sweep:\n  parameters:\n    kp: 0.5\n    kd: 0.5\n    delay: 2000\n");
   EXPECT_NE(beyond.find("'sweep.parameters.delay' = 2000 samples is not shorter than the "
-                        "run's 1801 iterations"), std::string::npos) << beyond;
+                        "run's 1801 steps"), std::string::npos) << beyond;
   EXPECT_NE(beyond.find("accepted delays up to 1800 samples"), std::string::npos) << beyond;
   EXPECT_EQ(refusal("sweep:\n  task: {waypoints: [[1, 1, 1]], end_times: [60], duration: 100}\n"
                     "  parameters:\n    kp: 0.5\n    kd: 0.5\n    delay: 2047\n"), "");
@@ -370,6 +370,32 @@ TEST(SweepProgram, RefusalsLeaveNothingBehind) {
   struct stat st;
   EXPECT_NE(stat((out2 + "/results.csv").c_str(), &st), 0);
 }
+
+// A sweep says up front what it costs (combinations, time at a measured
+// rate, bytes) and refuses one the disk cannot hold, before anything is
+// written (a 10^13 grid used to run silently until killed).
+TEST(SweepProgram, SaysTheCostUpFrontAndRefusesWhatCannotFit) {
+  const std::string huge = writeTemp("huge_grid.yaml", "sweep:\n  name: huge\n  parameters:\n"
+                                     "    kp: {from: 0.1, to: 10, count: 100000}\n"
+                                     "    kd: {from: 0.1, to: 10, count: 100000}\n"
+                                     "    delay: {from: 0, to: 999, count: 1000}\n");
+  const std::string out = ::testing::TempDir() + "/sweep_huge_out";
+  std::string log;
+  EXPECT_EQ(runSweep("--config " + huge + " --out " + out + " --backend scalar", log), 2) << log;
+  EXPECT_NE(log.find("refused: "), std::string::npos) << log;
+  EXPECT_NE(log.find("cannot hold this sweep (10,000,000,000,000 combinations in "), std::string::npos) << log;
+  EXPECT_NE(log.find("writes about "), std::string::npos) << log;
+  EXPECT_NE(log.find("--ignore-free-space"), std::string::npos) << log;
+  struct stat st;
+  EXPECT_NE(stat(out.c_str(), &st), 0) << "output folder created for a refused sweep: " << log;
+  // A sweep that fits: the plan, then the run; counts in the singular too.
+  const std::string small = ::testing::TempDir() + "/sweep_plan_out";
+  ASSERT_EQ(runSweep("--config " + kData + "/small_grid.yaml --out " + small + " --backend scalar --no-plots "
+                     "--chunk-size 100 --overwrite", log), 0) << log;
+  EXPECT_NE(log.find("sweep: plan: 80 combinations in 1 chunk: about "), std::string::npos) << log;
+  EXPECT_NE(log.find("sims/s (measured on the first "), std::string::npos) << log;
+  EXPECT_EQ(log.find("1 chunks"), std::string::npos) << log;
+}
 #endif
 
 // A fixed parameter may stand in `order` (it does not vary).
@@ -389,4 +415,33 @@ TEST(RecentRate, FollowsTheRecentThroughput) {
   long done = 3000;
   for (int t = 31; t <= 60; ++t) rate = r.add(t, done += 200);  // twice as fast later
   EXPECT_DOUBLE_EQ(rate, 200.0);  // the whole-run average would say 150
+}
+
+// One boolean rule for every file: a quoted "false" is a string, refused
+// (the sweep used to read it as false), as is anything not a boolean.
+TEST(SweepFileRefusal, BooleansMustBeUnquotedTrueOrFalse) {
+  std::string msg = refusal(std::string("sweep:\n") + kGoodParams + "  clamp_commands: \"false\"\n");
+  EXPECT_NE(msg.find("'sweep.clamp_commands' = 'false' is not a boolean: accepted true or false, unquoted"),
+            std::string::npos) << msg;
+  msg = refusal(std::string("sweep:\n") + kGoodParams + "  early_stop: yes please\n");
+  EXPECT_NE(msg.find("'sweep.early_stop' = 'yes please' is not a boolean"), std::string::npos) << msg;
+  EXPECT_EQ(refusal(std::string("sweep:\n") + kGoodParams + "  clamp_commands: false\n"), "");
+}
+
+// Points files as Excel and pandas write them: a UTF-8 byte order mark,
+// quoted values, CRLF line ends; a quote left open is refused.
+TEST(SweepFile, PointsFilesWithAByteOrderMarkAndQuotedValues) {
+  const std::string csv = writeTemp("excel_points.csv", "\xEF\xBB\xBFkp,\"kd\",delay\r\n\"0.5\", 0.85 ,\"3\"\r\n\r\n0.4,0.7,0\r\n");
+  const SweepSpec spec = load(writeTemp("excel_points.yaml", "sweep:\n  points: " + csv + "\n"));
+  ASSERT_EQ(spec.points.size(), 6u);
+  EXPECT_EQ(spec.points[0], 0.5);
+  EXPECT_EQ(spec.points[1], 0.85);
+  EXPECT_EQ(spec.points[2], 3.0);
+  EXPECT_EQ(spec.points[5], 0.0);
+  const std::string open = writeTemp("open_quote.csv", "kp,kd,delay\n\"0.5,0.85,3\n");
+  const std::string msg = refusal("sweep:\n  points: " + open + "\n");
+  EXPECT_NE(msg.find("is not valid CSV"), std::string::npos) << msg;
+  const std::string short_row = writeTemp("short_row.csv", "kp,kd,delay\n0.5,0.85\n");
+  EXPECT_NE(refusal("sweep:\n  points: " + short_row + "\n").find("row 2' has 2 columns: the header has 3"),
+            std::string::npos);
 }

@@ -74,6 +74,29 @@ class BadParamsTest(unittest.TestCase):
         rc, out = self.controller_case("/str_gain", lambda p: rospy.set_param(p + "controller/kp", "0.5"))
         self.assert_refused(rc, out, "/str_gain/controller/controller/kp", "has the wrong type: expected a number")
 
+    def test_boolean_given_as_a_string(self):
+        # An overrides file with clamp_commands: "false" (a string) was
+        # ignored (the node still clamped): one boolean rule, refused.
+        for value in ("false", "yes please"):
+            rc, out = self.controller_case("/str_bool", lambda p: rospy.set_param(p + "clamp_commands", value))
+            self.assert_refused(rc, out, "'/str_bool/controller/clamp_commands' = '%s' is not a boolean" % value,
+                                "accepted true or false, unquoted")
+
+    def test_waypoint_below_the_ground(self):
+        rc, out = self.controller_case(
+            "/low_wp", lambda p: rospy.set_param(p + "task/waypoints", [[1, 0, 1.5], [1, 0, -2], [1, 1, 1], [0, 0, 1]]))
+        self.assert_refused(rc, out, "'/low_wp/controller/task/waypoints[1]' has z = -2 m",
+                            "accepted heights [0.2, 100] m")
+
+    def test_delay_seconds_echoes_the_value(self):
+        rc, out = self.controller_case("/neg_delay_s", lambda p: rospy.set_param(p + "delay/seconds", -0.1))
+        self.assert_refused(rc, out, "'/neg_delay_s/controller/delay/seconds' = -0.1", "accepted range [0,")
+
+    def test_exponent_read_as_a_string_says_how_to_write_it(self):
+        # YAML 1.1 (rosparam) reads 1.0e9 as a string: say to write 1.0e+9.
+        rc, out = self.controller_case("/exp_gain", lambda p: rospy.set_param(p + "controller/kp", "1.0e9"))
+        self.assert_refused(rc, out, "/exp_gain/controller/controller/kp", "write 1.0e+9")
+
     def test_underactuated_missing_gain(self):
         def edit(p):
             rospy.delete_param(p + "controller")
@@ -99,6 +122,15 @@ class BadParamsTest(unittest.TestCase):
         rospy.set_param(ns + "/vehicle/mass", -0.4)
         rc, out = self.run_node("aurora_sim", "ardrone_sim", ns)
         self.assert_refused(rc, out, "/neg_mass/vehicle/mass", "accepted range")
+
+    def test_sim_negative_stop_after(self):
+        # The range has no upper end: "inf)", not DBL_MAX's 309 digits.
+        ns = "/neg_stop"
+        load_yaml(os.path.join(self.config, "vehicles/ardrone2.yaml"), ns + "/vehicle")
+        rospy.set_param(ns + "/ardrone_sim/stop_after", -5.0)
+        rc, out = self.run_node("aurora_sim", "ardrone_sim", ns)
+        self.assert_refused(rc, out, "'/neg_stop/ardrone_sim/stop_after' = -5 is invalid", "accepted range [0, inf) s")
+        self.assertNotIn("179769", out)
 
 
 if __name__ == "__main__":

@@ -14,10 +14,10 @@ sys.path.insert(0, os.path.dirname(os.path.realpath(__file__)))
 from ros_links import free_port  # noqa: E402
 
 
-def aurora_launch(*launch_args):
+def aurora_launch(*launch_args, port=None, mode="lockstep"):
     # Its own master on a free port: the rostest's master is left alone.
-    cmd = ["rosrun", "aurora_bringup", "aurora_launch", "-p", str(free_port()), "aurora_bringup",
-           "sim.launch", "mode:=lockstep", "sim_output:=log"] + list(launch_args)
+    cmd = ["rosrun", "aurora_bringup", "aurora_launch", "-p", str(port or free_port()), "aurora_bringup",
+           "sim.launch", "mode:=" + mode, "sim_output:=log"] + list(launch_args)
     done = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, timeout=90,
                           env=dict(os.environ), universal_newlines=True)
     return done.returncode, done.stdout
@@ -36,6 +36,42 @@ class LaunchOutcomeTest(unittest.TestCase):
         self.assertEqual(rc, 1, out)
         self.assertIn("node /ardrone1/controller FAILED with exit status", out)
         self.assertIn("delay/samples' = 99999 is invalid", out)
+
+    def test_a_master_left_running_keeps_no_parameters_of_the_last_launch(self):
+        # The ordinary way to work: one roscore, several launches. Each must
+        # start from its own parameters: another law (the PD gains would be
+        # unknown keys), another task kind (waypoint keys), a delay in samples
+        # after one in seconds, and realtime after lockstep (/use_sim_time
+        # stayed true: nobody publishes /clock, no cmd_vel, stop_after never).
+        port = free_port()
+        env = dict(os.environ, ROS_MASTER_URI="http://localhost:%d" % port)
+        master = subprocess.Popen(["roscore", "-p", str(port)], stdout=subprocess.DEVNULL,
+                                  stderr=subprocess.DEVNULL, env=env)
+        try:
+            rc, out = aurora_launch("stop_after:=2", "delay_seconds:=0.2", port=port)
+            self.assertEqual(rc, 0, out)
+            rc, out = aurora_launch("stop_after:=2", "controller:=underactuated", "task:=circle", "delay:=3",
+                                    port=port, mode="realtime")
+            self.assertEqual(rc, 0, out)
+            self.assertIn("/ardrone1/ardrone_sim finished normally", out)
+        finally:
+            master.terminate()
+            master.wait(timeout=30)
+
+    def test_a_bad_boolean_argument_is_one_line(self):
+        rc, out = aurora_launch("stop_after:=3", "record:=maybe")
+        self.assertEqual(rc, 2, out)
+        self.assertNotIn("Traceback", out)
+        self.assertIn("record", out)
+        self.assertIn("maybe", out)
+
+    def test_a_namespace_that_is_no_ros_name_is_one_line(self):
+        rc, out = aurora_launch("stop_after:=3", "ns:=my drone")
+        self.assertNotEqual(rc, 0, out)
+        self.assertNotIn("terminate called", out)
+        self.assertNotIn("Traceback", out)
+        self.assertIn("Namespace [/my drone] is invalid", out)
+        self.assertIn("(ns:=my_drone)", out)
 
 
 if __name__ == "__main__":

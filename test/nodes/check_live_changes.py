@@ -1,10 +1,12 @@
 #!/usr/bin/python3
 """Live delay raise beyond the history; the controller after a landing."""
+import math
 import os
 import sys
 import time
 import unittest
 
+import dynamic_reconfigure
 import dynamic_reconfigure.client
 import rospy
 import rostest
@@ -71,18 +73,45 @@ class LiveChangesTest(unittest.TestCase):
             self.assertEqual((c.delay_in_force, c.delay_pending), (10, 0))
         self.assertTrue(self.wait_for(lambda: self.controller_logs("in force again", logs_before), 3))
 
-    def test_1b_a_delay_not_shorter_than_the_task_is_refused_live(self):
-        # mission4: 1801 iterations; 2047 would never take force (limits.h)
+    def refused(self, change, text):
+        """A live change the start-up rules refuse: the call fails, the node
+        says why with the value as given, and nothing changes."""
         logs_before = len(self.logs)
-        before = self.controls[-1].delay_samples
-        kept = self.reconfigure.update_configuration({"delay_samples": 2047})
-        self.assertEqual(kept["delay_samples"], before, "the server must show the delay kept")
+        before = self.controls[-1]
+        with self.assertRaises(dynamic_reconfigure.DynamicReconfigureCallbackException, msg=str(change)):
+            self.reconfigure.update_configuration(change)
+        self.assertTrue(self.wait_for(lambda: self.controller_logs(text, logs_before), 3),
+                        "no refusal naming %r for %r" % (text, change))
+        self.assertEqual(self.controller_logs(text, logs_before)[0].level, Log.ERROR)
         start = len(self.controls)
         self.assertTrue(self.wait_for(lambda: len(self.controls) >= start + 10, 5))
-        self.assertEqual({c.delay_samples for c in self.controls[start:]}, {before})
-        self.assertTrue(self.wait_for(lambda: self.controller_logs("delay_samples 2047 refused", logs_before), 3))
-        self.assertIn("accepted delays up to 1800 samples",
-                      self.controller_logs("delay_samples 2047 refused", logs_before)[0].msg)
+        for c in self.controls[start:]:
+            self.assertEqual((c.delay_samples, list(c.gains)), (before.delay_samples, list(before.gains)), change)
+            self.assertTrue(all(math.isfinite(u) for u in c.command), change)
+        return self.controller_logs(text, logs_before)[0].msg
+
+    def test_1b_a_delay_not_shorter_than_the_task_is_refused_live(self):
+        # mission4: 1801 steps; 2047 would never take force (limits.h)
+        msg = self.refused({"delay_samples": 2047}, "delay_samples = 2047 samples is not shorter")
+        self.assertIn("accepted delays up to 1800 samples", msg)
+        self.assertEqual(self.reconfigure.get_configuration(timeout=5)["delay_samples"],
+                         self.controls[-1].delay_samples, "the server must show the delay kept")
+
+    def test_1c_live_values_meet_the_start_up_rules(self):
+        # Each was taken (NaN reached cmd_vel) or silently clamped before.
+        self.refused({"kp": float("nan")}, "kp = nan is refused: accepted a gain in [0, 10]")
+        self.refused({"kp": -3.0}, "kp = -3 is refused")
+        self.refused({"kp": 50.0}, "kp = 50 is refused")
+        self.refused({"kd": float("inf")}, "kd = inf is refused")
+        self.refused({"delay_samples": -1}, "delay_samples = -1 is refused")
+        self.refused({"delay_samples": 2.5}, "delay_samples = 2.5 is refused")
+        self.refused({"delay_samples": 5000}, "delay_samples = 5000 is refused")
+        self.refused({"k1_x": 0.7}, "k1_x = 0.7 is refused: a gain of the underactuated law, but this node flies")
+        # A good change still works, and shows in Control.
+        self.reconfigure.update_configuration({"kp": 0.6})
+        start = len(self.controls)
+        self.assertTrue(self.wait_for(lambda: len(self.controls) >= start + 10, 5))
+        self.assertEqual(self.controls[-1].kp, 0.6)
 
     def test_2_a_landed_drone_is_still_a_fresh_source(self):
         self.land.publish(Empty())

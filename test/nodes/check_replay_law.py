@@ -3,6 +3,7 @@
 command; the report names the law and measures tracking per lap."""
 import json
 import os
+import re
 import subprocess
 import sys
 import tempfile
@@ -32,6 +33,11 @@ class ReplayLawTest(unittest.TestCase):
         # Another delay gives other commands: the comparison can fail.
         rc, log = run(["rosrun", "aurora_control", "replay", bag, "--delay", "1"])
         self.assertNotIn(" 0 differ", log)
+        if rospy.get_param("~controller") == "underactuated":
+            # A PD gain on an underactuated bag would be ignored: refused.
+            rc, log = run(["rosrun", "aurora_control", "replay", bag, "--kp", "0.5"])
+            self.assertEqual(rc, 2, log)
+            self.assertIn("--kp is a gain of the pd_saturated law, but the bag's controller is underactuated", log)
         out = tempfile.mkdtemp(prefix="aurora_replay_law_")
         rc, log = run(["rosrun", "aurora_control", "report", bag, "--out", out, "--no-video"])
         self.assertEqual(rc, 0, log)
@@ -47,9 +53,27 @@ class ReplayLawTest(unittest.TestCase):
             self.assertGreater(s["max_tracking_error_m"], s["rms_tracking_error_m"] - 1e-12)
         # The second lap, past the start transient, is tracked closely.
         self.assertLess(laps[1]["rms_tracking_error_m"], 0.2)
+        self.flight_tool_agrees(laps)
         png = os.path.join(out, "ardrone1_tracking.png")
         self.assertGreater(os.path.getsize(png), 10000)
         os.remove(bag)
+
+    def flight_tool_agrees(self, laps):
+        """The flight tool flies the same lockstep flight offline: its tracking
+        error per lap is the report's (one definition, docs/controllers.md)."""
+        config = rospy.get_param("~config_dir")
+        rc, log = run(["rosrun", "aurora_control", "flight",
+                       "--controller", os.path.join(config, "controllers", rospy.get_param("~controller") + ".yaml"),
+                       "--task", os.path.join(config, "tasks", rospy.get_param("~task") + ".yaml"),
+                       "--delay", str(rospy.get_param("~delay"))])
+        self.assertEqual(rc, 0, log)
+        flown = re.findall(r"lap (\d+): RMS tracking error ([0-9.]+) m, max ([0-9.]+) m", log)
+        self.assertEqual(len(flown), len(laps), log)
+        self.assertIn(" %d steps in " % rospy.get_param("~task_steps"), log)
+        for (lap, rms, peak), s in zip(flown, laps):
+            self.assertEqual(int(lap), s["lap"])
+            self.assertEqual(rms, "%.4f" % s["rms_tracking_error_m"], log)
+            self.assertEqual(peak, "%.4f" % s["max_tracking_error_m"], log)
 
 
 if __name__ == "__main__":

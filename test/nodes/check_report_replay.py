@@ -98,7 +98,7 @@ class ReportReplayTest(unittest.TestCase):
         # as in the node and the sweep.
         rc, log = run(["rosrun", "aurora_control", "replay", self.bag, "--delay", "2000"])
         self.assertEqual(rc, 2, log)
-        self.assertIn("--delay: 2000 samples is not shorter than the run's 1801 iterations", log)
+        self.assertIn("--delay: 2000 samples is not shorter than the run's 1801 steps", log)
         rc, log = run(["rosrun", "aurora_control", "replay", self.bag, "--delay", "1800"])
         self.assertEqual(rc, 0, log)
 

@@ -1,6 +1,7 @@
 #!/usr/bin/python3
-"""replay refuses what the node refuses, with the same limits (limits.h):
-gains outside [0, 10], two delays, two clamp choices, a delay beyond 2047."""
+"""replay and flight refuse what the node refuses, with the same limits
+(limits.h): gains outside [0, 10], two delays, two clamp choices, a delay
+beyond 2047 or not shorter than the task."""
 import subprocess
 import unittest
 
@@ -34,6 +35,25 @@ class ToolArgumentsTest(unittest.TestCase):
 
     def test_delay_beyond_the_node_limit(self):
         self.assert_refused(["--delay", "2048"], "--delay must be integer samples in [0, 2047]")
+
+
+    def test_missing_bag_is_named_as_missing(self):
+        rc, out = replay()
+        self.assertEqual(rc, 2, out)
+        self.assertIn("bag '/nonexistent.bag' does not exist", out)
+        self.assertNotIn("still recording", out)
+
+    def test_flight_refuses_a_delay_not_shorter_than_the_task(self):
+        # It flew such a delay as no delay at all; node, replay, sweep refuse it.
+        for task, delay, longest in (("mission4", 2000, 1800), ("circle", 1201, 1200)):
+            p = subprocess.run(["rosrun", "aurora_control", "flight", "--delay", str(delay), "--task",
+                                subprocess.run(["rospack", "find", "aurora_config"], stdout=subprocess.PIPE)
+                                .stdout.decode().strip() + "/tasks/%s.yaml" % task],
+                               stdout=subprocess.PIPE, stderr=subprocess.STDOUT, timeout=60)
+            out = p.stdout.decode(errors="replace")
+            self.assertEqual(p.returncode, 2, out)
+            self.assertIn("--delay %d samples is not shorter than the run's %d steps" % (delay, longest + 1), out)
+            self.assertIn("accepted delays up to %d samples" % longest, out)
 
 
 if __name__ == "__main__":

@@ -14,6 +14,7 @@
 #include "aurora_control/delayed_controller.h"
 #include "aurora_control/limits.h"
 #include "aurora_control/task.h"
+#include "aurora_control/tracking.h"
 #include "aurora_control/waypoint_task.h"
 #include "aurora_sim/ardrone_model.h"
 
@@ -22,15 +23,19 @@ namespace aurora_control {
 struct FlightResult {
   long steps = 0;                     // model steps run
   double iae = 0, itae = 0, iasc = 0; // the controller's running metrics at the end
-  double rms_tracking_error = 0;      // [m] true position vs reference, over the steps
+  double rms_tracking_error = 0;      // [m] trackingError over the steps run (state k, reference k)
   double max_tracking_error = 0;      // [m]
   double final_pos[3] = {0, 0, 0};    // [m]
 };
 
 constexpr int kFlightHistory = kDelayHistory;  // the node's history (limits.h)
 
-// observe(k, state after step k, reference of iteration k, command) after
-// each model step (k 1-based).
+
+// observe(k, state after step k, reference of iteration k - 1, command of
+// iteration k - 1) after each model step (k 1-based). Iteration k hands
+// state k (the state at task time k Ts) to the controller with the
+// reference of that time: `iterations` = taskStepCount() flies a task's
+// steps 0..N.
 template <typename Observer>
 FlightResult runFlight(const aurora_sim::ArdroneParams<double>& p, const ControllerSettings& settings,
                        const Task<double>& task, long iterations, Observer observe) {
@@ -51,14 +56,13 @@ FlightResult runFlight(const aurora_sim::ArdroneParams<double>& p, const Control
     for (int i = 0; i < aurora_sim::kStateSize; ++i) sample.X[i] = model.X[i];
     core->push(sample);
     const Reference<double> ref = task.at(WaypointTask<double>::timeOfStep(k, p.Ts));
+    const double e = trackingError(ref, sample.X);  // state k against reference k
+    sum_sq += e * e;
+    r.max_tracking_error = std::max(r.max_tracking_error, e);
     const ControlOutput out = core->compute(ref);
     double U[4];
     for (int i = 0; i < 4; ++i) U[i] = aurora_sim::clampUnit(out.U[i]);  // the sim's clamp
     aurora_sim::ardroneStep(p, model, U, aurora_sim::Disturbance<double>::zero());
-    double e2 = 0.0;
-    for (int i = 0; i < 3; ++i) e2 += (ref.pos[i] - model.X[i]) * (ref.pos[i] - model.X[i]);
-    sum_sq += e2;
-    r.max_tracking_error = std::max(r.max_tracking_error, std::sqrt(e2));
     r.iae = out.iae, r.itae = out.itae, r.iasc = out.iasc;
     r.steps = k + 1;
     observe(k + 1, model, ref, U);

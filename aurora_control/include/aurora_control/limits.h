@@ -35,9 +35,11 @@ constexpr double kUnderactuatedGainMin = 0.001, kUnderactuatedGainMax = 100.0;
 // delayed state never reaches the controller and the run equals one without
 // delay. Every entry point (sweep, node, replay) refuses it with this text.
 inline bool delayShorterThanRun(long delay, long iterations) { return delay < iterations; }
+// `iterations`: the run's steps 0..iterations-1 (the node, replay and
+// flight: taskStepCount; the sweep: studyIterationCount).
 inline std::string delayRunText(long delay, long iterations, double Ts) {
   char run[96];
-  std::snprintf(run, sizeof run, " iterations (%.4g s at Ts = %.4g s)", (iterations - 1) * Ts, Ts);
+  std::snprintf(run, sizeof run, " steps (t = 0 to %.4g s at Ts = %.4g s)", (iterations - 1) * Ts, Ts);
   return std::to_string(delay) + " samples is not shorter than the run's " + std::to_string(iterations) +
          run + ": the delayed state would never reach the controller, the run would equal one without "
          "delay; accepted delays up to " + std::to_string(iterations - 1) + " samples for this task";

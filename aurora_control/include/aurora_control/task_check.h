@@ -3,11 +3,17 @@
 #pragma once
 
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "aurora_control/waypoint_task.h"
 
 namespace aurora_control {
+
+// Heights a task may ask for [m]: a waypoint or a trajectory below 0.2 m is
+// at (or under) the ground the drone takes off from (docs/controllers.md,
+// "Tasks").
+constexpr double kMinTaskHeight = 0.2, kMaxTaskHeight = 100.0;
 
 // Empty when the task is usable; otherwise what is wrong, naming the key
 // under `prefix` (e.g. "/ardrone1/controller/task/").
@@ -22,16 +28,28 @@ std::string checkTask(const WaypointTask<T, N>& task, const std::string& prefix)
            " is invalid: accepted range (0, 86400] s";
   }
   for (int i = 0; i < task.count; ++i) {
+    const std::string wp = "'" + prefix + "waypoints[" + std::to_string(i) + "]'";
     for (int j = 0; j < 3; ++j) {
-      if (!std::isfinite(double(task.position[i][j]))) {
-        return "'" + prefix + "waypoints[" + std::to_string(i) + "]' is not finite";
-      }
+      if (!std::isfinite(double(task.position[i][j]))) return wp + " is not finite";
+    }
+    const double z = double(task.position[i][2]);
+    if (z < kMinTaskHeight || z > kMaxTaskHeight) {
+      char h[64];
+      std::snprintf(h, sizeof h, "%g", z);
+      return wp + " has z = " + h + " m: accepted heights [0.2, 100] m (z is up; the ground is z = 0)";
     }
     const double prev = i == 0 ? 0.0 : double(task.end_time[i - 1]);
     if (!(double(task.end_time[i]) > prev)) {
       return "'" + prefix + "end_times[" + std::to_string(i) + "]' = " +
              std::to_string(double(task.end_time[i])) +
              " is invalid: end times must be positive and strictly increasing";
+    }
+    if (double(task.end_time[i]) > double(task.duration)) {
+      char t[96];
+      std::snprintf(t, sizeof t, "%g is after the task's duration (%g s)", double(task.end_time[i]),
+                    double(task.duration));
+      return "'" + prefix + "end_times[" + std::to_string(i) + "]' = " + t +
+             ": accepted end times up to the duration (the last waypoint is held after its end time)";
     }
   }
   return "";

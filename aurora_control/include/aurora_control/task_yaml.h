@@ -64,7 +64,8 @@ inline void readTrajectory(const YamlReader& r, const YAML::Node& n, const std::
     if (std::fabs(c[i]) > 1000.0) r.fail(r.key(key, "centre"), "is outside the accepted range [-1000, 1000] m");
     t.centre[i] = c[i];
   }
-  t.centre[2] = r.numberIn(r.require(n, key, "height", "a height in m"), r.key(key, "height"), 0.2, 100.0, "m");
+  t.centre[2] = r.numberIn(r.require(n, key, "height", "a height in m"), r.key(key, "height"), kMinTaskHeight,
+                           kMaxTaskHeight, "m");
   const std::string skey = r.key(key, size_key);
   if (circle) {
     t.size[0] = r.numberIn(r.require(n, key, "radius", "a radius in m"), skey, 0.0, 100.0, "m", false);

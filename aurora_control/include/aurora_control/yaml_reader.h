@@ -8,9 +8,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+#include "aurora_sim/boolean_rule.h"
 
 namespace aurora_control {
 
@@ -64,7 +67,7 @@ class YamlReader {
   double number(const YAML::Node& node, const std::string& key) const {
     if (!node.IsScalar()) fail(key, "has the wrong type: expected a number");
     // A quoted scalar ("0.5") is a string, whatever it reads as.
-    if (node.Tag() == "!") fail(key, "= '" + node.as<std::string>() + "' has the wrong type: expected a number, not a string");
+    if (node.Tag() == "!") fail(key, "= '" + node.as<std::string>() + "' has the wrong type: expected a number, not a string" + exponentHint(node.as<std::string>()));
     double v = 0.0;
     try {
       v = node.as<double>();
@@ -91,12 +94,17 @@ class YamlReader {
     return static_cast<long>(v);
   }
 
+  // The one boolean rule (aurora_sim/boolean_rule.h): a quoted scalar is a
+  // string, even "false".
   bool boolean(const YAML::Node& node, const std::string& key) const {
-    try {
-      return node.as<bool>();
-    } catch (const YAML::Exception&) {
-      fail(key, "must be true or false");
+    const std::string text = node.IsScalar() ? node.as<std::string>() : std::string("(not a scalar)");
+    if (node.IsScalar() && node.Tag() != "!") {
+      try {
+        return node.as<bool>();
+      } catch (const YAML::Exception&) {
+      }
     }
+    failWith(aurora_sim::booleanRefusal(key, text));
   }
 
   std::string text(const YAML::Node& node, const std::string& key) const {
@@ -123,7 +131,22 @@ class YamlReader {
     return number(node, key);
   }
 
+  // YAML 1.1 (rosparam, roslaunch) reads 1.0e9 as text: it wants a dot and a
+  // signed exponent. Says how to write such a number; "" for other strings.
+  static std::string exponentHint(const std::string& text) {
+    char* end = nullptr;
+    std::strtod(text.c_str(), &end);
+    const size_t e = text.find_first_of("eE");
+    if (text.empty() || *end != '\0' || e == std::string::npos) return "";
+    std::string fixed = text.substr(0, e);
+    if (fixed.find('.') == std::string::npos) fixed += ".0";
+    const std::string exponent = text.substr(e + 1);
+    fixed += "e" + std::string(exponent[0] == '+' || exponent[0] == '-' ? "" : "+") + exponent;
+    return " (YAML 1.1, which rosparam reads, takes '" + text + "' as text: write " + fixed + ")";
+  }
+
   static std::string fmt(double v) {
+    if (std::isnan(v)) return "nan";  // whatever its sign bit
     char buf[32];
     std::snprintf(buf, sizeof buf, "%g", v);
     return buf;

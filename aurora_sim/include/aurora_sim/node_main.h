@@ -5,13 +5,21 @@
 
 #include <ros/ros.h>
 
+#include <cstdio>
+
 #include "aurora_sim/ros_params.h"
 
 namespace aurora_sim {
 
 template <class Node>
 int runNode(int argc, char** argv, const char* name) {
-  ros::init(argc, argv, name);
+  try {
+    ros::init(argc, argv, name);
+  } catch (const ros::InvalidNameException& e) {
+    // e.g. ns:="my drone": one line naming the fix, not an uncaught abort.
+    std::fprintf(stderr, "%s: %s: use letters, digits, '_' and '/' (ns:=my_drone)\n", name, e.what());
+    return 2;
+  }
   // The handles outlive the node: destroying the last NodeHandle shuts
   // rosconsole down, which would swallow the fatal message below.
   ros::NodeHandle nh, private_nh("~");
@@ -20,6 +28,9 @@ int runNode(int argc, char** argv, const char* name) {
     ros::spin();
   } catch (const ParameterError& e) {
     ROS_FATAL("%s: %s", name, e.what());
+    return 2;
+  } catch (const ros::InvalidNameException& e) {
+    ROS_FATAL("%s: %s: use letters, digits, '_' and '/' in names", name, e.what());
     return 2;
   }
   return 0;

@@ -6,10 +6,13 @@
 #include <ros/ros.h>
 
 #include <cmath>
+#include <cstdio>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
 #include "aurora_sim/ardrone_params.h"
+#include "aurora_sim/boolean_rule.h"
 #include "aurora_sim/vehicle_keys.h"
 
 namespace aurora_sim {
@@ -38,6 +41,22 @@ V paramOr(const ros::NodeHandle& nh, const std::string& key, const V& fallback) 
   return nh.getParam(key, value) ? value : fallback;
 }
 
+// An optional boolean with a default, by the one boolean rule (boolean_rule.h).
+inline bool boolParam(const ros::NodeHandle& nh, const std::string& key, bool fallback) {
+  XmlRpc::XmlRpcValue v;
+  if (!nh.getParam(key, v)) return fallback;
+  if (v.getType() == XmlRpc::XmlRpcValue::TypeBoolean) return static_cast<bool>(v);
+  const std::string text = v.getType() == XmlRpc::XmlRpcValue::TypeString ? static_cast<std::string>(v) : v.toXml();
+  throw ParameterError("parameter " + booleanRefusal(fullKey(nh, key), text));
+}
+
+// A number as a user wrote it (%g: 0.2, -5, 1e+09), for messages.
+inline std::string numberText(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
+
 // An optional number with a default, checked against [lo, hi] (or (lo, hi]
 // with lo_inclusive false); the error names the full key, the value and the range.
 inline double rangedParam(const ros::NodeHandle& nh, const std::string& key, double fallback,
@@ -46,9 +65,11 @@ inline double rangedParam(const ros::NodeHandle& nh, const std::string& key, dou
   const double v = paramOr(nh, key, fallback);
   const bool above = lo_inclusive ? v >= lo : v > lo;
   if (!(std::isfinite(v) && above && v <= hi)) {
-    throw ParameterError("parameter '" + fullKey(nh, key) + "' = " + std::to_string(v) +
-                         " is invalid: accepted range " + (lo_inclusive ? "[" : "(") +
-                         std::to_string(lo) + ", " + std::to_string(hi) + "] " + unit);
+    // No upper limit reads as "inf)", not as DBL_MAX's 309 digits.
+    const bool open = hi >= std::numeric_limits<double>::max();
+    throw ParameterError("parameter '" + fullKey(nh, key) + "' = " + numberText(v) +
+                         " is invalid: accepted range " + (lo_inclusive ? "[" : "(") + numberText(lo) +
+                         ", " + (open ? std::string("inf)") : numberText(hi) + "]") + " " + unit);
   }
   return v;
 }

@@ -40,7 +40,11 @@ class ChunkStore {
   //   std::runtime_error naming both hashes, unless `overwrite`;
   // - otherwise a fresh run: the sweep's own old outputs (sweepOutputFiles())
   //   are removed first, so a reused folder never mixes old and new files.
-  ChunkStore(const std::string& out_dir, const SweepSpec& spec, const ChunkPlan& plan, bool overwrite);
+  // `computed_by` (the backend, e.g. "scalar", "cpu (avx512)") is recorded:
+  // resuming with another is refused, since backends agree to rounding only
+  // and mixed chunks would equal no uninterrupted run.
+  ChunkStore(const std::string& out_dir, const SweepSpec& spec, const ChunkPlan& plan, bool overwrite,
+             const std::string& computed_by);
 
   bool resumed() const { return resumed_; }
   const ChunkPlan& plan() const { return plan_; }
@@ -59,7 +63,7 @@ class ChunkStore {
   std::string chunkPath(long chunk) const;
   void openOrCreate(bool overwrite);
 
-  std::string out_dir_, progress_dir_;
+  std::string out_dir_, progress_dir_, name_, computed_by_;
   ChunkPlan plan_;
   uint32_t hash_;
   bool resumed_ = false;

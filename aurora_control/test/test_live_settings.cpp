@@ -1,0 +1,78 @@
+// Live changes meet the start-up rules: refused with the value as given,
+// never clamped; a refusal names the key and the accepted range.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "aurora_control/live_settings.h"
+#include "aurora_control/tracking.h"
+
+using namespace aurora_control;
+
+namespace {
+
+ControllerSettings pd() {
+  ControllerSettings s;
+  s.gains = {0.5, 0.85};
+  s.delay = 10;
+  return s;
+}
+
+const long kMission = taskStepCount(60.0, 1.0 / 30.0);  // 1801
+
+std::string check(const ControllerSettings& s, const std::string& name, double v) {
+  return checkLiveChange(s, LiveChange{name, v}, kMission);
+}
+
+}  // namespace
+
+TEST(LiveSettings, AcceptsWhatStartUpAccepts) {
+  ControllerSettings s = pd();
+  EXPECT_EQ(check(s, "kp", 0.6), "");
+  EXPECT_EQ(check(s, "delay_samples", 1800), "");
+  applyLiveChange(s, LiveChange{"kp", 0.6});
+  applyLiveChange(s, LiveChange{"delay_samples", 6});
+  EXPECT_EQ(s.gains.kp, 0.6);
+  EXPECT_EQ(s.delay, 6);
+}
+
+TEST(LiveSettings, RefusesWithTheValueGiven) {
+  const ControllerSettings s = pd();
+  EXPECT_EQ(check(s, "kp", std::nan("")), "kp = nan is refused: accepted a gain in [0, 10]");
+  EXPECT_EQ(check(s, "kp", -3), "kp = -3 is refused: accepted a gain in [0, 10]");
+  EXPECT_EQ(check(s, "kp", 50), "kp = 50 is refused: accepted a gain in [0, 10]");
+  EXPECT_NE(check(s, "kd", std::numeric_limits<double>::infinity()).find("kd = inf is refused"), std::string::npos);
+  EXPECT_NE(check(s, "delay_samples", -1).find("delay_samples = -1 is refused"), std::string::npos);
+  EXPECT_EQ(check(s, "delay_samples", 2.5), "delay_samples = 2.5 is refused: integer samples in [0, 2047]");
+  EXPECT_NE(check(s, "delay_samples", 5000).find("delay_samples = 5000 is refused"), std::string::npos);
+  EXPECT_NE(check(s, "delay_samples", 1801).find("accepted delays up to 1800 samples"), std::string::npos);
+  EXPECT_EQ(check(s, "kpp", 0.6), "'kpp' is not a live setting: accepted delay_samples, kp, kd (the pd_saturated "
+                                   "law's gains)");
+}
+
+TEST(LiveSettings, AGainOfTheOtherLawIsRefusedUnlessUnchanged) {
+  ControllerSettings s = pd();
+  EXPECT_NE(check(s, "k1_x", 0.7).find("a gain of the underactuated law, but this node flies the pd_saturated"),
+            std::string::npos);
+  // dynparam load of a dump sends every key: the unchanged ones pass.
+  EXPECT_EQ(check(s, "k1_x", s.underactuated.k1[kAxisX]), "");
+  applyLiveChange(s, LiveChange{"k1_x", s.underactuated.k1[kAxisX]});
+  EXPECT_EQ(s.gains.kp, 0.5);
+  s.law = LawType::kUnderactuated;
+  EXPECT_NE(check(s, "kp", 0.9).find("a gain of the pd_saturated law"), std::string::npos);
+  EXPECT_EQ(check(s, "k2_z", 100.0), "");
+  EXPECT_NE(check(s, "k2_z", 0.0).find("accepted a gain in [0.001, 100]"), std::string::npos);
+}
+
+// One definition of a task's steps and of the tracking error (the flight
+// tool and report use it): steps 0..round(D / Ts), state k against reference k.
+TEST(Tracking, StepsAndError) {
+  EXPECT_EQ(taskStepCount(40.0, 1.0 / 30.0), 1201);
+  EXPECT_EQ(taskStepCount(60.0, 1.0 / 30.0), 1801);
+  Reference<double> ref;
+  ref.pos[0] = 1, ref.pos[1] = 2, ref.pos[2] = 2;
+  double X[aurora_sim::kStateSize] = {};
+  X[aurora_sim::kX] = 1, X[aurora_sim::kY] = -1, X[aurora_sim::kZ] = 6;
+  EXPECT_EQ(trackingError(ref, X), 5.0);
+}
