@@ -1,46 +1,161 @@
 // The `cuda` backend: one simulation per GPU thread. The kernel body is
-// simulateCombination() of simulation.h, the very templates the CPU runs.
+// sweepThread() of kernel_entry.h (simulateCombination() of simulation.h,
+// the very templates the CPU runs). Device memory and events are owned by
+// RAII handles, every runtime call is checked, and an error that leaves the
+// context unusable (a sticky error) is named as fatal.
 #include <cuda_runtime.h>
 
 #include <chrono>
+#include <memory>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "aurora_sweep/backends.h"
 #include "aurora_sweep/cuda_backend.h"
+#include "aurora_sweep/kernel_entry.h"
 
 namespace aurora_sweep {
 
 namespace {
 
-void check(cudaError_t err, const char* what) {
-  if (err != cudaSuccess) {
-    throw std::runtime_error(std::string(what) + ": " + cudaGetErrorName(err) + " (" +
-                             cudaGetErrorString(err) + ")");
+// Errors after which the context cannot be used again in this process.
+bool isSticky(cudaError_t err) {
+  switch (err) {
+    case cudaErrorIllegalAddress:
+    case cudaErrorLaunchFailure:
+    case cudaErrorHardwareStackError:
+    case cudaErrorIllegalInstruction:
+    case cudaErrorMisalignedAddress:
+    case cudaErrorInvalidAddressSpace:
+    case cudaErrorInvalidPc:
+    case cudaErrorAssert:
+    case cudaErrorECCUncorrectable:
+    case cudaErrorLaunchTimeout:
+      return true;
+    default:
+      return false;
   }
 }
+
+std::string errorText(cudaError_t err) {
+  return std::string(cudaGetErrorName(err)) + " (" + cudaGetErrorString(err) + ")";
+}
+
+void check(cudaError_t err, const char* what) {
+  if (err == cudaSuccess) return;
+  std::string msg = std::string(what) + ": " + errorText(err);
+  if (isSticky(err)) {
+    msg += "; FATAL: a sticky error, the CUDA context of this process is unusable: run the same "
+           "command again (it resumes from the chunks already written)";
+  }
+  throw std::runtime_error(msg);
+}
+
+// Device memory for n values of V, freed on every path out.
+template <typename V>
+class DeviceArray {
+ public:
+  explicit DeviceArray(size_t n) : n_(n) {
+    if (n_ > 0) check(cudaMalloc(&data_, n_ * sizeof(V)), "cudaMalloc");
+  }
+  ~DeviceArray() {
+    if (data_) cudaFree(data_);
+  }
+  DeviceArray(const DeviceArray&) = delete;
+  DeviceArray& operator=(const DeviceArray&) = delete;
+  V* get() const { return data_; }
+  void upload(const V* host) {
+    if (n_ > 0) check(cudaMemcpy(data_, host, n_ * sizeof(V), cudaMemcpyHostToDevice), "cudaMemcpy(to device)");
+  }
+  void download(V* host) const {
+    if (n_ > 0) check(cudaMemcpy(host, data_, n_ * sizeof(V), cudaMemcpyDeviceToHost), "cudaMemcpy(to host)");
+  }
+
+ private:
+  V* data_ = nullptr;
+  size_t n_;
+};
+
+class CudaEvent {
+ public:
+  CudaEvent() { check(cudaEventCreate(&event_), "cudaEventCreate"); }
+  ~CudaEvent() { cudaEventDestroy(event_); }
+  CudaEvent(const CudaEvent&) = delete;
+  CudaEvent& operator=(const CudaEvent&) = delete;
+  cudaEvent_t get() const { return event_; }
+
+ private:
+  cudaEvent_t event_ = nullptr;
+};
 
 template <aurora_control::LawType Law, typename T, int Capacity>
 __global__ void sweepKernel(SimSetup<T> setup, GridView grid, long first, long n, SimResult* out) {
-  const long i = static_cast<long>(blockIdx.x) * blockDim.x + threadIdx.x;
-  if (i >= n) return;
-  out[i] = simulateCombination<Law, T, Capacity>(setup, grid, first + i);  // the spec's range
+  sweepThread<Law, T, Capacity>(setup, grid, first, n, out, blockIdx.x, blockDim.x, threadIdx.x);
 }
 
-// Device copies of the per-axis values (not a table of combinations).
+// Calls f(T(), capacity, law) with the kernel's compile-time parameters for
+// `spec`: its precision, law and history tier (the tiers of
+// withHistoryCapacity up to kMediumHistory; delays beyond are refused).
+template <class F>
+void withKernelTypes(const SweepSpec& spec, F&& f) {
+  aurora_control::withLaw(spec.law, [&](auto law) {
+    auto tier = [&](auto type) {
+      if (spec.max_delay < aurora_control::kShortHistory) {
+        f(type, std::integral_constant<int, aurora_control::kShortHistory>(), law);
+      } else {
+        f(type, std::integral_constant<int, aurora_control::kMediumHistory>(), law);
+      }
+    };
+    if (spec.precision == Precision::kDouble) {
+      tier(double());
+    } else {
+      tier(float());
+    }
+  });
+}
+
+// The kernel's attributes for `spec` (loading its module: fails with the
+// reason where this build has no code for the device or the driver is old).
+cudaFuncAttributes kernelAttributes(const SweepSpec& spec) {
+  cudaFuncAttributes attr{};
+  withKernelTypes(spec, [&](auto type, auto capacity, auto law) {
+    using T = decltype(type);
+    check(cudaFuncGetAttributes(&attr, sweepKernel<decltype(law)::value, T, decltype(capacity)::value>),
+          "loading the sweep kernel (cudaFuncGetAttributes)");
+  });
+  return attr;
+}
+
+int defaultBlockSize(const SweepSpec& spec) {
+  int min_grid = 0, block = 0;
+  withKernelTypes(spec, [&](auto type, auto capacity, auto law) {
+    using T = decltype(type);
+    check(cudaOccupancyMaxPotentialBlockSize(&min_grid, &block,
+                                             sweepKernel<decltype(law)::value, T, decltype(capacity)::value>),
+          "cudaOccupancyMaxPotentialBlockSize");
+  });
+  return block;
+}
+
+// Only the rows of the chunk [first, first + n) of a points design go to
+// the device (a whole 10^8-row design would be gigabytes per chunk).
 struct DeviceGrid {
   GridView view{};
-  std::vector<double*> buffers;
-  ~DeviceGrid() {
-    for (double* b : buffers) cudaFree(b);
+  std::vector<std::unique_ptr<DeviceArray<double>>> buffers;
+  const double* upload(const double* host, size_t n) {
+    buffers.emplace_back(new DeviceArray<double>(n));
+    buffers.back()->upload(host);
+    return buffers.back()->get();
   }
-  double* upload(const double* host, size_t n) {
-    double* dev = nullptr;
-    check(cudaMalloc(&dev, n * sizeof(double)), "cudaMalloc(grid values)");
-    buffers.push_back(dev);
-    check(cudaMemcpy(dev, host, n * sizeof(double), cudaMemcpyHostToDevice), "cudaMemcpy(grid values)");
-    return dev;
+  DeviceGrid(const GridView& host, long first, long n) : view(host) {
+    for (int a = 0; a < host.n_axes; ++a) view.values[a] = upload(host.values[a], static_cast<size_t>(host.count[a]));
+    if (host.n_points > 0) {
+      const size_t cols = static_cast<size_t>(host.point_cols);
+      view.points = upload(host.points + static_cast<size_t>(first) * cols, static_cast<size_t>(n) * cols);
+      view.points_first = first;
+    }
   }
 };
 
@@ -49,55 +164,26 @@ CudaRun launch(const SweepSpec& spec, int block_size, std::vector<SimResult>& ou
   using Clock = std::chrono::steady_clock;
   const auto t0 = Clock::now();
   const SimSetup<T> setup = makeSetup<T>(spec);
-  const GridView host = spec.view();
   const long first = spec.rangeBegin(), n = spec.rangeSize();
-  DeviceGrid grid;
-  grid.view = host;
-  for (int a = 0; a < host.n_axes; ++a) grid.view.values[a] = grid.upload(host.values[a], host.count[a]);
-  if (host.n_points > 0) grid.view.points = grid.upload(host.points, static_cast<size_t>(host.point_cols) * host.n_points);
-
+  const DeviceGrid grid(spec.view(), first, n);
   CudaRun run;
-  if (block_size <= 0) {
-    int min_grid = 0;
-    check(cudaOccupancyMaxPotentialBlockSize(&min_grid, &block_size, sweepKernel<Law, T, Capacity>),
-          "cudaOccupancyMaxPotentialBlockSize");
-  }
-  run.block_size = block_size;
-  run.grid_size = (n + block_size - 1) / block_size;
-  SimResult* dev_out = nullptr;
-  check(cudaMalloc(&dev_out, n * sizeof(SimResult)), "cudaMalloc(results)");
-  cudaEvent_t start, stop;
-  check(cudaEventCreate(&start), "cudaEventCreate");
-  check(cudaEventCreate(&stop), "cudaEventCreate");
-  check(cudaEventRecord(start), "cudaEventRecord");
-  sweepKernel<Law, T, Capacity><<<static_cast<unsigned>(run.grid_size), block_size>>>(setup, grid.view, first, n, dev_out);
+  run.block_size = block_size > 0 ? block_size : defaultBlockSize(spec);
+  run.grid_size = blocksFor(n, run.block_size);
+  DeviceArray<SimResult> dev_out(static_cast<size_t>(n));
+  CudaEvent start, stop;
+  cudaGetLastError();  // a stale error of an earlier, failed call is not this launch's
+  check(cudaEventRecord(start.get()), "cudaEventRecord");
+  sweepKernel<Law, T, Capacity><<<static_cast<unsigned>(run.grid_size), run.block_size>>>(setup, grid.view, first, n,
+                                                                                         dev_out.get());
   check(cudaGetLastError(), "kernel launch");
-  check(cudaEventRecord(stop), "cudaEventRecord");
-  check(cudaEventSynchronize(stop), "kernel");
+  check(cudaEventRecord(stop.get()), "cudaEventRecord");
+  check(cudaEventSynchronize(stop.get()), "kernel");
   float ms = 0;
-  check(cudaEventElapsedTime(&ms, start, stop), "cudaEventElapsedTime");
+  check(cudaEventElapsedTime(&ms, start.get(), stop.get()), "cudaEventElapsedTime");
   run.kernel_s = ms / 1e3;
-  out.resize(n);
-  check(cudaMemcpy(out.data(), dev_out, n * sizeof(SimResult), cudaMemcpyDeviceToHost),
-        "cudaMemcpy(results)");
-  cudaFree(dev_out);
-  cudaEventDestroy(start);
-  cudaEventDestroy(stop);
+  out.resize(static_cast<size_t>(n));
+  dev_out.download(out.data());
   run.total_s = std::chrono::duration<double>(Clock::now() - t0).count();
-  return run;
-}
-
-template <typename T>
-CudaRun launchPrecision(const SweepSpec& spec, int block_size, std::vector<SimResult>& out) {
-  CudaRun run;
-  aurora_control::withLaw(spec.law, [&](auto law) {
-    constexpr aurora_control::LawType kLaw = decltype(law)::value;
-    using aurora_control::kMediumHistory;
-    using aurora_control::kShortHistory;
-    // The tiers of withHistoryCapacity up to kMediumHistory: runCuda checks cudaMaxDelay().
-    run = spec.max_delay < kShortHistory ? launch<kLaw, T, kShortHistory>(spec, block_size, out)
-                                         : launch<kLaw, T, kMediumHistory>(spec, block_size, out);
-  });
   return run;
 }
 
@@ -105,13 +191,26 @@ CudaRun launchPrecision(const SweepSpec& spec, int block_size, std::vector<SimRe
 
 bool cudaCompiledIn() { return true; }
 
-void selectCudaDevice(int local_rank) {
-  int count = 0;
-  if (cudaGetDeviceCount(&count) != cudaSuccess || count == 0) {
+DeviceChoice selectCudaDevice(int local_rank, int local_size) {
+  DeviceChoice c;
+  if (cudaGetDeviceCount(&c.devices) != cudaSuccess || c.devices == 0) {
     cudaGetLastError();  // clear: probeCudaDevice reports the error
-    return;
+    c.devices = 0;
+    return c;
   }
-  cudaSetDevice(local_rank % count);
+  c.device = local_rank % c.devices;
+  const cudaError_t err = cudaSetDevice(c.device);
+  if (err != cudaSuccess) {
+    c.ok = false;
+    c.note = "cudaSetDevice(" + std::to_string(c.device) + "): " + errorText(err);
+    return c;
+  }
+  if (local_size > c.devices) {
+    c.note = std::to_string(local_size) + " ranks on this host share " + std::to_string(c.devices) +
+             " GPU(s): local rank " + std::to_string(local_rank) + " uses device " + std::to_string(c.device) +
+             " with " + std::to_string((local_size - 1 - c.device) / c.devices) + " other rank(s)";
+  }
+  return c;
 }
 
 CudaDevice probeCudaDevice() {
@@ -119,8 +218,8 @@ CudaDevice probeCudaDevice() {
   int count = 0;
   const cudaError_t err = cudaGetDeviceCount(&count);
   if (err != cudaSuccess) {
-    d.error = std::string("cudaGetDeviceCount: ") + cudaGetErrorName(err) + " (" +
-              cudaGetErrorString(err) + ")";
+    cudaGetLastError();
+    d.error = "cudaGetDeviceCount: " + errorText(err);
     return d;
   }
   if (count == 0) {
@@ -128,33 +227,98 @@ CudaDevice probeCudaDevice() {
     return d;
   }
   int device = 0;  // the current one (selectCudaDevice under MPI)
-  cudaGetDevice(&device);
   cudaDeviceProp prop;
-  const cudaError_t perr = cudaGetDeviceProperties(&prop, device);
+  const cudaError_t perr = cudaGetDevice(&device) == cudaSuccess ? cudaGetDeviceProperties(&prop, device)
+                                                                  : cudaErrorInvalidDevice;
   if (perr != cudaSuccess) {
-    d.error = std::string("cudaGetDeviceProperties: ") + cudaGetErrorString(perr);
+    d.error = "cudaGetDeviceProperties: " + errorText(perr);
     return d;
   }
-  const cudaError_t ctx = cudaFree(nullptr);  // creates the context: the driver really works
-  if (ctx != cudaSuccess) {
-    d.error = std::string("creating a context on '") + prop.name + "': " + cudaGetErrorString(ctx);
+  // Loading a kernel shows that the driver runs this build's code on this
+  // device (an old driver, or no SASS/PTX for its architecture, fails here
+  // and not at the first chunk).
+  SweepSpec probe;
+  try {
+    kernelAttributes(probe);
+  } catch (const std::exception& e) {
+    cudaGetLastError();
+    d.error = std::string("'") + prop.name + "' (compute capability " + std::to_string(prop.major) + "." +
+              std::to_string(prop.minor) + "): " + e.what();
     return d;
   }
   d.usable = true;
   d.name = prop.name;
+  d.device = device;
   return d;
 }
 
 long cudaMaxDelay() { return aurora_control::kMediumHistory - 1; }
 
-CudaRun runCuda(const SweepSpec& spec, int block_size, std::vector<SimResult>& out) {
-  if (spec.max_delay > cudaMaxDelay()) {
-    throw std::runtime_error("the cuda backend holds delays up to " + std::to_string(cudaMaxDelay()) +
-                             " samples (each GPU thread keeps its history in local memory); this "
-                             "sweep reaches " + std::to_string(spec.max_delay) + ": use --backend cpu");
+std::string cudaDelayProblem(const SweepSpec& spec) {
+  if (spec.max_delay <= cudaMaxDelay()) return "";
+  return "the cuda backend holds delays up to " + std::to_string(cudaMaxDelay()) +
+         " samples (each GPU thread keeps its history in local memory); this sweep reaches " +
+         std::to_string(spec.max_delay) + ": use --backend cpu";
+}
+
+std::string cudaLaunchProblem(const SweepSpec& spec, int block_size) {
+  const std::string delay = cudaDelayProblem(spec);
+  if (!delay.empty()) return delay;
+  try {
+    const cudaFuncAttributes attr = kernelAttributes(spec);
+    if (block_size > attr.maxThreadsPerBlock) {
+      return "--block-size " + std::to_string(block_size) + " is above what this kernel (" +
+             std::to_string(attr.numRegs) + " registers per thread) can launch: accepted up to " +
+             std::to_string(attr.maxThreadsPerBlock) + " threads per block";
+    }
+    // The driver reserves the kernel's local memory (the delay history) for
+    // as many threads as the device can hold (not this kernel's occupancy),
+    // for the whole process, at the first launch.
+    int device = 0, sms = 0, per_sm = 0;
+    check(cudaGetDevice(&device), "cudaGetDevice");
+    check(cudaDeviceGetAttribute(&sms, cudaDevAttrMultiProcessorCount, device), "cudaDeviceGetAttribute");
+    check(cudaDeviceGetAttribute(&per_sm, cudaDevAttrMaxThreadsPerMultiProcessor, device), "cudaDeviceGetAttribute");
+    const long resident = static_cast<long>(sms) * per_sm;
+    const double reserve = double(attr.localSizeBytes) * double(resident);
+    size_t free_bytes = 0, total = 0;
+    check(cudaMemGetInfo(&free_bytes, &total), "cudaMemGetInfo");
+    if (reserve > 0.9 * double(free_bytes)) {
+      return "the kernel's local memory (" + std::to_string(attr.localSizeBytes) + " B per thread x " +
+             std::to_string(resident) + " threads the device can hold = " + std::to_string(long(reserve / 1e6)) +
+             " MB) does not fit in the " + std::to_string(long(free_bytes / 1e6)) +
+             " MB free on the device: fewer ranks per GPU, shorter delays (a smaller history tier), "
+             "float, or --backend cpu";
+    }
+  } catch (const std::exception& e) {
+    cudaGetLastError();
+    return e.what();
   }
-  if (spec.precision == Precision::kDouble) return launchPrecision<double>(spec, block_size, out);
-  return launchPrecision<float>(spec, block_size, out);
+  return "";
+}
+
+long cudaResidentThreads(const SweepSpec& spec, int block_size) {
+  int device = 0, sms = 0, blocks = 0;
+  const int block = block_size > 0 ? block_size : defaultBlockSize(spec);
+  check(cudaGetDevice(&device), "cudaGetDevice");
+  check(cudaDeviceGetAttribute(&sms, cudaDevAttrMultiProcessorCount, device), "cudaDeviceGetAttribute");
+  withKernelTypes(spec, [&](auto type, auto capacity, auto law) {
+    using T = decltype(type);
+    check(cudaOccupancyMaxActiveBlocksPerMultiprocessor(
+              &blocks, sweepKernel<decltype(law)::value, T, decltype(capacity)::value>, block, 0),
+          "cudaOccupancyMaxActiveBlocksPerMultiprocessor");
+  });
+  return static_cast<long>(sms) * blocks * block;
+}
+
+CudaRun runCuda(const SweepSpec& spec, int block_size, std::vector<SimResult>& out) {
+  const std::string delay = cudaDelayProblem(spec);
+  if (!delay.empty()) throw std::runtime_error(delay);
+  CudaRun run;
+  withKernelTypes(spec, [&](auto type, auto capacity, auto law) {
+    using T = decltype(type);
+    run = launch<decltype(law)::value, T, decltype(capacity)::value>(spec, block_size, out);
+  });
+  return run;
 }
 
 }  // namespace aurora_sweep

@@ -64,13 +64,15 @@ ChunkWork runChunks(const SweepSpec& spec, const ChunkStore& store, ChunkSource&
 
 Counts mergeChunks(const SweepSpec& spec, const ChunkStore& store,
                    const std::vector<ResultsWriter*>& writers, const ChunkConsumer& consume,
-                   std::vector<double>* writer_s) {
+                   std::vector<double>* writer_s, std::map<std::string, long>* chunks_by) {
   const long iterations = aurora_control::studyIterationCount(spec.duration(), spec.vehicle.Ts);
   Counts counts;
   std::vector<SimResult> chunk;
   std::vector<double> seconds(writers.size(), 0.0);
   for (long c = 0; c < store.plan().count(); ++c) {
-    store.read(c, chunk);
+    std::string by;
+    store.read(c, chunk, &by);
+    if (chunks_by) ++(*chunks_by)[by];
     addCounts(counts, chunk, iterations);
     for (size_t w = 0; w < writers.size(); ++w) {
       const Clock::time_point t0 = Clock::now();

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -61,9 +62,10 @@ ChunkWork runChunks(const SweepSpec& spec, const ChunkStore& store, ChunkSource&
 using ChunkConsumer = std::function<void(long first, const std::vector<SimResult>& results)>;
 
 // Reads every chunk in index order into `writers`, `consume` (optional) and
-// the counts; `writer_s` (optional) gets the seconds spent in each writer.
+// the counts; `writer_s` (optional) gets the seconds spent in each writer,
+// `chunks_by` (optional) the number of chunks each backend computed.
 Counts mergeChunks(const SweepSpec& spec, const ChunkStore& store,
                    const std::vector<ResultsWriter*>& writers, const ChunkConsumer& consume,
-                   std::vector<double>* writer_s = nullptr);
+                   std::vector<double>* writer_s = nullptr, std::map<std::string, long>* chunks_by = nullptr);
 
 }  // namespace aurora_sweep

@@ -18,12 +18,13 @@ namespace {
 
 // A chunk file: this header, then `count` SimResult records.
 struct ChunkHeader {
-  char magic[8];          // "AURCHNK1"
+  char magic[8];          // "AURCHNK2"
   uint32_t hash;          // definitionHash of the sweep
   uint32_t record_size;   // sizeof(SimResult)
   int64_t begin, count;   // combinations [begin, begin + count)
+  char computed_by[64];   // the backend (and device) that computed it, zero-padded
 };
-constexpr char kMagic[8] = {'A', 'U', 'R', 'C', 'H', 'N', 'K', '1'};
+constexpr char kMagic[8] = {'A', 'U', 'R', 'C', 'H', 'N', 'K', '2'};
 
 class Crc {
  public:
@@ -144,7 +145,7 @@ const std::vector<std::string>& sweepOutputFiles() {
 ChunkStore::ChunkStore(const std::string& out_dir, const SweepSpec& spec, const ChunkPlan& plan,
                        bool overwrite, const std::string& computed_by)
     : out_dir_(out_dir), progress_dir_(out_dir + "/progress"), name_(spec.name), computed_by_(computed_by),
-      plan_(plan), hash_(definitionHash(spec)) {
+      chunk_by_(computed_by), plan_(plan), hash_(definitionHash(spec)) {
   openOrCreate(overwrite);
 }
 
@@ -210,7 +211,9 @@ long ChunkStore::doneCombinations() const {
 
 void ChunkStore::write(long chunk, const std::vector<SimResult>& results) const {
   ChunkHeader h;
+  std::memset(&h, 0, sizeof h);  // every byte defined: chunk files are reproducible
   std::memcpy(h.magic, kMagic, sizeof kMagic);
+  std::strncpy(h.computed_by, chunk_by_.c_str(), sizeof h.computed_by - 1);
   h.hash = hash_;
   h.record_size = sizeof(SimResult);
   h.begin = plan_.begin(chunk);
@@ -231,7 +234,7 @@ void ChunkStore::write(long chunk, const std::vector<SimResult>& results) const 
   }
 }
 
-void ChunkStore::read(long chunk, std::vector<SimResult>& results) const {
+void ChunkStore::read(long chunk, std::vector<SimResult>& results, std::string* computed_by) const {
   const std::string path = chunkPath(chunk);
   FILE* f = std::fopen(path.c_str(), "rb");
   if (!f) throw std::runtime_error("cannot read '" + path + "': " + std::strerror(errno));
@@ -249,6 +252,7 @@ void ChunkStore::read(long chunk, std::vector<SimResult>& results) const {
     throw std::runtime_error("chunk file '" + path + "' is damaged or of another sweep: delete it and run "
                              "the same command again (it is recomputed)");
   }
+  if (computed_by) *computed_by = std::string(h.computed_by, strnlen(h.computed_by, sizeof h.computed_by));
 }
 
 void ChunkStore::removeProgress() const {

@@ -16,7 +16,13 @@ CudaDevice probeCudaDevice() {
 
 long cudaMaxDelay() { return 0; }
 
-void selectCudaDevice(int) {}
+std::string cudaDelayProblem(const SweepSpec&) { return probeCudaDevice().error; }
+
+DeviceChoice selectCudaDevice(int, int) { return DeviceChoice(); }
+
+std::string cudaLaunchProblem(const SweepSpec&, int) { return probeCudaDevice().error; }
+
+long cudaResidentThreads(const SweepSpec&, int) { return 0; }
 
 CudaRun runCuda(const SweepSpec&, int, std::vector<SimResult>&) {
   throw std::runtime_error(probeCudaDevice().error);

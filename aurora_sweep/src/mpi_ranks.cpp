@@ -40,11 +40,6 @@ class SharedChunks : public ChunkSource {
   MPI_Win win_;
 };
 
-const char* env(const char* name) {
-  const char* v = std::getenv(name);
-  return v && *v ? v : nullptr;
-}
-
 }  // namespace
 
 bool MpiRanks::compiledIn() { return true; }
@@ -55,16 +50,14 @@ MpiRanks::MpiRanks(int* argc, char*** argv) {
   MPI_Init_thread(argc, argv, MPI_THREAD_FUNNELED, &provided);
   MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
   MPI_Comm_size(MPI_COMM_WORLD, &size_);
+  MPI_Comm host;
+  MPI_Comm_split_type(MPI_COMM_WORLD, MPI_COMM_TYPE_SHARED, rank_, MPI_INFO_NULL, &host);
+  MPI_Comm_rank(host, &local_rank_);
+  MPI_Comm_size(host, &local_size_);
+  MPI_Comm_free(&host);
 }
 
 MpiRanks::~MpiRanks() { MPI_Finalize(); }
-
-int MpiRanks::localRank() const {
-  for (const char* name : {"OMPI_COMM_WORLD_LOCAL_RANK", "SLURM_LOCALID", "MPI_LOCALRANKID"}) {
-    if (const char* v = env(name)) return std::atoi(v);
-  }
-  return 0;
-}
 
 std::string MpiRanks::host() const {
   char name[MPI_MAX_PROCESSOR_NAME];
@@ -82,6 +75,13 @@ void MpiRanks::barrier() const { MPI_Barrier(MPI_COMM_WORLD); }
 int MpiRanks::broadcast(int value) const {
   MPI_Bcast(&value, 1, MPI_INT, 0, MPI_COMM_WORLD);
   return value;
+}
+
+std::string MpiRanks::broadcast(const std::string& value) const {
+  int length = broadcast(static_cast<int>(value.size()));
+  std::string text = rank_ == 0 ? value : std::string(static_cast<size_t>(length), '\0');
+  MPI_Bcast(&text[0], length, MPI_CHAR, 0, MPI_COMM_WORLD);
+  return text;
 }
 
 int MpiRanks::maxOverRanks(int value) const {

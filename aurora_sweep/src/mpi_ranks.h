@@ -38,7 +38,10 @@ class MpiRanks {
 
   int rank() const { return rank_; }
   int size() const { return size_; }
-  int localRank() const;  // rank on this host (one GPU each)
+  // Rank among the ranks on this host, and their number, from
+  // MPI_Comm_split_type(MPI_COMM_TYPE_SHARED): any launcher.
+  int localRank() const { return local_rank_; }
+  int localSize() const { return local_size_; }
   std::string host() const;
 
   // The shared chunk counter (collective: every rank calls it).
@@ -46,12 +49,13 @@ class MpiRanks {
   void barrier() const;
   // Rank 0's value to every rank; the largest value of any rank to every rank.
   int broadcast(int value) const;
+  std::string broadcast(const std::string& value) const;
   int maxOverRanks(int value) const;
   // Every rank's facts, at rank 0 (an array in rank order); others get null.
   nlohmann::json gather(const nlohmann::json& mine) const;
 
  private:
-  int rank_ = 0, size_ = 1;
+  int rank_ = 0, size_ = 1, local_rank_ = 0, local_size_ = 1;
 };
 
 }  // namespace aurora_sweep

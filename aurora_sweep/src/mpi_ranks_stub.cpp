@@ -14,11 +14,11 @@ MpiRanks::MpiRanks(int*, char***) {
 }
 
 MpiRanks::~MpiRanks() = default;
-int MpiRanks::localRank() const { return 0; }
 std::string MpiRanks::host() const { return ""; }
 std::unique_ptr<ChunkSource> MpiRanks::chunks(long) { return nullptr; }
 void MpiRanks::barrier() const {}
 int MpiRanks::broadcast(int value) const { return value; }
+std::string MpiRanks::broadcast(const std::string& value) const { return value; }
 int MpiRanks::maxOverRanks(int value) const { return value; }
 nlohmann::json MpiRanks::gather(const nlohmann::json&) const { return nullptr; }
 

@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <map>
 #include <mutex>
 #include <string>
 #include <thread>
@@ -28,6 +29,7 @@
 #include "chunk_runner.h"
 #include "mpi_ranks.h"
 #include "sweep_plan.h"
+#include "sweep_start.h"
 
 namespace {
 
@@ -49,7 +51,8 @@ const char* kUsage =
     "                       (cuda when a device works, else cpu). Default: auto\n"
     "  --precision P        double or float (default: the sweep file's, else double)\n"
     "  --threads N          cpu backend threads (default: all cores)\n"
-    "  --block-size N       cuda threads per block (default: chosen by occupancy)\n"
+    "  --block-size N       cuda threads per block, up to what the kernel's registers allow\n"
+    "                       (checked before the run; default: chosen by occupancy)\n"
     "  --config-dir DIR     where vehicle files are looked up (default: $AURORA_CONFIG_DIR, else\n"
     "                       the aurora_config package on the ROS package path)\n"
     "  --output FORMAT      csv (results.csv), hdf5 (results.h5, columns; h5py reads it), both,\n"
@@ -61,6 +64,8 @@ const char* kUsage =
     "                       written to DIR/progress/ at once; the same command on the same\n"
     "                       DIR after a crash computes only the missing chunks\n"
     "  --overwrite          replace another sweep's results in DIR (otherwise refused)\n"
+    "  --mixed-backends     MPI: accept ranks computing on different backends (e.g. auto on\n"
+    "                       hosts with and without a GPU); each chunk records its backend\n"
     "  --ignore-free-space  run even when the estimated bytes exceed the free space\n"
     "                       (the plan printed at the start says both)\n"
     "  --no-plots           skip the PNG plots\n"
@@ -71,16 +76,6 @@ const char* kUsage =
     "\n"
     "The cpu backend picks at run time the widest SIMD build this CPU runs;\n"
     "AURORA_SWEEP_SIMD=avx512|avx2|sse4_2|none forces one (none: no SIMD lanes).\n";
-
-struct Options {
-  std::string config, out, backend = "auto", precision, config_dir;  // empty: configDir()
-  std::string output = "auto", rows = "all";
-  int threads = 0;
-  int block_size = 0;
-  long chunk_size = 0;  // 0: chunkSizeFor()
-  bool plots = true, rviz = false, quiet = false, overwrite = false;
-  bool ignore_free_space = false;
-};
 
 // plot_sweep is installed beside this program (devel space: catkin's relay;
 // install space: the script), so it is found without a source path.
@@ -135,6 +130,12 @@ Options parse(int argc, char** argv) {
       o.threads = positive("--threads");
     } else if (a == "--block-size") {
       o.block_size = positive("--block-size");
+      if (o.block_size > 1024) {
+        usageError("--block-size " + std::to_string(o.block_size) + " is invalid: CUDA blocks hold at most 1024 "
+                   "threads (a kernel may allow fewer: checked against its registers before the run)");
+      }
+    } else if (a == "--mixed-backends") {
+      o.mixed_backends = true;
     } else if (a == "--config-dir") {
       o.config_dir = value("--config-dir");
     } else if (a == "--output") {
@@ -174,29 +175,6 @@ Options parse(int argc, char** argv) {
   if (o.out.empty()) usageError("--out DIR is required");
   if (o.threads == 0) o.threads = std::max(1u, std::thread::hardware_concurrency());
   return o;
-}
-
-// Creates `dir` (and its parents) and checks that it is writable; returns
-// the folders it created, deepest last (a later refusal removes them).
-std::vector<std::string> makeWritableDir(const std::string& dir) {
-  std::vector<std::string> created;
-  std::string partial;
-  for (size_t i = 0; i <= dir.size(); ++i) {
-    if (i == dir.size() || dir[i] == '/') {
-      if (!partial.empty() && mkdir(partial.c_str(), 0755) == 0) created.push_back(partial);
-    }
-    if (i < dir.size()) partial += dir[i];
-  }
-  const std::string probe = dir + "/.sweep_write_test";
-  FILE* f = std::fopen(probe.c_str(), "w");
-  if (!f) {
-    std::fprintf(stderr, "sweep: output folder '%s' is not writable (%s): choose another with --out\n",
-                 dir.c_str(), std::strerror(errno));
-    std::exit(2);
-  }
-  std::fclose(f);
-  std::remove(probe.c_str());
-  return created;
 }
 
 // Prints progress with an ETA to stderr once a second while `total` runs.
@@ -240,56 +218,6 @@ class ProgressMonitor {
   bool done_ = false;
   std::thread thread_;
 };
-
-// Picks the backend (auto: cuda when a device works, else cpu) and checks
-// that it can run, before anything is written. Returns an exit status, 0 = go.
-int chooseBackend(const Options& opt, const SweepSpec& spec, RunInfo& info) {
-  std::string backend = opt.backend;
-  if (backend == "cuda" || backend == "auto") {
-    CudaDevice dev = probeCudaDevice();
-    if (dev.usable && spec.max_delay > cudaMaxDelay() && backend == "auto") {
-      dev.usable = false;
-      dev.error = "the sweep's delays reach " + std::to_string(spec.max_delay) +
-                  " samples, above the cuda backend's " + std::to_string(cudaMaxDelay());
-    }
-    if (dev.usable) {
-      backend = "cuda";
-      info.device = dev.name;
-      if (opt.backend == "auto") info.note = "auto: CUDA device '" + dev.name + "' works";
-    } else if (backend == "cuda") {
-      std::fprintf(stderr, "sweep: --backend cuda: no usable CUDA device: %s\n", dev.error.c_str());
-      return 3;
-    } else {
-      backend = "cpu";
-      info.note = "auto: no usable CUDA device (" + dev.error + "), using the cpu backend";
-    }
-    if (opt.backend == "auto") std::fprintf(stderr, "sweep: %s\n", info.note.c_str());
-  }
-  info.backend = backend;
-  info.threads = backend == "scalar" ? 1 : opt.threads;
-  try {
-    if (backend == "scalar") info.device = "scalar loop";
-    if (backend == "cpu") {  // an AURORA_SWEEP_SIMD this CPU cannot run is refused here
-      info.device = cpuBatchArch(spec.precision);
-      info.lanes = cpuBatchLanes(spec.precision);
-    }
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "sweep: %s\n", e.what());
-    return 2;
-  }
-  if ((opt.output == "hdf5" || opt.output == "both") && !hdf5Available()) {
-    std::fprintf(stderr, "sweep: --output %s: this build has no HDF5 (install libhdf5-dev and rebuild)\n",
-                 opt.output.c_str());
-    return 2;
-  }
-  return 0;
-}
-
-// --output auto: CSV for spreadsheets up to a million rows, HDF5 beyond.
-std::string outputFormat(const Options& opt, long combinations) {
-  if (opt.output != "auto") return opt.output;
-  return combinations > 1000000 && hdf5Available() ? "hdf5" : "csv";
-}
 
 struct Outputs {
   std::vector<std::unique_ptr<ResultsWriter>> writers;
@@ -366,10 +294,12 @@ int finish(const Options& opt, const SweepSpec& spec, const ChunkStore& store, R
       monotony.add(first, results);
       if (opt.rviz) all.insert(all.end(), results.begin(), results.end());
     };
-    counts = mergeChunks(spec, store, writers, consume, &writer_s);
+    std::map<std::string, long> chunks_by;
+    counts = mergeChunks(spec, store, writers, consume, &writer_s, &chunks_by);
     merge_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (work.kernel_s > 0) info.kernel_time_s = work.kernel_s;
     nlohmann::json facts = runFacts(opt, store, work, out, writer_s, merge_s);
+    facts["chunks"]["computed_by"] = chunks_by;  // per backend (and device): chunks
     if (!ranks.is_null()) facts["mpi"] = {{"ranks", ranks.size()}, {"per_rank", ranks}};
     if (monotony.applies()) {
       // Gain pairs whose feasibility comes back at a longer delay after failing.
@@ -396,59 +326,26 @@ int finish(const Options& opt, const SweepSpec& spec, const ChunkStore& store, R
   return 0;
 }
 
-// What computed the chunks: a resume must use the same (the backends agree
-// to rounding only, so mixed chunks would equal no uninterrupted run).
-std::string computedBy(const RunInfo& info) {
-  return info.backend == "cpu" ? "cpu (" + info.device + ")" : info.backend;
-}
-
-// Says up front what the sweep costs (time at a measured rate, bytes) and
-// refuses one that cannot fit on the disk. Returns an exit status, 0 = go.
-int checkPlan(const Options& opt, const SweepSpec& spec, const RunInfo& info, long chunk_size, bool lead) {
-  SweepPlan plan;
-  try {
-    plan = planSweep(spec, BackendChoice{info.backend, opt.threads, opt.block_size}, opt.out,
-                     outputFormat(opt, spec.size()), chunk_size);
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "sweep: the %s backend failed: %s\n", info.backend.c_str(), e.what());
-    return 4;
-  }
-  const long chunks = (spec.size() + chunk_size - 1) / chunk_size;
-  if (lead && !opt.quiet) std::fprintf(stderr, "sweep: plan: %s\n", planText(plan, chunks).c_str());
-  if (plan.fits() || opt.ignore_free_space) return 0;
-  if (lead) {
-    std::fprintf(stderr, "sweep: refused: %s cannot hold this sweep (%s): choose another --out, fewer "
-                 "combinations, --rows feasible or --output hdf5, or give --ignore-free-space\n",
-                 plan.volume.c_str(), planText(plan, chunks).c_str());
-  }
-  return 2;
-}
-
-// Default chunk size: about 64 chunks (ranks and threads balance, a crash
-// loses little), but not so small that file writes count, nor so large that
-// a GPU launch or the memory of one chunk grows without bound.
-long chunkSizeFor(long combinations) {
-  return std::min(262144L, std::max(4096L, combinations / 64));
-}
-
 // The output folder's chunk store: rank 0 prepares the folder (refusing
 // another sweep's, cleaning old outputs) before the other ranks open it.
-std::unique_ptr<ChunkStore> openStore(const Options& opt, const SweepSpec& spec, const MpiRanks* mpi,
-                                      const std::string& computed_by) {
+// Each rank's chunks record what computed them.
+std::unique_ptr<ChunkStore> openStore(const Options& opt, const Start& start, const MpiRanks* mpi) {
   std::unique_ptr<ChunkStore> store;
   int status = 0;
-  const ChunkPlan plan{spec.size(), opt.chunk_size > 0 ? opt.chunk_size : chunkSizeFor(spec.size())};
+  const ChunkPlan plan{start.spec.size(), start.chunk_size};
   if (!mpi || mpi->rank() == 0) {
     try {
-      store.reset(new ChunkStore(opt.out, spec, plan, opt.overwrite, computed_by));
+      store.reset(new ChunkStore(opt.out, start.spec, plan, opt.overwrite, start.run_computed_by));
     } catch (const std::exception& e) {
       std::fprintf(stderr, "sweep: %s\n", e.what());
       status = 2;
     }
   }
   if (mpi && mpi->broadcast(status) == 0 && mpi->rank() != 0) {
-    store.reset(new ChunkStore(opt.out, spec, plan, false, computed_by));  // rank 0's folder: resumes it
+    // rank 0's folder, of the same definition and backends: resumes it
+    store.reset(new ChunkStore(opt.out, start.spec, plan, false, start.run_computed_by));
   }
+  if (store) store->setChunkComputedBy(start.computed_by);
   return store;
 }
 
@@ -475,36 +372,20 @@ ChunkWork overRanks(const nlohmann::json& ranks, ChunkWork work) {
 }
 
 int runSweep(int argc, char** argv, const Options& opt, MpiRanks* mpi) {
-  SweepSpec spec;
-  try {
-    spec = loadSweepFile(opt.config, opt.config_dir.empty() ? aurora_sim::configDir() : opt.config_dir);
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "sweep: %s\n", e.what());
-    return 2;
-  }
-  if (!opt.precision.empty()) {
-    spec.precision = opt.precision == "float" ? Precision::kFloat : Precision::kDouble;
-  }
-  // Everything that can refuse the run is checked before the output folder
-  // is created and before any simulation: the device, the ROS master.
+  const bool lead = !mpi || mpi->rank() == 0;
+  // Everything that can refuse the run is checked before anything is
+  // written, and under MPI all ranks agree (sweep_start.h).
   if (opt.rviz && !rvizMasterReachable(argc, argv)) return 7;
-  if (mpi) selectCudaDevice(mpi->localRank());  // one GPU per rank on a node
-  RunInfo info;
-  if (const int rc = chooseBackend(opt, spec, info)) return rc;
-  const long chunk_size = opt.chunk_size > 0 ? opt.chunk_size : chunkSizeFor(spec.size());
-  const std::vector<std::string> created = makeWritableDir(opt.out);
-  const int planned = checkPlan(opt, spec, info, chunk_size, !mpi || mpi->rank() == 0);
-  if (const int rc = mpi ? mpi->maxOverRanks(planned) : planned) {
-    if (!mpi || mpi->rank() == 0) {
-      for (auto d = created.rbegin(); d != created.rend(); ++d) rmdir(d->c_str());  // nothing left behind
-    }
-    return rc;
-  }
-  const std::unique_ptr<ChunkStore> store = openStore(opt, spec, mpi, computedBy(info));
+  Start start;
+  if (const int rc = agreeToStart(mpi, loadAndChooseBackend(opt, mpi, start))) return rc;
+  if (const int rc = agreeOnBackend(opt, mpi, start).status) return rc;
+  if (const int rc = agreeToStart(mpi, prepareOutput(opt, lead, start))) return rc;
+  const SweepSpec& spec = start.spec;
+  RunInfo info = start.info;
+  const std::unique_ptr<ChunkStore> store = openStore(opt, start, mpi);
   if (!store) return 2;
   const ChunkPlan& plan = store->plan();
   Progress progress{store->doneCombinations()};
-  const bool lead = !mpi || mpi->rank() == 0;
   if (lead) {
     std::fprintf(stderr, "sweep: %s: %s in %s, backend %s, %s precision%s%s%s\n", spec.name.c_str(),
                  counted(spec.size(), "combination", "combinations").c_str(),

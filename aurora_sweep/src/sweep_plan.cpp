@@ -67,7 +67,8 @@ std::string bytesText(double b) {
 
 std::string durationText(double s) {
   char buf[48];
-  if (s < 120) std::snprintf(buf, sizeof buf, "%.0f s", std::max(s, 1.0));
+  if (s < 1) std::snprintf(buf, sizeof buf, "under 1 s");
+  else if (s < 120) std::snprintf(buf, sizeof buf, "%.0f s", s);
   else if (s < 7200) std::snprintf(buf, sizeof buf, "%.0f min", s / 60);
   else if (s < 172800) std::snprintf(buf, sizeof buf, "%.1f h", s / 3600);
   else if (s < 3.15e9) std::snprintf(buf, sizeof buf, "%.0f days", s / 86400);
@@ -116,7 +117,7 @@ std::string planText(const SweepPlan& p, long chunks) {
   char rate[160];
   std::snprintf(rate, sizeof rate, "%.0f sims/s", p.rate);
   return counted(p.combinations, "combination", "combinations") + " in " + counted(chunks, "chunk", "chunks") +
-         ": about " + durationText(p.seconds) + " at " + rate + " (measured on the first " +
+         ": " + (p.seconds < 1 ? "" : "about ") + durationText(p.seconds) + " at " + rate + " (measured on the first " +
          grouped(p.calibrated) + "), writes about " + bytesText(double(p.neededBytes())) + " (chunk files " +
          bytesText(double(p.chunk_bytes)) + ", results " + bytesText(double(p.results_bytes)) + "); " +
          bytesText(double(p.free_bytes)) + " free in " + p.volume;

@@ -32,7 +32,7 @@ struct SweepPlan {
 SweepPlan planSweep(const SweepSpec& spec, const BackendChoice& choice, const std::string& out,
                     const std::string& format, long chunk_size);
 
-// "1,000,000 combinations in 16 chunks: about 2 min at 8,300 sims/s (measured on
+// "1,000,000 combinations in 16 chunks: about 2 min at 8300 sims/s (measured on
 // the first 4,096), writes about 106 MB (chunk files 48 MB, results 58 MB);
 // 53 GB free on /work"
 std::string planText(const SweepPlan& plan, long chunks);

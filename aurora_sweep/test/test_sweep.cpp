@@ -371,6 +371,22 @@ TEST(SweepProgram, RefusalsLeaveNothingBehind) {
   EXPECT_NE(stat((out2 + "/results.csv").c_str(), &st), 0);
 }
 
+// The cuda backend's limits are checked before anything is written, with
+// or without a device: delays beyond its history, blocks beyond CUDA's.
+TEST(SweepProgram, CudaLimitsAreCheckedBeforeTheRun) {
+  const std::string long_delay = writeTemp("cuda_long_delay.yaml", "sweep:\n  parameters:\n    kp: 0.5\n"
+                                           "    kd: 0.85\n    delay: {values: [0, 600]}\n");
+  const std::string out = ::testing::TempDir() + "/sweep_cuda_limits_out";
+  std::string log;
+  EXPECT_EQ(runSweep("--config " + long_delay + " --out " + out + " --backend cuda", log), 2) << log;
+  EXPECT_TRUE(log.find("the cuda backend holds delays up to 511 samples") != std::string::npos ||
+              log.find("this build has no CUDA backend") != std::string::npos) << log;
+  struct stat st;
+  EXPECT_NE(stat(out.c_str(), &st), 0) << "output folder created for a refused sweep: " << log;
+  EXPECT_EQ(runSweep("--config " + kData + "/small_grid.yaml --out " + out + " --backend cuda --block-size 2048", log), 2);
+  EXPECT_NE(log.find("--block-size 2048 is invalid: CUDA blocks hold at most 1024 threads"), std::string::npos) << log;
+}
+
 // A sweep says up front what it costs (combinations, time at a measured
 // rate, bytes) and refuses one the disk cannot hold, before anything is
 // written (a 10^13 grid used to run silently until killed).
@@ -392,7 +408,7 @@ TEST(SweepProgram, SaysTheCostUpFrontAndRefusesWhatCannotFit) {
   const std::string small = ::testing::TempDir() + "/sweep_plan_out";
   ASSERT_EQ(runSweep("--config " + kData + "/small_grid.yaml --out " + small + " --backend scalar --no-plots "
                      "--chunk-size 100 --overwrite", log), 0) << log;
-  EXPECT_NE(log.find("sweep: plan: 80 combinations in 1 chunk: about "), std::string::npos) << log;
+  EXPECT_NE(log.find("sweep: plan: 80 combinations in 1 chunk: "), std::string::npos) << log;
   EXPECT_NE(log.find("sims/s (measured on the first "), std::string::npos) << log;
   EXPECT_EQ(log.find("1 chunks"), std::string::npos) << log;
 }

@@ -3,7 +3,10 @@
 import os
 import subprocess
 import sys
+import time
 import unittest
+
+import rosgraph
 
 import rospy
 import rostest
@@ -48,6 +51,15 @@ class LaunchOutcomeTest(unittest.TestCase):
         master = subprocess.Popen(["roscore", "-p", str(port)], stdout=subprocess.DEVNULL,
                                   stderr=subprocess.DEVNULL, env=env)
         try:
+            # The master is up (it has a run_id) before the first launch, as
+            # a roscore a user keeps open would be.
+            deadline = time.time() + 60
+            while time.time() < deadline:
+                try:
+                    rosgraph.Master("/check", master_uri=env["ROS_MASTER_URI"]).getParam("/run_id")
+                    break
+                except Exception:
+                    time.sleep(0.2)
             rc, out = aurora_launch("stop_after:=2", "delay_seconds:=0.2", port=port)
             self.assertEqual(rc, 0, out)
             rc, out = aurora_launch("stop_after:=2", "controller:=underactuated", "task:=circle", "delay:=3",

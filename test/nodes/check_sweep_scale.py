@@ -63,6 +63,40 @@ class SweepScaleTest(unittest.TestCase):
         shutil.rmtree(cls.tmp, ignore_errors=True)
 
     @unittest.skipIf(MPIRUN is None, "mpirun not installed (Debian: openmpi-bin)")
+    def test_0_a_rank_that_cannot_start_stops_every_rank(self):
+        # Rank 1's start check fails (as a failed device check would): the
+        # others used to wait for it forever in a collective call.
+        out = os.path.join(self.tmp, "mpi_fail")
+        env = dict(os.environ, AURORA_SWEEP_TEST_FAIL_RANK="1")
+        p = subprocess.run([MPIRUN, "--allow-run-as-root", "--oversubscribe", "-x", "AURORA_SWEEP_TEST_FAIL_RANK",
+                            "-np", "3"] + sweep_cmd(self.grid, out, "--backend", "cpu", "--threads", "1"),
+                           stdout=subprocess.PIPE, stderr=subprocess.STDOUT, timeout=120, universal_newlines=True,
+                           env=env)
+        self.assertNotEqual(p.returncode, 0, p.stdout)
+        self.assertIn("sweep: rank 1 (", p.stdout)
+        self.assertIn("the device check fails (forced by AURORA_SWEEP_TEST_FAIL_RANK", p.stdout)
+        self.assertIn("1 of 3 ranks cannot start: every rank stops, nothing was written", p.stdout)
+        self.assertFalse(os.path.exists(os.path.join(out, "progress")), p.stdout)
+
+    @unittest.skipIf(MPIRUN is None, "mpirun not installed (Debian: openmpi-bin)")
+    def test_0b_ranks_on_different_backends_are_refused_unless_asked(self):
+        # Ranks that compute on different backends (auto on hosts with and
+        # without a GPU) give chunks that agree to rounding only.
+        out = os.path.join(self.tmp, "mpi_mixed")
+        cmd = [MPIRUN, "--allow-run-as-root", "--oversubscribe", "-np", "2", "bash", "-c",
+               'exec "$0" "$@" --backend $([ "$OMPI_COMM_WORLD_RANK" = 0 ] && echo scalar || echo cpu)',
+               "rosrun"] + sweep_cmd(self.grid, out, "--threads", "1", "--chunk-size", "4096")[1:]
+        rc, log = run(cmd)
+        self.assertNotEqual(rc, 0, log)
+        self.assertIn("the ranks would compute on different backends (cpu", log)
+        self.assertIn("scalar: rank 0", log)
+        rc, log = run(cmd + ["--mixed-backends"])
+        self.assertEqual(rc, 0, log)
+        by = summary(out)["chunks"]["computed_by"]
+        self.assertEqual(sum(by.values()), 8, by)
+        self.assertTrue(all(k == "scalar" or k.startswith("cpu (") for k in by), by)
+
+    @unittest.skipIf(MPIRUN is None, "mpirun not installed (Debian: openmpi-bin)")
     def test_1_mpi_ranks_give_the_single_process_result(self):
         out = os.path.join(self.tmp, "mpi")
         # as root in CI: OpenMPI refuses root without --allow-run-as-root

@@ -46,6 +46,10 @@ class ChunkStore {
   ChunkStore(const std::string& out_dir, const SweepSpec& spec, const ChunkPlan& plan, bool overwrite,
              const std::string& computed_by);
 
+  // What computes this process's chunks, recorded in each chunk file
+  // (default: `computed_by`; an MPI rank of a --mixed-backends run: its own).
+  void setChunkComputedBy(const std::string& who) { chunk_by_ = who; }
+
   bool resumed() const { return resumed_; }
   const ChunkPlan& plan() const { return plan_; }
   uint32_t hash() const { return hash_; }
@@ -55,7 +59,8 @@ class ChunkStore {
   // Atomic: a temporary file renamed into place. Throws std::runtime_error.
   void write(long chunk, const std::vector<SimResult>& results) const;
   // Throws std::runtime_error when the chunk file is missing or damaged.
-  void read(long chunk, std::vector<SimResult>& results) const;
+  // `computed_by` (optional) gets what computed the chunk.
+  void read(long chunk, std::vector<SimResult>& results, std::string* computed_by = nullptr) const;
   // After the final outputs are written: the progress folder goes.
   void removeProgress() const;
 
@@ -63,7 +68,7 @@ class ChunkStore {
   std::string chunkPath(long chunk) const;
   void openOrCreate(bool overwrite);
 
-  std::string out_dir_, progress_dir_, name_, computed_by_;
+  std::string out_dir_, progress_dir_, name_, computed_by_, chunk_by_;
   ChunkPlan plan_;
   uint32_t hash_;
   bool resumed_ = false;

@@ -41,7 +41,8 @@ struct GridView {
   const double* values[kParamCount];
   double fixed[kParamCount];       // value of each parameter not varied
   const double* points;
-  long n_points;
+  long n_points;                   // rows of the whole design (size())
+  long points_first;               // the design row points[0] holds: a device copy holds one chunk's rows
   int point_cols;
   int point_param[kParamCount];
 
@@ -56,7 +57,8 @@ struct GridView {
     Combination c;
     for (int i = 0; i < kParamCount; ++i) c.v[i] = fixed[i];
     if (n_points > 0) {
-      for (int j = 0; j < point_cols; ++j) c.v[point_param[j]] = points[index * point_cols + j];
+      const long row = index - points_first;
+      for (int j = 0; j < point_cols; ++j) c.v[point_param[j]] = points[row * point_cols + j];
     } else {
       long rest = index;
       for (int a = 0; a < n_axes; ++a) {

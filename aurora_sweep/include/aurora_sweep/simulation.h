@@ -54,16 +54,21 @@ AURORA_HD inline aurora_control::StudyRun<T> studyRun(const SimSetup<T>& s, cons
   return run;
 }
 
-// Compact result (what the kernel writes back; 48 bytes).
+// Compact result (what the kernel writes back, and the chunk files hold:
+// 48 bytes). The padding is a named, zeroed field, so that every byte of a
+// chunk file is defined and a file is reproducible bit for bit.
 struct SimResult {
   float final_pos[3];   // [m]
   int steps;            // model steps run
   double iae, itae, iasc;
   unsigned char ok;     // bit i: check i + 1 held; bit 4: feasible
+  unsigned char zero[7];  // always 0
 };
+static_assert(sizeof(SimResult) == 48, "the chunk files' record: 48 bytes, no implicit padding");
 
 AURORA_HD inline SimResult compactResult(const aurora_control::RunnerResult& r) {
   SimResult s;
+  for (int i = 0; i < 7; ++i) s.zero[i] = 0;
   for (int i = 0; i < 3; ++i) s.final_pos[i] = static_cast<float>(r.final_pos[i]);
   s.steps = static_cast<int>(r.steps);
   s.iae = r.iae;

@@ -61,6 +61,7 @@ struct SweepSpec {
     }
     for (int i = 0; i < kParamCount; ++i) g.fixed[i] = fixed[i];
     g.points = points.empty() ? nullptr : points.data();
+    g.points_first = 0;
     g.point_cols = static_cast<int>(point_params.size());
     for (int j = 0; j < g.point_cols; ++j) g.point_param[j] = point_params[j];
     g.n_points = g.point_cols > 0 ? static_cast<long>(points.size()) / g.point_cols : 0;

@@ -1,0 +1,24 @@
+// The CUDA kernel's per-thread entry, host and device: thread `thread` of
+// block `block` (blocks of `block_dim` threads) runs combination first + i,
+// i = block * block_dim + thread, into out[i], and does nothing past n. The
+// kernel passes blockIdx.x, blockDim.x and threadIdx.x; a host test calls
+// it for every (block, thread) of a launch, so the indexing (64-bit, any
+// offset, a last partial block) is tested without a GPU.
+#pragma once
+
+#include "aurora_sweep/simulation.h"
+
+namespace aurora_sweep {
+
+template <aurora_control::LawType Law, typename T, int Capacity>
+AURORA_HD inline void sweepThread(const SimSetup<T>& setup, const GridView& grid, long first, long n,
+                                  SimResult* out, unsigned block, unsigned block_dim, unsigned thread) {
+  const long i = static_cast<long>(block) * static_cast<long>(block_dim) + static_cast<long>(thread);
+  if (i >= n) return;
+  out[i] = simulateCombination<Law, T, Capacity>(setup, grid, first + i);
+}
+
+// Blocks of `block_size` threads that cover n combinations.
+inline long blocksFor(long n, int block_size) { return (n + block_size - 1) / block_size; }
+
+}  // namespace aurora_sweep
