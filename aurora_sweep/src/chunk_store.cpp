@@ -161,14 +161,16 @@ void ChunkStore::openOrCreate(bool overwrite) {
       resumed_ = true;
       return;
     }
-    if (theirs.line == mine && !overwrite) {
+    if (theirs.line == mine && !overwrite && !theirs.computed_by.empty()) {
       throw std::runtime_error("'" + out_dir_ + "' holds this sweep in progress, computed so far by the " +
                                theirs.computed_by + " backend: resuming with " + computed_by_ +
                                " would mix numbers that differ in the last bits; resume with --backend " +
                                theirs.computed_by.substr(0, theirs.computed_by.find(' ')) +
                                " (and the same SIMD build), or give --overwrite to start again");
     }
-    other = "'" + theirs.name + "', in progress: hash, combinations, chunk size " + theirs.line;
+    other = theirs.computed_by.empty()
+                ? "progress of an earlier version of this program, whose chunk files it cannot read: " + theirs.line
+                : "'" + theirs.name + "', in progress: hash, combinations, chunk size " + theirs.line;
   } else {
     const std::string summary = out_dir_ + "/summary.json";
     const std::string finished = summaryField(summary, "definition_hash");
