@@ -3,10 +3,13 @@
 // combinations fly safely.
 //   rosrun aurora_sweep sweep --config FILE --out DIR [--backend scalar|cpu|cuda|auto]
 //                             [--precision double|float] [--threads N] [--no-plots] [--rviz]
+#include <spawn.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
 #include <memory>
 #include <condition_variable>
@@ -82,9 +85,24 @@ const char* kUsage =
 std::string besideThisProgram(const std::string& name) {
   char self[4096];
   const ssize_t n = readlink("/proc/self/exe", self, sizeof self - 1);
-  if (n <= 0) return name;  // let the shell look it up on PATH
+  if (n <= 0) return name;  // looked up on PATH
   std::string dir(self, static_cast<size_t>(n));
   return dir.substr(0, dir.rfind('/') + 1) + name;
+}
+
+// Runs `program` with `args` and waits: no shell, so a folder name holding
+// quotes or $(...) is passed as it is. Returns its exit status (-1: not run).
+int runProgram(const std::string& program, const std::vector<std::string>& args) {
+  std::vector<char*> argv{const_cast<char*>(program.c_str())};
+  for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
+  pid_t pid = 0;
+  if (posix_spawnp(&pid, program.c_str(), nullptr, nullptr, argv.data(), environ) != 0) return -1;
+  int status = 0;
+  while (waitpid(pid, &status, 0) < 0) {
+    if (errno != EINTR) return -1;
+  }
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
 [[noreturn]] void usageError(const std::string& msg) {
@@ -314,8 +332,7 @@ int finish(const Options& opt, const SweepSpec& spec, const ChunkStore& store, R
   store.removeProgress();
   printCounts(counts, info, spec);
   if (opt.plots) {
-    const std::string cmd = "\"" + besideThisProgram("plot_sweep") + "\" \"" + opt.out + "\"";
-    const int rc = std::system(cmd.c_str());
+    const int rc = runProgram(besideThisProgram("plot_sweep"), {opt.out});
     for (const std::string& f : out.temporary) std::remove((opt.out + "/" + f).c_str());
     if (rc != 0) {
       std::fprintf(stderr, "sweep: plotting failed (the results and summary.json are written)\n");

@@ -371,6 +371,19 @@ TEST(SweepProgram, RefusalsLeaveNothingBehind) {
   EXPECT_NE(stat((out2 + "/results.csv").c_str(), &st), 0);
 }
 
+// The plots start without a shell: an output folder whose name holds
+// quotes and $(...) is taken as it is (the shell used to run the $(...)).
+TEST(SweepProgram, AnOutputFolderNameIsNotShellCode) {
+  const std::string marker = ::testing::TempDir() + "/aurora_injected";
+  std::remove(marker.c_str());
+  const std::string out = ::testing::TempDir() + "/sweep \"odd\" $(touch " + marker + ")";
+  std::string log;
+  ASSERT_EQ(runSweep("--config " + kData + "/small_grid.yaml --out '" + out + "' --backend scalar --overwrite", log), 0)
+      << log;
+  EXPECT_TRUE(std::ifstream(out + "/feasible_volume.png").good()) << log;
+  EXPECT_FALSE(std::ifstream(marker).good()) << "the folder name ran as a command";
+}
+
 // The cuda backend's limits are checked before anything is written, with
 // or without a device: delays beyond its history, blocks beyond CUDA's.
 TEST(SweepProgram, CudaLimitsAreCheckedBeforeTheRun) {
