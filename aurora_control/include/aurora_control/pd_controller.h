@@ -1,5 +1,5 @@
 // PD law with saturation used in the delay study (docs/controllers.md,
-// "Controller used in the delay study", eq. 3.1 of the thesis):
+// "PD law with saturation", eq. 3.1 of the thesis):
 //   a = xdd_d + Kd tanh(xd_dot - xc_dot) + Kp tanh(xd - xc),  U = [-a_y, -a_x, a_z, 0].
 // The law does not clamp U; callers that feed a real drone clamp to [-1, 1].
 #pragma once

@@ -52,7 +52,7 @@ struct Disturbance {
   }
 };
 
-// Rotational inertia matrix Mr(eta) (docs/model.md, "Mr and Cr").
+// Rotational inertia matrix Mr(eta) (docs/model.md, "Inertia and Coriolis matrices").
 template <typename T>
 AURORA_HD inline void inertiaMatrix(const ArdroneParams<T>& p, const T& sphi, const T& cphi,
                                     const T& sth, const T& cth, T Mr[3][3]) {
@@ -69,7 +69,7 @@ AURORA_HD inline void inertiaMatrix(const ArdroneParams<T>& p, const T& sphi, co
   Mr[2][2] = p.Ixx * sth2 + p.Iyy * sphi2 * cth2 + p.Izz * cphi2 * cth2;
 }
 
-// Coriolis matrix Cr(eta, eta_dot) (docs/model.md, "Mr and Cr"),
+// Coriolis matrix Cr(eta, eta_dot) (docs/model.md, "Inertia and Coriolis matrices"),
 // including the reference's Cr12 quirk (s_phi c_theta, not s_phi c_phi).
 template <typename T>
 AURORA_HD inline void coriolisMatrix(const ArdroneParams<T>& p, const T& sphi, const T& cphi,

@@ -1,7 +1,7 @@
 // Mapping between the driver convention of cmd_vel (ardrone_autonomy /
 // bebop_autonomy: linear.x forward tilt, linear.y left tilt, linear.z climb
 // rate, angular.z counter-clockwise yaw rate, fractions in [-1, 1]) and the
-// model command U = [u_phi u_theta u_zdot u_psidot] (architecture.md).
+// model command U = [u_phi u_theta u_zdot u_psidot] (docs/model.md, "State, command, frames").
 // Negation is exact, so the mapping never changes a value's bits.
 #pragma once
 

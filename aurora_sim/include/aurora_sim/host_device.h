@@ -1,6 +1,6 @@
 // Marks functions callable from both host and CUDA device code.
 // Empty outside nvcc, so the same header serves the ROS nodes, the CPU sweep
-// and the CUDA kernel (architecture.md, "The one idea").
+// and the CUDA kernel (docs/architecture.md, "The one idea").
 #pragma once
 
 #if defined(__CUDACC__)

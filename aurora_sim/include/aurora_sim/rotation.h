@@ -1,5 +1,5 @@
 // The body-to-world rotation R = Rz(psi) Ry(theta) Rx(phi) (Tait-Bryan; docs/model.md,
-// "State, commands, frames"), written once for the model, the controllers
+// "State, command, frames"), written once for the model, the controllers
 // and the batch engines; from the sines and cosines the caller already has.
 #pragma once
 

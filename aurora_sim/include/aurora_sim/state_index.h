@@ -1,6 +1,6 @@
 // Named indices of the 12-state X = [x y z phi theta psi xdot ydot zdot
 // phidot thetadot psidot] and of the 4-command U = [u_phi u_theta u_zdot
-// u_psidot] (docs/model.md, "State, commands, frames"; 0-based here).
+// u_psidot] (docs/model.md, "State, command, frames"; 0-based here).
 #pragma once
 
 namespace aurora_sim {
