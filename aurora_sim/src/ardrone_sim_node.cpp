@@ -10,6 +10,7 @@
 
 #include "aurora_sim/command_mapping.h"
 #include "aurora_sim/ros_conversions.h"
+#include "aurora_sim/rotation.h"
 #include "aurora_sim/ros_params.h"
 
 namespace aurora_sim {
@@ -305,10 +306,8 @@ void ArdroneSimNode::publishState(const ros::Time& stamp) {
     const double sphi = std::sin(X[kRoll]), cphi = std::cos(X[kRoll]);
     const double sth = std::sin(X[kPitch]), cth = std::cos(X[kPitch]);
     const double spsi = std::sin(X[kYaw]), cpsi = std::cos(X[kYaw]);
-    const double R[3][3] = {
-        {cpsi * cth, cpsi * sth * sphi - spsi * cphi, cpsi * sth * cphi + spsi * sphi},
-        {spsi * cth, spsi * sth * sphi + cpsi * cphi, spsi * sth * cphi - cpsi * sphi},
-        {-sth, cth * sphi, cth * cphi}};
+    double R[3][3];
+    rotationMatrix(sphi, cphi, sth, cth, spsi, cpsi, R);  // the model's own (rotation.h)
     nav_msgs::Odometry odom;
     odom.header = tf.header;
     odom.child_frame_id = child_frame_id_;

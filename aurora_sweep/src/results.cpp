@@ -36,7 +36,7 @@ class CsvWriter : public ResultsWriter {
   void append(long first, const std::vector<SimResult>& results) override {
     for (size_t i = 0; i < results.size(); ++i) {
       const SimResult& r = results[i];
-      if (feasible_only_ && !((r.ok >> 4) & 1)) continue;
+      if (feasible_only_ && !feasible(r)) continue;
       const long index = first + static_cast<long>(i);
       const Combination c = grid_.decode(index);
       std::fprintf(f_, "%ld", index);
@@ -45,7 +45,7 @@ class CsvWriter : public ResultsWriter {
         else std::fprintf(f_, ",%.17g", c.v[id]);
       }
       std::fprintf(f_, ",%d,%d,%d,%d,%d,%.17g,%.17g,%.17g,%d,%.9g,%.9g,%.9g\n", r.ok & 1, (r.ok >> 1) & 1, (r.ok >> 2) & 1, (r.ok >> 3) & 1,
-                   (r.ok >> 4) & 1, r.iae, r.itae, r.iasc, r.steps, r.final_pos[0], r.final_pos[1],
+                   feasible(r), r.iae, r.itae, r.iasc, r.steps, r.final_pos[0], r.final_pos[1],
                    r.final_pos[2]);
       ++rows_;
     }
@@ -91,7 +91,7 @@ void DelayMonotony::add(long first, const std::vector<SimResult>& results) {
   for (size_t i = 0; i < results.size(); ++i) {
     const Combination c = grid_.decode(first + static_cast<long>(i));
     const size_t pair = at(kps_, c.v[kParamKp]) * kds_.size() + at(kds_, c.v[kParamKd]);
-    feasible_[pair * delays_.size() + at(delays_, c.v[kParamDelay])] = (results[i].ok >> 4) & 1;
+    feasible_[pair * delays_.size() + at(delays_, c.v[kParamDelay])] = feasible(results[i]);
   }
 }
 
@@ -119,7 +119,7 @@ void addCounts(Counts& c, const std::vector<SimResult>& results, long iterations
       c.failed[i] += !held;
       c.not_reached[i] += held && !complete;
     }
-    c.feasible += (r.ok >> 4) & 1;
+    c.feasible += feasible(r);
     c.steps += r.steps;
   }
 }

@@ -117,7 +117,7 @@ class Hdf5Writer : public ResultsWriter {
     for (Column& c : columns_) c.buffer.resize((buffered_ + results.size()) * c.size);
     for (size_t i = 0; i < results.size(); ++i) {
       const SimResult& r = results[i];
-      if (feasible_only_ && !((r.ok >> 4) & 1)) continue;
+      if (feasible_only_ && !feasible(r)) continue;
       const long index = first + static_cast<long>(i);
       const Combination c = grid_.decode(index);
       const size_t row = buffered_++;

@@ -57,7 +57,7 @@ int publishFeasibleMarkers(int, char**, const SweepSpec& spec, const std::vector
   points.color.r = points.color.g = points.color.b = 0.1f;
   points.color.a = 1.0f;
   for (size_t i = 0; i < results.size(); ++i) {
-    if (!((results[i].ok >> 4) & 1)) continue;
+    if (!feasible(results[i])) continue;
     const Combination c = grid.decode(static_cast<long>(i));
     geometry_msgs::Point p;
     p.x = c.v[xy[0]];

@@ -53,7 +53,7 @@ void expectSameResults(const std::vector<SimResult>& ref, const std::vector<SimR
   for (size_t i = 0; i < ref.size(); ++i) {
     ASSERT_EQ(ref[i].ok, got[i].ok) << what << ", combination " << i;
     ASSERT_EQ(ref[i].steps, got[i].steps) << what << ", combination " << i;
-    feasible += (ref[i].ok >> 4) & 1;
+    feasible += aurora_sweep::feasible(ref[i]);
     if (!(ref[i].ok & 1)) continue;  // diverged: metrics meaningless
     ++compared;
     EXPECT_PRED3(relClose, ref[i].iae, got[i].iae, 1e-9) << what << " " << i;
@@ -75,7 +75,7 @@ void expectBackendsAgree(const SweepSpec& spec) {
 
 double flagAgreement(const std::vector<SimResult>& a, const std::vector<SimResult>& b) {
   long agree = 0;
-  for (size_t i = 0; i < a.size(); ++i) agree += ((a[i].ok >> 4) & 1) == ((b[i].ok >> 4) & 1);
+  for (size_t i = 0; i < a.size(); ++i) agree += feasible(a[i]) == feasible(b[i]);
   return double(agree) / double(a.size());
 }
 

@@ -84,7 +84,7 @@ TEST(CudaBackend, FloatFeasibleFlagsAgreeWithDouble) {
   runCpuBatch(thesisGrid(Precision::kDouble), 4, cpu_double, progress);
   long agree = 0;
   for (size_t i = 0; i < gpu_float.size(); ++i) {
-    agree += ((gpu_float[i].ok >> 4) & 1) == ((cpu_double[i].ok >> 4) & 1);
+    agree += feasible(gpu_float[i]) == feasible(cpu_double[i]);
   }
   const double share = double(agree) / gpu_float.size();
   std::fprintf(stderr, "cuda float vs cpu double: feasible flags agree on %.4f %%\n", 100 * share);
@@ -104,7 +104,7 @@ void expectCudaMatchesCpu(const SweepSpec& spec, const char* what) {
   long flag_diff = 0, metric_diff = 0, feasible = 0;
   for (size_t i = 0; i < gpu.size(); ++i) {
     flag_diff += gpu[i].ok != cpu[i].ok || gpu[i].steps != cpu[i].steps;
-    feasible += (cpu[i].ok >> 4) & 1;
+    feasible += aurora_sweep::feasible(cpu[i]);
     if (!(cpu[i].ok & 1) || gpu[i].ok != cpu[i].ok) continue;
     const double a[3] = {gpu[i].iae, gpu[i].itae, gpu[i].iasc};
     const double b[3] = {cpu[i].iae, cpu[i].itae, cpu[i].iasc};
@@ -125,7 +125,7 @@ double floatFlagShare(const SweepSpec& float_spec, const SweepSpec& double_spec)
   runCpuBatch(double_spec, 4, cpu_double, progress);
   long agree = 0;
   for (size_t i = 0; i < gpu_float.size(); ++i) {
-    agree += ((gpu_float[i].ok >> 4) & 1) == ((cpu_double[i].ok >> 4) & 1);
+    agree += feasible(gpu_float[i]) == feasible(cpu_double[i]);
   }
   return double(agree) / double(gpu_float.size());
 }
@@ -155,7 +155,7 @@ TEST(CudaBackend, TheFullThirteenParameterStudy) {
     std::vector<SimResult> out;
     const CudaRun run = runCuda(test::study13(65536, p), 0, out);
     long feasible = 0;
-    for (const SimResult& r : out) feasible += (r.ok >> 4) & 1;
+    for (const SimResult& r : out) feasible += aurora_sweep::feasible(r);
     std::fprintf(stderr, "cuda underactuated_13 %s: kernel %.4f s, total %.4f s, block %d, %ld feasible\n",
                  precisionName(p), run.kernel_s, run.total_s, run.block_size, feasible);
     EXPECT_EQ(out.size(), 65536u);

@@ -66,6 +66,11 @@ struct SimResult {
 };
 static_assert(sizeof(SimResult) == 48, "the chunk files' record: 48 bytes, no implicit padding");
 
+// The bits of SimResult::ok, by name: check i (0-based) held, and feasible.
+constexpr int kFeasibleBit = 4;
+AURORA_HD inline int checkHeld(const SimResult& r, int check) { return (r.ok >> check) & 1; }
+AURORA_HD inline int feasible(const SimResult& r) { return (r.ok >> kFeasibleBit) & 1; }
+
 AURORA_HD inline SimResult compactResult(const aurora_control::RunnerResult& r) {
   SimResult s;
   for (int i = 0; i < 7; ++i) s.zero[i] = 0;
@@ -76,7 +81,7 @@ AURORA_HD inline SimResult compactResult(const aurora_control::RunnerResult& r) 
   s.iasc = r.iasc;
   s.ok = 0;
   for (int i = 0; i < 4; ++i) s.ok |= static_cast<unsigned char>((r.ok[i] ? 1 : 0) << i);
-  s.ok |= static_cast<unsigned char>((r.feasible ? 1 : 0) << 4);
+  s.ok |= static_cast<unsigned char>((r.feasible ? 1 : 0) << kFeasibleBit);
   return s;
 }
 
