@@ -15,6 +15,7 @@
 #include "aurora_control/law_yaml.h"
 #include "aurora_control/live_settings.h"
 #include "aurora_control/tracking.h"
+#include "control_msg.h"
 #include "controller_params.h"
 #include "param_tree.h"
 #include "task_markers.h"
@@ -239,10 +240,7 @@ void ControllerNode::onState(const aurora_msgs::DroneState::ConstPtr& msg) {
   }
   warned_stale_input_ = false;
   if (lockstep_ && core_->empty() && !lockstepListenersReady()) return;  // the sim re-sends it
-  StateSample sample;
-  sample.step = static_cast<long>(msg->step);
-  sample.stamp_ns = static_cast<int64_t>(msg->header.stamp.toNSec());
-  aurora_sim::stateFromMsg(*msg, sample.X);
+  const StateSample sample = sampleFromMsg(*msg);
   const bool went_back = !core_->empty() && sample.step < core_->newest().step;
   if (!core_->push(sample)) {
     // The lockstep sim re-sends a state it got no answer to: answer again
@@ -398,7 +396,7 @@ void ControllerNode::cycle(const ros::Time& now) {
   control.waypoint_index = task_.activeIndex(task_time);
   control.task_time = task_time;
   control.task_duration = task_.duration();
-  fillReference(ref, control);
+  referenceToMsg(ref, control);
   control.law_ran = decision.run_law;
   control.overridden = joy_.deadman || resume_.active();
   control.mode = mode;
@@ -473,21 +471,6 @@ void ControllerNode::fillLaw(aurora_msgs::Control& control) const {
   const bool pd = set.law == LawType::kPdSaturated;
   control.kp = pd ? set.gains.kp : 0.0;
   control.kd = pd ? set.gains.kd : 0.0;
-}
-
-void ControllerNode::fillReference(const Reference<double>& ref, aurora_msgs::Control& control) const {
-  control.desired_position.x = ref.pos[0];
-  control.desired_position.y = ref.pos[1];
-  control.desired_position.z = ref.pos[2];
-  control.desired_velocity.x = ref.vel[0];
-  control.desired_velocity.y = ref.vel[1];
-  control.desired_velocity.z = ref.vel[2];
-  control.desired_acceleration.x = ref.acc[0];
-  control.desired_acceleration.y = ref.acc[1];
-  control.desired_acceleration.z = ref.acc[2];
-  control.desired_yaw = ref.yaw;
-  control.desired_yaw_rate = ref.yaw_rate;
-  control.desired_yaw_acceleration = ref.yaw_acc;
 }
 
 void ControllerNode::publishTaskMarkers() {

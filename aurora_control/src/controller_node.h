@@ -57,7 +57,6 @@ class ControllerNode {
   void serviceDriverCommands(double now, const double* fresh_X);
   void publishTaskMarkers();
   void fillLaw(aurora_msgs::Control& control) const;
-  void fillReference(const Reference<double>& ref, aurora_msgs::Control& control) const;
   long readDelaySamples();
   void refuseDelayBeyondTheTask(long delay) const;  // limits.h: shorter than the run
   void refuseUnknownTopLevelKeys();

@@ -27,6 +27,7 @@
 #include "aurora_sim/config_dir.h"
 #include "aurora_sim/vehicle_yaml.h"
 #include "aurora_sim/ros_conversions.h"
+#include "control_msg.h"
 
 namespace {
 
@@ -110,18 +111,6 @@ void recordedLaw(const aurora_msgs::Control& c, ControllerSettings& set) {
     if (c.gain_names[i] != names[i]) fail("control message of step " + std::to_string(c.step) + ": gain '" + c.gain_names[i] + "' where '" + names[i] + "' was expected");
     lawGain(set, static_cast<int>(i)) = c.gains[i];
   }
-}
-
-Reference<double> recordedReference(const aurora_msgs::Control& c) {
-  Reference<double> r;
-  const double pos[3] = {c.desired_position.x, c.desired_position.y, c.desired_position.z};
-  const double vel[3] = {c.desired_velocity.x, c.desired_velocity.y, c.desired_velocity.z};
-  const double acc[3] = {c.desired_acceleration.x, c.desired_acceleration.y, c.desired_acceleration.z};
-  for (int i = 0; i < 3; ++i) r.pos[i] = pos[i], r.vel[i] = vel[i], r.acc[i] = acc[i];
-  r.yaw = c.desired_yaw;
-  r.yaw_rate = c.desired_yaw_rate;
-  r.yaw_acc = c.desired_yaw_acceleration;
-  return r;
 }
 
 }  // namespace
@@ -226,10 +215,7 @@ int main(int argc, char** argv) {
     for (const rosbag::MessageInstance& m : view) {
       if (auto s = m.instantiate<aurora_msgs::DroneState>()) {
         if (s->stale) continue;  // the node ignores states its source marked stale
-        StateSample sample;
-        sample.step = static_cast<long>(s->step);
-        sample.stamp_ns = static_cast<int64_t>(s->header.stamp.toNSec());
-        aurora_sim::stateFromMsg(*s, sample.X);
+        const StateSample sample = sampleFromMsg(*s);
         states.emplace(sample.step, sample);  // keeps the first of a re-sent step
       } else if (auto c = m.instantiate<aurora_msgs::Control>()) {
         controls.push_back(*c);
@@ -304,7 +290,7 @@ int main(int argc, char** argv) {
     set.clamp_commands = o.clamp ? o.clamp_value : static_cast<bool>(c.clamped);
     // The law ran when the node says it did; where the joystick replaced
     // the command, the law's own command (command_unclamped) is compared.
-    const ControlOutput out = c.law_ran ? core->compute(recordedReference(c)) : core->hover();
+    const ControlOutput out = c.law_ran ? core->compute(referenceFromMsg(c)) : core->hover();
     const double* mine = c.overridden ? out.U_unclamped : out.U;
     const double* theirs = c.overridden ? c.command_unclamped.data() : c.command.data();
     double diff = 0.0;
