@@ -113,13 +113,17 @@ void recordedLaw(const aurora_msgs::Control& c, ControllerSettings& set) {
   }
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
+// The command line (a mistake ends the program with status 2 and the usage).
+struct Arguments {
   std::string bag_path, ns, out_path;
   std::string vehicle_path;  // default: configDir()/vehicles/ardrone2.yaml
   bool expect_identical = false;
   Overrides o;
+};
+
+Arguments parseArguments(int argc, char** argv) {
+  Arguments args;
+  Overrides& o = args.o;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     auto value = [&]() -> std::string {
@@ -128,13 +132,13 @@ int main(int argc, char** argv) {
     };
     if (a == "-h" || a == "--help") {
       std::fputs(kUsage, stdout);
-      return 0;
+      std::exit(0);
     } else if (a == "--ns") {
-      ns = value();
+      args.ns = value();
     } else if (a == "--controller") {
       loadControllerFile(value(), o);
     } else if (a == "--vehicle") {
-      vehicle_path = value();
+      args.vehicle_path = value();
     } else if (a == "--kp") {
       o.kp = true, o.kp_value = gain(a, value());
     } else if (a == "--kd") {
@@ -150,32 +154,40 @@ int main(int argc, char** argv) {
       if (o.clamp && o.clamp_value != (a == "--clamp")) fail("--clamp and --no-clamp exclude each other: give one");
       o.clamp = true, o.clamp_value = a == "--clamp";
     } else if (a == "--out") {
-      out_path = value();
+      args.out_path = value();
     } else if (a == "--expect-identical") {
-      expect_identical = true;
+      args.expect_identical = true;
     } else if (!a.empty() && a[0] == '-') {
       fail("unknown option '" + a + "'\n\n" + kUsage);
-    } else if (bag_path.empty()) {
-      bag_path = a;
+    } else if (args.bag_path.empty()) {
+      args.bag_path = a;
     } else {
       fail("one bag at a time ('" + a + "' is extra)");
     }
   }
-  if (bag_path.empty()) fail(std::string("a bag is required\n\n") + kUsage);
+  if (args.bag_path.empty()) fail(std::string("a bag is required\n\n") + kUsage);
   if (o.delay && o.delay_seconds) fail("--delay and --delay-seconds exclude each other: give one");
 
+  return args;
+}
+
+void openBag(const std::string& bag_path, rosbag::Bag& bag) {
   if (!std::ifstream(bag_path).good()) {
     fail("bag '" + bag_path + "' does not exist or cannot be read" +
          (bag_path.size() > 7 && bag_path.compare(bag_path.size() - 7, 7, ".active") == 0
               ? std::string(" (an .active bag is still being recorded)") : std::string()));
   }
-  rosbag::Bag bag;
   try {
     bag.open(bag_path, rosbag::bagmode::Read);
   } catch (const rosbag::BagException& e) {
     fail("bag '" + bag_path + "' cannot be read (truncated, still recording, or not a bag?): " +
          e.what());
   }
+}
+
+// The drone's namespace in the bag: `ns`, or the one <ns>/state and
+// <ns>/control pair the bag holds.
+std::string droneNamespace(rosbag::Bag& bag, std::string ns) {
   // Find the drone's topics.
   std::set<std::string> topics;
   {
@@ -208,8 +220,46 @@ int main(int argc, char** argv) {
     }
   }
 
-  std::map<long, StateSample> states;
-  std::vector<aurora_msgs::Control> controls;
+  return ns;
+}
+
+// The settings of the cycle of `c`: the recorded law, gains, delay and
+// clamping, with the command line's overrides; refused as the node refuses.
+void cycleSettings(const aurora_msgs::Control& c, const Overrides& o, long iterations, double task_duration,
+                   ControllerSettings& set) {
+  set.Ts = c.sample_time;
+  if (o.law) {
+    set.law = o.law_settings.law, set.gains = o.law_settings.gains;
+    set.underactuated = o.law_settings.underactuated;
+  } else {
+    recordedLaw(c, set);
+  }
+  if ((o.kp || o.kd) && set.law != LawType::kPdSaturated) {
+    fail(std::string(o.kp ? "--kp" : "--kd") + " is a gain of the pd_saturated law, but the " +
+         (o.law ? "--controller file's" : "bag's") + " controller is " + lawName(set.law) +
+         " (step " + std::to_string(c.step) + "): give its gains in a controller file with "
+         "--controller FILE (e.g. config/controllers/underactuated.yaml)");
+  }
+  if (o.kp) set.gains.kp = o.kp_value;
+  if (o.kd) set.gains.kd = o.kd_value;
+  set.delay = o.delay ? o.delay_value
+                      : (o.delay_seconds ? std::lround(o.delay_seconds_value / c.sample_time)
+                                         : static_cast<long>(c.delay_samples));
+  if (set.delay > kMaxDelaySamples) {
+    fail("--delay-seconds " + std::to_string(o.delay_seconds_value) + " is " + std::to_string(set.delay) +
+         " samples of " + std::to_string(c.sample_time) + " s: accepted " + delayRangeText());
+  }
+  if (task_duration > 0.0 && !delayShorterThanRun(set.delay, iterations)) {
+    fail(std::string(o.delay ? "--delay" : o.delay_seconds ? "--delay-seconds" : "the recorded delay") +
+         ": " + delayRunText(set.delay, iterations, c.sample_time));
+  }
+  set.clamp_commands = o.clamp ? o.clamp_value : static_cast<bool>(c.clamped);
+}
+
+// The drone's states (by step, the first of a re-sent one, none marked
+// stale) and control messages in the bag.
+void readDrone(rosbag::Bag& bag, const std::string& bag_path, const std::string& ns,
+               std::map<long, StateSample>& states, std::vector<aurora_msgs::Control>& controls) {
   try {
     rosbag::View view(bag, rosbag::TopicQuery(std::vector<std::string>{ns + "/state", ns + "/control"}));
     for (const rosbag::MessageInstance& m : view) {
@@ -224,22 +274,45 @@ int main(int argc, char** argv) {
   } catch (const std::exception& e) {
     fail(std::string("bag '") + bag_path + "' is damaged: " + e.what());
   }
-  if (controls.empty() || states.empty()) fail("no " + ns + "/control or " + ns + "/state messages");
+}
 
-  std::unique_ptr<DelayedController<kCapacity>> core(new DelayedController<kCapacity>());
+// The vehicle the underactuated law inverts (--vehicle, else ardrone2).
+aurora_sim::ArdroneParams<double> vehicleFor(const std::string& path) {
   try {
-    if (vehicle_path.empty()) vehicle_path = aurora_sim::configDir() + "/vehicles/ardrone2.yaml";
-    core->settings.vehicle = aurora_sim::loadVehicleYaml(vehicle_path);
+    return aurora_sim::loadVehicleYaml(path.empty() ? aurora_sim::configDir() + "/vehicles/ardrone2.yaml" : path);
   } catch (const std::runtime_error& e) {
     fail(std::string("--vehicle: ") + e.what());
   }
-  FILE* csv = nullptr;
-  if (!out_path.empty()) {
-    csv = std::fopen(out_path.c_str(), "w");
-    if (!csv) fail("cannot write '" + out_path + "'");
-    std::fprintf(csv, "step,recorded_u1,recorded_u2,recorded_u3,recorded_u4,replayed_u1,replayed_u2,"
-                      "replayed_u3,replayed_u4,max_abs_diff\n");
-  }
+}
+
+// --out: the recorded and replayed commands side by side, per cycle.
+FILE* openCommandsCsv(const std::string& path) {
+  FILE* csv = std::fopen(path.c_str(), "w");
+  if (!csv) fail("cannot write '" + path + "'");
+  std::fprintf(csv, "step,recorded_u1,recorded_u2,recorded_u3,recorded_u4,replayed_u1,replayed_u2,"
+                    "replayed_u3,replayed_u4,max_abs_diff\n");
+  return csv;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const Arguments args = parseArguments(argc, argv);
+  const std::string &bag_path = args.bag_path, &out_path = args.out_path;
+  const bool expect_identical = args.expect_identical;
+  const Overrides& o = args.o;
+  rosbag::Bag bag;
+  openBag(bag_path, bag);
+  const std::string ns = droneNamespace(bag, args.ns);
+
+  std::map<long, StateSample> states;
+  std::vector<aurora_msgs::Control> controls;
+  readDrone(bag, bag_path, ns, states, controls);
+  if (controls.empty() || states.empty()) fail("no " + ns + "/control or " + ns + "/state messages");
+
+  std::unique_ptr<DelayedController<kCapacity>> core(new DelayedController<kCapacity>());
+  core->settings.vehicle = vehicleFor(args.vehicle_path);
+  FILE* csv = out_path.empty() ? nullptr : openCommandsCsv(out_path);
   // The recorded task's length (Control.task_duration; one task per bag, as
   // the report assumes) bounds the delay as in the node and the sweep.
   const aurora_msgs::Control& recorded = controls.front();
@@ -260,34 +333,7 @@ int main(int argc, char** argv) {
       ++next_step;
     }
     if (core->empty()) continue;
-    ControllerSettings& set = core->settings;
-    set.Ts = c.sample_time;
-    if (o.law) {
-      set.law = o.law_settings.law, set.gains = o.law_settings.gains;
-      set.underactuated = o.law_settings.underactuated;
-    } else {
-      recordedLaw(c, set);
-    }
-    if ((o.kp || o.kd) && set.law != LawType::kPdSaturated) {
-      fail(std::string(o.kp ? "--kp" : "--kd") + " is a gain of the pd_saturated law, but the " +
-           (o.law ? "--controller file's" : "bag's") + " controller is " + lawName(set.law) +
-           " (step " + std::to_string(c.step) + "): give its gains in a controller file with "
-           "--controller FILE (e.g. config/controllers/underactuated.yaml)");
-    }
-    if (o.kp) set.gains.kp = o.kp_value;
-    if (o.kd) set.gains.kd = o.kd_value;
-    set.delay = o.delay ? o.delay_value
-                        : (o.delay_seconds ? std::lround(o.delay_seconds_value / c.sample_time)
-                                           : static_cast<long>(c.delay_samples));
-    if (set.delay > kMaxDelaySamples) {
-      fail("--delay-seconds " + std::to_string(o.delay_seconds_value) + " is " + std::to_string(set.delay) +
-           " samples of " + std::to_string(c.sample_time) + " s: accepted " + delayRangeText());
-    }
-    if (recorded.task_duration > 0.0 && !delayShorterThanRun(set.delay, iterations)) {
-      fail(std::string(o.delay ? "--delay" : o.delay_seconds ? "--delay-seconds" : "the recorded delay") +
-           ": " + delayRunText(set.delay, iterations, c.sample_time));
-    }
-    set.clamp_commands = o.clamp ? o.clamp_value : static_cast<bool>(c.clamped);
+    cycleSettings(c, o, iterations, recorded.task_duration, core->settings);
     // The law ran when the node says it did; where the joystick replaced
     // the command, the law's own command (command_unclamped) is compared.
     const ControlOutput out = c.law_ran ? core->compute(referenceFromMsg(c)) : core->hover();
