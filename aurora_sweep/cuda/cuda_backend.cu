@@ -116,27 +116,38 @@ void withKernelTypes(const SweepSpec& spec, F&& f) {
   });
 }
 
+// Calls f(kernel): the kernel instantiation that runs `spec`.
+template <class F>
+void withKernel(const SweepSpec& spec, F&& f) {
+  withKernelTypes(spec, [&](auto type, auto capacity, auto law) {
+    f(sweepKernel<decltype(law)::value, decltype(type), decltype(capacity)::value>);
+  });
+}
+
 // The kernel's attributes for `spec` (loading its module: fails with the
 // reason where this build has no code for the device or the driver is old).
 cudaFuncAttributes kernelAttributes(const SweepSpec& spec) {
   cudaFuncAttributes attr{};
-  withKernelTypes(spec, [&](auto type, auto capacity, auto law) {
-    using T = decltype(type);
-    check(cudaFuncGetAttributes(&attr, sweepKernel<decltype(law)::value, T, decltype(capacity)::value>),
-          "loading the sweep kernel (cudaFuncGetAttributes)");
+  withKernel(spec, [&](auto kernel) {
+    check(cudaFuncGetAttributes(&attr, kernel), "loading the sweep kernel (cudaFuncGetAttributes)");
   });
   return attr;
 }
 
 int defaultBlockSize(const SweepSpec& spec) {
   int min_grid = 0, block = 0;
-  withKernelTypes(spec, [&](auto type, auto capacity, auto law) {
-    using T = decltype(type);
-    check(cudaOccupancyMaxPotentialBlockSize(&min_grid, &block,
-                                             sweepKernel<decltype(law)::value, T, decltype(capacity)::value>),
-          "cudaOccupancyMaxPotentialBlockSize");
+  withKernel(spec, [&](auto kernel) {
+    check(cudaOccupancyMaxPotentialBlockSize(&min_grid, &block, kernel), "cudaOccupancyMaxPotentialBlockSize");
   });
   return block;
+}
+
+// An attribute of the current device.
+int deviceAttribute(cudaDeviceAttr which) {
+  int device = 0, value = 0;
+  check(cudaGetDevice(&device), "cudaGetDevice");
+  check(cudaDeviceGetAttribute(&value, which, device), "cudaDeviceGetAttribute");
+  return value;
 }
 
 // Only the rows of the chunk [first, first + n) of a points design go to
@@ -274,11 +285,8 @@ std::string cudaLaunchProblem(const SweepSpec& spec, int block_size) {
     // The driver reserves the kernel's local memory (the delay history) for
     // as many threads as the device can hold (not this kernel's occupancy),
     // for the whole process, at the first launch.
-    int device = 0, sms = 0, per_sm = 0;
-    check(cudaGetDevice(&device), "cudaGetDevice");
-    check(cudaDeviceGetAttribute(&sms, cudaDevAttrMultiProcessorCount, device), "cudaDeviceGetAttribute");
-    check(cudaDeviceGetAttribute(&per_sm, cudaDevAttrMaxThreadsPerMultiProcessor, device), "cudaDeviceGetAttribute");
-    const long resident = static_cast<long>(sms) * per_sm;
+    const long resident = static_cast<long>(deviceAttribute(cudaDevAttrMultiProcessorCount)) *
+                          deviceAttribute(cudaDevAttrMaxThreadsPerMultiProcessor);
     const double reserve = double(attr.localSizeBytes) * double(resident);
     size_t free_bytes = 0, total = 0;
     check(cudaMemGetInfo(&free_bytes, &total), "cudaMemGetInfo");
@@ -297,17 +305,13 @@ std::string cudaLaunchProblem(const SweepSpec& spec, int block_size) {
 }
 
 long cudaResidentThreads(const SweepSpec& spec, int block_size) {
-  int device = 0, sms = 0, blocks = 0;
+  int blocks = 0;
   const int block = block_size > 0 ? block_size : defaultBlockSize(spec);
-  check(cudaGetDevice(&device), "cudaGetDevice");
-  check(cudaDeviceGetAttribute(&sms, cudaDevAttrMultiProcessorCount, device), "cudaDeviceGetAttribute");
-  withKernelTypes(spec, [&](auto type, auto capacity, auto law) {
-    using T = decltype(type);
-    check(cudaOccupancyMaxActiveBlocksPerMultiprocessor(
-              &blocks, sweepKernel<decltype(law)::value, T, decltype(capacity)::value>, block, 0),
+  withKernel(spec, [&](auto kernel) {
+    check(cudaOccupancyMaxActiveBlocksPerMultiprocessor(&blocks, kernel, block, 0),
           "cudaOccupancyMaxActiveBlocksPerMultiprocessor");
   });
-  return static_cast<long>(sms) * blocks * block;
+  return static_cast<long>(deviceAttribute(cudaDevAttrMultiProcessorCount)) * blocks * block;
 }
 
 CudaRun runCuda(const SweepSpec& spec, int block_size, std::vector<SimResult>& out) {

@@ -8,7 +8,6 @@
 #include <fstream>
 #include <iterator>
 #include <map>
-#include <sstream>
 
 #include "aurora_control/positioning_runner.h"
 #include "aurora_control/task_yaml.h"

@@ -395,7 +395,7 @@ int runSweep(int argc, char** argv, const Options& opt, MpiRanks* mpi) {
   if (opt.rviz && !rvizMasterReachable(argc, argv)) return 7;
   Start start;
   if (const int rc = agreeToStart(mpi, loadAndChooseBackend(opt, mpi, start))) return rc;
-  if (const int rc = agreeOnBackend(opt, mpi, start).status) return rc;
+  if (const int rc = agreeOnBackend(opt, mpi, start)) return rc;
   if (const int rc = agreeToStart(mpi, prepareOutput(opt, lead, start))) return rc;
   const SweepSpec& spec = start.spec;
   RunInfo info = start.info;

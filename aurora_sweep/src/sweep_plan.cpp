@@ -98,8 +98,8 @@ SweepPlan planSweep(const SweepSpec& spec, const BackendChoice& choice, const st
   std::vector<SimResult> sample;
   p.rate = calibrate(spec, choice, p.calibrated, sample);
   p.seconds = p.rate > 0 ? p.combinations / p.rate : 0;
-  const long chunks = (p.combinations + chunk_size - 1) / chunk_size;
-  p.chunk_bytes = static_cast<uint64_t>(p.combinations) * sizeof(SimResult) + static_cast<uint64_t>(chunks) * 64;
+  p.chunks = ChunkPlan{p.combinations, chunk_size}.count();
+  p.chunk_bytes = static_cast<uint64_t>(p.combinations) * sizeof(SimResult) + static_cast<uint64_t>(p.chunks) * 64;
   const double row = csvRowBytes(spec, sample);
   const double rows = static_cast<double>(p.combinations);
   double results = 0;
@@ -113,10 +113,10 @@ SweepPlan planSweep(const SweepSpec& spec, const BackendChoice& choice, const st
   return p;
 }
 
-std::string planText(const SweepPlan& p, long chunks) {
+std::string planText(const SweepPlan& p) {
   char rate[160];
   std::snprintf(rate, sizeof rate, "%.0f sims/s", p.rate);
-  return counted(p.combinations, "combination", "combinations") + " in " + counted(chunks, "chunk", "chunks") +
+  return counted(p.combinations, "combination", "combinations") + " in " + counted(p.chunks, "chunk", "chunks") +
          ": " + (p.seconds < 1 ? "" : "about ") + durationText(p.seconds) + " at " + rate + " (measured on the first " +
          grouped(p.calibrated) + "), writes about " + bytesText(double(p.neededBytes())) + " (chunk files " +
          bytesText(double(p.chunk_bytes)) + ", results " + bytesText(double(p.results_bytes)) + "); " +

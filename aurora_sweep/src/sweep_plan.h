@@ -15,6 +15,7 @@ namespace aurora_sweep {
 
 struct SweepPlan {
   long combinations = 0;
+  long chunks = 0;             // of the chunk size planned
   long calibrated = 0;         // combinations run to measure the rate
   double rate = 0;             // simulations per second measured
   double seconds = 0;          // estimated compute time
@@ -35,7 +36,7 @@ SweepPlan planSweep(const SweepSpec& spec, const BackendChoice& choice, const st
 // "1,000,000 combinations in 16 chunks: about 2 min at 8300 sims/s (measured on
 // the first 4,096), writes about 106 MB (chunk files 48 MB, results 58 MB);
 // 53 GB free on /work"
-std::string planText(const SweepPlan& plan, long chunks);
+std::string planText(const SweepPlan& plan);
 
 // "1 combination", "2 combinations" (item counts in messages).
 std::string counted(long n, const std::string& singular, const std::string& plural);

@@ -121,10 +121,9 @@ StartCheck checkPlan(const Options& opt, const Start& s, bool lead) {
   } catch (const std::exception& e) {
     return {4, "the " + s.info.backend + " backend failed: " + e.what()};
   }
-  const long chunks = (s.spec.size() + s.chunk_size - 1) / s.chunk_size;
-  if (lead && !opt.quiet) std::fprintf(stderr, "sweep: plan: %s\n", planText(plan, chunks).c_str());
+  if (lead && !opt.quiet) std::fprintf(stderr, "sweep: plan: %s\n", planText(plan).c_str());
   if (plan.fits() || opt.ignore_free_space) return {};
-  return {2, "refused: " + plan.volume + " cannot hold this sweep (" + planText(plan, chunks) +
+  return {2, "refused: " + plan.volume + " cannot hold this sweep (" + planText(plan) +
                  "): choose another --out, fewer combinations, --rows feasible or --output hdf5, or give "
                  "--ignore-free-space"};
 }
@@ -201,8 +200,8 @@ int agreeToStart(const MpiRanks* mpi, const StartCheck& mine) {
   return mpi->maxOverRanks(mine.status);
 }
 
-StartCheck agreeOnBackend(const Options& opt, const MpiRanks* mpi, Start& s) {
-  if (!mpi) return {};
+int agreeOnBackend(const Options& opt, const MpiRanks* mpi, Start& s) {
+  if (!mpi) return 0;
   const nlohmann::json all = mpi->gather(s.computed_by);
   int status = 0;
   std::string run = s.computed_by;
@@ -226,7 +225,7 @@ StartCheck agreeOnBackend(const Options& opt, const MpiRanks* mpi, Start& s) {
   }
   status = mpi->broadcast(status);
   s.run_computed_by = mpi->broadcast(run);  // rank 0's, the same on every rank
-  return {status, status ? "ranks on different backends" : ""};
+  return status;
 }
 
 }  // namespace aurora_sweep

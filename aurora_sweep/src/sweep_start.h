@@ -40,8 +40,9 @@ StartCheck prepareOutput(const Options& opt, bool lead, Start& start);
 int agreeToStart(const MpiRanks* mpi, const StartCheck& mine);
 // Collective under MPI: the ranks' backends must be the same (the chunks
 // of a sweep agree to rounding only across backends) unless
-// --mixed-backends; sets start.run_computed_by.
-StartCheck agreeOnBackend(const Options& opt, const MpiRanks* mpi, Start& start);
+// --mixed-backends (rank 0 says why); sets start.run_computed_by. Returns
+// the status (0: go).
+int agreeOnBackend(const Options& opt, const MpiRanks* mpi, Start& start);
 
 // --output auto: CSV for spreadsheets up to a million rows, HDF5 beyond.
 std::string outputFormat(const Options& opt, long combinations);

@@ -48,8 +48,9 @@ class BadParamsTest(unittest.TestCase):
                             "accepted delays up to 1800 samples for this task")
 
     def test_negative_delay_seconds(self):
-        rc, out = self.controller_case("/bad_delay_s", lambda p: rospy.set_param(p + "delay/seconds", -0.5))
-        self.assert_refused(rc, out, "/bad_delay_s/controller/delay/seconds", "accepted range [0,")
+        # The refusal echoes the value given.
+        rc, out = self.controller_case("/bad_delay_s", lambda p: rospy.set_param(p + "delay/seconds", -0.1))
+        self.assert_refused(rc, out, "'/bad_delay_s/controller/delay/seconds' = -0.1", "accepted range [0,")
 
     def test_unknown_controller(self):
         rc, out = self.controller_case("/bad_name", lambda p: rospy.set_param(p + "controller/name", "lqr"))
@@ -87,10 +88,6 @@ class BadParamsTest(unittest.TestCase):
             "/low_wp", lambda p: rospy.set_param(p + "task/waypoints", [[1, 0, 1.5], [1, 0, -2], [1, 1, 1], [0, 0, 1]]))
         self.assert_refused(rc, out, "'/low_wp/controller/task/waypoints[1]' has z = -2 m",
                             "accepted heights [0.2, 100] m")
-
-    def test_delay_seconds_echoes_the_value(self):
-        rc, out = self.controller_case("/neg_delay_s", lambda p: rospy.set_param(p + "delay/seconds", -0.1))
-        self.assert_refused(rc, out, "'/neg_delay_s/controller/delay/seconds' = -0.1", "accepted range [0,")
 
     def test_exponent_read_as_a_string_says_how_to_write_it(self):
         # YAML 1.1 (rosparam) reads 1.0e9 as a string: say to write 1.0e+9.

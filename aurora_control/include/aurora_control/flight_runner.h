@@ -30,7 +30,6 @@ struct FlightResult {
 
 constexpr int kFlightHistory = kDelayHistory;  // the node's history (limits.h)
 
-
 // observe(k, state after step k, reference of iteration k - 1, command of
 // iteration k - 1) after each model step (k 1-based). Iteration k hands
 // state k (the state at task time k Ts) to the controller with the

@@ -3,10 +3,10 @@
 #pragma once
 
 #include <cmath>
-#include <cstdio>
 #include <string>
 
 #include "aurora_control/waypoint_task.h"
+#include "aurora_sim/refusal_text.h"
 
 namespace aurora_control {
 
@@ -34,9 +34,9 @@ std::string checkTask(const WaypointTask<T, N>& task, const std::string& prefix)
     }
     const double z = double(task.position[i][2]);
     if (z < kMinTaskHeight || z > kMaxTaskHeight) {
-      char h[64];
-      std::snprintf(h, sizeof h, "%g", z);
-      return wp + " has z = " + h + " m: accepted heights [0.2, 100] m (z is up; the ground is z = 0)";
+      return wp + " has z = " + aurora_sim::numberText(z) + " m: accepted heights [" +
+             aurora_sim::numberText(kMinTaskHeight) + ", " + aurora_sim::numberText(kMaxTaskHeight) +
+             "] m (z is up; the ground is z = 0)";
     }
     const double prev = i == 0 ? 0.0 : double(task.end_time[i - 1]);
     if (!(double(task.end_time[i]) > prev)) {
@@ -45,11 +45,9 @@ std::string checkTask(const WaypointTask<T, N>& task, const std::string& prefix)
              " is invalid: end times must be positive and strictly increasing";
     }
     if (double(task.end_time[i]) > double(task.duration)) {
-      char t[96];
-      std::snprintf(t, sizeof t, "%g is after the task's duration (%g s)", double(task.end_time[i]),
-                    double(task.duration));
-      return "'" + prefix + "end_times[" + std::to_string(i) + "]' = " + t +
-             ": accepted end times up to the duration (the last waypoint is held after its end time)";
+      return "'" + prefix + "end_times[" + std::to_string(i) + "]' = " + aurora_sim::numberText(task.end_time[i]) +
+             " is after the task's duration (" + aurora_sim::numberText(task.duration) +
+             " s): accepted end times up to the duration (the last waypoint is held after its end time)";
     }
   }
   return "";

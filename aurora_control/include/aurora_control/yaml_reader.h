@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "aurora_sim/boolean_rule.h"
+#include "aurora_sim/refusal_text.h"
 
 namespace aurora_control {
 
@@ -94,7 +94,7 @@ class YamlReader {
     return static_cast<long>(v);
   }
 
-  // The one boolean rule (aurora_sim/boolean_rule.h): a quoted scalar is a
+  // The one boolean rule (aurora_sim/refusal_text.h): a quoted scalar is a
   // string, even "false".
   bool boolean(const YAML::Node& node, const std::string& key) const {
     const std::string text = node.IsScalar() ? node.as<std::string>() : std::string("(not a scalar)");
@@ -145,12 +145,7 @@ class YamlReader {
     return " (YAML 1.1, which rosparam reads, takes '" + text + "' as text: write " + fixed + ")";
   }
 
-  static std::string fmt(double v) {
-    if (std::isnan(v)) return "nan";  // whatever its sign bit
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%g", v);
-    return buf;
-  }
+  static std::string fmt(double v) { return aurora_sim::numberText(v); }
 
  private:
   std::string context_;

@@ -1,10 +1,21 @@
-// The one boolean rule, ROS-free: the node's parameters (ros_params.h) and
-// every YAML file (aurora_control/yaml_reader.h) refuse with this text.
+// Texts shared by every refusal, ROS-free: the node's parameters
+// (ros_params.h), every YAML file (aurora_control/yaml_reader.h) and the
+// task checks word numbers and booleans the same way.
 #pragma once
 
+#include <cmath>
+#include <cstdio>
 #include <string>
 
 namespace aurora_sim {
+
+// A number as a user wrote it (%g: 0.2, -5, 1e+09; any NaN reads "nan"), for messages.
+inline std::string numberText(double v) {
+  if (std::isnan(v)) return "nan";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
 
 // The one boolean rule (a YAML file, a ROS parameter, a sweep file): an
 // unquoted true or false; anything else, a quoted "false" included (a

@@ -12,7 +12,7 @@
 #include <string>
 
 #include "aurora_sim/ardrone_params.h"
-#include "aurora_sim/boolean_rule.h"
+#include "aurora_sim/refusal_text.h"
 #include "aurora_sim/vehicle_keys.h"
 
 namespace aurora_sim {
@@ -41,20 +41,13 @@ V paramOr(const ros::NodeHandle& nh, const std::string& key, const V& fallback) 
   return nh.getParam(key, value) ? value : fallback;
 }
 
-// An optional boolean with a default, by the one boolean rule (boolean_rule.h).
+// An optional boolean with a default, by the one boolean rule (refusal_text.h).
 inline bool boolParam(const ros::NodeHandle& nh, const std::string& key, bool fallback) {
   XmlRpc::XmlRpcValue v;
   if (!nh.getParam(key, v)) return fallback;
   if (v.getType() == XmlRpc::XmlRpcValue::TypeBoolean) return static_cast<bool>(v);
   const std::string text = v.getType() == XmlRpc::XmlRpcValue::TypeString ? static_cast<std::string>(v) : v.toXml();
   throw ParameterError("parameter " + booleanRefusal(fullKey(nh, key), text));
-}
-
-// A number as a user wrote it (%g: 0.2, -5, 1e+09), for messages.
-inline std::string numberText(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", v);
-  return buf;
 }
 
 // An optional number with a default, checked against [lo, hi] (or (lo, hi]
