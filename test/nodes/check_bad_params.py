@@ -106,29 +106,24 @@ class BadParamsTest(unittest.TestCase):
         rc, out = self.controller_case("/no_kd", lambda p: rospy.delete_param(p + "controller/kd"))
         self.assert_refused(rc, out, "/no_kd/controller/controller/kd", "accepted: a number in [0, 10]")
 
-    def test_sim_missing_vehicle_constant(self):
-        ns = "/no_mass"
+    def sim_case(self, ns, edit):
         load_yaml(os.path.join(self.config, "vehicles/ardrone2.yaml"), ns + "/vehicle")
-        rospy.delete_param(ns + "/vehicle/mass")
-        rc, out = self.run_node("aurora_sim", "ardrone_sim", ns)
+        edit(ns + "/")
+        return self.run_node("aurora_sim", "ardrone_sim", ns)
+
+    def test_sim_missing_vehicle_constant(self):
+        rc, out = self.sim_case("/no_mass", lambda p: rospy.delete_param(p + "vehicle/mass"))
         self.assert_refused(rc, out, "/no_mass/vehicle/mass", "config/vehicles/ardrone2.yaml")
 
     def test_sim_out_of_range_vehicle_constant(self):
-        ns = "/neg_mass"
-        load_yaml(os.path.join(self.config, "vehicles/ardrone2.yaml"), ns + "/vehicle")
-        rospy.set_param(ns + "/vehicle/mass", -0.4)
-        rc, out = self.run_node("aurora_sim", "ardrone_sim", ns)
+        rc, out = self.sim_case("/neg_mass", lambda p: rospy.set_param(p + "vehicle/mass", -0.4))
         self.assert_refused(rc, out, "/neg_mass/vehicle/mass", "accepted range")
 
     def test_sim_negative_stop_after(self):
         # The range has no upper end: "inf)", not DBL_MAX's 309 digits.
-        ns = "/neg_stop"
-        load_yaml(os.path.join(self.config, "vehicles/ardrone2.yaml"), ns + "/vehicle")
-        rospy.set_param(ns + "/ardrone_sim/stop_after", -5.0)
-        rc, out = self.run_node("aurora_sim", "ardrone_sim", ns)
+        rc, out = self.sim_case("/neg_stop", lambda p: rospy.set_param(p + "ardrone_sim/stop_after", -5.0))
         self.assert_refused(rc, out, "'/neg_stop/ardrone_sim/stop_after' = -5 is invalid", "accepted range [0, inf) s")
         self.assertNotIn("179769", out)
-
 
 if __name__ == "__main__":
     rospy.init_node("check_bad_params")
