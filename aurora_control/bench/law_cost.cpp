@@ -10,7 +10,7 @@
 
 #include "aurora_control/flight_runner.h"
 #include "aurora_control/pd_controller.h"
-#include "aurora_control/positioning_study.h"
+#include "aurora_control/closed_loop.h"
 #include "aurora_control/underactuated_law.h"
 
 using namespace aurora_control;
@@ -24,9 +24,9 @@ int main() {
   set.vehicle = p;
   std::vector<std::array<double, aurora_sim::kStateSize>> states;
   runFlight(p, set, task, studyIterationCount(60.0, p.Ts),
-            [&](long, const aurora_sim::ArdroneState<double>& s, const Reference<double>&, const double*) {
+            [&](const LoopObservation<double>& o, double) {
               std::array<double, aurora_sim::kStateSize> x;
-              std::copy(s.X, s.X + aurora_sim::kStateSize, x.begin());
+              std::copy(o.after.model.X, o.after.model.X + aurora_sim::kStateSize, x.begin());
               states.push_back(x);
             });
   const PdGains<double> pd{0.5, 0.85};

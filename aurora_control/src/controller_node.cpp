@@ -40,6 +40,36 @@ ControllerNode::ControllerNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
   loadLaw(pnh_, vehicle, set);
   set.delay = readDelaySamples();
   set.clamp_commands = aurora_sim::boolParam(pnh_, "clamp_commands", true);
+  const std::string mode = readLoopMode();
+  task_ = loadTask(pnh_);
+  task_iterations_ = taskStepCount(task_.duration(), Ts_);  // steps 0..N (docs/controllers.md)
+  refuseDelayBeyondTheTask(set.delay);
+  refuseUnknownTopLevelKeys();
+  safety_ = loadSafetyConfig(pnh_);
+  const SafetyConfig& safety = safety_;
+  supervisor_.configure(safety);
+  JoystickConfig joystick;
+  joystick_enabled_ = loadJoystickConfig(pnh_, joystick);
+  joystick_ = JoystickMapper(joystick);
+  resume_ = ResumeSlew(joystick.resume_max_step, joystick.resume_min_cycles);
+
+  connectTopics(safety);
+  advertiseLiveSettings();
+
+  if (!lockstep_) {
+    timer_ = nh_.createTimer(ros::Duration(Ts_), &ControllerNode::onTimer, this);
+    rate_timer_ = nh_.createWallTimer(ros::WallDuration(1.0), &ControllerNode::onRateCheck, this);
+  }
+  publishTaskMarkers();
+  ROS_INFO("controller: %s (%s), delay %ld samples (%.4f s), %s commands, %s mode, %s task over "
+           "%.1f s%s%s", lawName(set.law), gainsText(set).c_str(), set.delay, set.delay * Ts_,
+           set.clamp_commands ? "clamped" : "unclamped", mode.c_str(), taskTypeName(task_.type),
+           task_.duration(), safety.flight_sequence ? ", flight sequence (take-off, task, landing)" : "",
+           joystick_enabled_ ? ", joystick override" : "");
+}
+
+// mode (realtime or lockstep), trigger and the lockstep subscriber counts.
+std::string ControllerNode::readLoopMode() {
   const std::string mode = paramOr<std::string>(pnh_, "mode", "realtime");
   if (mode != "realtime" && mode != "lockstep") {
     throw ParameterError("parameter '" + fullKey(pnh_, "mode") + "' = '" + mode +
@@ -64,18 +94,11 @@ ControllerNode::ControllerNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
       rangedParam(pnh_, "lockstep_subscribers/cmd_vel", 1, 0, 100, "(subscribers of cmd_vel)"));
   lockstep_control_subscribers_ = static_cast<int>(
       rangedParam(pnh_, "lockstep_subscribers/control", 0, 0, 100, "(subscribers of control)"));
-  task_ = loadTask(pnh_);
-  task_iterations_ = taskStepCount(task_.duration(), Ts_);  // steps 0..N (docs/controllers.md)
-  refuseDelayBeyondTheTask(set.delay);
-  refuseUnknownTopLevelKeys();
-  safety_ = loadSafetyConfig(pnh_);
-  const SafetyConfig& safety = safety_;
-  supervisor_.configure(safety);
-  JoystickConfig joystick;
-  joystick_enabled_ = loadJoystickConfig(pnh_, joystick);
-  joystick_ = JoystickMapper(joystick);
-  resume_ = ResumeSlew(joystick.resume_max_step, joystick.resume_min_cycles);
+  return mode;
+}
 
+// Publishers, the driver channels and subscribers.
+void ControllerNode::connectTopics(const SafetyConfig& safety) {
   cmd_pub_ = nh_.advertise<geometry_msgs::Twist>("cmd_vel", 1000);
   control_pub_ = nh_.advertise<aurora_msgs::Control>("control", 1000);
   markers_pub_ = nh_.advertise<visualization_msgs::MarkerArray>("waypoints", 1, true);
@@ -95,19 +118,6 @@ ControllerNode::ControllerNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
   }
   state_sub_ = nh_.subscribe("state", 100, &ControllerNode::onState, this,
                              ros::TransportHints().tcpNoDelay());
-
-  advertiseLiveSettings();
-
-  if (!lockstep_) {
-    timer_ = nh_.createTimer(ros::Duration(Ts_), &ControllerNode::onTimer, this);
-    rate_timer_ = nh_.createWallTimer(ros::WallDuration(1.0), &ControllerNode::onRateCheck, this);
-  }
-  publishTaskMarkers();
-  ROS_INFO("controller: %s (%s), delay %ld samples (%.4f s), %s commands, %s mode, %s task over "
-           "%.1f s%s%s", lawName(set.law), gainsText(set).c_str(), set.delay, set.delay * Ts_,
-           set.clamp_commands ? "clamped" : "unclamped", mode.c_str(), taskTypeName(task_.type),
-           task_.duration(), safety.flight_sequence ? ", flight sequence (take-off, task, landing)" : "",
-           joystick_enabled_ ? ", joystick override" : "");
 }
 
 void ControllerNode::refuseDelayBeyondTheTask(long delay) const {
@@ -352,7 +362,7 @@ void ControllerNode::cycle(const ros::Time& now) {
   const bool have_state = !core_->empty();
   const StateSample* newest = have_state ? &core_->newest() : nullptr;
   const long task_step = have_state ? newest->step - supervisor_.flyStartStep() : 0;
-  const double task_time = WaypointTask<double>::timeOfStep(task_step, Ts_);  // step Ts
+  const double task_time = taskTime(task_step, Ts_);  // step Ts
   const FlightDecision decision = supervisor_.update(
       now.toSec(), age, have_state ? newest->X : kNoState, have_state ? newest->step : 0,
       task_time, task_.duration());

@@ -58,6 +58,8 @@ class ControllerNode {
   void publishTaskMarkers();
   void fillLaw(aurora_msgs::Control& control) const;
   long readDelaySamples();
+  std::string readLoopMode();  // sets lockstep_, timer_triggered_, the lockstep subscriber counts
+  void connectTopics(const SafetyConfig& safety);
   void refuseDelayBeyondTheTask(long delay) const;  // limits.h: shorter than the run
   void refuseUnknownTopLevelKeys();
   double stateAge() const;

@@ -65,7 +65,7 @@ class SegmentErrors {
  public:
   explicit SegmentErrors(const Task<double>& task) : task_(task) {}
   void add(long k, double Ts, double error) {
-    const size_t i = static_cast<size_t>(task_.activeIndex(WaypointTask<double>::timeOfStep(k, Ts)));
+    const size_t i = static_cast<size_t>(task_.activeIndex(taskTime(k, Ts)));
     if (sq_.size() <= i) sq_.resize(i + 1, 0.0), max_.resize(i + 1, 0.0), n_.resize(i + 1, 0);
     sq_[i] += error * error, n_[i] += 1, max_[i] = std::max(max_[i], error);
   }
@@ -105,18 +105,13 @@ int main(int argc, char** argv) {
     if (!o.csv.empty() && !csv) throw std::runtime_error("cannot write '" + o.csv + "'");
     if (csv) std::fprintf(csv, "step,t,x,y,z,xd,yd,zd,error\n");
     SegmentErrors segments(task);
-    aurora_sim::ArdroneState<double> state;  // state k, before iteration k's command
-    state.reset();
     const auto t0 = std::chrono::steady_clock::now();
-    const FlightResult r = runFlight(p, set, task, n, [&](long k, const aurora_sim::ArdroneState<double>& next,
-                                                          const Reference<double>& ref, const double*) {
-      const long step = k - 1;  // the iteration whose state and reference are paired
-      const double e = trackingError(ref, state.X);
-      segments.add(step, p.Ts, e);
-      if (csv) std::fprintf(csv, "%ld,%.4f,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", step,
-                            WaypointTask<double>::timeOfStep(step, p.Ts), state.X[0], state.X[1], state.X[2],
-                            ref.pos[0], ref.pos[1], ref.pos[2], e);
-      state = next;
+    const FlightResult r = runFlight(p, set, task, n, [&](const LoopObservation<double>& o, double e) {
+      segments.add(o.k, p.Ts, e);
+      const double* X = o.X_before;  // state k, paired with reference k
+      const double* pd = o.step.ref.pos;
+      if (csv) std::fprintf(csv, "%ld,%.4f,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", o.k, taskTime(o.k, p.Ts), X[0], X[1],
+                            X[2], pd[0], pd[1], pd[2], e);
     });
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (csv) std::fclose(csv);

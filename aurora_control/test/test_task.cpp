@@ -1,6 +1,7 @@
 // Waypoint task schedule and validation.
 #include <gtest/gtest.h>
 
+#include "aurora_control/task.h"
 #include "aurora_control/task_check.h"
 
 using aurora_control::checkTask;
@@ -31,8 +32,8 @@ TEST(WaypointTask, OneWaypointPerQuarter) {
   EXPECT_EQ(checkTask(t, "task/"), "");
 }
 
-TEST(WaypointTask, StepTimeIsIntegerStepTimesTs) {
-  EXPECT_EQ(WaypointTask<double>::timeOfStep(450, 1.0 / 30.0), 450 * (1.0 / 30.0));
+TEST(Task, TaskTimeIsIntegerStepTimesTs) {
+  EXPECT_EQ(aurora_control::taskTime(450, 1.0 / 30.0), 450 * (1.0 / 30.0));
 }
 
 TEST(WaypointTask, ValidationNamesTheKey) {

@@ -113,9 +113,9 @@ class BatchWorker {
               Progress& progress)
       : grid_(spec.view()), first_(spec.rangeBegin()), total_(spec.rangeEnd()), out_(out), next_(next),
         progress_(progress), setup_(makeSetup<T>(spec)) {
-    model_ = setup_.model.template cast<B>();
-    plant_ = model_;  // per lane when the model varies (startLane)
-    criteria_ = setup_.config.criteria.template cast<B>();
+    loop_.model = setup_.model.template cast<B>();
+    loop_.plant = loop_.model;  // per lane when the model varies (startLane)
+    loop_.criteria = setup_.config.criteria.template cast<B>();
     // The initial state every lane starts from, towards the task's first
     // reference; every lane of sim_ starts there (startLane then sets a lane's run).
     const aurora_control::Reference<T> start = setup_.config.task.at(T(0));
@@ -180,8 +180,8 @@ class BatchWorker {
     LaneOps::set(delay_, l, static_cast<Int>(run.delay));
     LaneOps::set(count_, l, 1);  // history holds H(1) ...
     LaneOps::set(start_, l, static_cast<Int>(step_ % Capacity));  // ... at ring slot `step_`
-    setLane(gains_, l, run.gains);
-    if (setup_.varies_model) setLane(plant_, l, run.plant);
+    setLane(loop_.gains, l, run.gains);
+    if (setup_.varies_model) setLane(loop_.plant, l, run.plant);
     setLane(sim_.model, l, fresh_.model);
     setLane(sim_.memory, l, fresh_.memory);
     for (int i = 0; i < 4; ++i) LaneOps::set(sim_.metrics.ok[i], l, true);
@@ -198,7 +198,7 @@ class BatchWorker {
   // Lane l's run as a scalar sim, assembled into its result by the runner's
   // own rule (runnerResult).
   void finishLane(int l) {
-    aurora_control::PositioningSim<T, bool> lane;
+    aurora_control::LoopState<T, bool> lane;
     for (int i = 0; i < 4; ++i) lane.metrics.ok[i] = LaneOps::get(sim_.metrics.ok[i], l);
     lane.metrics.iae = LaneOps::get(sim_.metrics.iae, l);
     lane.metrics.itae = LaneOps::get(sim_.metrics.itae, l);
@@ -222,13 +222,9 @@ class BatchWorker {
     for (int j = 0; j < W; ++j) delayed.v[j] = gatherLanes<B>(history_.data(), read_base + I(Int(j * L)));
     B xc[aurora_sim::kStateSize];
     delayed.toState(xc);
-    // The task's reference at each lane's own time (k - 1) Ts (runner: timeOfStep).
-    const B t = xsimd::batch_cast<T>(count_ - one) * B(setup_.model.Ts);
-    const aurora_control::Reference<B> ref = setup_.config.task.at(t);
-    // Steps 2-5, the shared iteration.
-    B U[4];
-    aurora_control::positioningIteration<Law>(plant_, model_, criteria_, gains_, ref,
-                                              setup_.config.clamp_commands, xc, sim_, U);
+    // Steps 2-5, the closed loop's iteration k = count - 1 on every lane.
+    aurora_control::closedLoopStep<Law>(loop_, setup_.config.task, clamp_, xsimd::batch_cast<T>(count_ - one), xc,
+                                        sim_);
     // Step 6: append X to every lane's history, H(count + 1) at slot step_ + 1.
     ++step_;
     const long slot = step_ % Capacity;
@@ -257,12 +253,11 @@ class BatchWorker {
   long chunk_next_ = 0, chunk_end_ = 0;
 
   const SimSetup<T> setup_;
-  aurora_sim::ArdroneParams<B> model_;  // nominal: what the underactuated law inverts
-  aurora_sim::ArdroneParams<B> plant_;  // each lane's simulated drone
-  aurora_control::FeasibilityCriteria<B> criteria_;
-  aurora_control::LawGains<B> gains_;
-  aurora_control::PositioningSim<T, bool> fresh_;
-  aurora_control::PositioningSim<B, M> sim_;
+  // Each lane's drone and gains; the nominal model the underactuated law inverts.
+  aurora_control::LoopParams<B> loop_;
+  const aurora_control::ClampPolicy clamp_{setup_.config.clamp_commands, setup_.config.clamp_at_drone};
+  aurora_control::LoopState<T, bool> fresh_;
+  aurora_control::LoopState<B, M> sim_;
   std::vector<T, xsimd::aligned_allocator<T, 64>> history_;  // [slot][W][lane]
   bool active_[L];
   long index_[L];

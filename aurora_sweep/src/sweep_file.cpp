@@ -355,6 +355,68 @@ long maxDelay(const SweepSpec& spec) {
   return static_cast<long>(d);
 }
 
+// sweep.criteria: the thresholds of checks 1-4 and the metrics' dt.
+void readCriteria(const Reader& r, const YAML::Node& c, aurora_control::FeasibilityCriteria<double>& cr) {
+  r.onlyKeys(c, "sweep.criteria", {"max_error", "max_iae", "max_itae", "error_growth", "metric_dt"});
+  if (c["max_error"]) cr.max_error = r.threshold(c["max_error"], "sweep.criteria.max_error");
+  if (c["max_iae"]) cr.max_iae = r.threshold(c["max_iae"], "sweep.criteria.max_iae");
+  if (c["max_itae"]) cr.max_itae = r.threshold(c["max_itae"], "sweep.criteria.max_itae");
+  if (c["error_growth"]) cr.error_growth = r.threshold(c["error_growth"], "sweep.criteria.error_growth");
+  if (c["metric_dt"]) cr.metric_dt = r.number(c["metric_dt"], "sweep.criteria.metric_dt");
+  const double all[] = {cr.max_error, cr.max_iae, cr.max_itae, cr.error_growth, cr.metric_dt};
+  const char* names[] = {"max_error", "max_iae", "max_itae", "error_growth", "metric_dt"};
+  for (int i = 0; i < 5; ++i) {
+    if (!(all[i] > 0)) r.fail(std::string("sweep.criteria.") + names[i], "must be > 0");
+  }
+}
+
+// sweep.early_stop, clamp_commands and precision.
+void readRunOptions(const Reader& r, const YAML::Node& s, SweepSpec& spec) {
+  if (s["early_stop"]) spec.early_stop = r.boolean(s["early_stop"], "sweep.early_stop");
+  if (s["clamp_commands"]) spec.clamp_commands = r.boolean(s["clamp_commands"], "sweep.clamp_commands");
+  if (s["precision"]) {
+    const std::string p = r.text(s["precision"], "sweep.precision");
+    if (p == "double") spec.precision = Precision::kDouble;
+    else if (p == "float") spec.precision = Precision::kFloat;
+    else r.fail("sweep.precision", "= '" + p + "' is not accepted: 'double' or 'float'");
+  }
+}
+
+// The combinations: a points file, a sampling design or a grid of axes; then
+// every parameter has a value, and the largest delay is known.
+void readCombinations(const Reader& r, const YAML::Node& s, const std::string& sweep_dir,
+                      const std::string& config_dir, SweepSpec& spec) {
+  const bool has_points = static_cast<bool>(s["points"]);
+  if (has_points && s["order"]) r.fail("sweep.order", "is for grids: a points file lists the combinations in its order");
+  const bool design = readDesign(r, s, spec);
+  if (has_points && design) r.fail("sweep.points", "excludes a sampling design: give one or the other");
+  const YAML::Node params = s["parameters"];
+  if (!params && !has_points) {
+    r.fail("sweep.parameters", "is missing: give each parameter a value or a range (accepted " +
+                                   acceptedParamNames(spec.law) + "), or 'points'");
+  }
+  const Varied varied = params ? readParameters(r, params, design, has_points, spec) : Varied();
+  if (has_points) {
+    spec.points_file = resolve(r.text(s["points"], "sweep.points"), sweep_dir, config_dir);
+    readPoints(r, spec.points_file, "sweep.points", spec);
+    for (int id : spec.point_params) {
+      if (params && params[paramName(id)]) {
+        r.fail(std::string("sweep.parameters.") + paramName(id), "is also a column of the points file: give it once");
+      }
+    }
+  } else if (design) {
+    sampleDesign(r, varied, spec);
+  } else {
+    orderAxes(r, s, varied.axes, spec);
+  }
+  requireAll(r, spec);
+  spec.max_delay = maxDelay(spec);
+  // A design's delay range counts whole, whichever samples it happened to draw.
+  for (size_t j = 0; j < varied.sampled.size(); ++j) {
+    if (varied.sampled[j] == kParamDelay) spec.max_delay = std::max(spec.max_delay, static_cast<long>(varied.ranges[j].to));
+  }
+}
+
 SweepSpec parseSweepFile(const std::string& path, const std::string& config_dir) {
   Reader r(path);
   YAML::Node root;
@@ -390,60 +452,10 @@ SweepSpec parseSweepFile(const std::string& path, const std::string& config_dir)
 
   if (s["task"]) readSweepTask(r, s["task"], sweep_dir, config_dir, spec);
 
-  if (s["criteria"]) {
-    const YAML::Node c = s["criteria"];
-    r.onlyKeys(c, "sweep.criteria", {"max_error", "max_iae", "max_itae", "error_growth", "metric_dt"});
-    auto& cr = spec.criteria;
-    if (c["max_error"]) cr.max_error = r.threshold(c["max_error"], "sweep.criteria.max_error");
-    if (c["max_iae"]) cr.max_iae = r.threshold(c["max_iae"], "sweep.criteria.max_iae");
-    if (c["max_itae"]) cr.max_itae = r.threshold(c["max_itae"], "sweep.criteria.max_itae");
-    if (c["error_growth"]) cr.error_growth = r.threshold(c["error_growth"], "sweep.criteria.error_growth");
-    if (c["metric_dt"]) cr.metric_dt = r.number(c["metric_dt"], "sweep.criteria.metric_dt");
-    const double all[] = {cr.max_error, cr.max_iae, cr.max_itae, cr.error_growth, cr.metric_dt};
-    const char* names[] = {"max_error", "max_iae", "max_itae", "error_growth", "metric_dt"};
-    for (int i = 0; i < 5; ++i) {
-      if (!(all[i] > 0)) r.fail(std::string("sweep.criteria.") + names[i], "must be > 0");
-    }
-  }
+  if (s["criteria"]) readCriteria(r, s["criteria"], spec.criteria);
+  readRunOptions(r, s, spec);
 
-  if (s["early_stop"]) spec.early_stop = r.boolean(s["early_stop"], "sweep.early_stop");
-  if (s["clamp_commands"]) spec.clamp_commands = r.boolean(s["clamp_commands"], "sweep.clamp_commands");
-  if (s["precision"]) {
-    const std::string p = r.text(s["precision"], "sweep.precision");
-    if (p == "double") spec.precision = Precision::kDouble;
-    else if (p == "float") spec.precision = Precision::kFloat;
-    else r.fail("sweep.precision", "= '" + p + "' is not accepted: 'double' or 'float'");
-  }
-
-  const bool has_points = static_cast<bool>(s["points"]);
-  if (has_points && s["order"]) r.fail("sweep.order", "is for grids: a points file lists the combinations in its order");
-  const bool design = readDesign(r, s, spec);
-  if (has_points && design) r.fail("sweep.points", "excludes a sampling design: give one or the other");
-  const YAML::Node params = s["parameters"];
-  if (!params && !has_points) {
-    r.fail("sweep.parameters", "is missing: give each parameter a value or a range (accepted " +
-                                   acceptedParamNames(spec.law) + "), or 'points'");
-  }
-  const Varied varied = params ? readParameters(r, params, design, has_points, spec) : Varied();
-  if (has_points) {
-    spec.points_file = resolve(r.text(s["points"], "sweep.points"), sweep_dir, config_dir);
-    readPoints(r, spec.points_file, "sweep.points", spec);
-    for (int id : spec.point_params) {
-      if (params && params[paramName(id)]) {
-        r.fail(std::string("sweep.parameters.") + paramName(id), "is also a column of the points file: give it once");
-      }
-    }
-  } else if (design) {
-    sampleDesign(r, varied, spec);
-  } else {
-    orderAxes(r, s, varied.axes, spec);
-  }
-  requireAll(r, spec);
-  spec.max_delay = maxDelay(spec);
-  // A design's delay range counts whole, whichever samples it happened to draw.
-  for (size_t j = 0; j < varied.sampled.size(); ++j) {
-    if (varied.sampled[j] == kParamDelay) spec.max_delay = std::max(spec.max_delay, static_cast<long>(varied.ranges[j].to));
-  }
+  readCombinations(r, s, sweep_dir, config_dir, spec);
   return spec;
 }
 

@@ -38,48 +38,6 @@ namespace {
 
 using namespace aurora_sweep;
 
-const char* kUsage =
-    "usage: sweep --config FILE --out DIR [options]\n"
-    "\n"
-    "Runs every combination of a sweep file (a law's gains x delay x model factors, on\n"
-    "any task: a grid, a sampling design or a points file) and writes DIR/results.csv\n"
-    "(one row per combination), DIR/summary.json and DIR/*.png.\n"
-    "\n"
-    "options:\n"
-    "  --config FILE        sweep file (YAML), e.g. config/sweeps/positioning_delay.yaml (the\n"
-    "                       thesis grid) or config/sweeps/underactuated_13.yaml (13 parameters)\n"
-    "  --out DIR            output folder (created; must be writable)\n"
-    "  --backend NAME       scalar (one simulation at a time, one thread), cpu (SIMD lanes\n"
-    "                       on all cores), cuda (one simulation per GPU thread), or auto\n"
-    "                       (cuda when a device works, else cpu). Default: auto\n"
-    "  --precision P        double or float (default: the sweep file's, else double)\n"
-    "  --threads N          cpu backend threads (default: all cores)\n"
-    "  --block-size N       cuda threads per block, up to what the kernel's registers allow\n"
-    "                       (checked before the run; default: chosen by occupancy)\n"
-    "  --config-dir DIR     where vehicle files are looked up (default: $AURORA_CONFIG_DIR, else\n"
-    "                       the aurora_config package on the ROS package path)\n"
-    "  --output FORMAT      csv (results.csv), hdf5 (results.h5, columns; h5py reads it), both,\n"
-    "                       or none (summary.json and plots only). Default: csv up to 1,000,000\n"
-    "                       combinations, hdf5 above\n"
-    "  --rows WHICH         all (default) or feasible: which combinations the results hold\n"
-    "  --chunk-size N       combinations per chunk (default: a 64th of the sweep, within\n"
-    "                       [4096, 262144]): each finished chunk is\n"
-    "                       written to DIR/progress/ at once; the same command on the same\n"
-    "                       DIR after a crash computes only the missing chunks\n"
-    "  --overwrite          replace another sweep's results in DIR (otherwise refused)\n"
-    "  --mixed-backends     MPI: accept ranks computing on different backends (e.g. auto on\n"
-    "                       hosts with and without a GPU); each chunk records its backend\n"
-    "  --ignore-free-space  run even when the estimated bytes exceed the free space\n"
-    "                       (the plan printed at the start says both)\n"
-    "  --no-plots           skip the PNG plots\n"
-    "  --rviz               publish the feasible set as a latched MarkerArray\n"
-    "                       (/sweep/feasible, frame 'sweep') and keep running until Ctrl-C\n"
-    "  --quiet              no progress on stderr\n"
-    "  -h, --help           this text\n"
-    "\n"
-    "The cpu backend picks at run time the widest SIMD build this CPU runs;\n"
-    "AURORA_SWEEP_SIMD=avx512|avx2|sse4_2|none forces one (none: no SIMD lanes).\n";
-
 // plot_sweep is installed beside this program (devel space: catkin's relay;
 // install space: the script), so it is found without a source path.
 std::string besideThisProgram(const std::string& name) {
@@ -103,96 +61,6 @@ int runProgram(const std::string& program, const std::vector<std::string>& args)
     if (errno != EINTR) return -1;
   }
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
-
-[[noreturn]] void usageError(const std::string& msg) {
-  std::fprintf(stderr, "sweep: %s\n\n%s", msg.c_str(), kUsage);
-  std::exit(2);
-}
-
-Options parse(int argc, char** argv) {
-  Options o;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    auto value = [&](const char* name) -> std::string {
-      if (i + 1 >= argc) usageError(std::string(name) + " needs a value");
-      return argv[++i];
-    };
-    auto positive = [&](const char* name) {
-      const std::string v = value(name);
-      char* end = nullptr;
-      const long n = std::strtol(v.c_str(), &end, 10);
-      if (*end != '\0' || n < 1 || n > 65536) {
-        usageError(std::string(name) + " '" + v + "' is invalid: accepted a whole number in [1, 65536]");
-      }
-      return static_cast<int>(n);
-    };
-    if (a == "-h" || a == "--help") {
-      std::fputs(kUsage, stdout);
-      std::exit(0);
-    } else if (a == "--config") {
-      o.config = value("--config");
-    } else if (a == "--out") {
-      o.out = value("--out");
-    } else if (a == "--backend") {
-      o.backend = value("--backend");
-      if (o.backend != "scalar" && o.backend != "cpu" && o.backend != "cuda" && o.backend != "auto") {
-        usageError("--backend '" + o.backend + "' is unknown: accepted scalar, cpu, cuda, auto");
-      }
-    } else if (a == "--precision") {
-      o.precision = value("--precision");
-      if (o.precision != "double" && o.precision != "float") {
-        usageError("--precision '" + o.precision + "' is unknown: accepted double, float");
-      }
-    } else if (a == "--threads") {
-      o.threads = positive("--threads");
-    } else if (a == "--block-size") {
-      o.block_size = positive("--block-size");
-      if (o.block_size > 1024) {
-        usageError("--block-size " + std::to_string(o.block_size) + " is invalid: CUDA blocks hold at most 1024 "
-                   "threads (a kernel may allow fewer: checked against its registers before the run)");
-      }
-    } else if (a == "--mixed-backends") {
-      o.mixed_backends = true;
-    } else if (a == "--config-dir") {
-      o.config_dir = value("--config-dir");
-    } else if (a == "--output") {
-      o.output = value("--output");
-      if (o.output != "csv" && o.output != "hdf5" && o.output != "both" && o.output != "none") {
-        usageError("--output '" + o.output + "' is unknown: accepted csv, hdf5, both, none");
-      }
-    } else if (a == "--rows") {
-      o.rows = value("--rows");
-      if (o.rows != "all" && o.rows != "feasible") {
-        usageError("--rows '" + o.rows + "' is unknown: accepted all, feasible");
-      }
-    } else if (a == "--chunk-size") {
-      const std::string v = value("--chunk-size");
-      char* end = nullptr;
-      o.chunk_size = std::strtol(v.c_str(), &end, 10);
-      if (*end != '\0' || o.chunk_size < 1 || o.chunk_size > (1L << 30)) {
-        usageError("--chunk-size '" + v + "' is invalid: accepted a whole number in [1, 1073741824]");
-      }
-    } else if (a == "--overwrite") {
-      o.overwrite = true;
-    } else if (a == "--ignore-free-space") {
-      o.ignore_free_space = true;
-    } else if (a == "--no-plots") {
-      o.plots = false;
-    } else if (a == "--rviz") {
-      o.rviz = true;
-    } else if (a == "--quiet") {
-      o.quiet = true;
-    } else if (a.rfind("__", 0) == 0) {
-      // ROS remapping arguments (rosrun/roslaunch): handled by ros::init with --rviz.
-    } else {
-      usageError("unknown argument '" + a + "'");
-    }
-  }
-  if (o.config.empty()) usageError("--config FILE is required");
-  if (o.out.empty()) usageError("--out DIR is required");
-  if (o.threads == 0) o.threads = std::max(1u, std::thread::hardware_concurrency());
-  return o;
 }
 
 // Prints progress with an ETA to stderr once a second while `total` runs.
@@ -455,7 +323,7 @@ int main(int argc, char** argv) {
       return 2;
     }
   }
-  const Options opt = parse(argc, argv);
+  const Options opt = parseOptions(argc, argv);
   if (mpi && opt.rviz) {
     std::fprintf(stderr, "sweep: --rviz is for a single process: run without mpirun\n");
     return 2;

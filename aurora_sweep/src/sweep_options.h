@@ -1,4 +1,4 @@
-// The sweep program's options (sweep_main.cpp parses them).
+// The sweep program's options, parsed by parseOptions (sweep_options.cpp).
 #pragma once
 
 #include <string>
@@ -15,5 +15,9 @@ struct Options {
   bool ignore_free_space = false;
   bool mixed_backends = false;  // MPI: accept ranks on different backends (chunks record theirs)
 };
+
+// The options of the command line; --help prints the usage and exits 0, a
+// refused value prints one line naming it and the usage, and exits 2.
+Options parseOptions(int argc, char** argv);
 
 }  // namespace aurora_sweep

@@ -54,9 +54,8 @@ TEST(FlightEquivalence, RosLoopEqualsTheFlightRunnerBitForBit) {
   s0.reset();
   offline[0].assign(s0.X, s0.X + 12);
   const FlightResult r = runFlight(params, set, task, steps,
-                                   [&](long, const aurora_sim::ArdroneState<double>& s,
-                                       const Reference<double>&, const double*) {
-                                     offline.emplace_back(s.X, s.X + 12);
+                                   [&](const LoopObservation<double>& o, double) {
+                                     offline.emplace_back(o.after.model.X, o.after.model.X + 12);
                                    });
   std::printf("flight runner: %s on a %g s task, delay %ld: RMS tracking error %.4f m, max %.4f m\n",
               lawName(set.law), task.duration(), set.delay, r.rms_tracking_error, r.max_tracking_error);

@@ -14,7 +14,7 @@
 
 #include "aurora_control/flight_runner.h"
 #include "aurora_control/law_yaml.h"
-#include "aurora_control/positioning_study.h"
+#include "aurora_control/closed_loop.h"
 #include "aurora_control/task_yaml.h"
 #include "aurora_sim/ros_conversions.h"
 #include "aurora_sim/ros_params.h"
@@ -91,8 +91,9 @@ TEST(RealLaunch, MissionCompletesCloseToTheSimulatedRun) {
   const Task<double> task = readTask(YamlReader(), YAML::LoadFile(task_file)["task"], "task");
   std::vector<std::vector<double>> sim(1, std::vector<double>{0.0, 0.0, 0.75});
   runFlight(params, set, task, studyIterationCount(task.duration(), params.Ts),
-            [&](long, const aurora_sim::ArdroneState<double>& s, const Reference<double>&, const double*) {
-              sim.push_back({s.X[0], s.X[1], s.X[2]});
+            [&](const LoopObservation<double>& o, double) {
+              const double* X = o.after.model.X;
+              sim.push_back({X[0], X[1], X[2]});
             });
 
   double worst = 0.0, worst_t = 0.0;

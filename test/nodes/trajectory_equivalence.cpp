@@ -57,9 +57,8 @@ TEST(TrajectoryEquivalence, RosLoopEqualsOfflineRunnerBitForBit) {
     offline[0].assign(s0.X, s0.X + 12);
   }
   runPositioning(params, cfg, PdGains<double>{kp, kd}, delay,
-                 [&](long, const PositioningSim<double, bool>& sim, const double*,
-                     const double*) {
-                   offline.emplace_back(sim.model.X, sim.model.X + 12);
+                 [&](const LoopObservation<double>& o) {
+                   offline.emplace_back(o.after.model.X, o.after.model.X + 12);
                  });
   ASSERT_GE(offline.size(), static_cast<size_t>(steps + 1));
 

@@ -1,15 +1,17 @@
-// The controller node's per-cycle computation, ROS-free: received states go
-// into the delay buffer; each cycle the chosen law (the delay study's PD law
-// with saturation, eq. 3.1, or the underactuated 12-gain law) runs on the
-// delayed state (docs/delay-and-study.md), the command is clamped as the
-// drivers do (optional), and the study's metrics accumulate once per state
-// step. The node and the offline `replay` tool both call this class, so a
-// replay of a bag reproduces every command.
+// The controller node's per-cycle computation, ROS-free: the controller half
+// of the closed loop (closed_loop.h) in its incremental form. Received states
+// go into the delay buffer; each cycle the chosen law (the delay study's PD
+// law with saturation, eq. 3.1, or the underactuated 12-gain law) runs on the
+// delayed state (docs/delay-and-study.md) through controllerCommand, the
+// command is clamped as the drivers do (optional), and the study's metrics
+// accumulate once per state step at the loop clock's time. The node and the
+// offline `replay` tool both call this class, so a replay of a bag
+// reproduces every command.
 #pragma once
 
 #include <cstdint>
 
-#include "aurora_control/control_law.h"
+#include "aurora_control/closed_loop.h"
 #include "aurora_control/delay_buffer.h"
 #include "aurora_control/feasibility.h"
 #include "aurora_control/pd_controller.h"
@@ -34,7 +36,7 @@ struct ControllerSettings {
   aurora_sim::ArdroneParams<double> vehicle{};  // the model the underactuated law inverts
   long delay = 0;          // [samples]
   bool clamp_commands = true;
-  double Ts = 1.0 / 30.0;  // [s], the vehicle's sample time (metric time = step Ts)
+  double Ts = 1.0 / 30.0;  // [s], the vehicle's sample time (the loop clock's step)
 };
 
 struct ControlOutput {
@@ -99,13 +101,11 @@ class DelayedController {
     out.delay_in_force = history_.delayInForce(settings.delay);
     out.delay_pending = history_.pendingUntilInForce(settings.delay);
     const LawGains<double> gains{settings.gains, settings.underactuated};
-    if (settings.law == LawType::kPdSaturated) {
-      lawCommand<LawType::kPdSaturated>(settings.vehicle, gains, memory_, ref, used.X, out.U_unclamped,
-                                        out.position_error);
-    } else {
-      lawCommand<LawType::kUnderactuated>(settings.vehicle, gains, memory_, ref, used.X, out.U_unclamped,
-                                          out.position_error);
-    }
+    withLaw(settings.law, [&](auto law) {
+      controllerCommand<decltype(law)::value>(settings.vehicle, gains, memory_, ref, used.X,
+                                              settings.clamp_commands, out.U_unclamped, out.U,
+                                              out.position_error);
+    });
     finish(out);
     return out;
   }
@@ -128,15 +128,11 @@ class DelayedController {
 
  private:
   void finish(ControlOutput& out) {
-    for (int i = 0; i < 4; ++i) {
-      out.U[i] = settings.clamp_commands ? aurora_sim::clampUnit(out.U_unclamped[i])
-                                         : out.U_unclamped[i];
-    }
     // Metrics once per state step (a timer cycle without a new state, or a
-    // re-sent state, does not count twice); t = step Ts.
+    // re-sent state, does not count twice), at the loop clock's time.
     const long step = newest().step;
     if (step != metrics_step_) {
-      metrics_.accumulate(criteria_, out.position_error, out.U, double(step) * settings.Ts);
+      metrics_.accumulate(criteria_, out.position_error, out.U, clock_.at(step, settings.Ts));
       metrics_step_ = step;
     }
     out.iae = metrics_.iae;
@@ -149,6 +145,7 @@ class DelayedController {
   PositioningMetrics<double, bool> metrics_;
   FeasibilityCriteria<double> criteria_ = FeasibilityCriteria<double>::study();
   long metrics_step_ = -1;
+  LoopClock clock_;
 };
 
 }  // namespace aurora_control

@@ -1,22 +1,17 @@
 // One whole flight offline, with either law and any task, computed exactly
-// as the lockstep ROS loop computes it: iteration k (0-based) hands state k
-// to the controller core the node uses (DelayedController: delay buffer,
-// law, clamp, metrics), asks for the reference at task time k Ts, and steps
-// the model with the command clamped to [-1, 1] as the sim (and the drivers)
-// do. A rostest checks the ROS loop equals it to the last bit.
+// as the lockstep ROS loop computes it: the offline runner's closed loop
+// (positioning_runner.h) with the node's settings (its law, gains, delay and
+// clamp), the task's steps 0..N, and the command clamped to [-1, 1] by the
+// drone as the sim (and the drivers) do. A rostest checks the ROS loop
+// equals it to the last bit.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
-#include <memory>
-#include <stdexcept>
-#include <string>
 
 #include "aurora_control/delayed_controller.h"
-#include "aurora_control/limits.h"
-#include "aurora_control/task.h"
+#include "aurora_control/positioning_runner.h"
 #include "aurora_control/tracking.h"
-#include "aurora_control/waypoint_task.h"
-#include "aurora_sim/ardrone_model.h"
 
 namespace aurora_control {
 
@@ -28,46 +23,32 @@ struct FlightResult {
   double final_pos[3] = {0, 0, 0};    // [m]
 };
 
-constexpr int kFlightHistory = kDelayHistory;  // the node's history (limits.h)
-
-// observe(k, state after step k, reference of iteration k - 1, command of
-// iteration k - 1) after each model step (k 1-based). Iteration k hands
+// observe(LoopObservation<double>, tracking error of step k [m]) after each
+// iteration. Iteration k hands
 // state k (the state at task time k Ts) to the controller with the
 // reference of that time: `iterations` = taskStepCount() flies a task's
 // steps 0..N.
 template <typename Observer>
 FlightResult runFlight(const aurora_sim::ArdroneParams<double>& p, const ControllerSettings& settings,
                        const Task<double>& task, long iterations, Observer observe) {
-  if (settings.delay < 0 || settings.delay >= kFlightHistory) {
-    throw std::invalid_argument("delay " + std::to_string(settings.delay) +
-                                " samples is outside the accepted range [0, " +
-                                std::to_string(kFlightHistory - 1) + "]");
-  }
-  std::unique_ptr<DelayedController<kFlightHistory>> core(new DelayedController<kFlightHistory>());
-  core->settings = settings;
-  aurora_sim::ArdroneState<double> model;
-  model.reset();
+  const StudyRun<double> run{p, settings.vehicle, LawGains<double>{settings.gains, settings.underactuated},
+                             settings.delay};
+  RunnerConfig<double> cfg;
+  cfg.task = task;
+  cfg.clamp_commands = settings.clamp_commands;
+  cfg.clamp_at_drone = true;  // the sim's clamp
   FlightResult r;
   double sum_sq = 0.0;
-  for (long k = 0; k < iterations; ++k) {
-    StateSample sample;
-    sample.step = k;
-    for (int i = 0; i < aurora_sim::kStateSize; ++i) sample.X[i] = model.X[i];
-    core->push(sample);
-    const Reference<double> ref = task.at(WaypointTask<double>::timeOfStep(k, p.Ts));
-    const double e = trackingError(ref, sample.X);  // state k against reference k
+  const RunnerResult done = runLoop(settings.law, run, cfg, iterations, [&](const LoopObservation<double>& o) {
+    const double e = trackingError(o.step.ref, o.X_before);  // state k against reference k
     sum_sq += e * e;
     r.max_tracking_error = std::max(r.max_tracking_error, e);
-    const ControlOutput out = core->compute(ref);
-    double U[4];
-    for (int i = 0; i < 4; ++i) U[i] = aurora_sim::clampUnit(out.U[i]);  // the sim's clamp
-    aurora_sim::ardroneStep(p, model, U, aurora_sim::Disturbance<double>::zero());
-    r.iae = out.iae, r.itae = out.itae, r.iasc = out.iasc;
-    r.steps = k + 1;
-    observe(k + 1, model, ref, U);
-  }
+    observe(o, e);
+  });
+  r.steps = done.steps;
+  r.iae = done.iae, r.itae = done.itae, r.iasc = done.iasc;
   r.rms_tracking_error = r.steps > 0 ? std::sqrt(sum_sq / double(r.steps)) : 0.0;
-  for (int i = 0; i < 3; ++i) r.final_pos[i] = model.X[i];
+  for (int i = 0; i < 3; ++i) r.final_pos[i] = done.final_pos[i];
   return r;
 }
 

@@ -1,6 +1,8 @@
-// The ROS-free runner of one whole positioning-study simulation (plain scalar
-// loop, one simulation at a time). The sweep's `scalar` backend is this
-// function; the rostests compare the ROS loop with it.
+// The offline runner: one whole run of the closed loop (closed_loop.h), one
+// simulation at a time. The sweep's `scalar` backend and each CUDA thread
+// run it as the study does (no clamp); the flight tool (flight_runner.h) as
+// the lockstep ROS loop does (the drone clamps). The rostests compare the ROS
+// loop with it.
 #pragma once
 
 #include <stdexcept>
@@ -8,7 +10,7 @@
 
 #include "aurora_control/delay_buffer.h"
 #include "aurora_control/limits.h"
-#include "aurora_control/positioning_study.h"
+#include "aurora_control/closed_loop.h"
 
 namespace aurora_control {
 
@@ -16,7 +18,8 @@ template <typename T>
 struct RunnerConfig {
   Task<T> task = positioningTask(T(2), T(1), T(2), T(60));
   FeasibilityCriteria<T> criteria = FeasibilityCriteria<T>::study();
-  bool clamp_commands = false;  // false reproduces the study; true matches the drivers
+  bool clamp_commands = false;  // the controller clamps: false reproduces the study, true the node
+  bool clamp_at_drone = false;  // the drone clamps what it receives (the sim node and the drivers)
   bool early_stop = false;      // stop at the first failed check
 };
 
@@ -43,6 +46,16 @@ struct RunnerResult {
 // node's (limits.h).
 constexpr long kMaxRunnerDelay = kMaxDelaySamples;
 
+// What an observer sees after each iteration.
+template <typename T>
+struct LoopObservation {
+  long k;                            // the iteration (0-based): task time k Ts
+  const T* X_before;                 // the state it started from (X_k, 12)
+  const LoopState<T, bool>& after;   // after the model step (X_(k+1), metrics)
+  const LoopStep<T>& step;           // its reference and the command applied
+  const T* xc;                       // the delayed state the law received (12)
+};
+
 struct NoObserver {
   template <typename... Args>
   AURORA_HD void operator()(const Args&...) const {}
@@ -57,7 +70,7 @@ AURORA_HD inline Mask stoppedEarly(bool early_stop, const Mask& feasible) {
 
 // A finished run's result (the SIMD engine builds one lane's sim and calls it).
 template <typename T>
-AURORA_HD inline RunnerResult runnerResult(const PositioningSim<T, bool>& sim, long steps) {
+AURORA_HD inline RunnerResult runnerResult(const LoopState<T, bool>& sim, long steps) {
   RunnerResult r;
   for (int i = 0; i < 4; ++i) r.ok[i] = sim.metrics.ok[i];
   r.feasible = sim.metrics.feasible();
@@ -69,56 +82,64 @@ AURORA_HD inline RunnerResult runnerResult(const PositioningSim<T, bool>& sim, l
   return r;
 }
 
-// One whole simulation of law `Law` with a history of `Capacity` samples
-// (delay < Capacity, checked by the caller). No exceptions, no allocation:
-// this is also the CUDA kernel's per-thread body. `iterations` comes from
-// studyIterationCount() on the host. Iteration k (1-based) gives the law the
-// delayed state by the delay rule and the task's reference at (k - 1) Ts.
+// One whole run of law `Law` with a history of `Capacity` samples (delay <
+// Capacity, checked by the caller). No exceptions, no allocation: this is
+// also the CUDA kernel's per-thread body. `iterations`: studyIterationCount()
+// for the study, taskStepCount() for a flight. Iteration k (0-based) keeps
+// X_k in the history and hands the law the delayed state by the delay rule.
 template <LawType Law, typename T, int Capacity, typename Observer>
-AURORA_HD RunnerResult runPositioningCore(const StudyRun<T>& run, const RunnerConfig<T>& cfg,
-                                          long iterations, Observer& observe) {
-  using Sim = PositioningSim<T, bool>;
+AURORA_HD RunnerResult runClosedLoop(const StudyRun<T>& run, const RunnerConfig<T>& cfg, long iterations,
+                                     Observer& observe) {
   using Sample = LawSample<T, Law>;
-  Sim sim;
-  sim.reset(cfg.task.at(T(0)).pos);
+  const LoopParams<T> params{run.plant, run.model, run.gains, cfg.criteria};
+  const ClampPolicy clamp{cfg.clamp_commands, cfg.clamp_at_drone};
+  LoopState<T, bool> s;
+  s.reset(cfg.task.at(T(0)).pos);
   // On the stack: Capacity x (6 or 12) scalars, no allocation.
   DelayBuffer<Sample, Capacity> history;
-  history.push(Sample::fromState(sim.model.X));
   long k = 0;
   while (k < iterations) {
-    ++k;
-    T xc[aurora_sim::kStateSize];
+    history.push(Sample::fromState(s.model.X));  // H(k + 1) = X_k
+    T xc[aurora_sim::kStateSize], X_before[aurora_sim::kStateSize];
     history.delayed(run.delay).toState(xc);
-    const Reference<T> ref = cfg.task.at(WaypointTask<T>::timeOfStep(k - 1, run.plant.Ts));
-    T U[4];
-    positioningIteration<Law>(run.plant, run.model, cfg.criteria, run.gains, ref, cfg.clamp_commands, xc,
-                              sim, U);
-    history.push(Sample::fromState(sim.model.X));
-    observe(k, sim, U, xc);
-    if (stoppedEarly(cfg.early_stop, sim.metrics.feasible())) break;
+    for (int i = 0; i < aurora_sim::kStateSize; ++i) X_before[i] = s.model.X[i];
+    const LoopStep<T> step = closedLoopStep<Law>(params, cfg.task, clamp, T(k), xc, s);
+    observe(LoopObservation<T>{k, X_before, s, step, xc});
+    ++k;
+    if (stoppedEarly(cfg.early_stop, s.metrics.feasible())) break;
   }
-  return runnerResult(sim, k);
+  return runnerResult(s, k);
 }
 
-// Runs one simulation; `observe(k, sim, U, xc)` is called after each model
-// step (k 1-based, xc the 12-state the law received) for callers that record
-// the trajectory.
-template <typename T, typename Observer = NoObserver>
-RunnerResult runStudy(LawType law, const StudyRun<T>& run, const RunnerConfig<T>& cfg,
-                      Observer observe = Observer()) {
-  if (run.delay < 0 || run.delay > kMaxRunnerDelay) {
-    throw std::invalid_argument("delay " + std::to_string(run.delay) +
-                                " samples is outside the accepted range [0, " +
+// Refuses a delay the runner's history cannot hold.
+inline void checkRunnerDelay(long delay) {
+  if (delay < 0 || delay > kMaxRunnerDelay) {
+    throw std::invalid_argument("delay " + std::to_string(delay) + " samples is outside the accepted range [0, " +
                                 std::to_string(kMaxRunnerDelay) + "]");
   }
-  const long n = studyIterationCount(double(cfg.task.duration()), double(run.plant.Ts));
+}
+
+// Runs `iterations` iterations; `observe(LoopObservation)` is called after
+// each (for callers that record the trajectory).
+template <typename T, typename Observer = NoObserver>
+RunnerResult runLoop(LawType law, const StudyRun<T>& run, const RunnerConfig<T>& cfg, long iterations,
+                     Observer observe = Observer()) {
+  checkRunnerDelay(run.delay);
   RunnerResult result;
   withHistoryCapacity(run.delay, [&](auto capacity) {
     withLaw(law, [&](auto law_tag) {
-      result = runPositioningCore<decltype(law_tag)::value, T, decltype(capacity)::value>(run, cfg, n, observe);
+      result = runClosedLoop<decltype(law_tag)::value, T, decltype(capacity)::value>(run, cfg, iterations, observe);
     });
   });
   return result;
+}
+
+// The study's run: its task's iterations (studyIterationCount).
+template <typename T, typename Observer = NoObserver>
+RunnerResult runStudy(LawType law, const StudyRun<T>& run, const RunnerConfig<T>& cfg,
+                      Observer observe = Observer()) {
+  const long n = studyIterationCount(double(cfg.task.duration()), double(run.plant.Ts));
+  return runLoop(law, run, cfg, n, observe);
 }
 
 // The delay study's PD law on drone `p` (the thesis's runs).

@@ -12,6 +12,16 @@
 
 namespace aurora_control {
 
+// Task time of iteration k: k Ts, from the integer step, so the ROS loop
+// and the offline runner switch waypoints at the same step
+// (docs/architecture.md, "Step index and metric time"). T is a scalar or a
+// batch of per-lane step numbers.
+template <typename T>
+AURORA_HD inline T taskTime(const T& k, const T& Ts) {
+  return k * Ts;
+}
+inline double taskTime(long k, double Ts) { return taskTime(double(k), Ts); }
+
 enum class TaskType : int { kWaypoints = 0, kCircle = 1, kLemniscate = 2 };
 
 template <typename T>

@@ -31,10 +31,6 @@ struct WaypointTask {
     }
     return count - 1;
   }
-
-  // Task time of step k: k Ts. Computed from the integer step, so the ROS
-  // loop and the offline runner switch waypoints at the same step.
-  AURORA_HD static T timeOfStep(long step, T Ts) { return T(step) * Ts; }
 };
 
 }  // namespace aurora_control

@@ -113,14 +113,13 @@ AURORA_HD inline void solve3(const T M[3][3], const T b[3], T x[3]) {
   x[2] = (c02 * b[0] + c12 * b[1] + c22 * b[2]) / det;
 }
 
-// Advances the model by one robot sample Ts with command U (model order
-// [u_phi u_theta u_zdot u_psidot]; not clamped here: the delay study does not
-// clamp, the ROS sim clamps before calling). Steps 1-9 of docs/model.md.
+// Steps 1-5 of docs/model.md, "One model step": the on-board controller's
+// reference and PD from command U, the motor voltages, the motor dynamics and
+// the rotor thrusts F.
 template <typename T>
-AURORA_HD inline void ardroneStep(const ArdroneParams<T>& p, ArdroneState<T>& s, const T U[4],
-                                  const Disturbance<T>& dist) {
+AURORA_HD inline void rotorThrusts(const ArdroneParams<T>& p, ArdroneState<T>& s, const T U[4], T F[4]) {
   using std::tanh;
-  T* X = s.X;
+  const T* X = s.X;
 
   // 1. On-board reference from the command (signs as in the model).
   for (int c = 0; c < 4; ++c) s.Xra[c] = s.Xr[c];
@@ -158,8 +157,18 @@ AURORA_HD inline void ardroneStep(const ArdroneParams<T>& p, ArdroneState<T>& s,
   }
 
   // 5. Thrusts.
-  T F[4];
   for (int j = 0; j < 4; ++j) F[j] = p.Cf * (s.W[j] * s.W[j]);
+}
+
+// Advances the model by one robot sample Ts with command U (model order
+// [u_phi u_theta u_zdot u_psidot]; not clamped here: the delay study does not
+// clamp, the ROS sim clamps before calling). Steps 1-9 of docs/model.md.
+template <typename T>
+AURORA_HD inline void ardroneStep(const ArdroneParams<T>& p, ArdroneState<T>& s, const T U[4],
+                                  const Disturbance<T>& dist) {
+  T* X = s.X;
+  T F[4];
+  rotorThrusts(p, s, U, F);
 
   // 6. Previous state (on-board channels only; see onboardChannel).
   for (int c = 0; c < 4; ++c) s.Xa[c] = X[onboardChannel(c)];

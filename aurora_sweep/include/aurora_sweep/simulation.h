@@ -90,8 +90,7 @@ AURORA_HD inline SimResult simulateCombination(const SimSetup<T>& setup, const G
                                                long index) {
   const aurora_control::StudyRun<T> run = studyRun(setup, grid.decode(index));
   aurora_control::NoObserver none;
-  return compactResult(aurora_control::runPositioningCore<Law, T, Capacity>(run, setup.config,
-                                                                            setup.iterations, none));
+  return compactResult(aurora_control::runClosedLoop<Law, T, Capacity>(run, setup.config, setup.iterations, none));
 }
 
 }  // namespace aurora_sweep
