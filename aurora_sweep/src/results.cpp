@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "aurora_sweep/chunk_store.h"
+#include "aurora_sweep/result_columns.h"
 
 namespace aurora_sweep {
 
@@ -28,7 +29,8 @@ class CsvWriter : public ResultsWriter {
     if (!f_) throw std::runtime_error("cannot write '" + path + "'");
     std::fprintf(f_, "index");
     for (int id : params_) std::fprintf(f_, ",%s", paramName(id));
-    std::fprintf(f_, ",ok1,ok2,ok3,ok4,feasible,iae,itae,iasc,steps,x,y,z\n");
+    for (const ResultColumn& c : kResultColumns) std::fprintf(f_, ",%s", c.name);
+    std::fprintf(f_, "\n");
   }
   ~CsvWriter() override {
     if (f_) std::fclose(f_);
@@ -44,9 +46,8 @@ class CsvWriter : public ResultsWriter {
         if (id == kParamDelay) std::fprintf(f_, ",%ld", c.delay());
         else std::fprintf(f_, ",%.17g", c.v[id]);
       }
-      std::fprintf(f_, ",%d,%d,%d,%d,%d,%.17g,%.17g,%.17g,%d,%.9g,%.9g,%.9g\n", r.ok & 1, (r.ok >> 1) & 1, (r.ok >> 2) & 1, (r.ok >> 3) & 1,
-                   feasible(r), r.iae, r.itae, r.iasc, r.steps, r.final_pos[0], r.final_pos[1],
-                   r.final_pos[2]);
+      for (int k = 0; k < kResultColumnCount; ++k) print(columnValue(r, k));
+      std::fprintf(f_, "\n");
       ++rows_;
     }
   }
@@ -58,6 +59,16 @@ class CsvWriter : public ResultsWriter {
   long rows() const override { return rows_; }
 
  private:
+  // Doubles to the last bit (%.17g), the float positions to theirs (%.9g).
+  void print(const ColumnValue& v) {
+    switch (v.type) {
+      case ColumnType::kFlag: std::fprintf(f_, ",%d", v.flag); break;
+      case ColumnType::kDouble: std::fprintf(f_, ",%.17g", v.real); break;
+      case ColumnType::kInt32: std::fprintf(f_, ",%d", v.whole); break;
+      case ColumnType::kFloat: std::fprintf(f_, ",%.9g", v.single); break;
+    }
+  }
+
   std::string path_;
   GridView grid_;
   std::vector<int> params_;  // ParamIds of the parameter columns
@@ -142,6 +153,21 @@ void writeResultsCsv(const std::string& path, const SweepSpec& spec,
   w->close();
 }
 
+namespace {
+
+// result_columns.h as JSON: what plot_sweep and other readers go by.
+nlohmann::json resultColumnsJson() {
+  const char* types[] = {"flag", "double", "int32", "float"};
+  nlohmann::json columns = nlohmann::json::array();
+  for (const ResultColumn& c : kResultColumns) {
+    columns.push_back({{"name", c.name}, {"type", types[static_cast<int>(c.type)]}, {"unit", c.unit},
+                       {"doc", c.doc}});
+  }
+  return columns;
+}
+
+}  // namespace
+
 void writeSummaryJson(const std::string& path, const SweepSpec& spec, const RunInfo& info,
                       const Counts& counts, const nlohmann::json& extra) {
   using nlohmann::json;
@@ -166,6 +192,7 @@ void writeSummaryJson(const std::string& path, const SweepSpec& spec, const RunI
       {"vehicle_file", spec.vehicle_file},
       {"controller", spec.controller},
       {"parameters", parameters},
+      {"result_columns", resultColumnsJson()},
       {"fixed", fixed},
       {"task_duration_s", spec.duration()},
       {"order", order},

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "aurora_sweep/chunk_store.h"
+#include "aurora_sweep/result_columns.h"
 #include "aurora_sweep/results.h"
 
 namespace aurora_sweep {
@@ -30,6 +31,17 @@ struct Column {
   std::vector<unsigned char> buffer;  // rows not written yet, `size` bytes each
 };
 
+// A result column's HDF5 column (result_columns.h).
+Column columnOf(const ResultColumn& c) {
+  switch (c.type) {
+    case ColumnType::kFlag: return Column{c.name, H5T_NATIVE_UINT8, 1};
+    case ColumnType::kDouble: return Column{c.name, H5T_NATIVE_DOUBLE, 8};
+    case ColumnType::kInt32: return Column{c.name, H5T_NATIVE_INT32, 4};
+    case ColumnType::kFloat: break;
+  }
+  return Column{c.name, H5T_NATIVE_FLOAT, 4};
+}
+
 class Hdf5Writer : public ResultsWriter {
  public:
   Hdf5Writer(const std::string& path, const SweepSpec& spec, bool feasible_only)
@@ -42,13 +54,7 @@ class Hdf5Writer : public ResultsWriter {
       columns_.push_back(id == kParamDelay ? Column{paramName(id), H5T_NATIVE_INT64, 8}
                                            : Column{paramName(id), H5T_NATIVE_DOUBLE, 8});
     }
-    columns_.insert(columns_.end(), {
-                {"ok1", H5T_NATIVE_UINT8, 1},   {"ok2", H5T_NATIVE_UINT8, 1},
-                {"ok3", H5T_NATIVE_UINT8, 1},   {"ok4", H5T_NATIVE_UINT8, 1},
-                {"feasible", H5T_NATIVE_UINT8, 1}, {"iae", H5T_NATIVE_DOUBLE, 8},
-                {"itae", H5T_NATIVE_DOUBLE, 8}, {"iasc", H5T_NATIVE_DOUBLE, 8},
-                {"steps", H5T_NATIVE_INT32, 4}, {"x", H5T_NATIVE_FLOAT, 4},
-                {"y", H5T_NATIVE_FLOAT, 4},     {"z", H5T_NATIVE_FLOAT, 4}});
+    for (const ResultColumn& c : kResultColumns) columns_.push_back(columnOf(c));
     const hsize_t zero = 0, unlimited = H5S_UNLIMITED, chunk = kRowsPerChunk;
     const hid_t space = H5Screate_simple(1, &zero, &unlimited);
     const hid_t props = H5Pcreate(H5P_DATASET_CREATE);
@@ -110,6 +116,14 @@ class Hdf5Writer : public ResultsWriter {
   void put(size_t k, size_t row, V value) {
     std::memcpy(&columns_[k].buffer[row * sizeof value], &value, sizeof value);
   }
+  void putValue(size_t k, size_t row, const ColumnValue& v) {
+    switch (v.type) {
+      case ColumnType::kFlag: return put(k, row, v.flag);
+      case ColumnType::kDouble: return put(k, row, v.real);
+      case ColumnType::kInt32: return put(k, row, v.whole);
+      case ColumnType::kFloat: return put(k, row, v.single);
+    }
+  }
 
   // Appends the rows of one sweep chunk, in the columns' order: the buffers
   // grow once per chunk, then shrink to the rows kept.
@@ -127,9 +141,7 @@ class Hdf5Writer : public ResultsWriter {
         if (id == kParamDelay) put(col++, row, int64_t(c.delay()));
         else put(col++, row, c.v[id]);
       }
-      for (int k = 0; k < 5; ++k) put(col++, row, static_cast<uint8_t>((r.ok >> k) & 1));
-      put(col++, row, r.iae), put(col++, row, r.itae), put(col++, row, r.iasc), put(col++, row, int32_t(r.steps));
-      for (int k = 0; k < 3; ++k) put(col++, row, r.final_pos[k]);
+      for (int k = 0; k < kResultColumnCount; ++k) putValue(col++, row, columnValue(r, k));
     }
     for (Column& c : columns_) c.buffer.resize(buffered_ * c.size);
   }

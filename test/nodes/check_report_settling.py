@@ -2,24 +2,13 @@
 """The report's settling time: an oscillation that ends its segment in a
 trough is not settled (issue: settling of an oscillation); a response that
 stays in its band for the hold time is, from the time it entered."""
-import importlib.machinery
-import importlib.util
 import math
 import os
-import subprocess
 import unittest
 
 import rostest
 
-
-def load_report():
-    path = subprocess.run(["rospack", "find", "aurora_control"], stdout=subprocess.PIPE,
-                          check=True).stdout.decode().strip() + "/scripts/report"
-    loader = importlib.machinery.SourceFileLoader("aurora_report", path)
-    spec = importlib.util.spec_from_loader("aurora_report", loader)
-    module = importlib.util.module_from_spec(spec)
-    loader.exec_module(module)
-    return module
+from aurora import report
 
 
 def segment(errors, ts=1.0 / 30.0):
@@ -33,7 +22,7 @@ def segment(errors, ts=1.0 / 30.0):
 class SettlingTest(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
-        cls.report = load_report()
+        cls.report = report
 
     def test_oscillation_ending_in_a_trough_is_not_settled(self):
         # The demo's waypoint 4: swinging between 0.015 and 0.151 m (band
@@ -99,7 +88,7 @@ class FiguresTest(unittest.TestCase):
         try:
             n = 120
             cmd = {"t": [k / 30.0 for k in range(n)], "u": [[0.0] * n for _ in range(4)]}
-            load_report().figures("/d", mission_series(), cmd, tempfile.mkdtemp(), False)
+            report.figures("/d", mission_series(), cmd, tempfile.mkdtemp(), False)
         finally:
             matplotlib.figure.Figure.savefig = original
 

@@ -1,0 +1,10 @@
+"""AuRoRA-ROS from Python.
+
+Modules:
+    aurora.report      the analysis of a recorded flight (bag -> metrics, figures,
+                       video, report.md); `rosrun aurora_control report` calls it
+    aurora.plot_sweep  the plots of a sweep's results; the sweep program runs
+                       `rosrun aurora_sweep plot_sweep DIR`, which calls it
+
+See docs/architecture.md, "Packages and data flow".
+"""

@@ -1,0 +1,244 @@
+"""Plots of a sweep's results (DIR/results.h5, else DIR/results.csv): for
+every sweep, the feasible share along each parameter and over pairs of the
+most influential ones; for grids of the PD law's (Kp, Kd, delay), the
+feasible volume in 3D and its three projections, as in the thesis's figure
+23a, the maximum tolerable delay, and with early_stop false the region
+where each check holds. Large results
+stay fast: the projections aggregate every row, the 3D scatter shows a fixed
+random subsample (seed 0) of at most MAX_SCATTER points and says so.
+
+    plot_sweep DIR
+"""
+import csv
+import json
+import os
+import sys
+
+MAX_SCATTER = 50000
+
+
+def flag_columns(summary):
+    """The results' 0/1 columns (ok1 ... ok4, feasible): summary.json's
+    "result_columns", which the sweep writes from its one column list
+    (aurora_sweep/result_columns.h)."""
+    return [c["name"] for c in summary["result_columns"] if c["type"] == "flag"]
+
+
+def read_results(np, out, params, flags):
+    """Columns of the results as numpy arrays, from HDF5 (h5py) or CSV:
+    the sweep's parameters (summary.json "parameters") and the flags."""
+    h5 = os.path.join(out, "results.h5")
+    if os.path.exists(h5):
+        import h5py
+        with h5py.File(h5, "r") as f:
+            return {k: f[k][...] for k in list(params) + list(flags)}
+    with open(os.path.join(out, "results.csv")) as f:
+        rows = list(csv.DictReader(f))
+    cols = {k: np.array([float(r[k]) for r in rows]) for k in params if k != "delay"}
+    cols.update({k: np.array([int(r[k]) for r in rows]) for k in ["delay"] + list(flags) if k in params or k in flags})
+    return cols
+
+
+def cell_edges(np, centres):
+    """Edges of cells centred on sorted `centres` (halfway between them)."""
+    c = np.asarray(centres, dtype=float)
+    mid = (c[1:] + c[:-1]) / 2.0
+    return np.concatenate(([c[0] - (mid[0] - c[0])], mid, [c[-1] + (c[-1] - mid[-1])]))
+
+
+def binned(np, values, bins=24):
+    """Bin index and bin centres of `values`: its own values when it has few
+    (a grid axis), else equal-width bins."""
+    uniq = np.unique(values)
+    if len(uniq) <= bins:
+        return np.searchsorted(uniq, values), uniq.astype(float)
+    edges = np.linspace(values.min(), values.max(), bins + 1)
+    idx = np.clip(np.searchsorted(edges, values, side="right") - 1, 0, bins - 1)
+    return idx, (edges[1:] + edges[:-1]) / 2.0
+
+
+def share(np, idx, feasible, n):
+    runs = np.bincount(idx, minlength=n)
+    good = np.bincount(idx, weights=feasible.astype(float), minlength=n)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        return np.where(runs > 0, good / np.maximum(runs, 1), np.nan)
+
+
+# The model parameters a sweep varies are factors of the vehicle file's
+# values ("m" would read as metres): their axes say so.
+MODEL_FACTORS = ("m", "Ixx", "Iyy", "Izz", "Cf", "Ct", "Km", "Jm")
+
+
+def axis_label(name):
+    if name in MODEL_FACTORS:
+        return "%s factor (x vehicle file's %s)" % (name, name)
+    return "delay [samples]" if name == "delay" else name
+
+
+def marginals(np, plt, params, feasible, summary, out):
+    """The feasible share along each parameter, one panel per parameter."""
+    names = [n for n, v in params.items() if len(np.unique(v)) > 1]
+    if not names:
+        return
+    ncols = min(4, len(names))
+    nrows = (len(names) + ncols - 1) // ncols
+    fig, axes = plt.subplots(nrows, ncols, figsize=(4.5 * ncols, 3.8 * nrows), squeeze=False)
+    for ax in axes.flat[len(names):]:
+        ax.set_visible(False)
+    for ax, name in zip(axes.flat, names):
+        idx, centres = binned(np, params[name])
+        ax.plot(centres, share(np, idx, feasible, len(centres)), "o-", ms=3)
+        ax.set_xlabel(axis_label(name))
+        ax.set_ylabel("feasible share")
+        ax.set_ylim(-0.02, 1.02)
+        ax.grid(alpha=0.3)
+    fig.suptitle("%s: feasible share along each parameter (%s design, %d runs)" % (
+        summary.get("name", "sweep"), summary.get("design", "grid"), len(feasible)))
+    fig.tight_layout(rect=(0, 0, 1, 0.96))  # room for the title
+    fig.savefig(os.path.join(out, "feasible_marginals.png"), dpi=100)
+    plt.close(fig)
+
+
+def pairs(np, plt, params, feasible, summary, out):
+    """Feasible share over pairs of the most influential parameters (the
+    largest spread of their marginal share), binned."""
+    spread = {}
+    for name, v in params.items():
+        idx, centres = binned(np, v)
+        if len(centres) > 1:
+            s = share(np, idx, feasible, len(centres))
+            spread[name] = np.nanmax(s) - np.nanmin(s)
+    top = sorted(spread, key=spread.get, reverse=True)[:3]
+    combos = [(a, b) for i, a in enumerate(top) for b in top[i + 1:]]
+    if not combos:
+        return
+    fig, axes = plt.subplots(1, len(combos), figsize=(5.2 * len(combos), 4.2), squeeze=False)
+    for ax, (a, b) in zip(axes[0], combos):
+        ia, ca = binned(np, params[a])
+        ib, cb = binned(np, params[b])
+        grid = share(np, ib * len(ca) + ia, feasible, len(ca) * len(cb)).reshape(len(cb), len(ca))
+        im = ax.pcolormesh(cell_edges(np, ca), cell_edges(np, cb), grid, cmap="viridis", vmin=0, vmax=1)
+        fig.colorbar(im, ax=ax, label="feasible share")
+        ax.set_xlabel(axis_label(a))
+        ax.set_ylabel(axis_label(b))
+    fig.suptitle("%s: feasible share over pairs of the most influential parameters" % summary.get("name", "sweep"))
+    fig.tight_layout(rect=(0, 0, 1, 0.96))  # room for the title
+    fig.savefig(os.path.join(out, "feasible_pairs.png"), dpi=100)
+    plt.close(fig)
+
+
+def max_tolerable_delay(np, plt, kp, kd, delay, feasible, summary, out):
+    """For each (Kp, Kd): the largest d such that every delay up to d is
+    feasible (-1 when delay 0 already fails): the thesis's question."""
+    ukp, ukd, ud = np.unique(kp), np.unique(kd), np.unique(delay)
+    if len(ukp) < 2 or len(ukd) < 2 or len(ud) < 2 or len(kp) != len(ukp) * len(ukd) * len(ud):
+        return
+    grid = np.zeros((len(ukd), len(ukp), len(ud)), dtype=bool)
+    grid[np.searchsorted(ukd, kd), np.searchsorted(ukp, kp), np.searchsorted(ud, delay)] = feasible
+    first_fail = np.where(grid.all(axis=2), len(ud), np.argmin(grid, axis=2))
+    tolerable = np.where(first_fail > 0, ud[np.maximum(first_fail - 1, 0)], -1).astype(float)
+    tolerable[tolerable < 0] = np.nan
+    fig, ax = plt.subplots(figsize=(7, 5.5))
+    im = ax.pcolormesh(cell_edges(np, ukp), cell_edges(np, ukd), tolerable, cmap="viridis")
+    fig.colorbar(im, ax=ax, label="max tolerable delay [samples]")
+    ax.set_xlabel("Kp")
+    ax.set_ylabel("Kd")
+    mono = summary.get("delay_monotony", {})
+    ax.set_title("%s: every delay up to this one is feasible (blank: none)\n%s of %s gain pairs not monotone in the delay"
+                 % (summary.get("name", "sweep"), mono.get("not_monotone", "?"), mono.get("gain_pairs", "?")))
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "max_tolerable_delay.png"), dpi=100)
+    plt.close(fig)
+
+
+def main(argv):
+    if len(argv) != 1 or argv[0] in ("-h", "--help"):
+        print(__doc__)
+        return 0 if argv and argv[0] in ("-h", "--help") else 2
+    out = argv[0]
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    # Registers projection="3d" on matplotlib < 3.2 (Ubuntu 20.04 has 3.1).
+    from mpl_toolkits.mplot3d import Axes3D  # noqa: F401
+    import numpy as np
+
+    summary = {}
+    try:
+        with open(os.path.join(out, "summary.json")) as f:
+            summary = json.load(f)
+    except (OSError, ValueError):
+        pass
+    names = summary.get("parameters", ["kp", "kd", "delay"])
+    try:
+        flags = flag_columns(summary)
+        cols = read_results(np, out, names, flags)
+    except (OSError, KeyError) as e:
+        print("plot_sweep: cannot read the results in %s: %s (summary.json and results.csv or .h5, "
+              "as the sweep writes them)" % (out, e), file=sys.stderr)
+        return 2
+    ok = {k: cols[k] == 1 for k in flags}
+    total = summary.get("combinations", len(ok["feasible"]))  # --rows feasible holds fewer rows
+    if len(ok["feasible"]) == 0:
+        print("plot_sweep: no rows to plot in %s" % out, file=sys.stderr)
+        return 0
+    params = {("delay [samples]" if n == "delay" else n): cols[n] for n in names}
+    marginals(np, plt, params, ok["feasible"], summary, out)
+    pairs(np, plt, params, ok["feasible"], summary, out)
+    # The (Kp, Kd, delay) figures of the thesis: the PD law's grids.
+    if not {"kp", "kd", "delay"} <= set(names):
+        return 0
+    kp, kd, delay = cols["kp"], cols["kd"], cols["delay"]
+
+    def volume(mask, title, name):
+        fig = plt.figure(figsize=(12, 9))
+        ax = fig.add_subplot(2, 2, 1, projection="3d")
+        shown = np.flatnonzero(mask)
+        if len(shown) > MAX_SCATTER:  # a fixed subsample: the same figure every time
+            shown = np.sort(np.random.default_rng(0).choice(shown, MAX_SCATTER, replace=False))
+            title += "\n(3D: %d of %d points shown)" % (MAX_SCATTER, int(mask.sum()))
+        ax.scatter(kp[shown], kd[shown], delay[shown], s=4, c=delay[shown], cmap="viridis", depthshade=True)
+        ax.set_xlabel("Kp"); ax.set_ylabel("Kd"); ax.set_zlabel("delay [samples]")
+        ax.set_xlim(kp.min(), kp.max()); ax.set_ylim(kd.min(), kd.max()); ax.set_zlim(delay.min(), delay.max())
+        ax.set_title(title)
+        # Projections: the largest delay that still holds at each (Kp, Kd), and
+        # how many values of the third parameter hold in the other planes.
+        ukp, ukd, ud = np.unique(kp), np.unique(kd), np.unique(delay)
+        panels = ((2, "Kp", "Kd", ukp, ukd, kp, kd, "largest delay that holds [samples]", "max"),
+                  (3, "Kp", "delay [samples]", ukp, ud, kp, delay, "number of Kd values that hold", "count"),
+                  (4, "Kd", "delay [samples]", ukd, ud, kd, delay, "number of Kp values that hold", "count"))
+        for pos, xl, yl, ux, uy, vx, vy, cl, how in panels:
+            ax2 = fig.add_subplot(2, 2, pos)
+            ix = np.searchsorted(ux, vx[mask])
+            iy = np.searchsorted(uy, vy[mask])
+            if how == "max":
+                grid = np.full((len(uy), len(ux)), np.nan)
+                np.fmax.at(grid, (iy, ix), delay[mask].astype(float))
+            else:
+                grid = np.zeros((len(uy), len(ux)))
+                np.add.at(grid, (iy, ix), 1)
+            if len(ux) > 1 and len(uy) > 1:
+                # Cell edges halfway between the values: shading="nearest" by hand,
+                # which matplotlib < 3.3 lacks.
+                im = ax2.pcolormesh(cell_edges(np, ux), cell_edges(np, uy), grid, cmap="viridis")
+                fig.colorbar(im, ax=ax2, label=cl)
+            else:
+                ax2.scatter(vx[mask], vy[mask], s=6)
+            ax2.set_xlabel(xl); ax2.set_ylabel(yl)
+        fig.suptitle("%s: %d of %d combinations (%s, %s)" % (
+            summary.get("name", "sweep"), int(mask.sum()), total, summary.get("backend", "?"),
+            summary.get("precision", "?")))
+        fig.tight_layout()
+        fig.savefig(os.path.join(out, name), dpi=100)
+        plt.close(fig)
+
+    if summary.get("design", "grid") == "grid" and total == len(kp):
+        volume(ok["feasible"], "feasible set", "feasible_volume.png")
+        max_tolerable_delay(np, plt, kp, kd, delay, ok["feasible"], summary, out)
+    if summary.get("early_stop") is False:
+        names = {"ok1": "check 1: e <= 5 m", "ok2": "check 2: IAE limit", "ok3": "check 3: ITAE limit",
+                 "ok4": "check 4: e <= 2 |e0|"}
+        for k, title in names.items():
+            volume(ok[k], title, "check%s_region.png" % k[-1])
+    return 0
+
