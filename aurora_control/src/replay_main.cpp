@@ -10,13 +10,17 @@
 #include <rosbag/view.h>
 #include <yaml-cpp/yaml.h>
 
+#include <boost/program_options.hpp>
+
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <iostream>
 #include <map>
 #include <memory>
 #include <set>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -29,11 +33,13 @@
 #include "aurora_sim/ros_conversions.h"
 #include "control_msg.h"
 
+namespace po = boost::program_options;
+
 namespace {
 
 using namespace aurora_control;
 
-const char* kUsage =
+const char* kAbout =
     "usage: replay BAG [options]\n"
     "\n"
     "Replays the recorded states of BAG through the controller core and compares the\n"
@@ -41,18 +47,7 @@ const char* kUsage =
     "configuration (gains, delay, clamping, as recorded cycle by cycle) is used and the\n"
     "commands must be identical.\n"
     "\n"
-    "options:\n"
-    "  --ns NAME             drone namespace (default: the only one in the bag)\n"
-    "  --controller FILE     controller YAML (config/controllers/*.yaml): law, gains, clamping\n"
-    "  --kp X, --kd X        gains of the PD law\n"
-    "  --vehicle FILE        vehicle YAML the underactuated law inverts\n"
-    "                        (default: vehicles/ardrone2.yaml of the aurora_config package)\n"
-    "  --delay N             delay in samples\n"
-    "  --delay-seconds S     delay in seconds (rounded to whole samples)\n"
-    "  --clamp, --no-clamp   clamp commands to [-1, 1] or not\n"
-    "  --out FILE            CSV: step, recorded and replayed commands per cycle\n"
-    "  --expect-identical    exit 1 unless every command is identical\n"
-    "  -h, --help            this text\n";
+    "options";
 
 constexpr int kCapacity = kDelayHistory;  // limits.h, as the node
 
@@ -121,53 +116,94 @@ struct Arguments {
   Overrides o;
 };
 
-Arguments parseArguments(int argc, char** argv) {
-  Arguments args;
-  Overrides& o = args.o;
+// The options' values as given (numbers as text, so that a refusal quotes them).
+struct Given {
+  std::string controller, kp, kd, delay, delay_seconds;
+  std::vector<std::string> bags;
+};
+
+po::options_description describe(Arguments& args, Given& g) {
+  po::options_description d(kAbout, 100, 50);
+  d.add_options()
+      ("ns", po::value(&args.ns)->value_name("NAME"), "drone namespace (default: the only one in the bag)")
+      ("controller", po::value(&g.controller)->value_name("FILE"),
+       "controller YAML (config/controllers/*.yaml): law, gains, clamping")
+      ("kp", po::value(&g.kp)->value_name("X"), "gain of the PD law")
+      ("kd", po::value(&g.kd)->value_name("X"), "gain of the PD law")
+      ("vehicle", po::value(&args.vehicle_path)->value_name("FILE"),
+       "vehicle YAML the underactuated law inverts (default: vehicles/ardrone2.yaml of the aurora_config package)")
+      ("delay", po::value(&g.delay)->value_name("N"), "delay in samples")
+      ("delay-seconds", po::value(&g.delay_seconds)->value_name("S"), "delay in seconds (rounded to whole samples)")
+      ("clamp", "clamp commands to [-1, 1]")
+      ("no-clamp", "do not clamp commands")
+      ("out", po::value(&args.out_path)->value_name("FILE"), "CSV: step, recorded and replayed commands per cycle")
+      ("expect-identical", po::bool_switch(&args.expect_identical), "exit 1 unless every command is identical")
+      ("help,h", "this text");
+  return d;
+}
+
+[[noreturn]] void usageError(const std::string& msg, const po::options_description& d) {
+  std::ostringstream usage;
+  usage << d;
+  fail(msg + "\n\n" + usage.str());
+}
+
+// "--kp -1" as "--kp=-1": a value may start with '-' (a refused negative gain).
+std::vector<std::string> joinValues(int argc, char** argv, const po::options_description& d) {
+  std::vector<std::string> out;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
-    auto value = [&]() -> std::string {
-      if (i + 1 >= argc) fail(a + " needs a value\n\n" + kUsage);
-      return argv[++i];
-    };
-    if (a == "-h" || a == "--help") {
-      std::fputs(kUsage, stdout);
-      std::exit(0);
-    } else if (a == "--ns") {
-      args.ns = value();
-    } else if (a == "--controller") {
-      loadControllerFile(value(), o);
-    } else if (a == "--vehicle") {
-      args.vehicle_path = value();
-    } else if (a == "--kp") {
-      o.kp = true, o.kp_value = gain(a, value());
-    } else if (a == "--kd") {
-      o.kd = true, o.kd_value = gain(a, value());
-    } else if (a == "--delay") {
-      const double d = number(a, value());
-      if (d < 0 || d != std::floor(d) || d > kMaxDelaySamples) fail("--delay must be " + delayRangeText());
-      o.delay = true, o.delay_value = static_cast<long>(d);
-    } else if (a == "--delay-seconds") {
-      o.delay_seconds = true, o.delay_seconds_value = number(a, value());
-      if (o.delay_seconds_value < 0) fail("--delay-seconds must be >= 0");
-    } else if (a == "--clamp" || a == "--no-clamp") {
-      if (o.clamp && o.clamp_value != (a == "--clamp")) fail("--clamp and --no-clamp exclude each other: give one");
-      o.clamp = true, o.clamp_value = a == "--clamp";
-    } else if (a == "--out") {
-      args.out_path = value();
-    } else if (a == "--expect-identical") {
-      args.expect_identical = true;
-    } else if (!a.empty() && a[0] == '-') {
-      fail("unknown option '" + a + "'\n\n" + kUsage);
-    } else if (args.bag_path.empty()) {
-      args.bag_path = a;
-    } else {
-      fail("one bag at a time ('" + a + "' is extra)");
-    }
+    const po::option_description* o =
+        a.rfind("--", 0) == 0 && a.find('=') == std::string::npos ? d.find_nothrow(a.substr(2), false) : nullptr;
+    if (o && o->semantic()->max_tokens() > 0 && i + 1 < argc) out.push_back(a + "=" + argv[++i]);
+    else out.push_back(a);
   }
-  if (args.bag_path.empty()) fail(std::string("a bag is required\n\n") + kUsage);
-  if (o.delay && o.delay_seconds) fail("--delay and --delay-seconds exclude each other: give one");
+  return out;
+}
 
+// The overrides from what was given, checked with the node's limits (limits.h).
+void readOverrides(const po::variables_map& vm, const Given& g, Overrides& o) {
+  if (!g.controller.empty()) loadControllerFile(g.controller, o);
+  if (!g.kp.empty()) o.kp = true, o.kp_value = gain("--kp", g.kp);
+  if (!g.kd.empty()) o.kd = true, o.kd_value = gain("--kd", g.kd);
+  if (!g.delay.empty() && !g.delay_seconds.empty()) fail("--delay and --delay-seconds exclude each other: give one");
+  if (!g.delay.empty()) {
+    const double d = number("--delay", g.delay);
+    if (d < 0 || d != std::floor(d) || d > kMaxDelaySamples) fail("--delay must be " + delayRangeText());
+    o.delay = true, o.delay_value = static_cast<long>(d);
+  }
+  if (!g.delay_seconds.empty()) {
+    o.delay_seconds = true, o.delay_seconds_value = number("--delay-seconds", g.delay_seconds);
+    if (o.delay_seconds_value < 0) fail("--delay-seconds must be >= 0");
+  }
+  if (vm.count("clamp") && vm.count("no-clamp")) fail("--clamp and --no-clamp exclude each other: give one");
+  // Given on the command line, the choice overrides the controller file's.
+  if (vm.count("clamp") || vm.count("no-clamp")) o.clamp = true, o.clamp_value = vm.count("clamp") > 0;
+}
+
+Arguments parseArguments(int argc, char** argv) {
+  Arguments args;
+  Given g;
+  const po::options_description d = describe(args, g);
+  po::options_description all(d);
+  all.add_options()("bag", po::value(&g.bags));
+  po::positional_options_description bag;
+  bag.add("bag", -1);
+  po::variables_map vm;
+  try {
+    po::store(po::command_line_parser(joinValues(argc, argv, d)).options(all).positional(bag).run(), vm);
+    po::notify(vm);
+  } catch (const po::error& e) {
+    usageError(e.what(), d);
+  }
+  if (vm.count("help")) {
+    std::cout << d;
+    std::exit(0);
+  }
+  if (g.bags.empty()) usageError("a bag is required", d);
+  if (g.bags.size() > 1) fail("one bag at a time ('" + g.bags[1] + "' is extra)");
+  args.bag_path = g.bags[0];
+  readOverrides(vm, g, args.o);
   return args;
 }
 
