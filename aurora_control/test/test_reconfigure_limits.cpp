@@ -1,6 +1,6 @@
 // The limits Controller.cfg gives dynamic_reconfigure (rqt sliders, the
-// server's description) equal the limits the node enforces (limits.h, the
-// rules of live_settings.h): one table, two files, kept equal by this test.
+// server's description) equal the parameter table's (parameter_table.h),
+// which the node enforces (limits.h, live_settings.h): kept equal by this test.
 #include <aurora_control/ControllerConfig.h>
 #include <gtest/gtest.h>
 
@@ -10,26 +10,29 @@
 
 #include "aurora_control/law_yaml.h"
 #include "aurora_control/limits.h"
-#include "controller_params.h"  // readUnderactuatedGains
+#include "aurora_control/parameter_table.h"
 
 using namespace aurora_control;
 
-TEST(ReconfigureLimits, ControllerCfgEqualsLimitsH) {
-  const ControllerConfig lo = ControllerConfig::__getMin__(), hi = ControllerConfig::__getMax__();
-  EXPECT_EQ(lo.kp, kPdGainMin);
-  EXPECT_EQ(hi.kp, kPdGainMax);
-  EXPECT_EQ(lo.kd, kPdGainMin);
-  EXPECT_EQ(hi.kd, kPdGainMax);
-  EXPECT_EQ(lo.delay_samples, 0);
-  EXPECT_EQ(hi.delay_samples, kMaxDelaySamples);
-  ControllerConfig los = lo, his = hi;
-  UnderactuatedGains<double> gmin{}, gmax{};
-  readUnderactuatedGains(los, gmin);
-  readUnderactuatedGains(his, gmax);
-  for (int i = 0; i < 2 * kAxes; ++i) {
-    EXPECT_EQ(underactuatedGain(gmin, i), kUnderactuatedGainMin) << underactuatedGainName(i);
-    EXPECT_EQ(underactuatedGain(gmax, i), kUnderactuatedGainMax) << underactuatedGainName(i);
+// The table's row of a live setting (delay_samples is delay/samples).
+const ParameterSpec* rowOf(const std::string& live_name) {
+  for (const ParameterSpec& p : kParameterTable) {
+    if (live_name == p.name || (live_name == "delay_samples" && std::string(p.name) == "delay/samples")) return &p;
   }
+  return nullptr;
+}
+
+TEST(ReconfigureLimits, ControllerCfgEqualsTheParameterTable) {
+  const dynamic_reconfigure::ConfigDescription d = ControllerConfig::__getDescriptionMessage__();
+  ASSERT_EQ(d.min.doubles.size(), d.max.doubles.size());
+  for (size_t i = 0; i < d.min.doubles.size(); ++i) {
+    const std::string name = d.min.doubles[i].name;
+    const ParameterSpec* row = rowOf(name);
+    ASSERT_NE(row, nullptr) << name << " of Controller.cfg is not in parameter_table.h";
+    EXPECT_EQ(d.min.doubles[i].value, row->min) << name;
+    EXPECT_EQ(d.max.doubles[i].value, row->max) << name;
+  }
+  EXPECT_EQ(d.min.doubles.size(), 3u + 2 * kAxes);
   // Every live setting the node takes is in the description, and no other.
   std::vector<std::string> described;
   for (const auto& p : ControllerConfig::__getDescriptionMessage__().groups[0].parameters) described.push_back(p.name);

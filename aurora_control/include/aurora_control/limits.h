@@ -1,16 +1,19 @@
 // Accepted ranges shared by every entry point (controller node, replay, the
-// flight tool, the sweep), written once so that they agree.
+// flight tool, the sweep, the live settings), from the one parameter table
+// (parameter_table.h), so that they agree.
 #pragma once
 
 #include <cstdio>
 #include <string>
 #include <type_traits>
 
+#include "aurora_control/parameter_table.h"
+
 namespace aurora_control {
 
 // Feedback delay [samples of Ts]: 0 to 2047 (68 s at 30 Hz). Histories hold
 // kDelayHistory states so the largest delay still finds its sample.
-constexpr long kMaxDelaySamples = 2047;
+constexpr long kMaxDelaySamples = static_cast<long>(kParameterTable[kRowDelaySamples].max);
 constexpr int kDelayHistory = static_cast<int>(kMaxDelaySamples) + 1;
 
 // The history capacities the loops are compiled for: the smallest that holds
@@ -26,9 +29,11 @@ void withHistoryCapacity(long max_delay, F&& f) {
   return f(std::integral_constant<int, kDelayHistory>());
 }
 
-// Gains of the two laws.
-constexpr double kPdGainMin = 0.0, kPdGainMax = 10.0;
-constexpr double kUnderactuatedGainMin = 0.001, kUnderactuatedGainMax = 100.0;
+// Gains of the two laws (one range for both PD gains, one for the 12
+// underactuated gains: test_parameter_table checks every row keeps it).
+constexpr double kPdGainMin = kParameterTable[kRowKp].min, kPdGainMax = kParameterTable[kRowKp].max;
+constexpr double kUnderactuatedGainMin = kParameterTable[kRowFirstUnderactuatedGain].min;
+constexpr double kUnderactuatedGainMax = kParameterTable[kRowFirstUnderactuatedGain].max;
 
 // A delay must be shorter than the run: the delay rule sends the current
 // state while k <= d, so with d at least the run's iteration count the

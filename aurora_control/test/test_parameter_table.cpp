@@ -1,0 +1,47 @@
+// The parameter table (parameter_table.h) is the one source: the laws' own
+// defaults and the names they are read by equal its rows, and the README's
+// parameter reference is the table's (regenerate it from the failure's text).
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "aurora_control/limits.h"
+#include "aurora_control/parameter_table.h"
+#include "aurora_control/underactuated_law.h"
+
+using namespace aurora_control;
+
+TEST(ParameterTable, UnderactuatedRowsAreTheLawsGainsAndDefaults) {
+  const UnderactuatedGains<double> defaults = UnderactuatedGains<double>::defaults();
+  for (int i = 0; i < 2 * kAxes; ++i) {
+    const ParameterSpec& row = kParameterTable[kRowFirstUnderactuatedGain + i];
+    EXPECT_STREQ(row.name, underactuatedGainName(i));
+    EXPECT_EQ(row.default_value, underactuatedGain(defaults, i)) << row.name;
+    EXPECT_EQ(row.min, kUnderactuatedGainMin) << row.name;
+    EXPECT_EQ(row.max, kUnderactuatedGainMax) << row.name;
+  }
+  EXPECT_EQ(kParameterRows, kRowFirstUnderactuatedGain + 2 * kAxes);
+}
+
+TEST(ParameterTable, BothPdGainsShareOneRange) {
+  EXPECT_EQ(kParameterTable[kRowKd].min, kPdGainMin);
+  EXPECT_EQ(kParameterTable[kRowKd].max, kPdGainMax);
+  EXPECT_EQ(kMaxDelaySamples, 2047);  // the histories are sized from it (kDelayHistory)
+  EXPECT_EQ(kDelayHistory, kMaxDelaySamples + 1);
+}
+
+TEST(ParameterTable, ReadmeReferenceIsTheTables) {
+  std::ifstream in(AURORA_README);
+  ASSERT_TRUE(in.good()) << AURORA_README;
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string readme = text.str(), begin = "<!-- parameter-reference:begin -->\n",
+                    end = "<!-- parameter-reference:end -->";
+  const size_t a = readme.find(begin), b = readme.find(end);
+  ASSERT_NE(a, std::string::npos) << "README.md lacks the marker " << begin;
+  ASSERT_NE(b, std::string::npos) << "README.md lacks the marker " << end;
+  EXPECT_EQ(readme.substr(a + begin.size(), b - a - begin.size()), parameterReference())
+      << "README.md's parameter reference differs from parameter_table.h: put this between the markers";
+}
