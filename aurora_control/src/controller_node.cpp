@@ -23,7 +23,7 @@
 namespace aurora_control {
 
 using aurora_sim::fullKey;
-using aurora_sim::ParameterError;
+using aurora_sim::ConfigError;
 using aurora_sim::paramOr;
 using aurora_sim::rangedParam;
 using aurora_sim::requireParam;
@@ -72,7 +72,7 @@ ControllerNode::ControllerNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
 std::string ControllerNode::readLoopMode() {
   const std::string mode = paramOr<std::string>(pnh_, "mode", "realtime");
   if (mode != "realtime" && mode != "lockstep") {
-    throw ParameterError("parameter '" + fullKey(pnh_, "mode") + "' = '" + mode +
+    throw ConfigError("parameter '" + fullKey(pnh_, "mode") + "' = '" + mode +
                          "' is invalid: accepted values 'realtime', 'lockstep'");
   }
   lockstep_ = mode == "lockstep";
@@ -82,7 +82,7 @@ std::string ControllerNode::readLoopMode() {
   // the newest state received.
   const std::string trigger = paramOr<std::string>(pnh_, "trigger", "state");
   if (trigger != "state" && trigger != "timer") {
-    throw ParameterError("parameter '" + fullKey(pnh_, "trigger") + "' = '" + trigger +
+    throw ConfigError("parameter '" + fullKey(pnh_, "trigger") + "' = '" + trigger +
                          "' is invalid: accepted values 'state', 'timer'");
   }
   timer_triggered_ = !lockstep_ && trigger == "timer";
@@ -123,7 +123,7 @@ void ControllerNode::connectTopics(const SafetyConfig& safety) {
 void ControllerNode::refuseDelayBeyondTheTask(long delay) const {
   if (delayShorterThanRun(delay, task_iterations_)) return;
   const std::string key = pnh_.hasParam("delay/seconds") ? "delay/seconds" : "delay/samples";
-  throw ParameterError("parameter '" + fullKey(pnh_, key) + "' = " +
+  throw ConfigError("parameter '" + fullKey(pnh_, key) + "' = " +
                        delayRunText(delay, task_iterations_, Ts_));
 }
 
@@ -140,35 +140,24 @@ void ControllerNode::refuseUnknownTopLevelKeys() {
 
 long ControllerNode::readDelaySamples() {
   static_assert(Core::kMaxDelay == kHistoryCapacity - 1, "delay range follows the history");
-  const bool has_samples = pnh_.hasParam("delay/samples");
   const bool has_seconds = pnh_.hasParam("delay/seconds");
-  const std::string accepted = delayRangeText();
-  if (has_samples && has_seconds) {
-    throw ParameterError("both '" + fullKey(pnh_, "delay/samples") + "' and '" +
-                         fullKey(pnh_, "delay/seconds") + "' are set: give only one");
+  if (pnh_.hasParam("delay/samples") && has_seconds) {
+    throw ConfigError("both '" + fullKey(pnh_, "delay/samples") + "' and '" +
+                      fullKey(pnh_, "delay/seconds") + "' are set: give only one");
+  }
+  const std::string key = has_seconds ? "delay/seconds" : "delay/samples";
+  double value = 0.0;  // an int parameter reads as a double too; 2.5 samples is refused below
+  const bool number = !pnh_.hasParam(key) || pnh_.getParam(key, value);
+  long samples = 0;
+  const std::string refusal = number ? delayRefusal(value, has_seconds, Ts_, samples)
+                                     : std::string("is refused: accepted ") + (has_seconds ? "seconds" : delayRangeText());
+  if (!refusal.empty()) {
+    throw ConfigError("parameter '" + fullKey(pnh_, key) + "' = " +
+                      (number ? aurora_sim::numberText(value) : std::string("(not a number)")) + " " + refusal);
   }
   if (has_seconds) {
-    double seconds = 0.0;
-    const bool number = pnh_.getParam("delay/seconds", seconds);
-    if (!number || !std::isfinite(seconds) || seconds < 0.0 || seconds / Ts_ > kHistoryCapacity - 1) {
-      throw ParameterError("parameter '" + fullKey(pnh_, "delay/seconds") + "' = " +
-                           (number ? aurora_sim::numberText(seconds) : std::string("(not a number)")) +
-                           " is invalid: accepted range [0, " +
-                           aurora_sim::numberText((kHistoryCapacity - 1) * Ts_) + "] s");
-    }
-    const long samples = std::lround(seconds / Ts_);
-    ROS_INFO("controller: delay %.6f s rounded to %ld whole samples of Ts = %.6f s (%.6f s)",
-             seconds, samples, Ts_, samples * Ts_);
-    return samples;
-  }
-  int samples = 0;
-  if (has_samples && !pnh_.getParam("delay/samples", samples)) {
-    throw ParameterError("parameter '" + fullKey(pnh_, "delay/samples") +
-                         "' must be an integer: accepted " + accepted);
-  }
-  if (samples < 0 || samples > kHistoryCapacity - 1) {
-    throw ParameterError("parameter '" + fullKey(pnh_, "delay/samples") + "' = " +
-                         std::to_string(samples) + " is invalid: accepted " + accepted);
+    ROS_INFO("controller: delay %.6f s rounded to %ld whole samples of Ts = %.6f s (%.6f s)", value, samples, Ts_,
+             samples * Ts_);
   }
   return samples;
 }

@@ -11,18 +11,14 @@
 namespace aurora_control {
 
 using aurora_sim::fullKey;
-using aurora_sim::ParameterError;
+using aurora_sim::ConfigError;
 using aurora_sim::paramOr;
 using aurora_sim::rangedParam;
 using aurora_sim::requireParam;
 
 void loadLaw(const ros::NodeHandle& pnh, const aurora_sim::ArdroneParams<double>& vehicle,
              ControllerSettings& set) {
-  try {
-    readLaw(YamlReader("parameter ", "/"), paramAsYaml(pnh, "controller"), fullKey(pnh, "controller"), set);
-  } catch (const ConfigError& e) {
-    throw ParameterError(e.what());
-  }
+  readLaw(YamlReader("parameter ", "/"), paramAsYaml(pnh, "controller"), fullKey(pnh, "controller"), set);
   set.vehicle = vehicle;
 }
 
@@ -44,14 +40,10 @@ const char* taskTypeName(TaskType type) {
 Task<double> loadTask(const ros::NodeHandle& pnh) {
   const YAML::Node task = paramAsYaml(pnh, "task");
   if (!task) {
-    throw ParameterError("missing parameter '" + fullKey(pnh, "task") +
+    throw ConfigError("missing parameter '" + fullKey(pnh, "task") +
                          "': load a task file such as config/tasks/mission4.yaml (launch arg 'task')");
   }
-  try {
-    return readTask(YamlReader("parameter ", "/"), task, fullKey(pnh, "task"));
-  } catch (const ConfigError& e) {
-    throw ParameterError(e.what());
-  }
+  return readTask(YamlReader("parameter ", "/"), task, fullKey(pnh, "task"));
 }
 
 namespace {
@@ -59,7 +51,7 @@ namespace {
 void readVector3(const ros::NodeHandle& pnh, const std::string& key, double out[3]) {
   std::vector<double> v;
   if (!pnh.getParam(key, v) || v.size() != 3) {
-    throw ParameterError("parameter '" + fullKey(pnh, key) + "' must be [x, y, z] in m");
+    throw ConfigError("parameter '" + fullKey(pnh, key) + "' must be [x, y, z] in m");
   }
   for (int i = 0; i < 3; ++i) out[i] = v[i];
 }
@@ -67,7 +59,7 @@ void readVector3(const ros::NodeHandle& pnh, const std::string& key, double out[
 int buttonParam(const ros::NodeHandle& pnh, const std::string& key, int fallback) {
   const int b = paramOr(pnh, key, fallback);
   if (b < -1 || b > 63) {
-    throw ParameterError("parameter '" + fullKey(pnh, key) + "' = " + std::to_string(b) +
+    throw ConfigError("parameter '" + fullKey(pnh, key) + "' = " + std::to_string(b) +
                          " is invalid: accepted a button index in [0, 63], or -1 for none");
   }
   return b;
@@ -78,7 +70,7 @@ AxisMap axisParam(const ros::NodeHandle& pnh, const std::string& key, const Axis
   m.axis = paramOr(pnh, key + "/axis", fallback.axis);
   m.scale = paramOr(pnh, key + "/scale", fallback.scale);
   if (m.axis < -1 || m.axis > 63 || !std::isfinite(m.scale) || std::fabs(m.scale) > 1.0) {
-    throw ParameterError("parameter '" + fullKey(pnh, key) +
+    throw ConfigError("parameter '" + fullKey(pnh, key) +
                          "' is invalid: accepted axis in [0, 63] (-1: none) and |scale| <= 1");
   }
   return m;
@@ -101,7 +93,7 @@ SafetyConfig loadSafetyConfig(const ros::NodeHandle& pnh) {
   c.takeoff_rise = rangedParam(pnh, "safety/takeoff_rise", d.takeoff_rise, 0.02, 1.0, "m");
   c.descent_speed = rangedParam(pnh, "safety/descent_speed", d.descent_speed, 0.02, 1.0, "m/s");
   if (c.land_after > 0.0 && c.land_after <= c.hover_after) {
-    throw ParameterError("parameter '" + fullKey(pnh, "safety/land_after") +
+    throw ConfigError("parameter '" + fullKey(pnh, "safety/land_after") +
                          "' must be 0 (never) or longer than safety/hover_after");
   }
   c.box_enabled = pnh.hasParam("safety/box/min") || pnh.hasParam("safety/box/max");
@@ -110,7 +102,7 @@ SafetyConfig loadSafetyConfig(const ros::NodeHandle& pnh) {
     readVector3(pnh, "safety/box/max", c.box_max);
     for (int i = 0; i < 3; ++i) {
       if (!(c.box_min[i] < c.box_max[i])) {
-        throw ParameterError("parameter '" + fullKey(pnh, "safety/box") +
+        throw ConfigError("parameter '" + fullKey(pnh, "safety/box") +
                              "' is empty: min must be below max on every axis");
       }
     }
@@ -123,7 +115,7 @@ bool loadJoystickConfig(const ros::NodeHandle& pnh, JoystickConfig& c) {
   const JoystickConfig d;
   c.deadman_button = buttonParam(pnh, "joystick/buttons/deadman", d.deadman_button);
   if (c.deadman_button < 0) {
-    throw ParameterError("parameter '" + fullKey(pnh, "joystick/buttons/deadman") +
+    throw ConfigError("parameter '" + fullKey(pnh, "joystick/buttons/deadman") +
                          "' is required when the joystick is enabled: a button index in [0, 63]");
   }
   c.takeoff_button = buttonParam(pnh, "joystick/buttons/takeoff", d.takeoff_button);

@@ -1,5 +1,5 @@
 // Reading the controller node's parameters (task, gains, safety, joystick)
-// strictly: a missing or invalid value is a ParameterError naming the full
+// strictly: a missing or invalid value is a ConfigError naming the full
 // key and what is accepted.
 #pragma once
 

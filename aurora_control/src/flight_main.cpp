@@ -84,10 +84,10 @@ class SegmentErrors {
 };
 
 void refuseDelayBeyondTheTask(long delay, long steps, double Ts) {
-  if (delay < 0 || delay > kMaxDelaySamples) {
-    throw std::runtime_error("--delay " + std::to_string(delay) + " is invalid: accepted " + delayRangeText());
-  }
-  if (!delayShorterThanRun(delay, steps)) throw std::runtime_error("--delay " + delayRunText(delay, steps, Ts));
+  long samples = 0;
+  const std::string refusal = delayRefusal(double(delay), false, Ts, samples);
+  if (!refusal.empty()) throw ConfigError("--delay " + std::to_string(delay) + " " + refusal);
+  if (!delayShorterThanRun(delay, steps)) throw ConfigError("--delay " + delayRunText(delay, steps, Ts));
 }
 
 }  // namespace

@@ -12,7 +12,7 @@
 namespace aurora_control {
 
 using aurora_sim::fullKey;
-using aurora_sim::ParameterError;
+using aurora_sim::ConfigError;
 using aurora_sim::paramOr;
 
 namespace {
@@ -20,7 +20,7 @@ namespace {
 std::vector<double> triple(const ros::NodeHandle& pnh, const std::string& key) {
   std::vector<double> v{0.0, 0.0, 0.0};
   if (pnh.hasParam(key) && (!pnh.getParam(key, v) || v.size() != 3)) {
-    throw ParameterError("parameter '" + fullKey(pnh, key) + "' must be a list of 3 numbers");
+    throw ConfigError("parameter '" + fullKey(pnh, key) + "' must be a list of 3 numbers");
   }
   return v;
 }

@@ -59,7 +59,7 @@ void refuseUnknownParams(const ros::NodeHandle& nh, const std::string& group,
     const std::string first = rest.substr(0, rest.find('/'));
     if (!seen.insert(first).second) continue;
     if (std::find(accepted.begin(), accepted.end(), first) == accepted.end()) {
-      throw aurora_sim::ParameterError("parameter '" + prefix + first + "' is not a known key: accepted " +
+      throw aurora_sim::ConfigError("parameter '" + prefix + first + "' is not a known key: accepted " +
                                        joinKeys(accepted) + (hint.empty() ? "" : " (" + hint + ")"));
     }
   }

@@ -19,7 +19,7 @@ YAML::Node paramAsYaml(const ros::NodeHandle& nh, const std::string& key);
 
 // Refuses any parameter directly under `group` of `nh` (the node's private
 // namespace when group is empty) whose name is not in `accepted`, naming it
-// and the accepted names. Throws aurora_sim::ParameterError.
+// and the accepted names. Throws aurora_sim::ConfigError.
 void refuseUnknownParams(const ros::NodeHandle& nh, const std::string& group,
                          const std::vector<std::string>& accepted, const std::string& hint);
 

@@ -168,13 +168,14 @@ void readOverrides(const po::variables_map& vm, const Given& g, Overrides& o) {
   if (!g.kd.empty()) o.kd = true, o.kd_value = gain("--kd", g.kd);
   if (!g.delay.empty() && !g.delay_seconds.empty()) fail("--delay and --delay-seconds exclude each other: give one");
   if (!g.delay.empty()) {
-    const double d = number("--delay", g.delay);
-    if (d < 0 || d != std::floor(d) || d > kMaxDelaySamples) fail("--delay must be " + delayRangeText());
-    o.delay = true, o.delay_value = static_cast<long>(d);
+    const std::string refusal = delayRefusal(number("--delay", g.delay), false, 0.0, o.delay_value);
+    if (!refusal.empty()) fail("--delay " + g.delay + " " + refusal);
+    o.delay = true;
   }
   if (!g.delay_seconds.empty()) {
+    // Rounded with each cycle's recorded Ts and checked there (cycleSettings, delayRefusal).
     o.delay_seconds = true, o.delay_seconds_value = number("--delay-seconds", g.delay_seconds);
-    if (o.delay_seconds_value < 0) fail("--delay-seconds must be >= 0");
+    if (!(o.delay_seconds_value >= 0)) fail("--delay-seconds " + g.delay_seconds + " is refused: accepted seconds >= 0");
   }
   if (vm.count("clamp") && vm.count("no-clamp")) fail("--clamp and --no-clamp exclude each other: give one");
   // Given on the command line, the choice overrides the controller file's.
@@ -278,12 +279,10 @@ void cycleSettings(const aurora_msgs::Control& c, const Overrides& o, long itera
   }
   if (o.kp) set.gains.kp = o.kp_value;
   if (o.kd) set.gains.kd = o.kd_value;
-  set.delay = o.delay ? o.delay_value
-                      : (o.delay_seconds ? std::lround(o.delay_seconds_value / c.sample_time)
-                                         : static_cast<long>(c.delay_samples));
-  if (set.delay > kMaxDelaySamples) {
-    fail("--delay-seconds " + std::to_string(o.delay_seconds_value) + " is " + std::to_string(set.delay) +
-         " samples of " + std::to_string(c.sample_time) + " s: accepted " + delayRangeText());
+  set.delay = o.delay ? o.delay_value : static_cast<long>(c.delay_samples);
+  if (o.delay_seconds) {
+    const std::string refusal = delayRefusal(o.delay_seconds_value, true, c.sample_time, set.delay);
+    if (!refusal.empty()) fail("--delay-seconds " + YamlReader::fmt(o.delay_seconds_value) + " " + refusal);
   }
   if (task_duration > 0.0 && !delayShorterThanRun(set.delay, iterations)) {
     fail(std::string(o.delay ? "--delay" : o.delay_seconds ? "--delay-seconds" : "the recorded delay") +

@@ -44,7 +44,7 @@ TEST(LiveSettings, RefusesWithTheValueGiven) {
   EXPECT_EQ(check(s, "kp", 50), "kp = 50 is refused: accepted a gain in [0, 10]");
   EXPECT_NE(check(s, "kd", std::numeric_limits<double>::infinity()).find("kd = inf is refused"), std::string::npos);
   EXPECT_NE(check(s, "delay_samples", -1).find("delay_samples = -1 is refused"), std::string::npos);
-  EXPECT_EQ(check(s, "delay_samples", 2.5), "delay_samples = 2.5 is refused: integer samples in [0, 2047]");
+  EXPECT_EQ(check(s, "delay_samples", 2.5), "delay_samples = 2.5 is refused: accepted integer samples in [0, 2047]");
   EXPECT_NE(check(s, "delay_samples", 5000).find("delay_samples = 5000 is refused"), std::string::npos);
   EXPECT_NE(check(s, "delay_samples", 1801).find("accepted delays up to 1800 samples"), std::string::npos);
   EXPECT_EQ(check(s, "kpp", 0.6), "'kpp' is not a live setting: accepted delay_samples, kp, kd (the pd_saturated "

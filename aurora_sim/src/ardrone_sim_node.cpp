@@ -31,7 +31,7 @@ ArdroneSimNode::ArdroneSimNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
   } else if (mode == "lockstep") {
     mode_ = Mode::kLockstep;
   } else {
-    throw ParameterError("parameter '" + fullKey(pnh_, "mode") + "' = '" + mode +
+    throw ConfigError("parameter '" + fullKey(pnh_, "mode") + "' = '" + mode +
                          "' is invalid: accepted values 'realtime', 'lockstep'");
   }
   cmd_timeout_ = rangedParam(pnh_, "cmd_timeout", 0.2, 0.0, 10.0, "s", false);
@@ -43,7 +43,7 @@ ArdroneSimNode::ArdroneSimNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
       paramOr<std::string>(pnh_, "child_frame_id", ns.empty() ? "base_link" : ns + "/base_link");
   path_decimation_ = paramOr(pnh_, "path_decimation", 3);
   if (path_decimation_ < 1) {
-    throw ParameterError("parameter '" + fullKey(pnh_, "path_decimation") +
+    throw ConfigError("parameter '" + fullKey(pnh_, "path_decimation") +
                          "' is invalid: accepted values integers >= 1");
   }
   const double kNoLimit = std::numeric_limits<double>::max();
@@ -55,7 +55,7 @@ ArdroneSimNode::ArdroneSimNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
   stop_after_ = rangedParam(pnh_, "stop_after", 0.0, 0.0, kNoLimit, "s (0 = run until stopped)");
   lockstep_subscribers_ = paramOr(pnh_, "lockstep_subscribers", 1);
   if (lockstep_subscribers_ < 0) {
-    throw ParameterError("parameter '" + fullKey(pnh_, "lockstep_subscribers") +
+    throw ConfigError("parameter '" + fullKey(pnh_, "lockstep_subscribers") +
                          "' is invalid: accepted integers >= 0");
   }
   max_real_time_factor_ = rangedParam(pnh_, "max_real_time_factor", 0.0, 0.0, kNoLimit,

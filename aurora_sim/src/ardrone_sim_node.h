@@ -21,7 +21,7 @@ class ArdroneSimNode {
   enum class Mode { kRealtime, kLockstep };
   enum class Flight { kLanded, kTakingOff, kFlying, kLanding };
 
-  // Throws ParameterError on a missing or invalid parameter.
+  // Throws ConfigError on a missing or invalid parameter.
   ArdroneSimNode(ros::NodeHandle nh, ros::NodeHandle private_nh);
 
  private:

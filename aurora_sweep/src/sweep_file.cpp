@@ -59,11 +59,10 @@ int paramOf(const Reader& r, const SweepSpec& spec, const std::string& name, con
 // A value inside the parameter's accepted range (parameters.h), naming it.
 void checkValue(const Reader& r, int id, double v, const std::string& key) {
   const ParamInfo& p = paramInfo(id);
+  long samples = 0;
   if (p.group == ParamGroup::kDelay) {
-    if (v != std::floor(v) || v < p.min || v > p.max) {
-      r.fail(key, "= " + Reader::fmt(v) + " is not a delay: accepted whole samples in [0, " +
-                      std::to_string(aurora_control::kMaxRunnerDelay) + "]");
-    }
+    const std::string refusal = aurora_control::delayRefusal(v, false, 0.0, samples);
+    if (!refusal.empty()) r.fail(key, "= " + Reader::fmt(v) + " " + refusal);
   } else if (!(v >= p.min && v <= p.max)) {
     r.fail(key, "= " + Reader::fmt(v) + " is outside the accepted range [" + Reader::fmt(p.min) + ", " +
                     Reader::fmt(p.max) + "] of " + p.name + " (" + p.limit + ")");
@@ -163,14 +162,6 @@ void readSweepTask(const Reader& r, const YAML::Node& t, const std::string& swee
 }
 
 }  // namespace
-
-aurora_sim::ArdroneParams<double> loadVehicleFile(const std::string& path) {
-  try {
-    return aurora_sim::loadVehicleYaml(path);
-  } catch (const std::runtime_error& e) {
-    throw SweepFileError(e.what());
-  }
-}
 
 namespace {
 
@@ -423,9 +414,9 @@ SweepSpec parseSweepFile(const std::string& path, const std::string& config_dir)
   try {
     root = YAML::LoadFile(path);
   } catch (const YAML::BadFile&) {
-    throw SweepFileError("sweep file '" + path + "' cannot be read (does it exist?)");
+    throw ConfigError("sweep file '" + path + "' cannot be read (does it exist?)");
   } catch (const YAML::Exception& e) {
-    throw SweepFileError("sweep file '" + path + "' is not valid YAML: " + e.what());
+    throw ConfigError("sweep file '" + path + "' is not valid YAML: " + e.what());
   }
   r.onlyKeys(root, "", {"sweep"});
   const YAML::Node s = root["sweep"];
@@ -448,7 +439,7 @@ SweepSpec parseSweepFile(const std::string& path, const std::string& config_dir)
   const std::string vehicle = s["vehicle"] ? r.text(s["vehicle"], "sweep.vehicle")
                                            : std::string("vehicles/ardrone2.yaml");
   spec.vehicle_file = resolve(vehicle, sweep_dir, config_dir);
-  spec.vehicle = loadVehicleFile(spec.vehicle_file);
+  spec.vehicle = aurora_sim::loadVehicleYaml(spec.vehicle_file);
 
   if (s["task"]) readSweepTask(r, s["task"], sweep_dir, config_dir, spec);
 

@@ -38,7 +38,7 @@ inline std::string refusal(const std::string& yaml) {
   static int n = 0;
   try {
     loadSweepFile(writeTemp("bad_sweep_" + std::to_string(n++) + ".yaml", yaml), configDir());
-  } catch (const SweepFileError& e) {
+  } catch (const ConfigError& e) {
     return e.what();
   }
   return "";

@@ -205,7 +205,7 @@ TEST(SweepFileRefusal, CountBelowOne) {
 TEST(SweepFileRefusal, OtherMistakesAreNamed) {
   EXPECT_NE(refusal("sweep:\n  parameters:\n    kp: 0.5\n    kd: 0.5\n").find("'sweep.parameters.delay' is missing"),
             std::string::npos);
-  EXPECT_NE(refusal("sweep:\n  parameters:\n    kp: 0.5\n    kd: 0.5\n    delay: 2.5\n").find("accepted whole samples"),
+  EXPECT_NE(refusal("sweep:\n  parameters:\n    kp: 0.5\n    kd: 0.5\n    delay: 2.5\n").find("accepted integer samples in [0, 2047]"),
             std::string::npos);
   EXPECT_NE(refusal(std::string("sweep:\n") + kGoodParams + "  precision: half\n").find("'double' or 'float'"),
             std::string::npos);

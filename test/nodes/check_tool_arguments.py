@@ -34,7 +34,7 @@ class ToolArgumentsTest(unittest.TestCase):
         self.assert_refused(["--clamp", "--no-clamp"], "--clamp and --no-clamp exclude each other")
 
     def test_delay_beyond_the_node_limit(self):
-        self.assert_refused(["--delay", "2048"], "--delay must be integer samples in [0, 2047]")
+        self.assert_refused(["--delay", "2048"], "--delay 2048 is refused: accepted integer samples in [0, 2047]")
 
 
     def test_missing_bag_is_named_as_missing(self):

@@ -38,7 +38,7 @@ class FakeDriver {
   FakeDriver(ros::NodeHandle nh, ros::NodeHandle pnh) : rng_(pnh.param("seed", 1)) {
     params_ = loadVehicleParams(pnh, "vehicle");
     const std::string driver = pnh.param<std::string>("driver", "ardrone");
-    if (driver != "ardrone" && driver != "bebop") throw ParameterError("~driver: ardrone or bebop");
+    if (driver != "ardrone" && driver != "bebop") throw ConfigError("~driver: ardrone or bebop");
     const std::string prefix = driver == "ardrone" ? "/ardrone/" : "/bebop/";
     const std::string cmd = driver == "ardrone" ? "/cmd_vel" : "/bebop/cmd_vel";
     noise_pos_ = pnh.param("noise_position", 0.0005);
@@ -238,7 +238,7 @@ int main(int argc, char** argv) {
   try {
     FakeDriver fake(nh, pnh);
     ros::spin();
-  } catch (const ParameterError& e) {
+  } catch (const ConfigError& e) {
     ROS_FATAL("fake_driver: %s", e.what());
     return 2;
   }

@@ -3,6 +3,7 @@
 // (parameter_table.h), so that they agree.
 #pragma once
 
+#include <cmath>
 #include <cstdio>
 #include <string>
 #include <type_traits>
@@ -51,5 +52,29 @@ inline std::string delayRunText(long delay, long iterations, double Ts) {
 }
 
 inline std::string delayRangeText() { return "integer samples in [0, " + std::to_string(kMaxDelaySamples) + "]"; }
+
+// The one delay parse of every entry point (docs/architecture.md, "The
+// parameter table"): `value` in whole samples, or in seconds (in_seconds),
+// rounded once to whole samples of Ts; either way then within [0,
+// kMaxDelaySamples]. Sets `samples` and returns "", or returns the refusal,
+// to follow "KEY = VALUE " (the task's length is checked after, with
+// delayShorterThanRun).
+inline std::string delayRefusal(double value, bool in_seconds, double Ts, long& samples) {
+  const double max = double(kMaxDelaySamples);
+  if (in_seconds) {
+    char range[64];
+    std::snprintf(range, sizeof range, "[0, %g] s (%ld samples of Ts = %g s)", max * Ts, kMaxDelaySamples, Ts);
+    if (!std::isfinite(value) || value < 0 || std::lround(value / Ts) > kMaxDelaySamples) {
+      return "is refused: accepted range " + std::string(range);
+    }
+    samples = std::lround(value / Ts);
+    return "";
+  }
+  if (!std::isfinite(value) || value < 0 || value != std::floor(value) || value > max) {
+    return "is refused: accepted " + delayRangeText();
+  }
+  samples = static_cast<long>(value);
+  return "";
+}
 
 }  // namespace aurora_control

@@ -37,10 +37,9 @@ inline std::string rangeProblem(const LiveChange& c, double lo, double hi, const
 }
 
 inline std::string delayProblem(const LiveChange& c, long task_steps, double Ts) {
-  const std::string range = rangeProblem(c, 0, double(kMaxDelaySamples), "whole samples");
-  if (!range.empty()) return range;
-  if (c.value != std::floor(c.value)) return c.name + " = " + YamlReader::fmt(c.value) + " is refused: " + delayRangeText();
-  const long d = static_cast<long>(c.value);
+  long d = 0;
+  const std::string refusal = delayRefusal(c.value, false, Ts, d);
+  if (!refusal.empty()) return c.name + " = " + YamlReader::fmt(c.value) + " " + refusal;
   return delayShorterThanRun(d, task_steps) ? "" : c.name + " = " + delayRunText(d, task_steps, Ts);
 }
 

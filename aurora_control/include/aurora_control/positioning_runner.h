@@ -11,6 +11,7 @@
 #include "aurora_control/delay_buffer.h"
 #include "aurora_control/limits.h"
 #include "aurora_control/closed_loop.h"
+#include "aurora_sim/refusal_text.h"
 
 namespace aurora_control {
 
@@ -114,8 +115,8 @@ AURORA_HD RunnerResult runClosedLoop(const StudyRun<T>& run, const RunnerConfig<
 // Refuses a delay the runner's history cannot hold.
 inline void checkRunnerDelay(long delay) {
   if (delay < 0 || delay > kMaxRunnerDelay) {
-    throw std::invalid_argument("delay " + std::to_string(delay) + " samples is outside the accepted range [0, " +
-                                std::to_string(kMaxRunnerDelay) + "]");
+    throw aurora_sim::ConfigError("delay " + std::to_string(delay) + " samples is outside the accepted range: " +
+                                  delayRangeText());
   }
 }
 

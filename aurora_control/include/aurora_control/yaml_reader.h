@@ -17,9 +17,7 @@
 
 namespace aurora_control {
 
-struct ConfigError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
+using aurora_sim::ConfigError;  // refusal_text.h: the one error type
 
 inline std::string joinKeys(const std::vector<std::string>& keys) {
   std::string out;

@@ -1,5 +1,5 @@
 // The whole of a node's main(): init, construct the node class with
-// (nh, private_nh), spin; a ParameterError ends the process with code 2 and
+// (nh, private_nh), spin; a ConfigError ends the process with code 2 and
 // its message (ROS_FATAL).
 #pragma once
 
@@ -26,7 +26,7 @@ int runNode(int argc, char** argv, const char* name) {
   try {
     Node node{nh, private_nh};
     ros::spin();
-  } catch (const ParameterError& e) {
+  } catch (const ConfigError& e) {
     ROS_FATAL("%s: %s", name, e.what());
     return 2;
   } catch (const ros::InvalidNameException& e) {

@@ -5,9 +5,18 @@
 
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 #include <string>
 
 namespace aurora_sim {
+
+// The one error type of a refused value, parameter or file: its message
+// names the key, the value and what is accepted. Every reader throws it (ROS
+// parameters, YAML files, sweep files, the tools' options, the runner); every
+// entry point catches it and exits 2 with the message.
+struct ConfigError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
 
 // A number as a user wrote it (%g: 0.2, -5, 1e+09; any NaN reads "nan"), for messages.
 inline std::string numberText(double v) {

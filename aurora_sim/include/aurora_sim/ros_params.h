@@ -17,10 +17,6 @@
 
 namespace aurora_sim {
 
-struct ParameterError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
-
 inline std::string fullKey(const ros::NodeHandle& nh, const std::string& key) {
   return nh.resolveName(key);
 }
@@ -29,7 +25,7 @@ template <typename V>
 V requireParam(const ros::NodeHandle& nh, const std::string& key, const std::string& accepted) {
   V value;
   if (!nh.getParam(key, value)) {
-    throw ParameterError("missing parameter '" + fullKey(nh, key) + "' (accepted: " + accepted +
+    throw ConfigError("missing parameter '" + fullKey(nh, key) + "' (accepted: " + accepted +
                          ")");
   }
   return value;
@@ -47,7 +43,7 @@ inline bool boolParam(const ros::NodeHandle& nh, const std::string& key, bool fa
   if (!nh.getParam(key, v)) return fallback;
   if (v.getType() == XmlRpc::XmlRpcValue::TypeBoolean) return static_cast<bool>(v);
   const std::string text = v.getType() == XmlRpc::XmlRpcValue::TypeString ? static_cast<std::string>(v) : v.toXml();
-  throw ParameterError("parameter " + booleanRefusal(fullKey(nh, key), text));
+  throw ConfigError("parameter " + booleanRefusal(fullKey(nh, key), text));
 }
 
 // An optional number with a default, checked against [lo, hi] (or (lo, hi]
@@ -60,7 +56,7 @@ inline double rangedParam(const ros::NodeHandle& nh, const std::string& key, dou
   if (!(std::isfinite(v) && above && v <= hi)) {
     // No upper limit reads as "inf)", not as DBL_MAX's 309 digits.
     const bool open = hi >= std::numeric_limits<double>::max();
-    throw ParameterError("parameter '" + fullKey(nh, key) + "' = " + numberText(v) +
+    throw ConfigError("parameter '" + fullKey(nh, key) + "' = " + numberText(v) +
                          " is invalid: accepted range " + (lo_inclusive ? "[" : "(") + numberText(lo) +
                          ", " + (open ? std::string("inf)") : numberText(hi) + "]") + " " + unit);
   }
@@ -74,12 +70,12 @@ inline ArdroneParams<double> loadVehicleParams(const ros::NodeHandle& nh, const 
   for (const VehicleKey& key : vehicleKeys()) {
     double value = 0.0;
     if (!nh.getParam(ns + "/" + key.name, value)) {
-      throw ParameterError("missing vehicle parameter '" + prefix + key.name +
+      throw ConfigError("missing vehicle parameter '" + prefix + key.name +
                            "': load a vehicle file such as config/vehicles/ardrone2.yaml "
                            "(launch arg 'vehicle')");
     }
     const std::string problem = checkVehicleValue(prefix, key, value);
-    if (!problem.empty()) throw ParameterError(problem);
+    if (!problem.empty()) throw ConfigError(problem);
     setVehicleValue(p, key, value);
   }
   p.updateDerived();

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "aurora_sim/ardrone_params.h"
+#include "aurora_sim/refusal_text.h"
 #include "aurora_sim/vehicle_keys.h"
 
 namespace aurora_sim {
@@ -20,7 +21,7 @@ inline ArdroneParams<double> loadVehicleYaml(const std::string& path) {
   try {
     root = YAML::LoadFile(path);
   } catch (const YAML::Exception& e) {
-    throw std::runtime_error("vehicle file '" + path + "' cannot be read: " + e.what());
+    throw ConfigError("vehicle file '" + path + "' cannot be read: " + e.what());
   }
   ArdroneParams<double> p{};
   for (const VehicleKey& key : vehicleKeys()) {
@@ -29,7 +30,7 @@ inline ArdroneParams<double> loadVehicleYaml(const std::string& path) {
     YAML::Node node = YAML::Clone(root);
     while (std::getline(parts, part, '/')) {
       if (!node.IsMap() || !node[part]) {
-        throw std::runtime_error("vehicle file '" + path + "' lacks the key '" + key.name +
+        throw ConfigError("vehicle file '" + path + "' lacks the key '" + key.name +
                                  "' (" + key.unit + ")");
       }
       node = node[part];
@@ -38,10 +39,10 @@ inline ArdroneParams<double> loadVehicleYaml(const std::string& path) {
     try {
       value = node.as<double>();
     } catch (const YAML::Exception&) {
-      throw std::runtime_error("vehicle file '" + path + "': '" + key.name + "' is not a number");
+      throw ConfigError("vehicle file '" + path + "': '" + key.name + "' is not a number");
     }
     const std::string problem = checkVehicleValue(path + ": ", key, value);
-    if (!problem.empty()) throw std::runtime_error(problem);
+    if (!problem.empty()) throw ConfigError(problem);
     setVehicleValue(p, key, value);
   }
   p.updateDerived();

@@ -12,13 +12,10 @@ namespace aurora_sweep {
 
 // The shared configuration error (aurora_control/yaml_reader.h): the sweep
 // file, the task and controller schemas are read with the same rules.
-using SweepFileError = aurora_control::ConfigError;
+using aurora_control::ConfigError;
 
 // Reads `path`. Relative file names inside (vehicle, points) resolve against
 // the sweep file's folder first, then `config_dir` (the shipped config/).
 SweepSpec loadSweepFile(const std::string& path, const std::string& config_dir);
-
-// Reads the vehicle file's keys (vehicle_keys.h), strictly.
-aurora_sim::ArdroneParams<double> loadVehicleFile(const std::string& path);
 
 }  // namespace aurora_sweep
