@@ -1,5 +1,5 @@
 // Delay-study controller node.
-#include "aurora_sim/node_main.h"
+#include "aurora_sim/ros/node_main.h"
 #include "controller_node.h"
 
 int main(int argc, char** argv) {

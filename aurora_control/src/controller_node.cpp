@@ -10,12 +10,12 @@
 #include <stdexcept>
 
 #include "aurora_sim/command_mapping.h"
-#include "aurora_sim/ros_conversions.h"
-#include "aurora_sim/ros_params.h"
+#include "aurora_sim/ros/conversions.h"
+#include "aurora_sim/ros/params.h"
 #include "aurora_control/law_yaml.h"
 #include "aurora_control/live_settings.h"
 #include "aurora_control/tracking.h"
-#include "control_msg.h"
+#include "aurora_control/ros/control_msg.h"
 #include "controller_params.h"
 #include "param_tree.h"
 #include "task_markers.h"

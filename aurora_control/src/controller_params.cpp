@@ -6,7 +6,7 @@
 #include "aurora_control/law_yaml.h"
 #include "aurora_control/task_yaml.h"
 #include "param_tree.h"
-#include "aurora_sim/ros_params.h"
+#include "aurora_sim/ros/params.h"
 
 namespace aurora_control {
 

@@ -16,7 +16,7 @@
 #include "aurora_control/law_yaml.h"
 #include "aurora_control/limits.h"
 #include "aurora_control/task_yaml.h"
-#include "aurora_sim/config_dir.h"
+#include "aurora_sim/ros/config_dir.h"
 #include "aurora_sim/vehicle_yaml.h"
 
 namespace po = boost::program_options;

@@ -1,5 +1,5 @@
 // Motion-capture state estimator node.
-#include "aurora_sim/node_main.h"
+#include "aurora_sim/ros/node_main.h"
 #include "mocap_estimator_node.h"
 
 int main(int argc, char** argv) {

@@ -6,8 +6,8 @@
 #include <cmath>
 #include <vector>
 
-#include "aurora_sim/ros_conversions.h"
-#include "aurora_sim/ros_params.h"
+#include "aurora_sim/ros/conversions.h"
+#include "aurora_sim/ros/params.h"
 
 namespace aurora_control {
 

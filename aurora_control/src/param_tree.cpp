@@ -5,7 +5,7 @@
 #include <set>
 
 #include "aurora_control/yaml_reader.h"
-#include "aurora_sim/ros_params.h"
+#include "aurora_sim/ros/params.h"
 
 namespace aurora_control {
 

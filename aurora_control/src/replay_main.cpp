@@ -28,10 +28,10 @@
 #include "aurora_control/law_yaml.h"
 #include "aurora_control/limits.h"
 #include "aurora_control/tracking.h"
-#include "aurora_sim/config_dir.h"
+#include "aurora_sim/ros/config_dir.h"
 #include "aurora_sim/vehicle_yaml.h"
-#include "aurora_sim/ros_conversions.h"
-#include "control_msg.h"
+#include "aurora_sim/ros/conversions.h"
+#include "aurora_control/ros/control_msg.h"
 
 namespace po = boost::program_options;
 

@@ -9,9 +9,9 @@
 #include <limits>
 
 #include "aurora_sim/command_mapping.h"
-#include "aurora_sim/ros_conversions.h"
+#include "aurora_sim/ros/conversions.h"
 #include "aurora_sim/rotation.h"
-#include "aurora_sim/ros_params.h"
+#include "aurora_sim/ros/params.h"
 
 namespace aurora_sim {
 

@@ -10,7 +10,7 @@
 #include <cstring>
 #include <map>
 
-#include "aurora_sim/config_dir.h"
+#include "aurora_sim/ros/config_dir.h"
 #include "aurora_sweep/backends.h"
 #include "aurora_sweep/cuda_backend.h"
 #include "aurora_sweep/sweep_file.h"

@@ -38,7 +38,7 @@ class LaunchOutcomeTest(unittest.TestCase):
         rc, out = aurora_launch("stop_after:=3", "delay:=99999")
         self.assertEqual(rc, 1, out)
         self.assertIn("node /ardrone1/controller FAILED with exit status", out)
-        self.assertIn("delay/samples' = 99999 is invalid", out)
+        self.assertIn("delay/samples' = 99999 is refused: accepted integer samples in [0, 2047]", out)
 
     def test_a_master_left_running_keeps_no_parameters_of_the_last_launch(self):
         # The ordinary way to work: one roscore, several launches. Each must

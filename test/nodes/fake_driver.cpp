@@ -26,8 +26,8 @@
 
 #include "aurora_sim/ardrone_model.h"
 #include "aurora_sim/command_mapping.h"
-#include "aurora_sim/ros_conversions.h"
-#include "aurora_sim/ros_params.h"
+#include "aurora_sim/ros/conversions.h"
+#include "aurora_sim/ros/params.h"
 
 namespace {
 

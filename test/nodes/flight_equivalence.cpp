@@ -15,8 +15,8 @@
 #include "aurora_control/flight_runner.h"
 #include "aurora_control/law_yaml.h"
 #include "aurora_control/task_yaml.h"
-#include "aurora_sim/ros_conversions.h"
-#include "aurora_sim/ros_params.h"
+#include "aurora_sim/ros/conversions.h"
+#include "aurora_sim/ros/params.h"
 #include "lockstep_states.h"
 
 using namespace aurora_control;

@@ -10,7 +10,7 @@
 #include <map>
 #include <vector>
 
-#include "aurora_sim/ros_conversions.h"
+#include "aurora_sim/ros/conversions.h"
 
 namespace aurora_tests {
 

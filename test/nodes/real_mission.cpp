@@ -16,8 +16,8 @@
 #include "aurora_control/law_yaml.h"
 #include "aurora_control/closed_loop.h"
 #include "aurora_control/task_yaml.h"
-#include "aurora_sim/ros_conversions.h"
-#include "aurora_sim/ros_params.h"
+#include "aurora_sim/ros/conversions.h"
+#include "aurora_sim/ros/params.h"
 
 using namespace aurora_control;
 

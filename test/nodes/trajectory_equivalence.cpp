@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "aurora_control/positioning_runner.h"
-#include "aurora_sim/ros_conversions.h"
-#include "aurora_sim/ros_params.h"
+#include "aurora_sim/ros/conversions.h"
+#include "aurora_sim/ros/params.h"
 #include "lockstep_states.h"
 
 using namespace aurora_control;

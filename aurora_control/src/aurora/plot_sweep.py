@@ -151,6 +151,73 @@ def max_tolerable_delay(np, plt, kp, kd, delay, feasible, summary, out):
     plt.close(fig)
 
 
+def volume(np, plt, cols, mask, title, name, summary, total, out):
+    """The feasible (or one check's) set over (Kp, Kd, delay) in 3D and its
+    three projections (the thesis's figure 23a), as DIR/name."""
+    kp, kd, delay = cols["kp"], cols["kd"], cols["delay"]
+    fig = plt.figure(figsize=(12, 9))
+    ax = fig.add_subplot(2, 2, 1, projection="3d")
+    shown = np.flatnonzero(mask)
+    if len(shown) > MAX_SCATTER:  # a fixed subsample: the same figure every time
+        shown = np.sort(np.random.default_rng(0).choice(shown, MAX_SCATTER, replace=False))
+        title += "\n(3D: %d of %d points shown)" % (MAX_SCATTER, int(mask.sum()))
+    ax.scatter(kp[shown], kd[shown], delay[shown], s=4, c=delay[shown], cmap="viridis", depthshade=True)
+    ax.set_xlabel("Kp"); ax.set_ylabel("Kd"); ax.set_zlabel("delay [samples]")
+    ax.set_xlim(kp.min(), kp.max()); ax.set_ylim(kd.min(), kd.max()); ax.set_zlim(delay.min(), delay.max())
+    ax.set_title(title)
+    # Projections: the largest delay that still holds at each (Kp, Kd), and
+    # how many values of the third parameter hold in the other planes.
+    ukp, ukd, ud = np.unique(kp), np.unique(kd), np.unique(delay)
+    panels = ((2, "Kp", "Kd", ukp, ukd, kp, kd, "largest delay that holds [samples]", "max"),
+              (3, "Kp", "delay [samples]", ukp, ud, kp, delay, "number of Kd values that hold", "count"),
+              (4, "Kd", "delay [samples]", ukd, ud, kd, delay, "number of Kp values that hold", "count"))
+    for panel in panels:
+        projection(np, fig, panel, mask, delay)
+    fig.suptitle("%s: %d of %d combinations (%s, %s)" % (
+        summary.get("name", "sweep"), int(mask.sum()), total, summary.get("backend", "?"),
+        summary.get("precision", "?")))
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, name), dpi=100)
+    plt.close(fig)
+
+
+def projection(np, fig, panel, mask, delay):
+    """One projection of the set on a plane: the largest delay per cell
+    ("max") or how many rows of the set fall in it ("count")."""
+    pos, xl, yl, ux, uy, vx, vy, cl, how = panel
+    ax2 = fig.add_subplot(2, 2, pos)
+    ix = np.searchsorted(ux, vx[mask])
+    iy = np.searchsorted(uy, vy[mask])
+    if how == "max":
+        grid = np.full((len(uy), len(ux)), np.nan)
+        np.fmax.at(grid, (iy, ix), delay[mask].astype(float))
+    else:
+        grid = np.zeros((len(uy), len(ux)))
+        np.add.at(grid, (iy, ix), 1)
+    if len(ux) > 1 and len(uy) > 1:
+        # Cell edges halfway between the values: shading="nearest" by hand,
+        # which matplotlib < 3.3 lacks.
+        im = ax2.pcolormesh(cell_edges(np, ux), cell_edges(np, uy), grid, cmap="viridis")
+        fig.colorbar(im, ax=ax2, label=cl)
+    else:
+        ax2.scatter(vx[mask], vy[mask], s=6)
+    ax2.set_xlabel(xl); ax2.set_ylabel(yl)
+
+
+def read_sweep(np, out):
+    """summary.json (empty when missing) and the columns of the results;
+    raises OSError or KeyError when they cannot be read."""
+    summary = {}
+    try:
+        with open(os.path.join(out, "summary.json")) as f:
+            summary = json.load(f)
+    except (OSError, ValueError):
+        pass
+    names = summary.get("parameters", ["kp", "kd", "delay"])
+    flags = flag_columns(summary)
+    return summary, names, flags, read_results(np, out, names, flags)
+
+
 def main(argv):
     if len(argv) != 1 or argv[0] in ("-h", "--help"):
         print(__doc__)
@@ -163,16 +230,8 @@ def main(argv):
     from mpl_toolkits.mplot3d import Axes3D  # noqa: F401
     import numpy as np
 
-    summary = {}
     try:
-        with open(os.path.join(out, "summary.json")) as f:
-            summary = json.load(f)
-    except (OSError, ValueError):
-        pass
-    names = summary.get("parameters", ["kp", "kd", "delay"])
-    try:
-        flags = flag_columns(summary)
-        cols = read_results(np, out, names, flags)
+        summary, names, flags, cols = read_sweep(np, out)
     except (OSError, KeyError) as e:
         print("plot_sweep: cannot read the results in %s: %s (summary.json and results.csv or .h5, "
               "as the sweep writes them)" % (out, e), file=sys.stderr)
@@ -188,57 +247,12 @@ def main(argv):
     # The (Kp, Kd, delay) figures of the thesis: the PD law's grids.
     if not {"kp", "kd", "delay"} <= set(names):
         return 0
-    kp, kd, delay = cols["kp"], cols["kd"], cols["delay"]
-
-    def volume(mask, title, name):
-        fig = plt.figure(figsize=(12, 9))
-        ax = fig.add_subplot(2, 2, 1, projection="3d")
-        shown = np.flatnonzero(mask)
-        if len(shown) > MAX_SCATTER:  # a fixed subsample: the same figure every time
-            shown = np.sort(np.random.default_rng(0).choice(shown, MAX_SCATTER, replace=False))
-            title += "\n(3D: %d of %d points shown)" % (MAX_SCATTER, int(mask.sum()))
-        ax.scatter(kp[shown], kd[shown], delay[shown], s=4, c=delay[shown], cmap="viridis", depthshade=True)
-        ax.set_xlabel("Kp"); ax.set_ylabel("Kd"); ax.set_zlabel("delay [samples]")
-        ax.set_xlim(kp.min(), kp.max()); ax.set_ylim(kd.min(), kd.max()); ax.set_zlim(delay.min(), delay.max())
-        ax.set_title(title)
-        # Projections: the largest delay that still holds at each (Kp, Kd), and
-        # how many values of the third parameter hold in the other planes.
-        ukp, ukd, ud = np.unique(kp), np.unique(kd), np.unique(delay)
-        panels = ((2, "Kp", "Kd", ukp, ukd, kp, kd, "largest delay that holds [samples]", "max"),
-                  (3, "Kp", "delay [samples]", ukp, ud, kp, delay, "number of Kd values that hold", "count"),
-                  (4, "Kd", "delay [samples]", ukd, ud, kd, delay, "number of Kp values that hold", "count"))
-        for pos, xl, yl, ux, uy, vx, vy, cl, how in panels:
-            ax2 = fig.add_subplot(2, 2, pos)
-            ix = np.searchsorted(ux, vx[mask])
-            iy = np.searchsorted(uy, vy[mask])
-            if how == "max":
-                grid = np.full((len(uy), len(ux)), np.nan)
-                np.fmax.at(grid, (iy, ix), delay[mask].astype(float))
-            else:
-                grid = np.zeros((len(uy), len(ux)))
-                np.add.at(grid, (iy, ix), 1)
-            if len(ux) > 1 and len(uy) > 1:
-                # Cell edges halfway between the values: shading="nearest" by hand,
-                # which matplotlib < 3.3 lacks.
-                im = ax2.pcolormesh(cell_edges(np, ux), cell_edges(np, uy), grid, cmap="viridis")
-                fig.colorbar(im, ax=ax2, label=cl)
-            else:
-                ax2.scatter(vx[mask], vy[mask], s=6)
-            ax2.set_xlabel(xl); ax2.set_ylabel(yl)
-        fig.suptitle("%s: %d of %d combinations (%s, %s)" % (
-            summary.get("name", "sweep"), int(mask.sum()), total, summary.get("backend", "?"),
-            summary.get("precision", "?")))
-        fig.tight_layout()
-        fig.savefig(os.path.join(out, name), dpi=100)
-        plt.close(fig)
-
-    if summary.get("design", "grid") == "grid" and total == len(kp):
-        volume(ok["feasible"], "feasible set", "feasible_volume.png")
-        max_tolerable_delay(np, plt, kp, kd, delay, ok["feasible"], summary, out)
+    if summary.get("design", "grid") == "grid" and total == len(cols["kp"]):
+        volume(np, plt, cols, ok["feasible"], "feasible set", "feasible_volume.png", summary, total, out)
+        max_tolerable_delay(np, plt, cols["kp"], cols["kd"], cols["delay"], ok["feasible"], summary, out)
     if summary.get("early_stop") is False:
-        names = {"ok1": "check 1: e <= 5 m", "ok2": "check 2: IAE limit", "ok3": "check 3: ITAE limit",
-                 "ok4": "check 4: e <= 2 |e0|"}
-        for k, title in names.items():
-            volume(ok[k], title, "check%s_region.png" % k[-1])
+        titles = {"ok1": "check 1: e <= 5 m", "ok2": "check 2: IAE limit", "ok3": "check 3: ITAE limit",
+                  "ok4": "check 4: e <= 2 |e0|"}
+        for k, title in titles.items():
+            volume(np, plt, cols, ok[k], title, "check%s_region.png" % k[-1], summary, total, out)
     return 0
-

@@ -140,16 +140,9 @@ def loop_clock(steps, ts):
         yield step, t
 
 
-def analyse(ns, d):
-    states = {}
-    for s in d["states"]:
-        states.setdefault(s.step, s)
-    steps = sorted(states)
-    controls = d["controls"]
-    first = controls[min(controls)]
-    ts = first.sample_time
-    # Study metrics, recomputed from the recorded errors and commands in the
-    # controller's own order of operations (controller_node.cpp, feasibility.h).
+def study_metrics(controls, ts):
+    """IAE, ITAE and IASC recomputed from the recorded errors and commands in
+    the controller's own order of operations (closed_loop.h, feasibility.h)."""
     iae = itae = iasc = 0.0
     for step, t in loop_clock(sorted(controls), ts):
         c = controls[step]
@@ -159,12 +152,15 @@ def analyse(ns, d):
         iae = iae + e * METRIC_DT
         itae = itae + e * t * METRIC_DT
         iasc = iasc + u * METRIC_DT
-    last = controls[max(controls)]
-    # True position error against the desired position of the same step.
-    t0 = states[steps[0]].header.stamp.to_sec()
+    return iae, itae, iasc
+
+
+def flight_series(ns, states, controls, ts, t0):
+    """Per step with both a state and a control: time, state, reference,
+    tracking error, waypoint (or lap), whether in the task."""
     series = {k: [] for k in ("t", "x", "y", "z", "xd", "yd", "zd", "roll", "pitch", "yaw", "vx", "vy", "vz",
                               "p", "q", "r", "err", "wp", "in_task", "yaw_d")}
-    for step in steps:
+    for step in sorted(states):
         s = states[step]
         c = controls.get(step)
         if c is None:
@@ -185,13 +181,25 @@ def analyse(ns, d):
         series["in_task"].append(c.task_time <= c.task_duration + 0.5 * ts)
     if not series["t"]:
         raise ReportError("%s: no state step has a matching control message" % ns)
+    return series
+
+
+def analyse(ns, d):
+    states = {}
+    for s in d["states"]:
+        states.setdefault(s.step, s)
+    controls = d["controls"]
+    first, last = controls[min(controls)], controls[max(controls)]
+    ts = first.sample_time
+    iae, itae, iasc = study_metrics(controls, ts)
+    t0 = states[min(states)].header.stamp.to_sec()
+    series = flight_series(ns, states, controls, ts, t0)
     cmd = {"t": [], "u": [[], [], [], []]}
-    for step, t in loop_clock(sorted(controls), ts):
-        c = controls[step]
+    for step in sorted(controls):
         if step in states:
             cmd["t"].append(states[step].header.stamp.to_sec() - t0)
             for i in range(4):
-                cmd["u"][i].append(c.command[i])
+                cmd["u"][i].append(controls[step].command[i])
     # A moving reference (circle, lemniscate) has a desired velocity; the
     # segments are then laps (the node writes the lap into waypoint_index).
     trajectory = any(c.desired_velocity.x or c.desired_velocity.y or c.desired_velocity.z
@@ -347,21 +355,8 @@ def tracking_figure(plt, ns, series, save):
     save(fig, "tracking")
 
 
-def figures(ns, series, cmd, out_dir, pdf):
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    from mpl_toolkits.mplot3d import Axes3D  # noqa: F401  (projection="3d" on matplotlib < 3.2)
-    tag = ns.strip("/").replace("/", "_")
-    files = []
-
-    def save(fig, name):
-        for ext in ("png", "pdf") if pdf else ("png",):
-            path = os.path.join(out_dir, "%s_%s.%s" % (tag, name, ext))
-            fig.savefig(path, dpi=110)
-            files.append(path)
-        plt.close(fig)
-
+def route_figure(plt, series, save):
+    """The 3D route: the flown path, the waypoints (numbered) or the desired path."""
     wps = waypoints_in_order(series)
     fig = plt.figure(figsize=(7, 6))
     ax = fig.add_subplot(111, projection="3d")
@@ -378,6 +373,24 @@ def figures(ns, series, cmd, out_dir, pdf):
     ax.set_title("%s\n3D route" % series["label"])
     ax.legend(loc="upper left")
     save(fig, "route3d")
+
+
+def figures(ns, series, cmd, out_dir, pdf):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from mpl_toolkits.mplot3d import Axes3D  # noqa: F401  (projection="3d" on matplotlib < 3.2)
+    tag = ns.strip("/").replace("/", "_")
+    files = []
+
+    def save(fig, name):
+        for ext in ("png", "pdf") if pdf else ("png",):
+            path = os.path.join(out_dir, "%s_%s.%s" % (tag, name, ext))
+            fig.savefig(path, dpi=110)
+            files.append(path)
+        plt.close(fig)
+
+    route_figure(plt, series, save)
 
     t = series["t"]
     tracking_figure(plt, ns, series, save)

@@ -1,7 +1,7 @@
 // Reads a vehicle file (config/vehicles/*.yaml) with yaml-cpp, strictly:
 // every key of vehicle_keys.h must be present and in range. For ROS-free
 // callers (the sweep, tests); the nodes read the same keys from the
-// parameter server (ros_params.h).
+// parameter server (ros/params.h).
 #pragma once
 
 #include <yaml-cpp/yaml.h>

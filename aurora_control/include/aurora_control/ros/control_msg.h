@@ -7,7 +7,7 @@
 
 #include "aurora_control/delayed_controller.h"
 #include "aurora_control/task.h"
-#include "aurora_sim/ros_conversions.h"
+#include "aurora_sim/ros/conversions.h"
 
 namespace aurora_control {
 

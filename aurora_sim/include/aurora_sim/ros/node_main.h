@@ -7,7 +7,7 @@
 
 #include <cstdio>
 
-#include "aurora_sim/ros_params.h"
+#include "aurora_sim/ros/params.h"
 
 namespace aurora_sim {
 
