@@ -70,30 +70,19 @@ ControllerNode::ControllerNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
 
 // mode (realtime or lockstep), trigger and the lockstep subscriber counts.
 std::string ControllerNode::readLoopMode() {
-  const std::string mode = paramOr<std::string>(pnh_, "mode", "realtime");
-  if (mode != "realtime" && mode != "lockstep") {
-    throw ConfigError("parameter '" + fullKey(pnh_, "mode") + "' = '" + mode +
-                         "' is invalid: accepted values 'realtime', 'lockstep'");
-  }
+  const std::string mode = wordParam(pnh_, kParameterTable[kRowMode]);
   lockstep_ = mode == "lockstep";
   // Realtime: by default the law runs as soon as a state arrives (lowest
   // latency, AuRoRA's read-then-send loop); the 30 Hz timer is then the
   // stale-state watchdog. trigger=timer runs the law on the timer only, on
   // the newest state received.
-  const std::string trigger = paramOr<std::string>(pnh_, "trigger", "state");
-  if (trigger != "state" && trigger != "timer") {
-    throw ConfigError("parameter '" + fullKey(pnh_, "trigger") + "' = '" + trigger +
-                         "' is invalid: accepted values 'state', 'timer'");
-  }
-  timer_triggered_ = !lockstep_ && trigger == "timer";
+  timer_triggered_ = !lockstep_ && wordParam(pnh_, kParameterTable[kRowTrigger]) == "timer";
   // Lockstep: the first state is answered only once the subscribers that
   // must see every step are connected (a recorder, test nodes); until then
   // the sim re-sends it. Without this a link that connects late misses the
   // first steps, depending on machine load.
-  lockstep_cmd_subscribers_ = static_cast<int>(
-      rangedParam(pnh_, "lockstep_subscribers/cmd_vel", 1, 0, 100, "(subscribers of cmd_vel)"));
-  lockstep_control_subscribers_ = static_cast<int>(
-      rangedParam(pnh_, "lockstep_subscribers/control", 0, 0, 100, "(subscribers of control)"));
+  lockstep_cmd_subscribers_ = static_cast<int>(tableParam(pnh_, kParameterTable[kRowLockstepCmdSubscribers]));
+  lockstep_control_subscribers_ = static_cast<int>(tableParam(pnh_, kParameterTable[kRowLockstepControlSubscribers]));
   return mode;
 }
 

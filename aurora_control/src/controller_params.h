@@ -7,6 +7,7 @@
 
 #include <string>
 
+#include "aurora_control/parameter_table.h"
 #include "aurora_control/flight_supervisor.h"
 #include "aurora_control/joystick.h"
 #include "aurora_control/delayed_controller.h"
@@ -22,6 +23,11 @@ void loadLaw(const ros::NodeHandle& pnh, const aurora_sim::ArdroneParams<double>
 
 // "Kp=0.5 Kd=0.85" or "k1_x=0.5 k2_x=2 ...": the gains in force, for the log.
 std::string gainsText(const ControllerSettings& settings);
+// A row of the parameter table (parameter_table.h) as the node's private
+// parameter: a number within the row's range (its default when absent), or
+// one of a word row's words. Refused with the full key and what is accepted.
+double tableParam(const ros::NodeHandle& pnh, const ParameterSpec& row);
+std::string wordParam(const ros::NodeHandle& pnh, const ParameterSpec& row);
 const char* taskTypeName(TaskType type);
 
 // The underactuated gains to / from the reconfigure server's config.

@@ -22,7 +22,7 @@ TEST(ParameterTable, UnderactuatedRowsAreTheLawsGainsAndDefaults) {
     EXPECT_EQ(row.min, kUnderactuatedGainMin) << row.name;
     EXPECT_EQ(row.max, kUnderactuatedGainMax) << row.name;
   }
-  EXPECT_EQ(kParameterRows, kRowFirstUnderactuatedGain + 2 * kAxes);
+  EXPECT_EQ(kRowMode, kRowFirstUnderactuatedGain + 2 * kAxes);  // the 12 gains, then the node's rows
 }
 
 TEST(ParameterTable, BothPdGainsShareOneRange) {

@@ -9,11 +9,13 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <algorithm>
 #include <string>
+#include <vector>
 
 namespace aurora_control {
 
-enum class ParamKind { kReal, kWholeSamples, kBool };
+enum class ParamKind { kReal, kWholeSamples, kWhole, kBool, kWord };
 
 struct ParameterSpec {
   const char* name;      // in the controller YAML and ROS parameters (sweep files and reconfigure: see doc)
@@ -22,6 +24,7 @@ struct ParameterSpec {
   double min, max;       // accepted values, inclusive (NaN max: see doc)
   const char* unit;      // "" for none
   const char* doc;
+  const char* choices;   // kWord: the accepted words, '|'-separated; default_value is the default's index
 };
 
 // The rows, named.
@@ -32,7 +35,11 @@ enum ParameterRow : int {
   kRowDelaySeconds,
   kRowClampCommands,
   kRowFirstUnderactuatedGain,  // k1_x, k2_x, k1_y, ... k2_psi (underactuatedGainName order)
-  kParameterRows = kRowFirstUnderactuatedGain + 12,
+  kRowMode = kRowFirstUnderactuatedGain + 12,
+  kRowTrigger,
+  kRowLockstepCmdSubscribers,
+  kRowLockstepControlSubscribers,
+  kParameterRows,
 };
 
 constexpr double kNoValue = std::numeric_limits<double>::quiet_NaN();
@@ -60,16 +67,49 @@ constexpr ParameterSpec kParameterTable[kParameterRows] = {
     {"k2_theta", ParamKind::kReal, 20.0, 0.001, 100.0, "", "underactuated law: k2 of pitch"},
     {"k1_psi", ParamKind::kReal, 1.0, 0.001, 100.0, "", "underactuated law: k1 of yaw"},
     {"k2_psi", ParamKind::kReal, 2.5, 0.001, 100.0, "", "underactuated law: k2 of yaw"},
+    {"mode", ParamKind::kWord, 0, 0, 1, "",
+     "controller node: realtime (30 Hz timer, states as they come) or lockstep (one command per simulated step)",
+     "realtime|lockstep"},
+    {"trigger", ParamKind::kWord, 0, 0, 1, "",
+     "controller node, realtime: run the law on each new state, or on the timer with the newest state",
+     "state|timer"},
+    {"lockstep_subscribers/cmd_vel", ParamKind::kWhole, 1, 0, 100, "subscribers",
+     "controller node, lockstep: subscribers of cmd_vel to wait for before the first command"},
+    {"lockstep_subscribers/control", ParamKind::kWhole, 0, 0, 100, "subscribers",
+     "controller node, lockstep: subscribers of control to wait for (a recorder, a test)"},
 };
 
 inline const char* paramKindName(ParamKind k) {
-  return k == ParamKind::kReal ? "real" : k == ParamKind::kWholeSamples ? "whole" : "bool";
+  switch (k) {
+    case ParamKind::kReal: return "real";
+    case ParamKind::kWholeSamples:
+    case ParamKind::kWhole: return "whole";
+    case ParamKind::kBool: return "bool";
+    case ParamKind::kWord: break;
+  }
+  return "word";
+}
+
+// A word row's accepted words, in order.
+inline std::vector<std::string> paramChoices(const ParameterSpec& p) {
+  std::vector<std::string> words;
+  const std::string all = p.choices ? p.choices : "";
+  for (size_t a = 0; a <= all.size() && !all.empty();) {
+    const size_t b = std::min(all.find('|', a), all.size());
+    words.push_back(all.substr(a, b - a));
+    a = b + 1;
+  }
+  return words;
 }
 
 // One value of the reference: "—" for none, true/false for a flag.
 inline std::string referenceValue(const ParameterSpec& p, double v) {
   if (std::isnan(v)) return "—";
   if (p.kind == ParamKind::kBool) return v != 0.0 ? "true" : "false";
+  if (p.kind == ParamKind::kWord) {
+    const std::vector<std::string> words = paramChoices(p);
+    return words[static_cast<size_t>(v)];
+  }
   char text[32];
   std::snprintf(text, sizeof text, "%g", v);
   return text;
@@ -79,8 +119,13 @@ inline std::string referenceValue(const ParameterSpec& p, double v) {
 inline std::string parameterReference() {
   std::string md = "| parameter | kind | default | min | max | unit | meaning |\n|---|---|---|---|---|---|---|\n";
   for (const ParameterSpec& p : kParameterTable) {
+    std::string lo = referenceValue(p, p.min), hi = referenceValue(p, p.max);
+    if (p.kind == ParamKind::kWord) {  // the accepted words instead of a range
+      lo = "one of ", hi = "—";
+      for (const std::string& w : paramChoices(p)) lo += (lo.size() > 7 ? ", " : "") + w;
+    }
     md += std::string("| `") + p.name + "` | " + paramKindName(p.kind) + " | " + referenceValue(p, p.default_value) +
-          " | " + referenceValue(p, p.min) + " | " + referenceValue(p, p.max) + " | " + p.unit + " | " + p.doc + " |\n";
+          " | " + lo + " | " + hi + " | " + p.unit + " | " + p.doc + " |\n";
   }
   return md;
 }
