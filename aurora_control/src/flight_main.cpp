@@ -15,6 +15,7 @@
 #include "aurora_control/flight_runner.h"
 #include "aurora_control/law_yaml.h"
 #include "aurora_control/limits.h"
+#include "aurora_control/link_yaml.h"
 #include "aurora_control/task_yaml.h"
 #include "aurora_sim/ros/config_dir.h"
 #include "aurora_sim/vehicle_yaml.h"
@@ -25,8 +26,9 @@ using namespace aurora_control;
 namespace {
 
 struct Options {
-  std::string controller, task, vehicle, csv;
+  std::string controller, task, vehicle, csv, link;
   long delay = 0;
+  bool delay_given = false;
   bool no_clamp = false;
 };
 
@@ -39,7 +41,8 @@ bool parse(int argc, char** argv, Options& o) {
       ("vehicle", po::value(&o.vehicle)->default_value(config + "/vehicles/ardrone2.yaml"), "vehicle YAML")
       ("delay", po::value(&o.delay)->default_value(0), "feedback delay [samples of Ts], 0 to 2047 (limits.h)")
       ("no-clamp", po::bool_switch(&o.no_clamp), "do not clamp the law's commands (the sim still does, as the drivers)")
-      ("csv", po::value(&o.csv), "write step, t, x, y, z, desired x, y, z, tracking error per step k = 0..N (state k against the reference of step k)");
+      ("link", po::value(&o.link), "link YAML (config/links/*.yaml, docs/links.md): jitter, losses, a command-path delay; its uplink delay unless --delay is given")
+      ("csv", po::value(&o.csv), "write one row per step k = 0..N at round-trip precision: step, t, the 12-state after k model steps, the 4 commands the drone applied at step k (model order), the reference of step k and the tracking error");
   po::variables_map vm;
   po::store(po::parse_command_line(argc, argv, d), vm);
   if (vm.count("help")) {
@@ -47,6 +50,7 @@ bool parse(int argc, char** argv, Options& o) {
     return false;
   }
   po::notify(vm);
+  o.delay_given = !vm["delay"].defaulted();
   return true;
 }
 
@@ -56,6 +60,15 @@ ControllerSettings loadSettings(const Options& o, const aurora_sim::ArdroneParam
   set.vehicle = p;
   set.Ts = p.Ts;
   set.delay = o.delay;
+  if (!o.link.empty()) {
+    set.link = readLinkFile(o.link);
+    const long file_delay = set.link.uplink.delay;
+    if (o.delay_given && file_delay != 0 && file_delay != o.delay) {
+      throw ConfigError("--delay " + std::to_string(o.delay) + " and the link file's uplink delay " +
+                        std::to_string(file_delay) + ": give the uplink delay once");
+    }
+    if (!o.delay_given) set.delay = file_delay;
+  }
   return set;
 }
 
@@ -83,6 +96,20 @@ class SegmentErrors {
   std::vector<long> n_;
 };
 
+// One row per step k: the state after k model steps, the command the drone
+// applied at step k, the reference of step k and its tracking error; %.17g
+// reads back to the same double.
+const char* kCsvHeader =
+    "step,t,x,y,z,phi,theta,psi,dx,dy,dz,dphi,dtheta,dpsi,u1,u2,u3,u4,xd,yd,zd,error\n";
+
+void writeCsvRow(FILE* csv, const LoopObservation<double>& o, double t, double error) {
+  std::fprintf(csv, "%ld,%.17g", o.k, t);
+  for (int i = 0; i < aurora_sim::kStateSize; ++i) std::fprintf(csv, ",%.17g", o.X_before[i]);
+  for (int i = 0; i < aurora_sim::kCommandSize; ++i) std::fprintf(csv, ",%.17g", o.step.U[i]);
+  for (int i = 0; i < 3; ++i) std::fprintf(csv, ",%.17g", o.step.ref.pos[i]);
+  std::fprintf(csv, ",%.17g\n", error);
+}
+
 void refuseDelayBeyondTheTask(long delay, long steps, double Ts) {
   long samples = 0;
   const std::string refusal = delayRefusal(double(delay), false, Ts, samples);
@@ -103,15 +130,12 @@ int main(int argc, char** argv) {
     refuseDelayBeyondTheTask(set.delay, n, p.Ts);
     FILE* csv = o.csv.empty() ? nullptr : std::fopen(o.csv.c_str(), "w");
     if (!o.csv.empty() && !csv) throw std::runtime_error("cannot write '" + o.csv + "'");
-    if (csv) std::fprintf(csv, "step,t,x,y,z,xd,yd,zd,error\n");
+    if (csv) std::fprintf(csv, "%s", kCsvHeader);
     SegmentErrors segments(task);
     const auto t0 = std::chrono::steady_clock::now();
     const FlightResult r = runFlight(p, set, task, n, [&](const LoopObservation<double>& o, double e) {
       segments.add(o.k, p.Ts, e);
-      const double* X = o.X_before;  // state k, paired with reference k
-      const double* pd = o.step.ref.pos;
-      if (csv) std::fprintf(csv, "%ld,%.4f,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", o.k, taskTime(o.k, p.Ts), X[0], X[1],
-                            X[2], pd[0], pd[1], pd[2], e);
+      if (csv) writeCsvRow(csv, o, taskTime(o.k, p.Ts), e);
     });
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (csv) std::fclose(csv);

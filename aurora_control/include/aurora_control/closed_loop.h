@@ -100,24 +100,45 @@ struct LoopStep {
   T U[4];            // the command the drone applied (after its clamp)
 };
 
-// Iteration k of the closed loop (k as T: a batch of per-lane step numbers
-// on SIMD lanes) with xc the delayed state picked by the caller. Advances
-// `s` by one model step and its clock by Ts.
+// The controller's side of iteration k (k as T: a batch of per-lane step
+// numbers on SIMD lanes) with xc the state it received: the reference at
+// task time k Ts, the law, its clamp and the metrics. Writes the command it
+// sends to U; returns the reference.
+template <LawType Law, typename T, typename Mask, typename TaskT>
+AURORA_HD inline Reference<T> controllerHalf(const LoopParams<T>& p, const TaskT& task, const ClampPolicy& clamp,
+                                             const T& k, const T xc[aurora_sim::kStateSize], LoopState<T, Mask>& s,
+                                             T U[4]) {
+  const Reference<T> ref = task.at(taskTime(k, p.plant.Ts));
+  T U_law[4], err[3];
+  controllerCommand<Law>(p.model, p.gains, s.memory, ref, xc, clamp.at_controller, U_law, U, err);
+  s.metrics.accumulate(p.criteria, err, U, s.t);
+  return ref;
+}
+
+// The drone's side: the command it received (the sent one over an ideal
+// link), its clamp, one model step, the checks on the true error against
+// `ref`, the clock. Writes the command applied to `applied`.
+template <typename T, typename Mask>
+AURORA_HD inline void droneHalf(const LoopParams<T>& p, const ClampPolicy& clamp, const Reference<T>& ref,
+                                const T received[4], LoopState<T, Mask>& s, T applied[4]) {
+  for (int i = 0; i < 4; ++i) applied[i] = clamp.at_drone ? aurora_sim::clampUnit(received[i]) : received[i];
+  aurora_sim::ardroneStep(p.plant, s.model, applied, aurora_sim::Disturbance<T>::zero());
+  T e[3];
+  for (int i = 0; i < 3; ++i) e[i] = ref.pos[i] - s.model.X[aurora_sim::kX + i];
+  s.metrics.check(p.criteria, norm3(e), s.initial_error);
+  s.t = nextLoopTime(s.t, p.plant.Ts);
+}
+
+// Iteration k of the closed loop over an ideal command path: both halves,
+// the sent command applied at once. Advances `s` by one model step.
 template <LawType Law, typename T, typename Mask, typename TaskT>
 AURORA_HD inline LoopStep<T> closedLoopStep(const LoopParams<T>& p, const TaskT& task, const ClampPolicy& clamp,
                                             const T& k, const T xc[aurora_sim::kStateSize],
                                             LoopState<T, Mask>& s) {
   LoopStep<T> step;
-  step.ref = task.at(taskTime(k, p.plant.Ts));
-  T U_law[4], U[4], err[3];
-  controllerCommand<Law>(p.model, p.gains, s.memory, step.ref, xc, clamp.at_controller, U_law, U, err);
-  s.metrics.accumulate(p.criteria, err, U, s.t);
-  for (int i = 0; i < 4; ++i) step.U[i] = clamp.at_drone ? aurora_sim::clampUnit(U[i]) : U[i];
-  aurora_sim::ardroneStep(p.plant, s.model, step.U, aurora_sim::Disturbance<T>::zero());
-  T e[3];
-  for (int i = 0; i < 3; ++i) e[i] = step.ref.pos[i] - s.model.X[aurora_sim::kX + i];
-  s.metrics.check(p.criteria, norm3(e), s.initial_error);
-  s.t = nextLoopTime(s.t, p.plant.Ts);
+  T U[4];
+  step.ref = controllerHalf<Law>(p, task, clamp, k, xc, s, U);
+  droneHalf(p, clamp, step.ref, U, s, step.U);
   return step;
 }
 

@@ -50,6 +50,10 @@ class DelayBuffer {
     return ring_[(index - 1) % Capacity];
   }
 
+  // The sample pushed as H(index + 1) (0-based: the state of step index);
+  // requires size() - Capacity <= index < size().
+  AURORA_HD const Sample& at(long index) const { return ring_[index % Capacity]; }
+
   // Delay actually in force for the newest sample: d once d samples of
   // history exist, 0 before (the spec's "otherwise the current state").
   AURORA_HD long delayInForce(long d) const { return count_ > d ? d : 0; }

@@ -13,6 +13,7 @@
 
 #include "aurora_control/closed_loop.h"
 #include "aurora_control/delay_buffer.h"
+#include "aurora_control/link.h"
 #include "aurora_control/feasibility.h"
 #include "aurora_control/pd_controller.h"
 #include "aurora_control/trajectory_task.h"
@@ -34,7 +35,8 @@ struct ControllerSettings {
   PdGains<double> gains{0.0, 0.0};
   UnderactuatedGains<double> underactuated = UnderactuatedGains<double>::defaults();
   aurora_sim::ArdroneParams<double> vehicle{};  // the model the underactuated law inverts
-  long delay = 0;          // [samples]
+  long delay = 0;          // [samples] the uplink's base delay
+  LinkParams link;         // the rest of the link (link.h); so far the offline runner's only
   bool clamp_commands = true;
   double Ts = 1.0 / 30.0;  // [s], the vehicle's sample time (the loop clock's step)
 };

@@ -37,6 +37,7 @@ FlightResult runFlight(const aurora_sim::ArdroneParams<double>& p, const Control
   cfg.task = task;
   cfg.clamp_commands = settings.clamp_commands;
   cfg.clamp_at_drone = true;  // the sim's clamp
+  cfg.link = settings.link;
   FlightResult r;
   double sum_sq = 0.0;
   const RunnerResult done = runLoop(settings.law, run, cfg, iterations, [&](const LoopObservation<double>& o) {

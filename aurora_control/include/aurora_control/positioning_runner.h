@@ -5,12 +5,15 @@
 // loop with it.
 #pragma once
 
+#include <algorithm>
+#include <memory>
 #include <stdexcept>
 #include <string>
 
 #include "aurora_control/delay_buffer.h"
 #include "aurora_control/limits.h"
 #include "aurora_control/closed_loop.h"
+#include "aurora_control/loop_link.h"
 #include "aurora_sim/refusal_text.h"
 
 namespace aurora_control {
@@ -22,6 +25,8 @@ struct RunnerConfig {
   bool clamp_commands = false;  // the controller clamps: false reproduces the study, true the node
   bool clamp_at_drone = false;  // the drone clamps what it receives (the sim node and the drivers)
   bool early_stop = false;      // stop at the first failed check
+  LinkParams link;              // the link (link.h); its uplink delay is the run's `delay`
+  uint64_t combination = 0;     // keys the link's draws (the sweep's combination index)
 };
 
 // One simulation's own parameters: the simulated drone, the gains and the
@@ -88,9 +93,9 @@ AURORA_HD inline RunnerResult runnerResult(const LoopState<T, bool>& sim, long s
 // also the CUDA kernel's per-thread body. `iterations`: studyIterationCount()
 // for the study, taskStepCount() for a flight. Iteration k (0-based) keeps
 // X_k in the history and hands the law the delayed state by the delay rule.
-template <LawType Law, typename T, int Capacity, typename Observer>
-AURORA_HD RunnerResult runClosedLoop(const StudyRun<T>& run, const RunnerConfig<T>& cfg, long iterations,
-                                     Observer& observe) {
+template <LawType Law, typename T, int Capacity, typename Observer, typename Link>
+AURORA_HD RunnerResult runClosedLoopOver(const StudyRun<T>& run, const RunnerConfig<T>& cfg, long iterations,
+                                         Observer& observe, Link& link) {
   using Sample = LawSample<T, Law>;
   const LoopParams<T> params{run.plant, run.model, run.gains, cfg.criteria};
   const ClampPolicy clamp{cfg.clamp_commands, cfg.clamp_at_drone};
@@ -101,15 +106,27 @@ AURORA_HD RunnerResult runClosedLoop(const StudyRun<T>& run, const RunnerConfig<
   long k = 0;
   while (k < iterations) {
     history.push(Sample::fromState(s.model.X));  // H(k + 1) = X_k
-    T xc[aurora_sim::kStateSize], X_before[aurora_sim::kStateSize];
-    history.delayed(run.delay).toState(xc);
+    T xc[aurora_sim::kStateSize], X_before[aurora_sim::kStateSize], U[4];
+    history.at(link.uplinkIndex(k)).toState(xc);
     for (int i = 0; i < aurora_sim::kStateSize; ++i) X_before[i] = s.model.X[i];
-    const LoopStep<T> step = closedLoopStep<Law>(params, cfg.task, clamp, T(k), xc, s);
+    LoopStep<T> step;
+    step.ref = controllerHalf<Law>(params, cfg.task, clamp, T(k), xc, s, U);
+    link.downlink(k, U, U);
+    droneHalf(params, clamp, step.ref, U, s, step.U);
     observe(LoopObservation<T>{k, X_before, s, step, xc});
     ++k;
     if (stoppedEarly(cfg.early_stop, s.metrics.feasible())) break;
   }
   return runnerResult(s, k);
+}
+
+// The run over an ideal link (today's loop: the delay rule, no command
+// delay): the CUDA kernel's per-thread body and the sweep's scalar loop.
+template <LawType Law, typename T, int Capacity, typename Observer>
+AURORA_HD RunnerResult runClosedLoop(const StudyRun<T>& run, const RunnerConfig<T>& cfg, long iterations,
+                                     Observer& observe) {
+  IdealLink link{run.delay};
+  return runClosedLoopOver<Law, T, Capacity>(run, cfg, iterations, observe, link);
 }
 
 // Refuses a delay the runner's history cannot hold.
@@ -127,9 +144,25 @@ RunnerResult runLoop(LawType law, const StudyRun<T>& run, const RunnerConfig<T>&
                      Observer observe = Observer()) {
   checkRunnerDelay(run.delay);
   RunnerResult result;
-  withHistoryCapacity(run.delay, [&](auto capacity) {
+  if (cfg.link.ideal()) {
+    withHistoryCapacity(run.delay, [&](auto capacity) {
+      withLaw(law, [&](auto law_tag) {
+        result = runClosedLoop<decltype(law_tag)::value, T, decltype(capacity)::value>(run, cfg, iterations, observe);
+      });
+    });
+    return result;
+  }
+  LinkDirection up = cfg.link.uplink;
+  up.delay = run.delay;
+  const long latency = std::max(up.maxLatency(), cfg.link.downlink.maxLatency());
+  checkRunnerDelay(latency);
+  withHistoryCapacity(latency, [&](auto capacity) {
+    constexpr int kCapacity = decltype(capacity)::value;
+    // On the heap: two channels and a ring of commands of up to kDelayHistory.
+    std::unique_ptr<ModelLink<kCapacity, T>> link(
+        new ModelLink<kCapacity, T>(cfg.link, run.delay, cfg.combination, double(run.plant.Ts)));
     withLaw(law, [&](auto law_tag) {
-      result = runClosedLoop<decltype(law_tag)::value, T, decltype(capacity)::value>(run, cfg, iterations, observe);
+      result = runClosedLoopOver<decltype(law_tag)::value, T, kCapacity>(run, cfg, iterations, observe, *link);
     });
   });
   return result;

@@ -1,0 +1,157 @@
+// Imperfect links (docs/links.md): per direction a base delay, a per-packet
+// jitter, losses (independent or in bursts) and, on the command path, the
+// drivers' hover on a stale command. ROS-free, header-only, host and device:
+// the offline runner (and so the flight tool, the sweep's scalar backend and
+// each CUDA thread) sends one packet per step on each direction and asks
+// which one the receiver uses.
+//
+// Every random number is a pure function of (seed, combination, direction,
+// step) (Random123's Philox4x32-10, counter-based), so any backend, any
+// order of evaluation and the ROS loop draw the same numbers.
+#pragma once
+
+#include <Random123/philox.h>
+
+#include <cmath>
+#include <cstdint>
+
+#include "aurora_sim/host_device.h"
+
+namespace aurora_control {
+
+enum class JitterKind : int { kNone = 0, kUniform = 1, kGeometric = 2 };
+enum class LinkDirectionId : uint32_t { kUplink = 0, kDownlink = 1 };
+
+// One direction of a link (docs/links.md, "One direction").
+struct LinkDirection {
+  long delay = 0;                    // base delay [samples of Ts]
+  JitterKind jitter = JitterKind::kNone;
+  long jitter_max = 0;               // uniform: 0 ... max; geometric: cut at max [samples]
+  double jitter_mean = 0.0;          // geometric: mean before the cut [samples]
+  double loss = 0.0;                 // long-run share of lost packets, [0, 1)
+  double burst = 1.0;                // mean length of a run of losses [samples], >= 1 (1: independent)
+
+  AURORA_HD long maxLatency() const { return delay + (jitter == JitterKind::kNone ? 0 : jitter_max); }
+  // No jitter and no loss: the packet of step j arrives at j + delay.
+  AURORA_HD bool constant() const { return jitter == JitterKind::kNone && loss == 0.0; }
+};
+
+// A link: uplink (state to controller), downlink (command to drone).
+struct LinkParams {
+  LinkDirection uplink, downlink;
+  uint32_t seed = 0;
+  double cmd_timeout = 0.2;  // [s] the drone hovers when no new command arrived for this long
+
+  // Today's loop: a constant uplink delay, nothing else.
+  AURORA_HD bool ideal() const { return uplink.constant() && downlink.constant() && downlink.delay == 0; }
+};
+
+// The draws of one packet: two uniforms in (0, 1), for its jitter and its
+// loss, keyed by (seed, combination, direction, step).
+struct PacketDraws {
+  double jitter_u, loss_u;
+};
+
+AURORA_HD inline double unitFromBits(uint32_t x) {
+  return (double(x) + 0.5) * (1.0 / 4294967296.0);  // in (0, 1), never 0 or 1
+}
+
+AURORA_HD inline PacketDraws packetDraws(uint32_t seed, uint64_t combination, LinkDirectionId dir, uint64_t step) {
+  r123::Philox4x32 philox;
+  const r123::Philox4x32::key_type key = {{seed, static_cast<uint32_t>(combination)}};
+  const r123::Philox4x32::ctr_type ctr = {{static_cast<uint32_t>(step), static_cast<uint32_t>(step >> 32),
+                                           static_cast<uint32_t>(dir), static_cast<uint32_t>(combination >> 32)}};
+  const r123::Philox4x32::ctr_type r = philox(ctr, key);
+  return PacketDraws{unitFromBits(r.v[0]), unitFromBits(r.v[1])};
+}
+
+// A packet's jitter [samples] from its uniform draw u (docs/links.md,
+// "Jitter"): uniform, floor(u (max + 1)); geometric with mean m,
+// floor(ln(1 - u) / ln(m / (1 + m))), cut at max.
+AURORA_HD inline long jitterSamples(const LinkDirection& d, double u) {
+  if (d.jitter == JitterKind::kUniform) {
+    const long j = static_cast<long>(u * double(d.jitter_max + 1));
+    return j > d.jitter_max ? d.jitter_max : j;
+  }
+  if (d.jitter == JitterKind::kGeometric && d.jitter_mean > 0.0) {
+    const double j = std::floor(std::log(1.0 - u) / std::log(d.jitter_mean / (1.0 + d.jitter_mean)));
+    return j > double(d.jitter_max) ? d.jitter_max : static_cast<long>(j);
+  }
+  return 0;
+}
+
+// The loss chain (docs/links.md, "Loss"): with burst 1 each packet is lost
+// with probability `loss`, independently; above 1 a Gilbert-Elliott chain
+// whose bad state loses every packet: leave it with r = 1 / burst, enter it
+// with q = loss r / (1 - loss), so that the long-run share lost is `loss`.
+// Returns whether the packet of this step is lost, given whether the
+// previous one was (the chain's state).
+AURORA_HD inline bool packetLost(const LinkDirection& d, bool previous_lost, double u) {
+  if (d.loss <= 0.0) return false;
+  if (d.burst <= 1.0) return u < d.loss;
+  const double r = 1.0 / d.burst;
+  const double q = d.loss * r / (1.0 - d.loss);
+  return previous_lost ? !(u < r) : u < q;
+}
+
+// One direction of a link, from its sender's step to its receiver's choice.
+// Window: how many recent packets it tracks; a link's maxLatency() must be
+// below it (checked by the caller: linkRefusal).
+template <int Window>
+class LinkChannel {
+ public:
+  static constexpr long kNever = -1;
+
+  AURORA_HD LinkChannel() { reset(); }
+
+  AURORA_HD void reset() {
+    newest_ = -1;
+    newest_arrival_step_ = -1;
+    lost_ = false;
+    losses_ = 0;
+  }
+
+  // Sends the packet of step k (k = 0, 1, ... in order): draws whether it
+  // is lost and when it arrives.
+  AURORA_HD void send(const LinkDirection& d, uint32_t seed, uint64_t combination, LinkDirectionId dir, long k) {
+    if (d.constant()) {
+      arrival_[k % Window] = k + d.delay;
+      return;
+    }
+    const PacketDraws u = packetDraws(seed, combination, dir, static_cast<uint64_t>(k));
+    lost_ = packetLost(d, lost_, u.loss_u);
+    losses_ += lost_ ? 1 : 0;
+    arrival_[k % Window] = lost_ ? kNever : k + d.delay + jitterSamples(d, u.jitter_u);
+  }
+
+  // At step k (after send(k)): the step of the newest-sent packet that has
+  // arrived by k, or -1 while none has. A packet older than one already
+  // received is ignored when it arrives (receivers check sequence numbers).
+  AURORA_HD long receive(const LinkDirection& d, long k) {
+    // Packets sent after k - delay cannot have arrived; before k - maxLatency
+    // all that will arrive have.
+    const long oldest = k - d.maxLatency();
+    for (long j = k - d.delay; j >= (oldest > 0 ? oldest : 0) && j > newest_; --j) {
+      const long at = arrival_[j % Window];
+      if (at != kNever && at <= k) {
+        newest_ = j;
+        newest_arrival_step_ = k;
+        break;
+      }
+    }
+    return newest_;
+  }
+
+  // Steps since a new packet was last taken (receive), or -1 if never.
+  AURORA_HD long age(long k) const { return newest_ < 0 ? -1 : k - newest_arrival_step_; }
+  AURORA_HD long losses() const { return losses_; }
+
+ private:
+  long arrival_[Window];
+  long newest_;
+  long newest_arrival_step_;
+  bool lost_;
+  long losses_;
+};
+
+}  // namespace aurora_control

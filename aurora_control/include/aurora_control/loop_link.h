@@ -1,0 +1,74 @@
+// The link between the loop's two halves, as the offline runner uses it
+// (docs/links.md): which state the controller receives at step k, and which
+// command the drone applies. Two policies with one interface:
+// - IdealLink: today's loop, the delay rule on the uplink (delay_buffer.h)
+//   and the sent command applied at once; nothing to draw, nothing to store
+//   (the CUDA kernel and the SIMD engine's loop);
+// - ModelLink: link.h's channels on both directions, a ring of the commands
+//   sent, the drone's hover when none has arrived or the newest is stale.
+// With a constant uplink delay, no jitter, no loss and no downlink delay
+// both give the same bits (a test checks it).
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+
+#include "aurora_control/delay_buffer.h"
+#include "aurora_control/link.h"
+
+namespace aurora_control {
+
+struct IdealLink {
+  long delay;  // the uplink's [samples]
+
+  // The step whose state the controller receives at step k (0-based): the
+  // delay rule, k - d once k >= d, else the current state.
+  AURORA_HD long uplinkIndex(long k) { return delayedHistoryIndex<long>(k + 1, delay) - 1; }
+
+  template <typename T>
+  AURORA_HD void downlink(long, const T sent[4], T received[4]) {
+    for (int i = 0; i < 4; ++i) received[i] = sent[i];
+  }
+};
+
+template <int Window, typename T>
+class ModelLink {
+ public:
+  // `delay`: the run's (uplink) delay, which replaces the link's own.
+  AURORA_HD ModelLink(const LinkParams& link, long delay, uint64_t combination, double Ts)
+      : link_(link), combination_(combination) {
+    link_.uplink.delay = delay;
+    timeout_steps_ = static_cast<long>(std::lround(link.cmd_timeout / Ts));
+  }
+
+  // The controller's state at step k: the newest-sent state that has
+  // arrived, the current one while none has (the start rule).
+  AURORA_HD long uplinkIndex(long k) {
+    up_.send(link_.uplink, link_.seed, combination_, LinkDirectionId::kUplink, k);
+    const long j = up_.receive(link_.uplink, k);
+    return j < 0 ? k : j;
+  }
+
+  // The drone's command at step k: the newest-sent command that has
+  // arrived, or hover (zero) while none has or when the newest arrived
+  // cmd_timeout or longer ago (the drivers' watchdog).
+  AURORA_HD void downlink(long k, const T sent[4], T received[4]) {
+    for (int i = 0; i < 4; ++i) commands_[k % Window][i] = sent[i];
+    down_.send(link_.downlink, link_.seed, combination_, LinkDirectionId::kDownlink, k);
+    const long j = down_.receive(link_.downlink, k);
+    const bool hover = j < 0 || down_.age(k) >= timeout_steps_;
+    for (int i = 0; i < 4; ++i) received[i] = hover ? T(0) : commands_[j % Window][i];
+  }
+
+  AURORA_HD const LinkChannel<Window>& uplinkChannel() const { return up_; }
+  AURORA_HD const LinkChannel<Window>& downlinkChannel() const { return down_; }
+
+ private:
+  LinkParams link_;
+  uint64_t combination_;
+  long timeout_steps_;
+  LinkChannel<Window> up_, down_;
+  T commands_[Window][4];
+};
+
+}  // namespace aurora_control
