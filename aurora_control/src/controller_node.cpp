@@ -39,12 +39,14 @@ ControllerNode::ControllerNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
   set.Ts = Ts_;
   loadLaw(pnh_, vehicle, set);
   set.delay = readDelaySamples();
+  loadLink(pnh_, set);
   set.clamp_commands = aurora_sim::boolParam(pnh_, "clamp_commands", true);
   const std::string mode = readLoopMode();
   task_ = loadTask(pnh_);
   task_iterations_ = taskStepCount(task_.duration(), Ts_);  // steps 0..N (docs/controllers.md)
   refuseDelayBeyondTheTask(set.delay);
   refuseUnknownTopLevelKeys();
+  core_->configureLink();
   safety_ = loadSafetyConfig(pnh_);
   const SafetyConfig& safety = safety_;
   supervisor_.configure(safety);
@@ -120,7 +122,7 @@ void ControllerNode::refuseUnknownTopLevelKeys() {
   // The node's own keys and those the reconfigure server writes beside them.
   std::vector<std::string> accepted{"controller", "task", "safety", "joystick", "mode", "trigger",
                                     "delay", "clamp_commands", "lockstep_subscribers", "kp", "kd",
-                                    "delay_samples"};
+                                    "delay_samples", "link"};
   const std::vector<std::string> gains = lawGainNames(LawType::kUnderactuated);
   accepted.insert(accepted.end(), gains.begin(), gains.end());
   refuseUnknownParams(pnh_, "", accepted, "a typo, or a key of another file");
@@ -424,8 +426,13 @@ void ControllerNode::fillOutput(const ControlOutput& out, aurora_msgs::Control& 
   control.position_error.z = out.position_error[2];
   for (int i = 0; i < 4; ++i) {
     control.command[i] = out.U[i];
+    control.command_sent[i] = out.U_sent[i];
     control.command_unclamped[i] = out.U_unclamped[i];
   }
+  control.state_arrived = out.state_arrived;
+  control.command_age = static_cast<int32_t>(out.command_age);
+  control.uplink_losses = static_cast<uint32_t>(out.uplink_losses);
+  control.downlink_losses = static_cast<uint32_t>(out.downlink_losses);
   control.iae = out.iae;
   control.itae = out.itae;
   control.iasc = out.iasc;

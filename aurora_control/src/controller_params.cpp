@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "aurora_control/law_yaml.h"
+#include "aurora_control/link_yaml.h"
 #include "aurora_control/task_yaml.h"
 #include "param_tree.h"
 #include "aurora_sim/ros/params.h"
@@ -52,6 +53,13 @@ std::string gainsText(const ControllerSettings& set) {
 
 const char* taskTypeName(TaskType type) {
   return type == TaskType::kCircle ? "circle" : (type == TaskType::kLemniscate ? "lemniscate" : "waypoint");
+}
+
+void loadLink(const ros::NodeHandle& pnh, ControllerSettings& set) {
+  if (!pnh.hasParam("link")) return;
+  set.link = readLink(YamlReader("parameter ", "/"), paramAsYaml(pnh, "link"), fullKey(pnh, "link"));
+  const std::string refusal = combineUplinkDelay(set.delay, set.link, set.delay);
+  if (!refusal.empty()) throw ConfigError("parameter '" + fullKey(pnh, "link") + "': " + refusal);
 }
 
 Task<double> loadTask(const ros::NodeHandle& pnh) {

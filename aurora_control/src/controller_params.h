@@ -48,6 +48,9 @@ void readUnderactuatedGains(const Config& c, UnderactuatedGains<double>& g) {
 
 // ~task through the one task schema (task_yaml.h).
 Task<double> loadTask(const ros::NodeHandle& pnh);
+// ~link (a link file loaded by the launch's link:=NAME; absent: ideal) into
+// set.link, its uplink delay combined with set.delay (combineUplinkDelay).
+void loadLink(const ros::NodeHandle& pnh, ControllerSettings& set);
 SafetyConfig loadSafetyConfig(const ros::NodeHandle& pnh);
 // False when the joystick is not enabled (joystick/enabled).
 bool loadJoystickConfig(const ros::NodeHandle& pnh, JoystickConfig& config);

@@ -28,7 +28,6 @@ namespace {
 struct Options {
   std::string controller, task, vehicle, csv, link;
   long delay = 0;
-  bool delay_given = false;
   bool no_clamp = false;
 };
 
@@ -50,7 +49,6 @@ bool parse(int argc, char** argv, Options& o) {
     return false;
   }
   po::notify(vm);
-  o.delay_given = !vm["delay"].defaulted();
   return true;
 }
 
@@ -62,12 +60,8 @@ ControllerSettings loadSettings(const Options& o, const aurora_sim::ArdroneParam
   set.delay = o.delay;
   if (!o.link.empty()) {
     set.link = readLinkFile(o.link);
-    const long file_delay = set.link.uplink.delay;
-    if (o.delay_given && file_delay != 0 && file_delay != o.delay) {
-      throw ConfigError("--delay " + std::to_string(o.delay) + " and the link file's uplink delay " +
-                        std::to_string(file_delay) + ": give the uplink delay once");
-    }
-    if (!o.delay_given) set.delay = file_delay;
+    const std::string refusal = combineUplinkDelay(o.delay, set.link, set.delay);
+    if (!refusal.empty()) throw ConfigError("--delay and --link " + o.link + ": " + refusal);
   }
   return set;
 }

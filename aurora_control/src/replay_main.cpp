@@ -26,6 +26,7 @@
 
 #include "aurora_control/delayed_controller.h"
 #include "aurora_control/law_yaml.h"
+#include "aurora_control/link_yaml.h"
 #include "aurora_control/limits.h"
 #include "aurora_control/tracking.h"
 #include "aurora_sim/ros/config_dir.h"
@@ -112,6 +113,7 @@ void recordedLaw(const aurora_msgs::Control& c, ControllerSettings& set) {
 struct Arguments {
   std::string bag_path, ns, out_path;
   std::string vehicle_path;  // default: configDir()/vehicles/ardrone2.yaml
+  std::string link_path;     // default: the ideal link
   bool expect_identical = false;
   Overrides o;
 };
@@ -133,6 +135,8 @@ po::options_description describe(Arguments& args, Given& g) {
       ("vehicle", po::value(&args.vehicle_path)->value_name("FILE"),
        "vehicle YAML the underactuated law inverts (default: vehicles/ardrone2.yaml of the aurora_config package)")
       ("delay", po::value(&g.delay)->value_name("N"), "delay in samples")
+      ("link", po::value(&args.link_path)->value_name("FILE"),
+       "link YAML (config/links/*.yaml, docs/links.md): replay over that link (the delay stays the recorded or given one)")
       ("delay-seconds", po::value(&g.delay_seconds)->value_name("S"), "delay in seconds (rounded to whole samples)")
       ("clamp", "clamp commands to [-1, 1]")
       ("no-clamp", "do not clamp commands")
@@ -329,6 +333,21 @@ FILE* openCommandsCsv(const std::string& path) {
   return csv;
 }
 
+// The controller core: the vehicle the underactuated law inverts, the link.
+std::unique_ptr<DelayedController<kCapacity>> makeCore(const Arguments& args) {
+  std::unique_ptr<DelayedController<kCapacity>> core(new DelayedController<kCapacity>());
+  core->settings.vehicle = vehicleFor(args.vehicle_path);
+  if (!args.link_path.empty()) {
+    try {
+      core->settings.link = readLinkFile(args.link_path);
+    } catch (const ConfigError& e) {
+      fail(e.what());
+    }
+    core->configureLink();
+  }
+  return core;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -345,8 +364,7 @@ int main(int argc, char** argv) {
   readDrone(bag, bag_path, ns, states, controls);
   if (controls.empty() || states.empty()) fail("no " + ns + "/control or " + ns + "/state messages");
 
-  std::unique_ptr<DelayedController<kCapacity>> core(new DelayedController<kCapacity>());
-  core->settings.vehicle = vehicleFor(args.vehicle_path);
+  const std::unique_ptr<DelayedController<kCapacity>> core = makeCore(args);
   FILE* csv = out_path.empty() ? nullptr : openCommandsCsv(out_path);
   // The recorded task's length (Control.task_duration; one task per bag, as
   // the report assumes) bounds the delay as in the node and the sweep.

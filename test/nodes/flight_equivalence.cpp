@@ -14,6 +14,7 @@
 
 #include "aurora_control/flight_runner.h"
 #include "aurora_control/law_yaml.h"
+#include "aurora_control/link_yaml.h"
 #include "aurora_control/task_yaml.h"
 #include "aurora_sim/ros/conversions.h"
 #include "aurora_sim/ros/params.h"
@@ -48,6 +49,11 @@ TEST(FlightEquivalence, RosLoopEqualsTheFlightRunnerBitForBit) {
   set.Ts = params.Ts;
   set.delay = pnh.param("delay", 0);
   set.clamp_commands = controller.has_clamp ? controller.clamp : true;
+  std::string link_file;
+  if (pnh.getParam("link_file", link_file)) {  // the node's link:=NAME
+    set.link = readLinkFile(link_file);
+    ASSERT_EQ(combineUplinkDelay(set.delay, set.link, set.delay), "");
+  }
   const Task<double> task = readTask(YamlReader(), fileParam(pnh, "task_file")["task"], "task");
   std::vector<std::vector<double>> offline(1);
   aurora_sim::ArdroneState<double> s0;
@@ -62,6 +68,17 @@ TEST(FlightEquivalence, RosLoopEqualsTheFlightRunnerBitForBit) {
 
   const long mismatches = aurora_tests::bitMismatches(flown, offline, steps);
   EXPECT_EQ(mismatches, 0);
+  if (!link_file.empty()) {
+    // Not a vacuous pass: over the ideal link the same flight differs.
+    set.link = LinkParams();
+    std::vector<std::vector<double>> ideal(1, offline[0]);
+    runFlight(params, set, task, steps, [&](const LoopObservation<double>& o, double) {
+      ideal.emplace_back(o.after.model.X, o.after.model.X + 12);
+    });
+    long differ = 0;
+    for (size_t k = 0; k < ideal.size() && k < offline.size(); ++k) differ += ideal[k] != offline[k];
+    EXPECT_GT(differ, steps / 2) << "the link changed nothing";
+  }
   // Guard against a vacuous pass: the drone went at least 0.5 m from its start.
   double farthest = 0.0;
   for (const auto& kv : flown) {

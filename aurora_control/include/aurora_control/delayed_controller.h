@@ -14,6 +14,7 @@
 #include "aurora_control/closed_loop.h"
 #include "aurora_control/delay_buffer.h"
 #include "aurora_control/link.h"
+#include "aurora_control/node_link.h"
 #include "aurora_control/feasibility.h"
 #include "aurora_control/pd_controller.h"
 #include "aurora_control/trajectory_task.h"
@@ -36,18 +37,22 @@ struct ControllerSettings {
   UnderactuatedGains<double> underactuated = UnderactuatedGains<double>::defaults();
   aurora_sim::ArdroneParams<double> vehicle{};  // the model the underactuated law inverts
   long delay = 0;          // [samples] the uplink's base delay
-  LinkParams link;         // the rest of the link (link.h); so far the offline runner's only
+  LinkParams link;         // the rest of the link (link.h, docs/links.md); apply with configureLink()
   bool clamp_commands = true;
   double Ts = 1.0 / 30.0;  // [s], the vehicle's sample time (the loop clock's step)
 };
 
 struct ControlOutput {
-  double U[4] = {0, 0, 0, 0};            // as sent (clamped when configured)
+  double U[4] = {0, 0, 0, 0};            // as the drone applies it (over an ideal link: as sent)
+  double U_sent[4] = {0, 0, 0, 0};       // as the controller sent it (clamped when configured)
   double U_unclamped[4] = {0, 0, 0, 0};  // as the law computed it
   double position_error[3] = {0, 0, 0};  // desired - used position [m]
   const StateSample* used = nullptr;     // the (delayed) state the law used
   long delay_in_force = 0;               // samples between the newest state and `used`
   long delay_pending = 0;                // further states before settings.delay is in force
+  bool state_arrived = true;             // the newest state step brought a newer state to the law
+  long command_age = 0;                  // steps since the command the drone applies was sent (-1: none yet)
+  long uplink_losses = 0, downlink_losses = 0;  // packets lost so far
   double iae = 0, itae = 0, iasc = 0;    // running metrics after this cycle
 };
 
@@ -63,8 +68,13 @@ class DelayedController {
   void reset() {
     history_.clear();
     memory_.reset();
+    link_.reset();
     resetMetrics();
   }
+
+  // Applies settings.link (and settings.delay as its uplink delay); the
+  // channels start afresh. An ideal link keeps the delay rule.
+  void configureLink() { link_.configure(settings.link, settings.delay, settings.Ts); }
 
   // The metrics start again (e.g. when the task starts after take-off).
   void resetMetrics() {
@@ -82,6 +92,10 @@ class DelayedController {
       if (s.step < newest) reset();
     }
     history_.push(s);
+    if (link_.active()) {
+      link_.setDelay(settings.delay);
+      used_step_ = link_.stateReceived(s.step);
+    }
     return true;
   }
 
@@ -98,10 +112,10 @@ class DelayedController {
   // and its rates (feed-forward). Requires !empty().
   ControlOutput compute(const Reference<double>& ref) {
     ControlOutput out;
-    const StateSample& used = history_.delayed(settings.delay);
+    const StateSample& used = link_.active() ? stateOfStep(used_step_) : history_.delayed(settings.delay);
     out.used = &used;
-    out.delay_in_force = history_.delayInForce(settings.delay);
-    out.delay_pending = history_.pendingUntilInForce(settings.delay);
+    out.delay_in_force = link_.active() ? newest().step - used.step : history_.delayInForce(settings.delay);
+    out.delay_pending = link_.active() ? 0 : history_.pendingUntilInForce(settings.delay);
     const LawGains<double> gains{settings.gains, settings.underactuated};
     withLaw(settings.law, [&](auto law) {
       controllerCommand<decltype(law)::value>(settings.vehicle, gains, memory_, ref, used.X,
@@ -109,6 +123,7 @@ class DelayedController {
                                               out.position_error);
     });
     finish(out);
+    overLink(out);
     return out;
   }
 
@@ -129,6 +144,27 @@ class DelayedController {
   }
 
  private:
+  // The stored state of step `step` (the link's choice), newest first.
+  const StateSample& stateOfStep(long step) const {
+    for (long i = 0; i < history_.size() && i < Capacity; ++i) {
+      if (history_.delayed(i).step == step) return history_.delayed(i);
+    }
+    return newest();
+  }
+
+  // The drone's side of the command over the link (after the metrics, which
+  // are the controller's: its error, its sent command).
+  void overLink(ControlOutput& out) {
+    for (int i = 0; i < 4; ++i) out.U_sent[i] = out.U[i];
+    if (!link_.active()) return;
+    const long k = newest().step;
+    link_.commandSent(k, out.U_sent, out.U);
+    out.state_arrived = link_.stateArrived();
+    out.command_age = link_.commandAge(k);
+    out.uplink_losses = link_.uplinkLosses();
+    out.downlink_losses = link_.downlinkLosses();
+  }
+
   void finish(ControlOutput& out) {
     // Metrics once per state step (a timer cycle without a new state, or a
     // re-sent state, does not count twice), at the loop clock's time.
@@ -148,6 +184,8 @@ class DelayedController {
   FeasibilityCriteria<double> criteria_ = FeasibilityCriteria<double>::study();
   long metrics_step_ = -1;
   LoopClock clock_;
+  NodeLink<Capacity> link_;
+  long used_step_ = -1;  // over a link: the step of the state the law uses
 };
 
 }  // namespace aurora_control

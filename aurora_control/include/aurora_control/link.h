@@ -142,6 +142,10 @@ class LinkChannel {
     return newest_;
   }
 
+  // No packet was sent at step k (a state the node never received, a step
+  // without a command): it never arrives; the loss chain does not advance.
+  AURORA_HD void miss(long k) { arrival_[k % Window] = kNever; }
+
   // Steps since a new packet was last taken (receive), or -1 if never.
   AURORA_HD long age(long k) const { return newest_ < 0 ? -1 : k - newest_arrival_step_; }
   AURORA_HD long losses() const { return losses_; }

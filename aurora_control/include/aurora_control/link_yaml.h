@@ -72,6 +72,19 @@ inline LinkParams readLink(const YamlReader& r, const YAML::Node& node, const st
   return l;
 }
 
+// The uplink's base delay from the run's delay (a tool's --delay, the node's
+// delay/*; 0 when not given) and a link file's uplink delay: whichever is
+// not 0; both given and different is refused (returns why, else "").
+inline std::string combineUplinkDelay(long run_delay, const LinkParams& link, long& delay) {
+  const long file_delay = link.uplink.delay;
+  delay = run_delay != 0 ? run_delay : file_delay;
+  if (run_delay != 0 && file_delay != 0 && run_delay != file_delay) {
+    return "the delay " + std::to_string(run_delay) + " and the link's uplink delay " + std::to_string(file_delay) +
+           " differ: give the uplink delay once (the link file's, or the delay with the file's at 0)";
+  }
+  return "";
+}
+
 inline LinkParams readLinkFile(const std::string& path) {
   YAML::Node root;
   try {

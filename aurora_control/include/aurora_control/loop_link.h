@@ -60,6 +60,13 @@ class ModelLink {
     for (int i = 0; i < 4; ++i) received[i] = hover ? T(0) : commands_[j % Window][i];
   }
 
+  // A step without a packet on a direction (the node: a state it never
+  // received, a step without a command).
+  AURORA_HD void uplinkMiss(long k) { up_.miss(k); }
+  AURORA_HD void downlinkMiss(long k) { down_.miss(k); }
+  // The uplink's base delay changed (a live change of the node's delay).
+  AURORA_HD void setUplinkDelay(long delay) { link_.uplink.delay = delay; }
+
   AURORA_HD const LinkChannel<Window>& uplinkChannel() const { return up_; }
   AURORA_HD const LinkChannel<Window>& downlinkChannel() const { return down_; }
 

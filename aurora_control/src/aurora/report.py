@@ -148,7 +148,9 @@ def study_metrics(controls, ts):
         c = controls[step]
         e = math.sqrt(c.position_error.x * c.position_error.x + c.position_error.y * c.position_error.y
                       + c.position_error.z * c.position_error.z)
-        u = math.sqrt(sum(x * x for x in c.command))
+        # The command the controller sent (over an imperfect link the drone's
+        # differs); bags recorded before command_sent existed have command only.
+        u = math.sqrt(sum(x * x for x in getattr(c, "command_sent", c.command)))
         iae = iae + e * METRIC_DT
         itae = itae + e * t * METRIC_DT
         iasc = iasc + u * METRIC_DT
