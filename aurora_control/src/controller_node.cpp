@@ -431,6 +431,7 @@ void ControllerNode::fillOutput(const ControlOutput& out, aurora_msgs::Control& 
   }
   control.state_arrived = out.state_arrived;
   control.command_age = static_cast<int32_t>(out.command_age);
+  control.drone_hovers = out.drone_hovers;
   control.uplink_losses = static_cast<uint32_t>(out.uplink_losses);
   control.downlink_losses = static_cast<uint32_t>(out.downlink_losses);
   control.iae = out.iae;

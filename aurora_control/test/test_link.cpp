@@ -160,7 +160,7 @@ TEST(Link, DroneHoversWhenTheNewestCommandIsTooOld) {
   for (long k = 0; k < 5000; ++k) {
     double got[4];
     m.downlink(k, sent, got);
-    const long age = m.downlinkChannel().age(k);
+    const long age = m.downlinkChannel().sinceArrival(k);
     const bool should_hover = age < 0 || age >= 6;
     wrong += should_hover != (got[0] == 0.0);
     hovered += got[0] == 0.0, flown += got[0] != 0.0;
@@ -256,7 +256,7 @@ TEST(Link, TheNodesCoreOverALinkIsTheRunners) {
     node->push(s);
     const ControlOutput out = node->compute(task.at(taskTime(o.k, p.Ts)));
     for (int i = 0; i < 4; ++i) differ += aurora_sim::clampUnit(out.U[i]) != o.step.U[i];
-    hovered += out.command_age < 0 || out.command_age >= 6;
+    hovered += out.drone_hovers;
   });
   EXPECT_EQ(differ, 0);
   EXPECT_GT(hovered, 10);  // the link made the drone hover now and then

@@ -52,6 +52,7 @@ struct ControlOutput {
   long delay_pending = 0;                // further states before settings.delay is in force
   bool state_arrived = true;             // the newest state step brought a newer state to the law
   long command_age = 0;                  // steps since the command the drone applies was sent (-1: none yet)
+  bool drone_hovers = false;             // the drone hovers: no command arrived yet, or none for cmd_timeout
   long uplink_losses = 0, downlink_losses = 0;  // packets lost so far
   double iae = 0, itae = 0, iasc = 0;    // running metrics after this cycle
 };
@@ -161,6 +162,7 @@ class DelayedController {
     link_.commandSent(k, out.U_sent, out.U);
     out.state_arrived = link_.stateArrived();
     out.command_age = link_.commandAge(k);
+    out.drone_hovers = link_.droneHovers();
     out.uplink_losses = link_.uplinkLosses();
     out.downlink_losses = link_.downlinkLosses();
   }

@@ -146,8 +146,10 @@ class LinkChannel {
   // without a command): it never arrives; the loss chain does not advance.
   AURORA_HD void miss(long k) { arrival_[k % Window] = kNever; }
 
-  // Steps since a new packet was last taken (receive), or -1 if never.
-  AURORA_HD long age(long k) const { return newest_ < 0 ? -1 : k - newest_arrival_step_; }
+  // Steps since a newer packet last arrived (receive), or -1 if none has.
+  AURORA_HD long sinceArrival(long k) const { return newest_ < 0 ? -1 : k - newest_arrival_step_; }
+  // The step the newest packet received was sent at, or -1.
+  AURORA_HD long newest() const { return newest_; }
   AURORA_HD long losses() const { return losses_; }
 
  private:

@@ -56,7 +56,8 @@ class ModelLink {
     for (int i = 0; i < 4; ++i) commands_[k % Window][i] = sent[i];
     down_.send(link_.downlink, link_.seed, combination_, LinkDirectionId::kDownlink, k);
     const long j = down_.receive(link_.downlink, k);
-    const bool hover = j < 0 || down_.age(k) >= timeout_steps_;
+    hovering_ = j < 0 || down_.sinceArrival(k) >= timeout_steps_;
+    const bool hover = hovering_;
     for (int i = 0; i < 4; ++i) received[i] = hover ? T(0) : commands_[j % Window][i];
   }
 
@@ -67,6 +68,9 @@ class ModelLink {
   // The uplink's base delay changed (a live change of the node's delay).
   AURORA_HD void setUplinkDelay(long delay) { link_.uplink.delay = delay; }
 
+  // The drone hovers at the last downlink step (no command, or a stale one).
+  AURORA_HD bool hovering() const { return hovering_; }
+
   AURORA_HD const LinkChannel<Window>& uplinkChannel() const { return up_; }
   AURORA_HD const LinkChannel<Window>& downlinkChannel() const { return down_; }
 
@@ -74,6 +78,7 @@ class ModelLink {
   LinkParams link_;
   uint64_t combination_;
   long timeout_steps_;
+  bool hovering_ = false;
   LinkChannel<Window> up_, down_;
   T commands_[Window][4];
 };

@@ -58,7 +58,12 @@ class NodeLink {
   }
 
   bool stateArrived() const { return arrived_; }  // the last state step brought a newer state
-  long commandAge(long k) const { return model_->downlinkChannel().age(k); }
+  // Steps since the command the drone applies was sent (-1: none yet).
+  long commandAge(long k) const {
+    const long j = model_->downlinkChannel().newest();
+    return j < 0 ? -1 : k - j;
+  }
+  bool droneHovers() const { return model_->hovering(); }
   long uplinkLosses() const { return model_->uplinkChannel().losses(); }
   long downlinkLosses() const { return model_->downlinkChannel().losses(); }
 

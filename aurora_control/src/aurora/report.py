@@ -238,7 +238,43 @@ def analyse(ns, d):
         "modes": sorted({c.mode for c in controls.values()}),
     }
     metrics.update(task_coverage(first, last, ts))
+    link = link_metrics(controls)
+    if link is not None:
+        series["state_age"] = link.pop("state_age_samples")
+        series["command_age"] = link.pop("command_age_samples")
+        metrics["link"] = link
     return metrics, series, cmd
+
+
+def longest_run(flags):
+    """The longest run of consecutive True values."""
+    best = run = 0
+    for f in flags:
+        run = run + 1 if f else 0
+        best = max(best, run)
+    return best
+
+
+def link_metrics(controls):
+    """What the link did (docs/links.md), from the controls of each step: the
+    age of the state the law used and of the command the drone applied,
+    the losses, and the longest outages (steps without a newer state; steps
+    the drone hovered for want of a fresh command). None for bags recorded
+    before the link's fields existed."""
+    cs = [controls[k] for k in sorted(controls)]
+    if not cs or not hasattr(cs[0], "drone_hovers"):
+        return None
+    state_age = [int(c.delay_in_force) for c in cs if c.law_ran]
+    command_age = [int(c.command_age) for c in cs if c.law_ran]
+    no_state = [not c.state_arrived for c in cs if c.law_ran]
+    hover = [c.drone_hovers for c in cs if c.law_ran]
+    last = cs[-1]
+    return {"state_age_samples": state_age, "command_age_samples": command_age,
+            "uplink_losses": int(last.uplink_losses), "downlink_losses": int(last.downlink_losses),
+            "longest_without_new_state_steps": longest_run(no_state),
+            "longest_drone_hover_steps": longest_run(hover),
+            "max_state_age_samples": max(state_age) if state_age else 0,
+            "max_command_age_samples": max(command_age) if command_age else 0}
 
 
 def task_coverage(first, last, ts):
@@ -377,6 +413,22 @@ def route_figure(plt, series, save):
     save(fig, "route3d")
 
 
+def link_figure(plt, series, save):
+    """Histograms of the age of the state the law used and of the command the
+    drone applied (-1: none had arrived, the drone hovered)."""
+    fig, axes = plt.subplots(1, 2, figsize=(10, 4))
+    for ax, key, name in zip(axes, ("state_age", "command_age"), ("state the law used", "command the drone applied")):
+        ages = series[key]
+        lo, hi = min(ages + [0]), max(ages + [0])
+        ax.hist(ages, bins=[b - 0.5 for b in range(lo, hi + 2)], color="tab:blue")
+        ax.set_xlabel("age of the %s [samples of Ts]" % name)
+        ax.set_ylabel("control cycles")
+        ax.grid(True, alpha=0.3)
+    axes[0].set_title("%s\nlink: ages" % series["label"])
+    fig.tight_layout()
+    save(fig, "link")
+
+
 def figures(ns, series, cmd, out_dir, pdf):
     import matplotlib
     matplotlib.use("Agg")
@@ -444,6 +496,8 @@ def figures(ns, series, cmd, out_dir, pdf):
     axes[-1].set_xlabel("t [s]")
     axes[0].set_title("%s\ncommands (model order, fraction of full scale)" % series["label"])
     save(fig, "commands")
+    if "state_age" in series:
+        link_figure(plt, series, save)
     return files
 
 
@@ -502,8 +556,15 @@ def write_markdown(bag_path, out_dir, sections):
                   "| task recorded | %s |" % ("all %.1f s" % m["task_duration_s"] if m["task_complete"]
                                               else "**" + coverage_text(m) + "**"),
                   "| RMS tracking error | %.4f m |" % m["rms_tracking_error_m"],
-                  "| state / control / cmd_vel rate | %.2f / %.2f / %.2f Hz |" % (m["state_rate_hz"], m["control_rate_hz"], m["cmd_vel_rate_hz"]),
-                  ""]
+                  "| state / control / cmd_vel rate | %.2f / %.2f / %.2f Hz |" % (m["state_rate_hz"], m["control_rate_hz"], m["cmd_vel_rate_hz"])]
+        if m.get("link"):
+            k = m["link"]
+            lines += ["| link: losses up / down | %d / %d packets |" % (k["uplink_losses"], k["downlink_losses"]),
+                      "| link: longest without a new state / drone hovering | %d / %d steps |" % (
+                          k["longest_without_new_state_steps"], k["longest_drone_hover_steps"]),
+                      "| link: max state / command age | %d / %d samples |" % (
+                          k["max_state_age_samples"], k["max_command_age_samples"])]
+        lines.append("")
         if m["task_kind"] == "trajectory":
             lines += ["| lap | RMS tracking error | max tracking error |", "|---|---|---|"]
             lines += ["| %d | %.4f m | %.4f m |" % (s["lap"], s["rms_tracking_error_m"], s["max_tracking_error_m"])
