@@ -119,7 +119,7 @@ int main(int argc, char** argv) {
     if (!parse(argc, argv, o)) return 0;
     const auto p = aurora_sim::loadVehicleYaml(o.vehicle);
     const ControllerSettings set = loadSettings(o, p);
-    const Task<double> task = readTask(YamlReader("task file '" + o.task + "': "), YAML::LoadFile(o.task)["task"], "task");
+    const Task<double> task = readTask(YamlReader("task file '" + o.task + "': "), loadYamlFile("task file", o.task)["task"], "task");
     const long n = taskStepCount(task.duration(), p.Ts);  // steps 0..N, as the node and report
     refuseDelayBeyondTheTask(set.delay, n, p.Ts);
     FILE* csv = o.csv.empty() ? nullptr : std::fopen(o.csv.c_str(), "w");

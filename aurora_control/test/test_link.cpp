@@ -133,7 +133,7 @@ TEST(Link, DrawsArePureFunctionsOfTheirKey) {
   EXPECT_NE(a.loss_u, packetDraws(2, 5, LinkDirectionId::kUplink, 9).loss_u);
 }
 
-TEST(Link, DroneHoversWithoutACommandAndOnAStaleOne) {
+TEST(Link, DroneHoversUntilTheFirstCommandArrives) {
   LinkParams link;
   link.downlink.delay = 2;
   link.downlink.loss = 0.0;

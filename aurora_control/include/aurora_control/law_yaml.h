@@ -71,12 +71,7 @@ struct ControllerFile {
 };
 
 inline ControllerFile readControllerFile(const std::string& path) {
-  YAML::Node root;
-  try {
-    root = YAML::LoadFile(path);
-  } catch (const YAML::Exception& e) {
-    throw ConfigError("controller file '" + path + "' cannot be read: " + e.what());
-  }
+  const YAML::Node root = loadYamlFile("controller file", path);
   const YamlReader r("controller file '" + path + "': ");
   r.onlyKeys(root, "", {"controller", "clamp_commands"});
   ControllerFile f;

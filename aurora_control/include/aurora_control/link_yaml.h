@@ -86,12 +86,7 @@ inline std::string combineUplinkDelay(long run_delay, const LinkParams& link, lo
 }
 
 inline LinkParams readLinkFile(const std::string& path) {
-  YAML::Node root;
-  try {
-    root = YAML::LoadFile(path);
-  } catch (const YAML::Exception& e) {
-    throw ConfigError("link file '" + path + "' cannot be read: " + e.what());
-  }
+  const YAML::Node root = loadYamlFile("link file", path);
   const YamlReader r("link file '" + path + "': ");
   r.onlyKeys(root, "", {"link"});
   return readLink(r, r.require(root, "", "link", "uplink, downlink, seed, cmd_timeout"), "link");

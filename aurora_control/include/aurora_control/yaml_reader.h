@@ -25,6 +25,16 @@ inline std::string joinKeys(const std::vector<std::string>& keys) {
   return out;
 }
 
+// A YAML file's root: `what` names the file's kind in the refusal ("link
+// file 'x.yaml' cannot be read: ..."), a missing file and bad YAML alike.
+inline YAML::Node loadYamlFile(const std::string& what, const std::string& path) {
+  try {
+    return YAML::LoadFile(path);
+  } catch (const YAML::Exception& e) {
+    throw ConfigError(what + " '" + path + "' cannot be read: " + e.what());
+  }
+}
+
 class YamlReader {
  public:
   // context: where the values come from, prefixed to every message (e.g.
