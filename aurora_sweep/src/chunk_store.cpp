@@ -107,6 +107,19 @@ void addTask(Crc& crc, const aurora_control::Task<double>& task) {
 
 }  // namespace
 
+namespace {
+
+// Field by field: the struct's padding is not part of the definition.
+void addLink(Crc& crc, const aurora_control::LinkParams& l) {
+  for (const aurora_control::LinkDirection* d : {&l.uplink, &l.downlink}) {
+    crc.add(d->delay), crc.add(static_cast<int>(d->jitter)), crc.add(d->jitter_max), crc.add(d->jitter_mean);
+    crc.add(d->loss), crc.add(d->burst);
+  }
+  crc.add(l.seed), crc.add(l.cmd_timeout);
+}
+
+}  // namespace
+
 uint32_t definitionHash(const SweepSpec& spec) {
   static_assert(sizeof(spec.vehicle) % sizeof(double) == 0, "vehicle constants are doubles");
   Crc crc;
@@ -125,6 +138,7 @@ uint32_t definitionHash(const SweepSpec& spec) {
   crc.add(spec.early_stop);
   crc.add(spec.clamp_commands);
   crc.add(static_cast<int>(spec.precision));
+  if (!spec.link.ideal()) addLink(crc, spec.link);  // an ideal link keeps today's hashes
   return crc.value();
 }
 

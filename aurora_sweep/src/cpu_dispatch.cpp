@@ -95,11 +95,19 @@ const Isa& chosen() {
   return isa;
 }
 
+// A build's engine, or one simulation per thread for a sweep over a link
+// (the SIMD engine runs ideal links only so far).
+void runOn(const Isa& isa, const SweepSpec& spec, int threads, std::vector<SimResult>& out, Progress& progress) {
+  threads = threads < 1 ? 1 : threads;
+  if (!spec.link.ideal()) return runThreadedScalar(spec, threads, out, progress);
+  isa.run(spec, threads, out, progress);
+}
+
 }  // namespace
 
 void runCpuBatch(const SweepSpec& spec, int threads, std::vector<SimResult>& out,
                  Progress& progress) {
-  chosen().run(spec, threads < 1 ? 1 : threads, out, progress);
+  runOn(chosen(), spec, threads, out, progress);
 }
 
 int cpuBatchLanes(Precision precision) { return chosen().lanes(precision); }
@@ -116,7 +124,7 @@ std::vector<CpuIsa> cpuBatchIsas() {
 
 void runCpuBatchOn(const std::string& key, const SweepSpec& spec, int threads,
                    std::vector<SimResult>& out, Progress& progress) {
-  choose(key, "instruction set ").run(spec, threads < 1 ? 1 : threads, out, progress);
+  runOn(choose(key, "instruction set "), spec, threads, out, progress);
 }
 
 }  // namespace aurora_sweep

@@ -193,6 +193,7 @@ void writeSummaryJson(const std::string& path, const SweepSpec& spec, const RunI
       {"controller", spec.controller},
       {"parameters", parameters},
       {"result_columns", resultColumnsJson()},
+      {"link", spec.link.ideal() ? json("ideal") : json(spec.link_file)},
       {"fixed", fixed},
       {"task_duration_s", spec.duration()},
       {"order", order},

@@ -9,6 +9,7 @@
 #include <iterator>
 #include <map>
 
+#include "aurora_control/link_yaml.h"
 #include "aurora_control/positioning_runner.h"
 #include "aurora_control/task_yaml.h"
 #include "aurora_sweep/design.h"
@@ -408,6 +409,19 @@ void readCombinations(const Reader& r, const YAML::Node& s, const std::string& s
   }
 }
 
+// sweep.link: a link file (docs/links.md) for every combination; each
+// combination's delay replaces the file's uplink delay.
+void readSweepLink(const Reader& r, const YAML::Node& node, const std::string& sweep_dir,
+                   const std::string& config_dir, SweepSpec& spec) {
+  spec.link_file = resolve(r.text(node, "sweep.link"), sweep_dir, config_dir);
+  spec.link = aurora_control::readLinkFile(spec.link_file);
+  if (spec.historyNeeded() > aurora_control::kMaxDelaySamples) {
+    r.fail("sweep.link", "= '" + spec.link_file + "' needs " + std::to_string(spec.historyNeeded()) +
+                             " samples of history with the sweep's largest delay " + std::to_string(spec.max_delay) +
+                             ": accepted up to " + std::to_string(aurora_control::kMaxDelaySamples));
+  }
+}
+
 SweepSpec parseSweepFile(const std::string& path, const std::string& config_dir) {
   Reader r(path);
   YAML::Node root;
@@ -423,7 +437,7 @@ SweepSpec parseSweepFile(const std::string& path, const std::string& config_dir)
   if (!s) r.fail("sweep", "is missing: the file's top level must be 'sweep:'");
   r.onlyKeys(s, "sweep", {"name", "controller", "vehicle", "task", "parameters", "order", "points",
                           "criteria", "early_stop", "clamp_commands", "precision", "design", "samples",
-                          "seed"});
+                          "seed", "link"});
   SweepSpec spec;
   spec.file = path;
   const std::string sweep_dir = dirOf(path);
@@ -447,6 +461,7 @@ SweepSpec parseSweepFile(const std::string& path, const std::string& config_dir)
   readRunOptions(r, s, spec);
 
   readCombinations(r, s, sweep_dir, config_dir, spec);
+  if (s["link"]) readSweepLink(r, s["link"], sweep_dir, config_dir, spec);
   return spec;
 }
 

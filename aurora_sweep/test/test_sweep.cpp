@@ -400,6 +400,15 @@ TEST(SweepProgram, CudaLimitsAreCheckedBeforeTheRun) {
   EXPECT_NE(log.find("--block-size 2048 is invalid: CUDA blocks hold at most 1024 threads"), std::string::npos) << log;
 }
 
+// The cuda backend runs ideal links only so far: a sweep over a link is
+// refused before anything is written (auto takes the cpu backend).
+TEST(SweepProgram, ALinkSweepIsRefusedOnTheCudaBackend) {
+  const std::string lossy = writeTemp("cuda_link.yaml", test::readText(kData + "/small_grid.yaml") + "  link: links/wifi_lab.yaml\n");
+  std::string log;
+  EXPECT_EQ(runSweep("--config " + lossy + " --out " + ::testing::TempDir() + "/sweep_cuda_link --backend cuda", log), 2);
+  EXPECT_NE(log.find("the cuda backend runs ideal links only so far"), std::string::npos) << log;
+}
+
 // A sweep says up front what it costs (combinations, time at a measured
 // rate, bytes) and refuses one the disk cannot hold, before anything is
 // written (a 10^13 grid used to run silently until killed).

@@ -26,6 +26,7 @@ SimSetup<T> makeSetup(const SweepSpec& spec) {
   s.config.criteria = spec.criteria.cast<T>();
   s.config.clamp_commands = spec.clamp_commands;
   s.config.early_stop = spec.early_stop;
+  s.config.link = spec.link;
   s.iterations = aurora_control::studyIterationCount(spec.duration(), spec.vehicle.Ts);
   s.varies_model = spec.variesModel();
   return s;
@@ -36,7 +37,7 @@ SimSetup<T> makeSetup(const SweepSpec& spec) {
 // their loops here, once.
 template <class F>
 void withSweepTypes(const SweepSpec& spec, F&& f) {
-  aurora_control::withHistoryCapacity(spec.max_delay, [&](auto capacity) {
+  aurora_control::withHistoryCapacity(spec.historyNeeded(), [&](auto capacity) {
     aurora_control::withLaw(spec.law, [&](auto law) {
       if (spec.precision == Precision::kDouble) {
         f(double(), capacity, law);
@@ -59,7 +60,10 @@ void runEachCombination(const SweepSpec& spec, std::vector<SimResult>& out, Prog
     const long first = spec.rangeBegin();
     out.resize(spec.rangeSize());
     loop(spec.rangeSize(), [&](long i) {
-      out[i] = simulateCombination<decltype(law)::value, T, decltype(capacity)::value>(setup, grid, first + i);
+      constexpr aurora_control::LawType kLaw = decltype(law)::value;
+      constexpr int kCapacity = decltype(capacity)::value;
+      out[i] = setup.config.link.ideal() ? simulateCombination<kLaw, T, kCapacity>(setup, grid, first + i)
+                                         : simulateOverLink<kLaw, T, kCapacity>(setup, grid, first + i);
       progress.fetch_add(1, std::memory_order_relaxed);
     });
   });
@@ -69,7 +73,8 @@ void runEachCombination(const SweepSpec& spec, std::vector<SimResult>& out, Prog
 void runScalar(const SweepSpec& spec, std::vector<SimResult>& out, Progress& progress);
 
 // Many simulations at once: SIMD lanes (a finished lane takes the next
-// combination), on `threads` threads.
+// combination), on `threads` threads. A sweep over a link (not ideal) runs
+// one simulation per thread instead: the lanes run ideal links only so far.
 void runCpuBatch(const SweepSpec& spec, int threads, std::vector<SimResult>& out,
                  Progress& progress);
 
@@ -79,6 +84,7 @@ void runCpuBatch(const SweepSpec& spec, int threads, std::vector<SimResult>& out
 // Throws std::runtime_error when AURORA_SWEEP_SIMD names a build that is
 // missing or that this CPU cannot run.
 int cpuBatchLanes(Precision precision);
+constexpr const char* kLinkSweepOnCpu = "threads without SIMD lanes (a link sweep: the lanes run ideal links only so far)";
 std::string cpuBatchArch(Precision precision);
 
 // The engine's builds, widest first ("none": threads without SIMD lanes),

@@ -4,6 +4,8 @@
 // run with the same studyRun().
 #pragma once
 
+#include <memory>
+
 #include "aurora_control/positioning_runner.h"
 #include "aurora_sweep/combination.h"
 
@@ -91,6 +93,19 @@ AURORA_HD inline SimResult simulateCombination(const SimSetup<T>& setup, const G
   const aurora_control::StudyRun<T> run = studyRun(setup, grid.decode(index));
   aurora_control::NoObserver none;
   return compactResult(aurora_control::runClosedLoop<Law, T, Capacity>(run, setup.config, setup.iterations, none));
+}
+
+// The same over the sweep's link (host only: the CUDA kernel and the SIMD
+// engine run ideal links so far). The link's draws are keyed by the
+// combination's index, so every backend and range split draws the same.
+template <aurora_control::LawType Law, typename T, int Capacity>
+inline SimResult simulateOverLink(const SimSetup<T>& setup, const GridView& grid, long index) {
+  const aurora_control::StudyRun<T> run = studyRun(setup, grid.decode(index));
+  aurora_control::NoObserver none;
+  std::unique_ptr<aurora_control::ModelLink<Capacity, T>> link(new aurora_control::ModelLink<Capacity, T>(
+      setup.config.link, run.delay, static_cast<uint64_t>(index), setup.vehicle.Ts));
+  return compactResult(aurora_control::runClosedLoopOver<Law, T, Capacity>(run, setup.config, setup.iterations,
+                                                                           none, *link));
 }
 
 }  // namespace aurora_sweep

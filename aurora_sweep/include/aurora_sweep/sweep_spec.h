@@ -2,10 +2,12 @@
 // sweep file (sweep_file.h), validated before any work.
 #pragma once
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
 #include "aurora_control/feasibility.h"
+#include "aurora_control/link.h"
 #include "aurora_control/task.h"
 #include "aurora_sim/ardrone_params.h"
 #include "aurora_sweep/combination.h"
@@ -44,6 +46,17 @@ struct SweepSpec {
   bool clamp_commands = false;
   Precision precision = Precision::kDouble;
   long max_delay = 0;               // largest delay of any combination [samples]
+  // A link for every combination (sweep file 'link:', docs/links.md); each
+  // combination's delay is its uplink's base delay. Ideal by default.
+  aurora_control::LinkParams link;
+  std::string link_file;
+  // The history the runs need: the largest delay plus the uplink's jitter,
+  // or the downlink's latency.
+  long historyNeeded() const {
+    aurora_control::LinkDirection up = link.uplink;
+    up.delay = max_delay;
+    return std::max(up.maxLatency(), link.downlink.maxLatency());
+  }
   // How the points were made: grid (axes or a points file) or a sampling
   // design (design.h) of `samples` points from `seed`, stored in `points`.
   std::string design = "grid";
