@@ -22,12 +22,6 @@
 
 namespace aurora_control {
 
-using aurora_sim::fullKey;
-using aurora_sim::ConfigError;
-using aurora_sim::paramOr;
-using aurora_sim::rangedParam;
-using aurora_sim::requireParam;
-
 ControllerNode::ControllerNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
     : nh_(nh), pnh_(private_nh) {
   // The vehicle, with the same range rules as the sim's: Ts for every law,

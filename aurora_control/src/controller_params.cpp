@@ -12,12 +12,6 @@
 
 namespace aurora_control {
 
-using aurora_sim::fullKey;
-using aurora_sim::ConfigError;
-using aurora_sim::paramOr;
-using aurora_sim::rangedParam;
-using aurora_sim::requireParam;
-
 void loadLaw(const ros::NodeHandle& pnh, const aurora_sim::ArdroneParams<double>& vehicle,
              ControllerSettings& set) {
   readLaw(YamlReader("parameter ", "/"), paramAsYaml(pnh, "controller"), fullKey(pnh, "controller"), set);

@@ -12,8 +12,15 @@
 #include "aurora_control/joystick.h"
 #include "aurora_control/delayed_controller.h"
 #include "aurora_control/task.h"
+#include "aurora_sim/ros/params.h"
 
 namespace aurora_control {
+
+// The strict ROS parameter readers (aurora_sim/ros/params.h) the node's
+// sources use.
+using aurora_sim::fullKey;
+using aurora_sim::paramOr;
+using aurora_sim::rangedParam;
 
 // The law named by ~controller/name and its gains (all required), with the
 // vehicle model the underactuated law inverts. Unknown keys under
