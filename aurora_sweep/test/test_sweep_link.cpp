@@ -71,3 +71,11 @@ TEST(SweepLink, ALinkBeyondTheHistoryOrMissingIsRefused) {
       << refusal(grid + "  link: " + wide + "\n");
   EXPECT_NE(refusal(grid + "  link: links/nowhere.yaml\n").find("link file"), std::string::npos);
 }
+
+TEST(SweepLink, TheShippedLinkStudyIsTheThesisGridOverACongestedLink) {
+  const SweepSpec s = loadSweepFile(configDir() + "/sweeps/positioning_delay_wifi_congested.yaml", configDir());
+  EXPECT_EQ(s.size(), 65536);
+  EXPECT_FALSE(s.link.ideal());
+  EXPECT_NE(s.link_file.find("links/wifi_congested.yaml"), std::string::npos);
+  EXPECT_EQ(s.max_delay, 63);
+}
