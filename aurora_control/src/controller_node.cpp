@@ -154,6 +154,13 @@ ControllerConfig ControllerNode::liveConfig() const {
   config.kd = set.gains.kd;
   config.delay_samples = static_cast<double>(set.delay);
   writeUnderactuatedGains(set.underactuated, config);
+  config.uplink_jitter = static_cast<double>(set.link.uplink.jitter_max);
+  config.uplink_loss = set.link.uplink.loss;
+  config.uplink_burst = set.link.uplink.burst;
+  config.downlink_delay = static_cast<double>(set.link.downlink.delay);
+  config.downlink_jitter = static_cast<double>(set.link.downlink.jitter_max);
+  config.downlink_loss = set.link.downlink.loss;
+  config.downlink_burst = set.link.downlink.burst;
   return config;
 }
 
@@ -192,7 +199,14 @@ bool ControllerNode::onSetParameters(dynamic_reconfigure::Reconfigure::Request& 
     ROS_INFO("controller: reconfigured %s, delay %ld samples", gainsText(next).c_str(), next.delay);
   }
   if (next.delay != set.delay) announceDelayChange(next.delay);
+  const bool link_changed = linkText(next.link) != linkText(set.link);
   set = next;
+  if (link_changed) {  // the channels start afresh with the new values
+    core_->configureLink();
+    LinkParams shown = set.link;
+    shown.uplink.delay = set.delay;  // the node's delay is the uplink's
+    ROS_INFO("controller: link changed live (docs/links.md): %s", linkText(shown).c_str());
+  }
   const ControllerConfig config = liveConfig();
   config.__toMessage__(rsp.config);
   updates_pub_.publish(rsp.config);

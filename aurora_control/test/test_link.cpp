@@ -213,10 +213,11 @@ TEST(Link, ALossyLinkChangesTheFlightAndIsRepeatable) {
 }
 
 TEST(LinkFile, MistakesAreRefusedNamingTheKey) {
-  EXPECT_NE(refusal("uplink: {loss: 1.0}").find("'link.uplink.loss' = 1 is refused: accepted a share in [0, 1)"),
+  EXPECT_NE(refusal("uplink: {loss: 1.0}").find("'link.uplink.loss' = 1 is outside the accepted range [0, 0.99]"),
             std::string::npos);
   EXPECT_NE(refusal("uplink: {loss: -0.1}").find("'link.uplink.loss' = -0.1"), std::string::npos);
-  EXPECT_NE(refusal("downlink: {burst: 0.5}").find("'link.downlink.burst' = 0.5 is refused"), std::string::npos);
+  EXPECT_NE(refusal("downlink: {burst: 0.5}").find("'link.downlink.burst' = 0.5 is outside the accepted range [1, 1000]"),
+            std::string::npos);
   EXPECT_NE(refusal("uplink: {delay: -2}").find("'link.uplink.delay' = -2 is refused"), std::string::npos);
   EXPECT_NE(refusal("uplink: {delay: 2000, jitter: {kind: uniform, max: 100}}").find("beyond the history"),
             std::string::npos);

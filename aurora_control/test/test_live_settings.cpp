@@ -48,7 +48,8 @@ TEST(LiveSettings, RefusesWithTheValueGiven) {
   EXPECT_NE(check(s, "delay_samples", 5000).find("delay_samples = 5000 is refused"), std::string::npos);
   EXPECT_NE(check(s, "delay_samples", 1801).find("accepted delays up to 1800 samples"), std::string::npos);
   EXPECT_EQ(check(s, "kpp", 0.6), "'kpp' is not a live setting: accepted delay_samples, kp, kd (the pd_saturated "
-                                   "law's gains)");
+                                   "law's gains), the link's uplink_jitter, uplink_loss, uplink_burst, "
+                                   "downlink_delay, downlink_jitter, downlink_loss, downlink_burst");
 }
 
 TEST(LiveSettings, AGainOfTheOtherLawIsRefusedUnlessUnchanged) {
@@ -63,6 +64,25 @@ TEST(LiveSettings, AGainOfTheOtherLawIsRefusedUnlessUnchanged) {
   EXPECT_NE(check(s, "kp", 0.9).find("a gain of the pd_saturated law"), std::string::npos);
   EXPECT_EQ(check(s, "k2_z", 100.0), "");
   EXPECT_NE(check(s, "k2_z", 0.0).find("accepted a gain in [0.001, 100]"), std::string::npos);
+}
+
+// The link's live values (docs/links.md) meet the link files' rules: the
+// table's ranges, whole samples, the burst's bound on the loss, the history.
+TEST(LiveSettings, TheLinkChangesLiveWithTheFilesRules) {
+  ControllerSettings s = pd();
+  EXPECT_EQ(check(s, "uplink_loss", 0.05), "");
+  EXPECT_EQ(check(s, "uplink_loss", 1.0), "uplink_loss = 1 is refused: accepted a value in [0, 0.99]");
+  EXPECT_EQ(check(s, "downlink_burst", 0.5), "downlink_burst = 0.5 is refused: accepted samples in [1, 1000]");
+  EXPECT_EQ(check(s, "downlink_delay", 2.5), "downlink_delay = 2.5 is refused: accepted whole samples");
+  EXPECT_NE(check(s, "uplink_jitter", 2040).find("would exceed the history of 2047 samples"), std::string::npos);
+  applyLiveChange(s, LiveChange{"downlink_burst", 2.0});
+  EXPECT_NE(check(s, "downlink_loss", 0.9).find("accepted up to burst / (burst + 1) = 0.666667"), std::string::npos);
+  applyLiveChange(s, LiveChange{"uplink_jitter", 3});
+  applyLiveChange(s, LiveChange{"downlink_loss", 0.1});
+  EXPECT_EQ(s.link.uplink.jitter, JitterKind::kUniform);  // a jitter on a link without a kind: uniform
+  EXPECT_EQ(s.link.uplink.jitter_max, 3);
+  EXPECT_EQ(s.link.downlink.loss, 0.1);
+  EXPECT_FALSE(s.link.ideal());
 }
 
 // One definition of a task's steps and of the tracking error (the flight

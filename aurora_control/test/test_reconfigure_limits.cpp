@@ -14,29 +14,22 @@
 
 using namespace aurora_control;
 
-// The table's row of a live setting (delay_samples is delay/samples).
-const ParameterSpec* rowOf(const std::string& live_name) {
-  for (const ParameterSpec& p : kParameterTable) {
-    if (live_name == p.name || (live_name == "delay_samples" && std::string(p.name) == "delay/samples")) return &p;
-  }
-  return nullptr;
-}
-
 TEST(ReconfigureLimits, ControllerCfgEqualsTheParameterTable) {
   const dynamic_reconfigure::ConfigDescription d = ControllerConfig::__getDescriptionMessage__();
   ASSERT_EQ(d.min.doubles.size(), d.max.doubles.size());
   for (size_t i = 0; i < d.min.doubles.size(); ++i) {
     const std::string name = d.min.doubles[i].name;
-    const ParameterSpec* row = rowOf(name);
+    const ParameterSpec* row = rowOfLiveSetting(name);
     ASSERT_NE(row, nullptr) << name << " of Controller.cfg is not in parameter_table.h";
     EXPECT_EQ(d.min.doubles[i].value, row->min) << name;
     EXPECT_EQ(d.max.doubles[i].value, row->max) << name;
   }
-  EXPECT_EQ(d.min.doubles.size(), 3u + 2 * kAxes);
+  EXPECT_EQ(d.min.doubles.size(), 3u + 2 * kAxes + 7);  // + the link's live values
   // Every live setting the node takes is in the description, and no other.
   std::vector<std::string> described;
   for (const auto& p : ControllerConfig::__getDescriptionMessage__().groups[0].parameters) described.push_back(p.name);
-  std::vector<std::string> live{"kp", "kd", "delay_samples"};
+  std::vector<std::string> live{"kp", "kd", "delay_samples", "uplink_jitter", "uplink_loss", "uplink_burst",
+                                "downlink_delay", "downlink_jitter", "downlink_loss", "downlink_burst"};
   for (const std::string& g : lawGainNames(LawType::kUnderactuated)) live.push_back(g);
   std::sort(described.begin(), described.end());
   std::sort(live.begin(), live.end());

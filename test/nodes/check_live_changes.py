@@ -1,5 +1,6 @@
 #!/usr/bin/python3
-"""Live delay raise beyond the history; the controller after a landing."""
+"""Live delay raise beyond the history; live values refused by the start-up
+rules; the link changed live; the controller after a landing."""
 import math
 import os
 import sys
@@ -112,6 +113,25 @@ class LiveChangesTest(unittest.TestCase):
         start = len(self.controls)
         self.assertTrue(self.wait_for(lambda: len(self.controls) >= start + 10, 5))
         self.assertEqual(self.controls[-1].kp, 0.6)
+
+    def test_1d_the_link_changes_live(self):
+        # docs/links.md: a lossy uplink and a 3-sample command path, set live,
+        # show in Control at once; bad values are refused with the files' rules.
+        self.refused({"uplink_loss": 1.0}, "uplink_loss = 1 is refused: accepted a value in [0, 0.99]")
+        self.refused({"downlink_delay": 2.5}, "downlink_delay = 2.5 is refused: accepted whole samples")
+        self.reconfigure.update_configuration({"uplink_loss": 0.3, "uplink_burst": 2.0, "downlink_delay": 3})
+        start = len(self.controls)
+        self.assertTrue(self.wait_for(lambda: len(self.controls) >= start + 90, 10))
+        later = [c for c in self.controls[start + 30:] if c.law_ran]
+        self.assertGreater(later[-1].uplink_losses, 5, "no state packet lost at a 30 % loss")
+        self.assertTrue(any(not c.state_arrived for c in later), "every state arrived at a 30 % loss")
+        self.assertEqual(min(c.command_age for c in later if c.command_age >= 0), 3)
+        config = self.reconfigure.get_configuration(timeout=5)
+        self.assertEqual((config["uplink_loss"], config["downlink_delay"]), (0.3, 3.0))
+        self.reconfigure.update_configuration({"uplink_loss": 0.0, "uplink_burst": 1.0, "downlink_delay": 0})
+        start = len(self.controls)
+        self.assertTrue(self.wait_for(lambda: len(self.controls) >= start + 30, 5))
+        self.assertEqual(self.controls[-1].command_age, 0)
 
     def test_2_a_landed_drone_is_still_a_fresh_source(self):
         self.land.publish(Empty())

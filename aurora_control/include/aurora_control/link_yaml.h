@@ -6,13 +6,23 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <cstdio>
 #include <string>
 
 #include "aurora_control/limits.h"
 #include "aurora_control/link.h"
+#include "aurora_control/parameter_table.h"
 #include "aurora_control/yaml_reader.h"
 
 namespace aurora_control {
+
+// The chain's entry probability q = loss r / (1 - loss) must be a
+// probability: with a burst b > 1, loss <= b / (b + 1). "" or the refusal.
+inline std::string burstLossRefusal(const LinkDirection& d) {
+  if (d.burst <= 1.0 || d.loss <= d.burst / (d.burst + 1.0)) return "";
+  return "is refused with burst " + YamlReader::fmt(d.burst) + ": accepted up to burst / (burst + 1) = " +
+         YamlReader::fmt(d.burst / (d.burst + 1.0));
+}
 
 inline void readJitter(const YamlReader& r, const YAML::Node& n, const std::string& key, LinkDirection& d) {
   r.onlyKeys(n, key, {"kind", "max", "mean"});
@@ -37,19 +47,13 @@ inline LinkDirection readLinkDirection(const YamlReader& r, const YAML::Node& n,
     if (d.delay < 0) r.fail(r.key(key, "delay"), "= " + YamlReader::fmt(double(d.delay)) + " is refused: accepted " + delayRangeText());
   }
   if (n["jitter"]) readJitter(r, n["jitter"], r.key(key, "jitter"), d);
-  if (n["loss"]) {
-    d.loss = r.number(n["loss"], r.key(key, "loss"));
-    if (!(d.loss >= 0.0 && d.loss < 1.0)) r.fail(r.key(key, "loss"), "= " + YamlReader::fmt(d.loss) + " is refused: accepted a share in [0, 1)");
-  }
-  if (n["burst"]) {
-    d.burst = r.number(n["burst"], r.key(key, "burst"));
-    if (!(d.burst >= 1.0)) r.fail(r.key(key, "burst"), "= " + YamlReader::fmt(d.burst) + " is refused: accepted a mean run of losses >= 1 sample (1: independent losses)");
-  }
-  // The chain's entry probability q = loss / (burst (1 - loss)) must be a probability.
-  if (d.burst > 1.0 && d.loss > d.burst / (d.burst + 1.0)) {
-    r.fail(r.key(key, "loss"), "= " + YamlReader::fmt(d.loss) + " is refused with burst " + YamlReader::fmt(d.burst) +
-                                   ": accepted up to burst / (burst + 1) = " + YamlReader::fmt(d.burst / (d.burst + 1.0)));
-  }
+  // The ranges of the parameter table (parameter_table.h), as the live settings.
+  const ParameterSpec& loss = kParameterTable[kRowUplinkLoss];
+  const ParameterSpec& burst = kParameterTable[kRowUplinkBurst];
+  if (n["loss"]) d.loss = r.numberIn(n["loss"], r.key(key, "loss"), loss.min, loss.max, "(a share of packets)");
+  if (n["burst"]) d.burst = r.numberIn(n["burst"], r.key(key, "burst"), burst.min, burst.max, "samples (1: independent losses)");
+  const std::string chain = burstLossRefusal(d);
+  if (!chain.empty()) r.fail(r.key(key, "loss"), "= " + YamlReader::fmt(d.loss) + " " + chain);
   if (d.maxLatency() > kMaxDelaySamples) {
     r.fail(r.key(key, "delay"), "plus the jitter's max = " + std::to_string(d.maxLatency()) +
                                     " samples is beyond the history: accepted up to " + std::to_string(kMaxDelaySamples));
@@ -83,6 +87,22 @@ inline std::string combineUplinkDelay(long run_delay, const LinkParams& link, lo
            " differ: give the uplink delay once (the link file's, or the delay with the file's at 0)";
   }
   return "";
+}
+
+// A link in one line, for logs (every value that defines it).
+inline std::string linkText(const LinkParams& l) {
+  std::string out;
+  const char* names[] = {"uplink", "downlink"};
+  const LinkDirection* dirs[] = {&l.uplink, &l.downlink};
+  for (int i = 0; i < 2; ++i) {
+    const LinkDirection& d = *dirs[i];
+    char buf[192];
+    std::snprintf(buf, sizeof buf, "%s delay %ld, jitter %s max %ld mean %g, loss %g, burst %g; ", names[i], d.delay,
+                  d.jitter == JitterKind::kNone ? "none" : d.jitter == JitterKind::kUniform ? "uniform" : "geometric",
+                  d.jitter_max, d.jitter_mean, d.loss, d.burst);
+    out += buf;
+  }
+  return out + "seed " + std::to_string(l.seed) + ", cmd_timeout " + YamlReader::fmt(l.cmd_timeout) + " s";
 }
 
 inline LinkParams readLinkFile(const std::string& path) {

@@ -4,18 +4,21 @@
 // accepted; the settings in force are then left as they were.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
 
 #include "aurora_control/law_yaml.h"
 #include "aurora_control/limits.h"
+#include "aurora_control/link_yaml.h"
+#include "aurora_control/parameter_table.h"
 #include "aurora_control/yaml_reader.h"
 
 namespace aurora_control {
 
 struct LiveChange {
-  std::string name;  // kp, kd, delay_samples, k1_x ... k2_psi
+  std::string name;  // kp, kd, delay_samples, k1_x ... k2_psi, the link's (parameter_table.h)
   double value;
 };
 
@@ -43,6 +46,59 @@ inline std::string delayProblem(const LiveChange& c, long task_steps, double Ts)
   return delayShorterThanRun(d, task_steps) ? "" : c.name + " = " + delayRunText(d, task_steps, Ts);
 }
 
+// The link value a live setting names (a row from kRowUplinkJitter on).
+inline double* linkValue(LinkParams& l, const std::string& name) {
+  if (name == "uplink_loss") return &l.uplink.loss;
+  if (name == "uplink_burst") return &l.uplink.burst;
+  if (name == "downlink_loss") return &l.downlink.loss;
+  if (name == "downlink_burst") return &l.downlink.burst;
+  return nullptr;  // the whole-sample ones: linkSamples
+}
+inline long* linkSamples(LinkParams& l, const std::string& name) {
+  if (name == "uplink_jitter") return &l.uplink.jitter_max;
+  if (name == "downlink_delay") return &l.downlink.delay;
+  if (name == "downlink_jitter") return &l.downlink.jitter_max;
+  return nullptr;
+}
+inline bool isLinkSetting(const std::string& name) {
+  LinkParams l;
+  return linkValue(l, name) != nullptr || linkSamples(l, name) != nullptr;
+}
+
+// The link with change c applied (a jitter set on a link without a kind
+// is uniform).
+inline LinkParams withLinkChange(LinkParams l, const LiveChange& c) {
+  if (double* v = linkValue(l, c.name)) *v = c.value;
+  if (long* n = linkSamples(l, c.name)) *n = static_cast<long>(c.value);
+  for (LinkDirection* d : {&l.uplink, &l.downlink}) {
+    if (d->jitter == JitterKind::kNone && d->jitter_max > 0) d->jitter = JitterKind::kUniform;
+  }
+  return l;
+}
+
+// A link value: the table's range, whole samples where it counts samples,
+// the burst's bound on the loss, the latency within the history.
+inline std::string linkProblem(const ControllerSettings& now, const LiveChange& c) {
+  const ParameterSpec& row = *rowOfLiveSetting(c.name);
+  const std::string range = rangeProblem(c, row.min, row.max, row.unit[0] ? row.unit : std::string("a value"));
+  if (!range.empty()) return range;
+  if (row.kind == ParamKind::kWholeSamples && c.value != std::floor(c.value)) {
+    return c.name + " = " + YamlReader::fmt(c.value) + " is refused: accepted whole samples";
+  }
+  const LinkParams next = withLinkChange(now.link, c);
+  for (const LinkDirection* d : {&next.uplink, &next.downlink}) {
+    const std::string chain = burstLossRefusal(*d);
+    if (!chain.empty()) return c.name + " = " + YamlReader::fmt(c.value) + ": the loss " + chain;
+  }
+  LinkDirection up = next.uplink;
+  up.delay = now.delay;
+  if (std::max(up.maxLatency(), next.downlink.maxLatency()) > kMaxDelaySamples) {
+    return c.name + " = " + YamlReader::fmt(c.value) + " is refused: the delay plus the jitter would exceed the " +
+           "history of " + std::to_string(kMaxDelaySamples) + " samples";
+  }
+  return "";
+}
+
 }  // namespace live_detail
 
 // "" when `c` may be applied to `now`, else the refusal. `task_steps`: the
@@ -50,11 +106,13 @@ inline std::string delayProblem(const LiveChange& c, long task_steps, double Ts)
 inline std::string checkLiveChange(const ControllerSettings& now, const LiveChange& c, long task_steps) {
   using namespace live_detail;
   if (c.name == "delay_samples") return delayProblem(c, task_steps, now.Ts);
+  if (isLinkSetting(c.name)) return linkProblem(now, c);
   const bool pd = gainIndex(LawType::kPdSaturated, c.name) >= 0;
   const bool ua = gainIndex(LawType::kUnderactuated, c.name) >= 0;
   if (!pd && !ua) {
     return "'" + c.name + "' is not a live setting: accepted delay_samples, " +
-           joinKeys(lawGainNames(now.law)) + " (the " + lawName(now.law) + " law's gains)";
+           joinKeys(lawGainNames(now.law)) + " (the " + lawName(now.law) + " law's gains), the link's " +
+           "uplink_jitter, uplink_loss, uplink_burst, downlink_delay, downlink_jitter, downlink_loss, downlink_burst";
   }
   const LawType law = pd ? LawType::kPdSaturated : LawType::kUnderactuated;
   if (law != now.law) {
@@ -74,6 +132,10 @@ inline std::string checkLiveChange(const ControllerSettings& now, const LiveChan
 inline void applyLiveChange(ControllerSettings& set, const LiveChange& c) {
   if (c.name == "delay_samples") {
     set.delay = static_cast<long>(c.value);
+    return;
+  }
+  if (live_detail::isLinkSetting(c.name)) {
+    set.link = live_detail::withLinkChange(set.link, c);
     return;
   }
   const int i = live_detail::gainIndex(set.law, c.name);

@@ -25,6 +25,7 @@ struct ParameterSpec {
   const char* unit;      // "" for none
   const char* doc;
   const char* choices;   // kWord: the accepted words, '|'-separated; default_value is the default's index
+  const char* live;      // its name as a live setting (dynamic_reconfigure, Controller.cfg), or none
 };
 
 // The rows, named.
@@ -39,6 +40,13 @@ enum ParameterRow : int {
   kRowTrigger,
   kRowLockstepCmdSubscribers,
   kRowLockstepControlSubscribers,
+  kRowUplinkJitter,  // the link's live values: uplink jitter max, loss, burst; downlink delay, jitter max, loss, burst
+  kRowUplinkLoss,
+  kRowUplinkBurst,
+  kRowDownlinkDelay,
+  kRowDownlinkJitter,
+  kRowDownlinkLoss,
+  kRowDownlinkBurst,
   kParameterRows,
 };
 
@@ -46,27 +54,28 @@ constexpr double kNoValue = std::numeric_limits<double>::quiet_NaN();
 
 constexpr ParameterSpec kParameterTable[kParameterRows] = {
     {"kp", ParamKind::kReal, kNoValue, 0.0, 10.0, "",
-     "PD law (pd_saturated): gain on the tanh-saturated position error (eq. 3.1)"},
+     "PD law (pd_saturated): gain on the tanh-saturated position error (eq. 3.1)", nullptr, "kp"},
     {"kd", ParamKind::kReal, kNoValue, 0.0, 10.0, "",
-     "PD law: gain on the tanh-saturated velocity error"},
+     "PD law: gain on the tanh-saturated velocity error", nullptr, "kd"},
     {"delay/samples", ParamKind::kWholeSamples, 0.0, 0.0, 2047.0, "samples of Ts",
-     "feedback delay (sweep: delay; reconfigure: delay_samples); also shorter than the task's steps"},
+     "feedback delay, the link's uplink delay (sweep: delay); also shorter than the task's steps", nullptr,
+     "delay_samples"},
     {"delay/seconds", ParamKind::kReal, kNoValue, 0.0, kNoValue, "s",
      "the delay in seconds instead, rounded once to whole samples, which then meet delay/samples' range"},
     {"clamp_commands", ParamKind::kBool, 1.0, 0.0, 1.0, "",
      "the controller clamps its commands to [-1, 1] as the drivers do (sweep files: default false, the study's)"},
-    {"k1_x", ParamKind::kReal, 0.5, 0.001, 100.0, "", "underactuated law: k1 of x"},
-    {"k2_x", ParamKind::kReal, 2.0, 0.001, 100.0, "", "underactuated law: k2 of x"},
-    {"k1_y", ParamKind::kReal, 0.5, 0.001, 100.0, "", "underactuated law: k1 of y"},
-    {"k2_y", ParamKind::kReal, 2.0, 0.001, 100.0, "", "underactuated law: k2 of y"},
-    {"k1_z", ParamKind::kReal, 5.0, 0.001, 100.0, "", "underactuated law: k1 of z"},
-    {"k2_z", ParamKind::kReal, 2.0, 0.001, 100.0, "", "underactuated law: k2 of z"},
-    {"k1_phi", ParamKind::kReal, 1.0, 0.001, 100.0, "", "underactuated law: k1 of roll"},
-    {"k2_phi", ParamKind::kReal, 20.0, 0.001, 100.0, "", "underactuated law: k2 of roll"},
-    {"k1_theta", ParamKind::kReal, 1.0, 0.001, 100.0, "", "underactuated law: k1 of pitch"},
-    {"k2_theta", ParamKind::kReal, 20.0, 0.001, 100.0, "", "underactuated law: k2 of pitch"},
-    {"k1_psi", ParamKind::kReal, 1.0, 0.001, 100.0, "", "underactuated law: k1 of yaw"},
-    {"k2_psi", ParamKind::kReal, 2.5, 0.001, 100.0, "", "underactuated law: k2 of yaw"},
+    {"k1_x", ParamKind::kReal, 0.5, 0.001, 100.0, "", "underactuated law: k1 of x", nullptr, "k1_x"},
+    {"k2_x", ParamKind::kReal, 2.0, 0.001, 100.0, "", "underactuated law: k2 of x", nullptr, "k2_x"},
+    {"k1_y", ParamKind::kReal, 0.5, 0.001, 100.0, "", "underactuated law: k1 of y", nullptr, "k1_y"},
+    {"k2_y", ParamKind::kReal, 2.0, 0.001, 100.0, "", "underactuated law: k2 of y", nullptr, "k2_y"},
+    {"k1_z", ParamKind::kReal, 5.0, 0.001, 100.0, "", "underactuated law: k1 of z", nullptr, "k1_z"},
+    {"k2_z", ParamKind::kReal, 2.0, 0.001, 100.0, "", "underactuated law: k2 of z", nullptr, "k2_z"},
+    {"k1_phi", ParamKind::kReal, 1.0, 0.001, 100.0, "", "underactuated law: k1 of roll", nullptr, "k1_phi"},
+    {"k2_phi", ParamKind::kReal, 20.0, 0.001, 100.0, "", "underactuated law: k2 of roll", nullptr, "k2_phi"},
+    {"k1_theta", ParamKind::kReal, 1.0, 0.001, 100.0, "", "underactuated law: k1 of pitch", nullptr, "k1_theta"},
+    {"k2_theta", ParamKind::kReal, 20.0, 0.001, 100.0, "", "underactuated law: k2 of pitch", nullptr, "k2_theta"},
+    {"k1_psi", ParamKind::kReal, 1.0, 0.001, 100.0, "", "underactuated law: k1 of yaw", nullptr, "k1_psi"},
+    {"k2_psi", ParamKind::kReal, 2.5, 0.001, 100.0, "", "underactuated law: k2 of yaw", nullptr, "k2_psi"},
     {"mode", ParamKind::kWord, 0, 0, 1, "",
      "controller node: realtime (30 Hz timer, states as they come) or lockstep (one command per simulated step)",
      "realtime|lockstep"},
@@ -77,6 +86,21 @@ constexpr ParameterSpec kParameterTable[kParameterRows] = {
      "controller node, lockstep: subscribers of cmd_vel to wait for before the first command"},
     {"lockstep_subscribers/control", ParamKind::kWhole, 0, 0, 100, "subscribers",
      "controller node, lockstep: subscribers of control to wait for (a recorder, a test)"},
+    {"link/uplink/jitter/max", ParamKind::kWholeSamples, 0, 0, 2047, "samples of Ts",
+     "link (docs/links.md): the state packets' jitter, at most (the file's kind; uniform if it has none)", nullptr,
+     "uplink_jitter"},
+    {"link/uplink/loss", ParamKind::kReal, 0, 0, 0.99, "", "link: the long-run share of state packets lost",
+     nullptr, "uplink_loss"},
+    {"link/uplink/burst", ParamKind::kReal, 1, 1, 1000, "samples",
+     "link: mean run of lost state packets (1: independent losses)", nullptr, "uplink_burst"},
+    {"link/downlink/delay", ParamKind::kWholeSamples, 0, 0, 2047, "samples of Ts",
+     "link: the command packets' base delay", nullptr, "downlink_delay"},
+    {"link/downlink/jitter/max", ParamKind::kWholeSamples, 0, 0, 2047, "samples of Ts",
+     "link: the command packets' jitter, at most", nullptr, "downlink_jitter"},
+    {"link/downlink/loss", ParamKind::kReal, 0, 0, 0.99, "", "link: the long-run share of command packets lost",
+     nullptr, "downlink_loss"},
+    {"link/downlink/burst", ParamKind::kReal, 1, 1, 1000, "samples",
+     "link: mean run of lost command packets (1: independent losses)", nullptr, "downlink_burst"},
 };
 
 inline const char* paramKindName(ParamKind k) {
@@ -102,6 +126,14 @@ inline std::vector<std::string> paramChoices(const ParameterSpec& p) {
   return words;
 }
 
+// The row of a live setting's name, or nullptr.
+inline const ParameterSpec* rowOfLiveSetting(const std::string& live) {
+  for (const ParameterSpec& p : kParameterTable) {
+    if (p.live != nullptr && live == p.live) return &p;
+  }
+  return nullptr;
+}
+
 // One value of the reference: "—" for none, true/false for a flag.
 inline std::string referenceValue(const ParameterSpec& p, double v) {
   if (std::isnan(v)) return "—";
@@ -117,14 +149,17 @@ inline std::string referenceValue(const ParameterSpec& p, double v) {
 
 // The table as the README's markdown (the "Parameter reference" section).
 inline std::string parameterReference() {
-  std::string md = "| parameter | kind | default | min | max | unit | meaning |\n|---|---|---|---|---|---|---|\n";
+  std::string md = "| parameter | live setting | kind | default | min | max | unit | meaning |\n"
+                   "|---|---|---|---|---|---|---|---|\n";
   for (const ParameterSpec& p : kParameterTable) {
     std::string lo = referenceValue(p, p.min), hi = referenceValue(p, p.max);
     if (p.kind == ParamKind::kWord) {  // the accepted words instead of a range
       lo = "one of ", hi = "—";
       for (const std::string& w : paramChoices(p)) lo += (lo.size() > 7 ? ", " : "") + w;
     }
-    md += std::string("| `") + p.name + "` | " + paramKindName(p.kind) + " | " + referenceValue(p, p.default_value) +
+    const std::string live = p.live ? std::string("`") + p.live + "`" : std::string("—");
+    md += std::string("| `") + p.name + "` | " + live + " | " + paramKindName(p.kind) + " | " +
+          referenceValue(p, p.default_value) +
           " | " + lo + " | " + hi + " | " + p.unit + " | " + p.doc + " |\n";
   }
   return md;
