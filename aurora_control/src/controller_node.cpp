@@ -199,7 +199,7 @@ bool ControllerNode::onSetParameters(dynamic_reconfigure::Reconfigure::Request& 
     ROS_INFO("controller: reconfigured %s, delay %ld samples", gainsText(next).c_str(), next.delay);
   }
   if (next.delay != set.delay) announceDelayChange(next.delay);
-  const bool link_changed = linkText(next.link) != linkText(set.link);
+  const bool link_changed = next.link != set.link;
   set = next;
   if (link_changed) {  // the channels start afresh with the new values
     core_->configureLink();

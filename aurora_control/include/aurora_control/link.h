@@ -44,7 +44,31 @@ struct LinkParams {
 
   // Today's loop: a constant uplink delay, nothing else.
   AURORA_HD bool ideal() const { return uplink.constant() && downlink.constant() && downlink.delay == 0; }
+
+  // The history a run needs over this link with the uplink's base delay
+  // `uplink_delay` (the run's delay replaces the link's own): its latest
+  // state packet, or its latest command.
+  AURORA_HD long historyNeeded(long uplink_delay) const {
+    LinkDirection up = uplink;
+    up.delay = uplink_delay;
+    const long down = downlink.maxLatency();
+    return up.maxLatency() > down ? up.maxLatency() : down;
+  }
 };
+
+inline bool operator==(const LinkDirection& a, const LinkDirection& b) {
+  return a.delay == b.delay && a.jitter == b.jitter && a.jitter_max == b.jitter_max &&
+         a.jitter_mean == b.jitter_mean && a.loss == b.loss && a.burst == b.burst;
+}
+inline bool operator==(const LinkParams& a, const LinkParams& b) {
+  return a.uplink == b.uplink && a.downlink == b.downlink && a.seed == b.seed && a.cmd_timeout == b.cmd_timeout;
+}
+inline bool operator!=(const LinkParams& a, const LinkParams& b) { return !(a == b); }
+
+// A jitter kind's name in link files and logs.
+inline const char* jitterKindName(JitterKind k) {
+  return k == JitterKind::kUniform ? "uniform" : k == JitterKind::kGeometric ? "geometric" : "none";
+}
 
 // The draws of one packet: two uniforms in (0, 1), for its jitter and its
 // loss, keyed by (seed, combination, direction, step).

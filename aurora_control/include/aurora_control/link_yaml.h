@@ -27,8 +27,8 @@ inline std::string burstLossRefusal(const LinkDirection& d) {
 inline void readJitter(const YamlReader& r, const YAML::Node& n, const std::string& key, LinkDirection& d) {
   r.onlyKeys(n, key, {"kind", "max", "mean"});
   const std::string kind = r.text(r.require(n, key, "kind", "uniform, geometric"), r.key(key, "kind"));
-  if (kind == "uniform") d.jitter = JitterKind::kUniform;
-  else if (kind == "geometric") d.jitter = JitterKind::kGeometric;
+  if (kind == jitterKindName(JitterKind::kUniform)) d.jitter = JitterKind::kUniform;
+  else if (kind == jitterKindName(JitterKind::kGeometric)) d.jitter = JitterKind::kGeometric;
   else r.fail(r.key(key, "kind"), "= '" + kind + "' is unknown: accepted uniform, geometric");
   d.jitter_max = r.integer(r.require(n, key, "max", "whole samples >= 0"), r.key(key, "max"));
   if (d.jitter_max < 0) r.fail(r.key(key, "max"), "= " + YamlReader::fmt(double(d.jitter_max)) + " is refused: accepted whole samples >= 0");
@@ -42,9 +42,10 @@ inline void readJitter(const YamlReader& r, const YAML::Node& n, const std::stri
 inline LinkDirection readLinkDirection(const YamlReader& r, const YAML::Node& n, const std::string& key) {
   LinkDirection d;
   r.onlyKeys(n, key, {"delay", "jitter", "loss", "burst"});
-  if (n["delay"]) {
-    d.delay = r.integer(n["delay"], r.key(key, "delay"));
-    if (d.delay < 0) r.fail(r.key(key, "delay"), "= " + YamlReader::fmt(double(d.delay)) + " is refused: accepted " + delayRangeText());
+  if (n["delay"]) {  // the one delay parse (limits.h)
+    const double given = r.number(n["delay"], r.key(key, "delay"));
+    const std::string refusal = delayRefusal(given, false, 0.0, d.delay);
+    if (!refusal.empty()) r.fail(r.key(key, "delay"), "= " + YamlReader::fmt(given) + " " + refusal);
   }
   if (n["jitter"]) readJitter(r, n["jitter"], r.key(key, "jitter"), d);
   // The ranges of the parameter table (parameter_table.h), as the live settings.
@@ -98,7 +99,7 @@ inline std::string linkText(const LinkParams& l) {
     const LinkDirection& d = *dirs[i];
     char buf[192];
     std::snprintf(buf, sizeof buf, "%s delay %ld, jitter %s max %ld mean %g, loss %g, burst %g; ", names[i], d.delay,
-                  d.jitter == JitterKind::kNone ? "none" : d.jitter == JitterKind::kUniform ? "uniform" : "geometric",
+                  jitterKindName(d.jitter),
                   d.jitter_max, d.jitter_mean, d.loss, d.burst);
     out += buf;
   }

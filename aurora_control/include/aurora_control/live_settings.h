@@ -4,7 +4,6 @@
 // accepted; the settings in force are then left as they were.
 #pragma once
 
-#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -90,9 +89,7 @@ inline std::string linkProblem(const ControllerSettings& now, const LiveChange& 
     const std::string chain = burstLossRefusal(*d);
     if (!chain.empty()) return c.name + " = " + YamlReader::fmt(c.value) + ": the loss " + chain;
   }
-  LinkDirection up = next.uplink;
-  up.delay = now.delay;
-  if (std::max(up.maxLatency(), next.downlink.maxLatency()) > kMaxDelaySamples) {
+  if (next.historyNeeded(now.delay) > kMaxDelaySamples) {
     return c.name + " = " + YamlReader::fmt(c.value) + " is refused: the delay plus the jitter would exceed the " +
            "history of " + std::to_string(kMaxDelaySamples) + " samples";
   }

@@ -57,8 +57,7 @@ class ModelLink {
     down_.send(link_.downlink, link_.seed, combination_, LinkDirectionId::kDownlink, k);
     const long j = down_.receive(link_.downlink, k);
     hovering_ = j < 0 || down_.sinceArrival(k) >= timeout_steps_;
-    const bool hover = hovering_;
-    for (int i = 0; i < 4; ++i) received[i] = hover ? T(0) : commands_[j % Window][i];
+    for (int i = 0; i < 4; ++i) received[i] = hovering_ ? T(0) : commands_[j % Window][i];
   }
 
   // A step without a packet on a direction (the node: a state it never

@@ -5,7 +5,6 @@
 // loop with it.
 #pragma once
 
-#include <algorithm>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -26,7 +25,6 @@ struct RunnerConfig {
   bool clamp_at_drone = false;  // the drone clamps what it receives (the sim node and the drivers)
   bool early_stop = false;      // stop at the first failed check
   LinkParams link;              // the link (link.h); its uplink delay is the run's `delay`
-  uint64_t combination = 0;     // keys the link's draws (the sweep's combination index)
 };
 
 // One simulation's own parameters: the simulated drone, the gains and the
@@ -129,6 +127,17 @@ AURORA_HD RunnerResult runClosedLoop(const StudyRun<T>& run, const RunnerConfig<
   return runClosedLoopOver<Law, T, Capacity>(run, cfg, iterations, observe, link);
 }
 
+// The run over cfg.link's model (host only: the channels and the commands
+// in flight live on the heap). `combination` keys the link's draws: the
+// sweep's combination index, 0 for a single flight (as the node's).
+template <LawType Law, typename T, int Capacity, typename Observer>
+RunnerResult runOverModelLink(const StudyRun<T>& run, const RunnerConfig<T>& cfg, long iterations,
+                              Observer& observe, uint64_t combination) {
+  std::unique_ptr<ModelLink<Capacity, T>> link(
+      new ModelLink<Capacity, T>(cfg.link, run.delay, combination, double(run.plant.Ts)));
+  return runClosedLoopOver<Law, T, Capacity>(run, cfg, iterations, observe, *link);
+}
+
 // Refuses a delay the runner's history cannot hold.
 inline void checkRunnerDelay(long delay) {
   if (delay < 0 || delay > kMaxRunnerDelay) {
@@ -152,17 +161,12 @@ RunnerResult runLoop(LawType law, const StudyRun<T>& run, const RunnerConfig<T>&
     });
     return result;
   }
-  LinkDirection up = cfg.link.uplink;
-  up.delay = run.delay;
-  const long latency = std::max(up.maxLatency(), cfg.link.downlink.maxLatency());
-  checkRunnerDelay(latency);
-  withHistoryCapacity(latency, [&](auto capacity) {
-    constexpr int kCapacity = decltype(capacity)::value;
-    // On the heap: two channels and a ring of commands of up to kDelayHistory.
-    std::unique_ptr<ModelLink<kCapacity, T>> link(
-        new ModelLink<kCapacity, T>(cfg.link, run.delay, cfg.combination, double(run.plant.Ts)));
+  const long history = cfg.link.historyNeeded(run.delay);
+  checkRunnerDelay(history);
+  withHistoryCapacity(history, [&](auto capacity) {
     withLaw(law, [&](auto law_tag) {
-      result = runClosedLoopOver<decltype(law_tag)::value, T, kCapacity>(run, cfg, iterations, observe, *link);
+      result = runOverModelLink<decltype(law_tag)::value, T, decltype(capacity)::value>(run, cfg, iterations,
+                                                                                        observe, 0);
     });
   });
   return result;

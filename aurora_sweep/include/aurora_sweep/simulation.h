@@ -4,8 +4,6 @@
 // run with the same studyRun().
 #pragma once
 
-#include <memory>
-
 #include "aurora_control/positioning_runner.h"
 #include "aurora_sweep/combination.h"
 
@@ -102,10 +100,8 @@ template <aurora_control::LawType Law, typename T, int Capacity>
 inline SimResult simulateOverLink(const SimSetup<T>& setup, const GridView& grid, long index) {
   const aurora_control::StudyRun<T> run = studyRun(setup, grid.decode(index));
   aurora_control::NoObserver none;
-  std::unique_ptr<aurora_control::ModelLink<Capacity, T>> link(new aurora_control::ModelLink<Capacity, T>(
-      setup.config.link, run.delay, static_cast<uint64_t>(index), setup.vehicle.Ts));
-  return compactResult(aurora_control::runClosedLoopOver<Law, T, Capacity>(run, setup.config, setup.iterations,
-                                                                           none, *link));
+  return compactResult(aurora_control::runOverModelLink<Law, T, Capacity>(run, setup.config, setup.iterations,
+                                                                          none, static_cast<uint64_t>(index)));
 }
 
 }  // namespace aurora_sweep

@@ -2,7 +2,6 @@
 // sweep file (sweep_file.h), validated before any work.
 #pragma once
 
-#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -50,13 +49,8 @@ struct SweepSpec {
   // combination's delay is its uplink's base delay. Ideal by default.
   aurora_control::LinkParams link;
   std::string link_file;
-  // The history the runs need: the largest delay plus the uplink's jitter,
-  // or the downlink's latency.
-  long historyNeeded() const {
-    aurora_control::LinkDirection up = link.uplink;
-    up.delay = max_delay;
-    return std::max(up.maxLatency(), link.downlink.maxLatency());
-  }
+  // The history the runs need (the largest delay over the link).
+  long historyNeeded() const { return link.historyNeeded(max_delay); }
   // How the points were made: grid (axes or a points file) or a sampling
   // design (design.h) of `samples` points from `seed`, stored in `points`.
   std::string design = "grid";
