@@ -111,34 +111,39 @@ void refuseDelayBeyondTheTask(long delay, long steps, double Ts) {
   if (!delayShorterThanRun(delay, steps)) throw ConfigError("--delay " + delayRunText(delay, steps, Ts));
 }
 
+// Flies the options' task once and prints what it measured.
+void run(const Options& o) {
+  const auto p = aurora_sim::loadVehicleYaml(o.vehicle);
+  const ControllerSettings set = loadSettings(o, p);
+  const Task<double> task = readTask(YamlReader("task file '" + o.task + "': "), loadYamlFile("task file", o.task)["task"], "task");
+  const long n = taskStepCount(task.duration(), p.Ts);  // steps 0..N, as the node and report
+  refuseDelayBeyondTheTask(set.delay, n, p.Ts);
+  FILE* csv = o.csv.empty() ? nullptr : std::fopen(o.csv.c_str(), "w");
+  if (!o.csv.empty() && !csv) throw std::runtime_error("cannot write '" + o.csv + "'");
+  if (csv) std::fprintf(csv, "%s", kCsvHeader);
+  SegmentErrors segments(task);
+  const auto t0 = std::chrono::steady_clock::now();
+  const FlightResult r = runFlight(p, set, task, n, [&](const LoopObservation<double>& o, double e) {
+    segments.add(o.k, p.Ts, e);
+    if (csv) writeCsvRow(csv, o, taskTime(o.k, p.Ts), e);
+  });
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (csv) std::fclose(csv);
+  std::printf("flight: %s, %s task of %.1f s, delay %ld samples: %ld steps in %.3f s (%.2f us per step, model included)\n",
+              lawName(set.law), task.isTrajectory() ? (task.type == TaskType::kCircle ? "circle" : "lemniscate") : "waypoint",
+              task.duration(), set.delay, r.steps, seconds, 1e6 * seconds / double(r.steps));
+  segments.print();
+  std::printf("  whole flight: RMS %.4f m, max %.4f m; IAE %.4f, ITAE %.4f, IASC %.4f\n", r.rms_tracking_error,
+              r.max_tracking_error, r.iae, r.itae, r.iasc);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   Options o;
   try {
     if (!parse(argc, argv, o)) return 0;
-    const auto p = aurora_sim::loadVehicleYaml(o.vehicle);
-    const ControllerSettings set = loadSettings(o, p);
-    const Task<double> task = readTask(YamlReader("task file '" + o.task + "': "), loadYamlFile("task file", o.task)["task"], "task");
-    const long n = taskStepCount(task.duration(), p.Ts);  // steps 0..N, as the node and report
-    refuseDelayBeyondTheTask(set.delay, n, p.Ts);
-    FILE* csv = o.csv.empty() ? nullptr : std::fopen(o.csv.c_str(), "w");
-    if (!o.csv.empty() && !csv) throw std::runtime_error("cannot write '" + o.csv + "'");
-    if (csv) std::fprintf(csv, "%s", kCsvHeader);
-    SegmentErrors segments(task);
-    const auto t0 = std::chrono::steady_clock::now();
-    const FlightResult r = runFlight(p, set, task, n, [&](const LoopObservation<double>& o, double e) {
-      segments.add(o.k, p.Ts, e);
-      if (csv) writeCsvRow(csv, o, taskTime(o.k, p.Ts), e);
-    });
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    if (csv) std::fclose(csv);
-    std::printf("flight: %s, %s task of %.1f s, delay %ld samples: %ld steps in %.3f s (%.2f us per step, model included)\n",
-                lawName(set.law), task.isTrajectory() ? (task.type == TaskType::kCircle ? "circle" : "lemniscate") : "waypoint",
-                task.duration(), set.delay, r.steps, seconds, 1e6 * seconds / double(r.steps));
-    segments.print();
-    std::printf("  whole flight: RMS %.4f m, max %.4f m; IAE %.4f, ITAE %.4f, IASC %.4f\n", r.rms_tracking_error,
-                r.max_tracking_error, r.iae, r.itae, r.iasc);
+    run(o);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "flight: %s\n", e.what());
     return 2;

@@ -348,10 +348,10 @@ std::unique_ptr<DelayedController<kCapacity>> makeCore(const Arguments& args) {
   return core;
 }
 
-}  // namespace
 
-int main(int argc, char** argv) {
-  const Arguments args = parseArguments(argc, argv);
+
+// Replays the bag of `args` and compares the commands; the exit status.
+int run(const Arguments& args) {
   const std::string &bag_path = args.bag_path, &out_path = args.out_path;
   const bool expect_identical = args.expect_identical;
   const Overrides& o = args.o;
@@ -425,3 +425,7 @@ int main(int argc, char** argv) {
   }
   return expect_identical && identical != cycles ? 1 : 0;
 }
+
+}  // namespace
+
+int main(int argc, char** argv) { return run(parseArguments(argc, argv)); }
