@@ -44,6 +44,7 @@ bench: build
 	./bench/sweep_scale.sh $(BUILD)
 	./bench/report.sh $(BUILD)
 	./bench/laws.sh $(BUILD)
+	./bench/links.sh $(BUILD)
 
 clean:
 	rm -rf $(BUILD) out

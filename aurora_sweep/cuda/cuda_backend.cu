@@ -90,22 +90,31 @@ class CudaEvent {
   cudaEvent_t event_ = nullptr;
 };
 
-template <aurora_control::LawType Law, typename T, int Capacity>
+template <aurora_control::LawType Law, typename T, int Capacity, bool Linked>
 __global__ void sweepKernel(SimSetup<T> setup, GridView grid, long first, long n, SimResult* out) {
-  sweepThread<Law, T, Capacity>(setup, grid, first, n, out, blockIdx.x, blockDim.x, threadIdx.x);
+  sweepThread<Law, T, Capacity, Linked>(setup, grid, first, n, out, blockIdx.x, blockDim.x, threadIdx.x);
 }
 
-// Calls f(T(), capacity, law) with the kernel's compile-time parameters for
-// `spec`: its precision, law and history tier (the tiers of
-// withHistoryCapacity up to kMediumHistory; delays beyond are refused).
+// Calls f(T(), capacity, law, linked) with the kernel's compile-time
+// parameters for `spec`: its precision, law, history tier (the tiers of
+// withHistoryCapacity up to kMediumHistory; longer histories are refused)
+// and whether its runs go over a link model (a kernel of its own, so the
+// ideal sweeps' kernel keeps its registers and local memory).
 template <class F>
 void withKernelTypes(const SweepSpec& spec, F&& f) {
   aurora_control::withLaw(spec.law, [&](auto law) {
-    auto tier = [&](auto type) {
-      if (spec.max_delay < aurora_control::kShortHistory) {
-        f(type, std::integral_constant<int, aurora_control::kShortHistory>(), law);
+    auto linked = [&](auto type, auto capacity) {
+      if (spec.linkIdeal()) {
+        f(type, capacity, law, std::false_type());
       } else {
-        f(type, std::integral_constant<int, aurora_control::kMediumHistory>(), law);
+        f(type, capacity, law, std::true_type());
+      }
+    };
+    auto tier = [&](auto type) {
+      if (spec.historyNeeded() < aurora_control::kShortHistory) {
+        linked(type, std::integral_constant<int, aurora_control::kShortHistory>());
+      } else {
+        linked(type, std::integral_constant<int, aurora_control::kMediumHistory>());
       }
     };
     if (spec.precision == Precision::kDouble) {
@@ -119,8 +128,8 @@ void withKernelTypes(const SweepSpec& spec, F&& f) {
 // Calls f(kernel): the kernel instantiation that runs `spec`.
 template <class F>
 void withKernel(const SweepSpec& spec, F&& f) {
-  withKernelTypes(spec, [&](auto type, auto capacity, auto law) {
-    f(sweepKernel<decltype(law)::value, decltype(type), decltype(capacity)::value>);
+  withKernelTypes(spec, [&](auto type, auto capacity, auto law, auto linked) {
+    f(sweepKernel<decltype(law)::value, decltype(type), decltype(capacity)::value, decltype(linked)::value>);
   });
 }
 
@@ -151,7 +160,8 @@ int deviceAttribute(cudaDeviceAttr which) {
 }
 
 // Only the rows of the chunk [first, first + n) of a points design go to
-// the device (a whole 10^8-row design would be gigabytes per chunk).
+// the device (a whole 10^8-row design would be gigabytes per chunk); with
+// repeats, index i is row i / repeats.
 struct DeviceGrid {
   GridView view{};
   std::vector<std::unique_ptr<DeviceArray<double>>> buffers;
@@ -164,13 +174,14 @@ struct DeviceGrid {
     for (int a = 0; a < host.n_axes; ++a) view.values[a] = upload(host.values[a], static_cast<size_t>(host.count[a]));
     if (host.n_points > 0) {
       const size_t cols = static_cast<size_t>(host.point_cols);
-      view.points = upload(host.points + static_cast<size_t>(first) * cols, static_cast<size_t>(n) * cols);
-      view.points_first = first;
+      const long row = first / host.repeats, rows = (first + n - 1) / host.repeats - row + 1;
+      view.points = upload(host.points + static_cast<size_t>(row) * cols, static_cast<size_t>(rows) * cols);
+      view.points_first = row;
     }
   }
 };
 
-template <aurora_control::LawType Law, typename T, int Capacity>
+template <aurora_control::LawType Law, typename T, int Capacity, bool Linked>
 CudaRun launch(const SweepSpec& spec, int block_size, std::vector<SimResult>& out) {
   using Clock = std::chrono::steady_clock;
   const auto t0 = Clock::now();
@@ -184,7 +195,7 @@ CudaRun launch(const SweepSpec& spec, int block_size, std::vector<SimResult>& ou
   CudaEvent start, stop;
   cudaGetLastError();  // a stale error of an earlier, failed call is not this launch's
   check(cudaEventRecord(start.get()), "cudaEventRecord");
-  sweepKernel<Law, T, Capacity><<<static_cast<unsigned>(run.grid_size), run.block_size>>>(setup, grid.view, first, n,
+  sweepKernel<Law, T, Capacity, Linked><<<static_cast<unsigned>(run.grid_size), run.block_size>>>(setup, grid.view, first, n,
                                                                                          dev_out.get());
   check(cudaGetLastError(), "kernel launch");
   check(cudaEventRecord(stop.get()), "cudaEventRecord");
@@ -266,10 +277,10 @@ CudaDevice probeCudaDevice() {
 long cudaMaxDelay() { return aurora_control::kMediumHistory - 1; }
 
 std::string cudaDelayProblem(const SweepSpec& spec) {
-  if (spec.max_delay <= cudaMaxDelay()) return "";
-  return "the cuda backend holds delays up to " + std::to_string(cudaMaxDelay()) +
+  if (spec.historyNeeded() <= cudaMaxDelay()) return "";
+  return "the cuda backend holds delays (with a link's jitter) up to " + std::to_string(cudaMaxDelay()) +
          " samples (each GPU thread keeps its history in local memory); this sweep reaches " +
-         std::to_string(spec.max_delay) + ": use --backend cpu";
+         std::to_string(spec.historyNeeded()) + ": use --backend cpu";
 }
 
 std::string cudaLaunchProblem(const SweepSpec& spec, int block_size) {
@@ -318,9 +329,9 @@ CudaRun runCuda(const SweepSpec& spec, int block_size, std::vector<SimResult>& o
   const std::string delay = cudaDelayProblem(spec);
   if (!delay.empty()) throw std::runtime_error(delay);
   CudaRun run;
-  withKernelTypes(spec, [&](auto type, auto capacity, auto law) {
+  withKernelTypes(spec, [&](auto type, auto capacity, auto law, auto linked) {
     using T = decltype(type);
-    run = launch<decltype(law)::value, T, decltype(capacity)::value>(spec, block_size, out);
+    run = launch<decltype(law)::value, T, decltype(capacity)::value, decltype(linked)::value>(spec, block_size, out);
   });
   return run;
 }

@@ -3,7 +3,9 @@
 // advances L simulations (one per SIMD lane). Lanes are independent: each has
 // its own combination, iteration count and delay; a lane whose simulation
 // ends (early stop or the last iteration) takes the next combination at once,
-// so early stops keep paying.
+// so early stops keep paying. Over a link each lane has its own link model
+// (the scalar runner's ModelLink, stepped lane by lane): it picks the lane's
+// state from the history and the command its drone applies.
 //
 // Included only by batch_isa.cpp, which is compiled once per instruction set
 // into its own shared library that exports nothing but its entry points
@@ -113,6 +115,10 @@ class BatchWorker {
               Progress& progress)
       : grid_(spec.view()), first_(spec.rangeBegin()), total_(spec.rangeEnd()), out_(out), next_(next),
         progress_(progress), setup_(makeSetup<T>(spec)) {
+    if (!setup_.ideal_link) {
+      links_.reserve(L);
+      for (int l = 0; l < L; ++l) links_.emplace_back(setup_.config.link, 0, 0, double(setup_.model.Ts));
+    }
     loop_.model = setup_.model.template cast<B>();
     loop_.plant = loop_.model;  // per lane when the model varies (startLane)
     loop_.criteria = setup_.config.criteria.template cast<B>();
@@ -174,7 +180,12 @@ class BatchWorker {
   void startLane(int l) {
     long index = first_;
     const bool have = takeIndex(index);
-    const aurora_control::StudyRun<T> run = studyRun(setup_, grid_.decode(have ? index : first_));
+    const Combination c = grid_.decode(have ? index : first_);
+    const aurora_control::StudyRun<T> run = studyRun(setup_, c);
+    if (!setup_.ideal_link) {
+      links_[l] = Link(combinationLink(setup_.config.link, c), run.delay, static_cast<uint64_t>(c.key),
+                       double(setup_.model.Ts));
+    }
     active_[l] = have;
     index_[l] = index;
     LaneOps::set(delay_, l, static_cast<Int>(run.delay));
@@ -209,22 +220,60 @@ class BatchWorker {
     progress_.fetch_add(1, std::memory_order_relaxed);
   }
 
+  // Over a link: each lane's history index (1-based) of the state its
+  // controller receives at its iteration k = count - 1.
+  I linkedHistoryIndex() {
+    alignas(64) Int at[L];
+    count_.store_aligned(at);
+    for (int l = 0; l < L; ++l) at[l] = static_cast<Int>(links_[l].uplinkIndex(long(at[l]) - 1) + 1);
+    return I::load_aligned(at);
+  }
+
+  // Over a link: each lane's sent command U becomes the one its drone
+  // receives (the newest arrived, or hover).
+  void linkCommands(B U[4]) {
+    alignas(64) T sent[4][L];
+    alignas(64) Int at[L];
+    for (int i = 0; i < 4; ++i) U[i].store_aligned(sent[i]);
+    count_.store_aligned(at);
+    for (int l = 0; l < L; ++l) {
+      T lane[4] = {sent[0][l], sent[1][l], sent[2][l], sent[3][l]};
+      links_[l].downlink(long(at[l]) - 1, lane, lane);
+      for (int i = 0; i < 4; ++i) sent[i][l] = lane[i];
+    }
+    for (int i = 0; i < 4; ++i) U[i] = B::load_aligned(sent[i]);
+  }
+
+  // Loop steps 2-5, the closed loop's iteration k on every lane: both halves
+  // at once over an ideal link, else the link between them.
+  void loopStep(const B& k, const B xc[aurora_sim::kStateSize]) {
+    if (setup_.ideal_link) {
+      aurora_control::closedLoopStep<Law>(loop_, setup_.config.task, clamp_, k, xc, sim_);
+      return;
+    }
+    B U[4], applied[4];
+    const aurora_control::Reference<B> ref =
+        aurora_control::controllerHalf<Law>(loop_, setup_.config.task, clamp_, k, xc, sim_, U);
+    linkCommands(U);
+    aurora_control::droneHalf(loop_, clamp_, ref, U, sim_, applied);
+  }
+
   void step() {
     // Loop step 1: the delayed sample of each lane, by the delay rule
-    // (delay_buffer.h, the same function on integer lanes; k = count),
-    // gathered from the ring. All lanes write at the same slot each step (a
-    // plain vector store); lane l's H(i) sits at slot start_l + i - 1.
+    // (delay_buffer.h, the same function on integer lanes; k = count) or
+    // the lane's link, gathered from the ring. All lanes write at the same
+    // slot each step (a plain vector store); lane l's H(i) sits at slot
+    // start_l + i - 1.
     const I one(Int(1));
     const I mask(Int(Capacity - 1));
-    const I index = aurora_control::delayedHistoryIndex(count_, delay_);  // 1-based
+    const I index = setup_.ideal_link ? aurora_control::delayedHistoryIndex(count_, delay_)
+                                      : linkedHistoryIndex();  // 1-based
     const I read_base = ((start_ + index - one) & mask) * I(Int(W * L)) + lane_;
     aurora_control::LawSample<B, Law> delayed;
     for (int j = 0; j < W; ++j) delayed.v[j] = gatherLanes<B>(history_.data(), read_base + I(Int(j * L)));
     B xc[aurora_sim::kStateSize];
     delayed.toState(xc);
-    // Steps 2-5, the closed loop's iteration k = count - 1 on every lane.
-    aurora_control::closedLoopStep<Law>(loop_, setup_.config.task, clamp_, xsimd::batch_cast<T>(count_ - one), xc,
-                                        sim_);
+    loopStep(xsimd::batch_cast<T>(count_ - one), xc);
     // Step 6: append X to every lane's history, H(count + 1) at slot step_ + 1.
     ++step_;
     const long slot = step_ % Capacity;
@@ -259,6 +308,8 @@ class BatchWorker {
   aurora_control::LoopState<T, bool> fresh_;
   aurora_control::LoopState<B, M> sim_;
   std::vector<T, xsimd::aligned_allocator<T, 64>> history_;  // [slot][W][lane]
+  using Link = aurora_control::ModelLink<Capacity, T>;
+  std::vector<Link> links_;  // each lane's, over a link (empty over an ideal one)
   bool active_[L];
   long index_[L];
   I delay_ = I(Int(0));  // delay of each lane [samples]

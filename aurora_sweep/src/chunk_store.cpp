@@ -132,13 +132,17 @@ uint32_t definitionHash(const SweepSpec& spec) {
     crc.add(static_cast<int>(a.param));
     crc.add(a.values);
   }
-  for (double f : spec.fixed) crc.add(f);
+  for (int id = 0; id < kParamCountBeforeLinks; ++id) crc.add(spec.fixed[id]);
   crc.add(spec.points);
   for (int p : spec.point_params) crc.add(p);
   crc.add(spec.early_stop);
   crc.add(spec.clamp_commands);
   crc.add(static_cast<int>(spec.precision));
-  if (!spec.link.ideal()) addLink(crc, spec.link);  // an ideal link keeps today's hashes
+  if (!spec.linkIdeal() || spec.repeats > 1) {  // an ideal link keeps the hashes of the sweeps before links
+    addLink(crc, spec.link);
+    for (int id = kParamCountBeforeLinks; id < kParamCount; ++id) crc.add(spec.fixed[id]);
+    crc.add(spec.repeats);
+  }
   return crc.value();
 }
 
@@ -152,7 +156,7 @@ const std::vector<std::string>& sweepOutputFiles() {
   static const std::vector<std::string> files{
       "results.csv", "results.h5", "summary.json", "feasible_volume.png", "feasible_marginals.png",
       "feasible_pairs.png", "max_tolerable_delay.png", "check1_region.png",
-      "check2_region.png", "check3_region.png", "check4_region.png"};
+      "check2_region.png", "check3_region.png", "check4_region.png", "feasible_share.csv", "feasible_share.png"};
   return files;
 }
 

@@ -95,12 +95,8 @@ const Isa& chosen() {
   return isa;
 }
 
-// A build's engine, or one simulation per thread for a sweep over a link
-// (the SIMD engine runs ideal links only so far).
 void runOn(const Isa& isa, const SweepSpec& spec, int threads, std::vector<SimResult>& out, Progress& progress) {
-  threads = threads < 1 ? 1 : threads;
-  if (!spec.link.ideal()) return runThreadedScalar(spec, threads, out, progress);
-  isa.run(spec, threads, out, progress);
+  isa.run(spec, threads < 1 ? 1 : threads, out, progress);
 }
 
 }  // namespace

@@ -3,6 +3,8 @@
 #include <limits>
 
 #include "aurora_control/limits.h"
+#include "aurora_control/link.h"
+#include "aurora_control/parameter_table.h"
 #include "aurora_control/underactuated_law.h"
 
 namespace aurora_sweep {
@@ -21,7 +23,7 @@ std::vector<ParamInfo> makeTable() {
   t[kParamKp] = {"kp", ParamGroup::kPdGain, kPdGainMin, kPdGainMax, pd};
   t[kParamKd] = {"kd", ParamGroup::kPdGain, kPdGainMin, kPdGainMax, pd};
   t[kParamDelay] = {"delay", ParamGroup::kDelay, 0.0, double(kMaxDelaySamples),
-                    "whole samples of Ts, the histories' limit"};
+                    "whole samples of Ts, the histories' limit", true};
   for (int i = 0; i < kUnderactuatedGainCount; ++i) {
     t[kParamFirstUnderactuatedGain + i] = {underactuatedGainName(i), ParamGroup::kUnderactuatedGain,
                                            kUnderactuatedGainMin, kUnderactuatedGainMax,
@@ -32,6 +34,14 @@ std::vector<ParamInfo> makeTable() {
     t[kParamFirstModelFactor + i] = {model[i], ParamGroup::kModelFactor, kFactorMin, kFactorMax,
                                      "a factor of the vehicle file's value: positive, at most 10x either way"};
   }
+  // The link's values: the parameter table's rows (their live names, ranges).
+  for (int i = 0; i < kLinkParamCount; ++i) {
+    const ParameterSpec& row = kParameterTable[kRowUplinkJitter + i];
+    t[kParamFirstLinkValue + i] = {row.live, ParamGroup::kLink, row.min, row.max,
+                                   std::string(row.doc) + (row.unit[0] ? std::string(", ") + row.unit : ""),
+                                   row.kind == ParamKind::kWholeSamples};
+  }
+  t[kParamRepeat] = {"repeat", ParamGroup::kRepeat, 0.0, 1e9, "which link seed (sweep.repeats)", true};
   return t;
 }
 
@@ -53,6 +63,7 @@ bool paramApplies(int id, aurora_control::LawType law) {
   switch (paramInfo(id).group) {
     case ParamGroup::kPdGain: return law == aurora_control::LawType::kPdSaturated;
     case ParamGroup::kUnderactuatedGain: return law == aurora_control::LawType::kUnderactuated;
+    case ParamGroup::kRepeat: return false;  // sweep.repeats, not a parameter
     default: return true;
   }
 }
@@ -83,6 +94,8 @@ double paramDefault(int id) {
       return aurora_control::underactuatedGain(g, id - kParamFirstUnderactuatedGain);
     }
     case ParamGroup::kModelFactor: return 1.0;
+    case ParamGroup::kLink: return aurora_control::linkValueOf(aurora_control::LinkParams(), id - kParamFirstLinkValue);
+    case ParamGroup::kRepeat: return 0.0;
     default: return std::numeric_limits<double>::quiet_NaN();
   }
 }

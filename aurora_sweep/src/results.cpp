@@ -80,8 +80,8 @@ class CsvWriter : public ResultsWriter {
 }  // namespace
 
 DelayMonotony::DelayMonotony(const SweepSpec& spec) : grid_(spec.view()) {
-  // Applies to grids of exactly the axes kp, kd and delay.
-  if (!spec.points.empty() || spec.axes.size() != 3) return;
+  // Applies to grids of exactly the axes kp, kd and delay, one run each.
+  if (!spec.points.empty() || spec.axes.size() != 3 || spec.repeats > 1) return;
   for (const Axis& a : spec.axes) {
     if (a.param != kParamKp && a.param != kParamKd && a.param != kParamDelay) return;
   }
@@ -118,6 +118,45 @@ long DelayMonotony::nonMonotonePairs() const {
     count += again;
   }
   return count;
+}
+
+FeasibleShare::FeasibleShare(const SweepSpec& spec) : repeats_(spec.repeats) {
+  if (applies()) feasible_runs_.assign(static_cast<size_t>(spec.combinations()), 0);
+}
+
+void FeasibleShare::add(long first, const std::vector<SimResult>& results) {
+  if (!applies()) return;
+  for (size_t i = 0; i < results.size(); ++i) {
+    feasible_runs_[static_cast<size_t>((first + static_cast<long>(i)) / repeats_)] += feasible(results[i]);
+  }
+}
+
+nlohmann::json FeasibleShare::summary() const {
+  std::vector<long> by_runs(static_cast<size_t>(repeats_) + 1, 0);
+  double share = 0;
+  for (unsigned int n : feasible_runs_) ++by_runs[n], share += double(n) / double(repeats_);
+  return {{"repeats", repeats_},
+          {"combinations", feasible_runs_.size()},
+          {"combinations_by_feasible_runs", by_runs},
+          {"mean_share", feasible_runs_.empty() ? 0.0 : share / double(feasible_runs_.size())}};
+}
+
+void FeasibleShare::writeCsv(const std::string& path, const SweepSpec& spec) const {
+  FILE* f = std::fopen(path.c_str(), "w");
+  if (!f) throw std::runtime_error("cannot write '" + path + "'");
+  std::vector<int> params = spec.columns();
+  params.erase(std::remove(params.begin(), params.end(), int(kParamRepeat)), params.end());
+  std::fprintf(f, "combination");
+  for (int id : params) std::fprintf(f, ",%s", paramName(id));
+  std::fprintf(f, ",repeats,feasible_runs,feasible_share\n");
+  const GridView grid = spec.view();
+  for (size_t k = 0; k < feasible_runs_.size(); ++k) {
+    const Combination c = grid.decode(static_cast<long>(k) * repeats_);
+    std::fprintf(f, "%zu", k);
+    for (int id : params) std::fprintf(f, ",%.17g", c.v[id]);
+    std::fprintf(f, ",%ld,%u,%.17g\n", repeats_, feasible_runs_[k], double(feasible_runs_[k]) / double(repeats_));
+  }
+  if (std::fclose(f) != 0) throw std::runtime_error("cannot finish writing '" + path + "'");
 }
 
 void addCounts(Counts& c, const std::vector<SimResult>& results, long iterations) {
@@ -193,7 +232,8 @@ void writeSummaryJson(const std::string& path, const SweepSpec& spec, const RunI
       {"controller", spec.controller},
       {"parameters", parameters},
       {"result_columns", resultColumnsJson()},
-      {"link", spec.link.ideal() ? json("ideal") : json(spec.link_file)},
+      {"link", spec.linkIdeal() ? json("ideal") : spec.link_file.empty() ? json("the link parameters") : json(spec.link_file)},
+      {"repeats", spec.repeats},
       {"fixed", fixed},
       {"task_duration_s", spec.duration()},
       {"order", order},

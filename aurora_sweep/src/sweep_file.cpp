@@ -67,6 +67,8 @@ void checkValue(const Reader& r, int id, double v, const std::string& key) {
   } else if (!(v >= p.min && v <= p.max)) {
     r.fail(key, "= " + Reader::fmt(v) + " is outside the accepted range [" + Reader::fmt(p.min) + ", " +
                     Reader::fmt(p.max) + "] of " + p.name + " (" + p.limit + ")");
+  } else if (p.whole && v != std::floor(v)) {
+    r.fail(key, "= " + Reader::fmt(v) + " is refused: " + p.name + " takes whole samples");
   }
 }
 
@@ -172,7 +174,7 @@ SampledRange readRange(const Reader& r, const YAML::Node& v, const std::string& 
   SampledRange range;
   range.from = r.number(v["from"], key + ".from");
   range.to = r.number(v["to"], key + ".to");
-  range.integer = id == kParamDelay;
+  range.integer = paramInfo(id).whole;
   if (range.to < range.from) {
     r.fail(key, "is an empty range: 'to' (" + Reader::fmt(range.to) + ") is below 'from' (" +
                     Reader::fmt(range.from) + ")");
@@ -183,7 +185,7 @@ SampledRange readRange(const Reader& r, const YAML::Node& v, const std::string& 
     const std::string scale = r.text(v["scale"], key + ".scale");
     if (scale != "linear" && scale != "log") r.fail(key + ".scale", "= '" + scale + "': accepted linear, log");
     range.log = scale == "log";
-    if (range.log && range.integer) r.fail(key + ".scale", "= log: a delay takes whole samples, scale linear");
+    if (range.log && range.integer) r.fail(key + ".scale", std::string("= log: ") + paramName(id) + " takes whole samples, scale linear");
     if (range.log && !(range.from > 0)) r.fail(key + ".scale", "= log needs 'from' > 0");
   }
   return range;
@@ -333,20 +335,6 @@ void requireAll(const Reader& r, const SweepSpec& spec) {
   }
 }
 
-// The largest delay of any combination [samples].
-long maxDelay(const SweepSpec& spec) {
-  double d = spec.varies(kParamDelay) ? 0.0 : spec.fixed[kParamDelay];
-  for (const Axis& a : spec.axes) {
-    if (a.param == kParamDelay) d = *std::max_element(a.values.begin(), a.values.end());
-  }
-  const size_t cols = spec.point_params.size();
-  for (size_t j = 0; j < cols; ++j) {
-    if (spec.point_params[j] != kParamDelay) continue;
-    for (size_t i = j; i < spec.points.size(); i += cols) d = std::max(d, spec.points[i]);
-  }
-  return static_cast<long>(d);
-}
-
 // sweep.criteria: the thresholds of checks 1-4 and the metrics' dt.
 void readCriteria(const Reader& r, const YAML::Node& c, aurora_control::FeasibilityCriteria<double>& cr) {
   r.onlyKeys(c, "sweep.criteria", {"max_error", "max_iae", "max_itae", "error_growth", "metric_dt"});
@@ -402,7 +390,7 @@ void readCombinations(const Reader& r, const YAML::Node& s, const std::string& s
     orderAxes(r, s, varied.axes, spec);
   }
   requireAll(r, spec);
-  spec.max_delay = maxDelay(spec);
+  spec.max_delay = static_cast<long>(spec.maxValue(kParamDelay));
   // A design's delay range counts whole, whichever samples it happened to draw.
   for (size_t j = 0; j < varied.sampled.size(); ++j) {
     if (varied.sampled[j] == kParamDelay) spec.max_delay = std::max(spec.max_delay, static_cast<long>(varied.ranges[j].to));
@@ -410,15 +398,50 @@ void readCombinations(const Reader& r, const YAML::Node& s, const std::string& s
 }
 
 // sweep.link: a link file (docs/links.md) for every combination; each
-// combination's delay replaces the file's uplink delay.
+// combination's delay replaces the file's uplink delay, the link values the
+// sweep file gives or varies replace the file's (read before the parameters).
 void readSweepLink(const Reader& r, const YAML::Node& node, const std::string& sweep_dir,
                    const std::string& config_dir, SweepSpec& spec) {
   spec.link_file = resolve(r.text(node, "sweep.link"), sweep_dir, config_dir);
-  spec.link = aurora_control::readLinkFile(spec.link_file);
+  spec.setLink(aurora_control::readLinkFile(spec.link_file));
+}
+
+// sweep.repeats: runs of each combination, each with its own link seed.
+void readRepeats(const Reader& r, const YAML::Node& node, SweepSpec& spec) {
+  spec.repeats = r.integer(node, "sweep.repeats");
+  if (spec.repeats < 1 || spec.repeats > kMaxRepeats) {
+    r.fail("sweep.repeats", "= " + std::to_string(spec.repeats) + " is refused: accepted [1, " +
+                                std::to_string(kMaxRepeats) + "] runs of each combination");
+  }
+}
+
+// The link of every combination, once the parameters are read: `link` takes
+// the fixed values; the burst's bound on the loss holds for the largest
+// loss with the smallest burst above 1 of each direction; the history holds
+// the largest delay plus jitter; repeats draw something.
+void checkSweepLink(const Reader& r, SweepSpec& spec) {
+  for (int i = 0; i < kLinkParamCount; ++i) aurora_control::setLinkValue(spec.link, i, spec.fixed[kParamFirstLinkValue + i]);
+  for (const int loss_value : {aurora_control::kLinkUplinkLoss, aurora_control::kLinkDownlinkLoss}) {
+    const int loss = kParamFirstLinkValue + loss_value, burst = loss + 1;
+    aurora_control::LinkDirection worst;
+    worst.loss = spec.maxValue(loss);
+    worst.burst = 1e300;
+    spec.forEachValue(burst, [&](double b) { worst.burst = b > 1.0 && b < worst.burst ? b : worst.burst; });
+    const std::string refusal = aurora_control::burstLossRefusal(worst);
+    if (worst.burst < 1e300 && !refusal.empty()) {
+      r.fail(std::string("sweep.parameters.") + paramName(loss), "= " + Reader::fmt(worst.loss) + " (its largest) " +
+                 refusal + " (" + paramName(burst) + "'s smallest above 1)");
+    }
+  }
   if (spec.historyNeeded() > aurora_control::kMaxDelaySamples) {
-    r.fail("sweep.link", "= '" + spec.link_file + "' needs " + std::to_string(spec.historyNeeded()) +
-                             " samples of history with the sweep's largest delay " + std::to_string(spec.max_delay) +
-                             ": accepted up to " + std::to_string(aurora_control::kMaxDelaySamples));
+    r.fail(spec.link_file.empty() ? "sweep.parameters" : "sweep.link",
+           "needs " + std::to_string(spec.historyNeeded()) + " samples of history (the largest delay " +
+               std::to_string(spec.max_delay) + " plus the link's jitter): accepted up to " +
+               std::to_string(aurora_control::kMaxDelaySamples));
+  }
+  if (spec.repeats > 1 && spec.linkIdeal()) {
+    r.fail("sweep.repeats", "= " + std::to_string(spec.repeats) + " draws nothing: every run over an ideal link "
+           "is the same; give a link with jitter or loss (sweep.link or the link parameters), or remove repeats");
   }
 }
 
@@ -437,7 +460,7 @@ SweepSpec parseSweepFile(const std::string& path, const std::string& config_dir)
   if (!s) r.fail("sweep", "is missing: the file's top level must be 'sweep:'");
   r.onlyKeys(s, "sweep", {"name", "controller", "vehicle", "task", "parameters", "order", "points",
                           "criteria", "early_stop", "clamp_commands", "precision", "design", "samples",
-                          "seed", "link"});
+                          "seed", "link", "repeats"});
   SweepSpec spec;
   spec.file = path;
   const std::string sweep_dir = dirOf(path);
@@ -460,8 +483,10 @@ SweepSpec parseSweepFile(const std::string& path, const std::string& config_dir)
   if (s["criteria"]) readCriteria(r, s["criteria"], spec.criteria);
   readRunOptions(r, s, spec);
 
-  readCombinations(r, s, sweep_dir, config_dir, spec);
   if (s["link"]) readSweepLink(r, s["link"], sweep_dir, config_dir, spec);
+  if (s["repeats"]) readRepeats(r, s["repeats"], spec);
+  readCombinations(r, s, sweep_dir, config_dir, spec);
+  checkSweepLink(r, spec);
   return spec;
 }
 

@@ -176,8 +176,10 @@ int finish(const Options& opt, const SweepSpec& spec, const ChunkStore& store, R
     const auto t0 = std::chrono::steady_clock::now();
     std::vector<double> writer_s;
     DelayMonotony monotony(spec);
+    FeasibleShare share(spec);
     const ChunkConsumer consume = [&](long first, const std::vector<SimResult>& results) {
       monotony.add(first, results);
+      share.add(first, results);
       if (opt.rviz) all.insert(all.end(), results.begin(), results.end());
     };
     std::map<std::string, long> chunks_by;
@@ -191,6 +193,10 @@ int finish(const Options& opt, const SweepSpec& spec, const ChunkStore& store, R
       // Gain pairs whose feasibility comes back at a longer delay after failing.
       facts["delay_monotony"] = {{"gain_pairs", monotony.pairs()},
                                  {"not_monotone", monotony.nonMonotonePairs()}};
+    }
+    if (share.applies()) {
+      facts["feasible_share"] = share.summary();
+      share.writeCsv(opt.out + "/feasible_share.csv", spec);
     }
     writeSummaryJson(opt.out + "/summary.json", spec, info, counts, facts);
   } catch (const std::exception& e) {

@@ -45,10 +45,7 @@ StartCheck makeWritableDir(const std::string& dir, std::vector<std::string>& cre
 // kernel loaded), the sweep's delays, the block size against the kernel's
 // registers, the local memory of the resident threads.
 StartCheck checkCuda(const Options& opt, const SweepSpec& spec, RunInfo& info) {
-  const std::string delay = spec.link.ideal()
-                                ? cudaDelayProblem(spec)
-                                : "the cuda backend runs ideal links only so far (the sweep names link '" +
-                                      spec.link_file + "'): use --backend cpu or scalar";
+  const std::string delay = cudaDelayProblem(spec);
   CudaDevice dev = probeCudaDevice();
   if (opt.backend == "auto") {
     const std::string why = !dev.usable ? dev.error : !delay.empty() ? delay
@@ -85,7 +82,6 @@ StartCheck chooseBackend(const Options& opt, const SweepSpec& spec, RunInfo& inf
     if (info.backend == "cpu") {  // an AURORA_SWEEP_SIMD this CPU cannot run is refused here
       info.device = cpuBatchArch(spec.precision);
       info.lanes = cpuBatchLanes(spec.precision);
-      if (!spec.link.ideal()) info.device = kLinkSweepOnCpu, info.lanes = 1;
     }
   } catch (const std::exception& e) {
     return {2, e.what()};

@@ -68,6 +68,26 @@ inline bool relClose(double a, double b, double rel) {
   return a == b || std::fabs(a - b) <= rel * std::max(std::fabs(a), std::fabs(b));
 }
 
+// One SIMD build against the scalar loop on the same spec: flags and step
+// counts equal, metrics to `rel` (xsimd's sin and cos differ from libm's in
+// the last bits), over at least `min_compared` runs that did not diverge.
+inline void expectAgreement(const std::string& key, const SweepSpec& spec, double rel, int min_compared = 20) {
+  const std::vector<SimResult> scalar = runOn("scalar", spec);
+  const std::vector<SimResult> simd = runOn(key, spec);
+  ASSERT_EQ(simd.size(), scalar.size());
+  int compared = 0;
+  for (long i = 0; i < spec.size(); ++i) {
+    EXPECT_EQ(scalar[i].ok, simd[i].ok) << key << " combination " << i;
+    EXPECT_EQ(scalar[i].steps, simd[i].steps) << key << " combination " << i;
+    if (!(scalar[i].ok & 1)) continue;  // diverged: the metrics are meaningless
+    ++compared;
+    EXPECT_PRED3(relClose, scalar[i].iae, simd[i].iae, rel) << key << " " << i;
+    EXPECT_PRED3(relClose, scalar[i].itae, simd[i].itae, rel) << key << " " << i;
+    EXPECT_PRED3(relClose, scalar[i].iasc, simd[i].iasc, rel) << key << " " << i;
+  }
+  EXPECT_GE(compared, min_compared) << key;
+}
+
 // config/sweeps/NAME.yaml with `samples_line` replaced by `samples` (relative
 // names resolve in config/).
 inline SweepSpec shippedStudy(const std::string& name, const std::string& samples_line, long samples,

@@ -125,7 +125,7 @@ TEST(Design, MistakesAreNamed) {
                 .find("'sweep.order' is for grids"), std::string::npos);
   EXPECT_NE(refusal("sweep:\n  design: sobol\n  samples: 8\n"
                     "  parameters: {kp: 0.5, kd: 0.5, delay: {from: 1, to: 9, scale: log}}\n")
-                .find("a delay takes whole samples"), std::string::npos);
+                .find("= log: delay takes whole samples"), std::string::npos);
   EXPECT_NE(refusal("sweep:\n  samples: 8\n  parameters: {kp: 0.5, kd: 0.5, delay: 0}\n")
                 .find("'sweep.samples' is for sampling designs"), std::string::npos);
   EXPECT_NE(refusal("sweep:\n  design: sobol\n  samples: 8\n"

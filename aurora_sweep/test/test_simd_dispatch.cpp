@@ -26,23 +26,7 @@ const std::string kData = std::string(AURORA_SWEEP_TEST_DIR) + "/data";
 using test::relClose;
 using test::runOn;
 
-// Compares one build with the scalar loop on the same spec.
-void expectAgreement(const std::string& key, const SweepSpec& spec, double rel) {
-  const std::vector<SimResult> scalar = runOn("scalar", spec);
-  const std::vector<SimResult> simd = runOn(key, spec);
-  ASSERT_EQ(simd.size(), scalar.size());
-  int compared = 0;
-  for (long i = 0; i < spec.size(); ++i) {
-    EXPECT_EQ(scalar[i].ok, simd[i].ok) << key << " combination " << i;
-    EXPECT_EQ(scalar[i].steps, simd[i].steps) << key << " combination " << i;
-    if (!(scalar[i].ok & 1)) continue;  // diverged: the metrics are meaningless
-    ++compared;
-    EXPECT_PRED3(relClose, scalar[i].iae, simd[i].iae, rel) << key << " " << i;
-    EXPECT_PRED3(relClose, scalar[i].itae, simd[i].itae, rel) << key << " " << i;
-    EXPECT_PRED3(relClose, scalar[i].iasc, simd[i].iasc, rel) << key << " " << i;
-  }
-  EXPECT_GT(compared, 20) << key;
-}
+using test::expectAgreement;
 
 }  // namespace
 

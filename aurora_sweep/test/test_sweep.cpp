@@ -260,6 +260,55 @@ TEST(SweepProgram, WritesResultsSummaryAndPlots) {
   EXPECT_NE(ss.str().find("\"gain_pairs\": 16"), std::string::npos) << ss.str();
 }
 
+// With repeats: one results row per run (its repeat), feasible_share.csv
+// one row per combination whose feasible runs are those rows' count, the
+// summary's tally of them; the figure drawn.
+TEST(SweepProgram, RepeatsReportTheFeasibleShare) {
+  const std::string file = writeTemp("repeats.yaml",
+      "sweep:\n  name: repeats\n  repeats: 5\n  early_stop: false\n  parameters:\n    kp: 0.5\n    kd: 0.85\n"
+      "    delay: {values: [6, 9, 12]}\n    uplink_jitter: {values: [0, 6]}\n    uplink_loss: 0.3\n");
+  const std::string out = ::testing::TempDir() + "/sweep_repeats";
+  std::string log;
+  ASSERT_EQ(runSweep("--config " + file + " --out " + out + " --backend cpu --overwrite", log), 0) << log;
+  std::ifstream results(out + "/results.csv");
+  std::string line;
+  std::getline(results, line);
+  EXPECT_EQ(line.rfind("index,kp,kd,delay,uplink_jitter,uplink_loss,uplink_burst,downlink_delay,downlink_jitter,"
+                       "downlink_loss,downlink_burst,repeat,ok1", 0), 0u) << line;
+  std::vector<int> runs(6, 0);
+  long rows = 0;
+  while (std::getline(results, line)) {
+    std::vector<std::string> f;
+    std::stringstream ss(line);
+    for (std::string x; std::getline(ss, x, ',');) f.push_back(x);
+    EXPECT_EQ(std::stol(f[11]), rows % 5) << line;  // the repeat varies fastest
+    runs[static_cast<size_t>(rows / 5)] += std::stoi(f[16]);  // feasible
+    ++rows;
+  }
+  EXPECT_EQ(rows, 30);
+  std::ifstream shares(out + "/feasible_share.csv");
+  std::getline(shares, line);
+  EXPECT_EQ(line, "combination,kp,kd,delay,uplink_jitter,uplink_loss,uplink_burst,downlink_delay,downlink_jitter,"
+                  "downlink_loss,downlink_burst,repeats,feasible_runs,feasible_share");
+  std::vector<long> by_runs(6, 0);
+  int mixed = 0;
+  for (size_t k = 0; std::getline(shares, line); ++k) {
+    const size_t last = line.rfind(','), before = line.rfind(',', last - 1);
+    EXPECT_EQ(std::stoi(line.substr(before + 1, last - before - 1)), runs[k]) << line;
+    ++by_runs[static_cast<size_t>(runs[k])];
+    mixed += runs[k] > 0 && runs[k] < 5;
+  }
+  const nlohmann::json summary = nlohmann::json::parse(test::readText(out + "/summary.json"));
+  EXPECT_EQ(summary["feasible_share"]["combinations_by_feasible_runs"].get<std::vector<long>>(), by_runs);
+  EXPECT_EQ(summary["feasible_share"]["combinations"], 6);
+  EXPECT_EQ(summary["repeats"], 5);
+  EXPECT_EQ(summary["combinations"], 30);
+  EXPECT_GT(by_runs[0], 0);  // some combinations never fly ...
+  EXPECT_GT(by_runs[5] + mixed, 0);  // ... some do
+  struct stat st;
+  EXPECT_EQ(stat((out + "/feasible_share.png").c_str(), &st), 0) << log;
+}
+
 TEST(DelayMonotony, CountsPairsThatComeBackAtALongerDelay) {
   const SweepSpec spec = load(kData + "/small_grid.yaml");  // 4 kp x 4 kd x 5 delays, kp fastest
   DelayMonotony m(spec);
@@ -392,7 +441,7 @@ TEST(SweepProgram, CudaLimitsAreCheckedBeforeTheRun) {
   const std::string out = ::testing::TempDir() + "/sweep_cuda_limits_out";
   std::string log;
   EXPECT_EQ(runSweep("--config " + long_delay + " --out " + out + " --backend cuda", log), 2) << log;
-  EXPECT_TRUE(log.find("the cuda backend holds delays up to 511 samples") != std::string::npos ||
+  EXPECT_TRUE(log.find("the cuda backend holds delays (with a link's jitter) up to 511 samples") != std::string::npos ||
               log.find("this build has no CUDA backend") != std::string::npos) << log;
   struct stat st;
   EXPECT_NE(stat(out.c_str(), &st), 0) << "output folder created for a refused sweep: " << log;
@@ -400,13 +449,27 @@ TEST(SweepProgram, CudaLimitsAreCheckedBeforeTheRun) {
   EXPECT_NE(log.find("--block-size 2048 is invalid: CUDA blocks hold at most 1024 threads"), std::string::npos) << log;
 }
 
-// The cuda backend runs ideal links only so far: a sweep over a link is
-// refused before anything is written (auto takes the cpu backend).
-TEST(SweepProgram, ALinkSweepIsRefusedOnTheCudaBackend) {
-  const std::string lossy = writeTemp("cuda_link.yaml", test::readText(kData + "/small_grid.yaml") + "  link: links/wifi_lab.yaml\n");
+// A sweep over a link runs on the cuda backend (a kernel of its own) when a
+// device works; the history it needs counts the link's jitter, checked
+// before anything is written and without a device.
+TEST(SweepProgram, ALinkSweepOnTheCudaBackendCountsTheJitter) {
+  const std::string base = test::readText(kData + "/small_grid.yaml");
+  const std::string lossy = writeTemp("cuda_link.yaml", base + "  link: links/wifi_lab.yaml\n");
   std::string log;
-  EXPECT_EQ(runSweep("--config " + lossy + " --out " + ::testing::TempDir() + "/sweep_cuda_link --backend cuda", log), 2);
-  EXPECT_NE(log.find("the cuda backend runs ideal links only so far"), std::string::npos) << log;
+  const int rc = runSweep("--config " + lossy + " --out " + ::testing::TempDir() + "/sweep_cuda_link --backend cuda", log);
+  EXPECT_TRUE(rc == 0 || (rc == 3 && log.find("no usable CUDA device") != std::string::npos) ||
+              (rc == 3 && log.find("this build has no CUDA backend") != std::string::npos))
+      << rc << " " << log;
+  EXPECT_EQ(log.find("ideal links only"), std::string::npos) << log;
+  std::string wide = base;
+  const std::string delays = "delay: {values: [0, 3, 20, 40, 63]}";
+  wide.replace(wide.find(delays), delays.size(), "delay: {values: [0, 400]}\n    uplink_jitter: 200");
+  const std::string out = ::testing::TempDir() + "/sweep_cuda_wide";
+  EXPECT_EQ(runSweep("--config " + writeTemp("cuda_wide.yaml", wide) + " --out " + out + " --backend cuda", log), 2) << log;
+  const bool no_cuda_build = log.find("this build has no CUDA backend") != std::string::npos;
+  EXPECT_TRUE(no_cuda_build || (log.find("holds delays (with a link's jitter) up to 511 samples") != std::string::npos &&
+                                 log.find("this sweep reaches 600") != std::string::npos))
+      << log;
 }
 
 // A sweep says up front what it costs (combinations, time at a measured

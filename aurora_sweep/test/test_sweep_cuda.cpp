@@ -234,6 +234,30 @@ TEST(CudaBackend, TheLongHistoryTierOfBothLaws) {
   }
 }
 
+// Over links (a kernel of its own): a link file, link values varied, a
+// points design with repeats in chunks of an odd size, both laws and both
+// history tiers, against the cpu backend (its SIMD lanes, each with its own
+// link) and the scalar loop.
+TEST(CudaBackend, LinkSweepsMatchCpu) {
+  SKIP_WITHOUT_DEVICE();
+  const std::string grid = test::readText(std::string(AURORA_SWEEP_TEST_DIR) + "/data/small_grid.yaml");
+  const SweepSpec congested = loadSweepFile(test::writeTemp("cuda_congested.yaml", grid + "  link: links/wifi_congested.yaml\n"),
+                                            AURORA_CONFIG_DIR);
+  std::vector<SimResult> gpu;
+  runCuda(congested, 0, gpu);
+  EXPECT_EQ(fieldDifferences(gpu, test::runOn("scalar", congested)), 0);
+  for (const char* law : {"pd_saturated", "underactuated"}) {
+    const std::string gains = std::string(law) == "pd_saturated" ? "    kp: 0.5\n    kd: 0.85\n" : "";
+    for (const char* delays : {"[0, 6, 12]", "[0, 100, 400]"}) {
+      const SweepSpec spec = loadSweepFile(test::writeTemp(std::string("cuda_link_") + law + ".yaml",
+          std::string("sweep:\n  controller: ") + law + "\n  repeats: 3\n  early_stop: false\n  parameters:\n" + gains +
+          "    delay: {values: " + delays + "}\n    uplink_jitter: {values: [0, 5]}\n    uplink_loss: {values: [0, 0.3]}\n"
+          "    downlink_delay: 2\n    downlink_loss: 0.1\n    downlink_burst: 4\n"), AURORA_CONFIG_DIR);
+      EXPECT_EQ(fieldDifferences(cudaInChunks(spec, 7), test::runOn("cpu", spec, 4)), 0) << law << " " << delays;
+    }
+  }
+}
+
 // Launch limits are known before the run: a block too large for the
 // kernel's registers is refused with the largest accepted.
 TEST(CudaBackend, LaunchProblemsAreKnownBeforeTheRun) {

@@ -1,7 +1,9 @@
-// A sweep over a link (sweep file 'link:', docs/links.md): an ideal link
-// file changes nothing; over a lossy link every CPU backend gives the same
-// bits, the draws follow the combination (not the chunk), and the link is
-// part of the sweep's definition.
+// A sweep over a link (sweep file 'link:', the link parameters, repeats;
+// docs/links.md): an ideal link file changes nothing; over a lossy link the
+// threads and the kernel's per-thread entry give the scalar loop's bits and
+// the SIMD lanes agree with it; a combination's run is the offline runner's
+// over its link; the draws follow the combination (not the chunk); the link
+// is part of the sweep's definition; mistakes are refused naming the key.
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -9,6 +11,8 @@
 #include <vector>
 
 #include "aurora_sweep/chunk_store.h"
+#include "aurora_control/link_yaml.h"
+#include "aurora_sweep/kernel_entry.h"
 #include "sweep_test_support.h"
 
 using namespace aurora_sweep;
@@ -38,16 +42,85 @@ TEST(SweepLink, AnIdealLinkFileChangesNothing) {
   EXPECT_EQ(differing(runOn("scalar", plain), runOn("scalar", ideal)), 0);
 }
 
-TEST(SweepLink, EveryCpuBackendGivesTheSameBitsOverALossyLink) {
+TEST(SweepLink, EveryCpuBackendAgreesOverALossyLink) {
   const SweepSpec lossy = smallGrid("wifi_congested");
-  ASSERT_FALSE(lossy.link.ideal());
+  ASSERT_FALSE(lossy.linkIdeal());
   const std::vector<SimResult> scalar = runOn("scalar", lossy);
-  EXPECT_EQ(differing(scalar, runOn("cpu", lossy)), 0);
-  EXPECT_EQ(differing(scalar, runOn(widestIsa(), lossy)), 0);
+  // One simulation per thread: the scalar loop's bits.
+  EXPECT_EQ(differing(scalar, runOn("none", lossy)), 0);
+  // SIMD lanes, each with its own link: the same draws, so the same flags
+  // and steps; the metrics to xsimd's sin and cos.
+  for (const CpuIsa& isa : cpuBatchIsas()) {
+    if (isa.supported && isa.key != "none") test::expectAgreement(isa.key, lossy, 1e-9, 10);
+  }
+  SweepSpec single = lossy;
+  single.precision = Precision::kFloat;
+  for (const CpuIsa& isa : cpuBatchIsas()) {
+    if (isa.supported && isa.key != "none") test::expectAgreement(isa.key, single, 2e-3, 10);
+  }
   // Not vacuous: the link changed most runs.
   EXPECT_GT(differing(scalar, runOn("scalar", smallGrid(""))), 40);
   EXPECT_NE(definitionHash(lossy), definitionHash(smallGrid("")));
   EXPECT_NE(definitionHash(lossy), definitionHash(smallGrid("wifi_lab")));
+}
+
+// Each CUDA thread's body over a link (kernel_entry.h), on the host.
+TEST(SweepLink, TheKernelsPerThreadEntryOverALinkIsTheScalarLoop) {
+  SweepSpec lossy = smallGrid("wifi_lab");
+  lossy.range_begin = 5;
+  std::vector<SimResult> scalar;
+  Progress progress{0};
+  runScalar(lossy, scalar, progress);
+  ASSERT_LT(lossy.historyNeeded(), aurora_control::kMediumHistory);
+  const SimSetup<double> setup = makeSetup<double>(lossy);
+  ASSERT_FALSE(setup.ideal_link);
+  const GridView grid = lossy.view();
+  const long n = lossy.rangeSize();
+  std::vector<SimResult> out(static_cast<size_t>(n));
+  for (unsigned b = 0; b < blocksFor(n, 32); ++b) {
+    for (unsigned t = 0; t < 32; ++t) {
+      sweepThread<aurora_control::LawType::kPdSaturated, double, aurora_control::kMediumHistory, true>(
+          setup, grid, lossy.rangeBegin(), n, out.data(), b, 32, t);
+    }
+  }
+  EXPECT_EQ(differing(scalar, out), 0);
+}
+
+// A combination's run is the offline runner's (flight's) over the link the
+// combination names, with its draws keyed by the combination; repeat r
+// draws with the link's seed + r.
+TEST(SweepLink, ACombinationIsTheRunnersRunOverItsLink) {
+  const SweepSpec spec = loadSweepFile(writeTemp("link_values.yaml",
+      "sweep:\n  repeats: 3\n  early_stop: false\n  link: links/wifi_lab.yaml\n  parameters:\n"
+      "    kp: 0.5\n    kd: 0.85\n    delay: {values: [0, 9]}\n    uplink_jitter: {values: [0, 4]}\n"
+      "    uplink_loss: {values: [0, 0.3]}\n    downlink_burst: 3\n"), configDir());
+  ASSERT_EQ(spec.combinations(), 8);
+  ASSERT_EQ(spec.size(), 24);
+  const std::vector<SimResult> sweep = runOn("scalar", spec);
+  const aurora_control::LinkParams file = aurora_control::readLinkFile(configDir() + "/links/wifi_lab.yaml");
+  const GridView grid = spec.view();
+  const SimSetup<double> setup = makeSetup<double>(spec);
+  long changed_by_seed = 0;
+  for (long i = 0; i < spec.size(); ++i) {
+    const Combination c = grid.decode(i);
+    EXPECT_EQ(c.key, i / 3);
+    EXPECT_EQ(c.repeat(), i % 3);
+    aurora_control::RunnerConfig<double> cfg = setup.config;
+    cfg.link = file;  // what a user would write in a link file for this combination
+    cfg.link.uplink.jitter_max = static_cast<long>(c.v[kParamFirstLinkValue + aurora_control::kLinkUplinkJitter]);
+    if (cfg.link.uplink.jitter_max > 0 && cfg.link.uplink.jitter == aurora_control::JitterKind::kNone) {
+      cfg.link.uplink.jitter = aurora_control::JitterKind::kUniform;
+    }
+    cfg.link.uplink.loss = c.v[kParamFirstLinkValue + aurora_control::kLinkUplinkLoss];
+    cfg.link.downlink.burst = 3;
+    cfg.link.seed = file.seed + static_cast<uint32_t>(i % 3);
+    aurora_control::NoObserver none;
+    const SimResult r = compactResult(aurora_control::runOverModelLink<aurora_control::LawType::kPdSaturated, double, 64>(
+        studyRun(setup, c), cfg, setup.iterations, none, static_cast<uint64_t>(i / 3)));
+    EXPECT_EQ(differing({r}, {sweep[static_cast<size_t>(i)]}), 0) << "run " << i;
+    if (i % 3 > 0) changed_by_seed += differing({sweep[static_cast<size_t>(i)]}, {sweep[static_cast<size_t>(i - 1)]});
+  }
+  EXPECT_GT(changed_by_seed, 8);  // the repeats drew differently
 }
 
 TEST(SweepLink, DrawsFollowTheCombinationNotTheChunk) {
@@ -62,14 +135,29 @@ TEST(SweepLink, DrawsFollowTheCombinationNotTheChunk) {
   EXPECT_EQ(differing(std::vector<SimResult>(all.begin() + 37, all.begin() + 61), some), 0);
 }
 
-TEST(SweepLink, ALinkBeyondTheHistoryOrMissingIsRefused) {
+TEST(SweepLink, MistakesAreRefusedNamingTheKey) {
   const std::string grid = "sweep:\n  parameters:\n    kp: 0.5\n    kd: 0.85\n    delay: {values: [0, 1790]}\n";
   const std::string wide = writeTemp("wide_link.yaml", "link:\n  uplink: {jitter: {kind: uniform, max: 300}}\n");
-  EXPECT_NE(refusal(grid + "  link: " + wide + "\n").find("needs 2090 samples of history with the sweep's largest "
-                                                          "delay 1790: accepted up to 2047"),
+  EXPECT_NE(refusal(grid + "  link: " + wide + "\n").find("'sweep.link' needs 2090 samples of history (the largest "
+                                                          "delay 1790 plus the link's jitter): accepted up to 2047"),
             std::string::npos)
       << refusal(grid + "  link: " + wide + "\n");
   EXPECT_NE(refusal(grid + "  link: links/nowhere.yaml\n").find("link file"), std::string::npos);
+  const std::string pd = "sweep:\n  parameters:\n    kp: 0.5\n    kd: 0.85\n    delay: 10\n";
+  const auto says = [&](const std::string& extra, const std::string& text) {
+    const std::string why = refusal(pd + extra);
+    EXPECT_NE(why.find(text), std::string::npos) << extra << " -> " << why;
+  };
+  says("    uplink_jitter: 2040\n", "'sweep.parameters' needs 2050 samples of history");
+  says("    uplink_jitter: 2.5\n", "'sweep.parameters.uplink_jitter' = 2.5 is refused: uplink_jitter takes whole samples");
+  says("    downlink_delay: {values: [-1]}\n", "'sweep.parameters.downlink_delay' = -1 is outside the accepted range [0, 2047]");
+  says("    uplink_loss: 1\n", "'sweep.parameters.uplink_loss' = 1 is outside the accepted range [0, 0.99]");
+  says("    downlink_burst: 0.5\n", "'sweep.parameters.downlink_burst' = 0.5 is outside the accepted range [1, 1000]");
+  says("    uplink_loss: 0.8\n    uplink_burst: {values: [1, 2]}\n",
+       "'sweep.parameters.uplink_loss' = 0.8 (its largest) is refused with burst 2: accepted up to burst / (burst + 1)");
+  says("    repeat: 2\n", "'sweep.parameters.repeat' is not a parameter of the pd_saturated controller");
+  says("  repeats: 4\n", "'sweep.repeats' = 4 draws nothing: every run over an ideal link is the same");
+  says("  repeats: 0\n  link: links/wifi_lab.yaml\n", "'sweep.repeats' = 0 is refused: accepted [1, 100000]");
 }
 
 TEST(SweepLink, TheShippedLinkStudyIsTheThesisGridOverACongestedLink) {
@@ -79,3 +167,24 @@ TEST(SweepLink, TheShippedLinkStudyIsTheThesisGridOverACongestedLink) {
   EXPECT_NE(s.link_file.find("links/wifi_congested.yaml"), std::string::npos);
   EXPECT_EQ(s.max_delay, 63);
 }
+
+// The link margin studies: delay x uplink jitter x uplink loss, 16 seeds
+// each; without delay every seed flies, at 20 samples none does.
+TEST(SweepLink, TheLinkMarginStudiesSpanTheMargin) {
+  for (const std::string name : {"link_margin", "link_margin_underactuated"}) {
+    SweepSpec s = loadSweepFile(configDir() + "/sweeps/" + name + ".yaml", configDir());
+    EXPECT_EQ(s.combinations(), 21 * 8 * 8) << name;
+    EXPECT_EQ(s.size(), 21 * 8 * 8 * 16) << name;
+    EXPECT_FALSE(s.linkIdeal()) << name;
+    for (const long combination : {0L, 20L}) {
+      s.range_begin = combination * 16, s.range_end = s.range_begin + 16;
+      std::vector<SimResult> out;
+      Progress progress{0};
+      runCpuBatch(s, 2, out, progress);
+      long flew = 0;
+      for (const SimResult& r : out) flew += feasible(r);
+      EXPECT_EQ(flew, combination == 0 ? 16 : 0) << name << " delay " << s.view().decode(s.range_begin).delay();
+    }
+  }
+}
+

@@ -65,13 +65,56 @@ inline bool operator==(const LinkParams& a, const LinkParams& b) {
 }
 inline bool operator!=(const LinkParams& a, const LinkParams& b) { return !(a == b); }
 
+// The link's values a sweep varies and a live setting changes, in the
+// parameter table's row order (kRowUplinkJitter on): a jitter is its max
+// [samples] (the link's kind; uniform when it has none), the downlink's
+// delay [samples], a loss, a burst. One rule for the sweep's combinations
+// (host and device) and the node's live changes.
+enum LinkValue : int {
+  kLinkUplinkJitter,
+  kLinkUplinkLoss,
+  kLinkUplinkBurst,
+  kLinkDownlinkDelay,
+  kLinkDownlinkJitter,
+  kLinkDownlinkLoss,
+  kLinkDownlinkBurst,
+  kLinkValueCount
+};
+
+AURORA_HD inline void setLinkValue(LinkParams& l, int which, double v) {
+  LinkDirection& d = which < kLinkDownlinkDelay ? l.uplink : l.downlink;
+  switch (which) {
+    case kLinkUplinkJitter:
+    case kLinkDownlinkJitter:
+      d.jitter_max = static_cast<long>(v);
+      if (d.jitter == JitterKind::kNone && d.jitter_max > 0) d.jitter = JitterKind::kUniform;
+      break;
+    case kLinkDownlinkDelay: d.delay = static_cast<long>(v); break;
+    case kLinkUplinkLoss:
+    case kLinkDownlinkLoss: d.loss = v; break;
+    default: d.burst = v; break;
+  }
+}
+
+AURORA_HD inline double linkValueOf(const LinkParams& l, int which) {
+  const LinkDirection& d = which < kLinkDownlinkDelay ? l.uplink : l.downlink;
+  switch (which) {
+    case kLinkUplinkJitter:
+    case kLinkDownlinkJitter: return double(d.jitter_max);
+    case kLinkDownlinkDelay: return double(d.delay);
+    case kLinkUplinkLoss:
+    case kLinkDownlinkLoss: return d.loss;
+    default: return d.burst;
+  }
+}
+
 // A jitter kind's name in link files and logs.
 inline const char* jitterKindName(JitterKind k) {
   return k == JitterKind::kUniform ? "uniform" : k == JitterKind::kGeometric ? "geometric" : "none";
 }
 
 // The draws of one packet: two uniforms in (0, 1), for its jitter and its
-// loss, keyed by (seed, combination, direction, step).
+// loss.
 struct PacketDraws {
   double jitter_u, loss_u;
 };
@@ -80,13 +123,31 @@ AURORA_HD inline double unitFromBits(uint32_t x) {
   return (double(x) + 0.5) * (1.0 / 4294967296.0);  // in (0, 1), never 0 or 1
 }
 
-AURORA_HD inline PacketDraws packetDraws(uint32_t seed, uint64_t combination, LinkDirectionId dir, uint64_t step) {
+// The draws of step `step` on both directions (docs/links.md, "The draws"):
+// one Philox4x32-10 block, key (seed, combination's low 32 bits), counter
+// (step's low and high 32 bits, combination's high 32 bits, 0); its words 0
+// and 1 are the uplink packet's jitter and loss draws, 2 and 3 the
+// downlink packet's. One block per step: a run draws half as many as with a
+// block per packet.
+struct StepDraws {
+  PacketDraws uplink, downlink;
+  AURORA_HD const PacketDraws& of(LinkDirectionId dir) const {
+    return dir == LinkDirectionId::kUplink ? uplink : downlink;
+  }
+};
+
+AURORA_HD inline StepDraws stepDraws(uint32_t seed, uint64_t combination, uint64_t step) {
   r123::Philox4x32 philox;
   const r123::Philox4x32::key_type key = {{seed, static_cast<uint32_t>(combination)}};
   const r123::Philox4x32::ctr_type ctr = {{static_cast<uint32_t>(step), static_cast<uint32_t>(step >> 32),
-                                           static_cast<uint32_t>(dir), static_cast<uint32_t>(combination >> 32)}};
+                                           static_cast<uint32_t>(combination >> 32), 0u}};
   const r123::Philox4x32::ctr_type r = philox(ctr, key);
-  return PacketDraws{unitFromBits(r.v[0]), unitFromBits(r.v[1])};
+  return StepDraws{PacketDraws{unitFromBits(r.v[0]), unitFromBits(r.v[1])},
+                   PacketDraws{unitFromBits(r.v[2]), unitFromBits(r.v[3])}};
+}
+
+AURORA_HD inline PacketDraws packetDraws(uint32_t seed, uint64_t combination, LinkDirectionId dir, uint64_t step) {
+  return stepDraws(seed, combination, step).of(dir);
 }
 
 // A packet's jitter [samples] from its uniform draw u (docs/links.md,
@@ -142,7 +203,14 @@ class LinkChannel {
       arrival_[k % Window] = k + d.delay;
       return;
     }
-    const PacketDraws u = packetDraws(seed, combination, dir, static_cast<uint64_t>(k));
+    send(d, packetDraws(seed, combination, dir, static_cast<uint64_t>(k)), k);
+  }
+  // The same with this packet's draws given (d not constant).
+  AURORA_HD void send(const LinkDirection& d, const PacketDraws& u, long k) {
+    if (d.constant()) {
+      arrival_[k % Window] = k + d.delay;
+      return;
+    }
     lost_ = packetLost(d, lost_, u.loss_u);
     losses_ += lost_ ? 1 : 0;
     arrival_[k % Window] = lost_ ? kNever : k + d.delay + jitterSamples(d, u.jitter_u);

@@ -45,33 +45,21 @@ inline std::string delayProblem(const LiveChange& c, long task_steps, double Ts)
   return delayShorterThanRun(d, task_steps) ? "" : c.name + " = " + delayRunText(d, task_steps, Ts);
 }
 
-// The link value a live setting names (a row from kRowUplinkJitter on).
-inline double* linkValue(LinkParams& l, const std::string& name) {
-  if (name == "uplink_loss") return &l.uplink.loss;
-  if (name == "uplink_burst") return &l.uplink.burst;
-  if (name == "downlink_loss") return &l.downlink.loss;
-  if (name == "downlink_burst") return &l.downlink.burst;
-  return nullptr;  // the whole-sample ones: linkSamples
+// The link value a live setting names (link.h's LinkValue, in the table's
+// row order from kRowUplinkJitter), or -1.
+inline int linkValueIndex(const std::string& name) {
+  const ParameterSpec* row = rowOfLiveSetting(name);
+  if (row == nullptr) return -1;
+  const long i = row - &kParameterTable[kRowUplinkJitter];
+  return i >= 0 && i < kLinkValueCount ? static_cast<int>(i) : -1;
 }
-inline long* linkSamples(LinkParams& l, const std::string& name) {
-  if (name == "uplink_jitter") return &l.uplink.jitter_max;
-  if (name == "downlink_delay") return &l.downlink.delay;
-  if (name == "downlink_jitter") return &l.downlink.jitter_max;
-  return nullptr;
-}
-inline bool isLinkSetting(const std::string& name) {
-  LinkParams l;
-  return linkValue(l, name) != nullptr || linkSamples(l, name) != nullptr;
-}
+inline bool isLinkSetting(const std::string& name) { return linkValueIndex(name) >= 0; }
+static_assert(kRowDownlinkBurst - kRowUplinkJitter + 1 == kLinkValueCount, "one table row per LinkValue, in order");
 
-// The link with change c applied (a jitter set on a link without a kind
-// is uniform).
+// The link with change c applied (setLinkValue: a jitter set on a link
+// without a kind is uniform).
 inline LinkParams withLinkChange(LinkParams l, const LiveChange& c) {
-  if (double* v = linkValue(l, c.name)) *v = c.value;
-  if (long* n = linkSamples(l, c.name)) *n = static_cast<long>(c.value);
-  for (LinkDirection* d : {&l.uplink, &l.downlink}) {
-    if (d->jitter == JitterKind::kNone && d->jitter_max > 0) d->jitter = JitterKind::kUniform;
-  }
+  setLinkValue(l, linkValueIndex(c.name), c.value);
   return l;
 }
 

@@ -44,7 +44,7 @@ class ModelLink {
   // The controller's state at step k: the newest-sent state that has
   // arrived, the current one while none has (the start rule).
   AURORA_HD long uplinkIndex(long k) {
-    up_.send(link_.uplink, link_.seed, combination_, LinkDirectionId::kUplink, k);
+    up_.send(link_.uplink, drawsAt(k).uplink, k);
     const long j = up_.receive(link_.uplink, k);
     return j < 0 ? k : j;
   }
@@ -54,7 +54,7 @@ class ModelLink {
   // cmd_timeout or longer ago (the drivers' watchdog).
   AURORA_HD void downlink(long k, const T sent[4], T received[4]) {
     for (int i = 0; i < 4; ++i) commands_[k % Window][i] = sent[i];
-    down_.send(link_.downlink, link_.seed, combination_, LinkDirectionId::kDownlink, k);
+    down_.send(link_.downlink, drawsAt(k).downlink, k);
     const long j = down_.receive(link_.downlink, k);
     hovering_ = j < 0 || down_.sinceArrival(k) >= timeout_steps_;
     for (int i = 0; i < 4; ++i) received[i] = hovering_ ? T(0) : commands_[j % Window][i];
@@ -74,10 +74,23 @@ class ModelLink {
   AURORA_HD const LinkChannel<Window>& downlinkChannel() const { return down_; }
 
  private:
+  // Step k's draws, one Philox block for both directions (computed once per
+  // step, and only when some direction draws).
+  AURORA_HD const StepDraws& drawsAt(long k) {
+    if (drawn_step_ != k && !(link_.uplink.constant() && link_.downlink.constant())) {
+      draws_ = stepDraws(link_.seed, combination_, static_cast<uint64_t>(k));
+      drawn_step_ = k;
+    }
+    return draws_;
+  }
+
+
   LinkParams link_;
   uint64_t combination_;
   long timeout_steps_;
   bool hovering_ = false;
+  long drawn_step_ = -1;
+  StepDraws draws_{};
   LinkChannel<Window> up_, down_;
   T commands_[Window][4];
 };

@@ -127,6 +127,45 @@ def pairs(np, plt, params, feasible, summary, out):
     plt.close(fig)
 
 
+# The link's values a sweep may vary (docs/links.md, "Links in a sweep").
+LINK_VALUES = ("uplink_jitter", "uplink_loss", "uplink_burst", "downlink_delay", "downlink_jitter",
+               "downlink_loss", "downlink_burst")
+
+
+def link_margins(np, plt, cols, feasible, summary, out):
+    """With repeats: the feasible share over (delay, v) for each link value v
+    the sweep varies, the other link values at their smallest (a slice, not an
+    average), with the 50 % and 90 % contours: the delay margin as a surface.
+    Each cell is the share of the combination's repeats that flew."""
+    varied = [v for v in LINK_VALUES if v in cols and len(np.unique(cols[v])) > 1]
+    if summary.get("repeats", 1) <= 1 or "delay" not in cols or not varied:
+        return
+    fig, axes = plt.subplots(1, len(varied), figsize=(5.4 * len(varied), 4.4), squeeze=False)
+    for ax, name in zip(axes[0], varied):
+        keep = np.ones(len(feasible), dtype=bool)
+        for other in varied:
+            if other != name:
+                keep &= cols[other] == cols[other].min()
+        d, v, f = cols["delay"][keep], cols[name][keep], feasible[keep]
+        ud, uv = np.unique(d), np.unique(v)
+        cells = np.searchsorted(uv, v) * len(ud) + np.searchsorted(ud, d)
+        grid = share(np, cells, f, len(ud) * len(uv)).reshape(len(uv), len(ud))
+        im = ax.pcolormesh(cell_edges(np, ud), cell_edges(np, uv), grid, cmap="viridis", vmin=0, vmax=1)
+        fig.colorbar(im, ax=ax, label="feasible share of %d link seeds" % summary["repeats"])
+        if len(ud) > 1 and len(uv) > 1:
+            cs = ax.contour(ud, uv, grid, levels=[0.5, 0.9], colors=["w", "r"], linewidths=1.2)
+            ax.clabel(cs, fmt={0.5: "50 %", 0.9: "90 %"}, fontsize=8)
+        ax.set_xlabel("delay (uplink base) [samples]")
+        ax.set_ylabel(name + (" [samples]" if "jitter" in name or name == "downlink_delay" else ""))
+        rest = ", ".join("%s = %g" % (o, cols[o].min()) for o in varied if o != name)
+        ax.set_title(rest if rest else name, fontsize=9)
+    fig.suptitle("%s: feasible share over the delay and the link (%s)" % (
+        summary.get("name", "sweep"), summary.get("controller", "")))
+    fig.tight_layout(rect=(0, 0, 1, 0.94))  # room for the title
+    fig.savefig(os.path.join(out, "feasible_share.png"), dpi=100)
+    plt.close(fig)
+
+
 def max_tolerable_delay(np, plt, kp, kd, delay, feasible, summary, out):
     """For each (Kp, Kd): the largest d such that every delay up to d is
     feasible (-1 when delay 0 already fails): the thesis's question."""
@@ -241,13 +280,15 @@ def main(argv):
     if len(ok["feasible"]) == 0:
         print("plot_sweep: no rows to plot in %s" % out, file=sys.stderr)
         return 0
-    params = {("delay [samples]" if n == "delay" else n): cols[n] for n in names}
+    # The repeat is which link seed, not a parameter: shares average over it.
+    params = {("delay [samples]" if n == "delay" else n): cols[n] for n in names if n != "repeat"}
     marginals(np, plt, params, ok["feasible"], summary, out)
     pairs(np, plt, params, ok["feasible"], summary, out)
+    link_margins(np, plt, cols, ok["feasible"], summary, out)
     # The (Kp, Kd, delay) figures of the thesis: the PD law's grids.
     if not {"kp", "kd", "delay"} <= set(names):
         return 0
-    if summary.get("design", "grid") == "grid" and total == len(cols["kp"]):
+    if summary.get("design", "grid") == "grid" and total == len(cols["kp"]) and summary.get("repeats", 1) == 1:
         volume(np, plt, cols, ok["feasible"], "feasible set", "feasible_volume.png", summary, total, out)
         max_tolerable_delay(np, plt, cols["kp"], cols["kd"], cols["delay"], ok["feasible"], summary, out)
     if summary.get("early_stop") is False:

@@ -29,6 +29,7 @@ SimSetup<T> makeSetup(const SweepSpec& spec) {
   s.config.link = spec.link;
   s.iterations = aurora_control::studyIterationCount(spec.duration(), spec.vehicle.Ts);
   s.varies_model = spec.variesModel();
+  s.ideal_link = spec.linkIdeal();
   return s;
 }
 
@@ -62,8 +63,8 @@ void runEachCombination(const SweepSpec& spec, std::vector<SimResult>& out, Prog
     loop(spec.rangeSize(), [&](long i) {
       constexpr aurora_control::LawType kLaw = decltype(law)::value;
       constexpr int kCapacity = decltype(capacity)::value;
-      out[i] = setup.config.link.ideal() ? simulateCombination<kLaw, T, kCapacity>(setup, grid, first + i)
-                                         : simulateOverLink<kLaw, T, kCapacity>(setup, grid, first + i);
+      out[i] = setup.ideal_link ? simulateCombination<kLaw, T, kCapacity, false>(setup, grid, first + i)
+                                : simulateCombination<kLaw, T, kCapacity, true>(setup, grid, first + i);
       progress.fetch_add(1, std::memory_order_relaxed);
     });
   });
@@ -73,8 +74,8 @@ void runEachCombination(const SweepSpec& spec, std::vector<SimResult>& out, Prog
 void runScalar(const SweepSpec& spec, std::vector<SimResult>& out, Progress& progress);
 
 // Many simulations at once: SIMD lanes (a finished lane takes the next
-// combination), on `threads` threads. A sweep over a link (not ideal) runs
-// one simulation per thread instead: the lanes run ideal links only so far.
+// combination), on `threads` threads; over a link each lane has its own
+// link model.
 void runCpuBatch(const SweepSpec& spec, int threads, std::vector<SimResult>& out,
                  Progress& progress);
 
@@ -84,7 +85,6 @@ void runCpuBatch(const SweepSpec& spec, int threads, std::vector<SimResult>& out
 // Throws std::runtime_error when AURORA_SWEEP_SIMD names a build that is
 // missing or that this CPU cannot run.
 int cpuBatchLanes(Precision precision);
-constexpr const char* kLinkSweepOnCpu = "threads without SIMD lanes (a link sweep: the lanes run ideal links only so far)";
 std::string cpuBatchArch(Precision precision);
 
 // The engine's builds, widest first ("none": threads without SIMD lanes),

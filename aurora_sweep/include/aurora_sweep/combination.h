@@ -10,22 +10,33 @@ namespace aurora_sweep {
 
 // Every parameter a sweep can vary (names and accepted ranges: parameters.h).
 // The PD law's gains, the delay, the underactuated law's 12 gains in the
-// order of underactuatedGainName (k1_x, k2_x, ..., k2_psi), and factors of
-// the simulated drone's model parameters (1 = the vehicle file's value).
+// order of underactuatedGainName (k1_x, k2_x, ..., k2_psi), factors of
+// the simulated drone's model parameters (1 = the vehicle file's value), the
+// link's values (aurora_control::LinkValue order: uplink_jitter, ...,
+// downlink_burst; the delay is the uplink's base delay) and the repeat: which
+// of a combination's `repeats` link seeds a run draws with (not a name a
+// sweep file gives; `repeats: N` makes it vary).
 enum ParamId : int {
   kParamKp = 0,
   kParamKd = 1,
   kParamDelay = 2,
   kParamFirstUnderactuatedGain = 3,  // 12 of them
   kParamFirstModelFactor = 15,       // m, Ixx, Iyy, Izz, Cf, Ct, Km, Jm
-  kParamCount = 23
+  kParamFirstLinkValue = 23,         // 7 of them
+  kParamRepeat = 30,
+  kParamCount = 31
 };
 constexpr int kUnderactuatedGainCount = 12;
 constexpr int kModelFactorCount = 8;
+constexpr int kLinkParamCount = 7;
+// The parameters of the sweeps before links (definition hashes keep them).
+constexpr int kParamCountBeforeLinks = kParamFirstLinkValue;
 
 struct Combination {
   double v[kParamCount];  // every parameter's value, ParamId order
+  long key;               // the combination the link's draws are keyed by (the index without its repeat)
   AURORA_HD long delay() const { return static_cast<long>(v[kParamDelay]); }
+  AURORA_HD long repeat() const { return static_cast<long>(v[kParamRepeat]); }
 };
 
 // A grid: axes, axis 0 varies fastest (the order of the sweep file's
@@ -33,7 +44,9 @@ struct Combination {
 // (from/to/count or an explicit list). Alternatively a list of points
 // (n_points > 0, from a CSV file or a sampling design): row i holds the
 // values of the `point_cols` parameters point_param[0..point_cols).
-// Parameters on no axis and in no column take `fixed`.
+// Parameters on no axis and in no column take `fixed`. With `repeats` N > 1
+// each combination runs N times, its repeats consecutive: index i is repeat
+// i % N of combination i / N.
 struct GridView {
   int n_axes;
   int param[kParamCount];          // ParamId of each axis
@@ -45,17 +58,22 @@ struct GridView {
   long points_first;               // the design row points[0] holds: a device copy holds one chunk's rows
   int point_cols;
   int point_param[kParamCount];
+  long repeats;                    // runs of each combination (1: one)
 
-  AURORA_HD long size() const {
+  AURORA_HD long combinations() const {
     if (n_points > 0) return n_points;
     long n = 1;
     for (int a = 0; a < n_axes; ++a) n *= count[a];
     return n;
   }
+  AURORA_HD long size() const { return combinations() * repeats; }
 
   AURORA_HD Combination decode(long index) const {
     Combination c;
     for (int i = 0; i < kParamCount; ++i) c.v[i] = fixed[i];
+    c.v[kParamRepeat] = double(index % repeats);
+    index /= repeats;
+    c.key = index;
     if (n_points > 0) {
       const long row = index - points_first;
       for (int j = 0; j < point_cols; ++j) c.v[point_param[j]] = points[row * point_cols + j];

@@ -1,6 +1,7 @@
 // The CUDA kernel's per-thread entry, host and device: thread `thread` of
 // block `block` (blocks of `block_dim` threads) runs combination first + i,
-// i = block * block_dim + thread, into out[i], and does nothing past n. The
+// i = block * block_dim + thread, into out[i] (over its link when
+// `Linked`), and does nothing past n. The
 // kernel passes blockIdx.x, blockDim.x and threadIdx.x; a host test calls
 // it for every (block, thread) of a launch, so the indexing (64-bit, any
 // offset, a last partial block) is tested without a GPU.
@@ -10,12 +11,12 @@
 
 namespace aurora_sweep {
 
-template <aurora_control::LawType Law, typename T, int Capacity>
+template <aurora_control::LawType Law, typename T, int Capacity, bool Linked = false>
 AURORA_HD inline void sweepThread(const SimSetup<T>& setup, const GridView& grid, long first, long n,
                                   SimResult* out, unsigned block, unsigned block_dim, unsigned thread) {
   const long i = static_cast<long>(block) * static_cast<long>(block_dim) + static_cast<long>(thread);
   if (i >= n) return;
-  out[i] = simulateCombination<Law, T, Capacity>(setup, grid, first + i);
+  out[i] = simulateCombination<Law, T, Capacity, Linked>(setup, grid, first + i);
 }
 
 // Blocks of `block_size` threads that cover n combinations.

@@ -12,13 +12,14 @@
 
 namespace aurora_sweep {
 
-enum class ParamGroup { kPdGain, kDelay, kUnderactuatedGain, kModelFactor };
+enum class ParamGroup { kPdGain, kDelay, kUnderactuatedGain, kModelFactor, kLink, kRepeat };
 
 struct ParamInfo {
   std::string name;
   ParamGroup group;
   double min, max;    // accepted values (inclusive)
   std::string limit;  // why: shown when a value or range is refused
+  bool whole = false; // whole samples only (the delays, the jitters)
 };
 
 const ParamInfo& paramInfo(int id);
@@ -37,7 +38,9 @@ const char* lawName(aurora_control::LawType law);
 
 // The value of a parameter a sweep file leaves out: the underactuated law's
 // gains default to the spec's (UnderactuatedGains::defaults), model factors
-// to 1. The PD gains and the delay have none (NaN: the file must give them).
+// to 1, the link's values to an ideal link's (a sweep's link file replaces
+// them), the repeat to 0. The PD gains and the delay have none (NaN: the
+// file must give them).
 double paramDefault(int id);
 
 }  // namespace aurora_sweep

@@ -61,7 +61,7 @@ bool hdf5Available();
 std::unique_ptr<ResultsWriter> openHdf5Writer(const std::string& path, const SweepSpec& spec,
                                               bool feasible_only);
 
-// For grids varying kp, kd and delay: per gain pair, is feasibility monotone
+// For grids varying kp, kd and delay (one run each): per gain pair, is feasibility monotone
 // in the delay (feasible up to some delay, infeasible beyond)? A pair that
 // fails, then holds again at a longer delay is counted (summary.json).
 class DelayMonotony {
@@ -77,6 +77,26 @@ class DelayMonotony {
   GridView grid_;
   std::vector<double> kps_, kds_, delays_;
   std::vector<unsigned char> feasible_;  // [pair][delay]
+};
+
+// With repeats (sweep.repeats N > 1): per combination, in how many of its N
+// runs (link seeds) it was feasible; its share is that over N. One draw of
+// a link is one sample, not an answer (docs/links.md, "Repeats").
+class FeasibleShare {
+ public:
+  explicit FeasibleShare(const SweepSpec& spec);
+  bool applies() const { return repeats_ > 1; }
+  void add(long first, const std::vector<SimResult>& results);
+  // summary.json's "feasible_share": repeats, combinations, how many were
+  // feasible in 0, 1, ..., N runs, the mean share.
+  nlohmann::json summary() const;
+  // feasible_share.csv: one row per combination (its parameters, the
+  // feasible runs, the share). Throws std::runtime_error naming the file.
+  void writeCsv(const std::string& path, const SweepSpec& spec) const;
+
+ private:
+  long repeats_;
+  std::vector<unsigned int> feasible_runs_;  // per combination
 };
 
 // Whole-vector convenience (tests, small sweeps).

@@ -4,6 +4,8 @@
 // run with the same studyRun().
 #pragma once
 
+#include <type_traits>
+
 #include "aurora_control/positioning_runner.h"
 #include "aurora_sweep/combination.h"
 
@@ -17,7 +19,10 @@ struct SimSetup {
   aurora_control::RunnerConfig<T> config;
   long iterations;    // loop iterations of the task (1801 for 60 s)
   bool varies_model;  // some model factor is not 1: each run scales its own drone
+  bool ideal_link;    // every run is today's loop (SweepSpec::linkIdeal)
 };
+
+static_assert(kLinkParamCount == aurora_control::kLinkValueCount, "one sweep parameter per link value");
 
 // The model parameters the factors multiply (factor i is parameter
 // kParamFirstModelFactor + i: m, Ixx, Iyy, Izz, Cf, Ct, Km, Jm); then the
@@ -85,23 +90,49 @@ AURORA_HD inline SimResult compactResult(const aurora_control::RunnerResult& r) 
   return s;
 }
 
-template <aurora_control::LawType Law, typename T, int Capacity>
-AURORA_HD inline SimResult simulateCombination(const SimSetup<T>& setup, const GridView& grid,
-                                               long index) {
-  const aurora_control::StudyRun<T> run = studyRun(setup, grid.decode(index));
-  aurora_control::NoObserver none;
-  return compactResult(aurora_control::runClosedLoop<Law, T, Capacity>(run, setup.config, setup.iterations, none));
+// A combination's link (docs/links.md, "Links in a sweep"): the sweep's
+// link with the combination's delay as the uplink's base delay, its link
+// values (link.h's setLinkValue, the node's live rule) and, for repeat r,
+// the seed link.seed + r.
+AURORA_HD inline aurora_control::LinkParams combinationLink(const aurora_control::LinkParams& base,
+                                                           const Combination& c) {
+  aurora_control::LinkParams l = base;
+  l.uplink.delay = c.delay();
+  for (int i = 0; i < kLinkParamCount; ++i) aurora_control::setLinkValue(l, i, c.v[kParamFirstLinkValue + i]);
+  l.seed = base.seed + static_cast<uint32_t>(c.repeat());
+  return l;
 }
 
-// The same over the sweep's link (host only: the CUDA kernel and the SIMD
-// engine run ideal links so far). The link's draws are keyed by the
-// combination's index, so every backend and range split draws the same.
+// A combination's run over an ideal link: today's loop, the delay rule.
 template <aurora_control::LawType Law, typename T, int Capacity>
-inline SimResult simulateOverLink(const SimSetup<T>& setup, const GridView& grid, long index) {
-  const aurora_control::StudyRun<T> run = studyRun(setup, grid.decode(index));
+AURORA_HD inline aurora_control::RunnerResult runCombination(const SimSetup<T>& setup, const Combination&,
+                                                             const aurora_control::StudyRun<T>& run,
+                                                             std::false_type /*linked*/) {
   aurora_control::NoObserver none;
-  return compactResult(aurora_control::runOverModelLink<Law, T, Capacity>(run, setup.config, setup.iterations,
-                                                                          none, static_cast<uint64_t>(index)));
+  return aurora_control::runClosedLoop<Law, T, Capacity>(run, setup.config, setup.iterations, none);
+}
+
+// Over its link's model, whose draws are keyed by the combination (not its
+// repeat, not the chunk), so every backend and range split draws the same.
+// The channels and the commands in flight live in this frame
+// (Capacity-sized, as the history): no allocation, host and device.
+template <aurora_control::LawType Law, typename T, int Capacity>
+AURORA_HD inline aurora_control::RunnerResult runCombination(const SimSetup<T>& setup, const Combination& c,
+                                                             const aurora_control::StudyRun<T>& run,
+                                                             std::true_type /*linked*/) {
+  aurora_control::NoObserver none;
+  aurora_control::ModelLink<Capacity, T> link(combinationLink(setup.config.link, c), run.delay,
+                                              static_cast<uint64_t>(c.key), double(run.plant.Ts));
+  return aurora_control::runClosedLoopOver<Law, T, Capacity>(run, setup.config, setup.iterations, none, link);
+}
+
+// Combination `index`'s run (over its link when `Linked`): the CUDA thread's
+// and the scalar loop's body.
+template <aurora_control::LawType Law, typename T, int Capacity, bool Linked = false>
+AURORA_HD inline SimResult simulateCombination(const SimSetup<T>& setup, const GridView& grid, long index) {
+  const Combination c = grid.decode(index);
+  return compactResult(
+      runCombination<Law, T, Capacity>(setup, c, studyRun(setup, c), std::integral_constant<bool, Linked>()));
 }
 
 }  // namespace aurora_sweep

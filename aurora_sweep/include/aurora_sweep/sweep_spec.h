@@ -16,6 +16,9 @@ namespace aurora_sweep {
 
 enum class Precision { kDouble, kFloat };
 
+// The most runs of one combination (sweep.repeats).
+constexpr long kMaxRepeats = 100000;
+
 inline const char* precisionName(Precision p) { return p == Precision::kDouble ? "double" : "float"; }
 
 struct Axis {
@@ -45,12 +48,59 @@ struct SweepSpec {
   bool clamp_commands = false;
   Precision precision = Precision::kDouble;
   long max_delay = 0;               // largest delay of any combination [samples]
-  // A link for every combination (sweep file 'link:', docs/links.md); each
-  // combination's delay is its uplink's base delay. Ideal by default.
+  // The link (sweep file 'link:', docs/links.md), ideal by default; set it
+  // with setLink. Each combination's delay is its uplink's base delay, its
+  // link values (uplink_jitter ... downlink_burst: fixed[] or varied)
+  // replace the link's, and its repeat r draws with seed link.seed + r
+  // (combinationLink, simulation.h). After loading, `link` holds the fixed
+  // values too.
   aurora_control::LinkParams link;
   std::string link_file;
-  // The history the runs need (the largest delay over the link).
-  long historyNeeded() const { return link.historyNeeded(max_delay); }
+  long repeats = 1;  // runs of each combination, each with its own link seed
+  // The history the runs need: the largest delay plus jitter on either
+  // direction over every combination.
+  long historyNeeded() const {
+    aurora_control::LinkParams worst = link;
+    for (int i : {aurora_control::kLinkUplinkJitter, aurora_control::kLinkDownlinkDelay,
+                  aurora_control::kLinkDownlinkJitter}) {
+      aurora_control::setLinkValue(worst, i, maxValue(kParamFirstLinkValue + i));
+    }
+    return worst.historyNeeded(max_delay);
+  }
+  // The link for every combination and the fixed link values, from a link
+  // file (the values a sweep file gives or varies replace them).
+  void setLink(const aurora_control::LinkParams& l) {
+    link = l;
+    for (int i = 0; i < kLinkParamCount; ++i) fixed[kParamFirstLinkValue + i] = aurora_control::linkValueOf(l, i);
+  }
+  // Every combination runs today's loop: an ideal link, no link value varies.
+  bool linkIdeal() const {
+    for (int i = 0; i < kLinkParamCount; ++i) {
+      if (varies(kParamFirstLinkValue + i)) return false;
+    }
+    return link.ideal();
+  }
+  // f(v) for every value parameter `id` takes: fixed, on an axis or in the
+  // points (once per row).
+  template <class F>
+  void forEachValue(int id, F&& f) const {
+    if (!varies(id)) f(fixed[id]);
+    for (const Axis& a : axes) {
+      for (double v : a.values) {
+        if (a.param == id) f(v);
+      }
+    }
+    const size_t cols = point_params.size();
+    for (size_t j = 0; j < cols; ++j) {
+      for (size_t i = j; point_params[j] == id && i < points.size(); i += cols) f(points[i]);
+    }
+  }
+  double maxValue(int id) const {
+    double hi = -1e300;
+    forEachValue(id, [&](double v) { hi = v > hi ? v : hi; });
+    return hi;
+  }
+
   // How the points were made: grid (axes or a points file) or a sampling
   // design (design.h) of `samples` points from `seed`, stored in `points`.
   std::string design = "grid";
@@ -72,6 +122,7 @@ struct SweepSpec {
     g.point_cols = static_cast<int>(point_params.size());
     for (int j = 0; j < g.point_cols; ++j) g.point_param[j] = point_params[j];
     g.n_points = g.point_cols > 0 ? static_cast<long>(points.size()) / g.point_cols : 0;
+    g.repeats = repeats;
     return g;
   }
 
@@ -79,8 +130,10 @@ struct SweepSpec {
     for (int id = 0; id < kParamCount; ++id) fixed[id] = paramDefault(id);
   }
 
-  // Whether a parameter varies (on an axis or a points column).
+  // Whether a parameter varies (on an axis or a points column; the repeat
+  // with repeats).
   bool varies(int id) const {
+    if (id == kParamRepeat) return repeats > 1;
     for (const Axis& a : axes) {
       if (a.param == id) return true;
     }
@@ -99,17 +152,24 @@ struct SweepSpec {
     return false;
   }
 
-  // The parameters of each result row: the law's gains, the delay, and the
-  // model factors that vary or are not 1 (ParamId order).
+  // The parameters of each result row: the law's gains, the delay, the
+  // model factors that vary or are not 1, the link's values when the link is
+  // not ideal, the repeat when there are repeats (ParamId order).
   std::vector<int> columns() const {
     std::vector<int> c;
     for (int id = 0; id < kParamCount; ++id) {
-      const bool model = paramInfo(id).group == ParamGroup::kModelFactor;
-      if (paramApplies(id, law) && (!model || varies(id) || fixed[id] != 1.0)) c.push_back(id);
+      const ParamGroup group = paramInfo(id).group;
+      const bool shown = group == ParamGroup::kModelFactor ? varies(id) || fixed[id] != 1.0
+                         : group == ParamGroup::kLink   ? !linkIdeal()
+                         : group == ParamGroup::kRepeat ? repeats > 1
+                                                        : paramApplies(id, law);
+      if (shown) c.push_back(id);
     }
     return c;
   }
   long size() const { return view().size(); }
+  // Distinct combinations (each run `repeats` times).
+  long combinations() const { return view().combinations(); }
 
   // The part of the index space a backend computes, [range_begin, range_end):
   // one chunk of a resumable or MPI run (chunk_store.h); range_end < 0: to
