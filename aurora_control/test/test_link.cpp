@@ -64,8 +64,8 @@ TEST(Link, ReceiveIsTheNewestArrivedPacketNeverAnOlderOne) {
   bool lost = false;
   for (long j = 0; j < n; ++j) {
     const PacketDraws u = packetDraws(7, 0, LinkDirectionId::kUplink, j);
-    lost = packetLost(d, lost, u.loss_u);
-    arrival[j] = lost ? -1 : j + d.delay + jitterSamples(d, u.jitter_u);
+    lost = packetLost(d, lost, u.lossU());
+    arrival[j] = lost ? -1 : j + d.delay + jitterSamples(d, u.jitterU());
   }
   const std::vector<long> got = received(d, n);
   long newest = -1, differ = 0;
@@ -98,10 +98,48 @@ TEST(Link, JitterDrawsFollowTheirFormulas) {
   g.jitter_max = 1000;
   double sum = 0;
   const int n = 200000;
-  for (int i = 0; i < n; ++i) sum += jitterSamples(g, packetDraws(3, 0, LinkDirectionId::kUplink, i).jitter_u);
+  for (int i = 0; i < n; ++i) sum += jitterSamples(g, packetDraws(3, 0, LinkDirectionId::kUplink, i).jitterU());
   EXPECT_NEAR(sum / n, 2.0, 0.03);  // the mean before a cut that never bites
   g.jitter_max = 4;
   EXPECT_EQ(jitterSamples(g, 0.999999), 4);  // the cut
+}
+
+// The channels' integer forms (uniformJitter, LossRule) equal the documented
+// formulas in doubles word for word: at the words around every threshold
+// and at a million drawn words.
+TEST(Link, IntegerRulesAreTheDocumentedFormulas) {
+  std::vector<uint32_t> words = {0u, 1u, 2u, 0x7fffffffu, 0x80000000u, 0xfffffffeu, 0xffffffffu};
+  for (uint64_t i = 0; i < 1000000; ++i) words.push_back(packetDraws(5, i, LinkDirectionId::kUplink, i).loss_w);
+  long checked = 0;
+  for (const double loss : {0.01, 0.05, 0.1, 0.3, 0.5, 0.7, 0.99, 1.0 / 3.0}) {
+    for (const double burst : {1.0, 1.5, 3.0, 20.0}) {
+      LinkDirection d;
+      d.loss = loss, d.burst = burst;
+      if (burst > 1.0 && loss > burst / (burst + 1.0)) continue;
+      const LossRule rule = LossRule::of(d);
+      std::vector<uint32_t> near = words;
+      for (const uint64_t t : {rule.lose, rule.leave, rule.enter}) {
+        for (int64_t o = -2; o <= 2; ++o) {
+          if (int64_t(t) + o >= 0 && int64_t(t) + o <= 0xffffffffLL) near.push_back(static_cast<uint32_t>(int64_t(t) + o));
+        }
+      }
+      for (const uint32_t w : near) {
+        for (const bool before : {false, true}) {
+          ASSERT_EQ(rule.lost(before, w), packetLost(d, before, unitFromBits(w))) << loss << " " << burst << " " << w;
+          ++checked;
+        }
+      }
+    }
+  }
+  for (const long max : {0L, 1L, 3L, 6L, 300L, 2047L}) {
+    LinkDirection d;
+    d.jitter = JitterKind::kUniform, d.jitter_max = max;
+    for (const uint32_t w : words) {
+      ASSERT_EQ(uniformJitter(w, max), jitterSamples(d, unitFromBits(w))) << max << " " << w;
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 10000000);
 }
 
 TEST(Link, LossShareAndBurstLengthAreTheConfiguredOnes) {
@@ -113,7 +151,7 @@ TEST(Link, LossShareAndBurstLengthAreTheConfiguredOnes) {
     long losses = 0, runs = 0;
     const long n = 400000;
     for (long k = 0; k < n; ++k) {
-      const bool now = packetLost(d, lost, packetDraws(11, 2, LinkDirectionId::kDownlink, k).loss_u);
+      const bool now = packetLost(d, lost, packetDraws(11, 2, LinkDirectionId::kDownlink, k).lossU());
       losses += now, runs += now && !lost;
       lost = now;
     }
@@ -126,11 +164,11 @@ TEST(Link, LossShareAndBurstLengthAreTheConfiguredOnes) {
 TEST(Link, DrawsArePureFunctionsOfTheirKey) {
   const PacketDraws a = packetDraws(1, 5, LinkDirectionId::kUplink, 9);
   const PacketDraws b = packetDraws(1, 5, LinkDirectionId::kUplink, 9);
-  EXPECT_EQ(a.jitter_u, b.jitter_u);
-  EXPECT_EQ(a.loss_u, b.loss_u);
-  EXPECT_NE(a.loss_u, packetDraws(1, 5, LinkDirectionId::kDownlink, 9).loss_u);
-  EXPECT_NE(a.loss_u, packetDraws(1, 6, LinkDirectionId::kUplink, 9).loss_u);
-  EXPECT_NE(a.loss_u, packetDraws(2, 5, LinkDirectionId::kUplink, 9).loss_u);
+  EXPECT_EQ(a.jitterU(), b.jitterU());
+  EXPECT_EQ(a.lossU(), b.lossU());
+  EXPECT_NE(a.lossU(), packetDraws(1, 5, LinkDirectionId::kDownlink, 9).lossU());
+  EXPECT_NE(a.lossU(), packetDraws(1, 6, LinkDirectionId::kUplink, 9).lossU());
+  EXPECT_NE(a.lossU(), packetDraws(2, 5, LinkDirectionId::kUplink, 9).lossU());
 }
 
 TEST(Link, DroneHoversUntilTheFirstCommandArrives) {

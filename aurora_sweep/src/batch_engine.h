@@ -28,11 +28,15 @@ inline void sinCos(const batch<T, A>& x, batch<T, A>& s, batch<T, A>& c) {
 }  // namespace xsimd
 
 #include <algorithm>
+#include <cmath>
+#include <memory>
 #include <thread>
 #include <vector>
 
 #include "aurora_control/delay_buffer.h"
 #include "aurora_sweep/backends.h"
+#include "gather_lanes.h"
+#include "lane_links.h"
 
 namespace aurora_sweep {
 
@@ -41,26 +45,6 @@ namespace {
 // Work is handed out in chunks of consecutive indices (neighbouring
 // combinations run for similar lengths).
 constexpr long kChunk = 64;
-
-// Per-lane loads at per-lane indices. xsimd 8.1 sends the AVX-512 float
-// gather to its element-wise generic code (over half the engine's time under
-// perf); these overloads issue the gather instructions themselves.
-template <class B, class I>
-inline B gatherLanes(const typename B::value_type* base, const I& index) {
-  return B::gather(base, index);
-}
-#if defined(__AVX512F__)
-template <>
-inline xsimd::batch<float, xsimd::avx512bw> gatherLanes(const float* base,
-                                                       const xsimd::batch<int32_t, xsimd::avx512bw>& index) {
-  return _mm512_i32gather_ps(index, base, sizeof(float));
-}
-template <>
-inline xsimd::batch<double, xsimd::avx512bw> gatherLanes(const double* base,
-                                                        const xsimd::batch<int64_t, xsimd::avx512bw>& index) {
-  return _mm512_i64gather_pd(index, base, sizeof(double));
-}
-#endif
 
 template <typename T, class A>
 struct Lanes {
@@ -115,7 +99,9 @@ class BatchWorker {
               Progress& progress)
       : grid_(spec.view()), first_(spec.rangeBegin()), total_(spec.rangeEnd()), out_(out), next_(next),
         progress_(progress), setup_(makeSetup<T>(spec)) {
-    if (!setup_.ideal_link) {
+    if (!setup_.ideal_link && laneLinksApply(setup_.config.link)) {
+      lane_links_.reset(new LaneLinks<Capacity, T, Arch>(std::lround(setup_.config.link.cmd_timeout / double(setup_.model.Ts))));
+    } else if (!setup_.ideal_link) {
       links_.reserve(L);
       for (int l = 0; l < L; ++l) links_.emplace_back(setup_.config.link, 0, 0, double(setup_.model.Ts));
     }
@@ -182,7 +168,9 @@ class BatchWorker {
     const bool have = takeIndex(index);
     const Combination c = grid_.decode(have ? index : first_);
     const aurora_control::StudyRun<T> run = studyRun(setup_, c);
-    if (!setup_.ideal_link) {
+    if (lane_links_) {
+      lane_links_->start(l, combinationLink(setup_.config.link, c), static_cast<uint64_t>(c.key));
+    } else if (!setup_.ideal_link) {
       links_[l] = Link(combinationLink(setup_.config.link, c), run.delay, static_cast<uint64_t>(c.key),
                        double(setup_.model.Ts));
     }
@@ -220,25 +208,35 @@ class BatchWorker {
     progress_.fetch_add(1, std::memory_order_relaxed);
   }
 
+  // Each lane's iteration k = count - 1.
+  void laneSteps(long k[L]) const {
+    alignas(64) Int c[L];
+    count_.store_aligned(c);
+    for (int l = 0; l < L; ++l) k[l] = long(c[l]) - 1;
+  }
+
   // Over a link: each lane's history index (1-based) of the state its
-  // controller receives at its iteration k = count - 1.
+  // controller receives at its iteration k.
   I linkedHistoryIndex() {
+    if (lane_links_) return lane_links_->uplink(count_, start_, step_);
+    long k[L];
+    laneSteps(k);
     alignas(64) Int at[L];
-    count_.store_aligned(at);
-    for (int l = 0; l < L; ++l) at[l] = static_cast<Int>(links_[l].uplinkIndex(long(at[l]) - 1) + 1);
+    for (int l = 0; l < L; ++l) at[l] = static_cast<Int>(links_[l].uplinkIndex(k[l]) + 1);
     return I::load_aligned(at);
   }
 
   // Over a link: each lane's sent command U becomes the one its drone
   // receives (the newest arrived, or hover).
   void linkCommands(B U[4]) {
+    if (lane_links_) return lane_links_->downlink(count_, start_, step_, U);
     alignas(64) T sent[4][L];
-    alignas(64) Int at[L];
+    long k[L];
+    laneSteps(k);
     for (int i = 0; i < 4; ++i) U[i].store_aligned(sent[i]);
-    count_.store_aligned(at);
     for (int l = 0; l < L; ++l) {
       T lane[4] = {sent[0][l], sent[1][l], sent[2][l], sent[3][l]};
-      links_[l].downlink(long(at[l]) - 1, lane, lane);
+      links_[l].downlink(k[l], lane, lane);
       for (int i = 0; i < 4; ++i) sent[i][l] = lane[i];
     }
     for (int i = 0; i < 4; ++i) U[i] = B::load_aligned(sent[i]);
@@ -309,7 +307,8 @@ class BatchWorker {
   aurora_control::LoopState<B, M> sim_;
   std::vector<T, xsimd::aligned_allocator<T, 64>> history_;  // [slot][W][lane]
   using Link = aurora_control::ModelLink<Capacity, T>;
-  std::vector<Link> links_;  // each lane's, over a link (empty over an ideal one)
+  std::unique_ptr<LaneLinks<Capacity, T, Arch>> lane_links_;  // over a link: every lane's, vectorized ...
+  std::vector<Link> links_;  // ... or each lane's ModelLink (a geometric jitter); both empty over an ideal link
   bool active_[L];
   long index_[L];
   I delay_ = I(Int(0));  // delay of each lane [samples]

@@ -14,6 +14,7 @@
 #include "aurora_control/link_yaml.h"
 #include "aurora_sweep/kernel_entry.h"
 #include "sweep_test_support.h"
+#include "../src/lane_links.h"
 
 using namespace aurora_sweep;
 using namespace aurora_sweep::test;
@@ -62,6 +63,56 @@ TEST(SweepLink, EveryCpuBackendAgreesOverALossyLink) {
   EXPECT_GT(differing(scalar, runOn("scalar", smallGrid(""))), 40);
   EXPECT_NE(definitionHash(lossy), definitionHash(smallGrid("")));
   EXPECT_NE(definitionHash(lossy), definitionHash(smallGrid("wifi_lab")));
+}
+
+// The SIMD lanes' own link models (lane_links.h: links without a geometric
+// jitter): the same draws and decisions as ModelLink, so the same flags and
+// steps as the scalar loop; with link values varied per lane and repeats.
+TEST(SweepLink, LaneLinksAgreeWithTheScalarLoop) {
+  const SweepSpec lab = smallGrid("wifi_lab");
+  ASSERT_TRUE(laneLinksApply(lab.link));
+  const SweepSpec varied = loadSweepFile(writeTemp("lane_links.yaml",
+      "sweep:\n  repeats: 4\n  early_stop: false\n  link: links/wifi_lab.yaml\n  parameters:\n"
+      "    kp: {values: [0.3, 0.5]}\n    kd: 0.85\n    delay: {values: [0, 4, 9]}\n    uplink_jitter: {values: [0, 3]}\n"
+      "    uplink_loss: {values: [0, 0.2]}\n    uplink_burst: {values: [1, 4]}\n    downlink_delay: {values: [0, 2]}\n"
+      "    downlink_jitter: 2\n    downlink_loss: 0.1\n"), configDir());
+  for (const SweepSpec* spec : {&lab, &varied}) {
+    for (const CpuIsa& isa : cpuBatchIsas()) {
+      if (!isa.supported || isa.key == "none") continue;
+      test::expectAgreement(isa.key, *spec, 1e-9, 10);
+      SweepSpec single = *spec;
+      single.precision = Precision::kFloat;
+      test::expectAgreement(isa.key, single, 2e-3, 10);
+    }
+  }
+}
+
+// LanePhilox is Random123's philox4x32 block, word for word, on the
+// instruction set this test is built for (xsimd's default) and on plain
+// scalar lanes.
+template <class Arch>
+void expectLanePhiloxIsRandom123s() {
+  constexpr int L = 16;
+  uint64_t ctr[4][L], key[2][L], out[4][L];
+  for (int trial = 0; trial < 1000; ++trial) {
+    for (int l = 0; l < L; ++l) {
+      const aurora_control::StepDraws d = aurora_control::stepDraws(uint32_t(trial), uint64_t(l) << 33, uint64_t(l) * 977);
+      ctr[0][l] = d.uplink.jitter_w, ctr[1][l] = d.uplink.loss_w, ctr[2][l] = d.downlink.jitter_w;
+      ctr[3][l] = d.downlink.loss_w, key[0][l] = uint32_t(ctr[3][l] * 3u + 1u), key[1][l] = ctr[0][l] ^ 0x5555u;
+    }
+    LanePhilox<L, Arch>::blocks(ctr, key, out);
+    for (int l = 0; l < L; ++l) {
+      r123::Philox4x32 philox;
+      const r123::Philox4x32::ctr_type c = {{uint32_t(ctr[0][l]), uint32_t(ctr[1][l]), uint32_t(ctr[2][l]), uint32_t(ctr[3][l])}};
+      const r123::Philox4x32::key_type k = {{uint32_t(key[0][l]), uint32_t(key[1][l])}};
+      const r123::Philox4x32::ctr_type r = philox(c, k);
+      for (int w = 0; w < 4; ++w) ASSERT_EQ(out[w][l], r.v[w]) << trial << " " << l << " " << w;
+    }
+  }
+}
+
+TEST(SweepLink, LanePhiloxIsRandom123s) {
+  expectLanePhiloxIsRandom123s<xsimd::default_arch>();
 }
 
 // Each CUDA thread's body over a link (kernel_entry.h), on the host.

@@ -113,15 +113,17 @@ inline const char* jitterKindName(JitterKind k) {
   return k == JitterKind::kUniform ? "uniform" : k == JitterKind::kGeometric ? "geometric" : "none";
 }
 
-// The draws of one packet: two uniforms in (0, 1), for its jitter and its
-// loss.
-struct PacketDraws {
-  double jitter_u, loss_u;
-};
-
 AURORA_HD inline double unitFromBits(uint32_t x) {
   return (double(x) + 0.5) * (1.0 / 4294967296.0);  // in (0, 1), never 0 or 1
 }
+
+// The draws of one packet: two 32-bit words, for its jitter and its loss;
+// as uniforms in (0, 1), u = (w + 1/2) / 2^32.
+struct PacketDraws {
+  uint32_t jitter_w, loss_w;
+  AURORA_HD double jitterU() const { return unitFromBits(jitter_w); }
+  AURORA_HD double lossU() const { return unitFromBits(loss_w); }
+};
 
 // The draws of step `step` on both directions (docs/links.md, "The draws"):
 // one Philox4x32-10 block, key (seed, combination's low 32 bits), counter
@@ -142,8 +144,7 @@ AURORA_HD inline StepDraws stepDraws(uint32_t seed, uint64_t combination, uint64
   const r123::Philox4x32::ctr_type ctr = {{static_cast<uint32_t>(step), static_cast<uint32_t>(step >> 32),
                                            static_cast<uint32_t>(combination >> 32), 0u}};
   const r123::Philox4x32::ctr_type r = philox(ctr, key);
-  return StepDraws{PacketDraws{unitFromBits(r.v[0]), unitFromBits(r.v[1])},
-                   PacketDraws{unitFromBits(r.v[2]), unitFromBits(r.v[3])}};
+  return StepDraws{PacketDraws{r.v[0], r.v[1]}, PacketDraws{r.v[2], r.v[3]}};
 }
 
 AURORA_HD inline PacketDraws packetDraws(uint32_t seed, uint64_t combination, LinkDirectionId dir, uint64_t step) {
@@ -152,7 +153,9 @@ AURORA_HD inline PacketDraws packetDraws(uint32_t seed, uint64_t combination, Li
 
 // A packet's jitter [samples] from its uniform draw u (docs/links.md,
 // "Jitter"): uniform, floor(u (max + 1)); geometric with mean m,
-// floor(ln(1 - u) / ln(m / (1 + m))), cut at max.
+// floor(ln(1 - u) / ln(m / (1 + m))), cut at max. The channels use the
+// exact integer form of the uniform one (jitterOfWord); this is the
+// documented formula.
 AURORA_HD inline long jitterSamples(const LinkDirection& d, double u) {
   if (d.jitter == JitterKind::kUniform) {
     const long j = static_cast<long>(u * double(d.jitter_max + 1));
@@ -165,12 +168,25 @@ AURORA_HD inline long jitterSamples(const LinkDirection& d, double u) {
   return 0;
 }
 
+// The uniform jitter of word w: floor(u (max + 1)) with u = (w + 1/2) / 2^32
+// is floor((2w + 1)(max + 1) / 2^33), exactly (the product of doubles is
+// exact: 34 bits times at most 12). Integer arithmetic only, so SIMD lanes
+// compute it too.
+AURORA_HD inline long uniformJitter(uint32_t w, long max) {
+  return static_cast<long>(((2 * static_cast<uint64_t>(w) + 1) * static_cast<uint64_t>(max + 1)) >> 33);
+}
+
+AURORA_HD inline long jitterOfWord(const LinkDirection& d, uint32_t w) {
+  return d.jitter == JitterKind::kUniform ? uniformJitter(w, d.jitter_max) : jitterSamples(d, unitFromBits(w));
+}
+
 // The loss chain (docs/links.md, "Loss"): with burst 1 each packet is lost
 // with probability `loss`, independently; above 1 a Gilbert-Elliott chain
 // whose bad state loses every packet: leave it with r = 1 / burst, enter it
 // with q = loss r / (1 - loss), so that the long-run share lost is `loss`.
 // Returns whether the packet of this step is lost, given whether the
-// previous one was (the chain's state).
+// previous one was (the chain's state). The documented formula; the
+// channels use its integer form (LossRule).
 AURORA_HD inline bool packetLost(const LinkDirection& d, bool previous_lost, double u) {
   if (d.loss <= 0.0) return false;
   if (d.burst <= 1.0) return u < d.loss;
@@ -178,6 +194,39 @@ AURORA_HD inline bool packetLost(const LinkDirection& d, bool previous_lost, dou
   const double q = d.loss * r / (1.0 - d.loss);
   return previous_lost ? !(u < r) : u < q;
 }
+
+// How many words w have (w + 1/2) / 2^32 < p: u < p is w < wordsBelow(p),
+// exactly (p 2^32 - 1/2 is exact in double for p < 1).
+AURORA_HD inline uint64_t wordsBelow(double p) {
+  if (!(p > 0.0)) return 0;
+  const double t = std::ceil(p * 4294967296.0 - 0.5);
+  return t >= 4294967296.0 ? 4294967296ull : static_cast<uint64_t>(t);
+}
+
+// packetLost on words: the chain's thresholds, computed once per direction.
+struct LossRule {
+  bool chain;            // burst > 1: the Gilbert-Elliott chain
+  uint64_t lose;         // independent losses: lost when w < lose
+  uint64_t leave, enter; // the chain: leave the bad state when w < leave, enter it when w < enter
+
+  AURORA_HD static LossRule of(const LinkDirection& d) {
+    LossRule rule{false, 0, 0, 0};
+    if (d.loss <= 0.0) return rule;
+    if (d.burst <= 1.0) {
+      rule.lose = wordsBelow(d.loss);
+      return rule;
+    }
+    const double r = 1.0 / d.burst;
+    rule.chain = true;
+    rule.leave = wordsBelow(r);
+    rule.enter = wordsBelow(d.loss * r / (1.0 - d.loss));
+    return rule;
+  }
+  AURORA_HD bool lost(bool previous_lost, uint32_t w) const {
+    if (!chain) return w < lose;
+    return previous_lost ? !(w < leave) : w < enter;
+  }
+};
 
 // One direction of a link, from its sender's step to its receiver's choice.
 // Window: how many recent packets it tracks; a link's maxLatency() must be
@@ -211,9 +260,9 @@ class LinkChannel {
       arrival_[k % Window] = k + d.delay;
       return;
     }
-    lost_ = packetLost(d, lost_, u.loss_u);
+    lost_ = LossRule::of(d).lost(lost_, u.loss_w);
     losses_ += lost_ ? 1 : 0;
-    arrival_[k % Window] = lost_ ? kNever : k + d.delay + jitterSamples(d, u.jitter_u);
+    arrival_[k % Window] = lost_ ? kNever : k + d.delay + jitterOfWord(d, u.jitter_w);
   }
 
   // At step k (after send(k)): the step of the newest-sent packet that has

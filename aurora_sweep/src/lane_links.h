@@ -1,0 +1,218 @@
+// The SIMD engine's link models, one per lane, as structs of arrays: the
+// rules of the scalar channels (aurora_control/link.h, docs/links.md: one
+// Philox block per step, the loss chain and the uniform jitter on the draws'
+// words, the receive rule, the drone's hover on a stale command) written as
+// loops over the lanes without branches, so that the compiler turns them
+// into vector instructions of the engine's instruction set. A lane's results
+// equal ModelLink's bit for bit (test_sweep_link). Links whose jitter is
+// geometric (a logarithm, which would round differently on lanes) run
+// ModelLink lane by lane instead (laneLinksApply).
+#pragma once
+
+#include <xsimd/xsimd.hpp>
+
+#include <algorithm>
+#include <cstdint>
+#include <vector>
+
+#include "aurora_control/link.h"
+#include "gather_lanes.h"
+
+namespace aurora_sweep {
+
+// Whether every combination of a sweep over `link` can run on LaneLinks:
+// no direction has a geometric jitter (the sweep's values set maxima only).
+inline bool laneLinksApply(const aurora_control::LinkParams& link) {
+  return link.uplink.jitter != aurora_control::JitterKind::kGeometric &&
+         link.downlink.jitter != aurora_control::JitterKind::kGeometric;
+}
+
+// Philox4x32-10 on L independent lanes: Random123's philox4x32 block (its
+// multipliers, Weyl constants and round) on batches of 64-bit lanes, each
+// holding one 32-bit word, so that a round's products are single 32 x 32 ->
+// 64-bit multiplies (mulLow32); test_sweep_link checks every word against
+// Random123's own.
+template <int L, class Arch>
+struct LanePhilox {
+  using U = xsimd::batch<uint64_t, Arch>;
+  static constexpr int kPerBatch = static_cast<int>(U::size);
+  static_assert(L % kPerBatch == 0, "whole batches of lanes");
+  static constexpr uint64_t kM0 = 0xD2511F53u, kM1 = 0xCD9E8D57u;  // PHILOX_M4x32_0, _1
+  static constexpr uint64_t kW0 = 0x9E3779B9u, kW1 = 0xBB67AE85u;  // PHILOX_W32_0, _1
+
+  // ctr[4][L], key[2][L] in (32-bit values); out[4][L]: the four words of
+  // each lane's block.
+  static void blocks(const uint64_t ctr[4][L], const uint64_t key[2][L], uint64_t out[4][L]) {
+    const U low(uint64_t(0xffffffffu)), m0(kM0), m1(kM1);
+    for (int b = 0; b < L; b += kPerBatch) {
+      U c0 = U::load_unaligned(ctr[0] + b), c1 = U::load_unaligned(ctr[1] + b);
+      U c2 = U::load_unaligned(ctr[2] + b), c3 = U::load_unaligned(ctr[3] + b);
+      U k0 = U::load_unaligned(key[0] + b), k1 = U::load_unaligned(key[1] + b);
+      for (int round = 0; round < 10; ++round) {
+        const U p0 = mulLow32(c0, m0), p1 = mulLow32(c2, m1);
+        c0 = (p1 >> 32) ^ c1 ^ k0;
+        c1 = p1 & low;
+        c2 = (p0 >> 32) ^ c3 ^ k1;
+        c3 = p0 & low;
+        k0 = (k0 + U(kW0)) & low;
+        k1 = (k1 + U(kW1)) & low;
+      }
+      c0.store_unaligned(out[0] + b), c1.store_unaligned(out[1] + b);
+      c2.store_unaligned(out[2] + b), c3.store_unaligned(out[3] + b);
+    }
+  }
+};
+
+// One direction on every lane: its parameters, its loss chain's state, the
+// newest packet received, and the arrival step of each packet sent (a ring
+// indexed by the engine's global slot, as the history: lane l's packet j at
+// slot start_l + j). Integers of the lanes' width (Int: int32 lanes for
+// float, int64 for double), so a receive is a few gathers.
+template <int Window, class Int, class Arch>
+struct LaneChannel {
+  using I = xsimd::batch<Int, Arch>;
+  using M = xsimd::batch_bool<Int, Arch>;
+  static constexpr int L = static_cast<int>(I::size);
+  Int delay[L];  // (members: the engine's `new` does not over-align in C++14, so unaligned loads)
+  Int jitter_max[L];          // 0: none
+  // aurora_control::LossRule per lane, as the threshold of each state of
+  // the chain (independent losses: `lose` in both) and whether the bad
+  // state flips the test (lost unless the word says it leaves).
+  uint64_t good_threshold[L], bad_threshold[L], bad_flips[L];
+  uint64_t lost[L];                       // 0 or 1: the chain's state
+  Int newest[L];
+  Int newest_at[L];
+  std::vector<Int, xsimd::aligned_allocator<Int, 64>> arrival =
+      std::vector<Int, xsimd::aligned_allocator<Int, 64>>(static_cast<size_t>(Window) * L);
+  long longest_jitter = 0;                // the largest jitter_max any lane has had
+
+  void start(int l, const aurora_control::LinkDirection& d, long delay_samples) {
+    delay[l] = static_cast<Int>(delay_samples);
+    jitter_max[l] = static_cast<Int>(d.jitter == aurora_control::JitterKind::kNone ? 0 : d.jitter_max);
+    longest_jitter = std::max(longest_jitter, long(jitter_max[l]));
+    const aurora_control::LossRule rule = aurora_control::LossRule::of(d);
+    good_threshold[l] = rule.chain ? rule.enter : rule.lose;
+    bad_threshold[l] = rule.chain ? rule.leave : rule.lose;
+    bad_flips[l] = rule.chain ? 1 : 0;
+    lost[l] = 0, newest[l] = -1, newest_at[l] = -1;
+  }
+
+  // Sends every lane's packet of its step k[l] at global slot `slot`, from
+  // the words of its draws (jitter_w, loss_w): the loss chain (LossRule) and
+  // the uniform jitter (uniformJitter).
+  void send(const Int k[L], long slot, const uint64_t jitter_w[L], const uint64_t loss_w[L]) {
+    Int* at = &arrival[static_cast<size_t>(slot & (Window - 1)) * L];
+    for (int l = 0; l < L; ++l) {
+      const uint64_t threshold = lost[l] ? bad_threshold[l] : good_threshold[l];
+      const uint64_t now = uint64_t(loss_w[l] < threshold) ^ (lost[l] & bad_flips[l]);
+      lost[l] = now;
+      const Int arrives = static_cast<Int>(k[l] + delay[l] + aurora_control::uniformJitter(static_cast<uint32_t>(jitter_w[l]), jitter_max[l]));
+      at[l] = now ? Int(-1) : arrives;
+    }
+  }
+
+  // LinkChannel::receive on every lane: the newest-sent packet that has
+  // arrived by k, scanning from k - delay down over the jitter's window.
+  // Returns the ring index (slot L + lane) of each lane's newest packet.
+  // Conditions are integer masks (all ones: true), not batch_bool: xsimd
+  // 8.1 builds some integer comparisons element by element.
+  I receive(const I& k, const I& start, const I& lane) {
+    const I zero(Int(0)), ones(Int(-1)), mask(Int(Window - 1)), jmax = I::load_unaligned(jitter_max);
+    const I d = I::load_unaligned(delay);
+    I best = I::load_unaligned(newest), best_at = I::load_unaligned(newest_at), pending = ones;
+    for (long o = 0; o <= longest_jitter; ++o) {
+      const I j = k - d - I(Int(o));
+      const I a = gatherLanes<I>(arrival.data(), ((start + nonNegative(j)) & mask) * I(Int(L)) + lane);
+      const I got = pending & atLeast(jmax, I(Int(o))) & atLeast(j, zero) & atLeast(j - best, I(Int(1))) &
+                    atLeast(a, zero) & atLeast(k, a);
+      best = (got & j) | (best & ~got);
+      best_at = (got & k) | (best_at & ~got);
+      pending = (pending & ~got);
+    }
+    best.store_unaligned(newest);
+    best_at.store_unaligned(newest_at);
+    return ((start + nonNegative(best)) & mask) * I(Int(L)) + lane;
+  }
+
+  // All ones where a >= b, else 0 (the sign of b - a; no overflow here:
+  // steps and delays are far below the integers' range).
+  static I atLeast(const I& a, const I& b) { return ~((a - b) >> (8 * sizeof(Int) - 1)); }
+  static I nonNegative(const I& x) { return x & atLeast(x, I(Int(0))); }
+};
+
+// Both directions and the commands in flight on every lane (ModelLink), in
+// the engine's batches: B of T, I of Int.
+template <int Window, typename T, class Arch>
+class LaneLinks {
+ public:
+  using B = xsimd::batch<T, Arch>;
+  using Int = xsimd::as_integer_t<T>;
+  using I = xsimd::batch<Int, Arch>;
+  static constexpr int L = static_cast<int>(B::size);
+
+  explicit LaneLinks(long timeout_steps) : timeout_(static_cast<Int>(timeout_steps)) {
+    for (int l = 0; l < L; ++l) lane_[l] = static_cast<Int>(l);
+  }
+
+  // Lane l's run over `link` (its combination's: combinationLink), its
+  // draws keyed by `key`.
+  void start(int l, const aurora_control::LinkParams& link, uint64_t key) {
+    up_.start(l, link.uplink, link.uplink.delay);
+    down_.start(l, link.downlink, link.downlink.delay);
+    key_[0][l] = link.seed, key_[1][l] = key & 0xffffffffu;
+    key_hi_[l] = key >> 32;
+  }
+
+  // Each lane's history index (1-based) of the state its controller
+  // receives at its step k (count - 1): the newest arrived, the current one
+  // while none has. Sends its packet k at global slot `slot`; draws the
+  // step's Philox blocks for both directions.
+  I uplink(const I& count, const I& start, long slot) {
+    alignas(64) Int k[L];
+    (count - I(Int(1))).store_aligned(k);
+    uint64_t ctr[4][L];
+    for (int l = 0; l < L; ++l) {
+      ctr[0][l] = uint64_t(int64_t(k[l])) & 0xffffffffu, ctr[1][l] = uint64_t(int64_t(k[l])) >> 32;
+      ctr[2][l] = key_hi_[l], ctr[3][l] = 0;
+    }
+    LanePhilox<L, Arch>::blocks(ctr, key_, words_);
+    up_.send(k, slot, words_[0], words_[1]);
+    up_.receive(I::load_aligned(k), start, I::load_unaligned(lane_));
+    const I newest = I::load_unaligned(up_.newest);
+    const I arrived = LaneChannel<Window, Int, Arch>::atLeast(newest, I(Int(0)));
+    return ((newest + I(Int(1))) & arrived) | (count & ~arrived);
+  }
+
+  // The commands U sent at step k become the ones each drone applies: the
+  // newest arrived, or hover (0) while none has or when the newest arrived
+  // timeout steps ago or more.
+  void downlink(const I& count, const I& start, long slot, B U[4]) {
+    using Channel = LaneChannel<Window, Int, Arch>;
+    alignas(64) Int k[L];
+    (count - I(Int(1))).store_aligned(k);
+    T* sent = &commands_[static_cast<size_t>(slot & (Window - 1)) * 4 * L];
+    for (int i = 0; i < 4; ++i) U[i].store_unaligned(sent + i * L);
+    down_.send(k, slot, words_[2], words_[3]);
+    const I kb = I::load_aligned(k), lane = I::load_unaligned(lane_);
+    const I at = down_.receive(kb, start, lane);  // slot L + lane of each lane's newest command
+    const I newest = I::load_unaligned(down_.newest), since = kb - I::load_unaligned(down_.newest_at);
+    // Hover (all ones): none arrived (newest < 0) or since >= timeout.
+    const I hover = ~Channel::atLeast(newest, I(Int(0))) | Channel::atLeast(since, I(timeout_));
+    const B hover_bits = xsimd::bitwise_cast<B>(hover);
+    const I base = (at - lane) * I(Int(4)) + lane;  // [slot][i][lane]
+    for (int i = 0; i < 4; ++i) {
+      U[i] = gatherLanes<B>(commands_.data(), base + I(Int(i * L))) & ~hover_bits;
+    }
+  }
+
+ private:
+  Int timeout_;
+  Int lane_[L];  // 0, 1, ..., L - 1 (no batch members: this object is not over-aligned)
+  LaneChannel<Window, Int, Arch> up_, down_;
+  uint64_t key_[2][L], key_hi_[L];  // 32-bit values
+  uint64_t words_[4][L];
+  std::vector<T, xsimd::aligned_allocator<T, 64>> commands_ =
+      std::vector<T, xsimd::aligned_allocator<T, 64>>(static_cast<size_t>(Window) * 4 * L);  // [slot][i][lane]
+};
+
+}  // namespace aurora_sweep
