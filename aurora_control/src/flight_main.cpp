@@ -2,7 +2,8 @@
 // task, on the same core as the controller node (flight_runner.h): the
 // lockstep ROS loop flies exactly this trajectory. Prints the tracking error
 // per lap (per waypoint segment for missions), the controller's metrics and
-// the cost of the law per step; --csv writes the trajectory.
+// the cost of the law per step; --csv writes the trajectory. --formation
+// flies a formation file instead (formation_flight.h).
 #include <boost/program_options.hpp>
 
 #include <chrono>
@@ -19,6 +20,7 @@
 #include "aurora_control/task_yaml.h"
 #include "aurora_sim/ros/config_dir.h"
 #include "aurora_sim/vehicle_yaml.h"
+#include "formation_flight.h"
 
 namespace po = boost::program_options;
 using namespace aurora_control;
@@ -26,22 +28,24 @@ using namespace aurora_control;
 namespace {
 
 struct Options {
-  std::string controller, task, vehicle, csv, link;
-  long delay = 0;
+  std::string controller, task, vehicle, csv, link, formation, config;
+  std::vector<long> delays;  // one (a flight), or one per drone (a formation)
+  long delay = 0;            // a flight's
   bool no_clamp = false;
 };
 
 bool parse(int argc, char** argv, Options& o) {
-  const std::string config = aurora_sim::configDir();  // throws: says what to source
+  const std::string config = o.config = aurora_sim::configDir();  // throws: says what to source
   po::options_description d("usage: flight [options]\n\nFlies one task offline with the controller node's core and prints its tracking error.\n\noptions");
   d.add_options()("help,h", "this text")
       ("controller", po::value(&o.controller)->default_value(config + "/controllers/pd_saturated.yaml"), "controller YAML (law and gains)")
       ("task", po::value(&o.task)->default_value(config + "/tasks/mission4.yaml"), "task YAML (waypoints, circle, lemniscate)")
       ("vehicle", po::value(&o.vehicle)->default_value(config + "/vehicles/ardrone2.yaml"), "vehicle YAML")
-      ("delay", po::value(&o.delay)->default_value(0), "feedback delay [samples of Ts], 0 to 2047 (limits.h)")
+      ("delay", po::value(&o.delays)->multitoken(), "feedback delay [samples of Ts], 0 to 2047 (limits.h); with --formation one per drone (default: the file's)")
       ("no-clamp", po::bool_switch(&o.no_clamp), "do not clamp the law's commands (the sim still does, as the drivers)")
+      ("formation", po::value(&o.formation), "formation YAML (config/formations/*.yaml, docs/formation.md): fly its drones and formation layer instead of --controller and --task")
       ("link", po::value(&o.link), "link YAML (config/links/*.yaml, docs/links.md): jitter, losses, a command-path delay; its uplink delay unless --delay is given")
-      ("csv", po::value(&o.csv), "write one row per step k = 0..N at round-trip precision: step, t, the 12-state after k model steps, the 4 commands the drone applied at step k (model order), the reference of step k and the tracking error");
+      ("csv", po::value(&o.csv), "write one row per step k = 0..N at round-trip precision: step, t, the 12-state after k model steps, the 4 commands the drone applied at step k (model order), the reference of step k and the tracking error (with --formation: each drone's state and commands, Q and Qd; docs/formation.md)");
   po::variables_map vm;
   po::store(po::parse_command_line(argc, argv, d), vm);
   if (vm.count("help")) {
@@ -49,6 +53,10 @@ bool parse(int argc, char** argv, Options& o) {
     return false;
   }
   po::notify(vm);
+  if (o.formation.empty() && o.delays.size() > 1) {
+    throw ConfigError("--delay takes one value for a flight (one per drone with --formation): got " + std::to_string(o.delays.size()));
+  }
+  o.delay = o.delays.empty() ? 0 : o.delays[0];
   return true;
 }
 
@@ -143,7 +151,11 @@ int main(int argc, char** argv) {
   Options o;
   try {
     if (!parse(argc, argv, o)) return 0;
-    run(o);
+    if (o.formation.empty()) {
+      run(o);
+    } else {
+      flyFormation(FormationFlightOptions{o.formation, o.vehicle, o.csv, o.config, o.delays});
+    }
   } catch (const std::exception& e) {
     std::fprintf(stderr, "flight: %s\n", e.what());
     return 2;

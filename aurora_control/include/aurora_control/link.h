@@ -252,15 +252,16 @@ class LinkChannel {
       arrival_[k % Window] = k + d.delay;
       return;
     }
-    send(d, packetDraws(seed, combination, dir, static_cast<uint64_t>(k)), k);
+    send(d, LossRule::of(d), packetDraws(seed, combination, dir, static_cast<uint64_t>(k)), k);
   }
-  // The same with this packet's draws given (d not constant).
-  AURORA_HD void send(const LinkDirection& d, const PacketDraws& u, long k) {
+  // The same with this packet's draws given, and d's loss rule
+  // (LossRule::of(d), computed once by the caller).
+  AURORA_HD void send(const LinkDirection& d, const LossRule& rule, const PacketDraws& u, long k) {
     if (d.constant()) {
       arrival_[k % Window] = k + d.delay;
       return;
     }
-    lost_ = LossRule::of(d).lost(lost_, u.loss_w);
+    lost_ = rule.lost(lost_, u.loss_w);
     losses_ += lost_ ? 1 : 0;
     arrival_[k % Window] = lost_ ? kNever : k + d.delay + jitterOfWord(d, u.jitter_w);
   }

@@ -36,7 +36,8 @@ class ModelLink {
  public:
   // `delay`: the run's (uplink) delay, which replaces the link's own.
   AURORA_HD ModelLink(const LinkParams& link, long delay, uint64_t combination, double Ts)
-      : link_(link), combination_(combination) {
+      : link_(link), combination_(combination), up_rule_(LossRule::of(link.uplink)),
+        down_rule_(LossRule::of(link.downlink)) {
     link_.uplink.delay = delay;
     timeout_steps_ = static_cast<long>(std::lround(link.cmd_timeout / Ts));
   }
@@ -44,7 +45,7 @@ class ModelLink {
   // The controller's state at step k: the newest-sent state that has
   // arrived, the current one while none has (the start rule).
   AURORA_HD long uplinkIndex(long k) {
-    up_.send(link_.uplink, drawsAt(k).uplink, k);
+    up_.send(link_.uplink, up_rule_, drawsAt(k).uplink, k);
     const long j = up_.receive(link_.uplink, k);
     return j < 0 ? k : j;
   }
@@ -54,7 +55,7 @@ class ModelLink {
   // cmd_timeout or longer ago (the drivers' watchdog).
   AURORA_HD void downlink(long k, const T sent[4], T received[4]) {
     for (int i = 0; i < 4; ++i) commands_[k % Window][i] = sent[i];
-    down_.send(link_.downlink, drawsAt(k).downlink, k);
+    down_.send(link_.downlink, down_rule_, drawsAt(k).downlink, k);
     const long j = down_.receive(link_.downlink, k);
     hovering_ = j < 0 || down_.sinceArrival(k) >= timeout_steps_;
     for (int i = 0; i < 4; ++i) received[i] = hovering_ ? T(0) : commands_[j % Window][i];
@@ -89,6 +90,7 @@ class ModelLink {
   uint64_t combination_;
   long timeout_steps_;
   bool hovering_ = false;
+  LossRule up_rule_, down_rule_;  // the directions' loss rules (a live change builds a new link)
   long drawn_step_ = -1;
   StepDraws draws_{};
   LinkChannel<Window> up_, down_;

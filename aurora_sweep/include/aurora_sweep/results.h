@@ -81,7 +81,7 @@ class DelayMonotony {
 
 // With repeats (sweep.repeats N > 1): per combination, in how many of its N
 // runs (link seeds) it was feasible; its share is that over N. One draw of
-// a link is one sample, not an answer (docs/links.md, "Repeats").
+// a link is one sample, not an answer (docs/links.md, "Links in a sweep").
 class FeasibleShare {
  public:
   explicit FeasibleShare(const SweepSpec& spec);

@@ -1,0 +1,82 @@
+// The formation layer (docs/formation.md, "The formation layer"): every
+// formation period it compares the formation variables Q of the drones'
+// positions with the desired Qd, and gives each drone a reference position
+// Xr and velocity dXr, which the drones hold until the next period. Written
+// against a shape (line_formation.h); ROS-free, host and device, no clock:
+// the caller says when a period is due and passes the positions it sees.
+#pragma once
+
+#include <cmath>
+
+#include "aurora_control/line_formation.h"
+
+namespace aurora_control {
+
+// K1 (amplitudes) and K2 (slopes) of v = dQd + K1 tanh(K2 (Qd - Q)).
+template <typename T, int N>
+struct FormationGains {
+  T k1[N], k2[N];
+
+  // AuRoRA's defaults of the line (its mInit, and the lab's script).
+  AURORA_HD static FormationGains lineDefaults() {
+    static_assert(N == 6, "the line's six variables");
+    FormationGains g;
+    const T k1[6] = {T(0.1), T(0.1), T(1.0), T(0.75), T(0.5), T(0.5)};
+    const T k2[6] = {T(0.5), T(0.5), T(0.5), T(0.5), T(0.25), T(0.25)};
+    for (int i = 0; i < 6; ++i) g.k1[i] = k1[i], g.k2[i] = k2[i];
+    return g;
+  }
+};
+
+template <typename T, class Shape>
+class FormationLayer {
+ public:
+  static constexpr int kN = Shape::kVariables;  // Q's size; also the drones' stacked positions (3 per drone)
+  static_assert(kN == 3 * Shape::kDrones, "a shape of d drones has 3 d variables here");
+
+  AURORA_HD FormationLayer(FormationLaw law, const FormationGains<T, kN>& gains, T period)
+      : law_(law), gains_(gains), period_(period) {}
+
+  // Before the first period: the references are the drones' start
+  // positions X0 at rest, and the previous Qd is Qd(0), so the first
+  // feed-forward dQd is 0 (no start-up spike; docs/formation.md).
+  AURORA_HD void start(const T X0[kN], const T Qd0[kN]) {
+    for (int i = 0; i < kN; ++i) Xr_[i] = X0[i], dXr_[i] = T(0), Qd_prev_[i] = Qd0[i];
+  }
+
+  // One period on the positions X the layer sees, towards Qd (eq. F3):
+  // Q of X, Q~ = Qd - Q (no angle wrapping), dQd the backward difference over
+  // the period, v = dQd + K1 tanh(K2 Q~), dXr of v by the law, Xr += dXr T_F.
+  AURORA_HD void update(const T X[kN], const T Qd[kN]) {
+    Shape::variables(X, Q_);
+    T v[kN];
+    for (int i = 0; i < kN; ++i) {
+      Qd_[i] = Qd[i];
+      Qtil_[i] = Qd[i] - Q_[i];
+      dQd_[i] = (Qd[i] - Qd_prev_[i]) / period_;
+      v[i] = dQd_[i] + gains_.k1[i] * std::tanh(gains_.k2[i] * Qtil_[i]);
+      Qd_prev_[i] = Qd[i];
+    }
+    Shape::velocities(law_, X, v, dXr_);
+    for (int i = 0; i < kN; ++i) Xr_[i] += dXr_[i] * period_;
+  }
+
+  // Drone d's reference (0-based): its position and velocity [m, m/s].
+  AURORA_HD const T* position(int d) const { return Xr_ + 3 * d; }
+  AURORA_HD const T* velocity(int d) const { return dXr_ + 3 * d; }
+  // The last period's variables, desired variables, error and feed-forward.
+  AURORA_HD const T* Q() const { return Q_; }
+  AURORA_HD const T* Qd() const { return Qd_; }
+  AURORA_HD const T* Qtil() const { return Qtil_; }
+  AURORA_HD const T* dQd() const { return dQd_; }
+  AURORA_HD T period() const { return period_; }
+
+ private:
+  FormationLaw law_;
+  FormationGains<T, kN> gains_;
+  T period_;  // [s] T_F
+  T Xr_[kN], dXr_[kN], Qd_prev_[kN];
+  T Q_[kN] = {}, Qd_[kN] = {}, Qtil_[kN] = {}, dQd_[kN] = {};
+};
+
+}  // namespace aurora_control

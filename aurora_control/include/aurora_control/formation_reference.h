@@ -1,0 +1,36 @@
+// The desired formation Qd(t) (docs/formation.md, "References"): the
+// formation's position fixed or on a figure-eight with AuRoRA's smoothstep
+// time warp, and its shape (the remaining variables) fixed. Generic over
+// the number of variables N, so another shape reuses it. ROS-free, host
+// and device.
+#pragma once
+
+#include <cmath>
+
+#include "aurora_sim/host_device.h"
+
+namespace aurora_control {
+
+enum class FormationPath : int { kFixed = 0, kLemniscate = 1 };
+
+template <typename T, int N>
+struct FormationReference {
+  FormationPath path = FormationPath::kFixed;
+  T duration = T(90);  // [s] T: the warp's length, and one lap of the figure-eight
+  T amplitude[2] = {T(1), T(1)};  // [m] rX, rY of the figure-eight
+  T Q[N] = {};  // the fixed values: the formation's position (x, y, z) and its shape; the figure-eight moves x, y
+
+  // Qd at time t (eq. F8): tp = (3 (t/T)^2 - 2 (t/T)^3) T, w = 2 pi / T,
+  // xF = x + rX sin(w tp), yF = y + rY sin(2 w tp); the rest fixed.
+  AURORA_HD void at(const T& t, T Qd[N]) const {
+    for (int i = 0; i < N; ++i) Qd[i] = Q[i];
+    if (path != FormationPath::kLemniscate) return;
+    const T s = t / duration;
+    const T tp = (T(3) * s * s - T(2) * s * s * s) * duration;
+    const T w = T(2) * T(3.14159265358979323846) / duration;
+    Qd[0] += amplitude[0] * std::sin(w * tp);
+    Qd[1] += amplitude[1] * std::sin(T(2) * w * tp);
+  }
+};
+
+}  // namespace aurora_control

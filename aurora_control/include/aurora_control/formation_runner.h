@@ -1,0 +1,104 @@
+// The offline runner of a formation (docs/formation.md, "One tick"): each
+// drone is the closed loop of closed_loop.h (its law on the state its
+// uplink delivers, then one model step), and every period the formation
+// layer, on the positions the drones' uplinks deliver, gives each drone its
+// held reference. ROS-free; no allocation.
+#pragma once
+
+#include "aurora_control/closed_loop.h"
+#include "aurora_control/delay_buffer.h"
+#include "aurora_control/formation_layer.h"
+#include "aurora_control/formation_reference.h"
+#include "aurora_control/loop_link.h"
+
+namespace aurora_control {
+
+// One drone of a formation: its model (plant and the law's nominal model),
+// its gains, its uplink delay [samples] and where it starts [m].
+template <typename T>
+struct FormationDrone {
+  aurora_sim::ArdroneParams<T> plant, model;
+  LawGains<T> gains;
+  long delay = 0;
+  T start[3];
+};
+
+template <typename T, class Shape>
+struct FormationRun {
+  static constexpr int kDrones = Shape::kDrones, kN = Shape::kVariables;
+  FormationDrone<T> drone[kDrones];
+  FormationLaw law = FormationLaw::kPositionPriority;
+  FormationGains<T, kN> gains = FormationGains<T, kN>::lineDefaults();
+  long period_steps = 6;  // the layer's period in drone steps (0.2 s at 1/30 s)
+  FormationReference<T, kN> reference;
+  ClampPolicy clamp;      // none: AuRoRA's formation script does not clamp
+};
+
+// A reference held between periods (the layer's output for one drone), as
+// the task controllerHalf reads: position, velocity, no acceleration, yaw 0.
+template <typename T>
+struct HeldReference {
+  Reference<T> ref;
+  AURORA_HD Reference<T> at(const T&) const { return ref; }
+  AURORA_HD void hold(const T pos[3], const T vel[3]) {
+    for (int i = 0; i < 3; ++i) ref.pos[i] = pos[i], ref.vel[i] = vel[i], ref.acc[i] = T(0);
+    ref.yaw = ref.yaw_rate = ref.yaw_acc = T(0);
+  }
+};
+
+// What an observer sees after each tick k (0-based: the drones' states went
+// from X_k to X_(k+1)).
+template <typename T, class Shape>
+struct FormationObservation {
+  long k;
+  bool layer_ran;                                  // the layer ran at the start of this tick
+  const LoopState<T, bool>* drones;                // after the model step, per drone
+  const LoopStep<T>* steps;                        // each drone's reference and applied command
+  const FormationLayer<T, Shape>& layer;
+};
+
+// `iterations` ticks of law `Law` on every drone, histories of `Capacity`
+// samples (every drone's delay below it, checked by the caller).
+template <LawType Law, typename T, class Shape, int Capacity, typename Observer>
+void runFormation(const FormationRun<T, Shape>& run, long iterations, Observer& observe) {
+  constexpr int D = Shape::kDrones, N = Shape::kVariables;
+  using Sample = LawSample<T, Law>;
+  FormationLayer<T, Shape> layer(run.law, run.gains, T(run.period_steps) * run.drone[0].plant.Ts);
+  LoopParams<T> params[D];
+  LoopState<T, bool> state[D];
+  DelayBuffer<Sample, Capacity> history[D];
+  HeldReference<T> held[D];
+  T X0[N], Qd[N];
+  for (int d = 0; d < D; ++d) {
+    params[d] = LoopParams<T>{run.drone[d].plant, run.drone[d].model, run.drone[d].gains,
+                              FeasibilityCriteria<T>::study()};
+    state[d].reset(run.drone[d].start);
+    for (int i = 0; i < 3; ++i) state[d].model.X[aurora_sim::kX + i] = X0[3 * d + i] = run.drone[d].start[i];
+  }
+  run.reference.at(T(0), Qd);
+  layer.start(X0, Qd);
+  for (long k = 0; k < iterations; ++k) {
+    T xc[D][aurora_sim::kStateSize], seen[N];
+    for (int d = 0; d < D; ++d) {
+      history[d].push(Sample::fromState(state[d].model.X));
+      IdealLink link{run.drone[d].delay};
+      history[d].at(link.uplinkIndex(k)).toState(xc[d]);
+      for (int i = 0; i < 3; ++i) seen[3 * d + i] = xc[d][aurora_sim::kX + i];
+    }
+    const bool due = k % run.period_steps == 0;
+    if (due) {
+      run.reference.at(taskTime(T(k), run.drone[0].plant.Ts), Qd);
+      layer.update(seen, Qd);
+    }
+    LoopStep<T> step[D];
+    for (int d = 0; d < D; ++d) {
+      held[d].hold(layer.position(d), layer.velocity(d));
+      T U[4];
+      step[d].ref = controllerHalf<Law>(params[d], held[d], run.clamp, T(k), xc[d], state[d], U);
+      droneHalf(params[d], run.clamp, step[d].ref, U, state[d], step[d].U);
+    }
+    observe(FormationObservation<T, Shape>{k, due, state, step, layer});
+  }
+}
+
+}  // namespace aurora_control

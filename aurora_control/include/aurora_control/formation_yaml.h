@@ -1,0 +1,186 @@
+// A formation file (config/formations/*.yaml, docs/formation.md,
+// "Formation files"), read strictly: the shape, the law, the period, the
+// gains, the reference and the drones (namespace, start, controller,
+// delay). Unknown keys, one drone, a namespace twice, rho <= 0,
+// sin^2 alpha + sin^2 beta > 1, a period that is not a whole number of drone
+// steps are refused, naming the key, the value and what is accepted.
+#pragma once
+
+#include <yaml-cpp/yaml.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "aurora_control/formation_runner.h"
+#include "aurora_control/law_yaml.h"
+#include "aurora_control/limits.h"
+#include "aurora_control/yaml_reader.h"
+
+namespace aurora_control {
+
+struct FormationDroneFile {
+  std::string name_space;        // its ROS namespace (ardrone1, ...)
+  double start[3];               // [m]
+  ControllerSettings controller;  // its law and gains
+  long delay = 0;                // its uplink delay [samples]
+};
+
+struct FormationFile {
+  FormationLaw law = FormationLaw::kPositionPriority;
+  double period = 0.2;  // [s]
+  FormationGains<double, 6> gains = FormationGains<double, 6>::lineDefaults();
+  FormationReference<double, 6> reference;
+  std::vector<FormationDroneFile> drones;
+};
+
+inline const char* formationLawName(FormationLaw law) {
+  return law == FormationLaw::kInverseKinematics ? "inverse_kinematics"
+         : law == FormationLaw::kPositionPriority ? "position_priority"
+                                                  : "shape_priority";
+}
+
+namespace formation_detail {
+
+// A list of exactly n numbers.
+inline std::vector<double> numbers(const YamlReader& r, const YAML::Node& n, const std::string& key, size_t count) {
+  if (!n.IsSequence() || n.size() != count) r.fail(key, "must be a list of " + std::to_string(count) + " numbers");
+  std::vector<double> v;
+  for (const auto& x : n) v.push_back(r.number(x, key));
+  return v;
+}
+
+inline void readGains(const YamlReader& r, const YAML::Node& n, const std::string& key, FormationGains<double, 6>& g) {
+  r.onlyKeys(n, key, {"k1", "k2"});
+  const char* names[2] = {"k1", "k2"};
+  double* into[2] = {g.k1, g.k2};
+  for (int j = 0; j < 2; ++j) {
+    if (!n[names[j]]) continue;
+    const std::vector<double> v = numbers(r, n[names[j]], r.key(key, names[j]), 6);
+    for (int i = 0; i < 6; ++i) {
+      if (!(v[i] > 0)) r.fail(r.key(key, names[j]), "= " + YamlReader::fmt(v[i]) + " (entry " + std::to_string(i + 1) + ") is refused: accepted gains > 0");
+      into[j][i] = v[i];
+    }
+  }
+}
+
+// reference: {path: fixed | lemniscate, duration, amplitude: [rx, ry],
+// position: [x, y, z], shape: {rho, alpha, beta}}.
+inline void readReference(const YamlReader& r, const YAML::Node& n, const std::string& key,
+                          FormationReference<double, 6>& ref) {
+  r.onlyKeys(n, key, {"path", "duration", "amplitude", "position", "shape"});
+  const std::string path = r.text(r.require(n, key, "path", "fixed, lemniscate"), r.key(key, "path"));
+  if (path == "fixed") ref.path = FormationPath::kFixed;
+  else if (path == "lemniscate") ref.path = FormationPath::kLemniscate;
+  else r.fail(r.key(key, "path"), "= '" + path + "' is unknown: accepted fixed, lemniscate");
+  ref.duration = r.numberIn(r.require(n, key, "duration", "seconds > 0"), r.key(key, "duration"), 0.0, 3600.0, "s", false);
+  if (n["amplitude"]) {
+    const std::vector<double> a = numbers(r, n["amplitude"], r.key(key, "amplitude"), 2);
+    ref.amplitude[0] = a[0], ref.amplitude[1] = a[1];
+  }
+  const std::vector<double> p = numbers(r, r.require(n, key, "position", "[x, y, z] in m"), r.key(key, "position"), 3);
+  const std::string shape_key = r.key(key, "shape");
+  const YAML::Node s = r.require(n, key, "shape", "{rho, alpha, beta}");
+  r.onlyKeys(s, shape_key, {"rho", "alpha", "beta"});
+  const double rho = r.number(r.require(s, shape_key, "rho", "m > 0"), r.key(shape_key, "rho"));
+  if (!(rho > 0)) r.fail(r.key(shape_key, "rho"), "= " + YamlReader::fmt(rho) + " is refused: accepted a distance > 0 m");
+  const double alpha = r.number(r.require(s, shape_key, "alpha", "rad"), r.key(shape_key, "alpha"));
+  const double beta = r.number(r.require(s, shape_key, "beta", "rad"), r.key(shape_key, "beta"));
+  const double reach = std::sin(alpha) * std::sin(alpha) + std::sin(beta) * std::sin(beta);
+  if (reach > 1.0) {
+    r.fail(shape_key, "alpha = " + YamlReader::fmt(alpha) + ", beta = " + YamlReader::fmt(beta) + " are refused: sin^2 alpha + sin^2 beta = " +
+                          YamlReader::fmt(reach) + " > 1 (no position of drone 2 has these angles); accepted sin^2 alpha + sin^2 beta <= 1");
+  }
+  const double Q[6] = {p[0], p[1], p[2], rho, alpha, beta};
+  for (int i = 0; i < 6; ++i) ref.Q[i] = Q[i];
+}
+
+// drones[i]: {namespace, start: [x, y, z], controller: {name, gains...} or a
+// controller file, delay}.
+inline FormationDroneFile readDrone(const YamlReader& r, const YAML::Node& n, const std::string& key,
+                                    const std::string& config_dir) {
+  r.onlyKeys(n, key, {"namespace", "start", "controller", "delay"});
+  FormationDroneFile d;
+  d.name_space = r.text(r.require(n, key, "namespace", "a ROS namespace such as ardrone1"), r.key(key, "namespace"));
+  const std::vector<double> s = numbers(r, r.require(n, key, "start", "[x, y, z] in m"), r.key(key, "start"), 3);
+  for (int i = 0; i < 3; ++i) d.start[i] = s[i];
+  const YAML::Node c = r.require(n, key, "controller", "a controller mapping {name, gains} or file (controllers/NAME.yaml)");
+  if (c.IsScalar()) {
+    const std::string file = r.text(c, r.key(key, "controller"));
+    d.controller = readControllerFile(file.empty() || file[0] == '/' ? file : config_dir + "/" + file).settings;
+  } else {
+    readLaw(r, c, r.key(key, "controller"), d.controller);
+  }
+  if (n["delay"]) {
+    const double given = r.number(n["delay"], r.key(key, "delay"));
+    const std::string refusal = delayRefusal(given, false, 0.0, d.delay);
+    if (!refusal.empty()) r.fail(r.key(key, "delay"), "= " + YamlReader::fmt(given) + " " + refusal);
+  }
+  return d;
+}
+
+inline void readDrones(const YamlReader& r, const YAML::Node& n, const std::string& config_dir, FormationFile& f) {
+  if (!n.IsSequence() || n.size() != 2) {
+    r.fail("formation.drones", "must list the line's 2 drones (it lists " + std::to_string(n.IsSequence() ? n.size() : 0) + ")");
+  }
+  for (size_t i = 0; i < n.size(); ++i) {
+    f.drones.push_back(readDrone(r, n[i], "formation.drones[" + std::to_string(i) + "]", config_dir));
+  }
+  if (f.drones[0].name_space == f.drones[1].name_space) {
+    r.fail("formation.drones[1].namespace", "= '" + f.drones[1].name_space + "' is drone 1's too: accepted a namespace of its own");
+  }
+  if (f.drones[0].controller.law != f.drones[1].controller.law) {
+    r.fail("formation.drones[1].controller.name", "differs from drone 1's: accepted the same law for every drone");
+  }
+}
+
+}  // namespace formation_detail
+
+inline FormationFile readFormationFile(const std::string& path, const std::string& config_dir) {
+  using namespace formation_detail;
+  const YAML::Node root = loadYamlFile("formation file", path);
+  const YamlReader r("formation file '" + path + "': ");
+  r.onlyKeys(root, "", {"formation"});
+  const YAML::Node n = r.require(root, "", "formation", "shape, law, period, gains, reference, drones");
+  r.onlyKeys(n, "formation", {"shape", "law", "period", "gains", "reference", "drones"});
+  FormationFile f;
+  const std::string shape = r.text(r.require(n, "formation", "shape", "line"), "formation.shape");
+  if (shape != "line") r.fail("formation.shape", "= '" + shape + "' is unknown: accepted line");
+  const std::string law = r.text(r.require(n, "formation", "law", "inverse_kinematics, position_priority, shape_priority"), "formation.law");
+  bool known = false;
+  for (FormationLaw l : {FormationLaw::kInverseKinematics, FormationLaw::kPositionPriority, FormationLaw::kShapePriority}) {
+    if (law == formationLawName(l)) f.law = l, known = true;
+  }
+  if (!known) r.fail("formation.law", "= '" + law + "' is unknown: accepted inverse_kinematics, position_priority, shape_priority");
+  if (n["period"]) f.period = r.numberIn(n["period"], "formation.period", 0.0, 60.0, "s", false);
+  if (n["gains"]) readGains(r, n["gains"], "formation.gains", f.gains);
+  readReference(r, r.require(n, "formation", "reference", "{path, duration, position, shape}"), "formation.reference", f.reference);
+  readDrones(r, r.require(n, "formation", "drones", "the 2 drones"), config_dir, f);
+  return f;
+}
+
+// The run of a formation file with the drones' vehicle `vehicle`, its
+// period in whole drone steps (refused otherwise).
+inline FormationRun<double, LineFormation<double>> formationRun(const FormationFile& f,
+                                                                const aurora_sim::ArdroneParams<double>& vehicle) {
+  FormationRun<double, LineFormation<double>> run;
+  run.law = f.law;
+  run.gains = f.gains;
+  run.reference = f.reference;
+  const double steps = f.period / vehicle.Ts;
+  run.period_steps = std::lround(steps);
+  if (run.period_steps < 1 || std::fabs(steps - double(run.period_steps)) > 1e-9 * steps) {
+    throw ConfigError("formation.period = " + YamlReader::fmt(f.period) + " s is refused: accepted a whole number of drone steps of " +
+                      YamlReader::fmt(vehicle.Ts) + " s (0.2 s = 6 steps at 30 Hz)");
+  }
+  for (int d = 0; d < 2; ++d) {
+    run.drone[d].plant = run.drone[d].model = vehicle;
+    run.drone[d].gains.pd = f.drones[d].controller.gains;
+    run.drone[d].gains.underactuated = f.drones[d].controller.underactuated;
+    run.drone[d].delay = f.drones[d].delay;
+    for (int i = 0; i < 3; ++i) run.drone[d].start[i] = f.drones[d].start[i];
+  }
+  return run;
+}
+
+}  // namespace aurora_control

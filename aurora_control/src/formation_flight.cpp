@@ -1,0 +1,156 @@
+#include "formation_flight.h"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+#include "aurora_control/formation_yaml.h"
+#include "aurora_sim/vehicle_yaml.h"
+
+namespace aurora_control {
+
+namespace {
+
+using Line = LineFormation<double>;
+
+// The formation errors (docs/formation.md, "Formation errors"): at every
+// tick k from 10 s on, the layer's held Qd against Q of the positions X_k;
+// RMS of rho, alpha, beta, the formation's horizontal position and height;
+// and the smallest distance between the drones over the whole flight.
+class FormationErrors {
+ public:
+  explicit FormationErrors(const double X0[6]) {
+    for (int i = 0; i < 6; ++i) X_[i] = X0[i];
+    closest_ = distance();
+  }
+  // Tick k's observation: X_ holds X_k until the drones' new states replace it.
+  void add(const FormationObservation<double, Line>& o, double Ts) {
+    if (double(o.k) * Ts >= 10.0) {
+      double Q[6];
+      Line::variables(X_, Q);
+      const double* Qd = o.layer.Qd();
+      const double e[6] = {Qd[0] - Q[0], Qd[1] - Q[1], Qd[2] - Q[2], Qd[3] - Q[3], Qd[4] - Q[4], Qd[5] - Q[5]};
+      const double terms[5] = {e[3] * e[3], e[4] * e[4], e[5] * e[5], e[0] * e[0] + e[1] * e[1], e[2] * e[2]};
+      for (int i = 0; i < 5; ++i) sum_[i] += terms[i];
+      ++n_;
+    }
+    for (int d = 0; d < 2; ++d) {
+      for (int i = 0; i < 3; ++i) X_[3 * d + i] = o.drones[d].model.X[i];
+    }
+    closest_ = std::min(closest_, distance());
+  }
+  void print() const {
+    const auto rms = [&](int i) { return n_ > 0 ? std::sqrt(sum_[i] / double(n_)) : 0.0; };
+    std::printf("  RMS formation error after 10 s: rho %.4f m, alpha %.4f rad, beta %.4f rad, position (x, y) %.4f m, "
+                "height %.4f m\n  smallest distance between the drones %.4f m\n",
+                rms(0), rms(1), rms(2), rms(3), rms(4), closest_);
+  }
+
+ private:
+  double distance() const {
+    return std::sqrt((X_[0] - X_[3]) * (X_[0] - X_[3]) + (X_[1] - X_[4]) * (X_[1] - X_[4]) + (X_[2] - X_[5]) * (X_[2] - X_[5]));
+  }
+  double X_[6], sum_[5] = {}, closest_;
+  long n_ = 0;
+};
+
+const char* kDroneColumns[16] = {"x", "y", "z", "phi", "theta", "psi", "dx", "dy", "dz", "dphi", "dtheta", "dpsi",
+                                 "u1", "u2", "u3", "u4"};
+const char* kQColumns[6] = {"xF", "yF", "zF", "rho", "alpha", "beta"};
+
+// One row per tick k from 0: step, t, each drone's 12-state after k model
+// steps and the commands it applied at tick k, then Q of those positions
+// and the layer's held Qd, at round-trip precision.
+class FormationCsv {
+ public:
+  FormationCsv(const std::string& path, const double X0[6]) : f_(path.empty() ? nullptr : std::fopen(path.c_str(), "w")) {
+    if (!path.empty() && !f_) throw std::runtime_error("cannot write '" + path + "'");
+    if (!f_) return;
+    std::fprintf(f_, "step,t");
+    for (int d = 1; d <= 2; ++d) {
+      for (const char* c : kDroneColumns) std::fprintf(f_, ",d%d_%s", d, c);
+    }
+    for (const char* prefix : {"Q", "Qd"}) {
+      for (const char* c : kQColumns) std::fprintf(f_, ",%s_%s", prefix, c);
+    }
+    std::fprintf(f_, "\n");
+    for (int d = 0; d < 2; ++d) {
+      for (int i = 0; i < aurora_sim::kStateSize; ++i) X_[d][i] = 0.0;
+      for (int i = 0; i < 3; ++i) X_[d][i] = X0[3 * d + i];
+    }
+  }
+  ~FormationCsv() {
+    if (f_) std::fclose(f_);
+  }
+  void add(const FormationObservation<double, Line>& o, double Ts) {
+    if (!f_) return;
+    std::fprintf(f_, "%ld,%.17g", o.k, double(o.k) * Ts);
+    double P[6], Q[6];
+    for (int d = 0; d < 2; ++d) {
+      for (int i = 0; i < aurora_sim::kStateSize; ++i) std::fprintf(f_, ",%.17g", X_[d][i]);
+      for (int i = 0; i < 4; ++i) std::fprintf(f_, ",%.17g", o.steps[d].U[i]);
+      for (int i = 0; i < 3; ++i) P[3 * d + i] = X_[d][i];
+    }
+    Line::variables(P, Q);
+    for (int i = 0; i < 6; ++i) std::fprintf(f_, ",%.17g", Q[i]);
+    for (int i = 0; i < 6; ++i) std::fprintf(f_, ",%.17g", o.layer.Qd()[i]);
+    std::fprintf(f_, "\n");
+    for (int d = 0; d < 2; ++d) {
+      for (int i = 0; i < aurora_sim::kStateSize; ++i) X_[d][i] = o.drones[d].model.X[i];
+    }
+  }
+
+ private:
+  FILE* f_;
+  double X_[2][aurora_sim::kStateSize];  // each drone's state at the start of the tick
+};
+
+// The file's run with --delay's per-drone delays, checked.
+FormationRun<double, Line> loadRun(const FormationFlightOptions& o, const aurora_sim::ArdroneParams<double>& p,
+                                   const FormationFile& f) {
+  FormationRun<double, Line> run = formationRun(f, p);
+  if (!o.delays.empty() && o.delays.size() != 2) {
+    throw ConfigError("--delay: give one delay per drone (2 for the line), or none: got " + std::to_string(o.delays.size()));
+  }
+  for (size_t d = 0; d < o.delays.size(); ++d) {
+    long samples = 0;
+    const std::string refusal = delayRefusal(double(o.delays[d]), false, p.Ts, samples);
+    if (!refusal.empty()) throw ConfigError("--delay " + std::to_string(o.delays[d]) + " (drone " + std::to_string(d + 1) + ") " + refusal);
+    run.drone[d].delay = samples;
+  }
+  return run;
+}
+
+}  // namespace
+
+void flyFormation(const FormationFlightOptions& o) {
+  const auto p = aurora_sim::loadVehicleYaml(o.vehicle);
+  const FormationFile f = readFormationFile(o.formation, o.config_dir);
+  const FormationRun<double, Line> run = loadRun(o, p, f);
+  const long ticks = std::lround(f.reference.duration / p.Ts);  // k = 0 .. ticks - 1 (2700 for 90 s)
+  double X0[6];
+  for (int d = 0; d < 2; ++d) {
+    for (int i = 0; i < 3; ++i) X0[3 * d + i] = run.drone[d].start[i];
+  }
+  FormationErrors errors(X0);
+  FormationCsv csv(o.csv, X0);
+  const long history = std::max(run.drone[0].delay, run.drone[1].delay);
+  const auto t0 = std::chrono::steady_clock::now();
+  auto observe = [&](const FormationObservation<double, Line>& obs) {
+    csv.add(obs, p.Ts);
+    errors.add(obs, p.Ts);
+  };
+  withHistoryCapacity(history, [&](auto capacity) {
+    withLaw(f.drones[0].controller.law, [&](auto law) {
+      runFormation<decltype(law)::value, double, Line, decltype(capacity)::value>(run, ticks, observe);
+    });
+  });
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  std::printf("flight: formation '%s' (line, %s, %s law on each drone), %.1f s, delays %ld and %ld samples: "
+              "%ld ticks in %.3f s\n", o.formation.c_str(), formationLawName(f.law), lawName(f.drones[0].controller.law),
+              f.reference.duration, run.drone[0].delay, run.drone[1].delay, ticks, seconds);
+  errors.print();
+}
+
+}  // namespace aurora_control
