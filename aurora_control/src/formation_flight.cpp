@@ -135,7 +135,11 @@ void flyFormation(const FormationFlightOptions& o) {
   }
   FormationErrors errors(X0);
   FormationCsv csv(o.csv, X0);
-  const long history = std::max(run.drone[0].delay, run.drone[1].delay);
+  const long history = formationHistory(run);
+  if (history > kMaxDelaySamples) {
+    throw ConfigError("the drones' delays plus their links' jitter need " + std::to_string(history) +
+                      " samples of history: accepted up to " + std::to_string(kMaxDelaySamples));
+  }
   const auto t0 = std::chrono::steady_clock::now();
   auto observe = [&](const FormationObservation<double, Line>& obs) {
     csv.add(obs, p.Ts);

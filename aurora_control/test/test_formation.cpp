@@ -293,3 +293,35 @@ TEST(FormationFile, MistakesAreRefusedNamingTheKey) {
     EXPECT_NE(std::string(e.what()).find("accepted a whole number of drone steps"), std::string::npos) << e.what();
   }
 }
+
+// Each drone over its own link model: a link that draws but changes nothing
+// is the delay rule bit for bit; a lossy link changes the flight, the same
+// way every run; two drones over one link file lose different packets.
+TEST(LineFormation, EachDroneFliesOverItsOwnLink) {
+  const auto record = [](const FormationRun<double, Line>& run) {
+    std::vector<double> out;
+    auto observe = [&](const FormationObservation<double, Line>& o) {
+      for (int d = 0; d < 2; ++d) out.insert(out.end(), o.drones[d].model.X, o.drones[d].model.X + 12);
+    };
+    runFormation<LawType::kUnderactuated, double, Line, 64>(run, 900, observe);
+    return out;
+  };
+  FormationRun<double, Line> plain = labScenario(FormationLaw::kInverseKinematics);
+  plain.drone[0].delay = 2, plain.drone[1].delay = 5;
+  FormationRun<double, Line> drawing = plain;
+  for (int d = 0; d < 2; ++d) drawing.drone[d].link.uplink.jitter = JitterKind::kUniform;  // max 0: no effect
+  ASSERT_FALSE(drawing.drone[0].link.ideal());
+  EXPECT_EQ(record(plain), record(drawing));
+  FormationRun<double, Line> lossy = plain;
+  for (int d = 0; d < 2; ++d) {
+    lossy.drone[d].link.uplink.loss = 0.3, lossy.drone[d].link.downlink.loss = 0.3, lossy.drone[d].link.downlink.delay = 1;
+  }
+  const std::vector<double> a = record(lossy), b = record(lossy);
+  EXPECT_EQ(a, b);
+  EXPECT_NE(a, record(plain));
+  // The same link on both drones, drawn per drone: the uplinks lose different states.
+  ModelLink<64, double> first(lossy.drone[0].link, 0, 0, 1.0 / 30.0), second(lossy.drone[1].link, 0, 1, 1.0 / 30.0);
+  long differ = 0;
+  for (long k = 0; k < 300; ++k) differ += first.uplinkIndex(k) != second.uplinkIndex(k);
+  EXPECT_GT(differ, 30);
+}

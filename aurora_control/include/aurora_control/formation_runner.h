@@ -1,9 +1,12 @@
 // The offline runner of a formation (docs/formation.md, "One tick"): each
-// drone is the closed loop of closed_loop.h (its law on the state its
-// uplink delivers, then one model step), and every period the formation
-// layer, on the positions the drones' uplinks deliver, gives each drone its
-// held reference. ROS-free; no allocation.
+// drone is the closed loop of closed_loop.h over its own link (its law on
+// the state its uplink delivers, its command over its downlink, one model
+// step), and every period the formation layer, on the positions the drones'
+// uplinks deliver, gives each drone its held reference. ROS-free.
 #pragma once
+
+#include <cmath>
+#include <vector>
 
 #include "aurora_control/closed_loop.h"
 #include "aurora_control/delay_buffer.h"
@@ -14,12 +17,14 @@
 namespace aurora_control {
 
 // One drone of a formation: its model (plant and the law's nominal model),
-// its gains, its uplink delay [samples] and where it starts [m].
+// its gains, its link (link.h; ideal by default) with its uplink delay
+// [samples], and where it starts [m].
 template <typename T>
 struct FormationDrone {
   aurora_sim::ArdroneParams<T> plant, model;
   LawGains<T> gains;
   long delay = 0;
+  LinkParams link;
   T start[3];
 };
 
@@ -57,10 +62,11 @@ struct FormationObservation {
   const FormationLayer<T, Shape>& layer;
 };
 
-// `iterations` ticks of law `Law` on every drone, histories of `Capacity`
-// samples (every drone's delay below it, checked by the caller).
-template <LawType Law, typename T, class Shape, int Capacity, typename Observer>
-void runFormation(const FormationRun<T, Shape>& run, long iterations, Observer& observe) {
+// `iterations` ticks of law `Law` on every drone, drone d over links[d]
+// (IdealLink or ModelLink), histories of `Capacity` samples (every drone's
+// history below it, checked by the caller).
+template <LawType Law, typename T, class Shape, int Capacity, typename Observer, typename Link>
+void runFormationOver(const FormationRun<T, Shape>& run, long iterations, Observer& observe, Link* links) {
   constexpr int D = Shape::kDrones, N = Shape::kVariables;
   using Sample = LawSample<T, Law>;
   FormationLayer<T, Shape> layer(run.law, run.gains, T(run.period_steps) * run.drone[0].plant.Ts);
@@ -81,8 +87,7 @@ void runFormation(const FormationRun<T, Shape>& run, long iterations, Observer& 
     T xc[D][aurora_sim::kStateSize], seen[N];
     for (int d = 0; d < D; ++d) {
       history[d].push(Sample::fromState(state[d].model.X));
-      IdealLink link{run.drone[d].delay};
-      history[d].at(link.uplinkIndex(k)).toState(xc[d]);
+      history[d].at(links[d].uplinkIndex(k)).toState(xc[d]);
       for (int i = 0; i < 3; ++i) seen[3 * d + i] = xc[d][aurora_sim::kX + i];
     }
     const bool due = k % run.period_steps == 0;
@@ -95,10 +100,44 @@ void runFormation(const FormationRun<T, Shape>& run, long iterations, Observer& 
       held[d].hold(layer.position(d), layer.velocity(d));
       T U[4];
       step[d].ref = controllerHalf<Law>(params[d], held[d], run.clamp, T(k), xc[d], state[d], U);
+      links[d].downlink(k, U, U);
       droneHalf(params[d], run.clamp, step[d].ref, U, state[d], step[d].U);
     }
     observe(FormationObservation<T, Shape>{k, due, state, step, layer});
   }
+}
+
+// Every drone over its own link: today's delay rule when every link is
+// ideal, else each drone's link model, its draws keyed by the drone's index
+// (two drones over one link file lose different packets).
+template <LawType Law, typename T, class Shape, int Capacity, typename Observer>
+void runFormation(const FormationRun<T, Shape>& run, long iterations, Observer& observe) {
+  constexpr int D = Shape::kDrones;
+  bool ideal = true;
+  for (int d = 0; d < D; ++d) ideal = ideal && run.drone[d].link.ideal();
+  if (ideal) {
+    IdealLink links[D];
+    for (int d = 0; d < D; ++d) links[d] = IdealLink{run.drone[d].delay};
+    return runFormationOver<Law, T, Shape, Capacity>(run, iterations, observe, links);
+  }
+  std::vector<ModelLink<Capacity, T>> links;  // on the heap: Capacity-sized rings
+  links.reserve(D);
+  for (int d = 0; d < D; ++d) {
+    links.emplace_back(run.drone[d].link, run.drone[d].delay, static_cast<uint64_t>(d), double(run.drone[d].plant.Ts));
+  }
+  runFormationOver<Law, T, Shape, Capacity>(run, iterations, observe, links.data());
+}
+
+// The history drone d's link needs (its uplink delay plus jitter, or its
+// command path's).
+template <typename T, class Shape>
+long formationHistory(const FormationRun<T, Shape>& run) {
+  long longest = 0;
+  for (int d = 0; d < Shape::kDrones; ++d) {
+    const long h = run.drone[d].link.historyNeeded(run.drone[d].delay);
+    longest = h > longest ? h : longest;
+  }
+  return longest;
 }
 
 }  // namespace aurora_control

@@ -15,6 +15,7 @@
 #include "aurora_control/formation_runner.h"
 #include "aurora_control/law_yaml.h"
 #include "aurora_control/limits.h"
+#include "aurora_control/link_yaml.h"
 #include "aurora_control/yaml_reader.h"
 
 namespace aurora_control {
@@ -24,6 +25,7 @@ struct FormationDroneFile {
   double start[3];               // [m]
   ControllerSettings controller;  // its law and gains
   long delay = 0;                // its uplink delay [samples]
+  LinkParams link;               // its link (docs/links.md; ideal unless given)
 };
 
 struct FormationFile {
@@ -96,10 +98,10 @@ inline void readReference(const YamlReader& r, const YAML::Node& n, const std::s
 }
 
 // drones[i]: {namespace, start: [x, y, z], controller: {name, gains...} or a
-// controller file, delay}.
+// controller file, delay, link: a link file}.
 inline FormationDroneFile readDrone(const YamlReader& r, const YAML::Node& n, const std::string& key,
                                     const std::string& config_dir) {
-  r.onlyKeys(n, key, {"namespace", "start", "controller", "delay"});
+  r.onlyKeys(n, key, {"namespace", "start", "controller", "delay", "link"});
   FormationDroneFile d;
   d.name_space = r.text(r.require(n, key, "namespace", "a ROS namespace such as ardrone1"), r.key(key, "namespace"));
   const std::vector<double> s = numbers(r, r.require(n, key, "start", "[x, y, z] in m"), r.key(key, "start"), 3);
@@ -115,6 +117,12 @@ inline FormationDroneFile readDrone(const YamlReader& r, const YAML::Node& n, co
     const double given = r.number(n["delay"], r.key(key, "delay"));
     const std::string refusal = delayRefusal(given, false, 0.0, d.delay);
     if (!refusal.empty()) r.fail(r.key(key, "delay"), "= " + YamlReader::fmt(given) + " " + refusal);
+  }
+  if (n["link"]) {
+    const std::string file = r.text(n["link"], r.key(key, "link"));
+    d.link = readLinkFile(file.empty() || file[0] == '/' ? file : config_dir + "/" + file);
+    const std::string refusal = combineUplinkDelay(d.delay, d.link, d.delay);
+    if (!refusal.empty()) r.fail(r.key(key, "link"), "= '" + file + "': " + refusal);
   }
   return d;
 }
@@ -178,6 +186,7 @@ inline FormationRun<double, LineFormation<double>> formationRun(const FormationF
     run.drone[d].gains.pd = f.drones[d].controller.gains;
     run.drone[d].gains.underactuated = f.drones[d].controller.underactuated;
     run.drone[d].delay = f.drones[d].delay;
+    run.drone[d].link = f.drones[d].link;
     for (int i = 0; i < 3; ++i) run.drone[d].start[i] = f.drones[d].start[i];
   }
   return run;
