@@ -439,9 +439,15 @@ void checkSweepLink(const Reader& r, SweepSpec& spec) {
                std::to_string(spec.max_delay) + " plus the link's jitter): accepted up to " +
                std::to_string(aurora_control::kMaxDelaySamples));
   }
-  if (spec.repeats > 1 && spec.linkIdeal()) {
-    r.fail("sweep.repeats", "= " + std::to_string(spec.repeats) + " draws nothing: every run over an ideal link "
-           "is the same; give a link with jitter or loss (sweep.link or the link parameters), or remove repeats");
+  bool draws = false;  // some jitter or loss, on some combination
+  for (int i : {aurora_control::kLinkUplinkJitter, aurora_control::kLinkUplinkLoss, aurora_control::kLinkDownlinkJitter,
+                aurora_control::kLinkDownlinkLoss}) {
+    draws = draws || spec.maxValue(kParamFirstLinkValue + i) > 0.0;
+  }
+  if (spec.repeats > 1 && !draws) {
+    r.fail("sweep.repeats", "= " + std::to_string(spec.repeats) + " draws nothing: without jitter or loss on "
+           "either direction every repeat is the same run; give a link with jitter or loss (sweep.link or the link "
+           "parameters), or remove repeats");
   }
 }
 

@@ -207,7 +207,9 @@ TEST(SweepLink, MistakesAreRefusedNamingTheKey) {
   says("    uplink_loss: 0.8\n    uplink_burst: {values: [1, 2]}\n",
        "'sweep.parameters.uplink_loss' = 0.8 (its largest) is refused with burst 2: accepted up to burst / (burst + 1)");
   says("    repeat: 2\n", "'sweep.parameters.repeat' is not a parameter of the pd_saturated controller");
-  says("  repeats: 4\n", "'sweep.repeats' = 4 draws nothing: every run over an ideal link is the same");
+  says("  repeats: 4\n", "'sweep.repeats' = 4 draws nothing: without jitter or loss on either direction");
+  says("  repeats: 4\n  link: links/tum_ardrone.yaml\n", "'sweep.repeats' = 4 draws nothing");  // delays only
+  EXPECT_EQ(refusal(pd + "    uplink_loss: 0.1\n  repeats: 4\n"), "");
   says("  repeats: 0\n  link: links/wifi_lab.yaml\n", "'sweep.repeats' = 0 is refused: accepted [1, 100000]");
 }
 
