@@ -20,25 +20,20 @@ using Line = LineFormation<double>;
 // and the smallest distance between the drones over the whole flight.
 class FormationErrors {
  public:
-  explicit FormationErrors(const double X0[6]) {
-    for (int i = 0; i < 6; ++i) X_[i] = X0[i];
-    closest_ = distance();
-  }
-  // Tick k's observation: X_ holds X_k until the drones' new states replace it.
   void add(const FormationObservation<double, Line>& o, double Ts) {
-    if (double(o.k) * Ts >= 10.0) {
-      double Q[6];
-      Line::variables(X_, Q);
-      const double* Qd = o.layer.Qd();
-      const double e[6] = {Qd[0] - Q[0], Qd[1] - Q[1], Qd[2] - Q[2], Qd[3] - Q[3], Qd[4] - Q[4], Qd[5] - Q[5]};
-      const double terms[5] = {e[3] * e[3], e[4] * e[4], e[5] * e[5], e[0] * e[0] + e[1] * e[1], e[2] * e[2]};
-      for (int i = 0; i < 5; ++i) sum_[i] += terms[i];
-      ++n_;
-    }
+    double X[6], after[6];
     for (int d = 0; d < 2; ++d) {
-      for (int i = 0; i < 3; ++i) X_[3 * d + i] = o.drones[d].model.X[i];
+      for (int i = 0; i < 3; ++i) X[3 * d + i] = o.X_before[d][i], after[3 * d + i] = o.drones[d].model.X[i];
     }
-    closest_ = std::min(closest_, distance());
+    closest_ = std::min(closest_, std::min(distance(X), distance(after)));
+    if (double(o.k) * Ts < 10.0) return;
+    double Q[6];
+    Line::variables(X, Q);
+    const double* Qd = o.layer.Qd();
+    const double e[6] = {Qd[0] - Q[0], Qd[1] - Q[1], Qd[2] - Q[2], Qd[3] - Q[3], Qd[4] - Q[4], Qd[5] - Q[5]};
+    const double terms[5] = {e[3] * e[3], e[4] * e[4], e[5] * e[5], e[0] * e[0] + e[1] * e[1], e[2] * e[2]};
+    for (int i = 0; i < 5; ++i) sum_[i] += terms[i];
+    ++n_;
   }
   void print() const {
     const auto rms = [&](int i) { return n_ > 0 ? std::sqrt(sum_[i] / double(n_)) : 0.0; };
@@ -48,10 +43,10 @@ class FormationErrors {
   }
 
  private:
-  double distance() const {
-    return std::sqrt((X_[0] - X_[3]) * (X_[0] - X_[3]) + (X_[1] - X_[4]) * (X_[1] - X_[4]) + (X_[2] - X_[5]) * (X_[2] - X_[5]));
+  static double distance(const double X[6]) {
+    return std::sqrt((X[0] - X[3]) * (X[0] - X[3]) + (X[1] - X[4]) * (X[1] - X[4]) + (X[2] - X[5]) * (X[2] - X[5]));
   }
-  double X_[6], sum_[5] = {}, closest_;
+  double sum_[5] = {}, closest_ = 1e300;
   long n_ = 0;
 };
 
@@ -64,7 +59,7 @@ const char* kQColumns[6] = {"xF", "yF", "zF", "rho", "alpha", "beta"};
 // and the layer's held Qd, at round-trip precision.
 class FormationCsv {
  public:
-  FormationCsv(const std::string& path, const double X0[6]) : f_(path.empty() ? nullptr : std::fopen(path.c_str(), "w")) {
+  explicit FormationCsv(const std::string& path) : f_(path.empty() ? nullptr : std::fopen(path.c_str(), "w")) {
     if (!path.empty() && !f_) throw std::runtime_error("cannot write '" + path + "'");
     if (!f_) return;
     std::fprintf(f_, "step,t");
@@ -75,10 +70,6 @@ class FormationCsv {
       for (const char* c : kQColumns) std::fprintf(f_, ",%s_%s", prefix, c);
     }
     std::fprintf(f_, "\n");
-    for (int d = 0; d < 2; ++d) {
-      for (int i = 0; i < aurora_sim::kStateSize; ++i) X_[d][i] = 0.0;
-      for (int i = 0; i < 3; ++i) X_[d][i] = X0[3 * d + i];
-    }
   }
   ~FormationCsv() {
     if (f_) std::fclose(f_);
@@ -88,22 +79,18 @@ class FormationCsv {
     std::fprintf(f_, "%ld,%.17g", o.k, double(o.k) * Ts);
     double P[6], Q[6];
     for (int d = 0; d < 2; ++d) {
-      for (int i = 0; i < aurora_sim::kStateSize; ++i) std::fprintf(f_, ",%.17g", X_[d][i]);
+      for (int i = 0; i < aurora_sim::kStateSize; ++i) std::fprintf(f_, ",%.17g", o.X_before[d][i]);
       for (int i = 0; i < 4; ++i) std::fprintf(f_, ",%.17g", o.steps[d].U[i]);
-      for (int i = 0; i < 3; ++i) P[3 * d + i] = X_[d][i];
+      for (int i = 0; i < 3; ++i) P[3 * d + i] = o.X_before[d][i];
     }
     Line::variables(P, Q);
     for (int i = 0; i < 6; ++i) std::fprintf(f_, ",%.17g", Q[i]);
     for (int i = 0; i < 6; ++i) std::fprintf(f_, ",%.17g", o.layer.Qd()[i]);
     std::fprintf(f_, "\n");
-    for (int d = 0; d < 2; ++d) {
-      for (int i = 0; i < aurora_sim::kStateSize; ++i) X_[d][i] = o.drones[d].model.X[i];
-    }
   }
 
  private:
   FILE* f_;
-  double X_[2][aurora_sim::kStateSize];  // each drone's state at the start of the tick
 };
 
 // The file's run with --delay's per-drone delays, checked.
@@ -129,12 +116,8 @@ void flyFormation(const FormationFlightOptions& o) {
   const FormationFile f = readFormationFile(o.formation, o.config_dir);
   const FormationRun<double, Line> run = loadRun(o, p, f);
   const long ticks = std::lround(f.reference.duration / p.Ts);  // k = 0 .. ticks - 1 (2700 for 90 s)
-  double X0[6];
-  for (int d = 0; d < 2; ++d) {
-    for (int i = 0; i < 3; ++i) X0[3 * d + i] = run.drone[d].start[i];
-  }
-  FormationErrors errors(X0);
-  FormationCsv csv(o.csv, X0);
+  FormationErrors errors;
+  FormationCsv csv(o.csv);
   const long history = formationHistory(run);
   if (history > kMaxDelaySamples) {
     throw ConfigError("the drones' delays plus their links' jitter need " + std::to_string(history) +

@@ -154,9 +154,12 @@ TEST(LineFormation, BothLawsFlyTheLabScenarioAsTheOriginal) {
   const Want wants[2] = {{FormationLaw::kPositionPriority, 0.290, 0.286, 0.426, 0.238, 0.000, 1.22},
                          {FormationLaw::kInverseKinematics, 0.026, 0.025, 0.000, 0.238, 0.000, 1.33}};
   for (const Want& w : wants) {
-    double sum[5] = {}, closest = 1e9, X[6] = {-1.0, 0.0, 0.75, 1.0, 0.0, 1.0};
+    double sum[5] = {}, closest = 1e9, X[6];
     long n = 0;
     auto observe = [&](const FormationObservation<double, Line>& o) {
+      for (int d = 0; d < 2; ++d) {
+        for (int i = 0; i < 3; ++i) X[3 * d + i] = o.X_before[d][i];
+      }
       if (o.k / 30.0 >= 10.0) {
         double Q[6], e[6];
         Line::variables(X, Q);

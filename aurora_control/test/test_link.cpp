@@ -23,7 +23,7 @@ std::vector<long> received(const LinkDirection& d, long n, uint32_t seed = 7) {
   LinkChannel<64> c;
   std::vector<long> out;
   for (long k = 0; k < n; ++k) {
-    c.send(d, seed, 0, LinkDirectionId::kUplink, k);
+    c.send(d, LossRule::of(d), packetDraws(seed, 0, LinkDirectionId::kUplink, k), k);
     out.push_back(c.receive(d, k));
   }
   return out;

@@ -71,7 +71,6 @@ struct LanePhilox {
 template <int Window, class Int, class Arch>
 struct LaneChannel {
   using I = xsimd::batch<Int, Arch>;
-  using M = xsimd::batch_bool<Int, Arch>;
   static constexpr int L = static_cast<int>(I::size);
   Int delay[L];  // (members: the engine's `new` does not over-align in C++14, so unaligned loads)
   Int jitter_max[L];          // 0: none

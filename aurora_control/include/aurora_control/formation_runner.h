@@ -57,7 +57,8 @@ template <typename T, class Shape>
 struct FormationObservation {
   long k;
   bool layer_ran;                                  // the layer ran at the start of this tick
-  const LoopState<T, bool>* drones;                // after the model step, per drone
+  const T (*X_before)[aurora_sim::kStateSize];     // each drone's state at the tick's start (X_k)
+  const LoopState<T, bool>* drones;                // after the model step, per drone (X_(k+1))
   const LoopStep<T>* steps;                        // each drone's reference and applied command
   const FormationLayer<T, Shape>& layer;
 };
@@ -84,8 +85,9 @@ void runFormationOver(const FormationRun<T, Shape>& run, long iterations, Observ
   run.reference.at(T(0), Qd);
   layer.start(X0, Qd);
   for (long k = 0; k < iterations; ++k) {
-    T xc[D][aurora_sim::kStateSize], seen[N];
+    T xc[D][aurora_sim::kStateSize], before[D][aurora_sim::kStateSize], seen[N];
     for (int d = 0; d < D; ++d) {
+      for (int i = 0; i < aurora_sim::kStateSize; ++i) before[d][i] = state[d].model.X[i];
       history[d].push(Sample::fromState(state[d].model.X));
       history[d].at(links[d].uplinkIndex(k)).toState(xc[d]);
       for (int i = 0; i < 3; ++i) seen[3 * d + i] = xc[d][aurora_sim::kX + i];
@@ -103,7 +105,7 @@ void runFormationOver(const FormationRun<T, Shape>& run, long iterations, Observ
       links[d].downlink(k, U, U);
       droneHalf(params[d], run.clamp, step[d].ref, U, state[d], step[d].U);
     }
-    observe(FormationObservation<T, Shape>{k, due, state, step, layer});
+    observe(FormationObservation<T, Shape>{k, due, before, state, step, layer});
   }
 }
 

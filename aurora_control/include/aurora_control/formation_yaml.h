@@ -44,6 +44,11 @@ inline const char* formationLawName(FormationLaw law) {
 
 namespace formation_detail {
 
+// A file a formation file names: absolute, or relative to the config folder.
+inline std::string inConfig(const std::string& file, const std::string& config_dir) {
+  return file.empty() || file[0] == '/' ? file : config_dir + "/" + file;
+}
+
 // A list of exactly n numbers.
 inline std::vector<double> numbers(const YamlReader& r, const YAML::Node& n, const std::string& key, size_t count) {
   if (!n.IsSequence() || n.size() != count) r.fail(key, "must be a list of " + std::to_string(count) + " numbers");
@@ -109,7 +114,7 @@ inline FormationDroneFile readDrone(const YamlReader& r, const YAML::Node& n, co
   const YAML::Node c = r.require(n, key, "controller", "a controller mapping {name, gains} or file (controllers/NAME.yaml)");
   if (c.IsScalar()) {
     const std::string file = r.text(c, r.key(key, "controller"));
-    d.controller = readControllerFile(file.empty() || file[0] == '/' ? file : config_dir + "/" + file).settings;
+    d.controller = readControllerFile(inConfig(file, config_dir)).settings;
   } else {
     readLaw(r, c, r.key(key, "controller"), d.controller);
   }
@@ -120,7 +125,7 @@ inline FormationDroneFile readDrone(const YamlReader& r, const YAML::Node& n, co
   }
   if (n["link"]) {
     const std::string file = r.text(n["link"], r.key(key, "link"));
-    d.link = readLinkFile(file.empty() || file[0] == '/' ? file : config_dir + "/" + file);
+    d.link = readLinkFile(inConfig(file, config_dir));
     const std::string refusal = combineUplinkDelay(d.delay, d.link, d.delay);
     if (!refusal.empty()) r.fail(r.key(key, "link"), "= '" + file + "': " + refusal);
   }

@@ -245,17 +245,9 @@ class LinkChannel {
     losses_ = 0;
   }
 
-  // Sends the packet of step k (k = 0, 1, ... in order): draws whether it
-  // is lost and when it arrives.
-  AURORA_HD void send(const LinkDirection& d, uint32_t seed, uint64_t combination, LinkDirectionId dir, long k) {
-    if (d.constant()) {
-      arrival_[k % Window] = k + d.delay;
-      return;
-    }
-    send(d, LossRule::of(d), packetDraws(seed, combination, dir, static_cast<uint64_t>(k)), k);
-  }
-  // The same with this packet's draws given, and d's loss rule
-  // (LossRule::of(d), computed once by the caller).
+  // Sends the packet of step k (k = 0, 1, ... in order) with its draws u
+  // and d's loss rule (LossRule::of(d), computed once by the caller):
+  // whether it is lost and when it arrives.
   AURORA_HD void send(const LinkDirection& d, const LossRule& rule, const PacketDraws& u, long k) {
     if (d.constant()) {
       arrival_[k % Window] = k + d.delay;

@@ -54,6 +54,12 @@ inline int linkValueIndex(const std::string& name) {
   return i >= 0 && i < kLinkValueCount ? static_cast<int>(i) : -1;
 }
 inline bool isLinkSetting(const std::string& name) { return linkValueIndex(name) >= 0; }
+// The link's live settings, comma separated (the table's names).
+inline std::string linkSettingNames() {
+  std::vector<std::string> names;
+  for (int i = 0; i < kLinkValueCount; ++i) names.push_back(kParameterTable[kRowUplinkJitter + i].live);
+  return joinKeys(names);
+}
 static_assert(kRowDownlinkBurst - kRowUplinkJitter + 1 == kLinkValueCount, "one table row per LinkValue, in order");
 
 // The link with change c applied (setLinkValue: a jitter set on a link
@@ -96,8 +102,7 @@ inline std::string checkLiveChange(const ControllerSettings& now, const LiveChan
   const bool ua = gainIndex(LawType::kUnderactuated, c.name) >= 0;
   if (!pd && !ua) {
     return "'" + c.name + "' is not a live setting: accepted delay_samples, " +
-           joinKeys(lawGainNames(now.law)) + " (the " + lawName(now.law) + " law's gains), the link's " +
-           "uplink_jitter, uplink_loss, uplink_burst, downlink_delay, downlink_jitter, downlink_loss, downlink_burst";
+           joinKeys(lawGainNames(now.law)) + " (the " + lawName(now.law) + " law's gains), the link's " + linkSettingNames();
   }
   const LawType law = pd ? LawType::kPdSaturated : LawType::kUnderactuated;
   if (law != now.law) {
