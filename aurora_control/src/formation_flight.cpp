@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "aurora_control/formation_judge.h"
 #include "aurora_control/formation_yaml.h"
 #include "aurora_sim/vehicle_yaml.h"
 
@@ -16,16 +17,14 @@ using Line = LineFormation<double>;
 
 // The formation errors (docs/formation.md, "Formation errors"): at every
 // tick k from 10 s on, the layer's held Qd against Q of the positions X_k;
-// RMS of rho, alpha, beta, the formation's horizontal position and height;
-// and the smallest distance between the drones over the whole flight.
+// RMS of rho, alpha, beta, the formation's horizontal position and height.
 class FormationErrors {
  public:
   void add(const FormationObservation<double, Line>& o, double Ts) {
-    double X[6], after[6];
+    double X[6];
     for (int d = 0; d < 2; ++d) {
-      for (int i = 0; i < 3; ++i) X[3 * d + i] = o.X_before[d][i], after[3 * d + i] = o.drones[d].model.X[i];
+      for (int i = 0; i < 3; ++i) X[3 * d + i] = o.X_before[d][i];
     }
-    closest_ = std::min(closest_, std::min(distance(X), distance(after)));
     if (double(o.k) * Ts < 10.0) return;
     double Q[6];
     Line::variables(X, Q);
@@ -38,15 +37,11 @@ class FormationErrors {
   void print() const {
     const auto rms = [&](int i) { return n_ > 0 ? std::sqrt(sum_[i] / double(n_)) : 0.0; };
     std::printf("  RMS formation error after 10 s: rho %.4f m, alpha %.4f rad, beta %.4f rad, position (x, y) %.4f m, "
-                "height %.4f m\n  smallest distance between the drones %.4f m\n",
-                rms(0), rms(1), rms(2), rms(3), rms(4), closest_);
+                "height %.4f m\n", rms(0), rms(1), rms(2), rms(3), rms(4));
   }
 
  private:
-  static double distance(const double X[6]) {
-    return std::sqrt((X[0] - X[3]) * (X[0] - X[3]) + (X[1] - X[4]) * (X[1] - X[4]) + (X[2] - X[5]) * (X[2] - X[5]));
-  }
-  double sum_[5] = {}, closest_ = 1e300;
+  double sum_[5] = {};
   long n_ = 0;
 };
 
@@ -111,12 +106,26 @@ FormationRun<double, Line> loadRun(const FormationFlightOptions& o, const aurora
 
 }  // namespace
 
+// The formation checks (docs/formation.md, "Formation checks"), as a sweep judges them.
+void printChecks(const FormationJudge<double>& judge) {
+  const FormationCriteria<double>& c = judge.criteria;
+  const FormationMetrics<double, bool, Line>& m = judge.metrics;
+  const auto held = [&](int i) { return m.ok[i] ? "held" : "FAILED"; };
+  std::printf("  checks from %.0f s: 1 position error max %.4f m (<= %g) %s; 2 shape error max %.4f m (<= %g) %s;\n"
+              "    3 IAE position %.4f m s (<= %g), shape %.4f m s (<= %g) %s; 4 smallest distance %.4f m (>= %g) %s: %s\n",
+              c.settle_time, m.max_position, c.max_position_error, held(0), m.max_shape, c.max_shape_error, held(1),
+              m.iae_position, c.max_iae_position, m.iae_shape, c.max_iae_shape, held(2), m.closest, c.min_distance,
+              held(3), m.feasible() ? "feasible" : "not feasible");
+}
+
 void flyFormation(const FormationFlightOptions& o) {
   const auto p = aurora_sim::loadVehicleYaml(o.vehicle);
   const FormationFile f = readFormationFile(o.formation, o.config_dir);
   const FormationRun<double, Line> run = loadRun(o, p, f);
-  const long ticks = std::lround(f.reference.duration / p.Ts);  // k = 0 .. ticks - 1 (2700 for 90 s)
+  const long ticks = formationTicks(f.reference.duration, p.Ts);
   FormationErrors errors;
+  FormationJudge<double> judge{FormationCriteria<double>::study(), false, p.Ts, {}, {}};
+  judge.metrics.reset();
   FormationCsv csv(o.csv);
   const long history = formationHistory(run);
   if (history > kMaxDelaySamples) {
@@ -127,6 +136,7 @@ void flyFormation(const FormationFlightOptions& o) {
   auto observe = [&](const FormationObservation<double, Line>& obs) {
     csv.add(obs, p.Ts);
     errors.add(obs, p.Ts);
+    judge(obs);
   };
   withHistoryCapacity(history, [&](auto capacity) {
     withLaw(f.drones[0].controller.law, [&](auto law) {
@@ -138,6 +148,7 @@ void flyFormation(const FormationFlightOptions& o) {
               "%ld ticks in %.3f s\n", o.formation.c_str(), formationLawName(f.law), lawName(f.drones[0].controller.law),
               f.reference.duration, run.drone[0].delay, run.drone[1].delay, ticks, seconds);
   errors.print();
+  printChecks(judge);
 }
 
 }  // namespace aurora_control

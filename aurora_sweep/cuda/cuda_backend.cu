@@ -95,6 +95,13 @@ __global__ void sweepKernel(SimSetup<T> setup, GridView grid, long first, long n
   sweepThread<Law, T, Capacity, Linked>(setup, grid, first, n, out, blockIdx.x, blockDim.x, threadIdx.x);
 }
 
+// A formation sweep's kernel: one formation per thread; its setup (the
+// formation file's run, about 2 kB) is read from device memory.
+template <aurora_control::LawType Law, typename T, int Capacity, bool Linked>
+__global__ void formationKernel(const FormationSetup<T>* setup, GridView grid, long first, long n, SimResult* out) {
+  formationThread<Law, T, Capacity, Linked>(*setup, grid, first, n, out, blockIdx.x, blockDim.x, threadIdx.x);
+}
+
 // Calls f(T(), capacity, law, linked) with the kernel's compile-time
 // parameters for `spec`: its precision, law, history tier (the tiers of
 // withHistoryCapacity up to kMediumHistory; longer histories are refused)
@@ -129,7 +136,15 @@ void withKernelTypes(const SweepSpec& spec, F&& f) {
 template <class F>
 void withKernel(const SweepSpec& spec, F&& f) {
   withKernelTypes(spec, [&](auto type, auto capacity, auto law, auto linked) {
-    f(sweepKernel<decltype(law)::value, decltype(type), decltype(capacity)::value, decltype(linked)::value>);
+    constexpr auto kLaw = decltype(law)::value;
+    using T = decltype(type);
+    constexpr int kCapacity = decltype(capacity)::value;
+    constexpr bool kLinked = decltype(linked)::value;
+    if (spec.formation()) {
+      f(formationKernel<kLaw, T, kCapacity, kLinked>);
+    } else {
+      f(sweepKernel<kLaw, T, kCapacity, kLinked>);
+    }
   });
 }
 
@@ -194,9 +209,18 @@ CudaRun launch(const SweepSpec& spec, int block_size, std::vector<SimResult>& ou
   DeviceArray<SimResult> dev_out(static_cast<size_t>(n));
   CudaEvent start, stop;
   cudaGetLastError();  // a stale error of an earlier, failed call is not this launch's
+  DeviceArray<FormationSetup<T>> formation(spec.formation() ? 1 : 0);
+  if (spec.formation()) {
+    const FormationSetup<T> host = makeFormationSetup<T>(spec);
+    formation.upload(&host);
+  }
   check(cudaEventRecord(start.get()), "cudaEventRecord");
-  sweepKernel<Law, T, Capacity, Linked><<<static_cast<unsigned>(run.grid_size), run.block_size>>>(setup, grid.view, first, n,
-                                                                                         dev_out.get());
+  const unsigned blocks = static_cast<unsigned>(run.grid_size);
+  if (spec.formation()) {
+    formationKernel<Law, T, Capacity, Linked><<<blocks, run.block_size>>>(formation.get(), grid.view, first, n, dev_out.get());
+  } else {
+    sweepKernel<Law, T, Capacity, Linked><<<blocks, run.block_size>>>(setup, grid.view, first, n, dev_out.get());
+  }
   check(cudaGetLastError(), "kernel launch");
   check(cudaEventRecord(stop.get()), "cudaEventRecord");
   check(cudaEventSynchronize(stop.get()), "kernel");

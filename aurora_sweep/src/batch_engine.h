@@ -318,6 +318,16 @@ class BatchWorker {
   long step_ = 0;        // batch steps done: the ring slot written last
 };
 
+}  // namespace
+
+}  // namespace aurora_sweep
+
+#include "formation_lanes.h"
+
+namespace aurora_sweep {
+
+namespace {
+
 template <typename T, class Arch, int Capacity, aurora_control::LawType Law>
 void runBatchWith(const SweepSpec& spec, int threads, std::vector<SimResult>& out,
                   Progress& progress) {
@@ -325,7 +335,13 @@ void runBatchWith(const SweepSpec& spec, int threads, std::vector<SimResult>& ou
   std::atomic<long> next{spec.rangeBegin()};
   std::vector<std::thread> pool;
   for (int t = 0; t < threads; ++t) {
-    pool.emplace_back([&] { BatchWorker<T, Arch, Capacity, Law>(spec, out, next, progress).run(); });
+    pool.emplace_back([&] {
+      if (spec.formation()) {
+        FormationBatch<T, Arch, Capacity, Law>(spec, out, next, progress).run();
+      } else {
+        BatchWorker<T, Arch, Capacity, Law>(spec, out, next, progress).run();
+      }
+    });
   }
   for (auto& th : pool) th.join();
 }

@@ -65,7 +65,7 @@ ChunkWork runChunks(const SweepSpec& spec, const ChunkStore& store, ChunkSource&
 Counts mergeChunks(const SweepSpec& spec, const ChunkStore& store,
                    const std::vector<ResultsWriter*>& writers, const ChunkConsumer& consume,
                    std::vector<double>* writer_s, std::map<std::string, long>* chunks_by) {
-  const long iterations = aurora_control::studyIterationCount(spec.duration(), spec.vehicle.Ts);
+  const long iterations = spec.iterations();
   Counts counts;
   std::vector<SimResult> chunk;
   std::vector<double> seconds(writers.size(), 0.0);

@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <iterator>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
@@ -143,6 +144,12 @@ uint32_t definitionHash(const SweepSpec& spec) {
     for (int id = kParamCountBeforeLinks; id < kParamCount; ++id) crc.add(spec.fixed[id]);
     crc.add(spec.repeats);
   }
+  if (spec.formation()) {  // the formation file's text, the formation's criteria and parameters
+    std::ifstream f(spec.formation_file);
+    crc.add(std::string(std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>()));
+    crc.add(spec.formation_criteria);
+    for (int id = kParamFirstDroneDelay; id < kParamCount; ++id) crc.add(spec.fixed[id]);
+  }
   return crc.value();
 }
 
@@ -156,7 +163,7 @@ const std::vector<std::string>& sweepOutputFiles() {
   static const std::vector<std::string> files{
       "results.csv", "results.h5", "summary.json", "feasible_volume.png", "feasible_marginals.png",
       "feasible_pairs.png", "max_tolerable_delay.png", "check1_region.png",
-      "check2_region.png", "check3_region.png", "check4_region.png", "feasible_share.csv", "feasible_share.png"};
+      "check2_region.png", "check3_region.png", "check4_region.png", "feasible_share.csv", "feasible_share.png", "formation_delays.png"};
   return files;
 }
 

@@ -2,6 +2,7 @@
 
 #include <limits>
 
+#include "aurora_control/formation_layer.h"
 #include "aurora_control/limits.h"
 #include "aurora_control/link.h"
 #include "aurora_control/parameter_table.h"
@@ -42,6 +43,16 @@ std::vector<ParamInfo> makeTable() {
                                    row.kind == ParamKind::kWholeSamples};
   }
   t[kParamRepeat] = {"repeat", ParamGroup::kRepeat, 0.0, 1e9, "which link seed (sweep.repeats)", true};
+  for (int d = 0; d < kFormationDroneCount; ++d) {
+    t[kParamFirstDroneDelay + d] = {"delay_" + std::to_string(d + 1), ParamGroup::kDroneDelay, 0.0,
+                                    double(kMaxDelaySamples), "whole samples of Ts, the histories' limit", true};
+  }
+  const char* variable[6] = {"x", "y", "z", "rho", "alpha", "beta"};
+  for (int i = 0; i < kFormationGainCount; ++i) {
+    t[kParamFirstFormationGain + i] = {std::string(i < 6 ? "formation_k1_" : "formation_k2_") + variable[i % 6],
+                                       ParamGroup::kFormationGain, kUnderactuatedGainMin, kUnderactuatedGainMax,
+                                       "a formation gain: positive, as the underactuated law's"};
+  }
   return t;
 }
 
@@ -59,19 +70,23 @@ int paramIdOf(const std::string& name) {
   return -1;
 }
 
-bool paramApplies(int id, aurora_control::LawType law) {
-  switch (paramInfo(id).group) {
+bool paramApplies(int id, aurora_control::LawType law, bool formation) {
+  const ParamGroup group = paramInfo(id).group;
+  if (formation) return group == ParamGroup::kDroneDelay || group == ParamGroup::kFormationGain || group == ParamGroup::kLink;
+  switch (group) {
     case ParamGroup::kPdGain: return law == aurora_control::LawType::kPdSaturated;
     case ParamGroup::kUnderactuatedGain: return law == aurora_control::LawType::kUnderactuated;
     case ParamGroup::kRepeat: return false;  // sweep.repeats, not a parameter
+    case ParamGroup::kDroneDelay:
+    case ParamGroup::kFormationGain: return false;  // a formation sweep's
     default: return true;
   }
 }
 
-std::string acceptedParamNames(aurora_control::LawType law) {
+std::string acceptedParamNames(aurora_control::LawType law, bool formation) {
   std::string names;
   for (int id = 0; id < kParamCount; ++id) {
-    if (paramApplies(id, law)) names += (names.empty() ? "" : ", ") + paramInfo(id).name;
+    if (paramApplies(id, law, formation)) names += (names.empty() ? "" : ", ") + paramInfo(id).name;
   }
   return names;
 }
@@ -96,6 +111,11 @@ double paramDefault(int id) {
     case ParamGroup::kModelFactor: return 1.0;
     case ParamGroup::kLink: return aurora_control::linkValueOf(aurora_control::LinkParams(), id - kParamFirstLinkValue);
     case ParamGroup::kRepeat: return 0.0;
+    case ParamGroup::kFormationGain: {
+      const auto g = aurora_control::FormationGains<double, 6>::lineDefaults();
+      const int i = id - kParamFirstFormationGain;
+      return i < 6 ? g.k1[i] : g.k2[i - 6];
+    }
     default: return std::numeric_limits<double>::quiet_NaN();
   }
 }

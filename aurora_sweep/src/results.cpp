@@ -29,7 +29,8 @@ class CsvWriter : public ResultsWriter {
     if (!f_) throw std::runtime_error("cannot write '" + path + "'");
     std::fprintf(f_, "index");
     for (int id : params_) std::fprintf(f_, ",%s", paramName(id));
-    for (const ResultColumn& c : kResultColumns) std::fprintf(f_, ",%s", c.name);
+    const ResultColumn* columns = resultColumns(spec.formation());
+    for (int k = 0; k < kResultColumnCount; ++k) std::fprintf(f_, ",%s", columns[k].name);
     std::fprintf(f_, "\n");
   }
   ~CsvWriter() override {
@@ -195,10 +196,11 @@ void writeResultsCsv(const std::string& path, const SweepSpec& spec,
 namespace {
 
 // result_columns.h as JSON: what plot_sweep and other readers go by.
-nlohmann::json resultColumnsJson() {
+nlohmann::json resultColumnsJson(bool formation) {
   const char* types[] = {"flag", "double", "int32", "float"};
   nlohmann::json columns = nlohmann::json::array();
-  for (const ResultColumn& c : kResultColumns) {
+  for (int k = 0; k < kResultColumnCount; ++k) {
+    const ResultColumn& c = resultColumns(formation)[k];
     columns.push_back({{"name", c.name}, {"type", types[static_cast<int>(c.type)]}, {"unit", c.unit},
                        {"doc", c.doc}});
   }
@@ -231,7 +233,7 @@ void writeSummaryJson(const std::string& path, const SweepSpec& spec, const RunI
       {"vehicle_file", spec.vehicle_file},
       {"controller", spec.controller},
       {"parameters", parameters},
-      {"result_columns", resultColumnsJson()},
+      {"result_columns", resultColumnsJson(spec.formation())},
       {"link", spec.linkIdeal() ? json("ideal") : spec.link_file.empty() ? json("the link parameters") : json(spec.link_file)},
       {"repeats", spec.repeats},
       {"fixed", fixed},
@@ -257,6 +259,13 @@ void writeSummaryJson(const std::string& path, const SweepSpec& spec, const RunI
       {"control_steps_per_s", steps_per_s},
       {"note", info.note},
   };
+  if (spec.formation()) {
+    const auto& c = spec.formation_criteria;
+    j["formation_file"] = spec.formation_file;
+    j["formation_criteria"] = {{"settle_time", c.settle_time}, {"max_position_error", c.max_position_error},
+                               {"max_shape_error", c.max_shape_error}, {"max_iae_position", c.max_iae_position},
+                               {"max_iae_shape", c.max_iae_shape}, {"min_distance", c.min_distance}};
+  }
   if (!spec.points_file.empty()) j["points_file"] = spec.points_file;
   j["design"] = spec.design;
   if (spec.design != "grid") j["design_samples"] = {{"samples", spec.samples}, {"seed", spec.seed}};

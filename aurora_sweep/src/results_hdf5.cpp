@@ -54,7 +54,7 @@ class Hdf5Writer : public ResultsWriter {
       columns_.push_back(id == kParamDelay ? Column{paramName(id), H5T_NATIVE_INT64, 8}
                                            : Column{paramName(id), H5T_NATIVE_DOUBLE, 8});
     }
-    for (const ResultColumn& c : kResultColumns) columns_.push_back(columnOf(c));
+    for (int k = 0; k < kResultColumnCount; ++k) columns_.push_back(columnOf(resultColumns(spec.formation())[k]));
     const hsize_t zero = 0, unlimited = H5S_UNLIMITED, chunk = kRowsPerChunk;
     const hid_t space = H5Screate_simple(1, &zero, &unlimited);
     const hid_t props = H5Pcreate(H5P_DATASET_CREATE);

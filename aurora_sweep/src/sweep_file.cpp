@@ -13,6 +13,7 @@
 #include "aurora_control/positioning_runner.h"
 #include "aurora_control/task_yaml.h"
 #include "aurora_sweep/design.h"
+#include "sweep_file_formation.h"
 #include "aurora_sim/vehicle_yaml.h"
 
 namespace aurora_sweep {
@@ -46,13 +47,18 @@ std::string resolve(const std::string& name, const std::string& sweep_dir,
   return sweep_dir + "/" + name;
 }
 
+// What the accepted names are for: "the pd_saturated controller", "a formation sweep".
+std::string sweepKind(const SweepSpec& spec) {
+  return spec.formation() ? std::string("a formation sweep (its drones' delays, the formation's gains, the link's values)")
+                          : "the " + spec.controller + " controller";
+}
+
 // A parameter named in the file, for the sweep's controller: its ParamId,
 // or a refusal listing the names that controller accepts.
 int paramOf(const Reader& r, const SweepSpec& spec, const std::string& name, const std::string& key) {
   const int id = paramIdOf(name);
-  if (id < 0 || !paramApplies(id, spec.law)) {
-    r.fail(key, "is not a parameter of the " + spec.controller + " controller: accepted " +
-                    acceptedParamNames(spec.law));
+  if (id < 0 || !spec.accepts(id)) {
+    r.fail(key, "is not a parameter of " + sweepKind(spec) + ": accepted " + acceptedParamNames(spec.law, spec.formation()));
   }
   return id;
 }
@@ -255,7 +261,7 @@ struct Varied {
 
 Varied readParameters(const Reader& r, const YAML::Node& params, bool design, bool points, SweepSpec& spec) {
   if (!params.IsMap()) r.fail("sweep.parameters", "must be a mapping of parameter names: accepted " +
-                                                      acceptedParamNames(spec.law));
+                                                      acceptedParamNames(spec.law, spec.formation()));
   std::map<int, YAML::Node> entries;
   for (const auto& kv : params) {
     const std::string name = kv.first.as<std::string>();
@@ -328,7 +334,8 @@ void orderAxes(const Reader& r, const YAML::Node& s, std::vector<Axis> axes, Swe
 // Every parameter the law needs has a value: given, varied or a default.
 void requireAll(const Reader& r, const SweepSpec& spec) {
   for (int id = 0; id < kParamCount; ++id) {
-    if (paramApplies(id, spec.law) && std::isnan(spec.fixed[id]) && !spec.varies(id)) {
+    const bool own_link = spec.formation() && paramInfo(id).group == ParamGroup::kLink;  // NaN: each drone's own
+    if (spec.accepts(id) && !own_link && std::isnan(spec.fixed[id]) && !spec.varies(id)) {
       r.fail(std::string("sweep.parameters.") + paramName(id), "is missing: the " + spec.controller +
                  " controller has no default for it; give a value or a range (or a points column)");
     }
@@ -373,7 +380,7 @@ void readCombinations(const Reader& r, const YAML::Node& s, const std::string& s
   const YAML::Node params = s["parameters"];
   if (!params && !has_points) {
     r.fail("sweep.parameters", "is missing: give each parameter a value or a range (accepted " +
-                                   acceptedParamNames(spec.law) + "), or 'points'");
+                                   acceptedParamNames(spec.law, spec.formation()) + "), or 'points'");
   }
   const Varied varied = params ? readParameters(r, params, design, has_points, spec) : Varied();
   if (has_points) {
@@ -390,10 +397,15 @@ void readCombinations(const Reader& r, const YAML::Node& s, const std::string& s
     orderAxes(r, s, varied.axes, spec);
   }
   requireAll(r, spec);
-  spec.max_delay = static_cast<long>(spec.maxValue(kParamDelay));
-  // A design's delay range counts whole, whichever samples it happened to draw.
-  for (size_t j = 0; j < varied.sampled.size(); ++j) {
-    if (varied.sampled[j] == kParamDelay) spec.max_delay = std::max(spec.max_delay, static_cast<long>(varied.ranges[j].to));
+  const std::vector<int> delays = spec.formation() ? std::vector<int>{kParamFirstDroneDelay, kParamFirstDroneDelay + 1}
+                                                   : std::vector<int>{kParamDelay};
+  spec.max_delay = 0;
+  for (int id : delays) {
+    spec.max_delay = std::max(spec.max_delay, static_cast<long>(spec.maxValue(id)));
+    // A design's delay range counts whole, whichever samples it happened to draw.
+    for (size_t j = 0; j < varied.sampled.size(); ++j) {
+      if (varied.sampled[j] == id) spec.max_delay = std::max(spec.max_delay, static_cast<long>(varied.ranges[j].to));
+    }
   }
 }
 
@@ -420,6 +432,7 @@ void readRepeats(const Reader& r, const YAML::Node& node, SweepSpec& spec) {
 // loss with the smallest burst above 1 of each direction; the history holds
 // the largest delay plus jitter; repeats draw something.
 void checkSweepLink(const Reader& r, SweepSpec& spec) {
+  if (spec.formation()) return checkFormationLinks(r, spec);
   for (int i = 0; i < kLinkParamCount; ++i) aurora_control::setLinkValue(spec.link, i, spec.fixed[kParamFirstLinkValue + i]);
   for (const int loss_value : {aurora_control::kLinkUplinkLoss, aurora_control::kLinkDownlinkLoss}) {
     const int loss = kParamFirstLinkValue + loss_value, burst = loss + 1;
@@ -464,7 +477,7 @@ SweepSpec parseSweepFile(const std::string& path, const std::string& config_dir)
   r.onlyKeys(root, "", {"sweep"});
   const YAML::Node s = root["sweep"];
   if (!s) r.fail("sweep", "is missing: the file's top level must be 'sweep:'");
-  r.onlyKeys(s, "sweep", {"name", "controller", "vehicle", "task", "parameters", "order", "points",
+  r.onlyKeys(s, "sweep", {"name", "controller", "vehicle", "task", "formation", "parameters", "order", "points",
                           "criteria", "early_stop", "clamp_commands", "precision", "design", "samples",
                           "seed", "link", "repeats"});
   SweepSpec spec;
@@ -484,9 +497,14 @@ SweepSpec parseSweepFile(const std::string& path, const std::string& config_dir)
   spec.vehicle_file = resolve(vehicle, sweep_dir, config_dir);
   spec.vehicle = aurora_sim::loadVehicleYaml(spec.vehicle_file);
 
+  if (s["formation"]) {
+    const std::string file = resolve(r.text(s["formation"], "sweep.formation"), sweep_dir, config_dir);
+    readSweepFormation(r, s, file, config_dir, spec);
+  }
   if (s["task"]) readSweepTask(r, s["task"], sweep_dir, config_dir, spec);
 
-  if (s["criteria"]) readCriteria(r, s["criteria"], spec.criteria);
+  if (s["criteria"] && spec.formation()) readFormationCriteria(r, s["criteria"], spec.formation_criteria);
+  if (s["criteria"] && !spec.formation()) readCriteria(r, s["criteria"], spec.criteria);
   readRunOptions(r, s, spec);
 
   if (s["link"]) readSweepLink(r, s["link"], sweep_dir, config_dir, spec);
@@ -500,9 +518,9 @@ SweepSpec parseSweepFile(const std::string& path, const std::string& config_dir)
 
 SweepSpec loadSweepFile(const std::string& path, const std::string& config_dir) {
   SweepSpec spec = parseSweepFile(path, config_dir);
-  const long iterations = aurora_control::studyIterationCount(spec.duration(), spec.vehicle.Ts);
+  const long iterations = spec.iterations();
   if (!aurora_control::delayShorterThanRun(spec.max_delay, iterations)) {
-    Reader(path).fail(spec.points_file.empty() ? "sweep.parameters.delay" : "sweep.points",
+    Reader(path).fail(!spec.points_file.empty() ? "sweep.points" : spec.formation() ? "sweep.parameters" : "sweep.parameters.delay",
                       "= " + aurora_control::delayRunText(spec.max_delay, iterations,
                                                                            spec.vehicle.Ts));
   }

@@ -258,6 +258,30 @@ TEST(CudaBackend, LinkSweepsMatchCpu) {
   }
 }
 
+// Formation sweeps, one formation per thread (docs/formation.md, "Formation
+// sweeps"): both laws, double and float, ideal and over lossy links with
+// repeats, in launches of 5, against the scalar loop (the same code).
+// Delays up to 15 samples: beyond, the flights swing so hard that last-bit
+// differences grow into other outcomes.
+TEST(CudaBackend, FormationSweepsMatchTheScalarLoop) {
+  SKIP_WITHOUT_DEVICE();
+  const std::string grid = "  parameters:\n    delay_1: {values: [0, 9, 15]}\n    delay_2: {values: [0, 15]}\n"
+                           "    formation_k1_rho: {values: [0.75, 1.5]}\n";
+  const std::string lossy = grid + "    uplink_jitter: 2\n    uplink_loss: 0.1\n    downlink_loss: 0.05\n  repeats: 3\n";
+  for (const char* file : {"line_lemniscate", "line_lemniscate_ik"}) {
+    for (const std::string& body : {grid, lossy}) {
+      SweepSpec spec = loadSweepFile(test::writeTemp(std::string("cuda_formation_") + file + ".yaml",
+          std::string("sweep:\n  early_stop: false\n  formation: formations/") + file + ".yaml\n" + body), AURORA_CONFIG_DIR);
+      EXPECT_EQ(fieldDifferences(cudaInChunks(spec, 5), test::runOn("scalar", spec)), 0) << file << " double";
+      spec.precision = Precision::kFloat;
+      const std::vector<SimResult> gpu = cudaInChunks(spec, 5), cpu = test::runOn("scalar", spec);
+      long flags = 0;
+      for (size_t i = 0; i < cpu.size(); ++i) flags += gpu[i].ok != cpu[i].ok || gpu[i].steps != cpu[i].steps;
+      EXPECT_EQ(flags, 0) << file << " float";
+    }
+  }
+}
+
 // Launch limits are known before the run: a block too large for the
 // kernel's registers is refused with the largest accepted.
 TEST(CudaBackend, LaunchProblemsAreKnownBeforeTheRun) {

@@ -48,13 +48,14 @@ class FormationLayer {
   // Q of X, Q~ = Qd - Q (no angle wrapping), dQd the backward difference over
   // the period, v = dQd + K1 tanh(K2 Q~), dXr of v by the law, Xr += dXr T_F.
   AURORA_HD void update(const T X[kN], const T Qd[kN]) {
+    using std::tanh;
     Shape::variables(X, Q_);
     T v[kN];
     for (int i = 0; i < kN; ++i) {
       Qd_[i] = Qd[i];
       Qtil_[i] = Qd[i] - Q_[i];
       dQd_[i] = (Qd[i] - Qd_prev_[i]) / period_;
-      v[i] = dQd_[i] + gains_.k1[i] * std::tanh(gains_.k2[i] * Qtil_[i]);
+      v[i] = dQd_[i] + gains_.k1[i] * tanh(gains_.k2[i] * Qtil_[i]);
       Qd_prev_[i] = Qd[i];
     }
     Shape::velocities(law_, X, v, dXr_);

@@ -23,13 +23,14 @@ struct FormationReference {
   // Qd at time t (eq. F8): tp = (3 (t/T)^2 - 2 (t/T)^3) T, w = 2 pi / T,
   // xF = x + rX sin(w tp), yF = y + rY sin(2 w tp); the rest fixed.
   AURORA_HD void at(const T& t, T Qd[N]) const {
+    using std::sin;
     for (int i = 0; i < N; ++i) Qd[i] = Q[i];
     if (path != FormationPath::kLemniscate) return;
     const T s = t / duration;
     const T tp = (T(3) * s * s - T(2) * s * s * s) * duration;
     const T w = T(2) * T(3.14159265358979323846) / duration;
-    Qd[0] += amplitude[0] * std::sin(w * tp);
-    Qd[1] += amplitude[1] * std::sin(T(2) * w * tp);
+    Qd[0] += amplitude[0] * sin(w * tp);
+    Qd[1] += amplitude[1] * sin(T(2) * w * tp);
   }
 };
 

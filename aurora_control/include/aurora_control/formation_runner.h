@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cmath>
+#include <type_traits>
 #include <vector>
 
 #include "aurora_control/closed_loop.h"
@@ -63,20 +64,15 @@ struct FormationObservation {
   const FormationLayer<T, Shape>& layer;
 };
 
-// `iterations` ticks of law `Law` on every drone, drone d over links[d]
-// (IdealLink or ModelLink), histories of `Capacity` samples (every drone's
-// history below it, checked by the caller).
-template <LawType Law, typename T, class Shape, int Capacity, typename Observer, typename Link>
-void runFormationOver(const FormationRun<T, Shape>& run, long iterations, Observer& observe, Link* links) {
-  constexpr int D = Shape::kDrones, N = Shape::kVariables;
-  using Sample = LawSample<T, Law>;
-  FormationLayer<T, Shape> layer(run.law, run.gains, T(run.period_steps) * run.drone[0].plant.Ts);
-  LoopParams<T> params[D];
-  LoopState<T, bool> state[D];
-  DelayBuffer<Sample, Capacity> history[D];
-  HeldReference<T> held[D];
+// Each drone's fixed parameters (its plant, model and gains; the study's
+// single-drone criteria, which a formation does not judge) and its state at
+// rest at its start; the layer started on the starts and Qd(0).
+template <typename T, class Shape, typename Mask>
+AURORA_HD inline void startFormation(const FormationRun<T, Shape>& run, LoopParams<T>* params, LoopState<T, Mask>* state,
+                                     FormationLayer<T, Shape>& layer) {
+  constexpr int N = Shape::kVariables;
   T X0[N], Qd[N];
-  for (int d = 0; d < D; ++d) {
+  for (int d = 0; d < Shape::kDrones; ++d) {
     params[d] = LoopParams<T>{run.drone[d].plant, run.drone[d].model, run.drone[d].gains,
                               FeasibilityCriteria<T>::study()};
     state[d].reset(run.drone[d].start);
@@ -84,36 +80,84 @@ void runFormationOver(const FormationRun<T, Shape>& run, long iterations, Observ
   }
   run.reference.at(T(0), Qd);
   layer.start(X0, Qd);
+}
+
+// Steps 2-3 of tick k (docs/formation.md, "One tick") on the states xc the
+// drones' uplinks delivered: the layer when `Qd` is given (a period is
+// due), then each drone's law towards its held reference, its command
+// through downlink(d, U) and one model step. Scalars or SIMD batches (one
+// formation per lane, every lane at the same tick).
+template <LawType Law, typename T, typename Mask, class Shape, class Downlink>
+AURORA_HD inline void formationTick(const LoopParams<T>* params, const ClampPolicy& clamp,
+                                    FormationLayer<T, Shape>& layer, const T* Qd, const T& k,
+                                    const T (*xc)[aurora_sim::kStateSize], LoopState<T, Mask>* state,
+                                    LoopStep<T>* step, Downlink&& downlink) {
+  constexpr int D = Shape::kDrones;
+  if (Qd) {
+    T seen[Shape::kVariables];
+    for (int d = 0; d < D; ++d) {
+      for (int i = 0; i < 3; ++i) seen[3 * d + i] = xc[d][aurora_sim::kX + i];
+    }
+    layer.update(seen, Qd);
+  }
+  for (int d = 0; d < D; ++d) {
+    HeldReference<T> held;
+    held.hold(layer.position(d), layer.velocity(d));
+    T U[4];
+    step[d].ref = controllerHalf<Law>(params[d], held, clamp, k, xc[d], state[d], U);
+    downlink(d, U);
+    droneHalf(params[d], clamp, step[d].ref, U, state[d], step[d].U);
+  }
+}
+
+// An observer may return whether to go on (false: stop the run, an early
+// stop), or nothing (run to the end).
+template <class Observer, class Observation>
+AURORA_HD inline auto observeTick(Observer& observe, const Observation& o)
+    -> typename std::enable_if<std::is_void<decltype(observe(o))>::value, bool>::type {
+  observe(o);
+  return true;
+}
+template <class Observer, class Observation>
+AURORA_HD inline auto observeTick(Observer& observe, const Observation& o)
+    -> typename std::enable_if<!std::is_void<decltype(observe(o))>::value, bool>::type {
+  return observe(o);
+}
+
+// `iterations` ticks of law `Law` on every drone, drone d over links[d]
+// (IdealLink or ModelLink), histories of `Capacity` samples (every drone's
+// history below it, checked by the caller). Returns the ticks run.
+template <LawType Law, typename T, class Shape, int Capacity, typename Observer, typename Link>
+AURORA_HD long runFormationOver(const FormationRun<T, Shape>& run, long iterations, Observer& observe, Link* links) {
+  constexpr int D = Shape::kDrones, N = Shape::kVariables;
+  using Sample = LawSample<T, Law>;
+  FormationLayer<T, Shape> layer(run.law, run.gains, T(run.period_steps) * run.drone[0].plant.Ts);
+  LoopParams<T> params[D];
+  LoopState<T, bool> state[D];
+  DelayBuffer<Sample, Capacity> history[D];
+  startFormation(run, params, state, layer);
   for (long k = 0; k < iterations; ++k) {
-    T xc[D][aurora_sim::kStateSize], before[D][aurora_sim::kStateSize], seen[N];
+    T xc[D][aurora_sim::kStateSize], before[D][aurora_sim::kStateSize], Qd[N];
     for (int d = 0; d < D; ++d) {
       for (int i = 0; i < aurora_sim::kStateSize; ++i) before[d][i] = state[d].model.X[i];
       history[d].push(Sample::fromState(state[d].model.X));
       history[d].at(links[d].uplinkIndex(k)).toState(xc[d]);
-      for (int i = 0; i < 3; ++i) seen[3 * d + i] = xc[d][aurora_sim::kX + i];
     }
     const bool due = k % run.period_steps == 0;
-    if (due) {
-      run.reference.at(taskTime(T(k), run.drone[0].plant.Ts), Qd);
-      layer.update(seen, Qd);
-    }
+    if (due) run.reference.at(taskTime(T(k), run.drone[0].plant.Ts), Qd);
     LoopStep<T> step[D];
-    for (int d = 0; d < D; ++d) {
-      held[d].hold(layer.position(d), layer.velocity(d));
-      T U[4];
-      step[d].ref = controllerHalf<Law>(params[d], held[d], run.clamp, T(k), xc[d], state[d], U);
-      links[d].downlink(k, U, U);
-      droneHalf(params[d], run.clamp, step[d].ref, U, state[d], step[d].U);
-    }
-    observe(FormationObservation<T, Shape>{k, due, before, state, step, layer});
+    formationTick<Law>(params, run.clamp, layer, due ? Qd : nullptr, T(k), xc, state, step,
+                       [&](int d, T U[4]) { links[d].downlink(k, U, U); });
+    if (!observeTick(observe, FormationObservation<T, Shape>{k, due, before, state, step, layer})) return k + 1;
   }
+  return iterations;
 }
 
 // Every drone over its own link: today's delay rule when every link is
 // ideal, else each drone's link model, its draws keyed by the drone's index
 // (two drones over one link file lose different packets).
 template <LawType Law, typename T, class Shape, int Capacity, typename Observer>
-void runFormation(const FormationRun<T, Shape>& run, long iterations, Observer& observe) {
+long runFormation(const FormationRun<T, Shape>& run, long iterations, Observer& observe) {
   constexpr int D = Shape::kDrones;
   bool ideal = true;
   for (int d = 0; d < D; ++d) ideal = ideal && run.drone[d].link.ideal();
@@ -127,8 +171,12 @@ void runFormation(const FormationRun<T, Shape>& run, long iterations, Observer& 
   for (int d = 0; d < D; ++d) {
     links.emplace_back(run.drone[d].link, run.drone[d].delay, static_cast<uint64_t>(d), double(run.drone[d].plant.Ts));
   }
-  runFormationOver<Law, T, Shape, Capacity>(run, iterations, observe, links.data());
+  return runFormationOver<Law, T, Shape, Capacity>(run, iterations, observe, links.data());
 }
+
+// The ticks k = 0 .. n - 1 of a formation flight of `duration` [s] (2700
+// for 90 s): the flight tool's and every sweep backend's.
+inline long formationTicks(double duration, double Ts) { return std::lround(duration / Ts); }
 
 // The history drone d's link needs (its uplink delay plus jitter, or its
 // command path's).

@@ -31,22 +31,31 @@ struct LineFormation {
   // position is drone 1's, rho the distance to drone 2, alpha = asin(dx /
   // rho), beta = asin(dy / rho).
   AURORA_HD static void variables(const T X[6], T Q[6]) {
+    using std::asin;
+    using std::sqrt;
     const T d[3] = {X[3] - X[0], X[4] - X[1], X[5] - X[2]};
-    const T rho = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    const T rho = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
     for (int i = 0; i < 3; ++i) Q[i] = X[i];
     Q[3] = rho;
-    Q[4] = std::asin(d[0] / rho);
-    Q[5] = std::asin(d[1] / rho);
+    Q[4] = asin(d[0] / rho);
+    Q[5] = asin(d[1] / rho);
+  }
+
+  // The formation's position of positions X: drone 1's.
+  AURORA_HD static void formationPosition(const T X[6], T p[3]) {
+    for (int i = 0; i < 3; ++i) p[i] = X[i];
   }
 
   // The positions of Q (eq. F2), drone 2 above drone 1: the inverse
   // transform cannot tell above from below. Needs sin^2 alpha + sin^2 beta <= 1.
   AURORA_HD static void positions(const T Q[6], T X[6]) {
-    const T sa = std::sin(Q[4]), sb = std::sin(Q[5]);
+    using std::sin;
+    using std::sqrt;
+    const T sa = sin(Q[4]), sb = sin(Q[5]);
     for (int i = 0; i < 3; ++i) X[i] = Q[i];
     X[3] = Q[0] + Q[3] * sa;
     X[4] = Q[1] + Q[3] * sb;
-    X[5] = Q[2] + Q[3] * std::sqrt(T(1) - sa * sa - sb * sb);
+    X[5] = Q[2] + Q[3] * sqrt(T(1) - sa * sa - sb * sb);
   }
 
   // The drones' velocities dX (6) for formation velocity v at positions X,
@@ -72,10 +81,11 @@ struct LineFormation {
   // changes (rho, alpha, beta) at the rates vs, with sigma = dz / rho signed
   // (drone 2 below drone 1 as well).
   AURORA_HD static void shapeVelocity(const T X[6], const T vs[3], T out[3]) {
+    using std::sqrt;
     const T d[3] = {X[3] - X[0], X[4] - X[1], X[5] - X[2]};
-    const T rho = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    const T rho = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
     const T sa = d[0] / rho, sb = d[1] / rho, sigma = d[2] / rho;
-    const T ca = std::sqrt(d[1] * d[1] + d[2] * d[2]) / rho, cb = std::sqrt(d[0] * d[0] + d[2] * d[2]) / rho;
+    const T ca = sqrt(d[1] * d[1] + d[2] * d[2]) / rho, cb = sqrt(d[0] * d[0] + d[2] * d[2]) / rho;
     out[0] = sa * vs[0] + rho * ca * vs[1];
     out[1] = sb * vs[0] + rho * cb * vs[2];
     out[2] = sigma * vs[0] - rho * sa * ca / sigma * vs[1] - rho * sb * cb / sigma * vs[2];

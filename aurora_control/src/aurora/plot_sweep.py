@@ -166,6 +166,39 @@ def link_margins(np, plt, cols, feasible, summary, out):
     plt.close(fig)
 
 
+def formation_delays(np, plt, cols, ok, summary, out):
+    """A formation sweep varying both drones' delays: the share of the runs
+    at each (delay_1, delay_2) that were feasible (over the link seeds and
+    any other varied value); without early stop also the share that held
+    each check, so the check that binds shows (with early stop a check not
+    reached is not a check held). docs/formation.md, "Formation sweeps"."""
+    if not {"delay_1", "delay_2"} <= set(cols) or "formation_file" not in summary:
+        return
+    d1, d2 = cols["delay_1"], cols["delay_2"]
+    u1, u2 = np.unique(d1), np.unique(d2)
+    if len(u1) < 2 or len(u2) < 2:
+        return
+    cells = np.searchsorted(u2, d2) * len(u1) + np.searchsorted(u1, d1)
+    names = {"feasible": "feasible", "ok1": "check 1: position error", "ok2": "check 2: shape error",
+             "ok3": "check 3: error integrals", "ok4": "check 4: no collision"}
+    if summary.get("early_stop", True):
+        names = {"feasible": "feasible"}
+    fig, axes = plt.subplots(1, len(names), figsize=(4.6 * len(names) + 1.4, 4.4), squeeze=False)
+    axes = list(axes[0])
+    for ax, (key, title) in zip(axes, names.items()):
+        grid = share(np, cells, ok[key], len(u1) * len(u2)).reshape(len(u2), len(u1))
+        im = ax.pcolormesh(cell_edges(np, u1), cell_edges(np, u2), grid, cmap="viridis", vmin=0, vmax=1)
+        cs = ax.contour(u1, u2, grid, levels=[0.5, 0.9], colors=["w", "r"], linewidths=1.2)
+        ax.clabel(cs, fmt={0.5: "50 %", 0.9: "90 %"}, fontsize=8)
+        ax.set_xlabel("drone 1's delay [samples]")
+        ax.set_ylabel("drone 2's delay [samples]")
+        ax.set_title(title, fontsize=10)
+    fig.colorbar(im, ax=axes, label="share of the runs (%d link seeds each)" % summary.get("repeats", 1))
+    fig.suptitle("%s: %s" % (summary.get("name", "sweep"), os.path.basename(summary["formation_file"])), fontsize=10)
+    fig.savefig(os.path.join(out, "formation_delays.png"), dpi=90)
+    plt.close(fig)
+
+
 def max_tolerable_delay(np, plt, kp, kd, delay, feasible, summary, out):
     """For each (Kp, Kd): the largest d such that every delay up to d is
     feasible (-1 when delay 0 already fails): the thesis's question."""
@@ -285,6 +318,7 @@ def main(argv):
     marginals(np, plt, params, ok["feasible"], summary, out)
     pairs(np, plt, params, ok["feasible"], summary, out)
     link_margins(np, plt, cols, ok["feasible"], summary, out)
+    formation_delays(np, plt, cols, ok, summary, out)
     # The (Kp, Kd, delay) figures of the thesis: the PD law's grids.
     if not {"kp", "kd", "delay"} <= set(names):
         return 0

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "aurora_control/limits.h"
+#include "aurora_sweep/formation_simulation.h"
 #include "aurora_sweep/simulation.h"
 #include "aurora_sweep/sweep_spec.h"
 
@@ -27,8 +28,19 @@ SimSetup<T> makeSetup(const SweepSpec& spec) {
   s.config.clamp_commands = spec.clamp_commands;
   s.config.early_stop = spec.early_stop;
   s.config.link = spec.link;
-  s.iterations = aurora_control::studyIterationCount(spec.duration(), spec.vehicle.Ts);
+  s.iterations = spec.iterations();
   s.varies_model = spec.variesModel();
+  s.ideal_link = spec.linkIdeal();
+  return s;
+}
+
+template <typename T>
+FormationSetup<T> makeFormationSetup(const SweepSpec& spec) {
+  FormationSetup<T> s;
+  s.run = castFormationRun<T>(spec.formation_run);
+  s.criteria = spec.formation_criteria.cast<T>();
+  s.iterations = spec.iterations();
+  s.early_stop = spec.early_stop;
   s.ideal_link = spec.linkIdeal();
   return s;
 }
@@ -56,13 +68,21 @@ template <class Loop>
 void runEachCombination(const SweepSpec& spec, std::vector<SimResult>& out, Progress& progress, Loop&& loop) {
   withSweepTypes(spec, [&](auto type, auto capacity, auto law) {
     using T = decltype(type);
-    const SimSetup<T> setup = makeSetup<T>(spec);
+    constexpr aurora_control::LawType kLaw = decltype(law)::value;
+    constexpr int kCapacity = decltype(capacity)::value;
     const GridView grid = spec.view();
     const long first = spec.rangeBegin();
     out.resize(spec.rangeSize());
+    if (spec.formation()) {
+      const FormationSetup<T> setup = makeFormationSetup<T>(spec);
+      return loop(spec.rangeSize(), [&](long i) {
+        out[i] = setup.ideal_link ? simulateFormation<kLaw, T, kCapacity, false>(setup, grid, first + i)
+                                  : simulateFormation<kLaw, T, kCapacity, true>(setup, grid, first + i);
+        progress.fetch_add(1, std::memory_order_relaxed);
+      });
+    }
+    const SimSetup<T> setup = makeSetup<T>(spec);
     loop(spec.rangeSize(), [&](long i) {
-      constexpr aurora_control::LawType kLaw = decltype(law)::value;
-      constexpr int kCapacity = decltype(capacity)::value;
       out[i] = setup.ideal_link ? simulateCombination<kLaw, T, kCapacity, false>(setup, grid, first + i)
                                 : simulateCombination<kLaw, T, kCapacity, true>(setup, grid, first + i);
       progress.fetch_add(1, std::memory_order_relaxed);

@@ -13,9 +13,11 @@ namespace aurora_sweep {
 // order of underactuatedGainName (k1_x, k2_x, ..., k2_psi), factors of
 // the simulated drone's model parameters (1 = the vehicle file's value), the
 // link's values (aurora_control::LinkValue order: uplink_jitter, ...,
-// downlink_burst; the delay is the uplink's base delay) and the repeat: which
+// downlink_burst; the delay is the uplink's base delay), the repeat: which
 // of a combination's `repeats` link seeds a run draws with (not a name a
-// sweep file gives; `repeats: N` makes it vary).
+// sweep file gives; `repeats: N` makes it vary), and a formation sweep's
+// own: each drone's delay and the formation layer's gains
+// (docs/formation.md, "Formation sweeps").
 enum ParamId : int {
   kParamKp = 0,
   kParamKd = 1,
@@ -24,11 +26,15 @@ enum ParamId : int {
   kParamFirstModelFactor = 15,       // m, Ixx, Iyy, Izz, Cf, Ct, Km, Jm
   kParamFirstLinkValue = 23,         // 7 of them
   kParamRepeat = 30,
-  kParamCount = 31
+  kParamFirstDroneDelay = 31,        // a formation's drones' uplink delays: delay_1, delay_2
+  kParamFirstFormationGain = 33,     // the formation layer's K1 (6), then K2 (6)
+  kParamCount = 45
 };
 constexpr int kUnderactuatedGainCount = 12;
 constexpr int kModelFactorCount = 8;
 constexpr int kLinkParamCount = 7;
+constexpr int kFormationDroneCount = 2;   // the line's drones
+constexpr int kFormationGainCount = 12;   // K1 and K2 of the line's 6 variables
 // The parameters of the sweeps before links (definition hashes keep them).
 constexpr int kParamCountBeforeLinks = kParamFirstLinkValue;
 

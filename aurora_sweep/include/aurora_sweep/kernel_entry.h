@@ -7,6 +7,7 @@
 // offset, a last partial block) is tested without a GPU.
 #pragma once
 
+#include "aurora_sweep/formation_simulation.h"
 #include "aurora_sweep/simulation.h"
 
 namespace aurora_sweep {
@@ -17,6 +18,15 @@ AURORA_HD inline void sweepThread(const SimSetup<T>& setup, const GridView& grid
   const long i = static_cast<long>(block) * static_cast<long>(block_dim) + static_cast<long>(thread);
   if (i >= n) return;
   out[i] = simulateCombination<Law, T, Capacity, Linked>(setup, grid, first + i);
+}
+
+// The same for a formation sweep: one formation per thread.
+template <aurora_control::LawType Law, typename T, int Capacity, bool Linked = false>
+AURORA_HD inline void formationThread(const FormationSetup<T>& setup, const GridView& grid, long first, long n,
+                                      SimResult* out, unsigned block, unsigned block_dim, unsigned thread) {
+  const long i = static_cast<long>(block) * static_cast<long>(block_dim) + static_cast<long>(thread);
+  if (i >= n) return;
+  out[i] = simulateFormation<Law, T, Capacity, Linked>(setup, grid, first + i);
 }
 
 // Blocks of `block_size` threads that cover n combinations.

@@ -12,7 +12,7 @@
 
 namespace aurora_sweep {
 
-enum class ParamGroup { kPdGain, kDelay, kUnderactuatedGain, kModelFactor, kLink, kRepeat };
+enum class ParamGroup { kPdGain, kDelay, kUnderactuatedGain, kModelFactor, kLink, kRepeat, kDroneDelay, kFormationGain };
 
 struct ParamInfo {
   std::string name;
@@ -28,10 +28,12 @@ int paramIdOf(const std::string& name);
 // A short name; "kp", "k1_theta", "m", ...
 inline const char* paramName(int id) { return paramInfo(id).name.c_str(); }
 
-// Whether law `law` uses parameter `id` (its gains, the delay, the model).
-bool paramApplies(int id, aurora_control::LawType law);
-// The accepted names for a law, in ParamId order, comma separated.
-std::string acceptedParamNames(aurora_control::LawType law);
+// Whether a sweep of law `law` accepts parameter `id` (its gains, the delay,
+// the model, the link); a formation sweep (`formation`) accepts its drones'
+// delays, the formation's gains and the link's values instead.
+bool paramApplies(int id, aurora_control::LawType law, bool formation = false);
+// The accepted names, in ParamId order, comma separated.
+std::string acceptedParamNames(aurora_control::LawType law, bool formation = false);
 // "pd_saturated" / "underactuated"; false for another name.
 bool lawFromName(const std::string& name, aurora_control::LawType& law);
 const char* lawName(aurora_control::LawType law);
@@ -39,8 +41,9 @@ const char* lawName(aurora_control::LawType law);
 // The value of a parameter a sweep file leaves out: the underactuated law's
 // gains default to the spec's (UnderactuatedGains::defaults), model factors
 // to 1, the link's values to an ideal link's (a sweep's link file replaces
-// them), the repeat to 0. The PD gains and the delay have none (NaN: the
-// file must give them).
+// them), the repeat to 0, the formation's gains to AuRoRA's (a formation
+// file's replace them). The PD gains and the delays have none (NaN: the file
+// must give them).
 double paramDefault(int id);
 
 }  // namespace aurora_sweep

@@ -47,6 +47,30 @@ constexpr ResultColumn kResultColumns[] = {
 };
 constexpr int kResultColumnCount = static_cast<int>(sizeof kResultColumns / sizeof kResultColumns[0]);
 
+// A formation sweep's columns: the same record and types in the same places
+// (formation_simulation.h's formationResult), named for the formation's
+// checks (docs/formation.md, "Formation checks").
+constexpr ResultColumn kFormationResultColumns[] = {
+    {"ok1", ColumnType::kFlag, "", "check 1 held: formation position error within max_position_error after settle_time"},
+    {"ok2", ColumnType::kFlag, "", "check 2 held: shape error within max_shape_error after settle_time"},
+    {"ok3", ColumnType::kFlag, "", "check 3 held: both errors' integrals within max_iae_position and max_iae_shape"},
+    {"ok4", ColumnType::kFlag, "", "check 4 held: the drones never closer than min_distance (no collision)"},
+    {"feasible", ColumnType::kFlag, "", "all four checks held"},
+    {"iae_position", ColumnType::kDouble, "m s", "integral of the formation position error after settle_time"},
+    {"iae_shape", ColumnType::kDouble, "m s", "integral of the shape error after settle_time"},
+    {"min_distance", ColumnType::kDouble, "m", "smallest distance between the drones"},
+    {"steps", ColumnType::kInt32, "", "ticks run (fewer with early_stop)"},
+    {"max_position_error", ColumnType::kFloat, "m", "largest formation position error after settle_time"},
+    {"max_shape_error", ColumnType::kFloat, "m", "largest shape error after settle_time"},
+    {"end_distance", ColumnType::kFloat, "m", "distance between the drones at the end"},
+};
+static_assert(sizeof kFormationResultColumns == sizeof kResultColumns, "one record, two namings");
+
+// The columns of a sweep, a formation sweep's or the single drone's.
+inline const ResultColumn* resultColumns(bool formation) {
+  return formation ? kFormationResultColumns : kResultColumns;
+}
+
 // Column k's value of a result, in the column's type.
 struct ColumnValue {
   ColumnType type;

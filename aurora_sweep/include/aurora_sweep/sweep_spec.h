@@ -6,6 +6,8 @@
 #include <vector>
 
 #include "aurora_control/feasibility.h"
+#include "aurora_control/formation_checks.h"
+#include "aurora_control/formation_runner.h"
 #include "aurora_control/link.h"
 #include "aurora_control/task.h"
 #include "aurora_sim/ardrone_params.h"
@@ -36,7 +38,24 @@ struct SweepSpec {
   // The task (one schema with the node: positioning point, waypoints,
   // circle, lemniscate); the study's by default.
   aurora_control::Task<double> task = aurora_control::positioningTask(2.0, 1.0, 2.0, 60.0);
-  double duration() const { return task.duration(); }
+  double duration() const { return formation() ? formation_run.reference.duration : task.duration(); }
+  // A formation sweep (sweep file 'formation:', docs/formation.md,
+  // "Formation sweeps"): the formation file's run is every combination's,
+  // with its drones' delays (delay_1, ...), the formation's gains and the
+  // link values the sweep gives; judged by the formation's checks. `law` is
+  // its drones'.
+  std::string formation_file;
+  aurora_control::FormationRun<double, aurora_control::LineFormation<double>> formation_run;
+  aurora_control::FormationCriteria<double> formation_criteria =
+      aurora_control::FormationCriteria<double>::study();
+  bool formation() const { return !formation_file.empty(); }
+  // The loop iterations (ticks) of every run: 1801 for the 60 s study.
+  long iterations() const {
+    return formation() ? aurora_control::formationTicks(duration(), vehicle.Ts)
+                       : aurora_control::studyIterationCount(duration(), vehicle.Ts);
+  }
+  // Whether this sweep accepts parameter `id` (parameters.h).
+  bool accepts(int id) const { return paramApplies(id, law, formation()); }
   aurora_control::FeasibilityCriteria<double> criteria =
       aurora_control::FeasibilityCriteria<double>::study();
   std::vector<Axis> axes;           // in variation order: axes[0] varies fastest
@@ -60,12 +79,35 @@ struct SweepSpec {
   // The history the runs need: the largest delay plus jitter on either
   // direction over every combination.
   long historyNeeded() const {
+    if (formation()) return formationHistoryNeeded();
     aurora_control::LinkParams worst = link;
     for (int i : {aurora_control::kLinkUplinkJitter, aurora_control::kLinkDownlinkDelay,
                   aurora_control::kLinkDownlinkJitter}) {
       aurora_control::setLinkValue(worst, i, maxValue(kParamFirstLinkValue + i));
     }
     return worst.historyNeeded(max_delay);
+  }
+  // A formation's: the largest over its drones of the drone's largest delay
+  // plus its link's largest jitter (the sweep's link values, or the drone's
+  // own where the sweep gives none).
+  long formationHistoryNeeded() const {
+    long longest = 0;
+    for (int d = 0; d < kFormationDroneCount; ++d) {
+      aurora_control::LinkParams worst = formation_run.drone[d].link;
+      for (int i : {aurora_control::kLinkUplinkJitter, aurora_control::kLinkDownlinkDelay,
+                    aurora_control::kLinkDownlinkJitter}) {
+        if (linkValueGiven(i)) aurora_control::setLinkValue(worst, i, maxValue(kParamFirstLinkValue + i));
+      }
+      const long h = worst.historyNeeded(static_cast<long>(maxValue(kParamFirstDroneDelay + d)));
+      longest = h > longest ? h : longest;
+    }
+    return longest;
+  }
+  // Whether the sweep gives link value i (fixed or varied); a formation
+  // sweep's drones otherwise keep their own (the fixed value is NaN).
+  bool linkValueGiven(int i) const {
+    const int id = kParamFirstLinkValue + i;
+    return varies(id) || !(fixed[id] != fixed[id]);
   }
   // The link for every combination and the fixed link values, from a link
   // file (the values a sweep file gives or varies replace them).
@@ -78,7 +120,15 @@ struct SweepSpec {
     for (int i = 0; i < kLinkParamCount; ++i) {
       if (varies(kParamFirstLinkValue + i)) return false;
     }
-    return link.ideal();
+    if (!formation()) return link.ideal();
+    for (int d = 0; d < kFormationDroneCount; ++d) {
+      aurora_control::LinkParams l = formation_run.drone[d].link;
+      for (int i = 0; i < kLinkParamCount; ++i) {
+        if (linkValueGiven(i)) aurora_control::setLinkValue(l, i, fixed[kParamFirstLinkValue + i]);
+      }
+      if (!l.ideal()) return false;
+    }
+    return true;
   }
   // f(v) for every value parameter `id` takes: fixed, on an axis or in the
   // points (once per row).
@@ -154,15 +204,18 @@ struct SweepSpec {
 
   // The parameters of each result row: the law's gains, the delay, the
   // model factors that vary or are not 1, the link's values when the link is
-  // not ideal, the repeat when there are repeats (ParamId order).
+  // not ideal, the repeat when there are repeats; a formation's: its drones'
+  // delays, the formation gains it varies, the link values it gives (ParamId
+  // order).
   std::vector<int> columns() const {
     std::vector<int> c;
     for (int id = 0; id < kParamCount; ++id) {
       const ParamGroup group = paramInfo(id).group;
       const bool shown = group == ParamGroup::kModelFactor ? varies(id) || fixed[id] != 1.0
-                         : group == ParamGroup::kLink   ? !linkIdeal()
+                         : group == ParamGroup::kLink   ? !linkIdeal() && (!formation() || linkValueGiven(id - kParamFirstLinkValue))
                          : group == ParamGroup::kRepeat ? repeats > 1
-                                                        : paramApplies(id, law);
+                         : group == ParamGroup::kFormationGain ? varies(id)
+                                                        : accepts(id);
       if (shown) c.push_back(id);
     }
     return c;

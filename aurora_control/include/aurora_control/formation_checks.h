@@ -1,0 +1,114 @@
+// The formation's metrics and its four checks (docs/formation.md, "Formation
+// checks"): how far the formation's position and its shape are from the
+// desired ones once the formation has settled, their integrals, and how
+// close the drones come to each other. Written against a shape (its
+// variables and inverse transform), for scalars (Mask = bool) and SIMD
+// batches, host and device. Each check, once failed, stays failed.
+#pragma once
+
+#include <cmath>
+
+#include "aurora_control/feasibility.h"
+#include "aurora_sim/scalar_math.h"
+
+namespace aurora_control {
+
+template <typename T>
+struct FormationCriteria {
+  T settle_time;         // [s] the errors are judged from this time on
+  T max_position_error;  // check 1 [m]: |p_F - p_Fd| after settle_time
+  T max_shape_error;     // check 2 [m]: each drone's offset from drone 1 against the desired one
+  T max_iae_position;    // check 3 [m s]: the position error's integral after settle_time ...
+  T max_iae_shape;       // ... and the shape error's
+  T min_distance;        // check 4 [m]: the drones' centres never closer (a collision)
+
+  // The defaults of docs/formation.md, "Formation checks".
+  AURORA_HD static FormationCriteria study() {
+    return FormationCriteria{T(10), T(0.75), T(1.5), T(30), T(120), T(0.6)};
+  }
+  template <typename U>
+  AURORA_HD FormationCriteria<U> cast() const {
+    return FormationCriteria<U>{U(settle_time), U(max_position_error), U(max_shape_error),
+                                U(max_iae_position), U(max_iae_shape), U(min_distance)};
+  }
+};
+
+// The two errors of positions X against the desired positions Xd (eq. F9;
+// Xd = Shape::positions(Qd), which changes only when the layer runs): the
+// formation's position error |p_Fd - p_F| and the shape error, the distance
+// between the drones' offsets from drone 1 and the desired offsets (for the
+// line: where drone 2 is against where it should be, seen from drone 1) [m].
+template <class Shape, typename T>
+AURORA_HD inline void formationErrors(const T X[Shape::kVariables], const T Xd[Shape::kVariables], T& position,
+                                      T& shape) {
+  using std::sqrt;
+  T p[3], pd[3];
+  Shape::formationPosition(X, p);
+  Shape::formationPosition(Xd, pd);
+  const T ep[3] = {pd[0] - p[0], pd[1] - p[1], pd[2] - p[2]};
+  position = norm3(ep);
+  T sum = T(0);
+  for (int d = 1; d < Shape::kDrones; ++d) {
+    for (int i = 0; i < 3; ++i) {
+      const T e = (X[3 * d + i] - X[i]) - (Xd[3 * d + i] - Xd[i]);
+      sum = sum + e * e;
+    }
+  }
+  shape = sqrt(sum);
+}
+
+// The smallest distance between any two drones of positions X [m].
+template <class Shape, typename T>
+AURORA_HD inline T closestPair(const T X[Shape::kVariables]) {
+  using aurora_sim::select;
+  T closest = T(1e30);
+  for (int a = 0; a < Shape::kDrones; ++a) {
+    for (int b = a + 1; b < Shape::kDrones; ++b) {
+      const T d[3] = {X[3 * b] - X[3 * a], X[3 * b + 1] - X[3 * a + 1], X[3 * b + 2] - X[3 * a + 2]};
+      const T r = norm3(d);
+      closest = select(r < closest, r, closest);
+    }
+  }
+  return closest;
+}
+
+template <typename T, typename Mask, class Shape>
+struct FormationMetrics {
+  static constexpr int kN = Shape::kVariables;
+  T iae_position, iae_shape;      // [m s] after settle_time
+  T max_position, max_shape;      // [m] the largest errors after settle_time
+  T closest;                      // [m] the smallest distance between drones, whole flight
+  Mask ok[4];
+
+  AURORA_HD void reset() {
+    iae_position = iae_shape = max_position = max_shape = T(0);
+    closest = T(1e30);
+    for (int i = 0; i < 4; ++i) ok[i] = Mask(true);
+  }
+
+  // Tick k at time t = k Ts: the drones at X_k against the positions Xd of
+  // the layer's held Qd (the errors of "Formation errors"), integrated over
+  // one tick dt.
+  AURORA_HD void add(const FormationCriteria<T>& c, const T X[kN], const T Xd[kN], const T& t, const T& dt) {
+    using aurora_sim::select;
+    T position, shape;
+    formationErrors<Shape>(X, Xd, position, shape);
+    const T r = closestPair<Shape>(X);
+    closest = select(r < closest, r, closest);
+    const auto judged = t >= c.settle_time;
+    const T zero(0);
+    iae_position = iae_position + select(judged, position * dt, zero);
+    iae_shape = iae_shape + select(judged, shape * dt, zero);
+    max_position = select(judged & (position > max_position), position, max_position);
+    max_shape = select(judged & (shape > max_shape), shape, max_shape);
+    // A NaN position (a diverged drone) fails every check: comparisons with NaN are false.
+    ok[0] = ok[0] & (!judged | (position <= c.max_position_error));
+    ok[1] = ok[1] & (!judged | (shape <= c.max_shape_error));
+    ok[2] = ok[2] & (iae_position <= c.max_iae_position) & (iae_shape <= c.max_iae_shape);
+    ok[3] = ok[3] & (r >= c.min_distance);
+  }
+
+  AURORA_HD Mask feasible() const { return ok[0] & ok[1] & ok[2] & ok[3]; }
+};
+
+}  // namespace aurora_control

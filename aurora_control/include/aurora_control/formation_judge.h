@@ -1,0 +1,34 @@
+// The formation's checks (formation_checks.h) as an observer of the offline
+// formation runner: what the flight tool prints and every sweep backend's
+// scalar run records. ROS-free, host and device.
+#pragma once
+
+#include "aurora_control/formation_checks.h"
+#include "aurora_control/formation_runner.h"
+
+namespace aurora_control {
+
+// The formation's checks as the runner's observer: tick k's positions X_k
+// against the positions of the layer's held Qd (computed when the layer
+// runs); false (stop) at the first failed check with early_stop.
+template <typename T>
+struct FormationJudge {
+  using Line = LineFormation<T>;
+  FormationCriteria<T> criteria;
+  bool early_stop;
+  T Ts;
+  FormationMetrics<T, bool, Line> metrics;
+  T Xd[6];
+
+  AURORA_HD bool operator()(const FormationObservation<T, Line>& o) {
+    T X[6];
+    for (int d = 0; d < 2; ++d) {
+      for (int i = 0; i < 3; ++i) X[3 * d + i] = o.X_before[d][aurora_sim::kX + i];
+    }
+    if (o.layer_ran) Line::positions(o.layer.Qd(), Xd);
+    metrics.add(criteria, X, Xd, taskTime(T(o.k), Ts), Ts);
+    return !(early_stop && !metrics.feasible());
+  }
+};
+
+}  // namespace aurora_control

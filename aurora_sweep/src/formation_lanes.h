@@ -1,0 +1,244 @@
+// The `cpu` backend's engine for formation sweeps (docs/formation.md,
+// "Formation sweeps"): L formations at once, one per SIMD lane, every lane
+// at the same tick (the layer's periods fall on the same ticks). A batch
+// takes L consecutive combinations and runs until every lane's formation
+// ended (its last tick, or a failed check with early stop); a lane's
+// result is taken at the tick it ended. The tick is the scalar runner's
+// (formation_runner.h's formationTick and formation_checks.h on batches);
+// each drone's delayed state is gathered from its ring by the delay rule or
+// its lanes' link models (lane_links.h, or ModelLink lane by lane for a
+// geometric jitter). Included by batch_engine.h only.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "aurora_sweep/formation_simulation.h"
+
+namespace aurora_sweep {
+
+namespace {
+
+template <typename T, class Arch, int Capacity, aurora_control::LawType Law>
+class FormationBatch {
+ public:
+  using LaneOps = Lanes<T, Arch>;
+  using B = typename LaneOps::B;
+  using M = typename LaneOps::M;
+  static constexpr int L = LaneOps::L, D = kFormationDroneCount;
+  using Int = xsimd::as_integer_t<T>;
+  using I = xsimd::batch<Int, Arch>;
+  using Line = aurora_control::LineFormation<B>;
+  using Input = aurora_control::LawInput<Law>;
+  static constexpr int W = Input::kWidth;
+  using Link = aurora_control::ModelLink<Capacity, T>;
+
+  FormationBatch(const SweepSpec& spec, std::vector<SimResult>& out, std::atomic<long>& next, Progress& progress)
+      : grid_(spec.view()), first_(spec.rangeBegin()), total_(spec.rangeEnd()), out_(out), next_(next),
+        progress_(progress), setup_(makeFormationSetup<T>(spec)) {
+    for (int d = 0; d < D; ++d) {
+      history_[d].resize(static_cast<size_t>(Capacity) * W * L);
+      const aurora_control::LinkParams& link = setup_.run.drone[d].link;
+      if (setup_.ideal_link) continue;
+      // A sweep's link values may change a drone's link per combination: the
+      // vectorized links apply unless the drone's own jitter is geometric.
+      if (laneLinksApply(link)) {
+        lane_links_[d].reset(new LaneLinks<Capacity, T, Arch>(std::lround(link.cmd_timeout / double(setup_.run.drone[d].plant.Ts))));
+      } else {
+        for (int l = 0; l < L; ++l) links_[d].emplace_back(link, 0, 0, double(setup_.run.drone[d].plant.Ts));
+      }
+    }
+    alignas(64) Int iota[L];
+    for (int l = 0; l < L; ++l) iota[l] = static_cast<Int>(l);
+    lane_ = I::load_aligned(iota);
+  }
+
+  void run() {
+    long first = 0;
+    int count = 0;
+    while (takeBatch(first, count)) runBatch(first, count);
+  }
+
+ private:
+  bool takeBatch(long& first, int& count) {
+    first = next_.fetch_add(L, std::memory_order_relaxed);
+    if (first >= total_) return false;
+    count = static_cast<int>(std::min<long>(L, total_ - first));
+    return true;
+  }
+
+  // The lanes' runs (lanes past `count` repeat the first, their results dropped).
+  void startLanes(long first, int count, aurora_control::FormationRun<B, Line>& run) {
+    for (int l = 0; l < L; ++l) {
+      const Combination c = grid_.decode(first + (l < count ? l : 0));
+      const LineRun<T> lane = formationCombination(setup_, c);
+      if (l == 0) broadcast(lane, run);
+      for (int i = 0; i < 6; ++i) LaneOps::set(run.gains.k1[i], l, lane.gains.k1[i]), LaneOps::set(run.gains.k2[i], l, lane.gains.k2[i]);
+      for (int d = 0; d < D; ++d) {
+        LaneOps::set(delay_[d], l, static_cast<Int>(lane.drone[d].delay));
+        if (lane_links_[d]) lane_links_[d]->start(l, lane.drone[d].link, formationLinkKey(c, d));
+        else if (!setup_.ideal_link) links_[d][l] = Link(lane.drone[d].link, lane.drone[d].delay, formationLinkKey(c, d), double(lane.drone[d].plant.Ts));
+      }
+    }
+  }
+
+  // What every lane shares: the drones' models, gains and starts, the law,
+  // the period (the file's; the sweep varies none of them).
+  static void broadcast(const LineRun<T>& s, aurora_control::FormationRun<B, Line>& run) {
+    for (int d = 0; d < D; ++d) {
+      run.drone[d].plant = s.drone[d].plant.template cast<B>();
+      run.drone[d].model = s.drone[d].model.template cast<B>();
+      run.drone[d].gains.pd.kp = B(s.drone[d].gains.pd.kp), run.drone[d].gains.pd.kd = B(s.drone[d].gains.pd.kd);
+      for (int i = 0; i < aurora_control::kAxes; ++i) {
+        run.drone[d].gains.underactuated.k1[i] = B(s.drone[d].gains.underactuated.k1[i]);
+        run.drone[d].gains.underactuated.k2[i] = B(s.drone[d].gains.underactuated.k2[i]);
+      }
+      for (int i = 0; i < 3; ++i) run.drone[d].start[i] = B(s.drone[d].start[i]);
+    }
+    run.law = s.law;
+    run.period_steps = s.period_steps;
+    run.clamp = s.clamp;
+    run.reference.path = s.reference.path;
+    run.reference.duration = B(s.reference.duration);
+    for (int i = 0; i < 2; ++i) run.reference.amplitude[i] = B(s.reference.amplitude[i]);
+    for (int i = 0; i < 6; ++i) run.reference.Q[i] = B(s.reference.Q[i]);
+  }
+
+  // Each drone's delayed state at tick k (count = k + 1 states in its ring,
+  // X_j at slot j): the delay rule or the lanes' links, gathered.
+  void delayedStates(long k, B xc[D][aurora_sim::kStateSize]) {
+    const I count(static_cast<Int>(k + 1)), mask(Int(Capacity - 1));
+    for (int d = 0; d < D; ++d) {
+      I index;  // 1-based
+      if (setup_.ideal_link) index = aurora_control::delayedHistoryIndex(count, delay_[d]);
+      else if (lane_links_[d]) index = lane_links_[d]->uplink(count, I(Int(0)), k);
+      else index = modelLinkIndex(d, k);
+      const I base = ((index - I(Int(1))) & mask) * I(Int(W * L)) + lane_;
+      aurora_control::LawSample<B, Law> delayed;
+      for (int j = 0; j < W; ++j) delayed.v[j] = gatherLanes<B>(history_[d].data(), base + I(Int(j * L)));
+      delayed.toState(xc[d]);
+    }
+  }
+
+  I modelLinkIndex(int d, long k) {
+    alignas(64) Int at[L];
+    for (int l = 0; l < L; ++l) at[l] = static_cast<Int>(links_[d][l].uplinkIndex(k) + 1);
+    return I::load_aligned(at);
+  }
+
+  // Drone d's sent commands U become the ones it applies (ideal: as sent).
+  void downlink(int d, long k, B U[4]) {
+    if (setup_.ideal_link) return;
+    if (lane_links_[d]) return lane_links_[d]->downlink(I(static_cast<Int>(k + 1)), I(Int(0)), k, U);
+    alignas(64) T sent[4][L];
+    for (int i = 0; i < 4; ++i) U[i].store_aligned(sent[i]);
+    for (int l = 0; l < L; ++l) {
+      T lane[4] = {sent[0][l], sent[1][l], sent[2][l], sent[3][l]};
+      links_[d][l].downlink(k, lane, lane);
+      for (int i = 0; i < 4; ++i) sent[i][l] = lane[i];
+    }
+    for (int i = 0; i < 4; ++i) U[i] = B::load_aligned(sent[i]);
+  }
+
+  void push(long k, const aurora_control::LoopState<B, M>* state) {
+    const long slot = k % Capacity;
+    for (int d = 0; d < D; ++d) {
+      for (int j = 0; j < W; ++j) state[d].model.X[Input::state(j)].store_aligned(&history_[d][(slot * W + j) * L]);
+    }
+  }
+
+  void runBatch(long first, int count) {
+    aurora_control::FormationRun<B, Line> run;
+    startLanes(first, count, run);
+    aurora_control::FormationLayer<B, Line> layer(run.law, run.gains, B(T(run.period_steps) * setup_.run.drone[0].plant.Ts));
+    aurora_control::LoopParams<B> params[D];
+    aurora_control::LoopState<B, M> state[D];
+    aurora_control::startFormation(run, params, state, layer);
+    aurora_control::FormationMetrics<B, M, Line> metrics;
+    metrics.reset();
+    const aurora_control::FormationCriteria<B> criteria = setup_.criteria.template cast<B>();
+    bool ended[L];
+    for (int l = 0; l < L; ++l) ended[l] = l >= count;
+    for (long k = 0; k < setup_.iterations; ++k) {
+      if (tick(k, run, layer, params, state, metrics, criteria, first, ended)) break;
+    }
+    for (int l = 0; l < count; ++l) {
+      if (!ended[l]) finishLane(l, first, metrics, state, setup_.iterations);
+    }
+  }
+
+  // Tick k on every lane; true when every lane has ended.
+  bool tick(long k, const aurora_control::FormationRun<B, Line>& run, aurora_control::FormationLayer<B, Line>& layer,
+            const aurora_control::LoopParams<B>* params, aurora_control::LoopState<B, M>* state,
+            aurora_control::FormationMetrics<B, M, Line>& metrics, const aurora_control::FormationCriteria<B>& criteria,
+            long first, bool* ended) {
+    const T Ts = setup_.run.drone[0].plant.Ts;
+    push(k, state);
+    B xc[D][aurora_sim::kStateSize], X[6];
+    delayedStates(k, xc);
+    for (int d = 0; d < D; ++d) {
+      for (int i = 0; i < 3; ++i) X[3 * d + i] = state[d].model.X[aurora_sim::kX + i];
+    }
+    const bool due = k % run.period_steps == 0;
+    T qd[6];
+    B Qd[6];
+    if (due) {
+      // Every lane's Qd and its positions (the scalar judge's, in T).
+      setup_.run.reference.at(aurora_control::taskTime(T(k), Ts), qd);
+      T xd[6];
+      aurora_control::LineFormation<T>::positions(qd, xd);
+      for (int i = 0; i < 6; ++i) Qd[i] = B(qd[i]), Xd_[i] = B(xd[i]);
+    }
+    aurora_control::LoopStep<B> step[D];
+    aurora_control::formationTick<Law>(params, setup_.run.clamp, layer, due ? Qd : nullptr, B(T(k)), xc, state, step,
+                                       [&](int d, B U[4]) { downlink(d, k, U); });
+    metrics.add(criteria, X, Xd_, B(aurora_control::taskTime(T(k), Ts)), B(Ts));
+    return endLanes(k, first, metrics, state, ended);
+  }
+
+  // Lanes whose check failed (early stop) end at tick k.
+  bool endLanes(long k, long first, const aurora_control::FormationMetrics<B, M, Line>& metrics,
+                const aurora_control::LoopState<B, M>* state, bool* ended) {
+    if (!setup_.early_stop) return false;
+    alignas(64) bool ok[L];
+    metrics.feasible().store_aligned(ok);
+    bool all = true;
+    for (int l = 0; l < L; ++l) {
+      if (!ended[l] && !ok[l]) finishLane(l, first, metrics, state, k + 1), ended[l] = true;
+      all = all && ended[l];
+    }
+    return all;
+  }
+
+  void finishLane(int l, long first, const aurora_control::FormationMetrics<B, M, Line>& m,
+                  const aurora_control::LoopState<B, M>* state, long ticks) {
+    aurora_control::FormationMetrics<T, bool, aurora_control::LineFormation<T>> lane;
+    lane.iae_position = LaneOps::get(m.iae_position, l), lane.iae_shape = LaneOps::get(m.iae_shape, l);
+    lane.max_position = LaneOps::get(m.max_position, l), lane.max_shape = LaneOps::get(m.max_shape, l);
+    lane.closest = LaneOps::get(m.closest, l);
+    for (int i = 0; i < 4; ++i) lane.ok[i] = LaneOps::get(m.ok[i], l);
+    T X[6];
+    for (int d = 0; d < D; ++d) {
+      for (int i = 0; i < 3; ++i) X[3 * d + i] = LaneOps::get(state[d].model.X[aurora_sim::kX + i], l);
+    }
+    out_[first + l - first_] = formationResult(lane, ticks, aurora_control::closestPair<aurora_control::LineFormation<T>>(X));
+    progress_.fetch_add(1, std::memory_order_relaxed);
+  }
+
+  const GridView grid_;
+  const long first_, total_;
+  std::vector<SimResult>& out_;
+  std::atomic<long>& next_;
+  Progress& progress_;
+  const FormationSetup<T> setup_;
+  std::vector<T, xsimd::aligned_allocator<T, 64>> history_[D];  // per drone [slot][W][lane]
+  std::unique_ptr<LaneLinks<Capacity, T, Arch>> lane_links_[D];
+  std::vector<Link> links_[D];
+  I delay_[D];
+  I lane_;
+  B Xd_[6];  // the positions of the layer's held Qd (the same on every lane)
+};
+
+}  // namespace
+
+}  // namespace aurora_sweep

@@ -1,0 +1,97 @@
+#include "sweep_file_formation.h"
+
+#include <limits>
+
+#include "aurora_control/formation_yaml.h"
+
+namespace aurora_sweep {
+
+void readSweepFormation(const aurora_control::YamlReader& r, const YAML::Node& sweep, const std::string& file,
+                        const std::string& config_dir, SweepSpec& spec) {
+  for (const char* key : {"controller", "task", "link", "clamp_commands"}) {
+    if (sweep[key]) {
+      r.fail(std::string("sweep.") + key, "is refused in a formation sweep: the formation file '" + file +
+                                              "' gives it (per drone; docs/formation.md, \"Formation sweeps\")");
+    }
+  }
+  const aurora_control::FormationFile f = aurora_control::readFormationFile(file, config_dir);
+  spec.formation_file = file;
+  spec.formation_run = aurora_control::formationRun(f, spec.vehicle);
+  spec.law = f.drones[0].controller.law;
+  spec.controller = aurora_sweep::lawName(spec.law);
+  for (int d = 0; d < kFormationDroneCount; ++d) spec.fixed[kParamFirstDroneDelay + d] = double(f.drones[d].delay);
+  for (int i = 0; i < 6; ++i) {
+    spec.fixed[kParamFirstFormationGain + i] = f.gains.k1[i];
+    spec.fixed[kParamFirstFormationGain + 6 + i] = f.gains.k2[i];
+  }
+  for (int i = 0; i < kLinkParamCount; ++i) spec.fixed[kParamFirstLinkValue + i] = std::numeric_limits<double>::quiet_NaN();
+}
+
+void readFormationCriteria(const aurora_control::YamlReader& r, const YAML::Node& c,
+                           aurora_control::FormationCriteria<double>& cr) {
+  const char* names[6] = {"settle_time", "max_position_error", "max_shape_error", "max_iae_position", "max_iae_shape",
+                          "min_distance"};
+  double* into[6] = {&cr.settle_time, &cr.max_position_error, &cr.max_shape_error, &cr.max_iae_position,
+                     &cr.max_iae_shape, &cr.min_distance};
+  const char* units[6] = {"s", "m", "m", "m s", "m s", "m"};
+  r.onlyKeys(c, "sweep.criteria", {names, names + 6});
+  for (int i = 0; i < 6; ++i) {
+    const std::string key = std::string("sweep.criteria.") + names[i];
+    // The settle time and the distance may be 0 (judge from the start; no collision check).
+    if (c[names[i]]) *into[i] = r.numberIn(c[names[i]], key, 0.0, 1e9, units[i], i == 0 || i == 5);
+  }
+}
+
+namespace {
+
+// Drone d's link with the sweep's largest value of each given link value.
+aurora_control::LinkParams worstLink(const SweepSpec& spec, int d) {
+  aurora_control::LinkParams l = spec.formation_run.drone[d].link;
+  for (int i = 0; i < kLinkParamCount; ++i) {
+    if (spec.linkValueGiven(i)) aurora_control::setLinkValue(l, i, spec.maxValue(kParamFirstLinkValue + i));
+  }
+  return l;
+}
+
+// The smallest burst above 1 drone d's direction runs with (its own when
+// the sweep gives none).
+double smallestBurst(const SweepSpec& spec, int burst_value, double own) {
+  if (!spec.linkValueGiven(burst_value)) return own;
+  double smallest = 1e300;
+  spec.forEachValue(kParamFirstLinkValue + burst_value, [&](double b) { smallest = b > 1.0 && b < smallest ? b : smallest; });
+  return smallest;
+}
+
+}  // namespace
+
+void checkFormationLinks(const aurora_control::YamlReader& r, const SweepSpec& spec) {
+  bool draws = false;
+  for (int d = 0; d < kFormationDroneCount; ++d) {
+    const aurora_control::LinkParams worst = worstLink(spec, d);
+    const aurora_control::LinkDirection* dirs[2] = {&worst.uplink, &worst.downlink};
+    const int bursts[2] = {aurora_control::kLinkUplinkBurst, aurora_control::kLinkDownlinkBurst};
+    for (int j = 0; j < 2; ++j) {
+      aurora_control::LinkDirection dir = *dirs[j];
+      dir.burst = smallestBurst(spec, bursts[j], dir.burst);
+      const std::string refusal = aurora_control::burstLossRefusal(dir);
+      if (dir.burst < 1e300 && !refusal.empty()) {
+        r.fail(std::string("sweep.parameters.") + paramName(kParamFirstLinkValue + bursts[j] - 1),
+               "= " + aurora_control::YamlReader::fmt(dir.loss) + " (its largest, on drone " + std::to_string(d + 1) +
+                   "'s link) " + refusal);
+      }
+      draws = draws || dir.loss > 0.0 || dir.jitter_max > 0.0;
+    }
+  }
+  if (spec.historyNeeded() > aurora_control::kMaxDelaySamples) {
+    r.fail("sweep.parameters", "needs " + std::to_string(spec.historyNeeded()) + " samples of history (a drone's " +
+                                   "largest delay plus its link's jitter): accepted up to " +
+                                   std::to_string(aurora_control::kMaxDelaySamples));
+  }
+  if (spec.repeats > 1 && !draws) {
+    r.fail("sweep.repeats", "= " + std::to_string(spec.repeats) + " draws nothing: no drone's link has jitter or "
+           "loss, so every repeat is the same run; give the drones' links jitter or loss (the formation file's "
+           "links or the link parameters), or remove repeats");
+  }
+}
+
+}  // namespace aurora_sweep

@@ -1,0 +1,212 @@
+// Formation sweeps (docs/formation.md, "Formation sweeps"): a combination
+// is the flight tool's formation run with the combination's delays, gains
+// and link values; every CPU backend and the CUDA kernel's per-thread entry
+// agree with the scalar loop; mistakes are refused naming the key; the
+// shipped study spans its margin.
+#include <gtest/gtest.h>
+
+#include <cstring>
+
+#include "aurora_control/formation_judge.h"
+#include "aurora_control/formation_yaml.h"
+#include "aurora_sim/vehicle_yaml.h"
+#include "aurora_sweep/chunk_store.h"
+#include "aurora_sweep/kernel_entry.h"
+#include "aurora_sweep/results.h"
+#include "aurora_sweep/result_columns.h"
+#include "sweep_test_support.h"
+
+using namespace aurora_sweep;
+using namespace aurora_sweep::test;
+using aurora_control::LawType;
+
+namespace {
+
+using Line = aurora_control::LineFormation<double>;
+
+SweepSpec formationSweep(const std::string& name, const std::string& body) {
+  return loadSweepFile(writeTemp(name + ".yaml", "sweep:\n  name: " + name + "\n" + body), configDir());
+}
+
+// delay_1 x delay_2 around the margin, with formation gains varied.
+const char* kGrid =
+    "  early_stop: false\n"
+    "  parameters:\n"
+    "    delay_1: {values: [0, 9, 18, 21]}\n"
+    "    delay_2: {values: [0, 12, 24]}\n"
+    "    formation_k1_rho: {values: [0.75, 1.5]}\n";
+
+// The flight tool's run of the file with drone delays d1, d2 and the
+// formation's K1 of rho, judged as a sweep judges it: its record.
+SimResult flightToolRecord(const std::string& file, long d1, long d2, double k1_rho, long ticks) {
+  const auto vehicle = aurora_sim::loadVehicleYaml(configDir() + "/vehicles/ardrone2.yaml");
+  auto run = aurora_control::formationRun(aurora_control::readFormationFile(file, configDir()), vehicle);
+  run.drone[0].delay = d1, run.drone[1].delay = d2;
+  run.gains.k1[3] = k1_rho;
+  aurora_control::FormationJudge<double> judge{aurora_control::FormationCriteria<double>::study(), false,
+                                               vehicle.Ts, {}, {}};
+  judge.metrics.reset();
+  double end = 0;
+  auto observe = [&](const aurora_control::FormationObservation<double, Line>& o) {
+    double X[6];
+    for (int d = 0; d < 2; ++d) {
+      for (int i = 0; i < 3; ++i) X[3 * d + i] = o.drones[d].model.X[i];
+    }
+    end = aurora_control::closestPair<Line>(X);
+    judge(o);
+  };
+  const long ran = aurora_control::runFormation<LawType::kUnderactuated, double, Line, 64>(run, ticks, observe);
+  return formationResult(judge.metrics, ran, end);
+}
+
+int differing(const std::vector<SimResult>& a, const std::vector<SimResult>& b) {
+  int n = 0;
+  for (size_t i = 0; i < a.size(); ++i) n += std::memcmp(&a[i], &b[i], sizeof(SimResult)) != 0;
+  return n + static_cast<int>(a.size() != b.size());
+}
+
+}  // namespace
+
+// Each combination is the flight tool's run (formation_runner.h with the
+// judge), bit for bit, in the grid's order (delay_1 fastest).
+TEST(FormationSweep, ACombinationIsTheFlightToolsRun) {
+  const SweepSpec spec = formationSweep("formation_grid", "  formation: formations/line_lemniscate_ik.yaml\n" + std::string(kGrid));
+  ASSERT_EQ(spec.size(), 24);
+  EXPECT_EQ(spec.iterations(), 2700);
+  const std::vector<SimResult> scalar = runOn("scalar", spec);
+  const long d1[4] = {0, 9, 18, 21}, d2[3] = {0, 12, 24};
+  const double k[2] = {0.75, 1.5};
+  int feasible_runs = 0;
+  for (long i = 0; i < spec.size(); ++i) {
+    const SimResult want = flightToolRecord(configDir() + "/formations/line_lemniscate_ik.yaml", d1[i % 4],
+                                            d2[i / 4 % 3], k[i / 12], spec.iterations());
+    EXPECT_EQ(std::memcmp(&want, &scalar[i], sizeof want), 0) << "combination " << i;
+    feasible_runs += feasible(scalar[i]);
+  }
+  // The grid spans the margin: some fly, some do not.
+  EXPECT_GT(feasible_runs, 0);
+  EXPECT_LT(feasible_runs, 24);
+}
+
+// Threads = scalar bit for bit; every SIMD build agrees (flags and ticks
+// equal, metrics close), ideal and over lossy links with repeats, both laws.
+// Delays up to 15 samples: beyond, the flights swing so hard that the last
+// bits of xsimd's sin against libm's grow into other outcomes.
+TEST(FormationSweep, EveryCpuBackendAgreesWithTheScalarLoop) {
+  const std::string ideal =
+      "  early_stop: false\n  parameters:\n    delay_1: {values: [0, 9, 15]}\n    delay_2: {values: [0, 15]}\n"
+      "    formation_k1_rho: {values: [0.75, 1.5]}\n";
+  const std::string lossy =
+      "  repeats: 3\n  parameters:\n    delay_1: {values: [0, 12]}\n    delay_2: {values: [0, 15]}\n"
+      "    uplink_jitter: 2\n    uplink_loss: 0.1\n    downlink_loss: 0.05\n";
+  for (const char* file : {"line_lemniscate", "line_lemniscate_ik"}) {
+    for (const std::string& body : {ideal, lossy}) {
+      SweepSpec spec = formationSweep(std::string("agree_") + file, std::string("  formation: formations/") + file + ".yaml\n" + body);
+      EXPECT_EQ(differing(runOn("scalar", spec), runOn("none", spec)), 0) << file;
+      for (const CpuIsa& isa : cpuBatchIsas()) {
+        if (!isa.supported || isa.key == "none") continue;
+        expectAgreement(isa.key, spec, 1e-9, 8);
+        spec.precision = Precision::kFloat;
+        expectAgreement(isa.key, spec, 2e-3, 8);
+        spec.precision = Precision::kDouble;
+      }
+    }
+  }
+}
+
+// The CUDA kernel's per-thread entry (formationThread), called for every
+// (block, thread) of a launch of a range, is the scalar loop, ideal and
+// over links.
+TEST(FormationSweep, TheKernelsPerThreadEntryIsTheScalarLoop) {
+  const std::string lossy = "  repeats: 2\n  parameters:\n    delay_1: {values: [3, 15]}\n    delay_2: {values: [0, 21]}\n"
+                            "    uplink_loss: 0.2\n    downlink_jitter: 2\n";
+  for (const std::string& body : {std::string(kGrid), lossy}) {
+    SweepSpec spec = formationSweep("kernel_entry", "  formation: formations/line_lemniscate.yaml\n" + body);
+    spec.range_begin = 3;
+    std::vector<SimResult> scalar;
+    Progress progress{0};
+    runScalar(spec, scalar, progress);
+    const FormationSetup<double> setup = makeFormationSetup<double>(spec);
+    const GridView grid = spec.view();
+    const long n = spec.rangeSize();
+    std::vector<SimResult> out(static_cast<size_t>(n));
+    for (unsigned b = 0; b < blocksFor(n, 4); ++b) {
+      for (unsigned t = 0; t < 4; ++t) {
+        if (setup.ideal_link) {
+          formationThread<LawType::kUnderactuated, double, aurora_control::kShortHistory, false>(setup, grid, 3, n, out.data(), b, 4, t);
+        } else {
+          formationThread<LawType::kUnderactuated, double, aurora_control::kShortHistory, true>(setup, grid, 3, n, out.data(), b, 4, t);
+        }
+      }
+    }
+    EXPECT_EQ(differing(scalar, out), 0);
+  }
+}
+
+// Results name the formation's columns; the summary the formation file and
+// its criteria; the definition hash tells formation files apart.
+TEST(FormationSweep, ResultsNameTheFormationsColumns) {
+  const SweepSpec p = formationSweep("cols_p", "  formation: formations/line_lemniscate.yaml\n" + std::string(kGrid));
+  const SweepSpec ik = formationSweep("cols_ik", "  formation: formations/line_lemniscate_ik.yaml\n" + std::string(kGrid));
+  const std::string csv = ::testing::TempDir() + "/formation_results.csv";
+  writeResultsCsv(csv, p, runOn("cpu", p));
+  const std::string text = readText(csv);
+  EXPECT_EQ(text.substr(0, text.find('\n')),
+            "index,delay_1,delay_2,formation_k1_rho,ok1,ok2,ok3,ok4,feasible,iae_position,iae_shape,min_distance,steps,"
+            "max_position_error,max_shape_error,end_distance");
+  EXPECT_NE(definitionHash(p), definitionHash(ik));
+  const std::string summary = ::testing::TempDir() + "/formation_summary.json";
+  writeSummaryJson(summary, p, RunInfo(), countResults(runOn("cpu", p), p.iterations()));
+  const nlohmann::json j = nlohmann::json::parse(readText(summary));
+  EXPECT_EQ(j["formation_file"], configDir() + "/formations/line_lemniscate.yaml");
+  EXPECT_EQ(j["formation_criteria"]["min_distance"], 0.6);
+  EXPECT_EQ(j["result_columns"][7]["name"], "min_distance");
+  EXPECT_EQ(j["controller"], "underactuated");
+}
+
+TEST(FormationSweep, MistakesAreRefusedNamingTheKey) {
+  const std::string f = "sweep:\n  formation: formations/line_lemniscate.yaml\n";
+  const std::string grid = "  parameters:\n    delay_1: {values: [0, 3]}\n";
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {f + "  controller: pd_saturated\n" + grid, "'sweep.controller' is refused in a formation sweep"},
+      {f + "  task: tasks/positioning.yaml\n" + grid, "'sweep.task' is refused in a formation sweep"},
+      {f + "  link: links/wifi_lab.yaml\n" + grid, "'sweep.link' is refused in a formation sweep"},
+      {f + "  parameters:\n    delay: 3\n", "'sweep.parameters.delay' is not a parameter of a formation sweep"},
+      {f + "  parameters:\n    k1_x: 0.5\n", "'sweep.parameters.k1_x' is not a parameter of a formation sweep"},
+      {f + "  parameters:\n    delay_1: {values: [0, 3000]}\n", "'sweep.parameters.delay_1' = 3000 is outside"},
+      {f + "  parameters:\n    delay_2: 2.5\n", "'sweep.parameters.delay_2' = 2.5 is refused: delay_2 takes whole samples"},
+      {f + "  parameters:\n    formation_k2_beta: -1\n", "'sweep.parameters.formation_k2_beta' = -1 is outside"},
+      {f + "  repeats: 4\n" + grid, "'sweep.repeats' = 4 draws nothing"},
+      {f + "  criteria: {max_shape: 1}\n" + grid, "'sweep.criteria.max_shape' is not a known key"},
+      {f + "  criteria: {min_distance: -1}\n" + grid, "'sweep.criteria.min_distance' = -1 is outside"},
+      {f + "  parameters:\n    uplink_loss: 0.9\n    uplink_burst: 2\n", "'sweep.parameters.uplink_loss' = 0.9"},
+      {"sweep:\n  formation: formations/none.yaml\n" + grid, "none.yaml"},
+      {"sweep:\n  parameters:\n    delay_1: 3\n    kp: 1\n    kd: 1\n    delay: 0\n",
+       "'sweep.parameters.delay_1' is not a parameter of the pd_saturated controller"},
+  };
+  for (const auto& c : cases) {
+    const std::string got = refusal(c.first);
+    EXPECT_NE(got.find(c.second), std::string::npos) << "file:\n" << c.first << "\ngot: " << got;
+  }
+}
+
+// The shipped studies (config/sweeps/formation_delay*.yaml), at their
+// corners and cut to 4 link seeds: every seed flies with no delay, none
+// with both drones 31 samples late.
+TEST(FormationSweep, TheFormationDelayStudiesSpanTheMargin) {
+  for (const char* name : {"formation_delay", "formation_delay_ik"}) {
+    std::string text = readText(configDir() + "/sweeps/" + name + ".yaml");
+    const std::string from = "repeats: 64", grid = "{from: 0, to: 31, count: 32}";
+    ASSERT_NE(text.find(from), std::string::npos) << name;
+    text.replace(text.find(from), from.size(), "repeats: 4");
+    for (size_t at; (at = text.find(grid)) != std::string::npos;) text.replace(at, grid.size(), "{values: [0, 31]}");
+    const SweepSpec spec = loadSweepFile(writeTemp(std::string(name) + "_corners.yaml", text), configDir());
+    EXPECT_EQ(spec.precision, Precision::kFloat);
+    ASSERT_EQ(spec.size(), 16);
+    const std::vector<SimResult> r = runOn("cpu", spec);
+    int at_zero = 0, at_31 = 0;
+    for (int s = 0; s < 4; ++s) at_zero += feasible(r[s]), at_31 += feasible(r[12 + s]);
+    EXPECT_EQ(at_zero, 4) << name;
+    EXPECT_EQ(at_31, 0) << name;
+  }
+}
