@@ -7,11 +7,13 @@
 
 #include <Eigen/Dense>
 #include <cmath>
+#include <cstring>
 #include <vector>
 
 #include <fstream>
 #include <iterator>
 
+#include "aurora_control/formation_controller.h"
 #include "aurora_control/formation_runner.h"
 #include "aurora_control/formation_yaml.h"
 #include "aurora_control/line_formation.h"
@@ -327,4 +329,50 @@ TEST(LineFormation, EachDroneFliesOverItsOwnLink) {
   long differ = 0;
   for (long k = 0; k < 300; ++k) differ += first.uplinkIndex(k) != second.uplinkIndex(k);
   EXPECT_GT(differ, 30);
+}
+
+// The formation node's core (formation_controller.h) fed the drones' states
+// of the offline runner answers every tick with the runner's commands, bit
+// for bit: each drone's delay, drone 2 over a lossy, jittery link (its draws
+// keyed by the drone, as the runner's), the layer's Q and Qd.
+TEST(FormationController, IsTheRunnersTickOverDelaysAndLinks) {
+  FormationRun<double, Line> run = labScenario(FormationLaw::kInverseKinematics);
+  run.drone[0].delay = 3, run.drone[1].delay = 9;
+  run.drone[1].link = readLinkFile(std::string(AURORA_CONFIG_DIR) + "/links/wifi_congested.yaml");
+  run.drone[1].link.uplink.delay = 9;  // the drone's delay is its link's uplink delay
+  struct Tick {
+    double X[2][12], U[2][4], Q[6], Qd[6];
+  };
+  std::vector<Tick> offline;
+  auto observe = [&](const FormationObservation<double, Line>& o) {
+    Tick t;
+    for (int d = 0; d < 2; ++d) {
+      for (int i = 0; i < 12; ++i) t.X[d][i] = o.X_before[d][i];
+      for (int i = 0; i < 4; ++i) t.U[d][i] = o.steps[d].U[i];
+    }
+    for (int i = 0; i < 6; ++i) t.Q[i] = o.layer.Q()[i], t.Qd[i] = o.layer.Qd()[i];
+    offline.push_back(t);
+  };
+  runFormation<LawType::kUnderactuated, double, Line, 64>(run, 900, observe);
+  FormationController<64> core(run, LawType::kUnderactuated);
+  long mismatches = 0, hovers = 0;
+  for (long k = 0; k < 900; ++k) {
+    for (int d = 0; d < 2; ++d) {
+      StateSample s;
+      s.step = k;
+      for (int i = 0; i < 12; ++i) s.X[i] = offline[k].X[d][i];
+      ASSERT_TRUE(core.push(d, s));
+    }
+    ASSERT_EQ(core.commonStep(), k);
+    const auto t = core.tick(k);
+    EXPECT_EQ(t.layer_ran, k % 6 == 0);
+    for (int d = 0; d < 2; ++d) {
+      mismatches += std::memcmp(t.out[d].U, offline[k].U[d], sizeof offline[k].U[d]) != 0;
+      hovers += t.out[d].drone_hovers;
+    }
+    mismatches += std::memcmp(core.layer().Q(), offline[k].Q, sizeof offline[k].Q) != 0;
+    mismatches += std::memcmp(core.layer().Qd(), offline[k].Qd, sizeof offline[k].Qd) != 0;
+  }
+  EXPECT_EQ(mismatches, 0);
+  EXPECT_GT(hovers, 0) << "drone 2's congested link never made it hover: not a link test";
 }

@@ -62,6 +62,9 @@ ArdroneSimNode::ArdroneSimNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
                                       "(0 = as fast as possible)");
   // The study's initial state (z = 0.75 m, in the air); false starts landed.
   flight_ = aurora_sim::boolParam(pnh_, "start_flying", true) ? Flight::kFlying : Flight::kLanded;
+  readStart();
+  // Several sims in lockstep (formation.launch): one of them owns /clock.
+  publish_clock_ = aurora_sim::boolParam(pnh_, "publish_clock", true);
 
   resetModel();
   path_.header.frame_id = frame_id_;
@@ -81,7 +84,7 @@ ArdroneSimNode::ArdroneSimNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
     // The sim owns the clock: one step per received command, as fast as the
     // controller answers. Until the first command arrives the initial state
     // is re-sent, so a controller that connects late still starts the loop.
-    clock_pub_ = nh_.advertise<rosgraph_msgs::Clock>("/clock", 1000);
+    if (publish_clock_) clock_pub_ = nh_.advertise<rosgraph_msgs::Clock>("/clock", 1000);
     retry_timer_ = nh_.createWallTimer(ros::WallDuration(0.2), &ArdroneSimNode::onLockstepRetry,
                                        this);
     ROS_INFO("ardrone_sim: lockstep mode, Ts = %.6f s; starts once %s has %d subscriber(s)",
@@ -94,9 +97,48 @@ ArdroneSimNode::ArdroneSimNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
   }
 }
 
+namespace {
+
+double xmlNumber(XmlRpc::XmlRpcValue& v, const std::string& key) {
+  if (v.getType() == XmlRpc::XmlRpcValue::TypeInt) return static_cast<int>(v);
+  if (v.getType() == XmlRpc::XmlRpcValue::TypeDouble) return static_cast<double>(v);
+  throw ConfigError("parameter '" + key + "' = " + v.toXml() + " is invalid: accepted a number [m]");
+}
+
+}  // namespace
+
+// Where the drone starts in the air: ~start [x, y, z] [m], or the start of
+// drone ~formation_drone (0-based) of the formation file loaded under
+// ~formation (formation.launch: the file's drones[i].start); else (0, 0, 0.75).
+void ArdroneSimNode::readStart() {
+  XmlRpc::XmlRpcValue list;
+  std::string key = fullKey(pnh_, "start");
+  if (pnh_.hasParam("formation_drone")) {
+    const int i = paramOr(pnh_, "formation_drone", -1);
+    XmlRpc::XmlRpcValue drones;
+    key = fullKey(pnh_, "formation/formation/drones");
+    if (!pnh_.getParam("formation/formation/drones", drones) || drones.getType() != XmlRpc::XmlRpcValue::TypeArray ||
+        i < 0 || i >= drones.size() || !drones[i].hasMember("start")) {
+      throw ConfigError("parameter '" + fullKey(pnh_, "formation_drone") + "' = " + std::to_string(i) +
+                        ": no such drone with a start in '" + key + "' (formation.launch loads the formation file there)");
+    }
+    list = drones[i]["start"];
+    key += "[" + std::to_string(i) + "].start";
+  } else if (!pnh_.getParam("start", list)) {
+    return;
+  }
+  if (list.getType() != XmlRpc::XmlRpcValue::TypeArray || list.size() != 3) {
+    throw ConfigError("parameter '" + key + "' is invalid: accepted [x, y, z] in m");
+  }
+  for (int j = 0; j < 3; ++j) start_[j] = xmlNumber(list[j], key);
+}
+
 void ArdroneSimNode::resetModel() {
-  // In the air at the study's initial state, or on the ground when landed.
-  model_.reset(flight_ == Flight::kLanded ? 0.0 : 0.75);
+  // In the air at the start (the study's initial state unless ~start), or on
+  // the ground below it when landed.
+  model_.reset(flight_ == Flight::kLanded ? 0.0 : start_[2]);
+  model_.X[kX] = start_[0];
+  model_.X[kY] = start_[1];
   step_ = 0;
   have_command_ = false;
   for (double& u : command_) u = 0.0;
@@ -269,7 +311,7 @@ void ArdroneSimNode::stepAndPublish(const ros::Time& now, bool command_fresh) {
 }
 
 void ArdroneSimNode::publishState(const ros::Time& stamp) {
-  if (mode_ == Mode::kLockstep) {
+  if (mode_ == Mode::kLockstep && publish_clock_) {
     rosgraph_msgs::Clock clock;
     clock.clock = stamp;
     clock_pub_.publish(clock);

@@ -38,6 +38,7 @@ class ArdroneSimNode {
   void stepAndPublish(const ros::Time& now, bool command_fresh);
   void publishState(const ros::Time& stamp);
   void resetModel();
+  void readStart();
   ros::Time lockstepTime() const;
 
   ros::NodeHandle nh_, pnh_;
@@ -47,6 +48,8 @@ class ArdroneSimNode {
   Flight flight_;
   double cmd_timeout_;
   double takeoff_altitude_;
+  double start_[3] = {0.0, 0.0, 0.75};  // [m] where the drone starts in the air
+  bool publish_clock_ = true;
   std::string frame_id_, child_frame_id_;
   unsigned long step_ = 0;
   double stop_after_;          // [s] of sim time; 0 = run until stopped

@@ -10,14 +10,14 @@ import rospy
 from aurora_msgs.msg import DroneState
 
 
-def record_until(steps, bag_dir, prefix, timeout=120.0):
+def record_until(steps, bag_dir, prefix, timeout=120.0, state="state", recorder=None):
     started = time.time()
     reached = threading.Event()
-    sub = rospy.Subscriber("state", DroneState, lambda m: reached.set() if m.step >= steps else None)
+    sub = rospy.Subscriber(state, DroneState, lambda m: reached.set() if m.step >= steps else None)
     if not reached.wait(timeout):
         raise AssertionError("the loop did not reach step %d in %.0f s" % (steps, timeout))
     sub.unregister()
-    subprocess.run(["rosnode", "kill", rospy.get_namespace() + "recorder"], check=True,
+    subprocess.run(["rosnode", "kill", recorder or rospy.get_namespace() + "recorder"], check=True,
                    stdout=subprocess.PIPE, stderr=subprocess.STDOUT)
     deadline = time.time() + 30
     while time.time() < deadline:

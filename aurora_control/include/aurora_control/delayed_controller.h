@@ -75,7 +75,8 @@ class DelayedController {
 
   // Applies settings.link (and settings.delay as its uplink delay); the
   // channels start afresh. An ideal link keeps the delay rule.
-  void configureLink() { link_.configure(settings.link, settings.delay, settings.Ts); }
+  // `key`: the draws' key besides the seed (a formation's drone index).
+  void configureLink(uint64_t key = 0) { link_.configure(settings.link, settings.delay, settings.Ts, key); }
 
   // The metrics start again (e.g. when the task starts after take-off).
   void resetMetrics() {
@@ -111,9 +112,15 @@ class DelayedController {
   // One cycle of the law on the delayed state towards `ref`. The PD law uses
   // position, velocity and acceleration; the underactuated law also the yaw
   // and its rates (feed-forward). Requires !empty().
+  // The state the law uses this cycle: the delay rule's, or the newest its
+  // link delivered. Requires !empty().
+  const StateSample& delivered() const {
+    return link_.active() ? stateOfStep(used_step_) : history_.delayed(settings.delay);
+  }
+
   ControlOutput compute(const Reference<double>& ref) {
     ControlOutput out;
-    const StateSample& used = link_.active() ? stateOfStep(used_step_) : history_.delayed(settings.delay);
+    const StateSample& used = delivered();
     out.used = &used;
     out.delay_in_force = link_.active() ? newest().step - used.step : history_.delayInForce(settings.delay);
     out.delay_pending = link_.active() ? 0 : history_.pendingUntilInForce(settings.delay);

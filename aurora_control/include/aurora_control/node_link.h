@@ -18,13 +18,15 @@ class NodeLink {
  public:
   // An ideal link (link.ideal()) leaves the node on the delay rule; any
   // other starts the channels afresh (a changed link, a source reset).
-  void configure(const LinkParams& link, long delay, double Ts) {
-    params_ = link, delay_ = delay, Ts_ = Ts;
+  // `key`: what the draws are keyed by besides the seed (a formation's
+  // drone index; 0 for one drone), as the offline runners key them.
+  void configure(const LinkParams& link, long delay, double Ts, uint64_t key = 0) {
+    params_ = link, delay_ = delay, Ts_ = Ts, key_ = key;
     reset();
   }
 
   void reset() {
-    model_.reset(params_.ideal() ? nullptr : new ModelLink<Capacity, double>(params_, delay_, 0, Ts_));
+    model_.reset(params_.ideal() ? nullptr : new ModelLink<Capacity, double>(params_, delay_, key_, Ts_));
     up_step_ = down_step_ = used_ = -1;
     arrived_ = false;
     for (double& u : drone_) u = 0.0;
@@ -76,6 +78,7 @@ class NodeLink {
   LinkParams params_;
   long delay_ = 0;
   double Ts_ = 1.0 / 30.0;
+  uint64_t key_ = 0;
   std::unique_ptr<ModelLink<Capacity, double>> model_;
   long up_step_ = -1, down_step_ = -1, used_ = -1;
   bool arrived_ = false;

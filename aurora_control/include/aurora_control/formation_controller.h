@@ -1,0 +1,115 @@
+// The formation node's tick, ROS-free (docs/formation.md, "In the ROS
+// loop"): each drone's controller core (delayed_controller.h: its delay
+// buffer or its link, its law, as the single-drone node's) and the formation
+// layer on the states those cores deliver. Tick k is the offline runner's
+// (formation_runner.h, "One tick"): when k is a multiple of the period the
+// layer runs on the delivered positions towards Qd(k Ts), then each drone's
+// law runs towards its held reference. The node calls it with the drones'
+// states as they arrive; a test compares the drones' trajectories with the
+// offline runner's bit for bit.
+#pragma once
+
+#include "aurora_control/delayed_controller.h"
+#include "aurora_control/formation_layer.h"
+#include "aurora_control/formation_runner.h"
+
+namespace aurora_control {
+
+template <int Capacity>
+class FormationController {
+ public:
+  using Line = LineFormation<double>;
+  static constexpr int kDrones = Line::kDrones;
+
+  // What tick k gave each drone, and whether the layer ran.
+  struct Tick {
+    long k = 0;
+    bool layer_ran = false;
+    Reference<double> ref[kDrones];
+    ControlOutput out[kDrones];
+  };
+
+  // `run`: the formation (formation_yaml.h's formationRun), its drones'
+  // delays and links; `law`: the drones' law. Commands are not clamped here
+  // (the formation script clamps nowhere; drivers and the sim clamp).
+  FormationController(const FormationRun<double, Line>& run, LawType law)
+      : run_(run), layer_(run.law, run.gains, double(run.period_steps) * run.drone[0].plant.Ts) {
+    for (int d = 0; d < kDrones; ++d) {
+      ControllerSettings& s = core_[d].settings;
+      s.law = law;
+      s.gains = run.drone[d].gains.pd;
+      s.underactuated = run.drone[d].gains.underactuated;
+      s.vehicle = run.drone[d].model;
+      s.delay = run.drone[d].delay;
+      s.link = run.drone[d].link;
+      s.clamp_commands = false;
+      s.Ts = run.drone[d].plant.Ts;
+      core_[d].configureLink(static_cast<uint64_t>(d));  // keyed by the drone, as runFormation
+    }
+    startLayer();
+  }
+
+  // A state of drone d arrived; false for a re-sent one (lockstep). A step
+  // going back (a reset sim) starts that drone's core afresh.
+  bool push(int d, const StateSample& s) { return core_[d].push(s); }
+
+  // The step every drone's newest state has, -1 when they differ or one has none.
+  long commonStep() const {
+    if (core_[0].empty()) return -1;
+    const long k = core_[0].newest().step;
+    for (int d = 1; d < kDrones; ++d) {
+      if (core_[d].empty() || core_[d].newest().step != k) return -1;
+    }
+    return k;
+  }
+  bool ready(int d) const { return !core_[d].empty(); }
+  const StateSample& newest(int d) const { return core_[d].newest(); }
+
+  // Tick k (the layer's period counts from k = 0; a k below the last one
+  // starts the layer again, as the drones' reset did).
+  Tick tick(long k) {
+    if (k < last_k_) startLayer();
+    last_k_ = k;
+    Tick t;
+    t.k = k;
+    t.layer_ran = k % run_.period_steps == 0;
+    if (t.layer_ran) {
+      double seen[Line::kVariables], Qd[Line::kVariables];
+      for (int d = 0; d < kDrones; ++d) {
+        for (int i = 0; i < 3; ++i) seen[3 * d + i] = core_[d].delivered().X[aurora_sim::kX + i];
+      }
+      run_.reference.at(taskTime(double(k), run_.drone[0].plant.Ts), Qd);
+      layer_.update(seen, Qd);
+    }
+    for (int d = 0; d < kDrones; ++d) {
+      HeldReference<double> held;
+      held.hold(layer_.position(d), layer_.velocity(d));
+      t.ref[d] = held.ref;
+      t.out[d] = core_[d].compute(t.ref[d]);
+    }
+    return t;
+  }
+
+  const FormationLayer<double, Line>& layer() const { return layer_; }
+  const FormationRun<double, Line>& run() const { return run_; }
+
+ private:
+  // Before the first period: the references at the drones' starts, the
+  // previous Qd = Qd(0) (formation_layer.h).
+  void startLayer() {
+    double X0[Line::kVariables], Qd[Line::kVariables];
+    for (int d = 0; d < kDrones; ++d) {
+      for (int i = 0; i < 3; ++i) X0[3 * d + i] = run_.drone[d].start[i];
+    }
+    run_.reference.at(0.0, Qd);
+    layer_.start(X0, Qd);
+    last_k_ = -1;
+  }
+
+  FormationRun<double, Line> run_;
+  FormationLayer<double, Line> layer_;
+  DelayedController<Capacity> core_[kDrones];
+  long last_k_ = -1;
+};
+
+}  // namespace aurora_control

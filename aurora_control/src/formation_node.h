@@ -1,0 +1,55 @@
+// The formation node (docs/formation.md, "In the ROS loop"): flies the
+// drones of a formation file through their driver topics. It subscribes
+// each drone's state (/NS/state), runs FormationController's tick (each
+// drone's delay or link and law, the formation layer) and publishes each
+// drone's command (/NS/cmd_vel) and the layer's state (formation). In
+// lockstep it answers once every drone's state of the same step arrived; in
+// realtime it runs on a 30 Hz timer on the newest states.
+#pragma once
+
+#include <aurora_msgs/DroneState.h>
+#include <aurora_msgs/Formation.h>
+#include <ros/ros.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "aurora_control/formation_controller.h"
+#include "aurora_control/limits.h"
+
+namespace aurora_control {
+
+class FormationNode {
+ public:
+  // Throws aurora_sim::ConfigError on a missing or invalid parameter.
+  FormationNode(ros::NodeHandle nh, ros::NodeHandle private_nh);
+
+ private:
+  using Core = FormationController<kDelayHistory>;
+  static constexpr int kDrones = Core::kDrones;
+
+  FormationRun<double, LineFormation<double>> loadRun(LawType& law);
+  void connect();
+  void onState(int d, const aurora_msgs::DroneState::ConstPtr& msg);
+  void onTimer(const ros::TimerEvent&);
+  bool listenersReady() const;
+  void answer(long k, const ros::Time& stamp);
+  void publish(const Core::Tick& t, const ros::Time& stamp);
+
+  ros::NodeHandle nh_, pnh_;
+  std::vector<std::string> drones_;  // namespaces, the formation file's order
+  bool lockstep_ = false;
+  int cmd_subscribers_ = 1, formation_subscribers_ = 0;  // lockstep: listeners before the first step
+  std::unique_ptr<Core> core_;
+  long answered_ = -1;   // lockstep: the newest step answered
+  long cycles_ = 0;      // realtime: timer cycles since the first states
+  double last_sent_[kDrones][4] = {};
+  std::vector<ros::Subscriber> state_subs_;
+  std::vector<ros::Publisher> cmd_pubs_;
+  ros::Publisher formation_pub_, markers_pub_;
+  static constexpr long kMarkerDecimation = 3;  // rviz markers at 10 Hz
+  ros::Timer timer_;
+};
+
+}  // namespace aurora_control
