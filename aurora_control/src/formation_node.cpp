@@ -124,6 +124,7 @@ void FormationNode::publish(const Core::Tick& t, const ros::Time& stamp) {
   m.header.stamp = stamp;
   m.header.frame_id = "world";
   m.step = static_cast<uint64_t>(t.k);
+  m.sample_time = core_->run().drone[0].plant.Ts;
   m.layer_ran = t.layer_ran;
   m.drones = drones_;
   const FormationLayer<double, LineFormation<double>>& layer = core_->layer();

@@ -3,6 +3,7 @@
 Modules:
     aurora.report      the analysis of a recorded flight (bag -> metrics, figures,
                        video, report.md); `rosrun aurora_control report` calls it
+    aurora.formation_report  its part for a formation's bag (formation.launch)
     aurora.plot_sweep  the plots of a sweep's results; the sweep program runs
                        `rosrun aurora_sweep plot_sweep DIR`, which calls it
 

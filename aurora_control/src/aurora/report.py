@@ -6,7 +6,9 @@ Writes, per drone namespace: metrics (IAE, ITAE, IASC with the study's
 conventions, maximum and final position error, settling time and overshoot per
 waypoint segment, delay in force, state and command rates), figures (PNG and
 PDF: 3D route with waypoints, position against desired, attitude, velocities,
-commands), an MP4 of the flight, metrics.json and a one-page report.md.
+commands), an MP4 of the flight, metrics.json and a one-page report.md. A
+bag of formation.launch record:=true gets the formation's part instead
+(aurora/formation_report.py).
 """
 import argparse
 import json
@@ -14,6 +16,8 @@ import math
 import os
 import sys
 import time
+
+from aurora import formation_report
 
 # Metric integrals of the study (docs/delay-and-study.md): dt = 0.03 s, t the
 # loop clock (docs/architecture.md, "Step index and metric time").
@@ -73,12 +77,26 @@ def find_namespaces(topics):
     return sorted(names)
 
 
-def read_bag(bag, namespaces):
-    """Per namespace: states, controls (first per step) and cmd_vel receive times."""
+def topics_of(bag):
     try:
-        info = bag.get_type_and_topic_info().topics
+        return bag.get_type_and_topic_info().topics
     except Exception as e:  # a damaged index surfaces here
         raise ReportError("bag '%s' cannot be read: %s" % (bag.filename, e))
+
+
+def writable(out_dir):
+    try:
+        os.makedirs(out_dir, exist_ok=True)
+        probe = os.path.join(out_dir, ".write_test")
+        open(probe, "w").close()
+        os.remove(probe)
+    except OSError as e:
+        raise ReportError("output folder '%s' is not writable: %s (choose another with --out)" % (out_dir, e))
+
+
+def read_bag(bag, namespaces):
+    """Per namespace: states, controls (first per step) and cmd_vel receive times."""
+    info = topics_of(bag)
     present = sorted(info)
     if namespaces is None:
         namespaces = find_namespaces(info)
@@ -541,8 +559,8 @@ def video(ns, series, out_dir, fps):
     return path, len(frame_times)
 
 
-def write_markdown(bag_path, out_dir, sections):
-    lines = ["# Flight report", "", "Bag: `%s`" % bag_path, ""]
+def write_markdown(bag_path, out_dir, sections, formation_lines=()):
+    lines = ["# Flight report", "", "Bag: `%s`" % bag_path, ""] + list(formation_lines)
     for m, files in sections:
         tag = m["namespace"]
         lines += ["## %s" % tag, "",
@@ -598,16 +616,21 @@ def main(argv):
     bag_path = os.path.abspath(args.bag)
     out_dir = args.out or (bag_path[:-4] if bag_path.endswith(".bag") else bag_path) + "_report"
     with open_bag(bag_path) as bag:
-        data = read_bag(bag, args.ns)
-    try:
-        os.makedirs(out_dir, exist_ok=True)
-        probe = os.path.join(out_dir, ".write_test")
-        open(probe, "w").close()
-        os.remove(probe)
-    except OSError as e:
-        raise ReportError("output folder '%s' is not writable: %s (choose another with --out)" % (out_dir, e))
+        formation = formation_report.has_formation(topics_of(bag))
+        # A formation's drones have no control topic: their part is the formation's.
+        data = read_bag(bag, args.ns) if args.ns or not formation else {}
+        writable(out_dir)
+        formation_part = formation_report.report(bag, out_dir, not args.no_pdf, not args.no_video, args.fps,
+                                                 ReportError) if formation else None
     sections = []
     all_metrics = {"bag": bag_path, "drones": []}
+    if formation_part:
+        all_metrics["formation"] = formation_part[0]
+        r = formation_part[0]["rms_after_settle"]
+        print("report: formation: %d ticks, RMS after %.0f s rho %.4f m, alpha %.4f rad, beta %.4f rad, position %.4f m; "
+              "smallest distance %.4f m" % (formation_part[0]["ticks"], formation_report.SETTLE_TIME, r["rho_m"],
+                                            r["alpha_rad"], r["beta_rad"], r["position_xy_m"],
+                                            formation_part[0]["smallest_distance_m"]), file=sys.stderr)
     for ns, d in data.items():
         m, series, cmd = analyse(ns, d)
         print("report: %s: %d steps, IAE %.6g, ITAE %.6g, IASC %.6g, max error %.3f m" %
@@ -625,9 +648,10 @@ def main(argv):
     all_metrics["report_wall_time_s"] = time.time() - started
     with open(os.path.join(out_dir, "metrics.json"), "w") as f:
         json.dump(all_metrics, f, indent=2)
-    write_markdown(bag_path, out_dir, sections)
+    write_markdown(bag_path, out_dir, sections, formation_part[2] if formation_part else [])
+    files = sum(len(s[1]) for s in sections) + (len(formation_part[1]) if formation_part else 0)
     print("report: wrote %s (metrics.json, report.md, %d files) in %.1f s" %
-          (out_dir, sum(len(s[1]) for s in sections), all_metrics["report_wall_time_s"]), file=sys.stderr)
+          (out_dir, files, all_metrics["report_wall_time_s"]), file=sys.stderr)
     return 0
 
 

@@ -1,0 +1,254 @@
+"""The formation part of `report` (docs/formation.md, "Reporting a formation
+flight"): from a bag of formation.launch record:=true, the formation errors
+over time (rho, alpha, beta and the formation's position against the
+desired), each drone's tracking of its held reference, the smallest distance
+between the drones, the formation checks' figures, and a video of both
+drones. The errors are those `flight --formation` prints (docs/formation.md,
+"Formation errors" and "Formation checks"): at tick k the drones' true
+positions X_k against the layer's Qd held at k."""
+import math
+import os
+
+FORMATION_TOPIC = "/formation/formation"
+FORMATION_TYPE = "aurora_msgs/Formation"
+# The formation checks' defaults (aurora_control/formation_checks.h, FormationCriteria::study).
+SETTLE_TIME = 10.0
+MIN_DISTANCE = 0.6
+VARIABLES = ("xF", "yF", "zF", "rho", "alpha", "beta")
+
+
+def has_formation(topics):
+    info = topics.get(FORMATION_TOPIC)
+    return info is not None and info.msg_type == FORMATION_TYPE
+
+
+def read_formation(bag, report_error):
+    """Formation messages (first per tick) and each drone's states by step."""
+    ticks, states = {}, {}
+    for _, msg, _ in bag.read_messages(topics=[FORMATION_TOPIC]):
+        ticks.setdefault(msg.step, msg)
+    if not ticks:
+        raise report_error("bag '%s': %s holds no message" % (bag.filename, FORMATION_TOPIC))
+    drones = list(ticks[min(ticks)].drones)
+    topics = ["/%s/state" % d for d in drones]
+    present = bag.get_type_and_topic_info().topics
+    missing = [t for t in topics if t not in present]
+    if missing:
+        raise report_error("bag '%s' lacks the formation's drone states %s (record them with formation.launch "
+                           "record:=true)" % (bag.filename, ", ".join(missing)))
+    for d in drones:
+        states[d] = {}
+    for topic, msg, _ in bag.read_messages(topics=topics):
+        states[topic.split("/")[1]].setdefault(msg.step, msg)
+    return drones, ticks, states
+
+
+def variables(X):
+    """Q of positions X = (p1, p2) (eq. F1, line_formation.h)."""
+    d = [X[3 + i] - X[i] for i in range(3)]
+    rho = math.sqrt(sum(v * v for v in d))
+    return [X[0], X[1], X[2], rho, math.asin(d[0] / rho), math.asin(d[1] / rho)]
+
+
+def positions(Q):
+    """Positions of Q (eq. F2): drone 2 above drone 1."""
+    sa, sb = math.sin(Q[4]), math.sin(Q[5])
+    return list(Q[:3]) + [Q[0] + Q[3] * sa, Q[1] + Q[3] * sb, Q[2] + Q[3] * math.sqrt(1.0 - sa * sa - sb * sb)]
+
+
+def series_of(drones, ticks, states, ts):
+    """Per tick k present for both drones: t, Q, Qd, the errors, each
+    drone's position, reference and tracking error, the distance."""
+    s = {k: [] for k in ("k", "t", "Q", "Qd", "e_position", "e_shape", "distance")}
+    for d in drones:
+        s[d] = {"pos": [], "ref": [], "track": []}
+    for k in sorted(ticks):
+        if not all(k in states[d] for d in drones):
+            continue
+        X = []
+        for d in drones:
+            p = states[d][k].position
+            X += [p.x, p.y, p.z]
+        m = ticks[k]
+        Q, Qd, Xd = variables(X), list(m.Qd), positions(list(m.Qd))
+        s["k"].append(k)
+        s["t"].append(k * ts)
+        s["Q"].append(Q)
+        s["Qd"].append(Qd)
+        s["e_position"].append(math.sqrt(sum((Qd[i] - Q[i]) ** 2 for i in range(3))))
+        s["e_shape"].append(math.sqrt(sum(((X[3 + i] - X[i]) - (Xd[3 + i] - Xd[i])) ** 2 for i in range(3))))
+        s["distance"].append(Q[3])
+        for j, d in enumerate(drones):
+            pos, ref = X[3 * j: 3 * j + 3], list(m.reference_position[3 * j: 3 * j + 3])
+            s[d]["pos"].append(pos)
+            s[d]["ref"].append(ref)
+            s[d]["track"].append(math.sqrt(sum((ref[i] - pos[i]) ** 2 for i in range(3))))
+    return s
+
+
+def rms(values):
+    return math.sqrt(sum(v * v for v in values) / len(values)) if values else 0.0
+
+
+def metrics_of(drones, s, ts):
+    """The flight tool's figures: RMS after SETTLE_TIME of rho, alpha, beta,
+    the horizontal position and the height; the checks' errors; tracking."""
+    judged = [i for i, t in enumerate(s["t"]) if t >= SETTLE_TIME]
+    err = lambda j: [s["Qd"][i][j] - s["Q"][i][j] for i in judged]  # noqa: E731
+    horizontal = [math.hypot(a, b) for a, b in zip(err(0), err(1))]
+    m = {"ticks": len(s["t"]), "first_tick": s["k"][0] if s["k"] else None, "last_tick": s["k"][-1] if s["k"] else None,
+         "rms_after_settle": {"rho_m": rms(err(3)), "alpha_rad": rms(err(4)), "beta_rad": rms(err(5)),
+                              "position_xy_m": rms(horizontal), "height_m": rms(err(2))},
+         "settle_time_s": SETTLE_TIME,
+         "max_position_error_m": max([s["e_position"][i] for i in judged], default=0.0),
+         "max_shape_error_m": max([s["e_shape"][i] for i in judged], default=0.0),
+         "iae_position_m_s": sum(s["e_position"][i] for i in judged) * ts,
+         "iae_shape_m_s": sum(s["e_shape"][i] for i in judged) * ts,
+         "smallest_distance_m": min(s["distance"]) if s["distance"] else None,
+         "smallest_distance_at_s": s["t"][s["distance"].index(min(s["distance"]))] if s["distance"] else None,
+         "drones": {}}
+    for d in drones:
+        m["drones"][d] = {"rms_tracking_error_m": rms(s[d]["track"]), "max_tracking_error_m": max(s[d]["track"], default=0.0)}
+    return m
+
+
+def figures(drones, s, out_dir, pdf):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    files = []
+
+    def save(fig, name):
+        for ext in ("png", "pdf") if pdf else ("png",):
+            path = os.path.join(out_dir, "formation_%s.%s" % (name, ext))
+            fig.savefig(path, dpi=110)
+            files.append(path)
+        plt.close(fig)
+
+    t = s["t"]
+    units = ("m", "m", "m", "m", "deg", "deg")
+    scale = (1, 1, 1, 1, 180 / math.pi, 180 / math.pi)
+    for name, rows in (("shape", (3, 4, 5)), ("position", (0, 1, 2))):
+        fig, axes = plt.subplots(3, 1, figsize=(8, 7), sharex=True)
+        for ax, j in zip(axes, rows):
+            ax.plot(t, [q[j] * scale[j] for q in s["Q"]], label=VARIABLES[j])
+            ax.plot(t, [q[j] * scale[j] for q in s["Qd"]], "--", color="tab:red", label=VARIABLES[j] + " desired")
+            ax.set_ylabel("%s [%s]" % (VARIABLES[j], units[j]))
+            ax.grid(True, alpha=0.3)
+            ax.legend(loc="best")
+        axes[-1].set_xlabel("t [s]")
+        axes[0].set_title("formation %s against the desired (true positions, the layer's held Qd)" % name)
+        save(fig, name)
+    fig, axes = plt.subplots(3, 1, figsize=(8, 7), sharex=True)
+    axes[0].plot(t, s["e_position"], label="position error")
+    axes[0].plot(t, s["e_shape"], label="shape error")
+    axes[0].axvline(SETTLE_TIME, color="gray", lw=0.8)
+    axes[0].set_ylabel("error [m]")
+    for d in drones:
+        axes[1].plot(t, s[d]["track"], label=d)
+    axes[1].set_ylabel("|reference - position| [m]")
+    axes[2].plot(t, s["distance"], color="k", label="distance between the drones")
+    axes[2].axhline(MIN_DISTANCE, color="tab:red", ls="--", label="min_distance %.1f m" % MIN_DISTANCE)
+    axes[2].set_ylabel("distance [m]")
+    for ax in axes:
+        ax.grid(True, alpha=0.3)
+        ax.legend(loc="best")
+    axes[-1].set_xlabel("t [s]")
+    axes[0].set_title("formation errors (checks from %.0f s), each drone's tracking, the drones' distance" % SETTLE_TIME)
+    save(fig, "errors")
+    fig, ax = plt.subplots(figsize=(6.4, 5.6))
+    for d, c in zip(drones, ("tab:blue", "tab:orange")):
+        ax.plot([p[0] for p in s[d]["pos"]], [p[1] for p in s[d]["pos"]], color=c, label=d)
+    ax.plot([q[0] for q in s["Qd"]], [q[1] for q in s["Qd"]], "--", color="tab:red", label="desired formation position")
+    ax.set_aspect("equal")
+    ax.set_xlabel("x [m]"); ax.set_ylabel("y [m]")
+    ax.grid(True, alpha=0.3)
+    ax.legend(loc="best")
+    ax.set_title("top view")
+    save(fig, "top_view")
+    return files
+
+
+def video(drones, s, out_dir, fps):
+    """Both drones in 3D with their trails and the line between them."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from mpl_toolkits.mplot3d import Axes3D  # noqa: F401  (projection="3d" on matplotlib < 3.2)
+    from matplotlib.animation import FFMpegWriter
+    t = s["t"]
+    path = os.path.join(out_dir, "formation_flight.mp4")
+    fig = plt.figure(figsize=(6.4, 4.8), dpi=100)
+    ax = fig.add_subplot(111, projection="3d")
+    every = [p for d in drones for p in s[d]["pos"]]
+    pad = 0.3
+    ax.set_xlim(min(p[0] for p in every) - pad, max(p[0] for p in every) + pad)
+    ax.set_ylim(min(p[1] for p in every) - pad, max(p[1] for p in every) + pad)
+    ax.set_zlim(0, max(p[2] for p in every) + pad)
+    ax.set_xlabel("x [m]"); ax.set_ylabel("y [m]"); ax.set_zlabel("z [m]")
+    trails = [ax.plot([], [], [], color=c, lw=1.2, label=d)[0] for d, c in zip(drones, ("tab:blue", "tab:orange"))]
+    line, = ax.plot([], [], [], "o-", color="tab:green", ms=6, label="formation line")
+    desired, = ax.plot([], [], [], "--", color="tab:red", lw=1, label="desired")
+    ax.legend(loc="upper left", fontsize=7)
+    label = ax.set_title("")
+    writer = FFMpegWriter(fps=fps, codec="libx264", extra_args=["-pix_fmt", "yuv420p"])
+    frames, i = 0, 0
+    with writer.saving(fig, path, dpi=100):
+        for f in range(int(math.floor((t[-1] - t[0]) * fps + 1e-9)) + 1):
+            ft = t[0] + f / fps
+            while i + 1 < len(t) and t[i + 1] <= ft + 1e-9:
+                i += 1
+            for trail, d in zip(trails, drones):
+                trail.set_data_3d(*[[p[j] for p in s[d]["pos"][: i + 1]] for j in range(3)])
+            ends = [s[d]["pos"][i] for d in drones]
+            line.set_data_3d(*[[e[j] for e in ends] for j in range(3)])
+            Xd = positions(s["Qd"][i])
+            desired.set_data_3d([Xd[0], Xd[3]], [Xd[1], Xd[4]], [Xd[2], Xd[5]])
+            label.set_text("formation   t = %5.1f s" % ft)
+            writer.grab_frame()
+            frames += 1
+    plt.close(fig)
+    return path, frames
+
+
+def markdown(m, files):
+    r = m["rms_after_settle"]
+    lines = ["## Formation", "",
+             "| metric | value |", "|---|---|",
+             "| ticks | %d (steps %d to %d) |" % (m["ticks"], m["first_tick"], m["last_tick"]),
+             "| RMS after %.0f s: rho / alpha / beta | %.4f m / %.4f rad / %.4f rad |" % (
+                 m["settle_time_s"], r["rho_m"], r["alpha_rad"], r["beta_rad"]),
+             "| RMS after %.0f s: position (x, y) / height | %.4f m / %.4f m |" % (
+                 m["settle_time_s"], r["position_xy_m"], r["height_m"]),
+             "| largest position / shape error after %.0f s | %.4f m / %.4f m |" % (
+                 m["settle_time_s"], m["max_position_error_m"], m["max_shape_error_m"]),
+             "| IAE position / shape after %.0f s | %.4f / %.4f m s |" % (
+                 m["settle_time_s"], m["iae_position_m_s"], m["iae_shape_m_s"]),
+             "| smallest distance between the drones | %.4f m at %.2f s |" % (
+                 m["smallest_distance_m"], m["smallest_distance_at_s"])]
+    for d, v in m["drones"].items():
+        lines.append("| %s: RMS / max tracking of its reference | %.4f m / %.4f m |" % (
+            d, v["rms_tracking_error_m"], v["max_tracking_error_m"]))
+    lines.append("")
+    lines += ["![%s](%s)" % (os.path.basename(f), os.path.basename(f)) for f in files if f.endswith(".png")]
+    if m.get("video"):
+        lines += ["", "Video: [%s](%s) (%d frames)" % (os.path.basename(m["video"]), os.path.basename(m["video"]),
+                                                      m["video_frames"])]
+    return lines + [""]
+
+
+def report(bag, out_dir, pdf, with_video, fps, report_error):
+    """The formation's metrics (a dict for metrics.json), its files and its
+    report.md lines."""
+    drones, ticks, states = read_formation(bag, report_error)
+    ts = ticks[min(ticks)].sample_time
+    s = series_of(drones, ticks, states, ts)
+    if len(s["t"]) < 2:
+        raise report_error("bag '%s': fewer than 2 ticks with every drone's state" % bag.filename)
+    m = metrics_of(drones, s, ts)
+    files = figures(drones, s, out_dir, pdf)
+    if with_video:
+        m["video"], m["video_frames"] = video(drones, s, out_dir, fps)
+        files.append(m["video"])
+    m["files"] = [os.path.basename(f) for f in files]
+    return m, files, markdown(m, files)

@@ -1,0 +1,75 @@
+#!/usr/bin/python3
+"""report on a bag of formation.launch (lockstep, delays 3 and 9) gives the
+formation's errors exactly as `flight --formation` computes them from its
+own run (its --csv: Q and Qd per tick), each drone's tracking, the smallest
+distance, the figures and the video of both drones."""
+import csv
+import json
+import math
+import os
+import subprocess
+import sys
+import tempfile
+import unittest
+
+import rospy
+import rostest
+
+sys.path.insert(0, os.path.dirname(os.path.realpath(__file__)))
+from bag_helpers import record_until  # noqa: E402
+
+
+def flight_errors(formation_file, delays, first, last, ts):
+    """RMS after 10 s of rho, alpha, beta, the horizontal position and the
+    height over ticks first..last, and the smallest distance, from flight's CSV."""
+    with tempfile.TemporaryDirectory() as tmp:
+        path = os.path.join(tmp, "f.csv")
+        subprocess.run(["rosrun", "aurora_control", "flight", "--formation", formation_file, "--delay"] +
+                       [str(d) for d in delays] + ["--csv", path], check=True, stdout=subprocess.PIPE)
+        rows = [r for r in csv.DictReader(open(path)) if first <= int(r["step"]) <= last]
+    sums, n, closest = [0.0] * 5, 0, 1e300
+    for r in rows:
+        closest = min(closest, float(r["Q_rho"]))
+        if int(r["step"]) * ts < 10.0:
+            continue
+        e = [float(r["Qd_" + v]) - float(r["Q_" + v]) for v in ("xF", "yF", "zF", "rho", "alpha", "beta")]
+        for i, term in enumerate((e[3] ** 2, e[4] ** 2, e[5] ** 2, e[0] ** 2 + e[1] ** 2, e[2] ** 2)):
+            sums[i] += term
+        n += 1
+    return [math.sqrt(s / n) for s in sums], closest, len(rows)
+
+
+class FormationReportTest(unittest.TestCase):
+    def test_report_of_a_formation_bag(self):
+        bag = record_until(900, rospy.get_param("~bag_dir"), rospy.get_param("~prefix"),
+                           state="/ardrone2/state", recorder="/recorder")
+        out = bag[:-4] + "_report"
+        p = subprocess.run(["rosrun", "aurora_control", "report", bag, "--out", out, "--no-pdf"],
+                           stdout=subprocess.PIPE, stderr=subprocess.STDOUT, universal_newlines=True)
+        self.assertEqual(p.returncode, 0, p.stdout)
+        m = json.load(open(os.path.join(out, "metrics.json")))["formation"]
+        last = min(m["last_tick"], 2699)  # flight runs ticks 0 .. 2699
+        self.assertEqual(m["first_tick"], 0)
+        self.assertGreaterEqual(m["last_tick"], 900)
+        ts = rospy.get_param("/ardrone1/vehicle/sample_time")
+        delays = [rospy.get_param("~delay_1"), rospy.get_param("~delay_2")]
+        rms, closest, rows = flight_errors(rospy.get_param("~formation_file"), delays, 0, last, ts)
+        self.assertEqual(rows, m["ticks"], "the report's ticks are not flight's")
+        got = m["rms_after_settle"]
+        for name, want in zip(("rho_m", "alpha_rad", "beta_rad", "position_xy_m", "height_m"), rms):
+            self.assertAlmostEqual(got[name], want, delta=1e-12 + 1e-9 * abs(want), msg=name)
+        self.assertAlmostEqual(m["smallest_distance_m"], closest, delta=1e-12)
+        for d in ("ardrone1", "ardrone2"):
+            self.assertGreater(m["drones"][d]["rms_tracking_error_m"], 0.0)
+            self.assertLess(m["drones"][d]["max_tracking_error_m"], 1.0)
+        for f in ("formation_shape.png", "formation_position.png", "formation_errors.png", "formation_top_view.png",
+                  "formation_flight.mp4"):
+            self.assertGreater(os.path.getsize(os.path.join(out, f)), 10000, f)
+        # One frame per 0.1 s of flight (report's default --fps 10), from tick 0.
+        self.assertEqual(m["video_frames"], int(math.floor(m["last_tick"] * ts * 10 + 1e-9)) + 1)
+        self.assertIn("## Formation", open(os.path.join(out, "report.md")).read())
+
+
+if __name__ == "__main__":
+    rospy.init_node("check_formation_report")
+    rostest.rosrun("aurora_tests", "formation_report", FormationReportTest)
