@@ -12,21 +12,24 @@
 
 namespace aurora_sweep {
 
+// The launch's index of a thread, in 64 bits (a launch may pass 2^31).
+AURORA_HD inline long threadIndex(unsigned block, unsigned block_dim, unsigned thread) {
+  return static_cast<long>(block) * static_cast<long>(block_dim) + static_cast<long>(thread);
+}
+
 template <aurora_control::LawType Law, typename T, int Capacity, bool Linked = false>
 AURORA_HD inline void sweepThread(const SimSetup<T>& setup, const GridView& grid, long first, long n,
                                   SimResult* out, unsigned block, unsigned block_dim, unsigned thread) {
-  const long i = static_cast<long>(block) * static_cast<long>(block_dim) + static_cast<long>(thread);
-  if (i >= n) return;
-  out[i] = simulateCombination<Law, T, Capacity, Linked>(setup, grid, first + i);
+  const long i = threadIndex(block, block_dim, thread);
+  if (i < n) out[i] = simulateCombination<Law, T, Capacity, Linked>(setup, grid, first + i);
 }
 
 // The same for a formation sweep: one formation per thread.
 template <aurora_control::LawType Law, typename T, int Capacity, bool Linked = false>
 AURORA_HD inline void formationThread(const FormationSetup<T>& setup, const GridView& grid, long first, long n,
                                       SimResult* out, unsigned block, unsigned block_dim, unsigned thread) {
-  const long i = static_cast<long>(block) * static_cast<long>(block_dim) + static_cast<long>(thread);
-  if (i >= n) return;
-  out[i] = simulateFormation<Law, T, Capacity, Linked>(setup, grid, first + i);
+  const long i = threadIndex(block, block_dim, thread);
+  if (i < n) out[i] = simulateFormation<Law, T, Capacity, Linked>(setup, grid, first + i);
 }
 
 // Blocks of `block_size` threads that cover n combinations.
