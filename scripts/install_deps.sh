@@ -18,7 +18,7 @@ case "${ID}:${VERSION_ID}" in
           python3-dynamic-reconfigure libdynamic-reconfigure-config-init-mutex-dev
           rviz librosbag-dev librosbag-storage-dev python3-geometry-msgs python3-std-msgs python3-nav-msgs
           python3-rosgraph-msgs python3-tf2-msgs python3-visualization-msgs python3-sensor-msgs
-          python3-rosparam python3-rosnode libangles-dev catkin-lint libroslib-dev python3-roslib)
+          python3-rosparam python3-rosnode libangles-dev catkin-lint libroslib-dev python3-roslib python3-rospkg)
     ;;
   ubuntu:20.04)
     PKGS=(ros-noetic-ros-base ros-noetic-rostest ros-noetic-rosbag ros-noetic-tf2-ros
@@ -34,7 +34,8 @@ esac
 PKGS+=(build-essential cmake libeigen3-dev libyaml-cpp-dev libgtest-dev googletest libxsimd-dev
        libboost-program-options-dev nlohmann-json3-dev libhdf5-dev python3-h5py libcsv-dev
        libopenmpi-dev openmpi-bin librandom123-dev
-       python3-matplotlib python3-numpy python3-yaml ffmpeg xvfb xauth imagemagick)
+       python3-matplotlib python3-numpy python3-yaml ffmpeg xvfb xauth imagemagick
+       pybind11-dev python3-dev)
 
 missing=()
 for p in "${PKGS[@]}"; do

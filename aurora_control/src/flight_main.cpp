@@ -13,13 +13,8 @@
 #include <string>
 #include <vector>
 
-#include "aurora_control/flight_runner.h"
-#include "aurora_control/law_yaml.h"
-#include "aurora_control/limits.h"
-#include "aurora_control/link_yaml.h"
-#include "aurora_control/task_yaml.h"
+#include "aurora_control/flight_setup.h"
 #include "aurora_sim/ros/config_dir.h"
-#include "aurora_sim/vehicle_yaml.h"
 #include "formation_flight.h"
 
 namespace po = boost::program_options;
@@ -60,20 +55,6 @@ bool parse(int argc, char** argv, Options& o) {
   return true;
 }
 
-ControllerSettings loadSettings(const Options& o, const aurora_sim::ArdroneParams<double>& p) {
-  ControllerSettings set = readControllerFile(o.controller).settings;
-  set.clamp_commands = !o.no_clamp;
-  set.vehicle = p;
-  set.Ts = p.Ts;
-  set.delay = o.delay;
-  if (!o.link.empty()) {
-    set.link = readLinkFile(o.link);
-    const std::string refusal = combineUplinkDelay(o.delay, set.link, set.delay);
-    if (!refusal.empty()) throw ConfigError("--delay and --link " + o.link + ": " + refusal);
-  }
-  return set;
-}
-
 // RMS and maximum tracking error per segment (a waypoint's, or a lap), on
 // the one definition of docs/controllers.md: state k against reference k.
 class SegmentErrors {
@@ -112,20 +93,13 @@ void writeCsvRow(FILE* csv, const LoopObservation<double>& o, double t, double e
   std::fprintf(csv, ",%.17g\n", error);
 }
 
-void refuseDelayBeyondTheTask(long delay, long steps, double Ts) {
-  long samples = 0;
-  const std::string refusal = delayRefusal(double(delay), false, Ts, samples);
-  if (!refusal.empty()) throw ConfigError("--delay " + std::to_string(delay) + " " + refusal);
-  if (!delayShorterThanRun(delay, steps)) throw ConfigError("--delay " + delayRunText(delay, steps, Ts));
-}
-
 // Flies the options' task once and prints what it measured.
 void run(const Options& o) {
-  const auto p = aurora_sim::loadVehicleYaml(o.vehicle);
-  const ControllerSettings set = loadSettings(o, p);
-  const Task<double> task = readTask(YamlReader("task file '" + o.task + "': "), loadYamlFile("task file", o.task)["task"], "task");
-  const long n = taskStepCount(task.duration(), p.Ts);  // steps 0..N, as the node and report
-  refuseDelayBeyondTheTask(set.delay, n, p.Ts);
+  const FlightSetup f = loadFlight(FlightFiles{o.controller, o.task, o.vehicle, o.link, o.delay, o.no_clamp});
+  const auto& p = f.vehicle;
+  const ControllerSettings& set = f.settings;
+  const Task<double>& task = f.task;
+  const long n = f.steps;
   FILE* csv = o.csv.empty() ? nullptr : std::fopen(o.csv.c_str(), "w");
   if (!o.csv.empty() && !csv) throw std::runtime_error("cannot write '" + o.csv + "'");
   if (csv) std::fprintf(csv, "%s", kCsvHeader);

@@ -91,6 +91,13 @@ class InstallSpaceTest(unittest.TestCase):
         self.assertEqual(rc, 0, out)
         self.assertIn("IAE", out)
 
+    def test_4b_python_simulates_from_the_install_space(self):
+        rc, out = self.sh("cd %s && /usr/bin/python3 -c 'import aurora; f = aurora.simulate(\"pd_saturated\", "
+                          "\"mission4\", delay=5); print(aurora.__file__, aurora._core.__file__, f.metrics[\"iae\"])'"
+                          % self.tmp)
+        self.assertEqual(rc, 0, out)
+        self.assertIn(self.prefix, out.split()[1], "aurora._core is not the install space's: %s" % out)
+
     def test_5_without_the_setup_the_error_says_what_to_source(self):
         sweep = os.path.join(self.prefix, "lib", "aurora_sweep", "sweep")
         sweep_file = os.path.join(self.prefix, "share", "aurora_config", "sweeps", "positioning_delay.yaml")

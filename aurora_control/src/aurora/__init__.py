@@ -7,5 +7,8 @@ Modules:
     aurora.plot_sweep  the plots of a sweep's results; the sweep program runs
                        `rosrun aurora_sweep plot_sweep DIR`, which calls it
 
+    aurora.simulate    one offline flight on the C++ core (aurora.simulation)
+
 See docs/architecture.md, "Packages and data flow".
 """
+from aurora.simulation import Flight, simulate  # noqa: F401

@@ -1,0 +1,55 @@
+// One offline flight's inputs, loaded and checked once for every caller
+// (the `flight` tool, Python's aurora.simulate): the vehicle, the
+// controller, the task, the delay and an optional link, from their YAML
+// files, refused with the node's messages (ConfigError naming the key).
+#pragma once
+
+#include <string>
+
+#include "aurora_control/flight_runner.h"
+#include "aurora_control/law_yaml.h"
+#include "aurora_control/limits.h"
+#include "aurora_control/link_yaml.h"
+#include "aurora_control/task_yaml.h"
+#include "aurora_sim/vehicle_yaml.h"
+
+namespace aurora_control {
+
+struct FlightFiles {
+  std::string controller, task, vehicle, link;  // link: "" for the ideal link
+  long delay = 0;                               // [samples]; with a link, 0 keeps the link's uplink delay
+  bool no_clamp = false;                        // do not clamp the law's commands (the sim still does)
+};
+
+struct FlightSetup {
+  aurora_sim::ArdroneParams<double> vehicle;
+  ControllerSettings settings;
+  Task<double> task;
+  long steps = 0;  // steps 0..N of the task (taskStepCount), as the node and report
+};
+
+inline FlightSetup loadFlight(const FlightFiles& f) {
+  FlightSetup s;
+  s.vehicle = aurora_sim::loadVehicleYaml(f.vehicle);
+  s.settings = readControllerFile(f.controller).settings;
+  s.settings.clamp_commands = !f.no_clamp;
+  s.settings.vehicle = s.vehicle;
+  s.settings.Ts = s.vehicle.Ts;
+  s.settings.delay = f.delay;
+  if (!f.link.empty()) {
+    s.settings.link = readLinkFile(f.link);
+    const std::string refusal = combineUplinkDelay(f.delay, s.settings.link, s.settings.delay);
+    if (!refusal.empty()) throw ConfigError("--delay and --link " + f.link + ": " + refusal);
+  }
+  s.task = readTask(YamlReader("task file '" + f.task + "': "), loadYamlFile("task file", f.task)["task"], "task");
+  s.steps = taskStepCount(s.task.duration(), s.vehicle.Ts);
+  long samples = 0;
+  const std::string refusal = delayRefusal(double(s.settings.delay), false, s.vehicle.Ts, samples);
+  if (!refusal.empty()) throw ConfigError("--delay " + std::to_string(s.settings.delay) + " " + refusal);
+  if (!delayShorterThanRun(s.settings.delay, s.steps)) {
+    throw ConfigError("--delay " + delayRunText(s.settings.delay, s.steps, s.vehicle.Ts));
+  }
+  return s;
+}
+
+}  // namespace aurora_control

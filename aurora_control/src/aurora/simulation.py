@@ -1,0 +1,83 @@
+"""aurora.simulate: one offline flight on the C++ core (aurora._core), the
+`flight` tool's flight to the last bit, from Python without a roscore.
+
+    import aurora
+    f = aurora.simulate("underactuated", "circle", delay=5)
+    f.t, f.states, f.commands, f.reference, f.metrics["iae"]
+
+A controller, task, vehicle or link is a name of the shipped files
+(controllers/NAME.yaml of aurora_config, ...), a path to such a file, or a
+dict with the file's schema (e.g. {"controller": {"name": "pd_saturated",
+"kp": 0.5, "kd": 0.85}}). A bad one raises ValueError with the flight
+tool's message, naming the key."""
+import functools
+import os
+import tempfile
+
+import yaml
+
+from aurora import _core
+
+_FOLDERS = {"controller": "controllers", "task": "tasks", "vehicle": "vehicles", "link": "links"}
+
+
+class Flight:
+    """One flight: rows k = 0..n-1 (task time k Ts).
+
+    t [s] (n), states (n x 12: x, y, z [m], phi, theta, psi [rad], their
+    rates; the state after k model steps), commands (n x 4: the command the
+    drone applied at step k, model order, fraction of full scale), reference
+    (n x 3 [m]), error (n: tracking error [m]), metrics (dict: steps, iae,
+    itae, iasc, rms_tracking_error, max_tracking_error, delay), law."""
+
+    def __init__(self, d):
+        for k in ("t", "states", "commands", "reference", "error", "metrics", "sample_time", "law"):
+            setattr(self, k, d[k])
+
+    def __repr__(self):
+        m = self.metrics
+        return "Flight(%s, %d steps, delay %d, IAE %.4f, RMS tracking error %.4f m)" % (
+            self.law, m["steps"], m["delay"], m["iae"], m["rms_tracking_error"])
+
+
+@functools.lru_cache(maxsize=1)
+def config_dir():
+    """The aurora_config package's folder (the shipped YAML files), looked up
+    once (rospkg crawls ROS_PACKAGE_PATH)."""
+    import rospkg
+    try:
+        return rospkg.RosPack().get_path("aurora_config")
+    except rospkg.ResourceNotFound:
+        raise ValueError("the aurora_config package is not on ROS_PACKAGE_PATH: source the workspace's setup.bash")
+
+
+def _as_file(value, kind, tmp):
+    """A path to a YAML file for `value` (a dict, a path or a shipped name)."""
+    if isinstance(value, dict):
+        path = os.path.join(tmp, kind + ".yaml")
+        with open(path, "w") as f:
+            yaml.safe_dump(value, f)
+        return path
+    if not isinstance(value, str):
+        raise ValueError("%s: expected a name, a path or a dict, got %s" % (kind, type(value).__name__))
+    if os.path.sep in value or value.endswith(".yaml"):
+        if not os.path.exists(value):
+            raise ValueError("%s file '%s' does not exist" % (kind, value))
+        return value
+    path = os.path.join(config_dir(), _FOLDERS[kind], value + ".yaml")
+    if not os.path.exists(path):
+        shipped = sorted(n[:-5] for n in os.listdir(os.path.dirname(path)) if n.endswith(".yaml"))
+        raise ValueError("%s '%s' is not a shipped one: accepted %s, a path, or a dict" % (kind, value, ", ".join(shipped)))
+    return path
+
+
+def simulate(controller, task, vehicle=None, delay=0, link=None, clamp=True):
+    """One flight of `controller` on `task` with a feedback delay of `delay`
+    samples (over `link` when given; 0 keeps the link's uplink delay)."""
+    if isinstance(delay, bool) or not isinstance(delay, int):
+        raise ValueError("delay: expected whole samples (an int), got %r" % (delay,))
+    with tempfile.TemporaryDirectory() as tmp:
+        files = [_as_file(v, k, tmp) for v, k in ((controller, "controller"), (task, "task"),
+                                                   (vehicle or "ardrone2", "vehicle"))]
+        link_file = _as_file(link, "link", tmp) if link is not None else ""
+        return Flight(_core.simulate_files(files[0], files[1], files[2], delay, link_file, bool(clamp)))
