@@ -169,9 +169,9 @@ class BatchWorker {
     const Combination c = grid_.decode(have ? index : first_);
     const aurora_control::StudyRun<T> run = studyRun(setup_, c);
     if (lane_links_) {
-      lane_links_->start(l, combinationLink(setup_.config.link, c), static_cast<uint64_t>(c.key));
+      lane_links_->start(l, combinationLink(setup_.config.link, run.delay, c), static_cast<uint64_t>(c.key));
     } else if (!setup_.ideal_link) {
-      links_[l] = Link(combinationLink(setup_.config.link, c), run.delay, static_cast<uint64_t>(c.key),
+      links_[l] = Link(combinationLink(setup_.config.link, run.delay, c), run.delay, static_cast<uint64_t>(c.key),
                        double(setup_.model.Ts));
     }
     active_[l] = have;
@@ -221,25 +221,16 @@ class BatchWorker {
     if (lane_links_) return lane_links_->uplink(count_, start_, step_);
     long k[L];
     laneSteps(k);
-    alignas(64) Int at[L];
-    for (int l = 0; l < L; ++l) at[l] = static_cast<Int>(links_[l].uplinkIndex(k[l]) + 1);
-    return I::load_aligned(at);
+    return modelLinksUplink<I>(links_, k);
   }
 
   // Over a link: each lane's sent command U becomes the one its drone
   // receives (the newest arrived, or hover).
   void linkCommands(B U[4]) {
     if (lane_links_) return lane_links_->downlink(count_, start_, step_, U);
-    alignas(64) T sent[4][L];
     long k[L];
     laneSteps(k);
-    for (int i = 0; i < 4; ++i) U[i].store_aligned(sent[i]);
-    for (int l = 0; l < L; ++l) {
-      T lane[4] = {sent[0][l], sent[1][l], sent[2][l], sent[3][l]};
-      links_[l].downlink(k[l], lane, lane);
-      for (int i = 0; i < 4; ++i) sent[i][l] = lane[i];
-    }
-    for (int i = 0; i < 4; ++i) U[i] = B::load_aligned(sent[i]);
+    modelLinksDownlink(links_, k, U);
   }
 
   // Loop steps 2-5, the closed loop's iteration k on every lane: both halves

@@ -112,7 +112,7 @@ class FormationBatch {
       I index;  // 1-based
       if (setup_.ideal_link) index = aurora_control::delayedHistoryIndex(count, delay_[d]);
       else if (lane_links_[d]) index = lane_links_[d]->uplink(count, I(Int(0)), k);
-      else index = modelLinkIndex(d, k);
+      else index = modelLinksUplink<I>(links_[d], everyLaneTicks(k).k);
       const I base = ((index - I(Int(1))) & mask) * I(Int(W * L)) + lane_;
       aurora_control::LawSample<B, Law> delayed;
       for (int j = 0; j < W; ++j) delayed.v[j] = gatherLanes<B>(history_[d].data(), base + I(Int(j * L)));
@@ -120,24 +120,21 @@ class FormationBatch {
     }
   }
 
-  I modelLinkIndex(int d, long k) {
-    alignas(64) Int at[L];
-    for (int l = 0; l < L; ++l) at[l] = static_cast<Int>(links_[d][l].uplinkIndex(k) + 1);
-    return I::load_aligned(at);
+  // Every lane is at tick k.
+  struct LaneTicks {
+    long k[L];
+  };
+  static LaneTicks everyLaneTicks(long k) {
+    LaneTicks t;
+    for (long& v : t.k) v = k;
+    return t;
   }
 
   // Drone d's sent commands U become the ones it applies (ideal: as sent).
   void downlink(int d, long k, B U[4]) {
     if (setup_.ideal_link) return;
     if (lane_links_[d]) return lane_links_[d]->downlink(I(static_cast<Int>(k + 1)), I(Int(0)), k, U);
-    alignas(64) T sent[4][L];
-    for (int i = 0; i < 4; ++i) U[i].store_aligned(sent[i]);
-    for (int l = 0; l < L; ++l) {
-      T lane[4] = {sent[0][l], sent[1][l], sent[2][l], sent[3][l]};
-      links_[d][l].downlink(k, lane, lane);
-      for (int i = 0; i < 4; ++i) sent[i][l] = lane[i];
-    }
-    for (int i = 0; i < 4; ++i) U[i] = B::load_aligned(sent[i]);
+    modelLinksDownlink(links_[d], everyLaneTicks(k).k, U);
   }
 
   void push(long k, const aurora_control::LoopState<B, M>* state) {

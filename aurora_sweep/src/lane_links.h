@@ -139,6 +139,30 @@ struct LaneChannel {
   static I nonNegative(const I& x) { return x & atLeast(x, I(Int(0))); }
 };
 
+// Lane by lane over each lane's own ModelLink (where the vectorized links
+// do not apply: a geometric jitter): the history index (1-based) of the state
+// lane l's controller receives at its step k[l] ...
+template <class I, class Link, int L>
+I modelLinksUplink(std::vector<Link>& links, const long (&k)[L]) {
+  alignas(64) typename I::value_type at[L];
+  for (int l = 0; l < L; ++l) at[l] = static_cast<typename I::value_type>(links[l].uplinkIndex(k[l]) + 1);
+  return I::load_aligned(at);
+}
+
+// ... and the commands U each lane sent at k[l] become the ones its drone applies.
+template <class B, class Link, int L>
+void modelLinksDownlink(std::vector<Link>& links, const long (&k)[L], B U[4]) {
+  using T = typename B::value_type;
+  alignas(64) T sent[4][L];
+  for (int i = 0; i < 4; ++i) U[i].store_aligned(sent[i]);
+  for (int l = 0; l < L; ++l) {
+    T lane[4] = {sent[0][l], sent[1][l], sent[2][l], sent[3][l]};
+    links[l].downlink(k[l], lane, lane);
+    for (int i = 0; i < 4; ++i) sent[i][l] = lane[i];
+  }
+  for (int i = 0; i < 4; ++i) U[i] = B::load_aligned(sent[i]);
+}
+
 // Both directions and the commands in flight on every lane (ModelLink), in
 // the engine's batches: B of T, I of Int.
 template <int Window, typename T, class Arch>

@@ -44,15 +44,6 @@ void readFormationCriteria(const aurora_control::YamlReader& r, const YAML::Node
 
 namespace {
 
-// Drone d's link with the sweep's largest value of each given link value.
-aurora_control::LinkParams worstLink(const SweepSpec& spec, int d) {
-  aurora_control::LinkParams l = spec.formation_run.drone[d].link;
-  for (int i = 0; i < kLinkParamCount; ++i) {
-    if (spec.linkValueGiven(i)) aurora_control::setLinkValue(l, i, spec.maxValue(kParamFirstLinkValue + i));
-  }
-  return l;
-}
-
 // The smallest burst above 1 drone d's direction runs with (its own when
 // the sweep gives none).
 double smallestBurst(const SweepSpec& spec, int burst_value, double own) {
@@ -67,7 +58,7 @@ double smallestBurst(const SweepSpec& spec, int burst_value, double own) {
 void checkFormationLinks(const aurora_control::YamlReader& r, const SweepSpec& spec) {
   bool draws = false;
   for (int d = 0; d < kFormationDroneCount; ++d) {
-    const aurora_control::LinkParams worst = worstLink(spec, d);
+    const aurora_control::LinkParams worst = spec.formationWorstLink(d);
     const aurora_control::LinkDirection* dirs[2] = {&worst.uplink, &worst.downlink};
     const int bursts[2] = {aurora_control::kLinkUplinkBurst, aurora_control::kLinkDownlinkBurst};
     for (int j = 0; j < 2; ++j) {

@@ -82,9 +82,7 @@ class FormationController {
       layer_.update(seen, Qd);
     }
     for (int d = 0; d < kDrones; ++d) {
-      HeldReference<double> held;
-      held.hold(layer_.position(d), layer_.velocity(d));
-      t.ref[d] = held.ref;
+      t.ref[d] = heldReference(layer_, d);
       t.out[d] = core_[d].compute(t.ref[d]);
     }
     return t;
@@ -94,15 +92,8 @@ class FormationController {
   const FormationRun<double, Line>& run() const { return run_; }
 
  private:
-  // Before the first period: the references at the drones' starts, the
-  // previous Qd = Qd(0) (formation_layer.h).
   void startLayer() {
-    double X0[Line::kVariables], Qd[Line::kVariables];
-    for (int d = 0; d < kDrones; ++d) {
-      for (int i = 0; i < 3; ++i) X0[3 * d + i] = run_.drone[d].start[i];
-    }
-    run_.reference.at(0.0, Qd);
-    layer_.start(X0, Qd);
+    aurora_control::startLayer(run_, layer_);
     last_k_ = -1;
   }
 

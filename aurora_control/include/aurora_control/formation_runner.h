@@ -64,22 +64,39 @@ struct FormationObservation {
   const FormationLayer<T, Shape>& layer;
 };
 
+// The layer before its first period: the references at the drones' starts,
+// the previous Qd = Qd(0) (formation_layer.h).
+template <typename T, class Shape>
+AURORA_HD inline void startLayer(const FormationRun<T, Shape>& run, FormationLayer<T, Shape>& layer) {
+  T X0[Shape::kVariables], Qd[Shape::kVariables];
+  for (int d = 0; d < Shape::kDrones; ++d) {
+    for (int i = 0; i < 3; ++i) X0[3 * d + i] = run.drone[d].start[i];
+  }
+  run.reference.at(T(0), Qd);
+  layer.start(X0, Qd);
+}
+
+// Drone d's reference as the layer holds it (position, velocity).
+template <typename T, class Shape>
+AURORA_HD inline Reference<T> heldReference(const FormationLayer<T, Shape>& layer, int d) {
+  HeldReference<T> held;
+  held.hold(layer.position(d), layer.velocity(d));
+  return held.ref;
+}
+
 // Each drone's fixed parameters (its plant, model and gains; the study's
 // single-drone criteria, which a formation does not judge) and its state at
-// rest at its start; the layer started on the starts and Qd(0).
+// rest at its start; the layer started (startLayer).
 template <typename T, class Shape, typename Mask>
 AURORA_HD inline void startFormation(const FormationRun<T, Shape>& run, LoopParams<T>* params, LoopState<T, Mask>* state,
                                      FormationLayer<T, Shape>& layer) {
-  constexpr int N = Shape::kVariables;
-  T X0[N], Qd[N];
   for (int d = 0; d < Shape::kDrones; ++d) {
     params[d] = LoopParams<T>{run.drone[d].plant, run.drone[d].model, run.drone[d].gains,
                               FeasibilityCriteria<T>::study()};
     state[d].reset(run.drone[d].start);
-    for (int i = 0; i < 3; ++i) state[d].model.X[aurora_sim::kX + i] = X0[3 * d + i] = run.drone[d].start[i];
+    for (int i = 0; i < 3; ++i) state[d].model.X[aurora_sim::kX + i] = run.drone[d].start[i];
   }
-  run.reference.at(T(0), Qd);
-  layer.start(X0, Qd);
+  startLayer(run, layer);
 }
 
 // Steps 2-3 of tick k (docs/formation.md, "One tick") on the states xc the
@@ -102,7 +119,7 @@ AURORA_HD inline void formationTick(const LoopParams<T>* params, const ClampPoli
   }
   for (int d = 0; d < D; ++d) {
     HeldReference<T> held;
-    held.hold(layer.position(d), layer.velocity(d));
+    held.ref = heldReference(layer, d);
     T U[4];
     step[d].ref = controllerHalf<Law>(params[d], held, clamp, k, xc[d], state[d], U);
     downlink(d, U);

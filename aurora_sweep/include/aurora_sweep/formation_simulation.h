@@ -58,20 +58,14 @@ LineRun<T> castFormationRun(const LineRun<double>& r) {
 }
 
 // A combination's formation: each drone's delay, the formation's gains, and
-// on each drone's link the link values the sweep gives (NaN: the drone keeps
-// its own) and, for repeat r, the seed link.seed + r.
+// each drone's link with the link values the sweep gives (combinationLink:
+// a value it does not give keeps the drone's own).
 template <typename T>
 AURORA_HD inline LineRun<T> formationCombination(const FormationSetup<T>& s, const Combination& c) {
   LineRun<T> run = s.run;
   for (int d = 0; d < kFormationDroneCount; ++d) {
     run.drone[d].delay = static_cast<long>(c.v[kParamFirstDroneDelay + d]);
-    aurora_control::LinkParams& l = run.drone[d].link;
-    l.uplink.delay = run.drone[d].delay;
-    for (int i = 0; i < kLinkParamCount; ++i) {
-      const double v = c.v[kParamFirstLinkValue + i];
-      if (v == v) aurora_control::setLinkValue(l, i, v);
-    }
-    l.seed = l.seed + static_cast<uint32_t>(c.repeat());
+    run.drone[d].link = combinationLink(run.drone[d].link, run.drone[d].delay, c);
   }
   for (int i = 0; i < 6; ++i) {
     run.gains.k1[i] = T(c.v[kParamFirstFormationGain + i]);

@@ -90,15 +90,19 @@ AURORA_HD inline SimResult compactResult(const aurora_control::RunnerResult& r) 
   return s;
 }
 
-// A combination's link (docs/links.md, "Links in a sweep"): the sweep's
-// link with the combination's delay as the uplink's base delay, its link
-// values (link.h's setLinkValue, the node's live rule) and, for repeat r,
-// the seed link.seed + r.
-AURORA_HD inline aurora_control::LinkParams combinationLink(const aurora_control::LinkParams& base,
+// A combination's link (docs/links.md, "Links in a sweep"): `base` (the
+// sweep's link, or a formation drone's) with `uplink_delay` as the uplink's
+// base delay, the combination's link values (link.h's setLinkValue, the
+// node's live rule; a NaN value, one a formation sweep does not give, keeps
+// the base's) and, for repeat r, the seed base.seed + r.
+AURORA_HD inline aurora_control::LinkParams combinationLink(const aurora_control::LinkParams& base, long uplink_delay,
                                                            const Combination& c) {
   aurora_control::LinkParams l = base;
-  l.uplink.delay = c.delay();
-  for (int i = 0; i < kLinkParamCount; ++i) aurora_control::setLinkValue(l, i, c.v[kParamFirstLinkValue + i]);
+  l.uplink.delay = uplink_delay;
+  for (int i = 0; i < kLinkParamCount; ++i) {
+    const double v = c.v[kParamFirstLinkValue + i];
+    if (v == v) aurora_control::setLinkValue(l, i, v);
+  }
   l.seed = base.seed + static_cast<uint32_t>(c.repeat());
   return l;
 }
@@ -121,7 +125,7 @@ AURORA_HD inline aurora_control::RunnerResult runCombination(const SimSetup<T>& 
                                                              const aurora_control::StudyRun<T>& run,
                                                              std::true_type /*linked*/) {
   aurora_control::NoObserver none;
-  aurora_control::ModelLink<Capacity, T> link(combinationLink(setup.config.link, c), run.delay,
+  aurora_control::ModelLink<Capacity, T> link(combinationLink(setup.config.link, run.delay, c), run.delay,
                                               static_cast<uint64_t>(c.key), double(run.plant.Ts));
   return aurora_control::runClosedLoopOver<Law, T, Capacity>(run, setup.config, setup.iterations, none, link);
 }

@@ -87,18 +87,21 @@ struct SweepSpec {
     }
     return worst.historyNeeded(max_delay);
   }
+  // A formation drone's link with the sweep's largest value of each link
+  // value it gives (the drone's own for the others).
+  aurora_control::LinkParams formationWorstLink(int d) const {
+    aurora_control::LinkParams worst = formation_run.drone[d].link;
+    for (int i = 0; i < kLinkParamCount; ++i) {
+      if (linkValueGiven(i)) aurora_control::setLinkValue(worst, i, maxValue(kParamFirstLinkValue + i));
+    }
+    return worst;
+  }
   // A formation's: the largest over its drones of the drone's largest delay
-  // plus its link's largest jitter (the sweep's link values, or the drone's
-  // own where the sweep gives none).
+  // plus its worst link's jitter.
   long formationHistoryNeeded() const {
     long longest = 0;
     for (int d = 0; d < kFormationDroneCount; ++d) {
-      aurora_control::LinkParams worst = formation_run.drone[d].link;
-      for (int i : {aurora_control::kLinkUplinkJitter, aurora_control::kLinkDownlinkDelay,
-                    aurora_control::kLinkDownlinkJitter}) {
-        if (linkValueGiven(i)) aurora_control::setLinkValue(worst, i, maxValue(kParamFirstLinkValue + i));
-      }
-      const long h = worst.historyNeeded(static_cast<long>(maxValue(kParamFirstDroneDelay + d)));
+      const long h = formationWorstLink(d).historyNeeded(static_cast<long>(maxValue(kParamFirstDroneDelay + d)));
       longest = h > longest ? h : longest;
     }
     return longest;
