@@ -20,6 +20,7 @@ FormationNode::FormationNode(ros::NodeHandle nh, ros::NodeHandle private_nh) : n
                                   "' is invalid: accepted values 'realtime', 'lockstep'");
   }
   lockstep_ = mode == "lockstep";
+  configureSequence();
   cmd_subscribers_ = static_cast<int>(aurora_sim::rangedParam(pnh_, "lockstep_subscribers/cmd_vel", 1, 0, 100, ""));
   formation_subscribers_ = static_cast<int>(aurora_sim::rangedParam(pnh_, "lockstep_subscribers/formation", 0, 0, 100, ""));
   connect();
@@ -86,12 +87,13 @@ bool FormationNode::listenersReady() const {
 // Lockstep: a drone's state; once every drone's state of step k is here,
 // tick k. A re-sent state (no answer arrived) gets the same command again.
 void FormationNode::onState(int d, const aurora_msgs::DroneState::ConstPtr& msg) {
-  if (msg->stale) return;
+  if (msg->stale) return;  // the estimator's source stopped: the state ages
   if (lockstep_ && answered_ < 0 && !listenersReady()) {
     ROS_INFO_THROTTLE(5.0, "formation_controller: lockstep waits for the listeners of cmd_vel and formation");
     return;  // the sims re-send their states
   }
   const bool fresh = core_->push(d, sampleFromMsg(*msg));
+  last_state_[d] = ros::Time::now();
   if (!lockstep_) return;
   if (!fresh) {
     cmd_pubs_[d].publish(aurora_sim::twistMsgFromModelCommand(last_sent_[d]));
@@ -103,6 +105,7 @@ void FormationNode::onState(int d, const aurora_msgs::DroneState::ConstPtr& msg)
 
 // Realtime: every Ts on the newest states, once every drone sent one.
 void FormationNode::onTimer(const ros::TimerEvent&) {
+  if (sequence_) return flightCycle(ros::Time::now());
   for (int d = 0; d < kDrones; ++d) {
     if (!core_->ready(d)) return;
   }
@@ -111,12 +114,16 @@ void FormationNode::onTimer(const ros::TimerEvent&) {
 
 void FormationNode::answer(long k, const ros::Time& stamp) {
   const Core::Tick t = core_->tick(k);
+  send(t);
+  answered_ = k;
+  publish(t, stamp);
+}
+
+void FormationNode::send(const Core::Tick& t) {
   for (int d = 0; d < kDrones; ++d) {
     for (int i = 0; i < 4; ++i) last_sent_[d][i] = t.out[d].U[i];
     cmd_pubs_[d].publish(aurora_sim::twistMsgFromModelCommand(t.out[d].U));
   }
-  answered_ = k;
-  publish(t, stamp);
 }
 
 void FormationNode::publish(const Core::Tick& t, const ros::Time& stamp) {
@@ -127,6 +134,7 @@ void FormationNode::publish(const Core::Tick& t, const ros::Time& stamp) {
   m.sample_time = core_->run().drone[0].plant.Ts;
   m.layer_ran = t.layer_ran;
   m.drones = drones_;
+  m.mode = mode_;
   const FormationLayer<double, LineFormation<double>>& layer = core_->layer();
   for (int i = 0; i < 6; ++i) m.Q[i] = layer.Q()[i], m.Qd[i] = layer.Qd()[i], m.Qtil[i] = layer.Qtil()[i];
   for (int d = 0; d < kDrones; ++d) {
@@ -140,6 +148,7 @@ void FormationNode::publish(const Core::Tick& t, const ros::Time& stamp) {
   if (t.k % kMarkerDecimation == 0 && markers_pub_.getNumSubscribers() > 0) {
     double X[6];
     for (int d = 0; d < kDrones; ++d) {
+      if (!core_->ready(d)) return;
       for (int i = 0; i < 3; ++i) X[3 * d + i] = core_->newest(d).X[aurora_sim::kX + i];
     }
     markers_pub_.publish(formationMarkers(X, layer, "world"));

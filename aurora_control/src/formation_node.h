@@ -4,7 +4,10 @@
 // drone's delay or link and law, the formation layer) and publishes each
 // drone's command (/NS/cmd_vel) and the layer's state (formation). In
 // lockstep it answers once every drone's state of the same step arrived; in
-// realtime it runs on a 30 Hz timer on the newest states.
+// realtime it runs on a 30 Hz timer on the newest states. With real drones
+// (~safety/flight_sequence) it also takes them off, starts the formation
+// once both hover at their start points, watches their states and lands
+// them (formation_supervisor.h; formation_sequence.cpp).
 #pragma once
 
 #include <aurora_msgs/DroneState.h>
@@ -16,7 +19,9 @@
 #include <vector>
 
 #include "aurora_control/formation_controller.h"
+#include "aurora_control/formation_supervisor.h"
 #include "aurora_control/limits.h"
+#include "driver_command_channel.h"
 
 namespace aurora_control {
 
@@ -36,6 +41,13 @@ class FormationNode {
   bool listenersReady() const;
   void answer(long k, const ros::Time& stamp);
   void publish(const Core::Tick& t, const ros::Time& stamp);
+  void send(const Core::Tick& t);
+  // The flight sequence (formation_sequence.cpp).
+  void configureSequence();
+  void flightCycle(const ros::Time& now);
+  FormationSupervisor<kDrones>::Decision superviseDrones(const ros::Time& now);
+  void serviceDriverCommands(const FormationSupervisor<kDrones>::Decision& c, double now);
+  Core::Tick holdOrHover(const FormationSupervisor<kDrones>::Decision& c);
 
   ros::NodeHandle nh_, pnh_;
   std::vector<std::string> drones_;  // namespaces, the formation file's order
@@ -50,6 +62,15 @@ class FormationNode {
   ros::Publisher formation_pub_, markers_pub_;
   static constexpr long kMarkerDecimation = 3;  // rviz markers at 10 Hz
   ros::Timer timer_;
+
+  // The flight sequence of real drones (off in simulation: mode_ stays "fly").
+  bool sequence_ = false;
+  SafetyConfig safety_;
+  FormationSupervisor<kDrones> supervisor_;
+  DriverCommandChannel takeoff_[kDrones], land_[kDrones];
+  ros::Time last_state_[kDrones];  // when each drone's newest fresh state arrived
+  long formation_k_ = 0;           // the formation's next tick (its time stops while the drones hover)
+  std::string mode_ = "fly";
 };
 
 }  // namespace aurora_control

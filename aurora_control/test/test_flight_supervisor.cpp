@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "aurora_control/flight_supervisor.h"
+#include "aurora_control/formation_supervisor.h"
 
 using namespace aurora_control;
 
@@ -119,4 +120,114 @@ TEST(FlightSupervisor, NoHoverWarningBeforeTheFirstState) {
     EXPECT_EQ(d.mode, "fly");
     EXPECT_TRUE(d.run_law);
   }
+}
+
+namespace {
+
+// Two drones through FormationSupervisor: positions, ages, one cycle.
+struct Pair {
+  FormationSupervisor<2> s;
+  double X[2][12] = {};
+  double age[2] = {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
+  long step[2] = {0, 0};
+  double now = 0.0;
+  Pair() {
+    const std::string names[2] = {"ardrone1", "ardrone2"};
+    s.configure(realFlight(), names);
+  }
+  FormationSupervisor<2>::Decision cycle(double task_time = 0.0, double duration = 40.0) {
+    const double* const Xs[2] = {X[0], X[1]};
+    now += 1.0 / 30.0;
+    ++step[0], ++step[1];
+    return s.update(now, age, Xs, step, task_time, duration);
+  }
+  void hoverAtStart(int d) {  // at the take-off altitude, still
+    X[d][2] = 0.75;
+    X[d][8] = 0.0;
+  }
+  // Both fresh, both taken off and hovering at their start points: flying.
+  void toFormation() {
+    age[0] = age[1] = 0.0;
+    cycle();
+    hoverAtStart(0), hoverAtStart(1);
+    cycle();
+  }
+};
+
+}  // namespace
+
+TEST(FormationSupervisor, DronesTakeOffTogetherAndHoldUntilBothAreUp) {
+  Pair p;
+  p.X[0][0] = -1.0, p.X[1][0] = 1.0;
+  p.age[0] = 0.0;  // drone 2 has no state yet: nobody takes off
+  auto c = p.cycle();
+  EXPECT_FALSE(c.drone[0].send_takeoff);
+  EXPECT_FALSE(c.drone[1].send_takeoff);
+  p.age[1] = 0.0;
+  c = p.cycle();
+  EXPECT_TRUE(c.drone[0].send_takeoff);
+  EXPECT_TRUE(c.drone[1].send_takeoff);
+  EXPECT_EQ(c.mode, "takeoff");
+  p.hoverAtStart(0);  // drone 1 is up at its start point, drone 2 still climbing
+  p.X[1][2] = 0.5, p.X[1][8] = 0.4;
+  c = p.cycle();
+  EXPECT_EQ(c.mode, "hold (waiting for ardrone2)");
+  EXPECT_FALSE(c.formation);
+  EXPECT_TRUE(c.drone[0].run_law && c.drone[0].hold);
+  EXPECT_EQ(c.drone[0].hold_point[0], -1.0);
+  EXPECT_EQ(c.drone[0].hold_point[2], 0.75);
+  p.hoverAtStart(1);
+  c = p.cycle();
+  EXPECT_TRUE(c.started);
+  EXPECT_TRUE(c.formation);
+  EXPECT_EQ(c.mode, "fly");
+  c = p.cycle(1.0 / 30.0);
+  EXPECT_FALSE(c.started);
+  EXPECT_TRUE(c.formation);
+}
+
+TEST(FormationSupervisor, OneStaleDroneMakesBothHoverThenTheFormationGoesOn) {
+  Pair p;
+  p.toFormation();
+  ASSERT_TRUE(p.s.started());
+  p.age[1] = 0.3;  // above hover_after (0.2 s), below land_after (1 s)
+  auto c = p.cycle(1.0);
+  EXPECT_FALSE(c.formation);
+  EXPECT_FALSE(c.drone[0].run_law);
+  EXPECT_FALSE(c.drone[1].run_law);
+  EXPECT_EQ(c.mode, "hover (ardrone2: hover (no fresh state for 0.2 s))");
+  EXPECT_EQ(c.event, c.mode);
+  p.age[1] = 0.0;
+  c = p.cycle(1.0);
+  EXPECT_TRUE(c.formation);
+  EXPECT_EQ(c.mode, "fly");
+}
+
+TEST(FormationSupervisor, OneDroneLandingLandsBoth) {
+  Pair p;
+  p.toFormation();
+  p.X[0][0] = 3.5;  // drone 1 leaves the safety box
+  auto c = p.cycle(2.0);
+  EXPECT_TRUE(c.drone[0].send_land);
+  EXPECT_TRUE(c.drone[1].send_land);
+  EXPECT_EQ(c.mode, "land (ardrone1: left the safety box at 3.50, 0.00, 0.75)");
+  c = p.cycle(2.0);
+  EXPECT_FALSE(c.drone[0].send_land || c.drone[1].send_land);  // told once
+  p.X[0][2] = 0.05;
+  c = p.cycle(2.0);
+  EXPECT_EQ(c.mode, "land (ardrone1: left the safety box at 3.50, 0.00, 0.75)");  // drone 2 is still up
+  p.X[1][2] = 0.05;
+  c = p.cycle(2.0);
+  EXPECT_EQ(c.mode, "landed");
+}
+
+TEST(FormationSupervisor, BothLandWhenTheFormationEnds) {
+  Pair p;
+  p.toFormation();
+  auto c = p.cycle(39.9, 40.0);
+  EXPECT_TRUE(c.formation);
+  c = p.cycle(40.1, 40.0);
+  EXPECT_FALSE(c.formation);
+  EXPECT_TRUE(c.drone[0].send_land && c.drone[1].send_land);
+  EXPECT_EQ(c.mode, "land (task complete)");
 }

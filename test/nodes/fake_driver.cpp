@@ -1,6 +1,7 @@
 // Driver-compatible fake for the real-drone tests: listens on the driver's
-// topics (ardrone_autonomy: /cmd_vel, /ardrone/takeoff|land|reset;
-// bebop_autonomy: /bebop/cmd_vel, /bebop/takeoff|land|reset), flies the model
+// topics, relative to its namespace as the drivers' are (ardrone_autonomy:
+// cmd_vel, ardrone/takeoff|land|reset; bebop_autonomy in its launch's
+// namespace: bebop/cmd_vel, bebop/takeoff|land|reset), flies the model
 // core on cmd_vel with the drivers' sign conventions and clamping, and
 // publishes a motion-capture PoseStamped at 120 Hz with small noise,
 // occasional dropouts and out-of-order stamps (seeded, deterministic).
@@ -9,6 +10,7 @@
 // received, ignored ones included). A late or not-yet-ready driver:
 // ~takeoff_subscribe_after [s] subscribes to take-off only after that long;
 // ~ignore_takeoffs, ~ignore_lands [count] drop the first ones received.
+// ~start [x, y] (m, world frame): where it stands on the ground at first.
 #include <aurora_msgs/DroneState.h>
 #include <geometry_msgs/PoseStamped.h>
 #include <geometry_msgs/Twist.h>
@@ -39,8 +41,8 @@ class FakeDriver {
     params_ = loadVehicleParams(pnh, "vehicle");
     const std::string driver = pnh.param<std::string>("driver", "ardrone");
     if (driver != "ardrone" && driver != "bebop") throw ConfigError("~driver: ardrone or bebop");
-    const std::string prefix = driver == "ardrone" ? "/ardrone/" : "/bebop/";
-    const std::string cmd = driver == "ardrone" ? "/cmd_vel" : "/bebop/cmd_vel";
+    const std::string prefix = driver == "ardrone" ? "ardrone/" : "bebop/";
+    const std::string cmd = driver == "ardrone" ? "cmd_vel" : "bebop/cmd_vel";
     noise_pos_ = pnh.param("noise_position", 0.0005);
     noise_ang_ = pnh.param("noise_angle", 0.05 * kPi / 180.0);
     dropout_ = pnh.param("dropout_probability", 0.03);
@@ -54,6 +56,10 @@ class FakeDriver {
     world_to_mocap_ = tf2::Transform(q, tf2::Vector3(xyz[0], xyz[1], xyz[2])).inverse();
 
     model_.reset(0.0);  // on the ground, rotors stopped
+    std::vector<double> start{0, 0};
+    pnh.getParam("start", start);
+    if (start.size() != 2) throw ConfigError("~start: [x, y] in metres");
+    model_.X[kX] = start[0], model_.X[kY] = start[1];
     const ros::TransportHints hints = ros::TransportHints().tcpNoDelay();
     subs_.push_back(nh.subscribe(cmd, 10, &FakeDriver::onCmd, this, hints));
     ignore_takeoffs_ = pnh.param("ignore_takeoffs", 0);

@@ -18,29 +18,12 @@
 #include "aurora_control/task_yaml.h"
 #include "aurora_sim/ros/conversions.h"
 #include "aurora_sim/ros/params.h"
+#include "truth_track.h"
 
 using namespace aurora_control;
 
-namespace {
-
-struct Sample {
-  double t;
-  double pos[3];
-};
-
-// Position of the fake's true state at time t (linear interpolation).
-bool positionAt(const std::vector<Sample>& s, double t, double out[3]) {
-  for (size_t i = 1; i < s.size(); ++i) {
-    if (s[i].t >= t) {
-      const double a = (t - s[i - 1].t) / std::max(1e-9, s[i].t - s[i - 1].t);
-      for (int k = 0; k < 3; ++k) out[k] = s[i - 1].pos[k] + a * (s[i].pos[k] - s[i - 1].pos[k]);
-      return true;
-    }
-  }
-  return false;
-}
-
-}  // namespace
+using aurora_tests::positionAt;
+using Sample = aurora_tests::TruthSample;
 
 TEST(RealLaunch, MissionCompletesCloseToTheSimulatedRun) {
   ros::NodeHandle nh, pnh("~");

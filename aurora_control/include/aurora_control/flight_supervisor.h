@@ -59,6 +59,15 @@ class FlightSupervisor {
   FlightPhase phase() const { return phase_; }
   // Step of the state at which the task started (task time = (step - this) Ts).
   long flyStartStep() const { return fly_start_step_; }
+  // Where the drone hovers after take-off [m, world frame].
+  const double* startPoint() const { return start_point_; }
+
+  // Land now, whatever the phase (a formation lands every drone when one
+  // of them must: formation_supervisor.h).
+  FlightDecision landNow(const std::string& mode) {
+    FlightDecision d;
+    return land(d, mode);
+  }
 
   // now [s]; state_age: time since the last fresh state [s] (infinite if
   // none); X and step: the newest state; task_time [s] since the task

@@ -46,6 +46,9 @@ class FormationController {
       s.Ts = run.drone[d].plant.Ts;
       core_[d].configureLink(static_cast<uint64_t>(d));  // keyed by the drone, as runFormation
     }
+    for (int d = 0; d < kDrones; ++d) {
+      for (int i = 0; i < 3; ++i) start_[3 * d + i] = run.drone[d].start[i];
+    }
     startLayer();
   }
 
@@ -88,18 +91,30 @@ class FormationController {
     return t;
   }
 
+  // Real drones (formation_supervisor.h): the formation starts from where
+  // the drones are (positions, 3 per drone, m); the next tick is tick 0.
+  void startFrom(const double X0[Line::kVariables]) {
+    for (int i = 0; i < Line::kVariables; ++i) start_[i] = X0[i];
+    startLayer();
+  }
+  // Before the formation starts: drone d's law flies to p and rests there.
+  ControlOutput hold(int d, const double p[3]) { return core_[d].compute(p); }
+  // A watchdog's hover: no law, a zero command.
+  ControlOutput hover(int d) { return core_[d].hover(); }
+
   const FormationLayer<double, Line>& layer() const { return layer_; }
   const FormationRun<double, Line>& run() const { return run_; }
 
  private:
   void startLayer() {
-    aurora_control::startLayer(run_, layer_);
+    startLayerAt(run_, start_, layer_);
     last_k_ = -1;
   }
 
   FormationRun<double, Line> run_;
   FormationLayer<double, Line> layer_;
   DelayedController<Capacity> core_[kDrones];
+  double start_[Line::kVariables];  // the drones' positions the layer starts from
   long last_k_ = -1;
 };
 

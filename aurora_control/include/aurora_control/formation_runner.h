@@ -64,16 +64,26 @@ struct FormationObservation {
   const FormationLayer<T, Shape>& layer;
 };
 
+// The layer started with the drones at X0 (3 positions per drone, m): the
+// offline runner's at the file's starts, real drones' where they hover
+// when the formation begins (docs/formation.md, "Real drones").
+template <typename T, class Shape>
+AURORA_HD inline void startLayerAt(const FormationRun<T, Shape>& run, const T X0[Shape::kVariables],
+                                   FormationLayer<T, Shape>& layer) {
+  T Qd[Shape::kVariables];
+  run.reference.at(T(0), Qd);
+  layer.start(X0, Qd);
+}
+
 // The layer before its first period: the references at the drones' starts,
 // the previous Qd = Qd(0) (formation_layer.h).
 template <typename T, class Shape>
 AURORA_HD inline void startLayer(const FormationRun<T, Shape>& run, FormationLayer<T, Shape>& layer) {
-  T X0[Shape::kVariables], Qd[Shape::kVariables];
+  T X0[Shape::kVariables];
   for (int d = 0; d < Shape::kDrones; ++d) {
     for (int i = 0; i < 3; ++i) X0[3 * d + i] = run.drone[d].start[i];
   }
-  run.reference.at(T(0), Qd);
-  layer.start(X0, Qd);
+  startLayerAt(run, X0, layer);
 }
 
 // Drone d's reference as the layer holds it (position, velocity).

@@ -1,0 +1,151 @@
+// Flight sequence of a formation of real drones (docs/formation.md, "Real
+// drones"), ROS-free: each drone keeps the single-drone controller's
+// FlightSupervisor (take-off, hover on a stale state, land on a long one or
+// outside the safety box), and the formation adds its rules above them:
+//  - a drone that reached its start point holds it until every drone has;
+//  - the formation starts (tick 0) in the cycle where every drone flies,
+//    from where the drones are then;
+//  - while any drone must hover, every drone hovers (the layer would
+//    otherwise steer the others by a position it no longer knows);
+//  - when any drone must land, every drone lands; at the formation's end,
+//    every drone lands.
+#pragma once
+
+#include <limits>
+#include <string>
+
+#include "aurora_control/flight_supervisor.h"
+
+namespace aurora_control {
+
+template <int D>
+class FormationSupervisor {
+ public:
+  struct Decision {
+    FlightDecision drone[D];  // per drone: law, hold point, take-off / land requests
+    bool formation = false;   // the formation flies this cycle (the layer and the drones' laws)
+    bool started = false;     // ... and this is its first cycle (tick 0)
+    std::string mode;         // the formation's, for its message
+    std::string event;        // non-empty once, when the mode changes
+  };
+
+  // names: the drones' namespaces (for the modes).
+  void configure(const SafetyConfig& cfg, const std::string (&names)[D]) {
+    cfg_ = cfg;
+    for (int d = 0; d < D; ++d) supervisor_[d].configure(cfg), names_[d] = names[d];
+    started_ = false;
+    landing_ = false;
+    last_mode_.clear();
+  }
+
+  bool started() const { return started_; }
+  const FlightSupervisor& drone(int d) const { return supervisor_[d]; }
+
+  // now [s]; age[d]: time since drone d's last fresh state [s] (infinite if
+  // none); X[d], step[d]: its newest state; task_time [s] since the
+  // formation started; duration [s]: the formation reference's.
+  Decision update(double now, const double (&age)[D], const double* const (&X)[D], const long (&step)[D],
+                  double task_time, double duration) {
+    Decision c;
+    // The drones take off together: none before every one has a fresh state.
+    bool all_fresh = true;
+    for (int d = 0; d < D; ++d) all_fresh = all_fresh && age[d] <= cfg_.hover_after;
+    for (int d = 0; d < D; ++d) {
+      const bool held = !all_fresh && supervisor_[d].phase() == FlightPhase::kWaitState;
+      c.drone[d] = supervisor_[d].update(now, held ? kNever : age[d], X[d], step[d], started_ ? task_time : 0.0,
+                                         duration);
+    }
+    const int lander = firstLanding(c);
+    if (lander >= 0 || landing_) return landAll(c, lander);
+    if (!started_) return beforeStart(c);
+    return flying(c);
+  }
+
+ private:
+  // The first drone whose supervisor lands it now or did before, -1: none.
+  int firstLanding(const Decision& c) const {
+    for (int d = 0; d < D; ++d) {
+      const FlightPhase p = supervisor_[d].phase();
+      if (c.drone[d].send_land || p == FlightPhase::kLand || p == FlightPhase::kLanded) return d;
+    }
+    return -1;
+  }
+
+  // One drone lands: every drone lands, each told once.
+  Decision& landAll(Decision& c, int lander) {
+    if (!landing_) {
+      landing_ = true;
+      land_mode_ = landMode(lander, c.drone[lander].mode);
+      for (int d = 0; d < D; ++d) {
+        const FlightPhase p = supervisor_[d].phase();
+        if (d != lander && p != FlightPhase::kLand && p != FlightPhase::kLanded) {
+          c.drone[d] = supervisor_[d].landNow(land_mode_);
+        }
+      }
+    }
+    bool all_landed = true;
+    for (int d = 0; d < D; ++d) all_landed = all_landed && supervisor_[d].phase() == FlightPhase::kLanded;
+    return finish(c, all_landed ? "landed" : land_mode_);
+  }
+
+  // "land (task complete)" as every drone's; another reason names the drone:
+  // "land (ardrone2: no fresh state for 1 s)".
+  std::string landMode(int lander, const std::string& mode) const {
+    static const std::string kComplete = "land (task complete)", kOpen = "land (";
+    if (mode == kComplete) return mode;
+    const bool why = mode.compare(0, kOpen.size(), kOpen) == 0;
+    return kOpen + names_[lander] + (why ? ": " + mode.substr(kOpen.size()) : ")");
+  }
+
+  // Take-off: a drone at its start point holds it until every drone is there.
+  Decision& beforeStart(Decision& c) {
+    int at_start = 0;
+    for (int d = 0; d < D; ++d) at_start += supervisor_[d].phase() == FlightPhase::kFly;
+    if (at_start == D) {
+      started_ = true;
+      c.started = true;
+      return flying(c);
+    }
+    std::string waiting;
+    for (int d = 0; d < D; ++d) {
+      if (supervisor_[d].phase() != FlightPhase::kFly) {
+        waiting += (waiting.empty() ? "" : ", ") + names_[d];
+        continue;
+      }
+      FlightDecision& f = c.drone[d];
+      if (!f.run_law) continue;  // its own watchdog: hover
+      f.hold = true;
+      for (int i = 0; i < 3; ++i) f.hold_point[i] = supervisor_[d].startPoint()[i];
+    }
+    return finish(c, at_start == 0 ? c.drone[0].mode : "hold (waiting for " + waiting + ")");
+  }
+
+  // The formation flies when every drone's law may run; else all hover.
+  Decision& flying(Decision& c) {
+    for (int d = 0; d < D; ++d) {
+      if (c.drone[d].run_law) continue;
+      for (int o = 0; o < D; ++o) c.drone[o].run_law = false, c.drone[o].hold = false;
+      return finish(c, "hover (" + names_[d] + ": " + c.drone[d].mode + ")");
+    }
+    c.formation = true;
+    return finish(c, "fly");
+  }
+
+  Decision& finish(Decision& c, const std::string& mode) {
+    c.mode = mode;
+    if (mode != last_mode_) c.event = mode;
+    last_mode_ = mode;
+    return c;
+  }
+
+  static constexpr double kNever = std::numeric_limits<double>::infinity();  // no state yet
+  SafetyConfig cfg_;
+  FlightSupervisor supervisor_[D];
+  std::string names_[D];
+  bool started_ = false;
+  bool landing_ = false;
+  std::string land_mode_;
+  std::string last_mode_;
+};
+
+}  // namespace aurora_control

@@ -1,0 +1,117 @@
+// The formation node's flight sequence for real drones (docs/formation.md,
+// "Real drones"): each drone's take-off and land requests through its
+// driver's topics, the formation started from where the drones hover, and
+// the formation's watchdog rules (formation_supervisor.h) every 30 Hz cycle.
+#include <limits>
+
+#include "aurora_control/driver_command.h"
+#include "aurora_sim/ros/conversions.h"
+#include "controller_params.h"
+#include "formation_node.h"
+
+namespace aurora_control {
+
+// ~safety (a safety file, as real.launch loads): flight_sequence true turns
+// the sequence on; realtime only (a lockstep sim has no take-off).
+void FormationNode::configureSequence() {
+  safety_ = loadSafetyConfig(pnh_);
+  sequence_ = safety_.flight_sequence;
+  if (!sequence_) return;
+  if (lockstep_) {
+    throw aurora_sim::ConfigError("parameter '" + aurora_sim::fullKey(pnh_, "safety/flight_sequence") +
+                                  "' = true needs '" + aurora_sim::fullKey(pnh_, "mode") +
+                                  "' = 'realtime': real drones fly in real time");
+  }
+  std::string names[kDrones];
+  for (int d = 0; d < kDrones; ++d) names[d] = drones_[d];
+  supervisor_.configure(safety_, names);
+  mode_ = "wait for state";
+  DeliveryPolicy until_shown;
+  until_shown.resend_period = safety_.command_resend_period;
+  DeliveryPolicy land_policy = until_shown;
+  land_policy.timeout = safety_.land_resend_timeout;
+  // /NS/takeoff and /NS/land: the launch remaps them to each driver's names.
+  for (int d = 0; d < kDrones; ++d) {
+    takeoff_[d] = DriverCommandChannel(nh_, "/" + drones_[d] + "/takeoff", drones_[d] + " take-off", until_shown);
+    land_[d] = DriverCommandChannel(nh_, "/" + drones_[d] + "/land", drones_[d] + " land", land_policy);
+  }
+}
+
+void FormationNode::flightCycle(const ros::Time& now) {
+  const FormationSupervisor<kDrones>::Decision c = superviseDrones(now);
+  mode_ = c.mode;
+  if (!c.event.empty()) {
+    const bool safety = c.event.rfind("hover", 0) == 0 || (c.event.rfind("land (", 0) == 0 && c.event != "land (task complete)");
+    if (safety) ROS_WARN("formation_controller: %s", c.event.c_str());
+    else ROS_INFO("formation_controller: %s", c.event.c_str());
+  }
+  serviceDriverCommands(c, now.toSec());
+  if (c.started) {  // tick 0 from where the drones hover now
+    double X0[LineFormation<double>::kVariables];
+    for (int d = 0; d < kDrones; ++d) {
+      for (int i = 0; i < 3; ++i) X0[3 * d + i] = core_->newest(d).X[aurora_sim::kX + i];
+    }
+    core_->startFrom(X0);
+    formation_k_ = 0;
+  }
+  const Core::Tick t = c.formation ? core_->tick(formation_k_++) : holdOrHover(c);
+  send(t);
+  publish(t, now);
+}
+
+// Each drone's supervisor on its newest state and that state's age.
+FormationSupervisor<FormationNode::kDrones>::Decision FormationNode::superviseDrones(const ros::Time& now) {
+  static const double kNoState[aurora_sim::kStateSize] = {};
+  double age[kDrones];
+  const double* X[kDrones];
+  long step[kDrones];
+  for (int d = 0; d < kDrones; ++d) {
+    const bool have = core_->ready(d);
+    age[d] = have ? (now - last_state_[d]).toSec() : std::numeric_limits<double>::infinity();
+    X[d] = have ? core_->newest(d).X : kNoState;
+    step[d] = have ? core_->newest(d).step : 0;
+  }
+  const double Ts = core_->run().drone[0].plant.Ts;
+  // Ticks 0 .. n - 1 fly (as the offline runner's); tick n lands them.
+  const double duration = double(formationTicks(core_->run().reference.duration, Ts) - 1) * Ts;
+  return supervisor_.update(now.toSec(), age, X, step, taskTime(double(formation_k_), Ts), duration);
+}
+
+void FormationNode::serviceDriverCommands(const FormationSupervisor<kDrones>::Decision& c, double now) {
+  for (int d = 0; d < kDrones; ++d) {
+    const bool have = core_->ready(d);
+    if (c.drone[d].send_takeoff) {
+      land_[d].cancel();
+      takeoff_[d].request(now, have ? core_->newest(d).X[aurora_sim::kZ] : 0.0);
+    }
+    if (c.drone[d].send_land) {
+      takeoff_[d].cancel();
+      land_[d].request(now);
+    }
+    // Only a fresh state can show that the driver acted.
+    const bool fresh = have && (ros::Time::now() - last_state_[d]).toSec() <= safety_.hover_after;
+    const double* X = fresh ? core_->newest(d).X : nullptr;
+    takeoff_[d].service(now, X && climbShown(X, takeoff_[d].command().reference(), safety_.takeoff_rise));
+    land_[d].service(now, X && descentShown(X, safety_.descent_speed, safety_.landed_altitude));
+  }
+}
+
+// Outside the formation: a drone holds its start point (its law) or hovers
+// (a zero command; drivers expect a steady stream, with or without a state).
+FormationNode::Core::Tick FormationNode::holdOrHover(const FormationSupervisor<kDrones>::Decision& c) {
+  Core::Tick t;
+  t.k = formation_k_;
+  for (int d = 0; d < kDrones; ++d) {
+    const FlightDecision& f = c.drone[d];
+    if (!core_->ready(d)) continue;  // zero command, reference at the origin
+    if (f.run_law && f.hold) {
+      t.out[d] = core_->hold(d, f.hold_point);
+      t.ref[d] = DelayedController<kDelayHistory>::restingAt(f.hold_point);
+    } else {
+      t.out[d] = core_->hover(d);
+    }
+  }
+  return t;
+}
+
+}  // namespace aurora_control
