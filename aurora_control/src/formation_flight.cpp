@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <stdexcept>
 
 #include "aurora_control/formation_judge.h"
@@ -34,11 +35,7 @@ class FormationErrors {
     for (int i = 0; i < 5; ++i) sum_[i] += terms[i];
     ++n_;
   }
-  void print() const {
-    const auto rms = [&](int i) { return n_ > 0 ? std::sqrt(sum_[i] / double(n_)) : 0.0; };
-    std::printf("  RMS formation error after 10 s: rho %.4f m, alpha %.4f rad, beta %.4f rad, position (x, y) %.4f m, "
-                "height %.4f m\n", rms(0), rms(1), rms(2), rms(3), rms(4));
-  }
+  double rms(int i) const { return n_ > 0 ? std::sqrt(sum_[i] / double(n_)) : 0.0; }
 
  private:
   double sum_[5] = {};
@@ -118,37 +115,48 @@ void printChecks(const FormationJudge<double>& judge) {
               held(3), m.feasible() ? "feasible" : "not feasible");
 }
 
-void flyFormation(const FormationFlightOptions& o) {
+FormationFlight flyFormationFiles(const FormationFlightOptions& o, const FormationObserver& observe) {
   const auto p = aurora_sim::loadVehicleYaml(o.vehicle);
-  const FormationFile f = readFormationFile(o.formation, o.config_dir);
-  const FormationRun<double, Line> run = loadRun(o, p, f);
-  const long ticks = formationTicks(f.reference.duration, p.Ts);
-  FormationErrors errors;
-  FormationJudge<double> judge{FormationCriteria<double>::study(), false, p.Ts, {}, {}};
-  judge.metrics.reset();
-  FormationCsv csv(o.csv);
-  const long history = formationHistory(run);
+  FormationFlight r{readFormationFile(o.formation, o.config_dir), {}, p.Ts, 0, 0.0, {},
+                    FormationJudge<double>{FormationCriteria<double>::study(), false, p.Ts, {}, {}}};
+  r.run = loadRun(o, p, r.file);
+  r.ticks = formationTicks(r.file.reference.duration, p.Ts);
+  r.judge.metrics.reset();
+  const long history = formationHistory(r.run);
   if (history > kMaxDelaySamples) {
     throw ConfigError("the drones' delays plus their links' jitter need " + std::to_string(history) +
                       " samples of history: accepted up to " + std::to_string(kMaxDelaySamples));
   }
+  FormationErrors errors;
   const auto t0 = std::chrono::steady_clock::now();
-  auto observe = [&](const FormationObservation<double, Line>& obs) {
-    csv.add(obs, p.Ts);
+  auto each = [&](const FormationObservation<double, Line>& obs) {
+    observe(obs, p.Ts);
     errors.add(obs, p.Ts);
-    judge(obs);
+    r.judge(obs);
   };
   withHistoryCapacity(history, [&](auto capacity) {
-    withLaw(f.drones[0].controller.law, [&](auto law) {
-      runFormation<decltype(law)::value, double, Line, decltype(capacity)::value>(run, ticks, observe);
+    withLaw(r.file.drones[0].controller.law, [&](auto law) {
+      runFormation<decltype(law)::value, double, Line, decltype(capacity)::value>(r.run, r.ticks, each);
     });
   });
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  for (int i = 0; i < 5; ++i) r.rms[i] = errors.rms(i);
+  return r;
+}
+
+void flyFormation(const FormationFlightOptions& o) {
+  std::unique_ptr<FormationCsv> csv;  // opened at tick 0: a refused file writes nothing
+  const FormationFlight r = flyFormationFiles(o, [&](const FormationObservation<double, Line>& obs, double Ts) {
+    if (!csv) csv.reset(new FormationCsv(o.csv));
+    csv->add(obs, Ts);
+  });
   std::printf("flight: formation '%s' (line, %s, %s law on each drone), %.1f s, delays %ld and %ld samples: "
-              "%ld ticks in %.3f s\n", o.formation.c_str(), formationLawName(f.law), lawName(f.drones[0].controller.law),
-              f.reference.duration, run.drone[0].delay, run.drone[1].delay, ticks, seconds);
-  errors.print();
-  printChecks(judge);
+              "%ld ticks in %.3f s\n", o.formation.c_str(), formationLawName(r.file.law),
+              lawName(r.file.drones[0].controller.law), r.file.reference.duration, r.run.drone[0].delay,
+              r.run.drone[1].delay, r.ticks, r.seconds);
+  std::printf("  RMS formation error after 10 s: rho %.4f m, alpha %.4f rad, beta %.4f rad, position (x, y) %.4f m, "
+              "height %.4f m\n", r.rms[0], r.rms[1], r.rms[2], r.rms[3], r.rms[4]);
+  printChecks(r.judge);
 }
 
 }  // namespace aurora_control

@@ -1,9 +1,14 @@
 // flight --formation: a formation file flown offline (formation_runner.h),
-// its formation errors printed, its trajectory written as CSV.
+// its formation errors printed, its trajectory written as CSV. The same
+// flight from Python: aurora._core's simulate_formation_files.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
+
+#include "aurora_control/formation_judge.h"
+#include "aurora_control/formation_yaml.h"
 
 namespace aurora_control {
 
@@ -12,6 +17,27 @@ struct FormationFlightOptions {
   std::vector<long> delays;  // per drone, replacing the file's (empty: the file's)
 };
 
+// Each tick, with the drones' sample time Ts [s].
+using FormationObserver = std::function<void(const FormationObservation<double, LineFormation<double>>&, double Ts)>;
+
+// What a formation flight gives besides its ticks.
+struct FormationFlight {
+  FormationFile file;
+  FormationRun<double, LineFormation<double>> run;  // with the delays in force
+  double Ts = 0.0;
+  long ticks = 0;
+  double seconds = 0.0;  // wall time of the run
+  // RMS after 10 s (docs/formation.md, "Formation errors"): rho [m], alpha,
+  // beta [rad], the formation's horizontal position and height [m].
+  double rms[5] = {};
+  FormationJudge<double> judge;  // the formation checks, as a sweep judges them
+};
+
+// Loads the files (refusals as ConfigError naming the key) and flies every
+// tick through `observe`.
+FormationFlight flyFormationFiles(const FormationFlightOptions& o, const FormationObserver& observe);
+
+// The tool: the flight, its CSV (o.csv) and its printed errors and checks.
 void flyFormation(const FormationFlightOptions& o);
 
 }  // namespace aurora_control

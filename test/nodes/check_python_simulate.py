@@ -23,6 +23,10 @@ def flight_csv(*args):
         return list(csv.DictReader(open(path)))
 
 
+def column(rows, name):
+    return np.array([float(r[name]) for r in rows])
+
+
 STATE = ("x", "y", "z", "phi", "theta", "psi", "dx", "dy", "dz", "dphi", "dtheta", "dpsi")
 
 
@@ -77,5 +81,71 @@ class SimulateTest(unittest.TestCase):
             self.assertIn(text, str(e.exception))
 
 
+class SimulateFormationTest(unittest.TestCase):
+    def test_formation_equals_flight_formation(self):
+        cfg = aurora.simulation.config_dir()
+        g = aurora.simulate_formation("line_lemniscate_ik", delays=(3, 9))
+        rows = flight_csv("--formation", cfg + "/formations/line_lemniscate_ik.yaml", "--delay", "3", "9")
+        self.assertEqual(g.states.shape, (len(rows), 2, 12))
+        self.assertTrue(np.array_equal(g.t, column(rows, "t")))
+        for d in range(2):
+            for i, c in enumerate(STATE):
+                self.assertTrue(np.array_equal(g.states[:, d, i], column(rows, "d%d_%s" % (d + 1, c))), (d, c))
+            for i in range(4):
+                self.assertTrue(np.array_equal(g.commands[:, d, i], column(rows, "d%d_u%d" % (d + 1, i + 1))))
+        for i, c in enumerate(("xF", "yF", "zF", "rho", "alpha", "beta")):
+            self.assertTrue(np.array_equal(g.Q[:, i], column(rows, "Q_" + c)), c)
+            self.assertTrue(np.array_equal(g.Qd[:, i], column(rows, "Qd_" + c)), c)
+        self.assertEqual(g.metrics["delays"], (3, 9))
+        self.assertTrue(g.metrics["feasible"])
+        self.assertEqual(g.drones, ("ardrone1", "ardrone2"))
+
+    def test_formation_dict_is_its_file(self):
+        with open(aurora.simulation.config_dir() + "/formations/line_lemniscate.yaml") as fh:
+            formation = yaml.safe_load(fh)
+        a = aurora.simulate_formation(formation)
+        b = aurora.simulate_formation("line_lemniscate")
+        self.assertTrue(np.array_equal(a.Q, b.Q))
+        self.assertEqual(a.metrics, b.metrics)
+
+    def test_formation_bad_input_raises_value_error(self):
+        with open(aurora.simulation.config_dir() + "/formations/line_lemniscate.yaml") as fh:
+            formation = yaml.safe_load(fh)
+        formation["formation"]["period"] = -1
+        cases = [
+            (lambda: aurora.simulate_formation(formation), "period"),
+            (lambda: aurora.simulate_formation("line_lemniscate", delays=(3,)), "one delay per drone"),
+            (lambda: aurora.simulate_formation("line_lemniscate", delays=(3, 5000)), "drone 2"),
+            (lambda: aurora.simulate_formation("line_lemniscate", delays="39"), "delays: expected"),
+            (lambda: aurora.simulate_formation("line_triangle"), "formation 'line_triangle' is not a shipped one"),
+        ]
+        for call, text in cases:
+            with self.assertRaises(ValueError) as e:
+                call()
+            self.assertIn(text, str(e.exception))
+
+
+class FormationFiguresTest(unittest.TestCase):
+    def test_the_figures_show_what_docs_say(self):
+        from aurora import formation_figures
+        with tempfile.TemporaryDirectory() as tmp:
+            self.assertEqual(formation_figures.main([tmp]), 0)
+            for name in ("formation_laws.png", "formation_mirror.png"):
+                self.assertGreater(os.path.getsize(os.path.join(tmp, name)), 20000, name)
+        # docs/formation.md: the mirror's layer errors vanish, drone 2 ends
+        # below drone 1, 1.5 m from where eq. F2 wants it.
+        g = formation_figures.mirror_flight()
+        self.assertLess(np.abs(g.Qd[-1, 3:] - g.Q[-1, 3:]).max(), 1e-3)
+        self.assertLess(g.states[-1, 1, 2], g.states[-1, 0, 2] - 0.7)
+        self.assertAlmostEqual(formation_figures.shape_error(g)[-1], 1.5, places=2)
+        # ... and position priority's shape error is ten times inverse kinematics'.
+        p, ik = aurora.simulate_formation("line_lemniscate"), aurora.simulate_formation("line_lemniscate_ik")
+        self.assertGreater(p.metrics["rms_rho"], 10 * ik.metrics["rms_rho"])
+
+
+class PythonSimulateTests(SimulateTest, SimulateFormationTest, FormationFiguresTest):
+    """Both, for rostest (which runs one TestCase class)."""
+
+
 if __name__ == "__main__":
-    rostest.rosrun("aurora_tests", "python_simulate", SimulateTest)
+    rostest.rosrun("aurora_tests", "python_simulate", PythonSimulateTests)

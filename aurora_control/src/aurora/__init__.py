@@ -8,7 +8,8 @@ Modules:
                        `rosrun aurora_sweep plot_sweep DIR`, which calls it
 
     aurora.simulate    one offline flight on the C++ core (aurora.simulation)
+    aurora.simulate_formation  one offline formation flight (flight --formation's)
 
 See docs/architecture.md, "Packages and data flow".
 """
-from aurora.simulation import Flight, simulate  # noqa: F401
+from aurora.simulation import Flight, FormationFlight, simulate, simulate_formation  # noqa: F401

@@ -4,6 +4,8 @@
     import aurora
     f = aurora.simulate("underactuated", "circle", delay=5)
     f.t, f.states, f.commands, f.reference, f.metrics["iae"]
+    g = aurora.simulate_formation("line_lemniscate", delays=(3, 9))
+    g.states[:, 1, 2], g.Q, g.Qd, g.metrics["feasible"]
 
 A controller, task, vehicle or link is a name of the shipped files
 (controllers/NAME.yaml of aurora_config, ...), a path to such a file, or a
@@ -18,7 +20,8 @@ import yaml
 
 from aurora import _core
 
-_FOLDERS = {"controller": "controllers", "task": "tasks", "vehicle": "vehicles", "link": "links"}
+_FOLDERS = {"controller": "controllers", "task": "tasks", "vehicle": "vehicles", "link": "links",
+            "formation": "formations"}
 
 
 class Flight:
@@ -81,3 +84,43 @@ def simulate(controller, task, vehicle=None, delay=0, link=None, clamp=True):
                                                    (vehicle or "ardrone2", "vehicle"))]
         link_file = _as_file(link, "link", tmp) if link is not None else ""
         return Flight(_core.simulate_files(files[0], files[1], files[2], delay, link_file, bool(clamp)))
+
+
+class FormationFlight:
+    """One formation flight (docs/formation.md): rows k = 0..n-1, the drones
+    on axis 1 in the file's order.
+
+    t [s] (n), states (n x 2 x 12: each drone's state after k steps),
+    commands (n x 2 x 4), reference (n x 2 x 3: each drone's held reference
+    position [m]), Q, Qd (n x 6: xF, yF, zF [m], rho [m], alpha, beta [rad]
+    of the drones' positions, and the layer's held desired), metrics (dict:
+    ticks, delays, rms_rho, rms_alpha, rms_beta, rms_position_xy,
+    rms_height (after 10 s), max_position_error, max_shape_error,
+    iae_position, iae_shape, min_distance, checks (4 bools), feasible), law
+    (the formation's), drone_law, drones (namespaces)."""
+
+    def __init__(self, d):
+        for k in ("t", "states", "commands", "reference", "Q", "Qd", "metrics", "sample_time", "law", "drone_law",
+                  "drones"):
+            setattr(self, k, d[k])
+
+    def __repr__(self):
+        m = self.metrics
+        return "FormationFlight(%s, %s law, %d ticks, delays %s, RMS rho %.4f m, %s)" % (
+            self.law, self.drone_law, m["ticks"], m["delays"], m["rms_rho"],
+            "feasible" if m["feasible"] else "not feasible")
+
+
+def simulate_formation(formation, vehicle=None, delays=None):
+    """One formation flight of `formation` (a shipped name, a path or a dict
+    of config/formations/NAME.yaml's schema), each drone over its own delay
+    (`delays`: one per drone in samples; None keeps the file's)."""
+    if delays is not None:
+        if isinstance(delays, (str, bytes)) or not hasattr(delays, "__len__") or \
+                any(isinstance(d, bool) or not isinstance(d, int) for d in delays):
+            raise ValueError("delays: expected one whole number of samples per drone, got %r" % (delays,))
+    with tempfile.TemporaryDirectory() as tmp:
+        formation_file = _as_file(formation, "formation", tmp)
+        vehicle_file = _as_file(vehicle or "ardrone2", "vehicle", tmp)
+        return FormationFlight(_core.simulate_formation_files(formation_file, vehicle_file, list(delays or []),
+                                                              config_dir()))

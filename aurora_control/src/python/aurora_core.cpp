@@ -4,10 +4,14 @@
 // same refusals (ValueError with the tool's message), the same numbers.
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
 
+#include <algorithm>
 #include <string>
+#include <vector>
 
 #include "aurora_control/flight_setup.h"
+#include "../formation_flight.h"
 
 namespace py = pybind11;
 using namespace aurora_control;
@@ -50,6 +54,64 @@ py::dict simulateFiles(const std::string& controller, const std::string& task, c
   return out;
 }
 
+// The formation checks and errors of a formation flight, as flight --formation prints them.
+py::dict formationMetrics(const FormationFlight& r) {
+  const auto& m = r.judge.metrics;
+  py::dict out;
+  out["ticks"] = r.ticks;
+  out["delays"] = py::make_tuple(r.run.drone[0].delay, r.run.drone[1].delay);
+  out["rms_rho"] = r.rms[0], out["rms_alpha"] = r.rms[1], out["rms_beta"] = r.rms[2];
+  out["rms_position_xy"] = r.rms[3], out["rms_height"] = r.rms[4];
+  out["max_position_error"] = m.max_position, out["max_shape_error"] = m.max_shape;
+  out["iae_position"] = m.iae_position, out["iae_shape"] = m.iae_shape, out["min_distance"] = m.closest;
+  out["checks"] = py::make_tuple(m.ok[0], m.ok[1], m.ok[2], m.ok[3]);
+  out["feasible"] = m.feasible();
+  return out;
+}
+
+// Rows k = 0..n-1, as flight --formation --csv writes them: per drone
+// (axis 0) the state after k steps, the command applied at tick k and its
+// held reference; Q of those positions and the layer's held Qd.
+py::dict simulateFormationFiles(const std::string& formation, const std::string& vehicle, const std::vector<long>& delays,
+                                const std::string& config_dir) {
+  FormationFlightOptions o;
+  o.formation = formation, o.vehicle = vehicle, o.delays = delays, o.config_dir = config_dir;
+  std::vector<double> t, X, U, R, Q, Qd;  // filled by the run, then moved into arrays of the run's length
+  FormationFlight r;
+  {
+    py::gil_scoped_release unlocked;
+    r = flyFormationFiles(o, [&](const FormationObservation<double, LineFormation<double>>& obs, double Ts) {
+      t.push_back(taskTime(double(obs.k), Ts));
+      double P[6], q[6];
+      for (int d = 0; d < 2; ++d) {
+        X.insert(X.end(), obs.X_before[d], obs.X_before[d] + 12);
+        U.insert(U.end(), obs.steps[d].U, obs.steps[d].U + 4);
+        R.insert(R.end(), obs.steps[d].ref.pos, obs.steps[d].ref.pos + 3);
+        for (int i = 0; i < 3; ++i) P[3 * d + i] = obs.X_before[d][i];
+      }
+      LineFormation<double>::variables(P, q);
+      Q.insert(Q.end(), q, q + 6);
+      Qd.insert(Qd.end(), obs.layer.Qd(), obs.layer.Qd() + 6);
+    });
+  }
+  const py::ssize_t n = static_cast<py::ssize_t>(t.size());
+  const auto array = [n](const std::vector<double>& v, std::vector<py::ssize_t> shape) {
+    py::array_t<double> a(shape);
+    std::copy(v.begin(), v.end(), a.mutable_data());
+    return a;
+  };
+  py::dict out;
+  out["t"] = array(t, {n});
+  out["states"] = array(X, {n, 2, 12}), out["commands"] = array(U, {n, 2, 4}), out["reference"] = array(R, {n, 2, 3});
+  out["Q"] = array(Q, {n, 6}), out["Qd"] = array(Qd, {n, 6});
+  out["metrics"] = formationMetrics(r);
+  out["sample_time"] = r.Ts;
+  out["law"] = formationLawName(r.file.law);
+  out["drone_law"] = lawName(r.file.drones[0].controller.law);
+  out["drones"] = py::make_tuple(r.file.drones[0].name_space, r.file.drones[1].name_space);
+  return out;
+}
+
 }  // namespace
 
 PYBIND11_MODULE(_core, m) {
@@ -58,4 +120,7 @@ PYBIND11_MODULE(_core, m) {
   m.def("simulate_files", &simulateFiles, py::arg("controller"), py::arg("task"), py::arg("vehicle"), py::arg("delay"),
         py::arg("link"), py::arg("clamp"),
         "One flight from YAML files, as the flight tool flies it: a dict of numpy arrays and metrics.");
+  m.def("simulate_formation_files", &simulateFormationFiles, py::arg("formation"), py::arg("vehicle"),
+        py::arg("delays"), py::arg("config_dir"),
+        "One formation flight from YAML files, as flight --formation flies it: a dict of numpy arrays and metrics.");
 }
