@@ -141,14 +141,17 @@ uint32_t definitionHash(const SweepSpec& spec) {
   crc.add(static_cast<int>(spec.precision));
   if (!spec.linkIdeal() || spec.repeats > 1) {  // an ideal link keeps the hashes of the sweeps before links
     addLink(crc, spec.link);
-    for (int id = kParamCountBeforeLinks; id < kParamCount; ++id) crc.add(spec.fixed[id]);
+    for (int id = kParamCountBeforeLinks; id < kParamCountBeforeDroneLinks; ++id) crc.add(spec.fixed[id]);
     crc.add(spec.repeats);
   }
   if (spec.formation()) {  // the formation file's text, the formation's criteria and parameters
     std::ifstream f(spec.formation_file);
     crc.add(std::string(std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>()));
     crc.add(spec.formation_criteria);
-    for (int id = kParamFirstDroneDelay; id < kParamCount; ++id) crc.add(spec.fixed[id]);
+    for (int id = kParamFirstDroneDelay; id < kParamCountBeforeDroneLinks; ++id) crc.add(spec.fixed[id]);
+    for (int id = kParamFirstDroneLinkValue; id < kParamCount; ++id) {  // only those given: older hashes stay
+      if (spec.given(id)) crc.add(id), crc.add(spec.fixed[id]);
+    }
   }
   return crc.value();
 }

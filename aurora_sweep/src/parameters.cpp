@@ -53,6 +53,15 @@ std::vector<ParamInfo> makeTable() {
                                        ParamGroup::kFormationGain, kUnderactuatedGainMin, kUnderactuatedGainMax,
                                        "a formation gain: positive, as the underactuated law's"};
   }
+  // A formation drone's own link values: the link values' rows, suffixed _1, _2.
+  for (int d = 0; d < kFormationDroneCount; ++d) {
+    for (int i = 0; i < kLinkParamCount; ++i) {
+      ParamInfo info = t[kParamFirstLinkValue + i];
+      info.name += "_" + std::to_string(d + 1);
+      info.group = ParamGroup::kDroneLink;
+      t[kParamFirstDroneLinkValue + d * kLinkParamCount + i] = info;
+    }
+  }
   return t;
 }
 
@@ -72,13 +81,17 @@ int paramIdOf(const std::string& name) {
 
 bool paramApplies(int id, aurora_control::LawType law, bool formation) {
   const ParamGroup group = paramInfo(id).group;
-  if (formation) return group == ParamGroup::kDroneDelay || group == ParamGroup::kFormationGain || group == ParamGroup::kLink;
+  if (formation) {
+    return group == ParamGroup::kDroneDelay || group == ParamGroup::kFormationGain || group == ParamGroup::kLink ||
+           group == ParamGroup::kDroneLink;
+  }
   switch (group) {
     case ParamGroup::kPdGain: return law == aurora_control::LawType::kPdSaturated;
     case ParamGroup::kUnderactuatedGain: return law == aurora_control::LawType::kUnderactuated;
     case ParamGroup::kRepeat: return false;  // sweep.repeats, not a parameter
     case ParamGroup::kDroneDelay:
-    case ParamGroup::kFormationGain: return false;  // a formation sweep's
+    case ParamGroup::kFormationGain:
+    case ParamGroup::kDroneLink: return false;  // a formation sweep's
     default: return true;
   }
 }

@@ -334,7 +334,8 @@ void orderAxes(const Reader& r, const YAML::Node& s, std::vector<Axis> axes, Swe
 // Every parameter the law needs has a value: given, varied or a default.
 void requireAll(const Reader& r, const SweepSpec& spec) {
   for (int id = 0; id < kParamCount; ++id) {
-    const bool own_link = spec.formation() && paramInfo(id).group == ParamGroup::kLink;  // NaN: each drone's own
+    const ParamGroup group = paramInfo(id).group;  // a formation's link values: NaN keeps each drone's own
+    const bool own_link = spec.formation() && (group == ParamGroup::kLink || group == ParamGroup::kDroneLink);
     if (spec.accepts(id) && !own_link && std::isnan(spec.fixed[id]) && !spec.varies(id)) {
       r.fail(std::string("sweep.parameters.") + paramName(id), "is missing: the " + spec.controller +
                  " controller has no default for it; give a value or a range (or a points column)");

@@ -46,10 +46,10 @@ namespace {
 
 // The smallest burst above 1 drone d's direction runs with (its own when
 // the sweep gives none).
-double smallestBurst(const SweepSpec& spec, int burst_value, double own) {
-  if (!spec.linkValueGiven(burst_value)) return own;
+double smallestBurst(const SweepSpec& spec, int d, int burst_value, double own) {
+  if (!spec.droneLinkValueGiven(d, burst_value)) return own;
   double smallest = 1e300;
-  spec.forEachValue(kParamFirstLinkValue + burst_value, [&](double b) { smallest = b > 1.0 && b < smallest ? b : smallest; });
+  spec.forEachValue(spec.droneLinkParam(d, burst_value), [&](double b) { smallest = b > 1.0 && b < smallest ? b : smallest; });
   return smallest;
 }
 
@@ -63,10 +63,10 @@ void checkFormationLinks(const aurora_control::YamlReader& r, const SweepSpec& s
     const int bursts[2] = {aurora_control::kLinkUplinkBurst, aurora_control::kLinkDownlinkBurst};
     for (int j = 0; j < 2; ++j) {
       aurora_control::LinkDirection dir = *dirs[j];
-      dir.burst = smallestBurst(spec, bursts[j], dir.burst);
+      dir.burst = smallestBurst(spec, d, bursts[j], dir.burst);
       const std::string refusal = aurora_control::burstLossRefusal(dir);
       if (dir.burst < 1e300 && !refusal.empty()) {
-        r.fail(std::string("sweep.parameters.") + paramName(kParamFirstLinkValue + bursts[j] - 1),
+        r.fail(std::string("sweep.parameters.") + paramName(spec.droneLinkParam(d, bursts[j] - 1)),
                "= " + aurora_control::YamlReader::fmt(dir.loss) + " (its largest, on drone " + std::to_string(d + 1) +
                    "'s link) " + refusal);
       }

@@ -268,8 +268,9 @@ TEST(CudaBackend, FormationSweepsMatchTheScalarLoop) {
   const std::string grid = "  parameters:\n    delay_1: {values: [0, 9, 15]}\n    delay_2: {values: [0, 15]}\n"
                            "    formation_k1_rho: {values: [0.75, 1.5]}\n";
   const std::string lossy = grid + "    uplink_jitter: 2\n    uplink_loss: 0.1\n    downlink_loss: 0.05\n  repeats: 3\n";
+  const std::string own = grid + "    uplink_loss_2: 0.3\n    downlink_jitter_1: 2\n  repeats: 2\n";  // per drone
   for (const char* file : {"line_lemniscate", "line_lemniscate_ik"}) {
-    for (const std::string& body : {grid, lossy}) {
+    for (const std::string& body : {grid, lossy, own}) {
       SweepSpec spec = loadSweepFile(test::writeTemp(std::string("cuda_formation_") + file + ".yaml",
           std::string("sweep:\n  early_stop: false\n  formation: formations/") + file + ".yaml\n" + body), AURORA_CONFIG_DIR);
       EXPECT_EQ(fieldDifferences(cudaInChunks(spec, 5), test::runOn("scalar", spec)), 0) << file << " double";

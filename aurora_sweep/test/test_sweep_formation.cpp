@@ -5,6 +5,7 @@
 // shipped study spans its margin.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstring>
 
 #include "aurora_control/formation_judge.h"
@@ -143,6 +144,49 @@ TEST(FormationSweep, TheKernelsPerThreadEntryIsTheScalarLoop) {
   }
 }
 
+// Each drone's own link values (uplink_loss_2, downlink_jitter_1) apply to
+// that drone only, after the drones' common ones (uplink_loss); the
+// results name them; every CPU backend and the kernel's per-thread entry
+// agree with the scalar loop over them.
+TEST(FormationSweep, EachDroneFliesItsOwnLinkValues) {
+  SweepSpec spec = formationSweep("own_links",
+                                  "  formation: formations/line_lemniscate_ik.yaml\n  repeats: 2\n  early_stop: false\n"
+                                  "  parameters:\n    delay_1: 3\n    delay_2: {values: [0, 9]}\n    uplink_loss: 0.05\n"
+                                  "    uplink_loss_2: {values: [0.0, 0.3]}\n    downlink_jitter_1: 2\n"
+                                  "  order: [delay_2, uplink_loss_2]\n");
+  ASSERT_EQ(spec.size(), 8);
+  std::vector<std::string> names;
+  for (int id : spec.columns()) names.push_back(paramName(id));
+  for (const char* want : {"delay_1", "delay_2", "uplink_loss", "uplink_loss_2", "downlink_jitter_1"}) {
+    EXPECT_NE(std::find(names.begin(), names.end(), want), names.end()) << want;
+  }
+  EXPECT_EQ(std::find(names.begin(), names.end(), "uplink_loss_1"), names.end());
+  const FormationSetup<double> setup = makeFormationSetup<double>(spec);
+  EXPECT_FALSE(setup.ideal_link);
+  const GridView grid = spec.view();
+  for (long i = 0; i < spec.size(); ++i) {
+    const Combination c = grid.decode(i);
+    const auto run = formationCombination(setup, c);
+    EXPECT_EQ(run.drone[0].link.uplink.loss, 0.05);
+    EXPECT_EQ(run.drone[0].link.downlink.jitter_max, 2);
+    EXPECT_EQ(run.drone[1].link.uplink.loss, i / 4 % 2 == 0 ? 0.0 : 0.3) << i;  // its own, over the common 0.05
+    EXPECT_EQ(run.drone[1].link.downlink.jitter_max, 0);  // the file's
+    EXPECT_EQ(run.drone[1].delay, i / 2 % 2 == 0 ? 0 : 9);
+  }
+  const std::vector<SimResult> scalar = runOn("scalar", spec);
+  EXPECT_EQ(differing(scalar, runOn("none", spec)), 0);
+  EXPECT_NE(std::memcmp(&scalar[0], &scalar[4], sizeof(SimResult)), 0) << "drone 2's loss changed nothing";
+  for (const CpuIsa& isa : cpuBatchIsas()) {
+    if (isa.supported && isa.key != "none") expectAgreement(isa.key, spec, 1e-9, 8);
+  }
+  std::vector<SimResult> out(static_cast<size_t>(spec.size()));
+  for (unsigned t = 0; t < 8; ++t) {
+    formationThread<LawType::kUnderactuated, double, aurora_control::kShortHistory, true>(setup, grid, 0, spec.size(),
+                                                                                         out.data(), 0, 8, t);
+  }
+  EXPECT_EQ(differing(scalar, out), 0);
+}
+
 // Results name the formation's columns; the summary the formation file and
 // its criteria; the definition hash tells formation files apart.
 TEST(FormationSweep, ResultsNameTheFormationsColumns) {
@@ -180,9 +224,13 @@ TEST(FormationSweep, MistakesAreRefusedNamingTheKey) {
       {f + "  criteria: {max_shape: 1}\n" + grid, "'sweep.criteria.max_shape' is not a known key"},
       {f + "  criteria: {min_distance: -1}\n" + grid, "'sweep.criteria.min_distance' = -1 is outside"},
       {f + "  parameters:\n    uplink_loss: 0.9\n    uplink_burst: 2\n", "'sweep.parameters.uplink_loss' = 0.9"},
+      {f + "  parameters:\n    uplink_loss_2: 0.9\n    uplink_burst_2: 2\n", "'sweep.parameters.uplink_loss_2' = 0.9"},
+      {f + "  parameters:\n    downlink_delay_1: {values: [0, 3000]}\n", "'sweep.parameters.downlink_delay_1' = 3000 is outside"},
       {"sweep:\n  formation: formations/none.yaml\n" + grid, "none.yaml"},
       {"sweep:\n  parameters:\n    delay_1: 3\n    kp: 1\n    kd: 1\n    delay: 0\n",
        "'sweep.parameters.delay_1' is not a parameter of the pd_saturated controller"},
+      {"sweep:\n  parameters:\n    uplink_loss_2: 0.1\n    kp: 1\n    kd: 1\n    delay: 0\n",
+       "'sweep.parameters.uplink_loss_2' is not a parameter of the pd_saturated controller"},
   };
   for (const auto& c : cases) {
     const std::string got = refusal(c.first);

@@ -16,8 +16,10 @@ namespace aurora_sweep {
 // downlink_burst; the delay is the uplink's base delay), the repeat: which
 // of a combination's `repeats` link seeds a run draws with (not a name a
 // sweep file gives; `repeats: N` makes it vary), and a formation sweep's
-// own: each drone's delay and the formation layer's gains
-// (docs/formation.md, "Formation sweeps").
+// own: each drone's delay, the formation layer's gains and each drone's own
+// link values (uplink_jitter_1 ... downlink_burst_2: drone d's value i at
+// kParamFirstDroneLinkValue + d * kLinkParamCount + i; docs/formation.md,
+// "Formation sweeps").
 enum ParamId : int {
   kParamKp = 0,
   kParamKd = 1,
@@ -28,15 +30,18 @@ enum ParamId : int {
   kParamRepeat = 30,
   kParamFirstDroneDelay = 31,        // a formation's drones' uplink delays: delay_1, delay_2
   kParamFirstFormationGain = 33,     // the formation layer's K1 (6), then K2 (6)
-  kParamCount = 45
+  kParamFirstDroneLinkValue = 45,    // a formation's drones' own link values, 7 per drone
+  kParamCount = 59
 };
 constexpr int kUnderactuatedGainCount = 12;
 constexpr int kModelFactorCount = 8;
 constexpr int kLinkParamCount = 7;
 constexpr int kFormationDroneCount = 2;   // the line's drones
 constexpr int kFormationGainCount = 12;   // K1 and K2 of the line's 6 variables
-// The parameters of the sweeps before links (definition hashes keep them).
+// The parameters of the sweeps before links, and before per-drone link
+// values (definition hashes keep them).
 constexpr int kParamCountBeforeLinks = kParamFirstLinkValue;
+constexpr int kParamCountBeforeDroneLinks = kParamFirstDroneLinkValue;
 
 struct Combination {
   double v[kParamCount];  // every parameter's value, ParamId order

@@ -58,14 +58,16 @@ LineRun<T> castFormationRun(const LineRun<double>& r) {
 }
 
 // A combination's formation: each drone's delay, the formation's gains, and
-// each drone's link with the link values the sweep gives (combinationLink:
-// a value it does not give keeps the drone's own).
+// each drone's link with the link values the sweep gives, the drones'
+// common ones (combinationLink) then the drone's own (uplink_loss_2); a
+// value it does not give keeps the drone's file's.
 template <typename T>
 AURORA_HD inline LineRun<T> formationCombination(const FormationSetup<T>& s, const Combination& c) {
   LineRun<T> run = s.run;
   for (int d = 0; d < kFormationDroneCount; ++d) {
     run.drone[d].delay = static_cast<long>(c.v[kParamFirstDroneDelay + d]);
     run.drone[d].link = combinationLink(run.drone[d].link, run.drone[d].delay, c);
+    applyLinkValues(run.drone[d].link, c.v + kParamFirstDroneLinkValue + d * kLinkParamCount);  // its own last
   }
   for (int i = 0; i < 6; ++i) {
     run.gains.k1[i] = T(c.v[kParamFirstFormationGain + i]);

@@ -12,7 +12,7 @@
 
 namespace aurora_sweep {
 
-enum class ParamGroup { kPdGain, kDelay, kUnderactuatedGain, kModelFactor, kLink, kRepeat, kDroneDelay, kFormationGain };
+enum class ParamGroup { kPdGain, kDelay, kUnderactuatedGain, kModelFactor, kLink, kRepeat, kDroneDelay, kFormationGain, kDroneLink };
 
 struct ParamInfo {
   std::string name;

@@ -90,6 +90,14 @@ AURORA_HD inline SimResult compactResult(const aurora_control::RunnerResult& r) 
   return s;
 }
 
+// The kLinkParamCount link values at `values` (LinkValue order) into l,
+// a NaN one keeping l's (link.h's setLinkValue, the node's live rule).
+AURORA_HD inline void applyLinkValues(aurora_control::LinkParams& l, const double* values) {
+  for (int i = 0; i < kLinkParamCount; ++i) {
+    if (values[i] == values[i]) aurora_control::setLinkValue(l, i, values[i]);
+  }
+}
+
 // A combination's link (docs/links.md, "Links in a sweep"): `base` (the
 // sweep's link, or a formation drone's) with `uplink_delay` as the uplink's
 // base delay, the combination's link values (link.h's setLinkValue, the
@@ -99,10 +107,7 @@ AURORA_HD inline aurora_control::LinkParams combinationLink(const aurora_control
                                                            const Combination& c) {
   aurora_control::LinkParams l = base;
   l.uplink.delay = uplink_delay;
-  for (int i = 0; i < kLinkParamCount; ++i) {
-    const double v = c.v[kParamFirstLinkValue + i];
-    if (v == v) aurora_control::setLinkValue(l, i, v);
-  }
+  applyLinkValues(l, c.v + kParamFirstLinkValue);
   l.seed = base.seed + static_cast<uint32_t>(c.repeat());
   return l;
 }

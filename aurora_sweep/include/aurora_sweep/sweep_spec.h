@@ -88,11 +88,11 @@ struct SweepSpec {
     return worst.historyNeeded(max_delay);
   }
   // A formation drone's link with the sweep's largest value of each link
-  // value it gives (the drone's own for the others).
+  // value it gives that drone (the drone's own for the others).
   aurora_control::LinkParams formationWorstLink(int d) const {
     aurora_control::LinkParams worst = formation_run.drone[d].link;
     for (int i = 0; i < kLinkParamCount; ++i) {
-      if (linkValueGiven(i)) aurora_control::setLinkValue(worst, i, maxValue(kParamFirstLinkValue + i));
+      if (droneLinkValueGiven(d, i)) aurora_control::setLinkValue(worst, i, maxValue(droneLinkParam(d, i)));
     }
     return worst;
   }
@@ -108,10 +108,17 @@ struct SweepSpec {
   }
   // Whether the sweep gives link value i (fixed or varied); a formation
   // sweep's drones otherwise keep their own (the fixed value is NaN).
-  bool linkValueGiven(int i) const {
-    const int id = kParamFirstLinkValue + i;
-    return varies(id) || !(fixed[id] != fixed[id]);
+  bool linkValueGiven(int i) const { return given(kParamFirstLinkValue + i); }
+  // The parameter that gives formation drone d its link value i: its own
+  // (uplink_loss_2) when the sweep gives it, else the drones' common one
+  // (formationCombination applies them in that order).
+  int droneLinkParam(int d, int i) const {
+    const int own = kParamFirstDroneLinkValue + d * kLinkParamCount + i;
+    return given(own) ? own : kParamFirstLinkValue + i;
   }
+  bool droneLinkValueGiven(int d, int i) const { return given(droneLinkParam(d, i)); }
+  // Fixed to a number or varied (a NaN fixed value is "not given").
+  bool given(int id) const { return varies(id) || !(fixed[id] != fixed[id]); }
   // The link for every combination and the fixed link values, from a link
   // file (the values a sweep file gives or varies replace them).
   void setLink(const aurora_control::LinkParams& l) {
@@ -127,7 +134,8 @@ struct SweepSpec {
     for (int d = 0; d < kFormationDroneCount; ++d) {
       aurora_control::LinkParams l = formation_run.drone[d].link;
       for (int i = 0; i < kLinkParamCount; ++i) {
-        if (linkValueGiven(i)) aurora_control::setLinkValue(l, i, fixed[kParamFirstLinkValue + i]);
+        if (varies(droneLinkParam(d, i))) return false;
+        if (droneLinkValueGiven(d, i)) aurora_control::setLinkValue(l, i, fixed[droneLinkParam(d, i)]);
       }
       if (!l.ideal()) return false;
     }
@@ -218,6 +226,7 @@ struct SweepSpec {
                          : group == ParamGroup::kLink   ? !linkIdeal() && (!formation() || linkValueGiven(id - kParamFirstLinkValue))
                          : group == ParamGroup::kRepeat ? repeats > 1
                          : group == ParamGroup::kFormationGain ? varies(id)
+                         : group == ParamGroup::kDroneLink ? formation() && given(id)
                                                         : accepts(id);
       if (shown) c.push_back(id);
     }
