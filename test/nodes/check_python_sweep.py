@@ -1,0 +1,123 @@
+#!/usr/bin/python3
+"""aurora.sweep runs the sweep program from Python: its DataFrame holds
+results.csv's columns and values, a structured array too; Ctrl-C leaves the
+finished chunks and the same call resumes them; bad input raises ValueError
+with the program's message, and nothing is left behind."""
+import copy
+import os
+import signal
+import subprocess
+import sys
+import tempfile
+import time
+import unittest
+
+import numpy as np
+import pandas as pd
+import rostest
+import yaml
+
+import aurora
+
+
+def shipped(name):
+    with open(os.path.join(aurora.simulation.config_dir(), "sweeps", name + ".yaml")) as f:
+        return yaml.safe_load(f)
+
+
+def thesis_cut():
+    """The thesis grid cut to 8 x 8 x 8."""
+    d = shipped("positioning_delay")
+    p = d["sweep"]["parameters"]
+    p["kp"]["count"], p["kd"]["count"] = 8, 8
+    p["delay"] = {"from": 0, "to": 63, "count": 8}
+    return d
+
+
+def formation_cut(repeats):
+    d = shipped("formation_delay")
+    d["sweep"]["repeats"] = repeats
+    for k in ("delay_1", "delay_2"):
+        d["sweep"]["parameters"][k] = {"from": 0, "to": 28, "count": 8}
+    return d
+
+
+class PythonSweepTest(unittest.TestCase):
+    def test_the_results_are_the_programs(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            with open(os.path.join(tmp, "cut.yaml"), "w") as f:
+                yaml.safe_dump(thesis_cut(), f)
+            subprocess.run(["rosrun", "aurora_sweep", "sweep", "--config", f.name, "--out", tmp + "/cli",
+                            "--backend", "cpu", "--output", "csv", "--no-plots", "--quiet"], check=True,
+                           stdout=subprocess.PIPE)
+            cli = pd.read_csv(tmp + "/cli/results.csv", float_precision="round_trip")
+        from_csv, summary = aurora.sweep(thesis_cut(), backend="cpu", output="csv", progress=False)
+        self.assertEqual(list(from_csv.columns), list(cli.columns))
+        for c in cli.columns:
+            self.assertTrue(np.array_equal(from_csv[c].to_numpy(), cli[c].to_numpy()), c)
+        self.assertEqual(summary["combinations"], 512)
+        self.assertEqual(summary["feasible"], int(cli.feasible.sum()))
+        from_h5, _ = aurora.sweep(thesis_cut(), backend="cpu", progress=False)  # results.h5: the stored types
+        self.assertEqual(list(from_h5.columns), list(cli.columns))
+        for c in cli.columns:
+            a, b = from_h5[c].to_numpy(), cli[c].to_numpy()
+            if a.dtype.kind == "f" and a.dtype.itemsize == 4:  # float columns: the CSV prints 9 digits
+                self.assertTrue(np.array_equal(a, b.astype(np.float32)), c)
+            else:
+                self.assertTrue(np.array_equal(a, b), c)
+        arr, _ = aurora.sweep(thesis_cut(), backend="scalar", as_frame=False, progress=False)
+        self.assertEqual(arr.dtype.names, tuple(cli.columns))
+        self.assertTrue(np.array_equal(arr["feasible"], cli.feasible.to_numpy()))
+
+    def test_ctrl_c_leaves_chunks_and_the_same_call_resumes(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            out = os.path.join(tmp, "out")
+            script = os.path.join(tmp, "run.py")
+            with open(script, "w") as f:
+                f.write("import aurora, sys, yaml\nd = yaml.safe_load(open(sys.argv[1]))\ntry:\n"
+                        "    aurora.sweep(d, backend='scalar', out=sys.argv[2], chunk_size=64, progress=False)\n"
+                        "except aurora.SweepInterrupted as e:\n    print(e)\n    sys.exit(3)\n")
+            with open(os.path.join(tmp, "f.yaml"), "w") as f:
+                yaml.safe_dump(formation_cut(repeats=16), f)
+            child = subprocess.Popen([sys.executable, script, f.name, out], stdout=subprocess.PIPE, text=True,
+                                     preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
+            progress = os.path.join(out, "progress")
+            deadline = time.time() + 60
+            while time.time() < deadline and not (os.path.isdir(progress) and
+                                                   any(n.endswith(".bin") for n in os.listdir(progress))):
+                time.sleep(0.05)
+            child.send_signal(signal.SIGINT)  # Ctrl-C
+            said, _ = child.communicate(timeout=60)
+            self.assertEqual(child.returncode, 3, said)
+            self.assertIn("finished chunk", said)
+            self.assertIn("computes only the missing ones", said)
+            results, summary = aurora.sweep(formation_cut(repeats=16), backend="scalar", out=out, chunk_size=64,
+                                            progress=False)
+            self.assertGreater(summary["chunks"]["resumed"], 0)
+            self.assertGreater(summary["chunks"]["computed"], 0)
+            self.assertEqual(len(results), 1024)
+            self.assertTrue(np.array_equal(results["index"].to_numpy(), np.arange(1024)))
+
+    def test_bad_input_raises_value_error_with_the_programs_message(self):
+        bad_key = copy.deepcopy(thesis_cut())
+        bad_key["sweep"]["parameters"]["kq"] = 1
+        cases = [
+            (lambda: aurora.sweep(bad_key), "'sweep.parameters.kq' is not a parameter of the pd_saturated controller"),
+            (lambda: aurora.sweep(thesis_cut(), backend="gpu"), "--backend 'gpu' is unknown: accepted scalar, cpu"),
+            (lambda: aurora.sweep(thesis_cut(), precision="half"), "--precision 'half' is unknown"),
+            (lambda: aurora.sweep(thesis_cut(), threads="2"), "threads: expected a whole number"),
+            (lambda: aurora.sweep("nowhere"), "sweep 'nowhere' is not a shipped one: accepted"),
+            (lambda: aurora.sweep("/no/such/sweep.yaml"), "does not exist"),
+            (lambda: aurora.sweep(3), "config: expected a shipped sweep's name"),
+        ]
+        before = set(os.listdir(tempfile.gettempdir()))
+        for call, text in cases:
+            with self.assertRaises(ValueError) as e:
+                call()
+            self.assertIn(text, str(e.exception))
+        left = [n for n in set(os.listdir(tempfile.gettempdir())) - before if n.startswith("aurora_sweep_")]
+        self.assertEqual(left, [])
+
+
+if __name__ == "__main__":
+    rostest.rosrun("aurora_tests", "python_sweep", PythonSweepTest)
