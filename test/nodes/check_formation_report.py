@@ -12,8 +12,11 @@ import sys
 import tempfile
 import unittest
 
+import numpy as np
 import rospy
 import rostest
+
+import aurora
 
 sys.path.insert(0, os.path.dirname(os.path.realpath(__file__)))
 from bag_helpers import record_until  # noqa: E402
@@ -68,6 +71,25 @@ class FormationReportTest(unittest.TestCase):
         # One frame per 0.1 s of flight (report's default --fps 10), from tick 0.
         self.assertEqual(m["video_frames"], int(math.floor(m["last_tick"] * ts * 10 + 1e-9)) + 1)
         self.assertIn("## Formation", open(os.path.join(out, "report.md")).read())
+        self.check_readers(bag, delays, m)
+
+    def check_readers(self, bag, delays, m):
+        """aurora.read_formation_bag: the ticks' Q and Qd and positions are
+        aurora.simulate_formation's (lockstep), its metrics the report's."""
+        frame, metrics = aurora.read_formation_bag(bag)
+        g = aurora.simulate_formation(rospy.get_param("~formation_file"), delays=tuple(delays))
+        k = frame.step.to_numpy()
+        self.assertTrue(np.array_equal(k, np.arange(len(k))))
+        for j, v in enumerate(("xF", "yF", "zF", "rho", "alpha", "beta")):
+            self.assertTrue(np.allclose(frame["Q_" + v], g.Q[k, j], rtol=0, atol=1e-12), v)  # asin of the same positions
+            self.assertTrue(np.array_equal(frame["Qd_" + v].to_numpy(), g.Qd[k, j]), v)
+        for d in range(2):
+            for j, a in enumerate("xyz"):
+                self.assertTrue(np.array_equal(frame["d%d_%s" % (d + 1, a)].to_numpy(), g.states[k, d, j]))
+        self.assertEqual(metrics["rms_after_settle"], m["rms_after_settle"])
+        with self.assertRaises(ValueError) as e:  # no drone's control topic: not a single-drone flight
+            aurora.read_bag(bag)
+        self.assertIn("control", str(e.exception))
 
 
 if __name__ == "__main__":
