@@ -10,7 +10,7 @@ JOBS ?= 2
 ROS_SETUP := $(firstword $(wildcard /opt/ros/noetic/setup.bash))
 SOURCE_ROS := $(if $(ROS_SETUP),source $(ROS_SETUP) &&,)
 
-.PHONY: all deps build install test demo bench clean
+.PHONY: all deps build install test demo bench notebook clean
 
 all: build
 
@@ -37,6 +37,10 @@ test: build
 
 demo: build
 	./scripts/run_demo.sh $(BUILD)
+
+# Jupyter on notebooks/ (open the URL it prints); `import aurora` works there.
+notebook: build
+	$(SOURCE_ROS) source $(BUILD)/devel/setup.bash && jupyter notebook --notebook-dir=notebooks $(NOTEBOOK_ARGS)
 
 bench: build
 	./bench/realtime_loop.sh $(BUILD)

@@ -18,13 +18,17 @@ case "${ID}:${VERSION_ID}" in
           python3-dynamic-reconfigure libdynamic-reconfigure-config-init-mutex-dev
           rviz librosbag-dev librosbag-storage-dev python3-geometry-msgs python3-std-msgs python3-nav-msgs
           python3-rosgraph-msgs python3-tf2-msgs python3-visualization-msgs python3-sensor-msgs
-          python3-rosparam python3-rosnode libangles-dev catkin-lint libroslib-dev python3-roslib python3-rospkg)
+          python3-rosparam python3-rosnode libangles-dev catkin-lint libroslib-dev python3-roslib python3-rospkg
+          python3-pandas python3-tqdm jupyter-notebook jupyter-nbconvert python3-ipywidgets python3-ipykernel
+          python3-nbclient)
     ;;
   ubuntu:20.04)
     PKGS=(ros-noetic-ros-base ros-noetic-rostest ros-noetic-rosbag ros-noetic-tf2-ros
           ros-noetic-nav-msgs ros-noetic-visualization-msgs ros-noetic-sensor-msgs
           ros-noetic-dynamic-reconfigure ros-noetic-rviz ros-noetic-rosbash ros-noetic-angles
           python3-catkin-pkg python3-catkin-lint)
+    # Python and notebooks (nbconvert 5 executes without nbclient here).
+    PKGS+=(python3-pandas python3-tqdm jupyter-notebook jupyter-nbconvert python3-ipywidgets python3-ipykernel)
     ;;
   *)
     echo "install_deps: ${PRETTY_NAME:-this OS} is not supported (Debian 12 or Ubuntu 20.04)" >&2
