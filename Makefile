@@ -49,6 +49,8 @@ bench: build
 	./bench/report.sh $(BUILD)
 	./bench/laws.sh $(BUILD)
 	./bench/links.sh $(BUILD)
+	./bench/formation.sh $(BUILD)
+	./bench/python.sh $(BUILD)
 
 clean:
 	rm -rf $(BUILD) out

@@ -97,6 +97,14 @@ class InstallSpaceTest(unittest.TestCase):
                           % self.tmp)
         self.assertEqual(rc, 0, out)
         self.assertIn(self.prefix, out.split()[1], "aurora._core is not the install space's: %s" % out)
+        # aurora.sweep finds the install space's sweep program; the formation flight and figures module too.
+        rc, out = self.sh("cd %s && /usr/bin/python3 -c 'import aurora; r, s = aurora.sweep(\"positioning_delay\", "
+                          "backend=\"cpu\", progress=False); g = aurora.simulate_formation(\"line_lemniscate\"); "
+                          "import aurora.formation_figures; print(aurora.sweep_program(), len(r), s[\"feasible\"], "
+                          "g.metrics[\"ticks\"])'" % self.tmp)
+        self.assertEqual(rc, 0, out)
+        self.assertIn(self.prefix, out.split()[0], "aurora.sweep did not run the install space's program: %s" % out)
+        self.assertEqual(out.split()[1:], ["65536", "10466", "2700"], out)
 
     def test_5_without_the_setup_the_error_says_what_to_source(self):
         sweep = os.path.join(self.prefix, "lib", "aurora_sweep", "sweep")

@@ -9,12 +9,12 @@ Modules:
 
     aurora.simulate    one offline flight on the C++ core (aurora.simulation)
     aurora.simulate_formation  one offline formation flight (flight --formation's)
-    aurora.sweep       a sweep on the sweep program's backends -> (DataFrame, summary)
+    aurora.sweep       a sweep on the sweep program's backends -> (DataFrame, summary) (aurora.sweep_runner)
     aurora.read_results, aurora.read_summary  a sweep folder's results and summary.json
     aurora.read_bag, aurora.read_formation_bag  a recorded flight as DataFrames (aurora.bags)
 
 See docs/architecture.md, "Packages and data flow".
 """
 from aurora.simulation import Flight, FormationFlight, simulate, simulate_formation  # noqa: F401
-from aurora.sweep import SweepInterrupted, read_results, read_summary, sweep  # noqa: F401,E402
+from aurora.sweep_runner import SweepInterrupted, read_results, read_summary, sweep, sweep_program  # noqa: F401,E402
 from aurora.bags import BagFlight, read_bag, read_formation_bag  # noqa: F401,E402
