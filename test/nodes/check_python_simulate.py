@@ -45,9 +45,15 @@ class SimulateTest(unittest.TestCase):
         f = aurora.simulate("underactuated", "circle", delay=5)
         self.assertSameFlight(f, flight_csv("--controller", cfg + "/controllers/underactuated.yaml",
                                             "--task", cfg + "/tasks/circle.yaml", "--delay", "5"))
+        k = np.arange(len(f.t))  # the delay rule: the current state until 5 are kept, then 5 samples old
+        self.assertTrue(np.array_equal(f.delay_in_force, np.where(k < 5, 0, 5)))
         g = aurora.simulate("pd_saturated", "mission4", link="wifi_congested")
         self.assertSameFlight(g, flight_csv("--link", cfg + "/links/wifi_congested.yaml"))
         self.assertEqual(g.metrics["delay"], 2)  # the link's uplink delay
+        # Over the link the age varies: at least the base delay once started, more with jitter and losses.
+        self.assertEqual(g.delay_in_force.min(), 0)
+        self.assertGreaterEqual(g.delay_in_force[10:].min(), 2)
+        self.assertGreater(g.delay_in_force.max(), 2)
         self.assertGreater(g.metrics["iae"], 0.0)
 
     def test_a_dict_is_its_file(self):

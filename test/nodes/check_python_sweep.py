@@ -101,6 +101,8 @@ class PythonSweepTest(unittest.TestCase):
     def test_bad_input_raises_value_error_with_the_programs_message(self):
         bad_key = copy.deepcopy(thesis_cut())
         bad_key["sweep"]["parameters"]["kq"] = 1
+        out_of_range = copy.deepcopy(thesis_cut())
+        out_of_range["sweep"]["parameters"]["kp"] = {"from": 0, "to": 50, "count": 4}
         cases = [
             (lambda: aurora.sweep(bad_key), "'sweep.parameters.kq' is not a parameter of the pd_saturated controller"),
             (lambda: aurora.sweep(thesis_cut(), backend="gpu"), "--backend 'gpu' is unknown: accepted scalar, cpu"),
@@ -109,6 +111,8 @@ class PythonSweepTest(unittest.TestCase):
             (lambda: aurora.sweep("nowhere"), "sweep 'nowhere' is not a shipped one: accepted"),
             (lambda: aurora.sweep("/no/such/sweep.yaml"), "does not exist"),
             (lambda: aurora.sweep(3), "config: expected a shipped sweep's name"),
+            (lambda: aurora.sweep(out_of_range), "'sweep.parameters.kp.to' = 50 is outside the accepted range"),
+            (lambda: aurora.read_results("/no/such/folder"), "holds no summary.json"),
         ]
         before = set(os.listdir(tempfile.gettempdir()))
         for call, text in cases:

@@ -58,6 +58,7 @@ struct LoopObservation {
   const LoopState<T, bool>& after;   // after the model step (X_(k+1), metrics)
   const LoopStep<T>& step;           // its reference and the command applied
   const T* xc;                       // the delayed state the law received (12)
+  long received;                     // its step: the delay in force is k - received
 };
 
 struct NoObserver {
@@ -105,13 +106,14 @@ AURORA_HD RunnerResult runClosedLoopOver(const StudyRun<T>& run, const RunnerCon
   while (k < iterations) {
     history.push(Sample::fromState(s.model.X));  // H(k + 1) = X_k
     T xc[aurora_sim::kStateSize], X_before[aurora_sim::kStateSize], U[4];
-    history.at(link.uplinkIndex(k)).toState(xc);
+    const long received = link.uplinkIndex(k);
+    history.at(received).toState(xc);
     for (int i = 0; i < aurora_sim::kStateSize; ++i) X_before[i] = s.model.X[i];
     LoopStep<T> step;
     step.ref = controllerHalf<Law>(params, cfg.task, clamp, T(k), xc, s, U);
     link.downlink(k, U, U);
     droneHalf(params, clamp, step.ref, U, s, step.U);
-    observe(LoopObservation<T>{k, X_before, s, step, xc});
+    observe(LoopObservation<T>{k, X_before, s, step, xc, received});
     ++k;
     if (stoppedEarly(cfg.early_stop, s.metrics.feasible())) break;
   }

@@ -30,11 +30,13 @@ class Flight:
     t [s] (n), states (n x 12: x, y, z [m], phi, theta, psi [rad], their
     rates; the state after k model steps), commands (n x 4: the command the
     drone applied at step k, model order, fraction of full scale), reference
-    (n x 3 [m]), error (n: tracking error [m]), metrics (dict: steps, iae,
-    itae, iasc, rms_tracking_error, max_tracking_error, delay), law."""
+    (n x 3 [m]), error (n: tracking error [m]), delay_in_force (n: samples
+    between state k and the state the law received at step k: by the delay
+    rule 0 while k < delay, then delay; over a link its varying age), metrics (dict: steps,
+    iae, itae, iasc, rms_tracking_error, max_tracking_error, delay), law."""
 
     def __init__(self, d):
-        for k in ("t", "states", "commands", "reference", "error", "metrics", "sample_time", "law"):
+        for k in ("t", "states", "commands", "reference", "error", "delay_in_force", "metrics", "sample_time", "law"):
             setattr(self, k, d[k])
 
     def __repr__(self):

@@ -165,7 +165,12 @@ def read_results(out, as_frame=True):
 
 
 def read_summary(out):
-    with open(os.path.join(out, "summary.json")) as f:
+    """A sweep folder's summary.json as a dict."""
+    path = os.path.join(out, "summary.json")
+    if not os.path.exists(path):
+        raise ValueError("'%s' holds no summary.json: not a sweep's output folder, or its sweep did not finish "
+                         "(the same sweep with this folder resumes it)" % out)
+    with open(path) as f:
         return json.load(f)
 
 

@@ -20,15 +20,18 @@ namespace {
 
 // Rows k = 0..n-1, as flight --csv writes them: t, the state after k model
 // steps, the command the drone applied at step k, the reference of step k
-// and its tracking error; the arrays are filled in place (no copy).
+// and its tracking error; and the delay in force (samples between state k
+// and the one the law received). The arrays are filled in place (no copy).
 py::dict simulateFiles(const std::string& controller, const std::string& task, const std::string& vehicle, long delay,
                        const std::string& link, bool clamp) {
   const FlightSetup f = loadFlight(FlightFiles{controller, task, vehicle, link, delay, !clamp});
   const py::ssize_t n = f.steps;
   py::array_t<double> t(n), states({n, py::ssize_t(12)}), commands({n, py::ssize_t(4)}), reference({n, py::ssize_t(3)}),
       error(n);
+  py::array_t<long> delay_in_force(n);
   double *pt = t.mutable_data(), *px = states.mutable_data(), *pu = commands.mutable_data(),
          *pr = reference.mutable_data(), *pe = error.mutable_data();
+  long* pd = delay_in_force.mutable_data();
   FlightResult r;
   {
     py::gil_scoped_release unlocked;  // the flight touches no Python object
@@ -39,6 +42,7 @@ py::dict simulateFiles(const std::string& controller, const std::string& task, c
       for (int i = 0; i < 4; ++i) pu[4 * k + i] = o.step.U[i];
       for (int i = 0; i < 3; ++i) pr[3 * k + i] = o.step.ref.pos[i];
       pe[k] = e;
+      pd[k] = k - o.received;
     });
   }
   py::dict metrics;
@@ -48,6 +52,7 @@ py::dict simulateFiles(const std::string& controller, const std::string& task, c
   metrics["delay"] = f.settings.delay;
   py::dict out;
   out["t"] = t, out["states"] = states, out["commands"] = commands, out["reference"] = reference, out["error"] = error;
+  out["delay_in_force"] = delay_in_force;
   out["metrics"] = metrics;
   out["sample_time"] = f.vehicle.Ts;
   out["law"] = lawName(f.settings.law);
