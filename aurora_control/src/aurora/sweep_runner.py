@@ -174,11 +174,11 @@ def read_summary(out):
         return json.load(f)
 
 
-def sweep(config, backend="auto", precision=None, out=None, threads=None, progress=True, as_frame=True,
+def sweep(config, backend="auto", precision="double", out=None, threads=None, progress=True, as_frame=True,
           output="hdf5", rows="all", plots=False, chunk_size=None):
     """Runs the sweep `config`; returns (results, summary). backend: auto,
-    scalar, cpu or cuda; `precision` (double, float) None keeps the sweep
-    file's; `out` None computes in a temporary folder removed afterwards
+    scalar, cpu or cuda; `precision` double or float (None: the sweep
+    file's `precision`); `out` None computes in a temporary folder removed afterwards
     (give `out` to keep the results, plots and chunks, and to resume);
     threads, output (hdf5, csv, both), rows (all, feasible), plots,
     chunk_size: the program's options of those names."""
