@@ -7,10 +7,7 @@
 # Medians; the cpu backend's speed-up over the scalar loop on the same cut.
 set -eo pipefail
 BUILD=${1:-build}
-export PATH=/usr/bin:/bin:$PATH
-[ -f /opt/ros/noetic/setup.bash ] && source /opt/ros/noetic/setup.bash
-source "$BUILD/devel/setup.bash"
-cd "$(dirname "$0")/.."
+source "$(dirname "$0")/workspace.sh"
 SWEEP="$BUILD/devel/lib/aurora_sweep/sweep"
 DIR=$(mktemp -d /tmp/aurora_formation_bench.XXXXXX)
 for study in formation_delay formation_delay_ik; do

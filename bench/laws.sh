@@ -4,10 +4,7 @@
 # the whole ROS loop with each law (60 s mission4, sim + controller).
 set -eo pipefail
 BUILD=${1:-build}
-export PATH=/usr/bin:/bin:$PATH
-[ -f /opt/ros/noetic/setup.bash ] && source /opt/ros/noetic/setup.bash
-source "$BUILD/devel/setup.bash"
-cd "$(dirname "$0")/.."
+source "$(dirname "$0")/workspace.sh"
 "$BUILD/devel/lib/aurora_control/law_cost"
 LOG=$(mktemp -d /tmp/aurora_laws.XXXXXX)
 for law in pd_saturated underactuated; do

@@ -7,10 +7,7 @@
 # their ratio to the ideal link's.
 set -eo pipefail
 BUILD=${1:-build}
-export PATH=/usr/bin:/bin:$PATH
-[ -f /opt/ros/noetic/setup.bash ] && source /opt/ros/noetic/setup.bash
-source "$BUILD/devel/setup.bash"
-cd "$(dirname "$0")/.."
+source "$(dirname "$0")/workspace.sh"
 FLIGHT="$BUILD/devel/lib/aurora_control/flight"
 OUT=$(mktemp /tmp/aurora_links.XXXXXX)
 for round in $(seq 15); do

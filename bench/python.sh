@@ -5,8 +5,5 @@
 # aurora.sweep returning the 1,048,576 results of a 64 x 64 x 256 grid.
 set -eo pipefail
 BUILD=${1:-build}
-export PATH=/usr/bin:/bin:$PATH
-[ -f /opt/ros/noetic/setup.bash ] && source /opt/ros/noetic/setup.bash
-source "$BUILD/devel/setup.bash"
-cd "$(dirname "$0")/.."
+source "$(dirname "$0")/workspace.sh"
 exec /usr/bin/python3 bench/python_speed.py

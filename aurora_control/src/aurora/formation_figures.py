@@ -66,16 +66,8 @@ def laws_figure(plt, out_dir):
     axes[1].set(xlabel="t [s]", ylabel="beta [deg]", title="sideways angle")
     axes[2].set(xlabel="x [m]", ylabel="y [m]", title="drone 2 seen from above")
     axes[2].set_aspect("equal")
-    for ax in axes:
-        ax.grid(True, alpha=0.3)
-        ax.legend(loc="best", fontsize=8)
-    fig.suptitle("The lab's two-drone scenario, no delay: position priority never gives drone 2 the "
-                 "formation's velocity")
-    fig.tight_layout()
-    path = os.path.join(out_dir, "formation_laws.png")
-    fig.savefig(path, dpi=100)
-    plt.close(fig)
-    return path
+    return save(plt, fig, axes, "The lab's two-drone scenario, no delay: position priority never gives drone 2 "
+                "the formation's velocity", os.path.join(out_dir, "formation_laws.png"))
 
 
 def mirror_figure(plt, out_dir):
@@ -94,13 +86,16 @@ def mirror_figure(plt, out_dir):
     axes[2].plot(g.t, shape_error(g), color="tab:red", label="shape error (eq. F9)")
     axes[2].axhline(1.5, color="gray", ls="--", label="the shape check's limit")
     axes[2].set(xlabel="t [s]", ylabel="[m]", title="drone 2's offset against the desired one")
+    return save(plt, fig, axes, "Inverse kinematics, drone 2 starting below drone 1: the asin angles cannot tell "
+                "below from above, and the line settles on the mirror", os.path.join(out_dir, "formation_mirror.png"))
+
+
+def save(plt, fig, axes, title, path):
     for ax in axes:
         ax.grid(True, alpha=0.3)
         ax.legend(loc="best", fontsize=8)
-    fig.suptitle("Inverse kinematics, drone 2 starting below drone 1: the asin angles cannot tell below from "
-                 "above, and the line settles on the mirror")
+    fig.suptitle(title)
     fig.tight_layout()
-    path = os.path.join(out_dir, "formation_mirror.png")
     fig.savefig(path, dpi=100)
     plt.close(fig)
     return path
