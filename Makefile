@@ -39,8 +39,11 @@ demo: build
 	./scripts/run_demo.sh $(BUILD)
 
 # Jupyter on notebooks/ (open the URL it prints); `import aurora` works there.
+# NOTEBOOK_ARGS passes options (e.g. --no-browser --port 8899); as root
+# (containers) Jupyter needs --allow-root.
 notebook: build
-	$(SOURCE_ROS) source $(BUILD)/devel/setup.bash && jupyter notebook --notebook-dir=notebooks $(NOTEBOOK_ARGS)
+	$(SOURCE_ROS) source $(BUILD)/devel/setup.bash && jupyter notebook --notebook-dir=notebooks \
+	  $(if $(filter 0,$(shell id -u)),--allow-root,) $(NOTEBOOK_ARGS)
 
 bench: build
 	./bench/realtime_loop.sh $(BUILD)
