@@ -96,7 +96,10 @@ def _follow(proc, progress):
         if m and progress:
             done, total = int(m.group(1)), int(m.group(2))
             if bar is None:
-                from tqdm.auto import tqdm
+                try:
+                    from tqdm.auto import tqdm  # a widget in notebooks
+                except ImportError:  # tqdm before 4.31 (Ubuntu 20.04's 4.30)
+                    from tqdm import tqdm
                 bar = tqdm(total=total, unit="sim", unit_scale=True, desc="sweep")
             bar.update(done - bar.n)
         elif not m:
