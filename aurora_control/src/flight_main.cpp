@@ -16,6 +16,7 @@
 #include "aurora_control/flight_setup.h"
 #include "aurora_sim/ros/config_dir.h"
 #include "formation_flight.h"
+#include "option_values.h"
 
 namespace po = boost::program_options;
 using namespace aurora_control;
@@ -36,13 +37,13 @@ bool parse(int argc, char** argv, Options& o) {
       ("controller", po::value(&o.controller)->default_value(config + "/controllers/pd_saturated.yaml"), "controller YAML (law and gains)")
       ("task", po::value(&o.task)->default_value(config + "/tasks/mission4.yaml"), "task YAML (waypoints, circle, lemniscate)")
       ("vehicle", po::value(&o.vehicle)->default_value(config + "/vehicles/ardrone2.yaml"), "vehicle YAML")
-      ("delay", po::value(&o.delays)->multitoken(), "feedback delay [samples of Ts], 0 to 2047 (limits.h); with --formation one per drone (default: the file's)")
+      ("delay", po::value(&o.delays)->multitoken()->composing(), "feedback delay [samples of Ts], 0 to 2047 (limits.h); with --formation one per drone (default: the file's)")
       ("no-clamp", po::bool_switch(&o.no_clamp), "do not clamp the law's commands (the sim still does, as the drivers)")
       ("formation", po::value(&o.formation), "formation YAML (config/formations/*.yaml, docs/formation.md): fly its drones and formation layer instead of --controller and --task")
       ("link", po::value(&o.link), "link YAML (config/links/*.yaml, docs/links.md): jitter, losses, a command-path delay; its uplink delay unless --delay is given")
       ("csv", po::value(&o.csv), "write one row per step k = 0..N at round-trip precision: step, t, the 12-state after k model steps, the 4 commands the drone applied at step k (model order), the reference of step k and the tracking error (with --formation: each drone's state and commands, Q and Qd; docs/formation.md)");
   po::variables_map vm;
-  po::store(po::parse_command_line(argc, argv, d), vm);
+  po::store(po::command_line_parser(joinOptionValues(argc, argv, d)).options(d).run(), vm);
   if (vm.count("help")) {
     std::cout << d;
     return false;

@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "aurora_control/delayed_controller.h"
+#include "option_values.h"
 #include "aurora_control/law_yaml.h"
 #include "aurora_control/link_yaml.h"
 #include "aurora_control/limits.h"
@@ -152,19 +153,6 @@ po::options_description describe(Arguments& args, Given& g) {
   fail(msg + "\n\n" + usage.str());
 }
 
-// "--kp -1" as "--kp=-1": a value may start with '-' (a refused negative gain).
-std::vector<std::string> joinValues(int argc, char** argv, const po::options_description& d) {
-  std::vector<std::string> out;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    const po::option_description* o =
-        a.rfind("--", 0) == 0 && a.find('=') == std::string::npos ? d.find_nothrow(a.substr(2), false) : nullptr;
-    if (o && o->semantic()->max_tokens() > 0 && i + 1 < argc) out.push_back(a + "=" + argv[++i]);
-    else out.push_back(a);
-  }
-  return out;
-}
-
 // The overrides from what was given, checked with the node's limits (limits.h).
 void readOverrides(const po::variables_map& vm, const Given& g, Overrides& o) {
   if (!g.controller.empty()) loadControllerFile(g.controller, o);
@@ -196,7 +184,7 @@ Arguments parseArguments(int argc, char** argv) {
   bag.add("bag", -1);
   po::variables_map vm;
   try {
-    po::store(po::command_line_parser(joinValues(argc, argv, d)).options(all).positional(bag).run(), vm);
+    po::store(po::command_line_parser(joinOptionValues(argc, argv, d)).options(all).positional(bag).run(), vm);
     po::notify(vm);
   } catch (const po::error& e) {
     usageError(e.what(), d);

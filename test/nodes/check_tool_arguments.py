@@ -55,6 +55,19 @@ class ToolArgumentsTest(unittest.TestCase):
             self.assertIn("--delay %d samples is not shorter than the run's %d steps" % (delay, longest + 1), out)
             self.assertIn("accepted delays up to %d samples" % longest, out)
 
+    def test_flight_refuses_a_negative_delay_by_its_limits(self):
+        # A value starting with '-' is the option's value, not an unknown option.
+        cfg = subprocess.run(["rospack", "find", "aurora_config"], stdout=subprocess.PIPE).stdout.decode().strip()
+        for args, said in ((["--delay", "-4"], "--delay -4 is refused: accepted integer samples in [0, 2047]"),
+                           (["--formation", cfg + "/formations/line_lemniscate.yaml", "--delay", "3", "-4"],
+                            "--delay -4 (drone 2) is refused: accepted integer samples in [0, 2047]")):
+            p = subprocess.run(["rosrun", "aurora_control", "flight"] + args, stdout=subprocess.PIPE,
+                               stderr=subprocess.STDOUT, timeout=60)
+            out = p.stdout.decode(errors="replace")
+            self.assertEqual(p.returncode, 2, out)
+            self.assertIn(said, out)
+            self.assertNotIn("unrecognised option", out)
+
 
 if __name__ == "__main__":
     rostest.rosrun("aurora_tests", "tool_arguments", ToolArgumentsTest)
