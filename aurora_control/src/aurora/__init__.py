@@ -18,3 +18,6 @@ See docs/architecture.md, "Packages and data flow".
 from aurora.simulation import Flight, FormationFlight, simulate, simulate_formation  # noqa: F401
 from aurora.sweep_runner import SweepInterrupted, read_results, read_summary, sweep, sweep_program  # noqa: F401,E402
 from aurora.bags import BagFlight, read_bag, read_formation_bag  # noqa: F401,E402
+
+__all__ = ["Flight", "FormationFlight", "simulate", "simulate_formation", "SweepInterrupted", "read_results",
+           "read_summary", "sweep", "sweep_program", "BagFlight", "read_bag", "read_formation_bag"]

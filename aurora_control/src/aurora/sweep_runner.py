@@ -24,7 +24,6 @@ import threading
 from aurora.simulation import config_dir
 
 _PROGRESS = re.compile(r"^sweep: (\d+)/(\d+) \(")
-_TOTAL = re.compile(r" (\d[\d,]*) simulations? ")
 
 
 class SweepInterrupted(KeyboardInterrupt):
