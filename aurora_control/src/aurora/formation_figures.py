@@ -15,7 +15,6 @@ vanish, and the line settles 1.5 m from the desired one (drone 2's height
 against the height eq. F2 asks for; the shape check of eq. F9, on
 positions, sees it)."""
 import copy
-import math
 import os
 import sys
 
