@@ -78,7 +78,7 @@ class PythonSweepTest(unittest.TestCase):
                         "    aurora.sweep(d, backend='scalar', out=sys.argv[2], chunk_size=64, progress=False)\n"
                         "except aurora.SweepInterrupted as e:\n    print(e)\n    sys.exit(3)\n")
             with open(os.path.join(tmp, "f.yaml"), "w") as f:
-                yaml.safe_dump(formation_cut(repeats=16), f)
+                yaml.safe_dump(formation_cut(repeats=64), f)
             child = subprocess.Popen([sys.executable, script, f.name, out], stdout=subprocess.PIPE, text=True,
                                      preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
             progress = os.path.join(out, "progress")
@@ -91,12 +91,12 @@ class PythonSweepTest(unittest.TestCase):
             self.assertEqual(child.returncode, 3, said)
             self.assertIn("finished chunk", said)
             self.assertIn("computes only the missing ones", said)
-            results, summary = aurora.sweep(formation_cut(repeats=16), backend="scalar", out=out, chunk_size=64,
+            results, summary = aurora.sweep(formation_cut(repeats=64), backend="scalar", out=out, chunk_size=64,
                                             progress=False)
             self.assertGreater(summary["chunks"]["resumed"], 0)
             self.assertGreater(summary["chunks"]["computed"], 0)
-            self.assertEqual(len(results), 1024)
-            self.assertTrue(np.array_equal(results["index"].to_numpy(), np.arange(1024)))
+            self.assertEqual(len(results), 4096)
+            self.assertTrue(np.array_equal(results["index"].to_numpy(), np.arange(4096)))
 
     def test_bad_input_raises_value_error_with_the_programs_message(self):
         bad_key = copy.deepcopy(thesis_cut())
