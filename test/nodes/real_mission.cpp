@@ -97,7 +97,7 @@ TEST(RealLaunch, MissionCompletesCloseToTheSimulatedRun) {
   }
   std::printf("real.launch (%s) vs simulated run: %ld cycles compared, largest position difference "
               "%.3f m at task time %.2f s\n", lawName(set.law), compared, worst, worst_t);
-  EXPECT_GT(compared, 1700);
+  EXPECT_GT(compared, static_cast<long>(0.95 * double(sim.size() - 1)));  // nearly every step of the task
   EXPECT_LE(worst, tolerance);
 }
 
