@@ -90,12 +90,7 @@ void ControllerNode::connectTopics(const SafetyConfig& safety) {
   desired_path_pub_ = nh_.advertise<nav_msgs::Path>("desired_path", 1, true);
   // The drivers' names (ardrone_autonomy: ardrone/takeoff ...; bebop_autonomy:
   // takeoff ...) are set by remapping in the launch file.
-  DeliveryPolicy until_shown;
-  until_shown.resend_period = safety.command_resend_period;
-  DeliveryPolicy land_policy = until_shown;
-  land_policy.timeout = safety.land_resend_timeout;
-  takeoff_ = DriverCommandChannel(nh_, "takeoff", "take-off", until_shown);
-  land_ = DriverCommandChannel(nh_, "land", "land", land_policy);
+  takeoff_land_ = TakeoffLand(nh_, "takeoff", "land", "", safety);
   reset_ = DriverCommandChannel(nh_, "reset", "reset", DeliveryPolicy());  // once: a toggle
   if (joystick_enabled_) {
     joy_sub_ = nh_.subscribe("joy", 10, &ControllerNode::onJoy, this,
@@ -304,13 +299,11 @@ void ControllerNode::onJoy(const sensor_msgs::Joy::ConstPtr& msg) {
   const double z = core_->empty() ? 0.0 : core_->newest().X[aurora_sim::kZ];
   if (joy_.takeoff) {
     ROS_INFO("controller: joystick take-off");
-    land_.cancel();
-    takeoff_.request(now, z);
+    takeoff_land_.takeoff(now, z);
   }
   if (joy_.land) {
     ROS_WARN("controller: joystick land");
-    takeoff_.cancel();
-    land_.request(now);
+    takeoff_land_.land(now);
   }
   if (joy_.reset) {
     ROS_WARN("controller: joystick emergency reset");
@@ -330,10 +323,7 @@ void ControllerNode::onJoy(const sensor_msgs::Joy::ConstPtr& msg) {
 }
 
 void ControllerNode::serviceDriverCommands(double now, const double* fresh_X) {
-  // Only a fresh state can show that the driver acted.
-  const DriverCommand& t = takeoff_.command();
-  takeoff_.service(now, fresh_X && climbShown(fresh_X, t.reference(), safety_.takeoff_rise));
-  land_.service(now, fresh_X && descentShown(fresh_X, safety_.descent_speed, safety_.landed_altitude));
+  takeoff_land_.service(now, fresh_X);
   reset_.service(now, false);
 }
 
@@ -355,14 +345,7 @@ void ControllerNode::cycle(const ros::Time& now) {
       now.toSec(), age, have_state ? newest->X : kNoState, have_state ? newest->step : 0,
       task_time, task_.duration());
   logEvent(decision.event);
-  if (decision.send_takeoff) {
-    land_.cancel();
-    takeoff_.request(now.toSec(), have_state ? newest->X[aurora_sim::kZ] : 0.0);
-  }
-  if (decision.send_land) {
-    takeoff_.cancel();
-    land_.request(now.toSec());
-  }
+  takeoff_land_.apply(decision, now.toSec(), have_state ? newest->X[aurora_sim::kZ] : 0.0);
   serviceDriverCommands(now.toSec(), have_state && age <= safety_.hover_after ? newest->X : nullptr);
   if (!have_state) {
     const double hover[4] = {0, 0, 0, 0};
@@ -398,8 +381,8 @@ void ControllerNode::cycle(const ros::Time& now) {
   control.law_ran = decision.run_law;
   control.overridden = joy_.deadman || resume_.active();
   control.mode = mode;
-  control.takeoff_attempts = static_cast<uint32_t>(takeoff_.command().attempts());
-  control.land_attempts = static_cast<uint32_t>(land_.command().attempts());
+  control.takeoff_attempts = static_cast<uint32_t>(takeoff_land_.takeoffCommand().attempts());
+  control.land_attempts = static_cast<uint32_t>(takeoff_land_.landCommand().attempts());
   fillLaw(control);
   fillOutput(out, control);
   sendCommand(out.U);

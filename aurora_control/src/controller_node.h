@@ -95,8 +95,10 @@ class ControllerNode {
   ros::ServiceServer set_parameters_;
   ros::Publisher descriptions_pub_, updates_pub_;
   ros::Publisher cmd_pub_, control_pub_, markers_pub_, desired_path_pub_;
-  // take-off, land, reset: held until the driver listens, re-sent until shown
-  DriverCommandChannel takeoff_, land_, reset_;
+  // take-off and land: held until the driver listens, re-sent until shown;
+  // reset: sent once
+  TakeoffLand takeoff_land_;
+  DriverCommandChannel reset_;
   SafetyConfig safety_;
   ros::Subscriber state_sub_, joy_sub_;
   ros::Timer timer_;

@@ -67,4 +67,31 @@ void DriverCommandChannel::logTransition(Delivery before, bool sent, double now)
   }
 }
 
+TakeoffLand::TakeoffLand(ros::NodeHandle& nh, const std::string& takeoff_topic, const std::string& land_topic,
+                         const std::string& who, const SafetyConfig& safety)
+    : safety_(safety) {
+  DeliveryPolicy until_shown;
+  until_shown.resend_period = safety.command_resend_period;
+  DeliveryPolicy land_policy = until_shown;
+  land_policy.timeout = safety.land_resend_timeout;
+  const std::string prefix = who.empty() ? "" : who + " ";
+  takeoff_ = DriverCommandChannel(nh, takeoff_topic, prefix + "take-off", until_shown);
+  land_ = DriverCommandChannel(nh, land_topic, prefix + "land", land_policy);
+}
+
+void TakeoffLand::takeoff(double now, double z) {
+  land_.cancel();
+  takeoff_.request(now, z);
+}
+
+void TakeoffLand::land(double now) {
+  takeoff_.cancel();
+  land_.request(now);
+}
+
+void TakeoffLand::service(double now, const double* fresh_X) {
+  takeoff_.service(now, fresh_X && climbShown(fresh_X, takeoff_.command().reference(), safety_.takeoff_rise));
+  land_.service(now, fresh_X && descentShown(fresh_X, safety_.descent_speed, safety_.landed_altitude));
+}
+
 }  // namespace aurora_control

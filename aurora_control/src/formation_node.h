@@ -46,7 +46,7 @@ class FormationNode {
   void configureSequence();
   void flightCycle(const ros::Time& now);
   FormationSupervisor<kDrones>::Decision superviseDrones(const ros::Time& now);
-  void serviceDriverCommands(const FormationSupervisor<kDrones>::Decision& c, double now);
+  void serviceDriverCommands(const FormationSupervisor<kDrones>::Decision& c, const ros::Time& now);
   Core::Tick holdOrHover(const FormationSupervisor<kDrones>::Decision& c);
 
   ros::NodeHandle nh_, pnh_;
@@ -67,7 +67,7 @@ class FormationNode {
   bool sequence_ = false;
   SafetyConfig safety_;
   FormationSupervisor<kDrones> supervisor_;
-  DriverCommandChannel takeoff_[kDrones], land_[kDrones];
+  TakeoffLand takeoff_land_[kDrones];
   ros::Time last_state_[kDrones];  // when each drone's newest fresh state arrived
   long formation_k_ = 0;           // the formation's next tick (its time stops while the drones hover)
   std::string mode_ = "fly";

@@ -4,7 +4,6 @@
 // the formation's watchdog rules (formation_supervisor.h) every 30 Hz cycle.
 #include <limits>
 
-#include "aurora_control/driver_command.h"
 #include "aurora_sim/ros/conversions.h"
 #include "controller_params.h"
 #include "formation_node.h"
@@ -26,14 +25,10 @@ void FormationNode::configureSequence() {
   for (int d = 0; d < kDrones; ++d) names[d] = drones_[d];
   supervisor_.configure(safety_, names);
   mode_ = "wait for state";
-  DeliveryPolicy until_shown;
-  until_shown.resend_period = safety_.command_resend_period;
-  DeliveryPolicy land_policy = until_shown;
-  land_policy.timeout = safety_.land_resend_timeout;
   // /NS/takeoff and /NS/land: the launch remaps them to each driver's names.
   for (int d = 0; d < kDrones; ++d) {
-    takeoff_[d] = DriverCommandChannel(nh_, "/" + drones_[d] + "/takeoff", drones_[d] + " take-off", until_shown);
-    land_[d] = DriverCommandChannel(nh_, "/" + drones_[d] + "/land", drones_[d] + " land", land_policy);
+    const std::string ns = "/" + drones_[d];
+    takeoff_land_[d] = TakeoffLand(nh_, ns + "/takeoff", ns + "/land", drones_[d], safety_);
   }
 }
 
@@ -45,7 +40,7 @@ void FormationNode::flightCycle(const ros::Time& now) {
     if (safety) ROS_WARN("formation_controller: %s", c.event.c_str());
     else ROS_INFO("formation_controller: %s", c.event.c_str());
   }
-  serviceDriverCommands(c, now.toSec());
+  serviceDriverCommands(c, now);
   if (c.started) {  // tick 0 from where the drones hover now
     double X0[LineFormation<double>::kVariables];
     for (int d = 0; d < kDrones; ++d) {
@@ -77,22 +72,12 @@ FormationSupervisor<FormationNode::kDrones>::Decision FormationNode::superviseDr
   return supervisor_.update(now.toSec(), age, X, step, taskTime(double(formation_k_), Ts), duration);
 }
 
-void FormationNode::serviceDriverCommands(const FormationSupervisor<kDrones>::Decision& c, double now) {
+void FormationNode::serviceDriverCommands(const FormationSupervisor<kDrones>::Decision& c, const ros::Time& now) {
   for (int d = 0; d < kDrones; ++d) {
     const bool have = core_->ready(d);
-    if (c.drone[d].send_takeoff) {
-      land_[d].cancel();
-      takeoff_[d].request(now, have ? core_->newest(d).X[aurora_sim::kZ] : 0.0);
-    }
-    if (c.drone[d].send_land) {
-      takeoff_[d].cancel();
-      land_[d].request(now);
-    }
-    // Only a fresh state can show that the driver acted.
-    const bool fresh = have && (ros::Time::now() - last_state_[d]).toSec() <= safety_.hover_after;
-    const double* X = fresh ? core_->newest(d).X : nullptr;
-    takeoff_[d].service(now, X && climbShown(X, takeoff_[d].command().reference(), safety_.takeoff_rise));
-    land_[d].service(now, X && descentShown(X, safety_.descent_speed, safety_.landed_altitude));
+    takeoff_land_[d].apply(c.drone[d], now.toSec(), have ? core_->newest(d).X[aurora_sim::kZ] : 0.0);
+    const bool fresh = have && (now - last_state_[d]).toSec() <= safety_.hover_after;
+    takeoff_land_[d].service(now.toSec(), fresh ? core_->newest(d).X : nullptr);
   }
 }
 

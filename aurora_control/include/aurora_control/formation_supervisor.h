@@ -39,7 +39,6 @@ class FormationSupervisor {
   }
 
   bool started() const { return started_; }
-  const FlightSupervisor& drone(int d) const { return supervisor_[d]; }
 
   // now [s]; age[d]: time since drone d's last fresh state [s] (infinite if
   // none); X[d], step[d]: its newest state; task_time [s] since the
