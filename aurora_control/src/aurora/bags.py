@@ -12,7 +12,6 @@ position. A missing, unindexed or damaged bag raises ValueError saying what
 to do (the report's messages)."""
 from aurora import formation_report, report
 
-_STATE = ("x", "y", "z", "roll", "pitch", "yaw", "vx", "vy", "vz", "p", "q", "r")
 _Q = formation_report.VARIABLES
 
 
@@ -42,13 +41,11 @@ def _open(path):
 def _states_frame(states, t0):
     import pandas as pd
     rows = {"step": [], "t": []}
-    rows.update({k: [] for k in _STATE})
+    rows.update({k: [] for k in report.STATE_NAMES})
     for s in states:
         rows["step"].append(s.step)
         rows["t"].append(s.header.stamp.to_sec() - t0)
-        for k, v in zip(_STATE, (s.position.x, s.position.y, s.position.z, s.attitude.x, s.attitude.y, s.attitude.z,
-                                 s.velocity.x, s.velocity.y, s.velocity.z, s.attitude_rate.x, s.attitude_rate.y,
-                                 s.attitude_rate.z)):
+        for k, v in zip(report.STATE_NAMES, report.state_values(s)):
             rows[k].append(v)
     return pd.DataFrame(rows)
 

@@ -175,6 +175,16 @@ def study_metrics(controls, ts):
     return iae, itae, iasc
 
 
+# A DroneState's 12-state in the report's names (the model's order).
+STATE_NAMES = ("x", "y", "z", "roll", "pitch", "yaw", "vx", "vy", "vz", "p", "q", "r")
+
+
+def state_values(s):
+    """The 12-state of DroneState `s`, STATE_NAMES' order."""
+    return (s.position.x, s.position.y, s.position.z, s.attitude.x, s.attitude.y, s.attitude.z,
+            s.velocity.x, s.velocity.y, s.velocity.z, s.attitude_rate.x, s.attitude_rate.y, s.attitude_rate.z)
+
+
 def flight_series(ns, states, controls, ts, t0):
     """Per step with both a state and a control: time, state, reference,
     tracking error, waypoint (or lap), whether in the task."""
@@ -186,11 +196,8 @@ def flight_series(ns, states, controls, ts, t0):
         if c is None:
             continue
         series["t"].append(s.header.stamp.to_sec() - t0)
-        for key, val in (("x", s.position.x), ("y", s.position.y), ("z", s.position.z),
-                         ("xd", c.desired_position.x), ("yd", c.desired_position.y), ("zd", c.desired_position.z),
-                         ("roll", s.attitude.x), ("pitch", s.attitude.y), ("yaw", s.attitude.z),
-                         ("vx", s.velocity.x), ("vy", s.velocity.y), ("vz", s.velocity.z),
-                         ("p", s.attitude_rate.x), ("q", s.attitude_rate.y), ("r", s.attitude_rate.z)):
+        for key, val in zip(STATE_NAMES + ("xd", "yd", "zd"), state_values(s) + (
+                c.desired_position.x, c.desired_position.y, c.desired_position.z)):
             series[key].append(val)
         # The tracking error of docs/controllers.md ("Steps of a task and its
         # tracking error"): state k against the reference of step k.
