@@ -24,6 +24,7 @@ namespace aurora_control {
 
 ControllerNode::ControllerNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
     : nh_(nh), pnh_(private_nh) {
+  refuseDuplicatedKeysInLoadedFiles(pnh_);
   // The vehicle, with the same range rules as the sim's: Ts for every law,
   // the whole model for the underactuated law, which inverts it.
   const aurora_sim::ArdroneParams<double> vehicle = aurora_sim::loadVehicleParams(nh_, "vehicle");
@@ -32,8 +33,8 @@ ControllerNode::ControllerNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
   ControllerSettings& set = core_->settings;
   set.Ts = Ts_;
   loadLaw(pnh_, vehicle, set);
-  set.delay = readDelaySamples();
-  loadLink(pnh_, set);
+  const long given_delay = readDelaySamples();
+  loadLink(pnh_, given_delay, set);
   set.clamp_commands = aurora_sim::boolParam(pnh_, "clamp_commands", true);
   const std::string mode = readLoopMode();
   task_ = loadTask(pnh_);
@@ -57,8 +58,9 @@ ControllerNode::ControllerNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
     rate_timer_ = nh_.createWallTimer(ros::WallDuration(1.0), &ControllerNode::onRateCheck, this);
   }
   publishTaskMarkers();
-  ROS_INFO("controller: %s (%s), delay %ld samples (%.4f s), %s commands, %s mode, %s task over "
-           "%.1f s%s%s", lawName(set.law), gainsText(set).c_str(), set.delay, set.delay * Ts_,
+  ROS_INFO("controller: %s (%s), delay %s (%.4f s), link %s, %s commands, %s mode, %s task over "
+           "%.1f s%s%s", lawName(set.law), gainsText(set).c_str(), delayOriginText(given_delay, set.link).c_str(),
+           set.delay * Ts_, linkName().c_str(),
            set.clamp_commands ? "clamped" : "unclamped", mode.c_str(), taskTypeName(task_.type),
            task_.duration(), safety.flight_sequence ? ", flight sequence (take-off, task, landing)" : "",
            joystick_enabled_ ? ", joystick override" : "");
@@ -101,17 +103,30 @@ void ControllerNode::connectTopics(const SafetyConfig& safety) {
 }
 
 void ControllerNode::refuseDelayBeyondTheTask(long delay) const {
-  if (delayShorterThanRun(delay, task_iterations_)) return;
   const std::string key = pnh_.hasParam("delay/seconds") ? "delay/seconds" : "delay/samples";
-  throw ConfigError("parameter '" + fullKey(pnh_, key) + "' = " +
-                       delayRunText(delay, task_iterations_, Ts_));
+  if (!delayShorterThanRun(delay, task_iterations_)) {
+    throw ConfigError("parameter '" + fullKey(pnh_, key) + "' = " + delayRunText(delay, task_iterations_, Ts_));
+  }
+  const long latest = core_->settings.link.historyNeeded(delay);  // the delay plus the link's jitter
+  if (!delayShorterThanRun(latest, task_iterations_)) {
+    throw ConfigError("parameter '" + fullKey(pnh_, "link") + "': its latest packet (the delay plus the jitter, or "
+                      "the command path) is " + delayRunText(latest, task_iterations_, Ts_));
+  }
+}
+
+// The link for the start-up line: its name (~link_name, the launch's
+// link:=) and, unless ideal, every value that defines it.
+std::string ControllerNode::linkName() const {
+  const LinkParams& l = core_->settings.link;
+  const std::string name = aurora_sim::paramOr<std::string>(pnh_, "link_name", pnh_.hasParam("link") ? "~link" : "ideal");
+  return l.ideal() && l.uplink.delay == 0 ? name : name + " (" + linkText(l) + ")";
 }
 
 void ControllerNode::refuseUnknownTopLevelKeys() {
   // The node's own keys and those the reconfigure server writes beside them.
   std::vector<std::string> accepted{"controller", "task", "safety", "joystick", "mode", "trigger",
                                     "delay", "clamp_commands", "lockstep_subscribers", "kp", "kd",
-                                    "delay_samples", "link"};
+                                    "delay_samples", "link", "link_name", "yaml_files"};
   const std::vector<std::string> gains = lawGainNames(LawType::kUnderactuated);
   accepted.insert(accepted.end(), gains.begin(), gains.end());
   refuseUnknownParams(pnh_, "", accepted, "a typo, or a key of another file");
@@ -126,8 +141,9 @@ long ControllerNode::readDelaySamples() {
                       fullKey(pnh_, "delay/seconds") + "' are set: give only one");
   }
   const std::string key = has_seconds ? "delay/seconds" : "delay/samples";
+  if (!pnh_.hasParam(key)) return kDelayNotGiven;  // the link's uplink delay, or 0
   double value = 0.0;  // an int parameter reads as a double too; 2.5 samples is refused below
-  const bool number = !pnh_.hasParam(key) || pnh_.getParam(key, value);
+  const bool number = pnh_.getParam(key, value);
   long samples = 0;
   const std::string refusal = number ? delayRefusal(value, has_seconds, Ts_, samples)
                                      : std::string("is refused: accepted ") + (has_seconds ? "seconds" : delayRangeText());

@@ -57,7 +57,8 @@ class ControllerNode {
   void serviceDriverCommands(double now, const double* fresh_X);
   void publishTaskMarkers();
   void fillLaw(aurora_msgs::Control& control) const;
-  long readDelaySamples();
+  long readDelaySamples();  // ~delay/*, or kDelayNotGiven
+  std::string linkName() const;
   std::string readLoopMode();  // sets lockstep_, timer_triggered_, the lockstep subscriber counts
   void connectTopics(const SafetyConfig& safety);
   void refuseDelayBeyondTheTask(long delay) const;  // limits.h: shorter than the run

@@ -49,11 +49,9 @@ const char* taskTypeName(TaskType type) {
   return type == TaskType::kCircle ? "circle" : (type == TaskType::kLemniscate ? "lemniscate" : "waypoint");
 }
 
-void loadLink(const ros::NodeHandle& pnh, ControllerSettings& set) {
-  if (!pnh.hasParam("link")) return;
-  set.link = readLink(YamlReader("parameter ", "/"), paramAsYaml(pnh, "link"), fullKey(pnh, "link"));
-  const std::string refusal = combineUplinkDelay(set.delay, set.link, set.delay);
-  if (!refusal.empty()) throw ConfigError("parameter '" + fullKey(pnh, "link") + "': " + refusal);
+void loadLink(const ros::NodeHandle& pnh, long given_delay, ControllerSettings& set) {
+  if (pnh.hasParam("link")) set.link = readLink(YamlReader("parameter ", "/"), paramAsYaml(pnh, "link"), fullKey(pnh, "link"));
+  set.delay = delayInForce(given_delay, set.link);  // docs/links.md, "A delay beside a link"
 }
 
 Task<double> loadTask(const ros::NodeHandle& pnh) {

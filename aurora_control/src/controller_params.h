@@ -56,8 +56,9 @@ void readUnderactuatedGains(const Config& c, UnderactuatedGains<double>& g) {
 // ~task through the one task schema (task_yaml.h).
 Task<double> loadTask(const ros::NodeHandle& pnh);
 // ~link (a link file loaded by the launch's link:=NAME; absent: ideal) into
-// set.link, its uplink delay combined with set.delay (combineUplinkDelay).
-void loadLink(const ros::NodeHandle& pnh, ControllerSettings& set);
+// set.link, and set.delay: `given_delay` (~delay/*; kDelayNotGiven when
+// absent) replaces the link's uplink delay (link_yaml.h, delayInForce).
+void loadLink(const ros::NodeHandle& pnh, long given_delay, ControllerSettings& set);
 SafetyConfig loadSafetyConfig(const ros::NodeHandle& pnh);
 // False when the joystick is not enabled (joystick/enabled).
 bool loadJoystickConfig(const ros::NodeHandle& pnh, JoystickConfig& config);

@@ -30,6 +30,22 @@ struct Options {
   bool no_clamp = false;
 };
 
+// A formation file gives each drone's link (drones[i].link) and never
+// clamps (AuRoRA's formation script does not): the flight's --link,
+// --no-clamp, --controller and --task would be ignored, so they are refused.
+void refuseFlightOnlyOptions(const po::variables_map& vm) {
+  const char* why[][2] = {
+      {"link", "give each drone's link in the formation file (drones[i].link: links/NAME.yaml)"},
+      {"no-clamp", "a formation's commands are never clamped (AuRoRA's formation script does not clamp)"},
+      {"controller", "give each drone's controller in the formation file (drones[i].controller)"},
+      {"task", "the formation file's reference is the task"}};
+  for (const auto& w : why) {
+    if (vm.count(w[0]) && !vm[w[0]].defaulted()) {
+      throw ConfigError(std::string("--") + w[0] + " is refused with --formation: " + w[1]);
+    }
+  }
+}
+
 bool parse(int argc, char** argv, Options& o) {
   const std::string config = o.config = aurora_sim::configDir();  // throws: says what to source
   po::options_description d("usage: flight [options]\n\nFlies one task offline with the controller node's core and prints its tracking error.\n\noptions");
@@ -52,7 +68,13 @@ bool parse(int argc, char** argv, Options& o) {
   if (o.formation.empty() && o.delays.size() > 1) {
     throw ConfigError("--delay takes one value for a flight (one per drone with --formation): got " + std::to_string(o.delays.size()));
   }
-  o.delay = o.delays.empty() ? 0 : o.delays[0];
+  for (const char* file : {"link", "formation", "csv", "controller", "task", "vehicle"}) {
+    if (vm.count(file) && !vm[file].defaulted() && vm[file].as<std::string>().empty()) {
+      throw ConfigError(std::string("--") + file + " '' is refused: give a file's path (or leave --" + file + " out)");
+    }
+  }
+  if (!o.formation.empty()) refuseFlightOnlyOptions(vm);
+  o.delay = o.delays.empty() ? kDelayNotGiven : o.delays[0];
   return true;
 }
 
@@ -112,9 +134,11 @@ void run(const Options& o) {
   });
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (csv) std::fclose(csv);
-  std::printf("flight: %s, %s task of %.1f s, delay %ld samples: %ld steps in %.3f s (%.2f us per step, model included)\n",
+  std::printf("flight: %s, %s task of %.1f s, delay %s, link %s: %ld steps in %.3f s (%.2f us per step, model included)\n",
               lawName(set.law), task.isTrajectory() ? (task.type == TaskType::kCircle ? "circle" : "lemniscate") : "waypoint",
-              task.duration(), set.delay, r.steps, seconds, 1e6 * seconds / double(r.steps));
+              task.duration(), delayOriginText(o.delay, set.link).c_str(),
+              o.link.empty() ? "ideal" : ("'" + o.link + "' (" + linkText(set.link) + ")").c_str(), r.steps, seconds,
+              1e6 * seconds / double(r.steps));
   segments.print();
   std::printf("  whole flight: RMS %.4f m, max %.4f m; IAE %.4f, ITAE %.4f, IASC %.4f\n", r.rms_tracking_error,
               r.max_tracking_error, r.iae, r.itae, r.iasc);

@@ -96,8 +96,9 @@ FormationRun<double, Line> loadRun(const FormationFlightOptions& o, const aurora
     long samples = 0;
     const std::string refusal = delayRefusal(double(o.delays[d]), false, p.Ts, samples);
     if (!refusal.empty()) throw ConfigError("--delay " + std::to_string(o.delays[d]) + " (drone " + std::to_string(d + 1) + ") " + refusal);
-    run.drone[d].delay = samples;
+    run.drone[d].delay = samples;  // replaces the file's, and its link's uplink delay (docs/links.md)
   }
+  if (!o.delays.empty()) refuseFormationDelays(run, p.Ts, {"--delay (drone 1)", "--delay (drone 2)"});
   return run;
 }
 

@@ -4,6 +4,7 @@
 
 #include "aurora_control/formation_yaml.h"
 #include "formation_markers.h"
+#include "param_tree.h"
 #include "aurora_control/ros/control_msg.h"
 #include "aurora_sim/ros/conversions.h"
 #include "aurora_sim/ros/params.h"
@@ -11,6 +12,7 @@
 namespace aurora_control {
 
 FormationNode::FormationNode(ros::NodeHandle nh, ros::NodeHandle private_nh) : nh_(nh), pnh_(private_nh) {
+  refuseDuplicatedKeysInLoadedFiles(pnh_);
   LawType law = LawType::kUnderactuated;
   const FormationRun<double, LineFormation<double>> run = loadRun(law);
   core_.reset(new Core(run, law));
@@ -43,14 +45,14 @@ FormationRun<double, LineFormation<double>> FormationNode::loadRun(LawType& law)
     drones_.push_back(f.drones[d].name_space);
     const std::string key = "delay_" + std::to_string(d + 1);
     const double given = aurora_sim::rangedParam(pnh_, key, -1, -1, double(kMaxDelaySamples), "samples (-1: the file's)");
-    if (given >= 0) {
-      const std::string refusal = combineUplinkDelay(static_cast<long>(given), run.drone[d].link, run.drone[d].delay);
-      if (!refusal.empty() || given != double(long(given))) {
-        throw aurora_sim::ConfigError("parameter '" + aurora_sim::fullKey(pnh_, key) + "' = " + std::to_string(given) +
-                                      ": " + (refusal.empty() ? "accepted whole samples" : refusal));
-      }
+    if (given != double(long(given))) {
+      throw aurora_sim::ConfigError("parameter '" + aurora_sim::fullKey(pnh_, key) + "' = " + aurora_sim::numberText(given) +
+                                    " is refused: accepted whole samples");
     }
+    // A delay given replaces the drone's, its link's uplink delay included (docs/links.md).
+    if (given >= 0) run.drone[d].delay = static_cast<long>(given);
   }
+  refuseFormationDelays(run, vehicle.Ts, {aurora_sim::fullKey(pnh_, "delay_1"), aurora_sim::fullKey(pnh_, "delay_2")});
   std::vector<std::string> launched;
   if (pnh_.getParam("drones", launched) && launched != drones_) {
     throw aurora_sim::ConfigError("parameter '" + aurora_sim::fullKey(pnh_, "drones") + "': the launch started drones '" +
@@ -120,6 +122,18 @@ void FormationNode::answer(long k, const ros::Time& stamp) {
 }
 
 void FormationNode::send(const Core::Tick& t) {
+  if (t.not_finite >= 0) {
+    const std::string& ns = drones_[t.not_finite];
+    mode_ = "hover (" + ns + ": non-finite command)";
+    if (!told_not_finite_) {
+      ROS_ERROR("formation_controller: tick %ld: %s's law gave a non-finite command (the formation layer is singular "
+                "where the drones are level or together, docs/formation.md): every drone hovers (zero commands) "
+                "while it lasts; this is said once", t.k, ns.c_str());
+      told_not_finite_ = true;
+    }
+  } else if (!sequence_) {
+    mode_ = "fly";
+  }
   for (int d = 0; d < kDrones; ++d) {
     for (int i = 0; i < 4; ++i) last_sent_[d][i] = t.out[d].U[i];
     cmd_pubs_[d].publish(aurora_sim::twistMsgFromModelCommand(t.out[d].U));
@@ -132,6 +146,7 @@ void FormationNode::publish(const Core::Tick& t, const ros::Time& stamp) {
   m.header.frame_id = "world";
   m.step = static_cast<uint64_t>(t.k);
   m.sample_time = core_->run().drone[0].plant.Ts;
+  m.ticks = static_cast<uint64_t>(formationTicks(core_->run().reference.duration, m.sample_time));
   m.layer_ran = t.layer_ran;
   m.drones = drones_;
   m.mode = mode_;

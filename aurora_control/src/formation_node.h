@@ -71,6 +71,7 @@ class FormationNode {
   ros::Time last_state_[kDrones];  // when each drone's newest fresh state arrived
   long formation_k_ = 0;           // the formation's next tick (its time stops while the drones hover)
   std::string mode_ = "fly";
+  bool told_not_finite_ = false;  // a non-finite command was reported (once)
 };
 
 }  // namespace aurora_control

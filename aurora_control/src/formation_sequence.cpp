@@ -22,8 +22,12 @@ void FormationNode::configureSequence() {
                                   "' = 'realtime': real drones fly in real time");
   }
   std::string names[kDrones];
-  for (int d = 0; d < kDrones; ++d) names[d] = drones_[d];
-  supervisor_.configure(safety_, names);
+  double starts[kDrones][3];
+  for (int d = 0; d < kDrones; ++d) {
+    names[d] = drones_[d];
+    for (int i = 0; i < 3; ++i) starts[d][i] = core_->run().drone[d].start[i];
+  }
+  supervisor_.configure(safety_, names, starts);
   mode_ = "wait for state";
   // /NS/takeoff and /NS/land: the launch remaps them to each driver's names.
   for (int d = 0; d < kDrones; ++d) {

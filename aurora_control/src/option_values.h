@@ -25,7 +25,8 @@ inline std::vector<std::string> joinOptionValues(int argc, char** argv,
     const std::string a = argv[i];
     const boost::program_options::option_description* o =
         a.rfind("--", 0) == 0 && a.find('=') == std::string::npos ? d.find_nothrow(a.substr(2), false) : nullptr;
-    if (!o || o->semantic()->max_tokens() == 0 || i + 1 >= argc) {
+    // An empty value stays a token of its own (boost refuses "--link="): the tool refuses it by name.
+    if (!o || o->semantic()->max_tokens() == 0 || i + 1 >= argc || argv[i + 1][0] == '\0') {
       out.push_back(a);
       continue;
     }

@@ -6,6 +6,7 @@
 
 #include "aurora_control/yaml_reader.h"
 #include "aurora_sim/ros/params.h"
+#include "aurora_sim/yaml_file.h"
 
 namespace aurora_control {
 
@@ -63,6 +64,16 @@ void refuseUnknownParams(const ros::NodeHandle& nh, const std::string& group,
                                        joinKeys(accepted) + (hint.empty() ? "" : " (" + hint + ")"));
     }
   }
+}
+
+void refuseDuplicatedKeysInLoadedFiles(const ros::NodeHandle& pnh) {
+  if (!pnh.hasParam("yaml_files")) return;
+  std::vector<std::string> files;
+  if (!pnh.getParam("yaml_files", files)) {
+    throw aurora_sim::ConfigError("parameter '" + pnh.resolveName("yaml_files") +
+                                  "' is invalid: accepted a list of YAML file paths");
+  }
+  for (const std::string& f : files) aurora_sim::loadYamlFile("file", f);
 }
 
 }  // namespace aurora_control

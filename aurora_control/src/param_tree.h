@@ -23,4 +23,11 @@ YAML::Node paramAsYaml(const ros::NodeHandle& nh, const std::string& key);
 void refuseUnknownParams(const ros::NodeHandle& nh, const std::string& group,
                          const std::vector<std::string>& accepted, const std::string& hint);
 
+// The YAML files the launch loaded into the node's parameters (~yaml_files,
+// a list of paths): roslaunch's loader keeps the last of a duplicated key
+// where `flight` reads the files strictly, so each is read again here and a
+// key given twice is refused, naming it and both lines
+// (aurora_sim/yaml_file.h). Throws aurora_sim::ConfigError.
+void refuseDuplicatedKeysInLoadedFiles(const ros::NodeHandle& pnh);
+
 }  // namespace aurora_control

@@ -321,9 +321,14 @@ FILE* openCommandsCsv(const std::string& path) {
   return csv;
 }
 
-// The controller core: the vehicle the underactuated law inverts, the link.
-std::unique_ptr<DelayedController<kCapacity>> makeCore(const Arguments& args) {
+// The controller core: the vehicle the underactuated law inverts, and the
+// link with the first cycle's delay as its uplink delay (`first`: that
+// cycle's settings), configured as the node configures it: after the delay
+// is known and before the first state (a link configured with another delay
+// receives other states from step 0 on).
+std::unique_ptr<DelayedController<kCapacity>> makeCore(const Arguments& args, const ControllerSettings& first) {
   std::unique_ptr<DelayedController<kCapacity>> core(new DelayedController<kCapacity>());
+  core->settings = first;
   core->settings.vehicle = vehicleFor(args.vehicle_path);
   if (!args.link_path.empty()) {
     try {
@@ -334,6 +339,17 @@ std::unique_ptr<DelayedController<kCapacity>> makeCore(const Arguments& args) {
     core->configureLink();
   }
   return core;
+}
+
+// Whether the node flew over an imperfect link (docs/links.md): a lost
+// packet, a state that did not arrive, a command that differs from the one
+// sent (not by the joystick) or a drone hovering on a stale command.
+bool recordedOverALink(const std::vector<aurora_msgs::Control>& controls) {
+  for (const aurora_msgs::Control& c : controls) {
+    if (c.uplink_losses > 0 || c.downlink_losses > 0 || !c.state_arrived || c.drone_hovers) return true;
+    if (!c.overridden && c.law_ran && c.command != c.command_sent) return true;
+  }
+  return false;
 }
 
 
@@ -352,12 +368,15 @@ int run(const Arguments& args) {
   readDrone(bag, bag_path, ns, states, controls);
   if (controls.empty() || states.empty()) fail("no " + ns + "/control or " + ns + "/state messages");
 
-  const std::unique_ptr<DelayedController<kCapacity>> core = makeCore(args);
-  FILE* csv = out_path.empty() ? nullptr : openCommandsCsv(out_path);
   // The recorded task's length (Control.task_duration; one task per bag, as
   // the report assumes) bounds the delay as in the node and the sweep.
   const aurora_msgs::Control& recorded = controls.front();
   const long iterations = taskStepCount(recorded.task_duration, recorded.sample_time);
+  ControllerSettings first;
+  cycleSettings(recorded, o, iterations, recorded.task_duration, first);
+  const std::unique_ptr<DelayedController<kCapacity>> core = makeCore(args, first);
+  FILE* csv = out_path.empty() ? nullptr : openCommandsCsv(out_path);
+  const bool link_missing = args.link_path.empty() && recordedOverALink(controls);
   long identical = 0, cycles = 0, missing = 0;
   double max_diff = 0.0;
   long next_step = states.begin()->first;
@@ -400,7 +419,11 @@ int run(const Arguments& args) {
   const aurora_msgs::Control& last = controls.back();
   std::printf("replay: %s: %ld control cycles, %ld identical, %ld differ, max |dU| = %.6g%s\n",
               ns.c_str(), cycles, identical, cycles - identical, max_diff,
-              o.any() ? " (changed configuration)" : " (recorded configuration)");
+              o.any() ? " (changed configuration)"
+              : link_missing ? " (recorded law and delay, but the ideal link: the bag was flown over an imperfect link; "
+                               "give it with --link FILE)"
+                             : args.link_path.empty() ? " (recorded configuration)"
+                                                      : " (recorded configuration over the link given)");
   std::printf("replay: metrics recorded IAE %.10g ITAE %.10g IASC %.10g; replayed (open loop on "
               "the recorded states) IAE %.10g ITAE %.10g IASC %.10g\n",
               last.iae, last.itae, last.iasc, last_iae, last_itae, last_iasc);

@@ -131,9 +131,11 @@ struct Pair {
   double age[2] = {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
   long step[2] = {0, 0};
   double now = 0.0;
+  // The formation file's starts: drone 2 0.25 m above drone 1 (the lab's scenario).
+  double start[2][3] = {{-1.0, 0.0, 0.75}, {1.0, 0.0, 1.0}};
   Pair() {
     const std::string names[2] = {"ardrone1", "ardrone2"};
-    s.configure(realFlight(), names);
+    s.configure(realFlight(), names, start);
   }
   FormationSupervisor<2>::Decision cycle(double task_time = 0.0, double duration = 40.0) {
     const double* const Xs[2] = {X[0], X[1]};
@@ -141,8 +143,8 @@ struct Pair {
     ++step[0], ++step[1];
     return s.update(now, age, Xs, step, task_time, duration);
   }
-  void hoverAtStart(int d) {  // at the take-off altitude, still
-    X[d][2] = 0.75;
+  void hoverAtStart(int d) {  // at its start point, still
+    for (int i = 0; i < 3; ++i) X[d][i] = start[d][i];
     X[d][8] = 0.0;
   }
   // Both fresh, both taken off and hovering at their start points: flying.
@@ -176,6 +178,14 @@ TEST(FormationSupervisor, DronesTakeOffTogetherAndHoldUntilBothAreUp) {
   EXPECT_TRUE(c.drone[0].run_law && c.drone[0].hold);
   EXPECT_EQ(c.drone[0].hold_point[0], -1.0);
   EXPECT_EQ(c.drone[0].hold_point[2], 0.75);
+  // Drone 2 up at the take-off altitude, level with drone 1 (where the line
+  // is singular): not its start point; it climbs on to the file's 1.0 m.
+  p.X[1][2] = 0.75, p.X[1][8] = 0.0;
+  c = p.cycle();
+  EXPECT_EQ(c.mode, "hold (waiting for ardrone2)");
+  EXPECT_TRUE(c.drone[1].run_law && c.drone[1].hold);
+  EXPECT_EQ(c.drone[1].hold_point[0], 1.0);
+  EXPECT_EQ(c.drone[1].hold_point[2], 1.0);
   p.hoverAtStart(1);
   c = p.cycle();
   EXPECT_TRUE(c.started);

@@ -279,6 +279,11 @@ TEST(FormationFile, MistakesAreRefusedNamingTheKey) {
   says("  period: 0.2", "  periods: 0.2", "'formation.periods' is not a known key");
   says("      delay: 0\n      controller: *lab_gains", "      delay: -2\n      controller: *lab_gains",
        "'formation.drones[1].delay' = -2");
+  says("start: [1.0, 0.0, 1.0]", "start: [1.0, 0.0, 0.75]", "0 m apart in height: the line's variables are singular");
+  says("start: [1.0, 0.0, 1.0]", "start: [1.0, 0.0, -0.1]", "'formation.drones[1].start' = [1, 0, -0.1] is below the ground");
+  says("  period: 0.2", "  period: 0.2\n  period: 0.4", "'formation.period' is given twice, on lines 12 and 13");
+  says("k1: [0.1, 0.1, 1.0, 0.75, 0.5, 0.5]", "k1: [0.1, 0.1, 1.0, 0.75, 0.5, 500]",
+       "'formation.gains.k1' = 500 (entry 6) is refused: accepted gains in [0.001, 100]");
   const std::string one = good.substr(0, good.find("    - namespace: ardrone2"));
   const std::string path = ::testing::TempDir() + "/one_drone.yaml";
   std::ofstream(path) << one;
@@ -375,4 +380,64 @@ TEST(FormationController, IsTheRunnersTickOverDelaysAndLinks) {
   }
   EXPECT_EQ(mismatches, 0);
   EXPECT_GT(hovers, 0) << "drone 2's congested link never made it hover: not a link test";
+}
+
+// Issue 31: drones that start level (or together) make the line singular
+// (eq. F4 divides by z2 - z1): the runner flies NaN; every formation check
+// then fails and the figures show NaN (not "shape error max 0", not a
+// smallest distance of 1e30), and the node's core never hands a
+// non-finite command to a drone: every drone hovers instead.
+TEST(FormationChecks, ADroneFlyingNaNFailsEveryCheck) {
+  for (const double level_z : {0.75, 0.0}) {
+    FormationRun<double, Line> run = labScenario(FormationLaw::kPositionPriority);
+    run.drone[1].start[2] = run.drone[0].start[2] = level_z;
+    if (level_z == 0.0) run.drone[1].start[0] = run.drone[0].start[0];  // at the same point: rho = 0
+    FormationMetrics<double, bool, Line> m;
+    m.reset();
+    const auto criteria = FormationCriteria<double>::study();
+    bool nan_seen = false;
+    auto observe = [&](const FormationObservation<double, Line>& o) {
+      double X[6], Xd[6];
+      for (int d = 0; d < 2; ++d) {
+        for (int i = 0; i < 3; ++i) X[3 * d + i] = o.X_before[d][i];
+      }
+      Line::positions(o.layer.Qd(), Xd);
+      m.add(criteria, X, Xd, double(o.k) * run.drone[0].plant.Ts, run.drone[0].plant.Ts);
+      nan_seen = nan_seen || std::isnan(o.steps[1].U[0]);
+    };
+    runFormation<LawType::kUnderactuated, double, Line, 64>(run, 600, observe);
+    ASSERT_TRUE(nan_seen) << "the level start did not fly NaN: no test of the checks";
+    for (int i = 0; i < 4; ++i) EXPECT_FALSE(m.ok[i]) << "check " << i + 1 << " passed a NaN drone";
+    EXPECT_FALSE(m.feasible());
+    EXPECT_TRUE(std::isnan(m.max_shape)) << m.max_shape;
+    EXPECT_TRUE(std::isnan(m.closest)) << m.closest;
+  }
+}
+
+TEST(FormationController, ANonFiniteCommandMakesEveryDroneHover) {
+  FormationRun<double, Line> run = labScenario(FormationLaw::kPositionPriority);
+  run.drone[1].start[2] = run.drone[0].start[2];  // level: the layer commands NaN
+  FormationController<64> core(run, LawType::kUnderactuated);
+  for (int d = 0; d < 2; ++d) {
+    StateSample s;
+    s.step = 0;
+    for (int i = 0; i < 12; ++i) s.X[i] = 0.0;
+    for (int i = 0; i < 3; ++i) s.X[aurora_sim::kX + i] = run.drone[d].start[i];
+    ASSERT_TRUE(core.push(d, s));
+  }
+  const auto t = core.tick(0);
+  EXPECT_EQ(t.not_finite, 1) << "drone 2's command was not reported as non-finite";
+  for (int d = 0; d < 2; ++d) {
+    for (int i = 0; i < 4; ++i) EXPECT_EQ(t.out[d].U[i], 0.0) << "drone " << d + 1 << " does not hover";
+  }
+  // The shipped start (drone 2 0.25 m above) flies finite commands.
+  FormationController<64> fine(labScenario(FormationLaw::kPositionPriority), LawType::kUnderactuated);
+  for (int d = 0; d < 2; ++d) {
+    StateSample s;
+    s.step = 0;
+    for (int i = 0; i < 12; ++i) s.X[i] = 0.0;
+    for (int i = 0; i < 3; ++i) s.X[aurora_sim::kX + i] = labScenario(FormationLaw::kPositionPriority).drone[d].start[i];
+    ASSERT_TRUE(fine.push(d, s));
+  }
+  EXPECT_EQ(fine.tick(0).not_finite, -1);
 }

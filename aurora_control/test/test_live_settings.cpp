@@ -56,6 +56,9 @@ TEST(LiveSettings, AGainOfTheOtherLawIsRefusedUnlessUnchanged) {
   ControllerSettings s = pd();
   EXPECT_NE(check(s, "k1_x", 0.7).find("a gain of the underactuated law, but this node flies the pd_saturated"),
             std::string::npos);
+  // Issue 31: the list of what is accepted named the gains and the delay, not the link's settings.
+  EXPECT_NE(check(s, "k1_x", 0.7).find("(accepted: kp, kd, delay_samples, the link's uplink_jitter, uplink_loss"),
+            std::string::npos) << check(s, "k1_x", 0.7);
   // dynparam load of a dump sends every key: the unchanged ones pass.
   EXPECT_EQ(check(s, "k1_x", s.underactuated.k1[kAxisX]), "");
   applyLiveChange(s, LiveChange{"k1_x", s.underactuated.k1[kAxisX]});

@@ -1,5 +1,7 @@
 #include "ardrone_sim_node.h"
 
+#include "aurora_sim/ros/node_main.h"
+
 #include <geometry_msgs/TransformStamped.h>
 #include <nav_msgs/Odometry.h>
 #include <rosgraph_msgs/Clock.h>
@@ -306,7 +308,7 @@ void ArdroneSimNode::stepAndPublish(const ros::Time& now, bool command_fresh) {
     cmd_sub_.shutdown();
     // A short grace period lets subscribers (rosbag) receive the last state.
     shutdown_timer_ = nh_.createWallTimer(
-        ros::WallDuration(0.5), [](const ros::WallTimerEvent&) { ros::requestShutdown(); }, true);
+        ros::WallDuration(0.5), [](const ros::WallTimerEvent&) { endAsPlanned(); }, true);
   }
 }
 

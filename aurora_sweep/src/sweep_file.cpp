@@ -155,9 +155,9 @@ void readSweepTask(const Reader& r, const YAML::Node& t, const std::string& swee
     const std::string path = resolve(r.text(t, "sweep.task"), sweep_dir, config_dir);
     YAML::Node file;
     try {
-      file = YAML::LoadFile(path);
-    } catch (const YAML::Exception& e) {
-      r.fail("sweep.task", "names '" + path + "', which cannot be read: " + e.what());
+      file = aurora_sim::loadYamlFile("task file", path);
+    } catch (const aurora_sim::ConfigError& e) {
+      r.fail("sweep.task", "names a file that is refused: " + std::string(e.what()));
     }
     const aurora_control::YamlReader tr("task file '" + path + "': ");
     task = aurora_control::readTask(tr, file["task"], "task");
@@ -416,7 +416,11 @@ void readCombinations(const Reader& r, const YAML::Node& s, const std::string& s
 void readSweepLink(const Reader& r, const YAML::Node& node, const std::string& sweep_dir,
                    const std::string& config_dir, SweepSpec& spec) {
   spec.link_file = resolve(r.text(node, "sweep.link"), sweep_dir, config_dir);
-  spec.setLink(aurora_control::readLinkFile(spec.link_file));
+  try {
+    spec.setLink(aurora_control::readLinkFile(spec.link_file));
+  } catch (const aurora_sim::ConfigError& e) {
+    r.fail("sweep.link", "names a link file that is refused: " + std::string(e.what()));
+  }
 }
 
 // sweep.repeats: runs of each combination, each with its own link seed.
@@ -467,14 +471,7 @@ void checkSweepLink(const Reader& r, SweepSpec& spec) {
 
 SweepSpec parseSweepFile(const std::string& path, const std::string& config_dir) {
   Reader r(path);
-  YAML::Node root;
-  try {
-    root = YAML::LoadFile(path);
-  } catch (const YAML::BadFile&) {
-    throw ConfigError("sweep file '" + path + "' cannot be read (does it exist?)");
-  } catch (const YAML::Exception& e) {
-    throw ConfigError("sweep file '" + path + "' is not valid YAML: " + e.what());
-  }
+  const YAML::Node root = aurora_sim::loadYamlFile("sweep file", path);
   r.onlyKeys(root, "", {"sweep"});
   const YAML::Node s = root["sweep"];
   if (!s) r.fail("sweep", "is missing: the file's top level must be 'sweep:'");

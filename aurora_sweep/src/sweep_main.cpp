@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <csignal>
 #include <chrono>
 #include <memory>
 #include <condition_variable>
@@ -262,6 +263,38 @@ ChunkWork overRanks(const nlohmann::json& ranks, ChunkWork work) {
   return work;
 }
 
+// Ctrl-C (SIGINT) or a kill (SIGTERM): say which chunks stay and the
+// command that resumes, then end as the signal would (its status). The
+// text is made before the run: a handler may only write(2).
+char g_interrupt_text[4096];
+size_t g_interrupt_length = 0;
+
+void onInterrupt(int sig) {
+  ssize_t ignored = write(STDERR_FILENO, g_interrupt_text, g_interrupt_length);
+  (void)ignored;
+  signal(sig, SIG_DFL);
+  raise(sig);
+}
+
+void sayWhatStaysOnInterrupt(const Options& opt, int argc, char** argv) {
+  std::string command;
+  for (int i = 0; i < argc; ++i) command += (i ? " " : "") + std::string(argv[i]);
+  const std::string text = "\nsweep: interrupted: every finished chunk stays in " + opt.out +
+                           "/progress; the same command computes only the missing ones:\n  " + command + "\n";
+  g_interrupt_length = std::min(text.size(), sizeof g_interrupt_text);
+  std::memcpy(g_interrupt_text, text.data(), g_interrupt_length);
+  signal(SIGINT, onInterrupt);
+  signal(SIGTERM, onInterrupt);
+}
+
+// "1,344 combinations", or with repeats "21,504 runs (1,344 combinations x
+// 16 repeats)", as the docs count them.
+std::string runsText(const SweepSpec& spec) {
+  if (spec.repeats <= 1) return counted(spec.size(), "combination", "combinations");
+  return counted(spec.size(), "run", "runs") + " (" + counted(spec.size() / spec.repeats, "combination", "combinations") +
+         " x " + std::to_string(spec.repeats) + " repeats)";
+}
+
 int runSweep(int argc, char** argv, const Options& opt, MpiRanks* mpi) {
   const bool lead = !mpi || mpi->rank() == 0;
   // Everything that can refuse the run is checked before anything is
@@ -279,7 +312,7 @@ int runSweep(int argc, char** argv, const Options& opt, MpiRanks* mpi) {
   Progress progress{store->doneCombinations()};
   if (lead) {
     std::fprintf(stderr, "sweep: %s: %s in %s, backend %s, %s precision%s%s%s\n", spec.name.c_str(),
-                 counted(spec.size(), "combination", "combinations").c_str(),
+                 runsText(spec).c_str(),
                  counted(plan.count(), "chunk", "chunks").c_str(), info.backend.c_str(),
                  precisionName(spec.precision), spec.early_stop ? ", early stop" : "",
                  mpi ? (", " + std::to_string(mpi->size()) + " MPI ranks").c_str() : "",
@@ -330,6 +363,7 @@ int main(int argc, char** argv) {
     }
   }
   const Options opt = parseOptions(argc, argv);
+  sayWhatStaysOnInterrupt(opt, argc, argv);
   if (mpi && opt.rviz) {
     std::fprintf(stderr, "sweep: --rviz is for a single process: run without mpirun\n");
     return 2;

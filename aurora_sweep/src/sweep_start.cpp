@@ -1,5 +1,7 @@
 #include "sweep_start.h"
 
+#include <fcntl.h>
+#include <sys/file.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -123,9 +125,37 @@ StartCheck checkPlan(const Options& opt, const Start& s, bool lead) {
   }
   if (lead && !opt.quiet) std::fprintf(stderr, "sweep: plan: %s\n", planText(plan).c_str());
   if (plan.fits() || opt.ignore_free_space) return {};
+  // The estimate counts every row in either format (--rows feasible's count is known only after the run).
   return {2, "refused: " + plan.volume + " cannot hold this sweep (" + planText(plan) +
-                 "): choose another --out, fewer combinations, --rows feasible or --output hdf5, or give "
-                 "--ignore-free-space"};
+                 "): choose an --out on a volume with more room, sweep fewer combinations, or give "
+                 "--ignore-free-space (--rows feasible may write fewer rows, as many as turn out feasible)"};
+}
+
+// One sweep at a time in a folder: an exclusive flock on --out/.sweep.lock,
+// held until this process ends (the kernel releases it on any exit, a
+// crash and Ctrl-C included). The holder writes its pid and host there, so
+// a second sweep is refused at once naming them (two sweeps computed the
+// same chunks and the second failed after removing progress/).
+StartCheck lockOutput(const std::string& dir) {
+  const std::string path = dir + "/.sweep.lock";
+  const int fd = open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+  if (fd < 0) return {2, "cannot open '" + path + "': " + std::strerror(errno)};
+  if (flock(fd, LOCK_EX | LOCK_NB) != 0) {
+    char holder[256] = {};
+    const ssize_t n = pread(fd, holder, sizeof holder - 1, 0);
+    std::string who = n > 0 ? std::string(holder, static_cast<size_t>(n)) : std::string("another process");
+    while (!who.empty() && (who.back() == '\n' || who.back() == ' ')) who.pop_back();
+    close(fd);
+    return {2, "output folder '" + dir + "' is in use by another sweep (" + who +
+                   "): wait for it to end (the same command then resumes or reuses its chunks), or choose another --out"};
+  }
+  char host[128] = {};
+  gethostname(host, sizeof host - 1);
+  const std::string me = "pid " + std::to_string(getpid()) + " on host " + host + "\n";
+  if (ftruncate(fd, 0) != 0 || pwrite(fd, me.data(), me.size(), 0) != static_cast<ssize_t>(me.size())) {
+    std::fprintf(stderr, "sweep: warning: cannot write '%s': %s\n", path.c_str(), std::strerror(errno));
+  }
+  return {};  // fd stays open: the lock lives as long as this process
 }
 
 // A test switch: the rank it names fails its start check, as a rank whose
@@ -171,9 +201,14 @@ StartCheck loadAndChooseBackend(const Options& opt, const MpiRanks* mpi, Start& 
 StartCheck prepareOutput(const Options& opt, bool lead, Start& s) {
   const StartCheck dir = makeWritableDir(opt.out, s.created);
   if (dir.status) return dir;
+  if (lead) {
+    const StartCheck lock = lockOutput(opt.out);
+    if (lock.status) return lock;
+  }
   const StartCheck plan = checkPlan(opt, s, lead);
-  if (plan.status && lead) {
-    for (auto d = s.created.rbegin(); d != s.created.rend(); ++d) rmdir(d->c_str());  // nothing left behind
+  if (plan.status && lead && !s.created.empty()) {  // nothing left behind
+    std::remove((opt.out + "/.sweep.lock").c_str());
+    for (auto d = s.created.rbegin(); d != s.created.rend(); ++d) rmdir(d->c_str());
   }
   return plan;
 }

@@ -217,6 +217,12 @@ TEST(SweepFileRefusal, OtherMistakesAreNamed) {
   EXPECT_NE(refusal(std::string("sweep:\n  vehicle: nowhere.yaml\n") + kGoodParams).find("nowhere.yaml"),
             std::string::npos);
   EXPECT_NE(refusal("not_sweep: 1\n").find("'not_sweep' is not a known key"), std::string::npos);
+  // Issue 31: a missing link file did not name its key; a key given twice was read as its first value.
+  const std::string missing_link = refusal(std::string("sweep:\n  link: links/nowhere.yaml\n") + kGoodParams);
+  EXPECT_NE(missing_link.find("'sweep.link' names a link file that is refused: link file"), std::string::npos)
+      << missing_link;
+  const std::string twice = refusal(std::string("sweep:\n  precision: float\n  precision: double\n") + kGoodParams);
+  EXPECT_NE(twice.find("'sweep.precision' is given twice, on lines 2 and 3"), std::string::npos) << twice;
 }
 
 #ifdef AURORA_SWEEP_BIN

@@ -27,3 +27,9 @@ def record_until(steps, bag_dir, prefix, timeout=120.0, state="state", recorder=
             return max(fresh, key=os.path.getmtime)
         time.sleep(0.2)
     raise AssertionError("no closed bag %s_*.bag in %s" % (prefix, bag_dir))
+
+
+def run_tool(cmd, timeout=240):
+    """A tool's exit status and its output (stdout and stderr together)."""
+    p = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, timeout=timeout)
+    return p.returncode, p.stdout.decode(errors="replace")

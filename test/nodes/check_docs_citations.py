@@ -55,6 +55,21 @@ def sources(root):
 
 
 class DocsCitationsTest(unittest.TestCase):
+    def test_the_readme_lap_2_table_is_what_flight_prints(self):
+        """Issue 31: all 12 cells differed from flight's output."""
+        root = repo_root()
+        text = open(os.path.join(root, "README.md")).read()
+        rows = re.findall(r"^\| (pd_saturated|underactuated) \| (circle|lemniscate) \| (.+) \|$", text, re.M)
+        self.assertEqual(len(rows), 4, "the README's lap-2 table has 4 rows")
+        for law, task, cells in rows:
+            for delay, cell in zip((0, 5, 10), cells.split(" | ")):
+                out = subprocess.run(["rosrun", "aurora_control", "flight", "--controller",
+                                      os.path.join(root, "config", "controllers", law + ".yaml"), "--task",
+                                      os.path.join(root, "config", "tasks", task + ".yaml"), "--delay", str(delay)],
+                                     stdout=subprocess.PIPE, universal_newlines=True, check=True).stdout
+                rms, worst = re.search(r"lap 2: RMS tracking error ([\d.]+) m, max ([\d.]+) m", out).groups()
+                self.assertEqual(cell, "%.3f / %.3f m" % (float(rms), float(worst)), (law, task, delay))
+
     def test_every_cited_page_and_section_exists(self):
         root = repo_root()
         if not os.path.isdir(os.path.join(root, "docs")):

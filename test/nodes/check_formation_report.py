@@ -43,6 +43,23 @@ def flight_errors(formation_file, delays, first, last, ts):
 
 
 class FormationReportTest(unittest.TestCase):
+    def test_the_report_counts_the_formations_ticks(self):
+        """A bag runs past the formation's end (the sims go on until
+        stop_after): the report measures ticks 0 .. ticks - 1 only, as flight
+        --formation does (2,700 ticks of a 90 s formation, not 2,701)."""
+        from types import SimpleNamespace as NS
+        from aurora import formation_report
+        point = lambda x, y, z: NS(position=NS(x=x, y=y, z=z))  # noqa: E731
+        ticks, states = {}, {"a": {}, "b": {}}
+        for k in range(8):
+            ticks[k] = NS(step=k, ticks=5, Qd=[0.0, 0.0, 1.0, 1.5, 0.5, 0.0], reference_position=[0.0] * 6)
+            states["a"][k] = point(0.1 * k, 0.0, 1.0)
+            states["b"][k] = point(0.1 * k + 0.5, 0.0, 2.0)
+        s = formation_report.series_of(["a", "b"], ticks, states, 1.0 / 30)
+        self.assertEqual(s["k"], [0, 1, 2, 3, 4])
+        m = formation_report.metrics_of(["a", "b"], s, 1.0 / 30)
+        self.assertEqual((m["ticks"], m["last_tick"]), (5, 4))
+
     def test_report_of_a_formation_bag(self):
         bag = record_until(900, rospy.get_param("~bag_dir"), rospy.get_param("~prefix"),
                            state="/ardrone2/state", recorder="/recorder")
@@ -50,6 +67,8 @@ class FormationReportTest(unittest.TestCase):
         p = subprocess.run(["rosrun", "aurora_control", "report", bag, "--out", out, "--no-pdf"],
                            stdout=subprocess.PIPE, stderr=subprocess.STDOUT, universal_newlines=True)
         self.assertEqual(p.returncode, 0, p.stdout)
+        # Issue 31: it said nothing while it rendered the video (80 s for a whole flight).
+        self.assertIn("report: formation: rendering the video: frame 1 of", p.stdout)
         m = json.load(open(os.path.join(out, "metrics.json")))["formation"]
         last = min(m["last_tick"], 2699)  # flight runs ticks 0 .. 2699
         self.assertEqual(m["first_tick"], 0)

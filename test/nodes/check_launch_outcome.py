@@ -3,6 +3,7 @@
 import os
 import subprocess
 import sys
+import tempfile
 import time
 import unittest
 
@@ -17,10 +18,10 @@ sys.path.insert(0, os.path.dirname(os.path.realpath(__file__)))
 from ros_links import free_port  # noqa: E402
 
 
-def aurora_launch(*launch_args, port=None, mode="lockstep"):
+def aurora_launch(*launch_args, port=None, mode="lockstep", launch="sim.launch"):
     # Its own master on a free port: the rostest's master is left alone.
     cmd = ["rosrun", "aurora_bringup", "aurora_launch", "-p", str(port or free_port()), "aurora_bringup",
-           "sim.launch", "mode:=" + mode, "sim_output:=log"] + list(launch_args)
+           launch, "mode:=" + mode, "sim_output:=log"] + list(launch_args)
     done = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, timeout=90,
                           env=dict(os.environ), universal_newlines=True)
     return done.returncode, done.stdout
@@ -69,6 +70,69 @@ class LaunchOutcomeTest(unittest.TestCase):
         finally:
             master.terminate()
             master.wait(timeout=30)
+
+    def test_a_launch_displaced_by_a_second_one_is_not_complete(self):
+        """Issue 31: the first launch's sim was replaced by the second's (same
+        node names on one master) and it said "finished normally", rc 0."""
+        port = free_port()
+        env = dict(os.environ, ROS_MASTER_URI="http://localhost:%d" % port)
+        cmd = ["rosrun", "aurora_bringup", "aurora_launch", "-p", str(port), "aurora_bringup", "sim.launch",
+               "mode:=realtime", "sim_output:=screen", "stop_after:=60"]
+        first = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, env=env,
+                                 universal_newlines=True)
+        try:
+            master = rosgraph.Master("/check", master_uri=env["ROS_MASTER_URI"])
+            deadline = time.time() + 60
+            while time.time() < deadline:
+                try:
+                    master.lookupNode("/ardrone1/ardrone_sim")
+                    break
+                except Exception:
+                    time.sleep(0.2)
+            rc, second = aurora_launch("stop_after:=2", port=port, mode="realtime")
+            out = first.communicate(timeout=60)[0]
+        finally:
+            if first.poll() is None:
+                first.kill()
+        self.assertEqual(rc, 0, second)  # the second run is complete
+        self.assertNotEqual(first.returncode, 0, out)
+        self.assertNotIn("finished normally", out)
+        self.assertIn("shut down from outside before its run ended", out)
+
+    def test_a_delay_beside_a_link_replaces_its_uplink_delay(self):
+        """Issue 31: link:=wifi_congested delay:=3 refused to start; flight
+        took the delay. One rule: the delay given replaces the link's."""
+        rc, out = aurora_launch("stop_after:=1", "link:=wifi_congested", "delay:=3")
+        self.assertEqual(rc, 0, out)
+        self.assertIn("delay 3 samples (given; replaces the link's uplink delay 2)", out)
+        self.assertIn("link wifi_congested (uplink delay 2", out)
+        rc, out = aurora_launch("stop_after:=1", "link:=wifi_congested")
+        self.assertEqual(rc, 0, out)
+        self.assertIn("delay 2 samples (the link's uplink delay)", out)
+
+    def test_file_arguments_take_a_path_and_numbers_are_named(self):
+        config = subprocess.run(["rospack", "find", "aurora_config"], stdout=subprocess.PIPE,
+                                universal_newlines=True).stdout.strip()
+        rc, out = aurora_launch("stop_after:=1", "link:=" + config + "/links/wifi_lab.yaml")
+        self.assertEqual(rc, 0, out)
+        self.assertIn("delay 1 samples (the link's uplink delay)", out)
+        for launch, arg in (("sim.launch", "delay:=abc"), ("sim.launch", "delay:=2.5"),
+                            ("formation.launch", "delay_1:=abc"), ("formation.launch", "delay_2:=2.5")):
+            rc, out = aurora_launch("stop_after:=1", arg, launch=launch)
+            self.assertEqual(rc, 2, out)
+            self.assertIn("%s is not whole samples" % arg, out)
+            self.assertNotIn("invalid literal", out)
+
+    def test_a_key_given_twice_is_refused(self):
+        """Issue 31: roslaunch kept the last of a duplicated key, flight the first."""
+        with tempfile.NamedTemporaryFile("w", suffix=".yaml", delete=False) as f:
+            f.write("kp: 0.4\nkd: 0.8\nkp: 0.6\n")
+        try:
+            rc, out = aurora_launch("stop_after:=1", "overrides:=" + f.name)
+        finally:
+            os.remove(f.name)
+        self.assertEqual(rc, 1, out)
+        self.assertIn("'kp' is given twice, on lines 1 and 3", out)
 
     def test_a_bad_boolean_argument_is_one_line(self):
         rc, out = aurora_launch("stop_after:=3", "record:=maybe")

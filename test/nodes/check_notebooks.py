@@ -1,8 +1,8 @@
 #!/usr/bin/python3
-"""Every notebook of notebooks/ runs top to bottom with `jupyter nbconvert
---execute` (notebooks/nbconvert_config.py) without an error, in under a
-minute each on these 2 cores, and shows each of its figures (an image
-output for every plt.show())."""
+"""Every notebook of notebooks/ runs top to bottom with plain `jupyter
+nbconvert --execute` without an error or a traceback in its output, and shows each of
+its figures (an image output for every plt.show()). Its time is printed, not
+asserted (a busy machine is slow; bench/ measures speed)."""
 import glob
 import os
 import subprocess
@@ -15,14 +15,13 @@ import nbformat
 import rostest
 
 NOTEBOOKS = os.path.join(os.path.dirname(os.path.realpath(__file__)), "..", "..", "notebooks")
-MINUTE = 60.0
 
 
 def execute(path, out_dir):
     """Runs nbconvert on `path`; returns (seconds, the executed notebook, its log)."""
     start = time.time()
-    p = subprocess.run(["jupyter", "nbconvert", "--config", os.path.join(NOTEBOOKS, "nbconvert_config.py"),
-                        "--to", "notebook", "--execute", "--output-dir", out_dir, path],
+    # Plain nbconvert, as a user runs it: no configuration file (issue 31: notebook 4's sliders needed one).
+    p = subprocess.run(["jupyter", "nbconvert", "--to", "notebook", "--execute", "--output-dir", out_dir, path],
                        stdout=subprocess.PIPE, stderr=subprocess.STDOUT, universal_newlines=True)
     seconds = time.time() - start
     if p.returncode != 0:
@@ -43,11 +42,13 @@ class NotebooksTest(unittest.TestCase):
                 code = [c for c in nb.cells if c.cell_type == "code"]
                 errors = [o for c in code for o in c.get("outputs", []) if o.get("output_type") == "error"]
                 self.assertEqual(errors, [], name)
+                # A traceback printed by a cell (a progress bar's widget failing in a thread) is an error too.
+                printed = [o.get("text", "") for c in code for o in c.get("outputs", []) if o.get("output_type") == "stream"]
+                self.assertEqual([t for t in printed if "Traceback" in t], [], name)
                 shown = sum(c.source.count("plt.show()") for c in code)
                 images = sum(1 for c in code for o in c.get("outputs", []) if "image/png" in o.get("data", {}))
                 self.assertGreater(shown, 0, name)
                 self.assertGreaterEqual(images, shown, "%s: %d figures shown, %d images" % (name, shown, images))
-                self.assertLess(seconds, MINUTE, "%s took %.1f s" % (name, seconds))
 
 
 if __name__ == "__main__":

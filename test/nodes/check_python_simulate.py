@@ -85,8 +85,30 @@ class SimulateTest(unittest.TestCase):
             (lambda: aurora.simulate("/no/such/file.yaml", "mission4"), "does not exist"),
             (lambda: aurora.simulate(3, "mission4"), "controller: expected a name, a path or a dict"),
             (lambda: aurora.simulate("pd_saturated", "mission4", link={"link": {"uplink": {"loss": 2}}}), "loss"),
+            # Issue 31: a pybind11 TypeError, a truthy "no", an empty vehicle flown as the AR.Drone.
+            (lambda: aurora.simulate("pd_saturated", "mission4", delay=2 ** 64), "delay = 18446744073709551616 is refused"),
+            (lambda: aurora.simulate("pd_saturated", "mission4", delay=np.array([3])), "delay: expected whole samples"),
+            (lambda: aurora.simulate("pd_saturated", "mission4", clamp="no"), "clamp: expected True or False, got 'no'"),
+            (lambda: aurora.simulate("pd_saturated", "mission4", vehicle={}), "vehicle"),
+            (lambda: aurora.simulate({"controller": {"name": "pd_saturated", "kp": object()}}, "mission4"),
+             "controller.kp: <object"),
         ]
         expect_refusals(self, cases)
+
+    def test_numpy_values_are_their_numbers(self):
+        """Issue 31: numpy values in dicts raised yaml's RepresenterError,
+        numpy integers as a delay were refused."""
+        cfg = aurora.simulation.config_dir()
+        with open(cfg + "/controllers/pd_saturated.yaml") as fh:
+            controller = yaml.safe_load(fh)
+        with open(cfg + "/tasks/lemniscate.yaml") as fh:
+            task = yaml.safe_load(fh)
+        top = next(iter(controller))
+        numpy_controller = {top: dict(controller[top], kp=np.float64(controller[top]["kp"]))}
+        numpy_task = {"task": {k: (np.array(v) if isinstance(v, list) else v) for k, v in task["task"].items()}}
+        a = aurora.simulate(numpy_controller, numpy_task, delay=np.int64(3), clamp=np.bool_(True))
+        b = aurora.simulate(controller, task, delay=3)
+        self.assertTrue(np.array_equal(a.states, b.states))
 
 
 class SimulateFormationTest(unittest.TestCase):
@@ -105,6 +127,8 @@ class SimulateFormationTest(unittest.TestCase):
             self.assertTrue(np.array_equal(g.Q[:, i], column(rows, "Q_" + c)), c)
             self.assertTrue(np.array_equal(g.Qd[:, i], column(rows, "Qd_" + c)), c)
         self.assertEqual(g.metrics["delays"], (3, 9))
+        h = aurora.simulate_formation("line_lemniscate_ik", delays=np.array([3, 9]))
+        self.assertTrue(np.array_equal(h.states, g.states))
         self.assertTrue(g.metrics["feasible"])
         self.assertEqual(g.drones, ("ardrone1", "ardrone2"))
 
@@ -126,6 +150,10 @@ class SimulateFormationTest(unittest.TestCase):
             (lambda: aurora.simulate_formation("line_lemniscate", delays=(3, 5000)), "drone 2"),
             (lambda: aurora.simulate_formation("line_lemniscate", delays="39"), "delays: expected"),
             (lambda: aurora.simulate_formation("line_triangle"), "formation 'line_triangle' is not a shipped one"),
+            # Issue 31: a dict's keys were flown as the delays (0, 1), an empty vehicle as the AR.Drone.
+            (lambda: aurora.simulate_formation("line_lemniscate", delays={0: 3, 1: 9}), "delays: expected a list"),
+            (lambda: aurora.simulate_formation("line_lemniscate", delays={3, 9}), "delays: expected a list"),
+            (lambda: aurora.simulate_formation("line_lemniscate", vehicle={}), "vehicle"),
         ]
         expect_refusals(self, cases)
 

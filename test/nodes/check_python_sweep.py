@@ -69,6 +69,13 @@ class PythonSweepTest(unittest.TestCase):
                 self.assertTrue(np.array_equal(a, b.astype(np.float32)), c)
             else:
                 self.assertTrue(np.array_equal(a, b), c)
+        # Issue 31: numpy values (an axis from np.linspace, a numpy count) raised yaml's RepresenterError.
+        numpy_cut = thesis_cut()
+        kp = numpy_cut["sweep"]["parameters"]["kp"]
+        numpy_cut["sweep"]["parameters"]["kp"] = {"values": list(np.linspace(kp["from"], kp["to"], kp["count"]))}
+        numpy_cut["sweep"]["parameters"]["kd"]["count"] = np.int64(8)
+        from_numpy, _ = aurora.sweep(numpy_cut, backend="cpu", output="csv", progress=False)
+        self.assertTrue(np.array_equal(from_numpy.feasible.to_numpy(), cli.feasible.to_numpy()))
         arr, _ = aurora.sweep(thesis_cut(), backend="scalar", as_frame=False, progress=False)
         self.assertEqual(arr.dtype.names, tuple(cli.columns))
         self.assertTrue(np.array_equal(arr["feasible"], cli.feasible.to_numpy()))
@@ -102,6 +109,25 @@ class PythonSweepTest(unittest.TestCase):
             self.assertEqual(len(results), 4096)
             self.assertTrue(np.array_equal(results["index"].to_numpy(), np.arange(4096)))
 
+    def test_share_contours_draw_only_the_levels_crossed(self):
+        """Issue 31: a grid all feasible printed matplotlib's "No contour
+        levels were found" warning with its source line."""
+        import warnings
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+        from aurora.plot_sweep import share_contours
+        x, y = np.arange(4.0), np.arange(3.0)
+        for grid, lines in ((np.ones((3, 4)), []), (np.full((3, 4), np.nan), []),
+                            (np.array([[0.0, 0.6, 1.0, 1.0]] * 3), [0.5, 0.9]), (np.array([[0.0, 0.6, 0.7, 0.8]] * 3), [0.5])):
+            fig, ax = plt.subplots()
+            with warnings.catch_warnings(record=True) as said:
+                warnings.simplefilter("always")
+                drawn = share_contours(ax, x, y, grid)
+            plt.close(fig)
+            self.assertEqual([str(w.message) for w in said], [], grid)
+            self.assertEqual(drawn, lines, grid)
+
     def test_bad_input_raises_value_error_with_the_programs_message(self):
         bad_key = copy.deepcopy(thesis_cut())
         bad_key["sweep"]["parameters"]["kq"] = 1
@@ -117,6 +143,9 @@ class PythonSweepTest(unittest.TestCase):
             (lambda: aurora.sweep(3), "config: expected a shipped sweep's name"),
             (lambda: aurora.sweep(out_of_range), "'sweep.parameters.kp.to' = 50 is outside the accepted range"),
             (lambda: aurora.read_results("/no/such/folder"), "holds no summary.json"),
+            # Issue 31: a RuntimeError, a TypeError.
+            (lambda: aurora.sweep(thesis_cut(), backend="cuda"), "--backend cuda"),
+            (lambda: aurora.read_bag(None), "path: expected a bag file's path, got None"),
         ]
         before = set(os.listdir(tempfile.gettempdir()))
         expect_refusals(self, cases)

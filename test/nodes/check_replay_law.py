@@ -4,7 +4,6 @@ command; the report names the law and measures tracking per lap."""
 import json
 import os
 import re
-import subprocess
 import sys
 import tempfile
 import unittest
@@ -15,12 +14,7 @@ import rostest
 # The shared helpers sit beside this script (catkin's devel-space relay runs
 # it with __file__ set to this path; an install puts them beside it too).
 sys.path.insert(0, os.path.dirname(os.path.realpath(__file__)))
-from bag_helpers import record_until  # noqa: E402
-
-
-def run(cmd):
-    p = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, timeout=240)
-    return p.returncode, p.stdout.decode(errors="replace")
+from bag_helpers import record_until, run_tool as run  # noqa: E402
 
 
 class ReplayLawTest(unittest.TestCase):

@@ -2,10 +2,34 @@
 """replay and flight refuse what the node refuses, with the same limits
 (limits.h): gains outside [0, 10], two delays, two clamp choices, a delay
 beyond 2047 or not shorter than the task."""
+import os
+import signal
 import subprocess
+import tempfile
+import time
 import unittest
 
 import rostest
+
+
+def config_dir():
+    return subprocess.run(["rospack", "find", "aurora_config"], stdout=subprocess.PIPE).stdout.decode().strip()
+
+
+def flight(*args):
+    p = subprocess.run(["rosrun", "aurora_control", "flight"] + list(args), stdout=subprocess.PIPE,
+                       stderr=subprocess.STDOUT, timeout=120)
+    return p.returncode, p.stdout.decode(errors="replace")
+
+
+def formation_file(folder, edit):
+    """config/formations/line_lemniscate.yaml with `edit` (old, new) applied."""
+    text = open(os.path.join(config_dir(), "formations", "line_lemniscate.yaml")).read()
+    assert edit[0] in text, edit
+    path = os.path.join(folder, "formation.yaml")
+    with open(path, "w") as f:
+        f.write(text.replace(edit[0], edit[1]))
+    return path
 
 
 def replay(*args):
@@ -69,5 +93,115 @@ class ToolArgumentsTest(unittest.TestCase):
             self.assertNotIn("unrecognised option", out)
 
 
+class FormationAndLinkArgumentsTest(unittest.TestCase):
+    """Issue 31: what flight, the formation files and the sweep program
+    refused or did silently wrong."""
+
+    def refused(self, args, *texts):
+        rc, out = flight(*args)
+        self.assertEqual(rc, 2, out)
+        for t in texts:
+            self.assertIn(t, out)
+
+    def test_a_level_or_buried_formation_start_is_refused(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            for edit, said in ((("start: [1.0, 0.0, 1.0]", "start: [1.0, 0.0, 0.75]"), "0 m apart in height"),
+                               (("start: [1.0, 0.0, 1.0]", "start: [-1.0, 0.0, 0.75]"), "0 m apart and 0 m apart"),
+                               (("start: [1.0, 0.0, 1.0]", "start: [1.0, 0.0, -0.2]"), "is below the ground")):
+                self.refused(["--formation", formation_file(tmp, edit)], said)
+
+    def test_a_formation_too_short_to_judge_or_with_a_delay_beyond_it_is_refused(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            for duration in ("0.01", "10"):
+                self.refused(["--formation", formation_file(tmp, ("duration: 90", "duration: " + duration))],
+                             "formation.reference.duration = %s s" % duration, "accepted durations > 10 s")
+            # 12 s: 360 ticks; a drone's delay of 400 samples would never reach its law.
+            text = open(formation_file(tmp, ("duration: 90", "duration: 12"))).read()
+            last = text.rfind("delay: 0")
+            path = os.path.join(tmp, "late.yaml")
+            with open(path, "w") as f:
+                f.write(text[:last] + "delay: 400" + text[last + len("delay: 0"):])
+            self.refused(["--formation", path], "formation.drones[1].delay = 400 samples is not shorter than the run's 360")
+            self.refused(["--formation", formation_file(tmp, ("duration: 90", "duration: 12")), "--delay", "3", "400"],
+                         "--delay (drone 2) = 400 samples is not shorter than the run's 360")
+
+    def test_flight_options_a_formation_ignored_are_refused(self):
+        f = os.path.join(config_dir(), "formations", "line_lemniscate.yaml")
+        self.refused(["--formation", f, "--link", os.path.join(config_dir(), "links", "wifi_lab.yaml")],
+                     "--link is refused with --formation")
+        self.refused(["--formation", f, "--link", "/missing.yaml"], "--link is refused with --formation")
+        self.refused(["--formation", f, "--no-clamp"], "--no-clamp is refused with --formation")
+
+    def test_a_delay_beside_a_link_replaces_its_uplink_delay(self):
+        link = os.path.join(config_dir(), "links", "wifi_lab.yaml")  # uplink delay 1
+        for args, said in ((["--delay", "3"], "delay 3 samples (given; replaces the link's uplink delay 1)"),
+                           (["--delay", "0"], "delay 0 samples (given; replaces the link's uplink delay 1)"),
+                           ([], "delay 1 samples (the link's uplink delay)")):
+            rc, out = flight("--link", link, *args)
+            self.assertEqual(rc, 0, out)
+            self.assertIn(said, out)
+            self.assertIn("link '%s' (uplink delay 1" % link, out)
+
+    def test_a_jitter_beyond_the_run_is_refused(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            link = os.path.join(tmp, "late.yaml")
+            with open(link, "w") as f:
+                f.write("link:\n  uplink: {delay: 0, jitter: {kind: uniform, max: 1900}}\n")
+            self.refused(["--link", link], "--link %s: its latest packet" % link,
+                         "1900 samples is not shorter than the run's 1801 steps")
+
+    def test_link_paths_that_are_no_file_are_named(self):
+        self.refused(["--link", config_dir()], "link file '%s' is a folder" % config_dir())
+        self.refused(["--link", ""], "--link '' is refused")
+
+    def test_a_key_given_twice_is_refused_naming_both_lines(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            path = os.path.join(tmp, "pd.yaml")
+            with open(path, "w") as f:
+                f.write("controller:\n  name: pd_saturated\n  kp: 0.5\n  kd: 0.85\n  kp: 0.7\n")
+            self.refused(["--controller", path], "'controller.kp' is given twice, on lines 3 and 5")
+
+    def test_two_sweeps_on_one_folder_and_an_interrupted_sweep(self):
+        sweep = subprocess.run(["catkin_find", "--first-only", "--libexec", "aurora_sweep", "sweep"],
+                               stdout=subprocess.PIPE).stdout.decode().strip()
+        with tempfile.TemporaryDirectory() as out:
+            cmd = [sweep, "--config", os.path.join(config_dir(), "sweeps", "positioning_delay.yaml"),
+                   "--backend", "scalar", "--out", out, "--no-plots", "--output", "csv"]
+            first = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+            deadline = time.time() + 60
+            while not os.path.isdir(os.path.join(out, "progress")) and time.time() < deadline:
+                time.sleep(0.1)
+            p = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, timeout=60)
+            second = p.stdout.decode(errors="replace")
+            self.assertEqual(p.returncode, 2, second)
+            self.assertIn("output folder '%s' is in use by another sweep (pid %d on host" % (out, first.pid), second)
+            first.send_signal(signal.SIGINT)
+            said = first.communicate(timeout=60)[1].decode(errors="replace")
+            self.assertEqual(first.returncode, -signal.SIGINT, said)
+            self.assertIn("sweep: interrupted: every finished chunk stays in %s/progress" % out, said)
+            self.assertIn(" ".join(cmd), said)
+
+    def test_a_sweep_with_repeats_counts_runs_and_combinations(self):
+        """Issue 31: "21,504 combinations" where the docs say 1,344 combinations x 16 repeats."""
+        sweep = subprocess.run(["catkin_find", "--first-only", "--libexec", "aurora_sweep", "sweep"],
+                               stdout=subprocess.PIPE).stdout.decode().strip()
+        with tempfile.TemporaryDirectory() as out:
+            p = subprocess.Popen([sweep, "--config", os.path.join(config_dir(), "sweeps", "link_margin.yaml"),
+                                  "--out", out, "--no-plots"], stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
+                                 universal_newlines=True)
+            lines = []
+            for line in p.stderr:
+                lines.append(line)
+                if line.startswith("sweep: link_margin:"):
+                    break
+            p.send_signal(signal.SIGINT)
+            p.communicate(timeout=60)
+        self.assertIn("sweep: link_margin: 21,504 runs (1,344 combinations x 16 repeats) in ", "".join(lines))
+
+
+class AllToolArgumentsTest(ToolArgumentsTest, FormationAndLinkArgumentsTest):
+    """Both classes in one rostest (rostest.rosrun takes one class)."""
+
+
 if __name__ == "__main__":
-    rostest.rosrun("aurora_tests", "tool_arguments", ToolArgumentsTest)
+    rostest.rosrun("aurora_tests", "tool_arguments", AllToolArgumentsTest)

@@ -47,13 +47,13 @@ TEST(FlightEquivalence, RosLoopEqualsTheFlightRunnerBitForBit) {
   ControllerSettings set = controller.settings;
   set.vehicle = params;
   set.Ts = params.Ts;
-  set.delay = pnh.param("delay", 0);
+  const long given_delay = pnh.param("delay", int(kDelayNotGiven));
   set.clamp_commands = controller.has_clamp ? controller.clamp : true;
   std::string link_file;
   if (pnh.getParam("link_file", link_file)) {  // the node's link:=NAME
     set.link = readLinkFile(link_file);
-    ASSERT_EQ(combineUplinkDelay(set.delay, set.link, set.delay), "");
   }
+  set.delay = delayInForce(given_delay, set.link);
   const Task<double> task = readTask(YamlReader(), fileParam(pnh, "task_file")["task"], "task");
   std::vector<std::vector<double>> offline(1);
   aurora_sim::ArdroneState<double> s0;

@@ -96,7 +96,7 @@ std::vector<std::vector<double>> offlineRun(const Recording& r, const aurora_msg
 
 // Largest distance of drone d's true position at each fly tick before the
 // pause from the offline run's state of that tick; counts the ticks compared.
-double largestDifference(const Recording& r, int d, long& compared) {
+double largestDifference(const Recording& r, int d, long& compared, long& worst_tick) {
   const aurora_msgs::Formation* first = nullptr;
   for (const auto& m : r.ticks) {
     if (m.mode == "fly" && m.step == 0) first = &m;
@@ -109,8 +109,9 @@ double largestDifference(const Recording& r, int d, long& compared) {
     const long k = static_cast<long>(m.step);
     double p[3];
     if (m.mode != "fly" || k >= r.pause_tick || !aurora_tests::positionAt(r.truth[d], m.header.stamp.toSec(), p)) continue;
-    worst = std::max(worst, std::sqrt(std::pow(p[0] - offline[k][0], 2) + std::pow(p[1] - offline[k][1], 2) +
-                                      std::pow(p[2] - offline[k][2], 2)));
+    const double e = std::sqrt(std::pow(p[0] - offline[k][0], 2) + std::pow(p[1] - offline[k][1], 2) +
+                               std::pow(p[2] - offline[k][2], 2));
+    if (e > worst) worst = e, worst_tick = k;
     ++compared;
   }
   return worst;
@@ -152,10 +153,10 @@ TEST(FormationReal, TwoDriversTakeOffFlyTheFormationAndLand) {
   }
   EXPECT_EQ(last_fly, formationTicks(f.reference.duration, r.ticks.back().sample_time) - 1);
   for (int d = 0; d < kDrones; ++d) {
-    long compared = 0;
-    const double worst = largestDifference(r, d, compared);
+    long compared = 0, worst_tick = -1;
+    const double worst = largestDifference(r, d, compared, worst_tick);
     std::printf("formation.launch driver:=ardrone, drone %d vs the offline runner: %ld ticks compared, largest "
-                "position difference %.3f m\n", d + 1, compared, worst);
+                "position difference %.3f m (tick %ld)\n", d + 1, compared, worst, worst_tick);
     EXPECT_GT(compared, static_cast<long>(0.9 * r.pause_tick));
     EXPECT_LE(worst, pnh.param("tolerance", 0.3)) << "drone " << d + 1;
   }

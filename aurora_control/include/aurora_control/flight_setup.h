@@ -17,7 +17,7 @@ namespace aurora_control {
 
 struct FlightFiles {
   std::string controller, task, vehicle, link;  // link: "" for the ideal link
-  long delay = 0;                               // [samples]; with a link, 0 keeps the link's uplink delay
+  long delay = kDelayNotGiven;                  // [samples]; not given: the link's uplink delay (0 without a link)
   bool no_clamp = false;                        // do not clamp the law's commands (the sim still does)
 };
 
@@ -35,12 +35,8 @@ inline FlightSetup loadFlight(const FlightFiles& f) {
   s.settings.clamp_commands = !f.no_clamp;
   s.settings.vehicle = s.vehicle;
   s.settings.Ts = s.vehicle.Ts;
-  s.settings.delay = f.delay;
-  if (!f.link.empty()) {
-    s.settings.link = readLinkFile(f.link);
-    const std::string refusal = combineUplinkDelay(f.delay, s.settings.link, s.settings.delay);
-    if (!refusal.empty()) throw ConfigError("--delay and --link " + f.link + ": " + refusal);
-  }
+  if (!f.link.empty()) s.settings.link = readLinkFile(f.link);
+  s.settings.delay = delayInForce(f.delay, s.settings.link);  // docs/links.md, "A delay beside a link"
   s.task = readTask(YamlReader("task file '" + f.task + "': "), loadYamlFile("task file", f.task)["task"], "task");
   s.steps = taskStepCount(s.task.duration(), s.vehicle.Ts);
   long samples = 0;
@@ -48,6 +44,11 @@ inline FlightSetup loadFlight(const FlightFiles& f) {
   if (!refusal.empty()) throw ConfigError("--delay " + std::to_string(s.settings.delay) + " " + refusal);
   if (!delayShorterThanRun(s.settings.delay, s.steps)) {
     throw ConfigError("--delay " + delayRunText(s.settings.delay, s.steps, s.vehicle.Ts));
+  }
+  const long latest = s.settings.link.historyNeeded(s.settings.delay);  // the delay plus the link's jitter
+  if (!delayShorterThanRun(latest, s.steps)) {
+    throw ConfigError("--link " + f.link + ": its latest packet (the delay plus the jitter, or the command path) is " +
+                      delayRunText(latest, s.steps, s.vehicle.Ts));
   }
   return s;
 }

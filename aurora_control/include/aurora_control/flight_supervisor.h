@@ -61,6 +61,13 @@ class FlightSupervisor {
   long flyStartStep() const { return fly_start_step_; }
   // Where the drone hovers after take-off [m, world frame].
   const double* startPoint() const { return start_point_; }
+  // A formation's drone hovers at its formation file's start after take-off
+  // (not above its take-off spot at takeoff_altitude: every drone there is
+  // level, where the line is singular; line_formation.h).
+  void startAt(const double p[3]) {
+    fixed_start_ = true;
+    for (int i = 0; i < 3; ++i) fixed_start_point_[i] = p[i];
+  }
 
   // Land now, whatever the phase (a formation lands every drone when one
   // of them must: formation_supervisor.h).
@@ -84,9 +91,9 @@ class FlightSupervisor {
           takeoff_started_ = now;
           // Hover above the take-off spot at the start altitude: the task
           // starts from rest there, as the simulation starts at z = 0.75 m.
-          start_point_[0] = X[aurora_sim::kX];
-          start_point_[1] = X[aurora_sim::kY];
-          start_point_[2] = cfg_.takeoff_altitude;
+          start_point_[0] = fixed_start_ ? fixed_start_point_[0] : X[aurora_sim::kX];
+          start_point_[1] = fixed_start_ ? fixed_start_point_[1] : X[aurora_sim::kY];
+          start_point_[2] = fixed_start_ ? fixed_start_point_[2] : cfg_.takeoff_altitude;
           return finish(d, "takeoff");
         }
         return finish(d, "wait for state");
@@ -186,6 +193,8 @@ class FlightSupervisor {
   long fly_start_step_ = 0;
   double takeoff_started_ = 0.0;
   double start_point_[3] = {0, 0, 0};
+  bool fixed_start_ = false;  // startAt: a formation's start point
+  double fixed_start_point_[3] = {0, 0, 0};
   std::string last_mode_;
 };
 

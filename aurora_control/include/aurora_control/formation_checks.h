@@ -57,7 +57,8 @@ AURORA_HD inline void formationErrors(const T X[Shape::kVariables], const T Xd[S
   shape = sqrt(sum);
 }
 
-// The smallest distance between any two drones of positions X [m].
+// The smallest distance between any two drones of positions X [m]; NaN
+// where a drone's position is NaN.
 template <class Shape, typename T>
 AURORA_HD inline T closestPair(const T X[Shape::kVariables]) {
   using aurora_sim::select;
@@ -66,7 +67,7 @@ AURORA_HD inline T closestPair(const T X[Shape::kVariables]) {
     for (int b = a + 1; b < Shape::kDrones; ++b) {
       const T d[3] = {X[3 * b] - X[3 * a], X[3 * b + 1] - X[3 * a + 1], X[3 * b + 2] - X[3 * a + 2]};
       const T r = norm3(d);
-      closest = select(r < closest, r, closest);
+      closest = select(!(r >= closest), r, closest);  // a NaN distance is kept: NaN, not 1e30
     }
   }
   return closest;
@@ -94,18 +95,22 @@ struct FormationMetrics {
     T position, shape;
     formationErrors<Shape>(X, Xd, position, shape);
     const T r = closestPair<Shape>(X);
-    closest = select(r < closest, r, closest);
-    const auto judged = t >= c.settle_time;
     const T zero(0);
+    // A drone whose position is not finite (a diverged or NaN drone) fails
+    // every check from then on, and the figures show the NaN: every error
+    // and distance of a NaN position is NaN, and x * 0 == 0 is false for
+    // NaN and infinity alike.
+    const auto finite = (position + shape + r) * zero == zero;
+    closest = select(!finite | (r < closest), r, closest);
+    const auto judged = t >= c.settle_time;
     iae_position = iae_position + select(judged, position * dt, zero);
     iae_shape = iae_shape + select(judged, shape * dt, zero);
-    max_position = select(judged & (position > max_position), position, max_position);
-    max_shape = select(judged & (shape > max_shape), shape, max_shape);
-    // A NaN position (a diverged drone) fails every check: comparisons with NaN are false.
-    ok[0] = ok[0] & (!judged | (position <= c.max_position_error));
-    ok[1] = ok[1] & (!judged | (shape <= c.max_shape_error));
-    ok[2] = ok[2] & (iae_position <= c.max_iae_position) & (iae_shape <= c.max_iae_shape);
-    ok[3] = ok[3] & (r >= c.min_distance);
+    max_position = select(judged & (!finite | (position > max_position)), position, max_position);
+    max_shape = select(judged & (!finite | (shape > max_shape)), shape, max_shape);
+    ok[0] = ok[0] & finite & (!judged | (position <= c.max_position_error));
+    ok[1] = ok[1] & finite & (!judged | (shape <= c.max_shape_error));
+    ok[2] = ok[2] & finite & (iae_position <= c.max_iae_position) & (iae_shape <= c.max_iae_shape);
+    ok[3] = ok[3] & finite & (r >= c.min_distance);
   }
 
   AURORA_HD Mask feasible() const { return ok[0] & ok[1] & ok[2] & ok[3]; }

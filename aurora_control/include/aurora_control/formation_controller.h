@@ -9,6 +9,8 @@
 // offline runner's bit for bit.
 #pragma once
 
+#include <cmath>
+
 #include "aurora_control/delayed_controller.h"
 #include "aurora_control/formation_layer.h"
 #include "aurora_control/formation_runner.h"
@@ -25,6 +27,7 @@ class FormationController {
   struct Tick {
     long k = 0;
     bool layer_ran = false;
+    int not_finite = -1;  // the first drone whose law gave a non-finite command: every drone hovers instead
     Reference<double> ref[kDrones];
     ControlOutput out[kDrones];
   };
@@ -87,6 +90,13 @@ class FormationController {
     for (int d = 0; d < kDrones; ++d) {
       t.ref[d] = heldReference(layer_, d);
       t.out[d] = core_[d].compute(t.ref[d]);
+      if (t.not_finite < 0 && !finiteCommand(t.out[d].U)) t.not_finite = d;
+    }
+    // A NaN or infinite command never reaches a drone (the layer is singular
+    // where the drones are level, line_formation.h): both hover, as the
+    // flight sequence does when either must.
+    if (t.not_finite >= 0) {
+      for (int d = 0; d < kDrones; ++d) t.out[d] = core_[d].hover();
     }
     return t;
   }
@@ -109,6 +119,13 @@ class FormationController {
   void startLayer() {
     startLayerAt(run_, start_, layer_);
     last_k_ = -1;
+  }
+
+  static bool finiteCommand(const double U[4]) {
+    for (int i = 0; i < 4; ++i) {
+      if (!std::isfinite(U[i])) return false;
+    }
+    return true;
   }
 
   FormationRun<double, Line> run_;

@@ -2,7 +2,9 @@
 // drones"), ROS-free: each drone keeps the single-drone controller's
 // FlightSupervisor (take-off, hover on a stale state, land on a long one or
 // outside the safety box), and the formation adds its rules above them:
-//  - a drone that reached its start point holds it until every drone has;
+//  - after take-off each drone flies to its start point of the formation
+//    file (the drones are not level there: the line is singular where they
+//    are) and holds it until every drone has reached its own;
 //  - the formation starts (tick 0) in the cycle where every drone flies,
 //    from where the drones are then;
 //  - while any drone must hover, every drone hovers (the layer would
@@ -29,10 +31,15 @@ class FormationSupervisor {
     std::string event;        // non-empty once, when the mode changes
   };
 
-  // names: the drones' namespaces (for the modes).
-  void configure(const SafetyConfig& cfg, const std::string (&names)[D]) {
+  // names: the drones' namespaces (for the modes); starts: each drone's
+  // start point from the formation file [m], where it hovers after take-off
+  // until every drone is at its own (the file refuses level starts).
+  void configure(const SafetyConfig& cfg, const std::string (&names)[D], const double (&starts)[D][3]) {
     cfg_ = cfg;
-    for (int d = 0; d < D; ++d) supervisor_[d].configure(cfg), names_[d] = names[d];
+    for (int d = 0; d < D; ++d) {
+      supervisor_[d].configure(cfg), names_[d] = names[d];
+      supervisor_[d].startAt(starts[d]);
+    }
     started_ = false;
     landing_ = false;
     last_mode_.clear();

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "aurora_control/formation_checks.h"
 #include "aurora_control/formation_runner.h"
 #include "aurora_control/law_yaml.h"
 #include "aurora_control/limits.h"
@@ -65,7 +66,12 @@ inline void readGains(const YamlReader& r, const YAML::Node& n, const std::strin
     if (!n[names[j]]) continue;
     const std::vector<double> v = numbers(r, n[names[j]], r.key(key, names[j]), 6);
     for (int i = 0; i < 6; ++i) {
-      if (!(v[i] > 0)) r.fail(r.key(key, names[j]), "= " + YamlReader::fmt(v[i]) + " (entry " + std::to_string(i + 1) + ") is refused: accepted gains > 0");
+      // The sweep's range of a formation gain (formation_k1_x, ...): positive, as the underactuated law's.
+      if (!(v[i] >= kUnderactuatedGainMin && v[i] <= kUnderactuatedGainMax)) {
+        r.fail(r.key(key, names[j]), "= " + YamlReader::fmt(v[i]) + " (entry " + std::to_string(i + 1) +
+                                         ") is refused: accepted gains in [" + YamlReader::fmt(kUnderactuatedGainMin) +
+                                         ", " + YamlReader::fmt(kUnderactuatedGainMax) + "]");
+      }
       into[j][i] = v[i];
     }
   }
@@ -118,18 +124,44 @@ inline FormationDroneFile readDrone(const YamlReader& r, const YAML::Node& n, co
   } else {
     readLaw(r, c, r.key(key, "controller"), d.controller);
   }
+  long given = kDelayNotGiven;
   if (n["delay"]) {
-    const double given = r.number(n["delay"], r.key(key, "delay"));
-    const std::string refusal = delayRefusal(given, false, 0.0, d.delay);
-    if (!refusal.empty()) r.fail(r.key(key, "delay"), "= " + YamlReader::fmt(given) + " " + refusal);
+    const double value = r.number(n["delay"], r.key(key, "delay"));
+    const std::string refusal = delayRefusal(value, false, 0.0, given);
+    if (!refusal.empty()) r.fail(r.key(key, "delay"), "= " + YamlReader::fmt(value) + " " + refusal);
   }
-  if (n["link"]) {
-    const std::string file = r.text(n["link"], r.key(key, "link"));
-    d.link = readLinkFile(inConfig(file, config_dir));
-    const std::string refusal = combineUplinkDelay(d.delay, d.link, d.delay);
-    if (!refusal.empty()) r.fail(r.key(key, "link"), "= '" + file + "': " + refusal);
-  }
+  if (n["link"]) d.link = readLinkFile(inConfig(r.text(n["link"], r.key(key, "link")), config_dir));
+  d.delay = delayInForce(given, d.link);  // a delay given replaces the link's uplink delay (docs/links.md)
   return d;
+}
+
+inline std::string pointText(const double p[3]) {
+  return "[" + YamlReader::fmt(p[0]) + ", " + YamlReader::fmt(p[1]) + ", " + YamlReader::fmt(p[2]) + "]";
+}
+
+// Starts the line's variables are defined at (line_formation.h): no drone
+// below the ground, drone 2 not level with drone 1.
+inline void refuseSingularStart(const YamlReader& r, const std::vector<FormationDroneFile>& drones) {
+  for (size_t i = 0; i < drones.size(); ++i) {
+    if (drones[i].start[2] < 0.0) {
+      r.fail("formation.drones[" + std::to_string(i) + "].start", "= " + pointText(drones[i].start) +
+                 " is below the ground (z < 0): accepted z >= 0 m");
+    }
+  }
+  const double* a = drones[0].start;
+  const double* b = drones[1].start;
+  const double gap = std::fabs(b[2] - a[2]);
+  if (gap < LineFormation<double>::kMinStartHeightGap) {
+    const double d[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+    const double distance = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    r.fail("formation.drones", "are refused: drone 1 (" + drones[0].name_space + ") starts at " + pointText(a) + " and drone 2 (" +
+                                   drones[1].name_space + ") at " + pointText(b) + ", " + YamlReader::fmt(distance) +
+                                   " m apart and " + YamlReader::fmt(gap) +
+                                   " m apart in height: the line's variables are singular where the drones are level "
+                                   "(eq. F4 divides by z2 - z1; at 0 m apart beta is undefined) and the layer would "
+                                   "command NaN; accepted starts at least " +
+                                   YamlReader::fmt(LineFormation<double>::kMinStartHeightGap) + " m apart in height");
+  }
 }
 
 inline void readDrones(const YamlReader& r, const YAML::Node& n, const std::string& config_dir, FormationFile& f) {
@@ -142,6 +174,7 @@ inline void readDrones(const YamlReader& r, const YAML::Node& n, const std::stri
   if (f.drones[0].name_space == f.drones[1].name_space) {
     r.fail("formation.drones[1].namespace", "= '" + f.drones[1].name_space + "' is drone 1's too: accepted a namespace of its own");
   }
+  refuseSingularStart(r, f.drones);
   if (f.drones[0].controller.law != f.drones[1].controller.law) {
     r.fail("formation.drones[1].controller.name", "differs from drone 1's: accepted the same law for every drone");
   }
@@ -172,6 +205,35 @@ inline FormationFile readFormationFile(const std::string& path, const std::strin
   return f;
 }
 
+// A formation is judged from the checks' settling time on
+// (formation_checks.h): a shorter one would be judged on nothing and pass.
+inline void refuseShortFormation(const FormationRun<double, LineFormation<double>>& run, double Ts) {
+  const double settle = FormationCriteria<double>::study().settle_time;
+  const long ticks = formationTicks(run.reference.duration, Ts);
+  if (!(run.reference.duration > settle)) {
+    throw ConfigError("formation.reference.duration = " + YamlReader::fmt(run.reference.duration) + " s (" +
+                      std::to_string(ticks) + " ticks) is refused: the formation checks judge it from " +
+                      YamlReader::fmt(settle) + " s on; accepted durations > " + YamlReader::fmt(settle) + " s");
+  }
+}
+
+// Each drone's delay in force shorter than the run, as one drone's
+// (limits.h, delayShorterThanRun); `keys[d]` names where drone d's came from.
+inline void refuseFormationDelays(const FormationRun<double, LineFormation<double>>& run, double Ts,
+                                  const std::vector<std::string>& keys) {
+  const long ticks = formationTicks(run.reference.duration, Ts);
+  for (int d = 0; d < LineFormation<double>::kDrones; ++d) {
+    if (!delayShorterThanRun(run.drone[d].delay, ticks)) {
+      throw ConfigError(keys[d] + " = " + delayRunText(run.drone[d].delay, ticks, Ts));
+    }
+    const long latest = run.drone[d].link.historyNeeded(run.drone[d].delay);  // with its link's jitter
+    if (!delayShorterThanRun(latest, ticks)) {
+      throw ConfigError(keys[d] + " with drone " + std::to_string(d + 1) + "'s link: its latest packet is " +
+                        delayRunText(latest, ticks, Ts));
+    }
+  }
+}
+
 // The run of a formation file with the drones' vehicle `vehicle`, its
 // period in whole drone steps (refused otherwise).
 inline FormationRun<double, LineFormation<double>> formationRun(const FormationFile& f,
@@ -194,6 +256,8 @@ inline FormationRun<double, LineFormation<double>> formationRun(const FormationF
     run.drone[d].link = f.drones[d].link;
     for (int i = 0; i < 3; ++i) run.drone[d].start[i] = f.drones[d].start[i];
   }
+  refuseShortFormation(run, vehicle.Ts);
+  refuseFormationDelays(run, vehicle.Ts, {"formation.drones[0].delay", "formation.drones[1].delay"});
   return run;
 }
 

@@ -26,6 +26,11 @@ template <typename T>
 struct LineFormation {
   static constexpr int kDrones = 2;
   static constexpr int kVariables = 6;
+  // The line is singular where the drones are level (eq. F4 divides by
+  // sigma = (z2 - z1) / rho; at rho = 0 beta is undefined too): a formation
+  // may not start closer than this to level [m] (docs/formation.md,
+  // "Formation files").
+  static constexpr double kMinStartHeightGap = 0.05;
 
   // Q of positions X = (x1, y1, z1, x2, y2, z2) (eq. F1): the formation's
   // position is drone 1's, rho the distance to drone 2, alpha = asin(dx /

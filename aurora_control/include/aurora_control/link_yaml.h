@@ -77,17 +77,28 @@ inline LinkParams readLink(const YamlReader& r, const YAML::Node& node, const st
   return l;
 }
 
-// The uplink's base delay from the run's delay (a tool's --delay, the node's
-// delay/*; 0 when not given) and a link file's uplink delay: whichever is
-// not 0; both given and different is refused (returns why, else "").
-inline std::string combineUplinkDelay(long run_delay, const LinkParams& link, long& delay) {
-  const long file_delay = link.uplink.delay;
-  delay = run_delay != 0 ? run_delay : file_delay;
-  if (run_delay != 0 && file_delay != 0 && run_delay != file_delay) {
-    return "the delay " + std::to_string(run_delay) + " and the link's uplink delay " + std::to_string(file_delay) +
-           " differ: give the uplink delay once (the link file's, or the delay with the file's at 0)";
+// The one rule of a delay given beside a link (docs/links.md, "A delay
+// beside a link"), at every entry point (flight and --formation, the
+// controller and formation nodes and their launch files, replay, Python, a
+// formation file's drones, sweep files): a delay given replaces the link's
+// uplink delay, 0 included; none given (kDelayNotGiven) keeps the link's,
+// which is 0 without a link.
+constexpr long kDelayNotGiven = -1;
+
+inline long delayInForce(long given, const LinkParams& link) {
+  return given == kDelayNotGiven ? link.uplink.delay : given;
+}
+
+// Where the delay in force came from, for start-up lines: "3 samples (given;
+// replaces the link's uplink delay 1)" or "1 samples (the link's uplink delay)".
+inline std::string delayOriginText(long given, const LinkParams& link) {
+  const long d = delayInForce(given, link);
+  std::string out = std::to_string(d) + " samples";
+  if (given == kDelayNotGiven) return out + (link.uplink.delay != 0 ? " (the link's uplink delay)" : "");
+  if (link.uplink.delay != 0 || !link.ideal()) {
+    out += " (given; replaces the link's uplink delay " + std::to_string(link.uplink.delay) + ")";
   }
-  return "";
+  return out;
 }
 
 // A link in one line, for logs (every value that defines it).

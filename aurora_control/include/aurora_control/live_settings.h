@@ -112,7 +112,7 @@ inline std::string checkLiveChange(const ControllerSettings& now, const LiveChan
     if (c.value == lawGain(other, i)) return "";  // a dump of the whole server loaded back: no change
     return c.name + " = " + YamlReader::fmt(c.value) + " is refused: a gain of the " + lawName(law) +
            " law, but this node flies the " + lawName(now.law) + " law (accepted: " +
-           joinKeys(lawGainNames(now.law)) + ", delay_samples)";
+           joinKeys(lawGainNames(now.law)) + ", delay_samples, the link's " + linkSettingNames() + ")";
   }
   return pd ? rangeProblem(c, kPdGainMin, kPdGainMax, "a gain")
             : rangeProblem(c, kUnderactuatedGainMin, kUnderactuatedGainMax, "a gain");

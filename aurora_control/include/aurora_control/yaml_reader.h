@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "aurora_sim/refusal_text.h"
+#include "aurora_sim/yaml_file.h"
 
 namespace aurora_control {
 
@@ -25,15 +26,8 @@ inline std::string joinKeys(const std::vector<std::string>& keys) {
   return out;
 }
 
-// A YAML file's root: `what` names the file's kind in the refusal ("link
-// file 'x.yaml' cannot be read: ..."), a missing file and bad YAML alike.
-inline YAML::Node loadYamlFile(const std::string& what, const std::string& path) {
-  try {
-    return YAML::LoadFile(path);
-  } catch (const YAML::Exception& e) {
-    throw ConfigError(what + " '" + path + "' cannot be read: " + e.what());
-  }
-}
+// A YAML file's root, duplicated keys refused (aurora_sim/yaml_file.h).
+using aurora_sim::loadYamlFile;
 
 class YamlReader {
  public:

@@ -10,6 +10,8 @@ A formation bag (formation.launch record:=true) also gives
 read_formation_bag(path): one row per tick with Q, Qd and each drone's
 position. A missing, unindexed or damaged bag raises ValueError saying what
 to do (the report's messages)."""
+import os
+
 from aurora import formation_report, report
 
 _Q = formation_report.VARIABLES
@@ -32,6 +34,8 @@ class BagFlight:
 
 
 def _open(path):
+    if not isinstance(path, (str, os.PathLike)):
+        raise ValueError("path: expected a bag file's path, got %r" % (path,))
     try:
         return report.open_bag(path)
     except report.ReportError as e:

@@ -8,6 +8,7 @@ drones. The errors are those `flight --formation` prints (docs/formation.md,
 positions X_k against the layer's Qd held at k."""
 import math
 import os
+import sys
 
 FORMATION_TOPIC = "/formation/formation"
 FORMATION_TYPE = "aurora_msgs/Formation"
@@ -62,7 +63,11 @@ def series_of(drones, ticks, states, ts):
     s = {k: [] for k in ("k", "t", "Q", "Qd", "e_position", "e_shape", "distance")}
     for d in drones:
         s[d] = {"pos": [], "ref": [], "track": []}
+    last = min(ticks)
+    count = getattr(ticks[last], "ticks", 0)  # 0 in bags recorded before the field: every tick
     for k in sorted(ticks):
+        if count and k >= count:
+            break  # the formation's ticks are 0 .. ticks - 1 (flight --formation's); later states are after its end
         if not all(k in states[d] for d in drones):
             continue
         X = []
@@ -193,8 +198,11 @@ def video(drones, s, out_dir, fps):
     label = ax.set_title("")
     writer = FFMpegWriter(fps=fps, codec="libx264", extra_args=["-pix_fmt", "yuv420p"])
     frames, i = 0, 0
+    total = int(math.floor((t[-1] - t[0]) * fps + 1e-9)) + 1
     with writer.saving(fig, path, dpi=100):
-        for f in range(int(math.floor((t[-1] - t[0]) * fps + 1e-9)) + 1):
+        for f in range(total):
+            if f % max(1, total // 10) == 0:  # the video is the slow part: say how far it is
+                progress("rendering the video: frame %d of %d" % (f + 1, total))
             ft = t[0] + f / fps
             while i + 1 < len(t) and t[i + 1] <= ft + 1e-9:
                 i += 1
@@ -237,15 +245,21 @@ def markdown(m, files):
     return lines + [""]
 
 
+def progress(what):
+    print("report: formation: %s ..." % what, file=sys.stderr, flush=True)
+
+
 def report(bag, out_dir, pdf, with_video, fps, report_error):
     """The formation's metrics (a dict for metrics.json), its files and its
-    report.md lines."""
+    report.md lines; progress on stderr."""
+    progress("reading the bag")
     drones, ticks, states = read_formation(bag, report_error)
     ts = ticks[min(ticks)].sample_time
     s = series_of(drones, ticks, states, ts)
     if len(s["t"]) < 2:
         raise report_error("bag '%s': fewer than 2 ticks with every drone's state" % bag.filename)
     m = metrics_of(drones, s, ts)
+    progress("drawing the figures")
     files = figures(drones, s, out_dir, pdf)
     if with_video:
         m["video"], m["video_frames"] = video(drones, s, out_dir, fps)

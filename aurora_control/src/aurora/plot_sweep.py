@@ -39,6 +39,22 @@ def read_results(np, out, params, flags):
     return cols
 
 
+def share_contours(ax, x, y, grid):
+    """The 50 % and 90 % contours of a feasible-share grid, those it crosses:
+    a grid all above or all below a level has no such line (matplotlib would
+    warn "No contour levels were found" with its source line). Returns the
+    levels drawn."""
+    known = grid[grid == grid]  # cells with runs (NaN: none)
+    if known.size == 0 or len(x) < 2 or len(y) < 2:
+        return []
+    levels = [(l, c) for l, c in ((0.5, "w"), (0.9, "r")) if known.min() < l < known.max()]
+    if not levels:
+        return []
+    cs = ax.contour(x, y, grid, levels=[l for l, _ in levels], colors=[c for _, c in levels], linewidths=1.2)
+    ax.clabel(cs, fmt={0.5: "50 %", 0.9: "90 %"}, fontsize=8)
+    return [l for l, _ in levels]
+
+
 def cell_edges(np, centres):
     """Edges of cells centred on sorted `centres` (halfway between them)."""
     c = np.asarray(centres, dtype=float)
@@ -153,8 +169,7 @@ def link_margins(np, plt, cols, feasible, summary, out):
         im = ax.pcolormesh(cell_edges(np, ud), cell_edges(np, uv), grid, cmap="viridis", vmin=0, vmax=1)
         fig.colorbar(im, ax=ax, label="feasible share of %d link seeds" % summary["repeats"])
         if len(ud) > 1 and len(uv) > 1:
-            cs = ax.contour(ud, uv, grid, levels=[0.5, 0.9], colors=["w", "r"], linewidths=1.2)
-            ax.clabel(cs, fmt={0.5: "50 %", 0.9: "90 %"}, fontsize=8)
+            share_contours(ax, ud, uv, grid)
         ax.set_xlabel("delay (uplink base) [samples]")
         ax.set_ylabel(name + (" [samples]" if "jitter" in name or name == "downlink_delay" else ""))
         rest = ", ".join("%s = %g" % (o, cols[o].min()) for o in varied if o != name)
@@ -188,8 +203,7 @@ def formation_delays(np, plt, cols, ok, summary, out):
     for ax, (key, title) in zip(axes, names.items()):
         grid = share(np, cells, ok[key], len(u1) * len(u2)).reshape(len(u2), len(u1))
         im = ax.pcolormesh(cell_edges(np, u1), cell_edges(np, u2), grid, cmap="viridis", vmin=0, vmax=1)
-        cs = ax.contour(u1, u2, grid, levels=[0.5, 0.9], colors=["w", "r"], linewidths=1.2)
-        ax.clabel(cs, fmt={0.5: "50 %", 0.9: "90 %"}, fontsize=8)
+        share_contours(ax, u1, u2, grid)
         ax.set_xlabel("drone 1's delay [samples]")
         ax.set_ylabel("drone 2's delay [samples]")
         ax.set_title(title, fontsize=10)

@@ -19,6 +19,7 @@ import tempfile
 import yaml
 
 from aurora import _core
+from aurora.arguments import boolean, per_drone, plain, whole
 
 _FOLDERS = {"controller": "controllers", "task": "tasks", "vehicle": "vehicles", "link": "links",
             "formation": "formations"}
@@ -61,7 +62,7 @@ def _as_file(value, kind, tmp):
     if isinstance(value, dict):
         path = os.path.join(tmp, kind + ".yaml")
         with open(path, "w") as f:
-            yaml.safe_dump(value, f)
+            yaml.safe_dump(plain(value, kind), f)
         return path
     if not isinstance(value, str):
         raise ValueError("%s: expected a name, a path or a dict, got %s" % (kind, type(value).__name__))
@@ -76,16 +77,18 @@ def _as_file(value, kind, tmp):
     return path
 
 
-def simulate(controller, task, vehicle=None, delay=0, link=None, clamp=True):
+def simulate(controller, task, vehicle=None, delay=None, link=None, clamp=True):
     """One flight of `controller` on `task` with a feedback delay of `delay`
-    samples (over `link` when given; 0 keeps the link's uplink delay)."""
-    if isinstance(delay, bool) or not isinstance(delay, int):
-        raise ValueError("delay: expected whole samples (an int), got %r" % (delay,))
+    samples. Over `link`, a given delay replaces the link's uplink delay and
+    None keeps it (docs/links.md, "A delay beside a link"); without a link
+    None is 0."""
+    delay = -1 if delay is None else whole(delay, "delay")
+    clamp = boolean(clamp, "clamp")
     with tempfile.TemporaryDirectory() as tmp:
         files = [_as_file(v, k, tmp) for v, k in ((controller, "controller"), (task, "task"),
-                                                   (vehicle or "ardrone2", "vehicle"))]
+                                                   ("ardrone2" if vehicle is None else vehicle, "vehicle"))]
         link_file = _as_file(link, "link", tmp) if link is not None else ""
-        return Flight(_core.simulate_files(files[0], files[1], files[2], delay, link_file, bool(clamp)))
+        return Flight(_core.simulate_files(files[0], files[1], files[2], delay, link_file, clamp))
 
 
 class FormationFlight:
@@ -116,13 +119,10 @@ class FormationFlight:
 def simulate_formation(formation, vehicle=None, delays=None):
     """One formation flight of `formation` (a shipped name, a path or a dict
     of config/formations/NAME.yaml's schema), each drone over its own delay
-    (`delays`: one per drone in samples; None keeps the file's)."""
-    if delays is not None:
-        if isinstance(delays, (str, bytes)) or not hasattr(delays, "__len__") or \
-                any(isinstance(d, bool) or not isinstance(d, int) for d in delays):
-            raise ValueError("delays: expected one whole number of samples per drone, got %r" % (delays,))
+    (`delays`: one per drone in samples, in the file's order; None keeps
+    the file's)."""
+    delays = [] if delays is None else per_drone(delays, "delays")
     with tempfile.TemporaryDirectory() as tmp:
         formation_file = _as_file(formation, "formation", tmp)
-        vehicle_file = _as_file(vehicle or "ardrone2", "vehicle", tmp)
-        return FormationFlight(_core.simulate_formation_files(formation_file, vehicle_file, list(delays or []),
-                                                              config_dir()))
+        vehicle_file = _as_file("ardrone2" if vehicle is None else vehicle, "vehicle", tmp)
+        return FormationFlight(_core.simulate_formation_files(formation_file, vehicle_file, delays, config_dir()))

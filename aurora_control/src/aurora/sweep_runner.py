@@ -21,6 +21,7 @@ import subprocess
 import tempfile
 import threading
 
+from aurora.arguments import plain, whole
 from aurora.simulation import config_dir
 
 _PROGRESS = re.compile(r"^sweep: (\d+)/(\d+) \(")
@@ -50,7 +51,7 @@ def _config_file(config, tmp):
         import yaml
         path = os.path.join(tmp, "sweep.yaml")
         with open(path, "w") as f:
-            yaml.safe_dump(config, f)
+            yaml.safe_dump(plain(config, "config"), f)
         return path
     if not isinstance(config, str):
         raise ValueError("config: expected a shipped sweep's name, a path or a dict, got %s" % type(config).__name__)
@@ -66,9 +67,7 @@ def _config_file(config, tmp):
 
 
 def _whole(name, value):
-    if isinstance(value, bool) or not isinstance(value, int):
-        raise ValueError("%s: expected a whole number, got %r" % (name, value))
-    return str(value)
+    return str(whole(value, name, 1, 2 ** 31 - 1, "a whole number", "whole numbers"))
 
 
 def _command(file, out, backend, precision, threads, chunk_size, output, rows, plots):
@@ -87,6 +86,26 @@ def _command(file, out, backend, precision, threads, chunk_size, output, rows, p
     return cmd
 
 
+def _progress_bar(total):
+    """tqdm's bar: a widget in notebooks where ipywidgets can draw it (7 and
+    later), else text. Debian 12's ipywidgets 6 lacks what tqdm's widget
+    sets ('FloatProgress' object has no attribute 'style'), so it gets the
+    text bar rather than a traceback and no bar."""
+    from tqdm import tqdm as text_tqdm
+    kwargs = dict(total=total, unit="sim", unit_scale=True, desc="sweep")
+    try:
+        import ipywidgets
+        if int(ipywidgets.__version__.split(".")[0]) < 7:
+            return text_tqdm(**kwargs)
+        from tqdm.auto import tqdm  # a widget in notebooks
+    except ImportError:  # no ipywidgets, or tqdm before 4.31 (Ubuntu 20.04's 4.30)
+        return text_tqdm(**kwargs)
+    try:
+        return tqdm(**kwargs)
+    except Exception:  # the widget cannot be built here: the text bar
+        return text_tqdm(**kwargs)
+
+
 def _follow(proc, progress):
     """Reads the program's stderr: progress lines move the bar, the others are kept."""
     bar, lines = None, []
@@ -95,11 +114,7 @@ def _follow(proc, progress):
         if m and progress:
             done, total = int(m.group(1)), int(m.group(2))
             if bar is None:
-                try:
-                    from tqdm.auto import tqdm  # a widget in notebooks
-                except ImportError:  # tqdm before 4.31 (Ubuntu 20.04's 4.30)
-                    from tqdm import tqdm
-                bar = tqdm(total=total, unit="sim", unit_scale=True, desc="sweep")
+                bar = _progress_bar(total)
             bar.update(done - bar.n)
         elif not m:
             lines.append(line.rstrip("\n"))
@@ -200,7 +215,9 @@ def sweep(config, backend="auto", precision="double", out=None, threads=None, pr
     try:
         if rc != 0:
             message = "\n".join(l for l in lines if l.startswith("sweep:") or l.startswith("usage")) or "\n".join(lines)
-            raise (ValueError if rc == 2 else RuntimeError)(message)
+            # 2: a refused file or option; 3: the backend cannot run here (no CUDA device): both the
+            # caller's choice to correct. A crash (a signal) stays a RuntimeError.
+            raise (ValueError if rc in (2, 3) else RuntimeError)(message)
         return read_results(folder, as_frame), read_summary(folder)
     finally:
         if not keep:

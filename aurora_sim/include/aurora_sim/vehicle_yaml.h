@@ -13,16 +13,12 @@
 #include "aurora_sim/ardrone_params.h"
 #include "aurora_sim/refusal_text.h"
 #include "aurora_sim/vehicle_keys.h"
+#include "aurora_sim/yaml_file.h"
 
 namespace aurora_sim {
 
 inline ArdroneParams<double> loadVehicleYaml(const std::string& path) {
-  YAML::Node root;
-  try {
-    root = YAML::LoadFile(path);
-  } catch (const YAML::Exception& e) {
-    throw ConfigError("vehicle file '" + path + "' cannot be read: " + e.what());
-  }
+  const YAML::Node root = loadYamlFile("vehicle file", path);
   ArdroneParams<double> p{};
   for (const VehicleKey& key : vehicleKeys()) {
     std::stringstream parts(key.name);

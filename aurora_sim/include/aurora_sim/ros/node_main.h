@@ -1,20 +1,49 @@
 // The whole of a node's main(): init, construct the node class with
 // (nh, private_nh), spin; a ConfigError ends the process with code 2 and
-// its message (ROS_FATAL).
+// its message (ROS_FATAL). A node that ends as planned (the sim at
+// stop_after: endAsPlanned()) or on Ctrl-C / SIGTERM (roslaunch stopping it)
+// exits 0; one shut down from outside before that (another node registered
+// under its name: a second launch on this master; rosnode kill) exits
+// kExitShutDownFromOutside, so a launch never calls such a run complete.
 #pragma once
 
 #include <ros/ros.h>
 
+#include <csignal>
 #include <cstdio>
 
 #include "aurora_sim/ros/params.h"
 
 namespace aurora_sim {
 
+constexpr int kExitShutDownFromOutside = 3;
+
+namespace node_main_detail {
+inline volatile std::sig_atomic_t& interrupted() {
+  static volatile std::sig_atomic_t flag = 0;
+  return flag;
+}
+inline bool& planned() {
+  static bool flag = false;
+  return flag;
+}
+// roscpp's own SIGINT handler does just this, without the flag.
+inline void onSignal(int) {
+  interrupted() = 1;
+  ros::requestShutdown();
+}
+}  // namespace node_main_detail
+
+// The node ends itself: its run is complete (the sim at stop_after).
+inline void endAsPlanned() {
+  node_main_detail::planned() = true;
+  ros::requestShutdown();
+}
+
 template <class Node>
 int runNode(int argc, char** argv, const char* name) {
   try {
-    ros::init(argc, argv, name);
+    ros::init(argc, argv, name, ros::init_options::NoSigintHandler);
   } catch (const ros::InvalidNameException& e) {
     // e.g. ns:="my drone": one line naming the fix, not an uncaught abort.
     std::fprintf(stderr, "%s: %s: use letters, digits, '_' and '/' (ns:=my_drone)\n", name, e.what());
@@ -24,8 +53,16 @@ int runNode(int argc, char** argv, const char* name) {
   // rosconsole down, which would swallow the fatal message below.
   ros::NodeHandle nh, private_nh("~");
   try {
+    std::signal(SIGINT, node_main_detail::onSignal);
+    std::signal(SIGTERM, node_main_detail::onSignal);
     Node node{nh, private_nh};
     ros::spin();
+    if (!node_main_detail::planned() && !node_main_detail::interrupted()) {
+      ROS_ERROR("%s: shut down from outside before its run ended (another node registered as %s: a second launch "
+                "on this master? or rosnode kill): exit status %d, the run is not complete",
+                name, ros::this_node::getName().c_str(), kExitShutDownFromOutside);
+      return kExitShutDownFromOutside;
+    }
   } catch (const ConfigError& e) {
     ROS_FATAL("%s: %s", name, e.what());
     return 2;
