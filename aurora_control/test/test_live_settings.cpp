@@ -80,6 +80,11 @@ TEST(LiveSettings, TheLinkChangesLiveWithTheFilesRules) {
   EXPECT_NE(check(s, "uplink_jitter", 2040).find("would exceed the history of 2047 samples"), std::string::npos);
   applyLiveChange(s, LiveChange{"downlink_burst", 2.0});
   EXPECT_NE(check(s, "downlink_loss", 0.9).find("accepted up to burst / (burst + 1) = 0.666667"), std::string::npos);
+  // Issue 31: a burst refused for the loss in force did not say that loss.
+  ControllerSettings lossy = pd();
+  applyLiveChange(lossy, LiveChange{"downlink_loss", 0.9});
+  EXPECT_EQ(check(lossy, "downlink_burst", 2.0),
+            "downlink_burst = 2: the loss 0.9 is refused with burst 2: accepted up to burst / (burst + 1) = 0.666667");
   applyLiveChange(s, LiveChange{"uplink_jitter", 3});
   applyLiveChange(s, LiveChange{"downlink_loss", 0.1});
   EXPECT_EQ(s.link.uplink.jitter, JitterKind::kUniform);  // a jitter on a link without a kind: uniform

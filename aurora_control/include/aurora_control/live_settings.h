@@ -81,7 +81,7 @@ inline std::string linkProblem(const ControllerSettings& now, const LiveChange& 
   const LinkParams next = withLinkChange(now.link, c);
   for (const LinkDirection* d : {&next.uplink, &next.downlink}) {
     const std::string chain = burstLossRefusal(*d);
-    if (!chain.empty()) return c.name + " = " + YamlReader::fmt(c.value) + ": the loss " + chain;
+    if (!chain.empty()) return c.name + " = " + YamlReader::fmt(c.value) + ": the loss " + YamlReader::fmt(d->loss) + " " + chain;
   }
   if (next.historyNeeded(now.delay) > kMaxDelaySamples) {
     return c.name + " = " + YamlReader::fmt(c.value) + " is refused: the delay plus the jitter would exceed the " +
