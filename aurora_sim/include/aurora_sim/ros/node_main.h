@@ -58,9 +58,10 @@ int runNode(int argc, char** argv, const char* name) {
     Node node{nh, private_nh};
     ros::spin();
     if (!node_main_detail::planned() && !node_main_detail::interrupted()) {
-      ROS_ERROR("%s: shut down from outside before its run ended (another node registered as %s: a second launch "
-                "on this master? or rosnode kill): exit status %d, the run is not complete",
-                name, ros::this_node::getName().c_str(), kExitShutDownFromOutside);
+      // stderr, not ROS_ERROR: ros::shutdown() has closed rosconsole by now.
+      std::fprintf(stderr, "%s: shut down from outside before its run ended (another node registered as %s: a "
+                   "second launch on this master? or rosnode kill): exit status %d, the run is not complete\n",
+                   name, ros::this_node::getName().c_str(), kExitShutDownFromOutside);
       return kExitShutDownFromOutside;
     }
   } catch (const ConfigError& e) {
