@@ -522,6 +522,13 @@ SweepSpec loadSweepFile(const std::string& path, const std::string& config_dir) 
                       "= " + aurora_control::delayRunText(spec.max_delay, iterations,
                                                                            spec.vehicle.Ts));
   }
+  // The largest delay plus the link's jitter (or its command path), as flight and the node refuse it.
+  const long latest = spec.historyNeeded();
+  if (!aurora_control::delayShorterThanRun(latest, iterations)) {
+    Reader(path).fail(spec.link_file.empty() ? "sweep.parameters" : "sweep.link",
+                      "gives packets that would never arrive: the latest (the largest delay plus the jitter, or the "
+                      "command path) is " + aurora_control::delayRunText(latest, iterations, spec.vehicle.Ts));
+  }
   return spec;
 }
 

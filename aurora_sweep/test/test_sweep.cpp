@@ -221,6 +221,10 @@ TEST(SweepFileRefusal, OtherMistakesAreNamed) {
   const std::string missing_link = refusal(std::string("sweep:\n  link: links/nowhere.yaml\n") + kGoodParams);
   EXPECT_NE(missing_link.find("'sweep.link' names a link file that is refused: link file"), std::string::npos)
       << missing_link;
+  const std::string late = refusal(std::string("sweep:\n") + kGoodParams + "    uplink_jitter: 1900\n");
+  EXPECT_NE(late.find("'sweep.parameters' gives packets that would never arrive: the latest (the largest delay plus "
+                      "the jitter, or the command path) is 1903 samples is not shorter than the run's"),
+            std::string::npos) << late;
   const std::string twice = refusal(std::string("sweep:\n  precision: float\n  precision: double\n") + kGoodParams);
   EXPECT_NE(twice.find("'sweep.precision' is given twice, on lines 2 and 3"), std::string::npos) << twice;
 }
