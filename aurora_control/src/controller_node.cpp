@@ -107,11 +107,8 @@ void ControllerNode::refuseDelayBeyondTheTask(long delay) const {
   if (!delayShorterThanRun(delay, task_iterations_)) {
     throw ConfigError("parameter '" + fullKey(pnh_, key) + "' = " + delayRunText(delay, task_iterations_, Ts_));
   }
-  const long latest = core_->settings.link.historyNeeded(delay);  // the delay plus the link's jitter
-  if (!delayShorterThanRun(latest, task_iterations_)) {
-    throw ConfigError("parameter '" + fullKey(pnh_, "link") + "': its latest packet (the delay plus the jitter, or "
-                      "the command path) is " + delayRunText(latest, task_iterations_, Ts_));
-  }
+  const std::string late = latestPacketRefusal(core_->settings.link, delay, task_iterations_, Ts_);
+  if (!late.empty()) throw ConfigError("parameter '" + fullKey(pnh_, "link") + "': " + late);
 }
 
 // The link for the start-up line: its name (~link_name, the launch's

@@ -354,6 +354,31 @@ bool recordedOverALink(const std::vector<aurora_msgs::Control>& controls) {
 
 
 
+// The replayed command of cycle `c` against the recorded one: the largest
+// difference, and whether every entry is identical. Where the joystick
+// replaced the command, the law's own command (command_unclamped) is compared.
+double commandDifference(const aurora_msgs::Control& c, const ControlOutput& out, bool& same) {
+  const double* mine = c.overridden ? out.U_unclamped : out.U;
+  const double* theirs = c.overridden ? c.command_unclamped.data() : c.command.data();
+  double diff = 0.0;
+  for (int i = 0; i < 4; ++i) {
+    diff = std::max(diff, std::fabs(mine[i] - theirs[i]));
+    same = same && mine[i] == theirs[i];
+  }
+  return diff;
+}
+
+// What the replay's configuration is against the recording's, for its summary.
+const char* configurationText(const Arguments& args, const std::vector<aurora_msgs::Control>& controls) {
+  if (args.o.any()) return " (changed configuration)";
+  if (!args.link_path.empty()) return " (recorded configuration over the link given)";
+  if (recordedOverALink(controls)) {
+    return " (recorded law and delay, but the ideal link: the bag was flown over an imperfect link; give it with "
+           "--link FILE)";
+  }
+  return " (recorded configuration)";
+}
+
 // Replays the bag of `args` and compares the commands; the exit status.
 int run(const Arguments& args) {
   const std::string &bag_path = args.bag_path, &out_path = args.out_path;
@@ -376,7 +401,6 @@ int run(const Arguments& args) {
   cycleSettings(recorded, o, iterations, recorded.task_duration, first);
   const std::unique_ptr<DelayedController<kCapacity>> core = makeCore(args, first);
   FILE* csv = out_path.empty() ? nullptr : openCommandsCsv(out_path);
-  const bool link_missing = args.link_path.empty() && recordedOverALink(controls);
   long identical = 0, cycles = 0, missing = 0;
   double max_diff = 0.0;
   long next_step = states.begin()->first;
@@ -394,17 +418,10 @@ int run(const Arguments& args) {
     }
     if (core->empty()) continue;
     cycleSettings(c, o, iterations, recorded.task_duration, core->settings);
-    // The law ran when the node says it did; where the joystick replaced
-    // the command, the law's own command (command_unclamped) is compared.
+    // The law ran when the node says it did.
     const ControlOutput out = c.law_ran ? core->compute(referenceFromMsg(c)) : core->hover();
-    const double* mine = c.overridden ? out.U_unclamped : out.U;
-    const double* theirs = c.overridden ? c.command_unclamped.data() : c.command.data();
-    double diff = 0.0;
     bool same = true;
-    for (int i = 0; i < 4; ++i) {
-      diff = std::max(diff, std::fabs(mine[i] - theirs[i]));
-      same = same && mine[i] == theirs[i];
-    }
+    const double diff = commandDifference(c, out, same);
     identical += same;
     max_diff = std::max(max_diff, diff);
     ++cycles;
@@ -418,12 +435,7 @@ int run(const Arguments& args) {
   if (csv) std::fclose(csv);
   const aurora_msgs::Control& last = controls.back();
   std::printf("replay: %s: %ld control cycles, %ld identical, %ld differ, max |dU| = %.6g%s\n",
-              ns.c_str(), cycles, identical, cycles - identical, max_diff,
-              o.any() ? " (changed configuration)"
-              : link_missing ? " (recorded law and delay, but the ideal link: the bag was flown over an imperfect link; "
-                               "give it with --link FILE)"
-                             : args.link_path.empty() ? " (recorded configuration)"
-                                                      : " (recorded configuration over the link given)");
+              ns.c_str(), cycles, identical, cycles - identical, max_diff, configurationText(args, controls));
   std::printf("replay: metrics recorded IAE %.10g ITAE %.10g IASC %.10g; replayed (open loop on "
               "the recorded states) IAE %.10g ITAE %.10g IASC %.10g\n",
               last.iae, last.itae, last.iasc, last_iae, last_itae, last_iasc);

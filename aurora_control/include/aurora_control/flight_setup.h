@@ -45,11 +45,8 @@ inline FlightSetup loadFlight(const FlightFiles& f) {
   if (!delayShorterThanRun(s.settings.delay, s.steps)) {
     throw ConfigError("--delay " + delayRunText(s.settings.delay, s.steps, s.vehicle.Ts));
   }
-  const long latest = s.settings.link.historyNeeded(s.settings.delay);  // the delay plus the link's jitter
-  if (!delayShorterThanRun(latest, s.steps)) {
-    throw ConfigError("--link " + f.link + ": its latest packet (the delay plus the jitter, or the command path) is " +
-                      delayRunText(latest, s.steps, s.vehicle.Ts));
-  }
+  const std::string late = latestPacketRefusal(s.settings.link, s.settings.delay, s.steps, s.vehicle.Ts);
+  if (!late.empty()) throw ConfigError("--link " + f.link + ": " + late);
   return s;
 }
 

@@ -9,11 +9,10 @@
 // offline runner's bit for bit.
 #pragma once
 
-#include <cmath>
-
 #include "aurora_control/delayed_controller.h"
 #include "aurora_control/formation_layer.h"
 #include "aurora_control/formation_runner.h"
+#include "aurora_sim/command_mapping.h"
 
 namespace aurora_control {
 
@@ -90,7 +89,7 @@ class FormationController {
     for (int d = 0; d < kDrones; ++d) {
       t.ref[d] = heldReference(layer_, d);
       t.out[d] = core_[d].compute(t.ref[d]);
-      if (t.not_finite < 0 && !finiteCommand(t.out[d].U)) t.not_finite = d;
+      if (t.not_finite < 0 && !aurora_sim::allFinite(t.out[d].U, 4)) t.not_finite = d;
     }
     // A NaN or infinite command never reaches a drone (the layer is singular
     // where the drones are level, line_formation.h): both hover, as the
@@ -119,13 +118,6 @@ class FormationController {
   void startLayer() {
     startLayerAt(run_, start_, layer_);
     last_k_ = -1;
-  }
-
-  static bool finiteCommand(const double U[4]) {
-    for (int i = 0; i < 4; ++i) {
-      if (!std::isfinite(U[i])) return false;
-    }
-    return true;
   }
 
   FormationRun<double, Line> run_;

@@ -226,11 +226,8 @@ inline void refuseFormationDelays(const FormationRun<double, LineFormation<doubl
     if (!delayShorterThanRun(run.drone[d].delay, ticks)) {
       throw ConfigError(keys[d] + " = " + delayRunText(run.drone[d].delay, ticks, Ts));
     }
-    const long latest = run.drone[d].link.historyNeeded(run.drone[d].delay);  // with its link's jitter
-    if (!delayShorterThanRun(latest, ticks)) {
-      throw ConfigError(keys[d] + " with drone " + std::to_string(d + 1) + "'s link: its latest packet is " +
-                        delayRunText(latest, ticks, Ts));
-    }
+    const std::string late = latestPacketRefusal(run.drone[d].link, run.drone[d].delay, ticks, Ts);
+    if (!late.empty()) throw ConfigError(keys[d] + " with drone " + std::to_string(d + 1) + "'s link: " + late);
   }
 }
 

@@ -101,6 +101,16 @@ inline std::string delayOriginText(long given, const LinkParams& link) {
   return out;
 }
 
+// A run's latest packet over `link` with the uplink delay `delay` (its
+// delay plus the jitter, or the command path: LinkParams::historyNeeded)
+// must arrive within the run of `iterations` steps, as the delay itself
+// must (limits.h, delayShorterThanRun). "" or the refusal, to follow the key.
+inline std::string latestPacketRefusal(const LinkParams& link, long delay, long iterations, double Ts) {
+  const long latest = link.historyNeeded(delay);
+  if (delayShorterThanRun(latest, iterations)) return "";
+  return "its latest packet (the delay plus the jitter, or the command path) is " + delayRunText(latest, iterations, Ts);
+}
+
 // A link in one line, for logs (every value that defines it).
 inline std::string linkText(const LinkParams& l) {
   std::string out;

@@ -63,8 +63,7 @@ def series_of(drones, ticks, states, ts):
     s = {k: [] for k in ("k", "t", "Q", "Qd", "e_position", "e_shape", "distance")}
     for d in drones:
         s[d] = {"pos": [], "ref": [], "track": []}
-    last = min(ticks)
-    count = getattr(ticks[last], "ticks", 0)  # 0 in bags recorded before the field: every tick
+    count = getattr(ticks[min(ticks)], "ticks", 0)  # 0 in bags recorded before the field: every tick
     for k in sorted(ticks):
         if count and k >= count:
             break  # the formation's ticks are 0 .. ticks - 1 (flight --formation's); later states are after its end

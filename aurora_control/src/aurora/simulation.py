@@ -82,7 +82,7 @@ def simulate(controller, task, vehicle=None, delay=None, link=None, clamp=True):
     samples. Over `link`, a given delay replaces the link's uplink delay and
     None keeps it (docs/links.md, "A delay beside a link"); without a link
     None is 0."""
-    delay = -1 if delay is None else whole(delay, "delay")
+    delay = _core.DELAY_NOT_GIVEN if delay is None else whole(delay, "delay")
     clamp = boolean(clamp, "clamp")
     with tempfile.TemporaryDirectory() as tmp:
         files = [_as_file(v, k, tmp) for v, k in ((controller, "controller"), (task, "task"),

@@ -23,6 +23,7 @@ import threading
 
 from aurora.arguments import plain, whole
 from aurora.simulation import config_dir
+from aurora.widgets_compat import old_ipywidgets
 
 _PROGRESS = re.compile(r"^sweep: (\d+)/(\d+) \(")
 
@@ -93,12 +94,11 @@ def _progress_bar(total):
     text bar rather than a traceback and no bar."""
     from tqdm import tqdm as text_tqdm
     kwargs = dict(total=total, unit="sim", unit_scale=True, desc="sweep")
+    if old_ipywidgets():
+        return text_tqdm(**kwargs)
     try:
-        import ipywidgets
-        if int(ipywidgets.__version__.split(".")[0]) < 7:
-            return text_tqdm(**kwargs)
         from tqdm.auto import tqdm  # a widget in notebooks
-    except ImportError:  # no ipywidgets, or tqdm before 4.31 (Ubuntu 20.04's 4.30)
+    except ImportError:  # tqdm before 4.31 (Ubuntu 20.04's 4.30)
         return text_tqdm(**kwargs)
     try:
         return tqdm(**kwargs)

@@ -13,15 +13,20 @@ or outside a kernel."""
 import sys
 
 
-def apply():
-    if "ipykernel" not in sys.modules:
-        return
+def old_ipywidgets():
+    """ipywidgets before 7 (Debian 12's 6, Ubuntu 20.04's 6) is installed."""
     try:
         import ipywidgets
-        from ipywidgets.widgets import widget
     except ImportError:
+        return False
+    return int(ipywidgets.__version__.split(".")[0]) < 7
+
+
+def apply():
+    if "ipykernel" not in sys.modules or not old_ipywidgets():
         return
-    if int(ipywidgets.__version__.split(".")[0]) >= 7 or getattr(widget.Widget.open, "aurora", False):
+    from ipywidgets.widgets import widget
+    if getattr(widget.Widget.open, "aurora", False):
         return
 
     def open_with_state(self):

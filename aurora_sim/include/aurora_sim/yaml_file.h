@@ -45,19 +45,6 @@ inline void refuseDuplicates(const YAML::Node& n, const std::string& where, cons
 
 }  // namespace yaml_detail
 
-// The root of the YAML text `text`; `what` names it in a refusal ("link
-// file 'x.yaml'", "parameter '/ns/link'").
-inline YAML::Node parseYaml(const std::string& what, const std::string& text) {
-  YAML::Node root;
-  try {
-    root = YAML::Load(text);
-  } catch (const YAML::Exception& e) {
-    throw ConfigError(what + " is not valid YAML: " + e.what());
-  }
-  yaml_detail::refuseDuplicates(root, "", what);
-  return root;
-}
-
 // The root of the YAML file at `path`; `what` names the file's kind in the
 // refusal ("link file 'x.yaml' cannot be read: ...").
 inline YAML::Node loadYamlFile(const std::string& what, const std::string& path) {
