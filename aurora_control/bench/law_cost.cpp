@@ -24,7 +24,7 @@ int main() {
   set.vehicle = p;
   std::vector<std::array<double, aurora_sim::kStateSize>> states;
   runFlight(p, set, task, studyIterationCount(60.0, p.Ts),
-            [&](const LoopObservation<double>& o, double) {
+            [&](const FlightObservation& o, double) {
               std::array<double, aurora_sim::kStateSize> x;
               std::copy(o.after.model.X, o.after.model.X + aurora_sim::kStateSize, x.begin());
               states.push_back(x);

@@ -108,7 +108,7 @@ class SegmentErrors {
 const char* kCsvHeader =
     "step,t,x,y,z,phi,theta,psi,dx,dy,dz,dphi,dtheta,dpsi,u1,u2,u3,u4,xd,yd,zd,error\n";
 
-void writeCsvRow(FILE* csv, const LoopObservation<double>& o, double t, double error) {
+void writeCsvRow(FILE* csv, const FlightObservation& o, double t, double error) {
   std::fprintf(csv, "%ld,%.17g", o.k, t);
   for (int i = 0; i < aurora_sim::kStateSize; ++i) std::fprintf(csv, ",%.17g", o.X_before[i]);
   for (int i = 0; i < aurora_sim::kCommandSize; ++i) std::fprintf(csv, ",%.17g", o.step.U[i]);
@@ -128,7 +128,7 @@ void run(const Options& o) {
   if (csv) std::fprintf(csv, "%s", kCsvHeader);
   SegmentErrors segments(task);
   const auto t0 = std::chrono::steady_clock::now();
-  const FlightResult r = runFlight(p, set, task, n, [&](const LoopObservation<double>& o, double e) {
+  const FlightResult r = runFlight(p, set, task, n, [&](const FlightObservation& o, double e) {
     segments.add(o.k, p.Ts, e);
     if (csv) writeCsvRow(csv, o, taskTime(o.k, p.Ts), e);
   });

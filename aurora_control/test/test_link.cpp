@@ -217,7 +217,7 @@ TEST(Link, AnIdealLinkThroughTheModelIsTodaysLoopBitForBit) {
   set.delay = 7;
   Task<double> task = positioningTask(2.0, 1.0, 2.0, 20.0);
   std::vector<double> ideal, model;
-  runFlight(p, set, task, 601, [&](const LoopObservation<double>& o, double) {
+  runFlight(p, set, task, 601, [&](const FlightObservation& o, double) {
     ideal.insert(ideal.end(), o.after.model.X, o.after.model.X + 12);
   });
   // The same through ModelLink: a loss of 0 with a seed is not ideal() (a
@@ -225,7 +225,7 @@ TEST(Link, AnIdealLinkThroughTheModelIsTodaysLoopBitForBit) {
   set.link.seed = 99;
   set.link.uplink.jitter = JitterKind::kUniform;  // max 0: the model path, no jitter
   ASSERT_FALSE(set.link.ideal());
-  runFlight(p, set, task, 601, [&](const LoopObservation<double>& o, double) {
+  runFlight(p, set, task, 601, [&](const FlightObservation& o, double) {
     model.insert(model.end(), o.after.model.X, o.after.model.X + 12);
   });
   ASSERT_EQ(ideal.size(), model.size());
@@ -242,11 +242,11 @@ TEST(Link, ALossyLinkChangesTheFlightAndIsRepeatable) {
   Task<double> task = positioningTask(2.0, 1.0, 2.0, 20.0);
   set.link = readLinkFile(std::string(AURORA_CONFIG_DIR) + "/links/wifi_congested.yaml");
   set.delay = set.link.uplink.delay;
-  const FlightResult a = runFlight(p, set, task, 601, [](const LoopObservation<double>&, double) {});
-  const FlightResult b = runFlight(p, set, task, 601, [](const LoopObservation<double>&, double) {});
+  const FlightResult a = runFlight(p, set, task, 601, [](const FlightObservation&, double) {});
+  const FlightResult b = runFlight(p, set, task, 601, [](const FlightObservation&, double) {});
   EXPECT_EQ(a.itae, b.itae);
   set.link = LinkParams();
-  const FlightResult ideal = runFlight(p, set, task, 601, [](const LoopObservation<double>&, double) {});
+  const FlightResult ideal = runFlight(p, set, task, 601, [](const FlightObservation&, double) {});
   EXPECT_NE(a.itae, ideal.itae);
 }
 
@@ -288,7 +288,7 @@ TEST(Link, TheNodesCoreOverALinkIsTheRunners) {
   node->settings = set;
   node->configureLink();
   long differ = 0, hovered = 0;
-  const FlightResult r = runFlight(p, set, task, 901, [&](const LoopObservation<double>& o, double) {
+  const FlightResult r = runFlight(p, set, task, 901, [&](const FlightObservation& o, double) {
     StateSample s;
     s.step = o.k;
     for (int i = 0; i < aurora_sim::kStateSize; ++i) s.X[i] = o.X_before[i];

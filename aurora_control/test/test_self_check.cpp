@@ -79,7 +79,7 @@ TEST(Runner, ClampOptionBoundsCommands) {
   cfg.clamp_commands = true;
   double max_abs = 0.0;
   runPositioning(p, cfg, PdGains<double>{0.75, 1.0}, 10,
-                 [&](const LoopObservation<double>& o) {
+                 [&](const FlightObservation& o) {
                    for (int i = 0; i < 4; ++i) max_abs = std::max(max_abs, std::fabs(o.step.U[i]));
                  });
   EXPECT_LE(max_abs, 1.0);

@@ -91,8 +91,8 @@ class CudaEvent {
 };
 
 template <aurora_control::LawType Law, typename T, int Capacity, bool Linked>
-__global__ void sweepKernel(SimSetup<T> setup, GridView grid, long first, long n, SimResult* out) {
-  sweepThread<Law, T, Capacity, Linked>(setup, grid, first, n, out, blockIdx.x, blockDim.x, threadIdx.x);
+__global__ void sweepKernel(SweepSetup<T> setup, GridView grid, long first, long n, SimResult* out) {
+  sweepThread<aurora_control::ArdroneLaw<Law>, T, Capacity, Linked>(setup, grid, first, n, out, blockIdx.x, blockDim.x, threadIdx.x);
 }
 
 // A formation sweep's kernel: one formation per thread; its setup (the
@@ -200,7 +200,7 @@ template <aurora_control::LawType Law, typename T, int Capacity, bool Linked>
 CudaRun launch(const SweepSpec& spec, int block_size, std::vector<SimResult>& out) {
   using Clock = std::chrono::steady_clock;
   const auto t0 = Clock::now();
-  const SimSetup<T> setup = makeSetup<T>(spec);
+  const SweepSetup<T> setup = makeSetup<T>(spec);
   const long first = spec.rangeBegin(), n = spec.rangeSize();
   const DeviceGrid grid(spec.view(), first, n);
   CudaRun run;

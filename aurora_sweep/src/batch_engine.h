@@ -25,18 +25,23 @@ inline void sinCos(const batch<T, A>& x, batch<T, A>& s, batch<T, A>& c) {
   s = sc.first;
   c = sc.second;
 }
+// Each lane's iteration number as a batch of T (aurora_control::loopIteration).
+template <class T, class A>
+inline void iterationNumber(const batch<as_integer_t<T>, A>& k, batch<T, A>& out) {
+  out = batch_cast<T>(k);
+}
 }  // namespace xsimd
 
 #include <algorithm>
 #include <cmath>
 #include <memory>
 #include <thread>
+#include <type_traits>
 #include <vector>
 
 #include "aurora_control/delay_buffer.h"
 #include "aurora_sweep/backends.h"
-#include "gather_lanes.h"
-#include "lane_links.h"
+#include "lane_history.h"
 
 namespace aurora_sweep {
 
@@ -79,31 +84,28 @@ struct Lanes {
   }
 };
 
-template <typename T, class Arch, int Capacity, aurora_control::LawType Law>
+// Runs the combinations [first, total) of `grid` on the lanes of batches of
+// instruction set Arch, law `Law` on its vehicle (setup), histories of
+// Capacity samples; each lane's iteration is loopIteration (closed_loop.h)
+// over lane policies (lane_history.h).
+template <typename T, class Arch, int Capacity, class Law>
 class BatchWorker {
  public:
   using LaneOps = Lanes<T, Arch>;
   using B = typename LaneOps::B;
   using M = typename LaneOps::M;
   static constexpr int L = LaneOps::L;
-  // Integer lanes of the same width (int32 for float, int64 for double), for
-  // the per-lane history indices: gathers and scatters instead of lane loops.
-  using Int = xsimd::as_integer_t<T>;
-  using I = xsimd::batch<Int, typename LaneOps::Arch>;
-  // What the history keeps of a state: what the law reads (6 or 12).
-  using Input = aurora_control::LawInput<Law>;
-  static constexpr int W = Input::kWidth;
-  static_assert((Capacity & (Capacity - 1)) == 0, "history capacity must be a power of two");
+  using Vehicle = typename Law::Vehicle;
+  using Data = typename Law::Data;
+  using History = LaneHistory<Law, T, Arch, Capacity>;
+  using Int = typename History::Int;
+  using I = typename History::I;
 
-  BatchWorker(const SweepSpec& spec, std::vector<SimResult>& out, std::atomic<long>& next,
-              Progress& progress)
-      : grid_(spec.view()), first_(spec.rangeBegin()), total_(spec.rangeEnd()), out_(out), next_(next),
-        progress_(progress), setup_(makeSetup<T>(spec)) {
-    if (!setup_.ideal_link && laneLinksApply(setup_.config.link)) {
-      lane_links_.reset(new LaneLinks<Capacity, T, Arch>(std::lround(setup_.config.link.cmd_timeout / double(setup_.model.Ts))));
-    } else if (!setup_.ideal_link) {
-      links_.reserve(L);
-      for (int l = 0; l < L; ++l) links_.emplace_back(setup_.config.link, 0, 0, double(setup_.model.Ts));
+  BatchWorker(const SimSetup<Vehicle, T>& setup, const GridView& grid, long first, long total,
+              std::vector<SimResult>& out, std::atomic<long>& next, Progress& progress)
+      : grid_(grid), first_(first), total_(total), out_(out), next_(next), progress_(progress), setup_(setup) {
+    if (!setup_.ideal_link) {
+      links_.reset(new LaneModelLinks<Law, T, Arch, Capacity>(setup_.config.link, double(setup_.model.Ts), history_));
     }
     loop_.model = setup_.model.template cast<B>();
     loop_.plant = loop_.model;  // per lane when the model varies (startLane)
@@ -114,10 +116,6 @@ class BatchWorker {
     fresh_.reset(start.pos);
     const B start_pos[3] = {B(start.pos[0]), B(start.pos[1]), B(start.pos[2])};
     sim_.reset(start_pos);
-    history_.resize(static_cast<size_t>(Capacity) * W * L);
-    alignas(64) Int iota[L];
-    for (int l = 0; l < L; ++l) iota[l] = static_cast<Int>(l);
-    lane_ = I::load_aligned(iota);
   }
 
   void run() {
@@ -131,8 +129,6 @@ class BatchWorker {
   }
 
  private:
-  T& hist(long slot, int j, int lane) { return history_[(slot * W + j) * L + lane]; }
-
   bool takeIndex(long& index) {
     if (chunk_next_ >= chunk_end_) {
       chunk_next_ = next_.fetch_add(kChunk, std::memory_order_relaxed);
@@ -151,11 +147,13 @@ class BatchWorker {
   }
 
   // Lane `lane` of every field of a struct of batches set from the struct of
-  // scalars (gains, model parameters, the law's memory: structs of T only).
+  // scalars (gains, model parameters, the law's memory: structs of T only,
+  // or empty).
   template <template <class> class S>
   static void setLane(S<B>& batches, int lane, const S<T>& scalars) {
-    constexpr size_t n = sizeof(S<T>) / sizeof(T);
-    static_assert(sizeof(S<T>) == n * sizeof(T) && sizeof(S<B>) == n * sizeof(B), "a struct of T only");
+    constexpr bool kEmpty = std::is_empty<S<T>>::value;
+    constexpr size_t n = kEmpty ? 0 : sizeof(S<T>) / sizeof(T);
+    static_assert(kEmpty || (sizeof(S<T>) == n * sizeof(T) && sizeof(S<B>) == n * sizeof(B)), "a struct of T only");
     B* to = reinterpret_cast<B*>(&batches);
     const T* from = reinterpret_cast<const T*>(&scalars);
     for (size_t i = 0; i < n; ++i) LaneOps::set(to[i], lane, from[i]);
@@ -167,18 +165,15 @@ class BatchWorker {
     long index = first_;
     const bool have = takeIndex(index);
     const Combination c = grid_.decode(have ? index : first_);
-    const aurora_control::StudyRun<T> run = studyRun(setup_, c);
-    if (lane_links_) {
-      lane_links_->start(l, combinationLink(setup_.config.link, run.delay, c), static_cast<uint64_t>(c.key));
-    } else if (!setup_.ideal_link) {
-      links_[l] = Link(combinationLink(setup_.config.link, run.delay, c), run.delay, static_cast<uint64_t>(c.key),
-                       double(setup_.model.Ts));
+    const aurora_control::StudyRun<Data, T> run = studyRun<Law>(setup_, c);
+    if (links_) {
+      links_->startLane(l, combinationLink(setup_.config.link, run.delay, c), run.delay, static_cast<uint64_t>(c.key),
+                        double(setup_.model.Ts));
     }
     active_[l] = have;
     index_[l] = index;
-    LaneOps::set(delay_, l, static_cast<Int>(run.delay));
-    LaneOps::set(count_, l, 1);  // history holds H(1) ...
-    LaneOps::set(start_, l, static_cast<Int>(step_ % Capacity));  // ... at ring slot `step_`
+    LaneOps::set(ideal_.delay, l, static_cast<Int>(run.delay));
+    history_.startLane(l);
     setLane(loop_.gains, l, run.gains);
     if (setup_.varies_model) setLane(loop_.plant, l, run.plant);
     setLane(sim_.model, l, fresh_.model);
@@ -189,88 +184,38 @@ class BatchWorker {
     LaneOps::set(sim_.metrics.iasc, l, T(0));
     LaneOps::set(sim_.t, l, T(0));
     LaneOps::set(sim_.initial_error, l, fresh_.initial_error);
-    const auto h0 = aurora_control::LawSample<T, Law>::fromState(fresh_.model.X);
-    const long slot = step_ % Capacity;
-    for (int j = 0; j < W; ++j) hist(slot, j, l) = h0.v[j];
   }
 
   // Lane l's run as a scalar sim, assembled into its result by the runner's
   // own rule (runnerResult).
   void finishLane(int l) {
-    aurora_control::LoopState<T, bool> lane;
+    aurora_control::LoopState<Data, T, bool> lane;
     for (int i = 0; i < 4; ++i) lane.metrics.ok[i] = LaneOps::get(sim_.metrics.ok[i], l);
     lane.metrics.iae = LaneOps::get(sim_.metrics.iae, l);
     lane.metrics.itae = LaneOps::get(sim_.metrics.itae, l);
     lane.metrics.iasc = LaneOps::get(sim_.metrics.iasc, l);
-    for (int i = 0; i < aurora_sim::kStateSize; ++i) lane.model.X[i] = LaneOps::get(sim_.model.X[i], l);
-    const long steps = LaneOps::get(count_, l) - 1;
+    for (int i = 0; i < Vehicle::kStates; ++i) lane.model.X[i] = LaneOps::get(sim_.model.X[i], l);
+    const long steps = LaneOps::get(history_.size(), l);
     out_[index_[l] - first_] = compactResult(aurora_control::runnerResult(lane, steps));
     progress_.fetch_add(1, std::memory_order_relaxed);
   }
 
-  // Each lane's iteration k = count - 1.
-  void laneSteps(long k[L]) const {
-    alignas(64) Int c[L];
-    count_.store_aligned(c);
-    for (int l = 0; l < L; ++l) k[l] = long(c[l]) - 1;
+  // Each lane's iteration k (loopIteration), over the delay rule or its link.
+  M iterate() {
+    const I k = history_.size();
+    const aurora_control::NoObserver none;
+    const bool early = setup_.config.early_stop;
+    if (links_) return aurora_control::loopIteration<Law>(loop_, setup_.config.task, clamp_, early, k, history_,
+                                                          *links_, sim_, none);
+    return aurora_control::loopIteration<Law>(loop_, setup_.config.task, clamp_, early, k, history_, ideal_, sim_,
+                                              none);
   }
 
-  // Over a link: each lane's history index (1-based) of the state its
-  // controller receives at its iteration k.
-  I linkedHistoryIndex() {
-    if (lane_links_) return lane_links_->uplink(count_, start_, step_);
-    long k[L];
-    laneSteps(k);
-    return modelLinksUplink<I>(links_, k);
-  }
-
-  // Over a link: each lane's sent command U becomes the one its drone
-  // receives (the newest arrived, or hover).
-  void linkCommands(B U[4]) {
-    if (lane_links_) return lane_links_->downlink(count_, start_, step_, U);
-    long k[L];
-    laneSteps(k);
-    modelLinksDownlink(links_, k, U);
-  }
-
-  // Loop steps 2-5, the closed loop's iteration k on every lane: both halves
-  // at once over an ideal link, else the link between them.
-  void loopStep(const B& k, const B xc[aurora_sim::kStateSize]) {
-    if (setup_.ideal_link) {
-      aurora_control::closedLoopStep<Law>(loop_, setup_.config.task, clamp_, k, xc, sim_);
-      return;
-    }
-    B U[4], applied[4];
-    const aurora_control::Reference<B> ref =
-        aurora_control::controllerHalf<Law>(loop_, setup_.config.task, clamp_, k, xc, sim_, U);
-    linkCommands(U);
-    aurora_control::droneHalf(loop_, clamp_, ref, U, sim_, applied);
-  }
-
+  // One iteration on every lane; a lane whose run ended (its last
+  // iteration ran, or a check failed with early stop) takes the next.
   void step() {
-    // Loop step 1: the delayed sample of each lane, by the delay rule
-    // (delay_buffer.h, the same function on integer lanes; k = count) or
-    // the lane's link, gathered from the ring. All lanes write at the same
-    // slot each step (a plain vector store); lane l's H(i) sits at slot
-    // start_l + i - 1.
-    const I one(Int(1));
-    const I mask(Int(Capacity - 1));
-    const I index = setup_.ideal_link ? aurora_control::delayedHistoryIndex(count_, delay_)
-                                      : linkedHistoryIndex();  // 1-based
-    const I read_base = ((start_ + index - one) & mask) * I(Int(W * L)) + lane_;
-    aurora_control::LawSample<B, Law> delayed;
-    for (int j = 0; j < W; ++j) delayed.v[j] = gatherLanes<B>(history_.data(), read_base + I(Int(j * L)));
-    B xc[aurora_sim::kStateSize];
-    delayed.toState(xc);
-    loopStep(xsimd::batch_cast<T>(count_ - one), xc);
-    // Step 6: append X to every lane's history, H(count + 1) at slot step_ + 1.
-    ++step_;
-    const long slot = step_ % Capacity;
-    for (int j = 0; j < W; ++j) sim_.model.X[Input::state(j)].store_aligned(&hist(slot, j, 0));
-    count_ = count_ + one;
-    // Lanes whose simulation ended: the last iteration ran, or a check failed.
-    const M ended = xsimd::bool_cast(count_ - one >= I(static_cast<Int>(setup_.iterations))) |
-                    aurora_control::stoppedEarly(setup_.config.early_stop, sim_.metrics.feasible());
+    const M stopped = iterate();  // before the count below: the iteration pushes
+    const M ended = stopped | xsimd::bool_cast(history_.size() >= I(static_cast<Int>(setup_.iterations)));
     if (!xsimd::any(ended)) return;
     alignas(64) bool ended_lanes[L];
     ended.store_aligned(ended_lanes);
@@ -290,23 +235,17 @@ class BatchWorker {
   Progress& progress_;
   long chunk_next_ = 0, chunk_end_ = 0;
 
-  const SimSetup<T> setup_;
-  // Each lane's drone and gains; the nominal model the underactuated law inverts.
-  aurora_control::LoopParams<B> loop_;
+  const SimSetup<Vehicle, T> setup_;
+  // Each lane's vehicle and gains; the nominal model the law inverts.
+  aurora_control::LoopParams<Data, B> loop_;
   const aurora_control::ClampPolicy clamp_{setup_.config.clamp_commands, setup_.config.clamp_at_drone};
-  aurora_control::LoopState<T, bool> fresh_;
-  aurora_control::LoopState<B, M> sim_;
-  std::vector<T, xsimd::aligned_allocator<T, 64>> history_;  // [slot][W][lane]
-  using Link = aurora_control::ModelLink<Capacity, T>;
-  std::unique_ptr<LaneLinks<Capacity, T, Arch>> lane_links_;  // over a link: every lane's, vectorized ...
-  std::vector<Link> links_;  // ... or each lane's ModelLink (a geometric jitter); both empty over an ideal link
+  aurora_control::LoopState<Data, T, bool> fresh_;
+  aurora_control::LoopState<Data, B, M> sim_;
+  History history_;
+  aurora_control::IdealLinkOf<I> ideal_{I(Int(0))};        // each lane's delay [samples], over the delay rule
+  std::unique_ptr<LaneModelLinks<Law, T, Arch, Capacity>> links_;  // or each lane's link model
   bool active_[L];
   long index_[L];
-  I delay_ = I(Int(0));  // delay of each lane [samples]
-  I count_ = I(Int(1));  // history size of each lane (the iteration k about to run)
-  I start_ = I(Int(0));  // ring slot of each lane's H(1)
-  I lane_;               // 0, 1, ..., L - 1
-  long step_ = 0;        // batch steps done: the ring slot written last
 };
 
 }  // namespace
@@ -319,18 +258,20 @@ namespace aurora_sweep {
 
 namespace {
 
-template <typename T, class Arch, int Capacity, aurora_control::LawType Law>
+template <typename T, class Arch, int Capacity, class Law>
 void runBatchWith(const SweepSpec& spec, int threads, std::vector<SimResult>& out,
                   Progress& progress) {
   out.resize(spec.rangeSize());
   std::atomic<long> next{spec.rangeBegin()};
   std::vector<std::thread> pool;
+  const GridView grid = spec.view();
+  const SweepSetup<T> setup = makeSetup<T>(spec);
   for (int t = 0; t < threads; ++t) {
     pool.emplace_back([&] {
       if (spec.formation()) {
-        FormationBatch<T, Arch, Capacity, Law>(spec, out, next, progress).run();
+        FormationBatch<T, Arch, Capacity, Law::value>(spec, out, next, progress).run();
       } else {
-        BatchWorker<T, Arch, Capacity, Law>(spec, out, next, progress).run();
+        BatchWorker<T, Arch, Capacity, Law>(setup, grid, spec.rangeBegin(), spec.rangeEnd(), out, next, progress).run();
       }
     });
   }
@@ -344,7 +285,7 @@ template <class Arch>
 void runBatchArch(const SweepSpec& spec, int threads, std::vector<SimResult>& out,
                   Progress& progress) {
   withSweepTypes(spec, [&](auto type, auto capacity, auto law) {
-    runBatchWith<decltype(type), Arch, decltype(capacity)::value, decltype(law)::value>(spec, threads, out,
+    runBatchWith<decltype(type), Arch, decltype(capacity)::value, decltype(law)>(spec, threads, out,
                                                                                       progress);
   });
 }

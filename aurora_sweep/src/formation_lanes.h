@@ -114,7 +114,7 @@ class FormationBatch {
       else if (lane_links_[d]) index = lane_links_[d]->uplink(count, I(Int(0)), k);
       else index = modelLinksUplink<I>(links_[d], everyLaneTicks(k).k);
       const I base = ((index - I(Int(1))) & mask) * I(Int(W * L)) + lane_;
-      aurora_control::LawSample<B, Law> delayed;
+      aurora_control::LawSample<B, aurora_control::ArdroneLaw<Law>> delayed;
       for (int j = 0; j < W; ++j) delayed.v[j] = gatherLanes<B>(history_[d].data(), base + I(Int(j * L)));
       delayed.toState(xc[d]);
     }
@@ -134,10 +134,10 @@ class FormationBatch {
   void downlink(int d, long k, B U[4]) {
     if (setup_.ideal_link) return;
     if (lane_links_[d]) return lane_links_[d]->downlink(I(static_cast<Int>(k + 1)), I(Int(0)), k, U);
-    modelLinksDownlink(links_[d], everyLaneTicks(k).k, U);
+    modelLinksDownlink<aurora_sim::kCommandSize>(links_[d], everyLaneTicks(k).k, U);
   }
 
-  void push(long k, const aurora_control::LoopState<B, M>* state) {
+  void push(long k, const aurora_control::DroneState<B, M>* state) {
     const long slot = k % Capacity;
     for (int d = 0; d < D; ++d) {
       for (int j = 0; j < W; ++j) state[d].model.X[Input::state(j)].store_aligned(&history_[d][(slot * W + j) * L]);
@@ -148,8 +148,8 @@ class FormationBatch {
     aurora_control::FormationRun<B, Line> run;
     startLanes(first, count, run);
     aurora_control::FormationLayer<B, Line> layer(run.law, run.gains, B(T(run.period_steps) * setup_.run.drone[0].plant.Ts));
-    aurora_control::LoopParams<B> params[D];
-    aurora_control::LoopState<B, M> state[D];
+    aurora_control::DroneParams<B> params[D];
+    aurora_control::DroneState<B, M> state[D];
     aurora_control::startFormation(run, params, state, layer);
     aurora_control::FormationMetrics<B, M, Line> metrics;
     metrics.reset();
@@ -166,7 +166,7 @@ class FormationBatch {
 
   // Tick k on every lane; true when every lane has ended.
   bool tick(long k, const aurora_control::FormationRun<B, Line>& run, aurora_control::FormationLayer<B, Line>& layer,
-            const aurora_control::LoopParams<B>* params, aurora_control::LoopState<B, M>* state,
+            const aurora_control::DroneParams<B>* params, aurora_control::DroneState<B, M>* state,
             aurora_control::FormationMetrics<B, M, Line>& metrics, const aurora_control::FormationCriteria<B>& criteria,
             long first, bool* ended) {
     const T Ts = setup_.run.drone[0].plant.Ts;
@@ -186,7 +186,7 @@ class FormationBatch {
       aurora_control::LineFormation<T>::positions(qd, xd);
       for (int i = 0; i < 6; ++i) Qd[i] = B(qd[i]), Xd_[i] = B(xd[i]);
     }
-    aurora_control::LoopStep<B> step[D];
+    aurora_control::DroneStep<B> step[D];
     aurora_control::formationTick<Law>(params, setup_.run.clamp, layer, due ? Qd : nullptr, B(T(k)), xc, state, step,
                                        [&](int d, B U[4]) { downlink(d, k, U); });
     metrics.add(criteria, X, Xd_, B(aurora_control::taskTime(T(k), Ts)), B(Ts));
@@ -195,7 +195,7 @@ class FormationBatch {
 
   // Lanes whose check failed (early stop) end at tick k.
   bool endLanes(long k, long first, const aurora_control::FormationMetrics<B, M, Line>& metrics,
-                const aurora_control::LoopState<B, M>* state, bool* ended) {
+                const aurora_control::DroneState<B, M>* state, bool* ended) {
     if (!setup_.early_stop) return false;
     alignas(64) bool ok[L];
     metrics.feasible().store_aligned(ok);
@@ -208,7 +208,7 @@ class FormationBatch {
   }
 
   void finishLane(int l, long first, const aurora_control::FormationMetrics<B, M, Line>& m,
-                  const aurora_control::LoopState<B, M>* state, long ticks) {
+                  const aurora_control::DroneState<B, M>* state, long ticks) {
     aurora_control::FormationMetrics<T, bool, aurora_control::LineFormation<T>> lane;
     lane.iae_position = LaneOps::get(m.iae_position, l), lane.iae_shape = LaneOps::get(m.iae_shape, l);
     lane.max_position = LaneOps::get(m.max_position, l), lane.max_shape = LaneOps::get(m.max_shape, l);

@@ -149,23 +149,25 @@ I modelLinksUplink(std::vector<Link>& links, const long (&k)[L]) {
   return I::load_aligned(at);
 }
 
-// ... and the commands U each lane sent at k[l] become the ones its drone applies.
-template <class B, class Link, int L>
-void modelLinksDownlink(std::vector<Link>& links, const long (&k)[L], B U[4]) {
+// ... and the commands U (Inputs of them) each lane sent at k[l] become
+// the ones its drone applies.
+template <int Inputs, class B, class Link, int L>
+void modelLinksDownlink(std::vector<Link>& links, const long (&k)[L], B U[Inputs]) {
   using T = typename B::value_type;
-  alignas(64) T sent[4][L];
-  for (int i = 0; i < 4; ++i) U[i].store_aligned(sent[i]);
+  alignas(64) T sent[Inputs][L];
+  for (int i = 0; i < Inputs; ++i) U[i].store_aligned(sent[i]);
   for (int l = 0; l < L; ++l) {
-    T lane[4] = {sent[0][l], sent[1][l], sent[2][l], sent[3][l]};
+    T lane[Inputs];
+    for (int i = 0; i < Inputs; ++i) lane[i] = sent[i][l];
     links[l].downlink(k[l], lane, lane);
-    for (int i = 0; i < 4; ++i) sent[i][l] = lane[i];
+    for (int i = 0; i < Inputs; ++i) sent[i][l] = lane[i];
   }
-  for (int i = 0; i < 4; ++i) U[i] = B::load_aligned(sent[i]);
+  for (int i = 0; i < Inputs; ++i) U[i] = B::load_aligned(sent[i]);
 }
 
 // Both directions and the commands in flight on every lane (ModelLink), in
-// the engine's batches: B of T, I of Int.
-template <int Window, typename T, class Arch>
+// the engine's batches: B of T, I of Int; commands of `Inputs` values.
+template <int Window, typename T, class Arch, int Inputs = 4>
 class LaneLinks {
  public:
   using B = xsimd::batch<T, Arch>;
@@ -209,12 +211,12 @@ class LaneLinks {
   // The commands U sent at step k become the ones each drone applies: the
   // newest arrived, or hover (0) while none has or when the newest arrived
   // timeout steps ago or more.
-  void downlink(const I& count, const I& start, long slot, B U[4]) {
+  void downlink(const I& count, const I& start, long slot, B U[Inputs]) {
     using Channel = LaneChannel<Window, Int, Arch>;
     alignas(64) Int k[L];
     (count - I(Int(1))).store_aligned(k);
-    T* sent = &commands_[static_cast<size_t>(slot & (Window - 1)) * 4 * L];
-    for (int i = 0; i < 4; ++i) U[i].store_unaligned(sent + i * L);
+    T* sent = &commands_[static_cast<size_t>(slot & (Window - 1)) * Inputs * L];
+    for (int i = 0; i < Inputs; ++i) U[i].store_unaligned(sent + i * L);
     down_.send(k, slot, words_[2], words_[3]);
     const I kb = I::load_aligned(k), lane = I::load_unaligned(lane_);
     const I at = down_.receive(kb, start, lane);  // slot L + lane of each lane's newest command
@@ -222,8 +224,8 @@ class LaneLinks {
     // Hover (all ones): none arrived (newest < 0) or since >= timeout.
     const I hover = ~Channel::atLeast(newest, I(Int(0))) | Channel::atLeast(since, I(timeout_));
     const B hover_bits = xsimd::bitwise_cast<B>(hover);
-    const I base = (at - lane) * I(Int(4)) + lane;  // [slot][i][lane]
-    for (int i = 0; i < 4; ++i) {
+    const I base = (at - lane) * I(Int(Inputs)) + lane;  // [slot][i][lane]
+    for (int i = 0; i < Inputs; ++i) {
       U[i] = gatherLanes<B>(commands_.data(), base + I(Int(i * L))) & ~hover_bits;
     }
   }
@@ -235,7 +237,7 @@ class LaneLinks {
   uint64_t key_[2][L], key_hi_[L];  // 32-bit values
   uint64_t words_[4][L];
   std::vector<T, xsimd::aligned_allocator<T, 64>> commands_ =
-      std::vector<T, xsimd::aligned_allocator<T, 64>>(static_cast<size_t>(Window) * 4 * L);  // [slot][i][lane]
+      std::vector<T, xsimd::aligned_allocator<T, 64>>(static_cast<size_t>(Window) * Inputs * L);  // [slot][i][lane]
 };
 
 }  // namespace aurora_sweep

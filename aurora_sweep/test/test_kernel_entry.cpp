@@ -24,13 +24,13 @@ const std::string kData = std::string(AURORA_SWEEP_TEST_DIR) + "/data";
 // as the GPU would run them; `grid` may hold only the chunk's rows of a design.
 template <LawType Law, int Capacity>
 std::vector<SimResult> launchOnHost(const SweepSpec& spec, const GridView& grid, long first, long n, int block) {
-  const SimSetup<double> setup = makeSetup<double>(spec);
+  const SweepSetup<double> setup = makeSetup<double>(spec);
   std::vector<SimResult> out(static_cast<size_t>(n) + block);  // room a bad index would write into
   std::memset(out.data(), 0xAB, out.size() * sizeof(SimResult));
   const long blocks = blocksFor(n, block);
   for (long b = 0; b < blocks; ++b) {
     for (int t = 0; t < block; ++t) {
-      sweepThread<Law, double, Capacity>(setup, grid, first, n, out.data(), static_cast<unsigned>(b),
+      sweepThread<aurora_control::ArdroneLaw<Law>, double, Capacity>(setup, grid, first, n, out.data(), static_cast<unsigned>(b),
                                          static_cast<unsigned>(block), static_cast<unsigned>(t));
     }
   }

@@ -34,12 +34,12 @@ using test::writeTemp;
 // The kernel's per-thread function (simulateCombination) on the host.
 std::vector<SimResult> runKernelBody(const SweepSpec& spec) {
   std::vector<SimResult> out;
-  const SimSetup<double> setup = makeSetup<double>(spec);
+  const SweepSetup<double> setup = makeSetup<double>(spec);
   const GridView grid = spec.view();
   for (long i = 0; i < spec.size(); ++i) {
     out.push_back(spec.law == LawType::kPdSaturated
-                      ? simulateCombination<LawType::kPdSaturated, double, 64>(setup, grid, i)
-                      : simulateCombination<LawType::kUnderactuated, double, 64>(setup, grid, i));
+                      ? simulateCombination<aurora_control::ArdroneLaw<aurora_control::LawType::kPdSaturated>, double, 64>(setup, grid, i)
+                      : simulateCombination<aurora_control::ArdroneLaw<aurora_control::LawType::kUnderactuated>, double, 64>(setup, grid, i));
   }
   return out;
 }
@@ -140,10 +140,10 @@ SweepSpec single(const std::string& name, const std::string& body) {
 // The states the sweep's simulation of combination 0 flies (studyRun and
 // runClosedLoop: what simulateCombination runs in every backend).
 std::vector<std::vector<double>> sweepStates(const SweepSpec& spec, aurora_control::RunnerResult& result) {
-  const SimSetup<double> setup = makeSetup<double>(spec);
-  const aurora_control::StudyRun<double> run = studyRun(setup, spec.view().decode(0));
+  const SweepSetup<double> setup = makeSetup<double>(spec);
+  const aurora_control::ArdroneRun<double> run = studyRun<aurora_control::ArdroneLaw<LawType::kPdSaturated>>(setup, spec.view().decode(0));
   std::vector<std::vector<double>> states;
-  auto observe = [&](const aurora_control::LoopObservation<double>& o) {
+  auto observe = [&](const aurora_control::FlightObservation& o) {
     states.emplace_back(o.after.model.X, o.after.model.X + aurora_sim::kStateSize);
   };
   result = aurora_control::runStudy(spec.law, run, setup.config, observe);
@@ -163,7 +163,7 @@ std::vector<std::vector<double>> flightStates(const SweepSpec& spec, aurora_cont
   std::vector<std::vector<double>> states;
   result = aurora_control::runFlight(
       spec.vehicle, set, spec.task, aurora_control::studyIterationCount(spec.duration(), spec.vehicle.Ts),
-      [&](const aurora_control::LoopObservation<double>& o, double) {
+      [&](const aurora_control::FlightObservation& o, double) {
         states.emplace_back(o.after.model.X, o.after.model.X + aurora_sim::kStateSize);
       });
   return states;

@@ -100,11 +100,11 @@ TEST(Backends, ScalarAndCpuAgreeInDouble) {
 TEST(Backends, KernelBodyOnTheHostMatchesTheCpuBackend) {
   // simulateCombination() is what each CUDA thread runs; here it runs on the CPU.
   const SweepSpec spec = load(kData + "/small_grid.yaml");
-  const SimSetup<double> setup = makeSetup<double>(spec);
+  const SweepSetup<double> setup = makeSetup<double>(spec);
   const GridView grid = spec.view();
   const auto cpu = runOn("cpu", spec);
   for (long i = 0; i < spec.size(); ++i) {
-    const SimResult r = simulateCombination<aurora_control::LawType::kPdSaturated, double, 64>(setup, grid, i);
+    const SimResult r = simulateCombination<aurora_control::ArdroneLaw<aurora_control::LawType::kPdSaturated>, double, 64>(setup, grid, i);
     EXPECT_EQ(r.ok, cpu[i].ok) << i;
     EXPECT_EQ(r.steps, cpu[i].steps) << i;
     if (r.ok & 1) {

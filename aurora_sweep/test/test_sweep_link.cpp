@@ -123,14 +123,14 @@ TEST(SweepLink, TheKernelsPerThreadEntryOverALinkIsTheScalarLoop) {
   Progress progress{0};
   runScalar(lossy, scalar, progress);
   ASSERT_LT(lossy.historyNeeded(), aurora_control::kMediumHistory);
-  const SimSetup<double> setup = makeSetup<double>(lossy);
+  const SweepSetup<double> setup = makeSetup<double>(lossy);
   ASSERT_FALSE(setup.ideal_link);
   const GridView grid = lossy.view();
   const long n = lossy.rangeSize();
   std::vector<SimResult> out(static_cast<size_t>(n));
   for (unsigned b = 0; b < blocksFor(n, 32); ++b) {
     for (unsigned t = 0; t < 32; ++t) {
-      sweepThread<aurora_control::LawType::kPdSaturated, double, aurora_control::kMediumHistory, true>(
+      sweepThread<aurora_control::ArdroneLaw<aurora_control::LawType::kPdSaturated>, double, aurora_control::kMediumHistory, true>(
           setup, grid, lossy.rangeBegin(), n, out.data(), b, 32, t);
     }
   }
@@ -150,7 +150,7 @@ TEST(SweepLink, ACombinationIsTheRunnersRunOverItsLink) {
   const std::vector<SimResult> sweep = runOn("scalar", spec);
   const aurora_control::LinkParams file = aurora_control::readLinkFile(configDir() + "/links/wifi_lab.yaml");
   const GridView grid = spec.view();
-  const SimSetup<double> setup = makeSetup<double>(spec);
+  const SweepSetup<double> setup = makeSetup<double>(spec);
   long changed_by_seed = 0;
   for (long i = 0; i < spec.size(); ++i) {
     const Combination c = grid.decode(i);
@@ -166,8 +166,8 @@ TEST(SweepLink, ACombinationIsTheRunnersRunOverItsLink) {
     cfg.link.downlink.burst = 3;
     cfg.link.seed = file.seed + static_cast<uint32_t>(i % 3);
     aurora_control::NoObserver none;
-    const SimResult r = compactResult(aurora_control::runOverModelLink<aurora_control::LawType::kPdSaturated, double, 64>(
-        studyRun(setup, c), cfg, setup.iterations, none, static_cast<uint64_t>(i / 3)));
+    const SimResult r = compactResult(aurora_control::runOverModelLink<aurora_control::ArdroneLaw<aurora_control::LawType::kPdSaturated>, double, 64>(
+        studyRun<aurora_control::ArdroneLaw<aurora_control::LawType::kPdSaturated>>(setup, c), cfg, setup.iterations, none, static_cast<uint64_t>(i / 3)));
     EXPECT_EQ(differing({r}, {sweep[static_cast<size_t>(i)]}), 0) << "run " << i;
     if (i % 3 > 0) changed_by_seed += differing({sweep[static_cast<size_t>(i)]}, {sweep[static_cast<size_t>(i - 1)]});
   }

@@ -60,7 +60,7 @@ TEST(FlightEquivalence, RosLoopEqualsTheFlightRunnerBitForBit) {
   s0.reset();
   offline[0].assign(s0.X, s0.X + 12);
   const FlightResult r = runFlight(params, set, task, steps,
-                                   [&](const LoopObservation<double>& o, double) {
+                                   [&](const FlightObservation& o, double) {
                                      offline.emplace_back(o.after.model.X, o.after.model.X + 12);
                                    });
   std::printf("flight runner: %s on a %g s task, delay %ld: RMS tracking error %.4f m, max %.4f m\n",
@@ -72,7 +72,7 @@ TEST(FlightEquivalence, RosLoopEqualsTheFlightRunnerBitForBit) {
     // Not a vacuous pass: over the ideal link the same flight differs.
     set.link = LinkParams();
     std::vector<std::vector<double>> ideal(1, offline[0]);
-    runFlight(params, set, task, steps, [&](const LoopObservation<double>& o, double) {
+    runFlight(params, set, task, steps, [&](const FlightObservation& o, double) {
       ideal.emplace_back(o.after.model.X, o.after.model.X + 12);
     });
     long differ = 0;

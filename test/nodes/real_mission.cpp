@@ -74,7 +74,7 @@ TEST(RealLaunch, MissionCompletesCloseToTheSimulatedRun) {
   const Task<double> task = readTask(YamlReader(), YAML::LoadFile(task_file)["task"], "task");
   std::vector<std::vector<double>> sim(1, std::vector<double>{0.0, 0.0, 0.75});
   runFlight(params, set, task, studyIterationCount(task.duration(), params.Ts),
-            [&](const LoopObservation<double>& o, double) {
+            [&](const FlightObservation& o, double) {
               const double* X = o.after.model.X;
               sim.push_back({X[0], X[1], X[2]});
             });

@@ -57,7 +57,7 @@ TEST(TrajectoryEquivalence, RosLoopEqualsOfflineRunnerBitForBit) {
     offline[0].assign(s0.X, s0.X + 12);
   }
   runPositioning(params, cfg, PdGains<double>{kp, kd}, delay,
-                 [&](const LoopObservation<double>& o) {
+                 [&](const FlightObservation& o) {
                    offline.emplace_back(o.after.model.X, o.after.model.X + 12);
                  });
   ASSERT_GE(offline.size(), static_cast<size_t>(steps + 1));

@@ -5,15 +5,17 @@
 // clamp, the metrics at the loop clock's time, the drone's optional clamp,
 // one model step and the checks on the true error. The offline runner
 // (positioning_runner.h: the sweep's scalar backend, the flight tool, each
-// CUDA thread) and the SIMD engine (on lane batches) call closedLoopStep;
+// CUDA thread) and the SIMD engine (on lane batches) run loopIteration;
 // the controller node and replay call its controller half
 // (controllerCommand, through DelayedController), the sim node the drone's.
+// Generic in the law and its vehicle (control_law.h's ArdroneLaw,
+// aurora_sim/vehicle/ardrone2.h).
 #pragma once
 
 #include "aurora_control/control_law.h"
+#include "aurora_control/delay_buffer.h"
 #include "aurora_control/feasibility.h"
 #include "aurora_control/task.h"
-#include "aurora_sim/ardrone_model.h"
 #include "aurora_sim/scalar_math.h"
 
 namespace aurora_control {
@@ -50,23 +52,26 @@ struct ClampPolicy {
   bool at_drone = false;
 };
 
-// What stays fixed during a run: the simulated drone, the model the
-// underactuated law inverts (nominal; differs from `plant` in a robustness
-// study), the gains and the metric criteria.
-template <typename T>
+// What stays fixed during a run of a law with data `Data` (control_law.h:
+// its vehicle, gains and memory): the simulated vehicle, the model the law
+// inverts (nominal; differs from `plant` in a robustness study), the gains
+// and the metric criteria.
+template <class Data, typename T>
 struct LoopParams {
-  aurora_sim::ArdroneParams<T> plant;
-  aurora_sim::ArdroneParams<T> model;
-  LawGains<T> gains;
+  using Vehicle = typename Data::Vehicle;
+  typename Vehicle::template Params<T> plant;
+  typename Vehicle::template Params<T> model;
+  typename Data::template Gains<T> gains;
   FeasibilityCriteria<T> criteria;
 };
 
 // What changes during a run.
-template <typename T, typename Mask>
+template <class Data, typename T, typename Mask>
 struct LoopState {
-  aurora_sim::ArdroneState<T> model;
+  using Vehicle = typename Data::Vehicle;
+  typename Vehicle::template State<T> model;
   PositioningMetrics<T, Mask> metrics;
-  UnderactuatedMemory<T> memory;  // the underactuated law's own state (unused by the PD law)
+  typename Data::template Memory<T> memory;  // the law's own state (the underactuated law's; empty for others)
   T t;              // the loop clock: metric time of the next iteration
   T initial_error;  // |Xd(0) - X0|, for check 4
 
@@ -76,71 +81,126 @@ struct LoopState {
     memory.reset();
     t = T(0);
     T e[3];
-    for (int i = 0; i < 3; ++i) e[i] = desired[i] - model.X[aurora_sim::kX + i];
+    for (int i = 0; i < 3; ++i) e[i] = desired[i] - model.X[Vehicle::kPosition + i];
     initial_error = norm3(e);
   }
 };
 
 // The controller's half of an iteration: law `Law` on the state xc it
 // received, towards `ref`. U_law: the command as the law computed it; U: as
-// sent (clamped when `clamp`); err: ref - xc position, the metrics' error.
-template <LawType Law, typename T>
-AURORA_HD inline void controllerCommand(const aurora_sim::ArdroneParams<T>& model, const LawGains<T>& gains,
-                                        UnderactuatedMemory<T>& memory, const Reference<T>& ref,
-                                        const T xc[aurora_sim::kStateSize], bool clamp, T U_law[4], T U[4],
-                                        T err[3]) {
-  lawCommand<Law>(model, gains, memory, ref, xc, U_law, err);
-  for (int i = 0; i < 4; ++i) U[i] = clamp ? aurora_sim::clampUnit(U_law[i]) : U_law[i];
+// sent (clamped to the vehicle's limits when `clamp`); err: ref - xc
+// position, the metrics' error.
+template <class Law, typename T, class Params, class Gains, class Memory>
+AURORA_HD inline void controllerCommand(const Params& model, const Gains& gains, Memory& memory,
+                                        const Reference<T>& ref, const T xc[Law::Vehicle::kStates], bool clamp,
+                                        T U_law[Law::Vehicle::kInputs], T U[Law::Vehicle::kInputs], T err[3]) {
+  using Vehicle = typename Law::Vehicle;
+  Law::command(model, gains, memory, ref, xc, U_law, err);
+  for (int i = 0; i < Vehicle::kInputs; ++i) U[i] = clamp ? Vehicle::limitInput(i, U_law[i]) : U_law[i];
 }
 
 // What an iteration hands its observer besides the state.
-template <typename T>
+template <typename T, int Inputs>
 struct LoopStep {
   Reference<T> ref;  // the reference of iteration k
-  T U[4];            // the command the drone applied (after its clamp)
+  T U[Inputs];       // the command the vehicle applied (after its clamp)
 };
 
 // The controller's side of iteration k (k as T: a batch of per-lane step
 // numbers on SIMD lanes) with xc the state it received: the reference at
 // task time k Ts, the law, its clamp and the metrics. Writes the command it
 // sends to U; returns the reference.
-template <LawType Law, typename T, typename Mask, typename TaskT>
-AURORA_HD inline Reference<T> controllerHalf(const LoopParams<T>& p, const TaskT& task, const ClampPolicy& clamp,
-                                             const T& k, const T xc[aurora_sim::kStateSize], LoopState<T, Mask>& s,
-                                             T U[4]) {
+template <class Law, class Data, typename T, typename Mask, typename TaskT>
+AURORA_HD inline Reference<T> controllerHalf(const LoopParams<Data, T>& p, const TaskT& task, const ClampPolicy& clamp,
+                                             const T& k, const T xc[Law::Vehicle::kStates],
+                                             LoopState<Data, T, Mask>& s, T U[Law::Vehicle::kInputs]) {
   const Reference<T> ref = task.at(taskTime(k, p.plant.Ts));
-  T U_law[4], err[3];
+  T U_law[Law::Vehicle::kInputs], err[3];
   controllerCommand<Law>(p.model, p.gains, s.memory, ref, xc, clamp.at_controller, U_law, U, err);
-  s.metrics.accumulate(p.criteria, err, U, s.t);
+  s.metrics.template accumulate<Law::Vehicle::kInputs>(p.criteria, err, U, s.t);
   return ref;
 }
 
-// The drone's side: the command it received (the sent one over an ideal
+// The vehicle's side: the command it received (the sent one over an ideal
 // link), its clamp, one model step, the checks on the true error against
 // `ref`, the clock. Writes the command applied to `applied`.
-template <typename T, typename Mask>
-AURORA_HD inline void droneHalf(const LoopParams<T>& p, const ClampPolicy& clamp, const Reference<T>& ref,
-                                const T received[4], LoopState<T, Mask>& s, T applied[4]) {
-  for (int i = 0; i < 4; ++i) applied[i] = clamp.at_drone ? aurora_sim::clampUnit(received[i]) : received[i];
-  aurora_sim::ardroneStep(p.plant, s.model, applied, aurora_sim::Disturbance<T>::zero());
+template <class Data, typename T, typename Mask>
+AURORA_HD inline void droneHalf(const LoopParams<Data, T>& p, const ClampPolicy& clamp, const Reference<T>& ref,
+                                const T received[Data::Vehicle::kInputs], LoopState<Data, T, Mask>& s,
+                                T applied[Data::Vehicle::kInputs]) {
+  using Vehicle = typename Data::Vehicle;
+  for (int i = 0; i < Vehicle::kInputs; ++i) {
+    applied[i] = clamp.at_drone ? Vehicle::limitInput(i, received[i]) : received[i];
+  }
+  Vehicle::step(p.plant, s.model, applied);
   T e[3];
-  for (int i = 0; i < 3; ++i) e[i] = ref.pos[i] - s.model.X[aurora_sim::kX + i];
+  for (int i = 0; i < 3; ++i) e[i] = ref.pos[i] - s.model.X[Vehicle::kPosition + i];
   s.metrics.check(p.criteria, norm3(e), s.initial_error);
   s.t = nextLoopTime(s.t, p.plant.Ts);
 }
 
-// Iteration k of the closed loop over an ideal command path: both halves,
-// the sent command applied at once. Advances `s` by one model step.
-template <LawType Law, typename T, typename Mask, typename TaskT>
-AURORA_HD inline LoopStep<T> closedLoopStep(const LoopParams<T>& p, const TaskT& task, const ClampPolicy& clamp,
-                                            const T& k, const T xc[aurora_sim::kStateSize],
-                                            LoopState<T, Mask>& s) {
-  LoopStep<T> step;
-  T U[4];
-  step.ref = controllerHalf<Law>(p, task, clamp, k, xc, s, U);
-  droneHalf(p, clamp, step.ref, U, s, step.U);
-  return step;
+// The early stop, written once: with early_stop, a run ends at its first
+// failed check (masks of lanes on SIMD batches).
+template <typename Mask>
+AURORA_HD inline Mask stoppedEarly(bool early_stop, const Mask& feasible) {
+  return early_stop ? !feasible : (feasible & !feasible);
 }
+
+// Iteration k as a number of the loop's scalar (the SIMD engine overloads
+// it for lanes).
+template <typename K, typename T>
+AURORA_HD inline void iterationNumber(const K& k, T& out) {
+  out = T(k);
+}
+
+// One iteration k of the closed loop, written once for every loop that runs
+// one (docs/architecture.md, "One iteration"): the offline runner (the
+// sweep's scalar backend, the flight tool, each CUDA thread) and the SIMD
+// engine on lanes. In order:
+//  1. history.push(X_k): the history keeps the state (what the law reads);
+//  2. link.uplinkIndex(k): the step whose state the controller receives
+//     (the delay rule over an ideal link), read back from the history;
+//  3. the controller's half (reference at k Ts, law, its clamp, metrics);
+//  4. link.downlink(k, U, U): the command the vehicle receives;
+//  5. the vehicle's half (its clamp, one model step, checks, clock);
+//  6. observe(step, xc, received);
+//  7. the early stop: returns whether the run ends here.
+// `k` counts as the history and the link count (long; integer lanes on the
+// SIMD engine; iterationNumber gives it in T for the task's time). History and
+// link are policies with this interface for scalars (StateHistory,
+// IdealLink, ModelLink) and for lanes (the SIMD engine's).
+template <class Law, class Data, typename T, typename Mask, typename TaskT, typename K, class History, class Link,
+          class Observer>
+AURORA_HD inline Mask loopIteration(const LoopParams<Data, T>& p, const TaskT& task, const ClampPolicy& clamp,
+                                    bool early_stop, const K& k, History& history, Link& link,
+                                    LoopState<Data, T, Mask>& s, Observer&& observe) {
+  constexpr int kInputs = Law::Vehicle::kInputs;
+  history.push(s.model.X);  // H(k + 1) = X_k
+  const K received = link.uplinkIndex(k);
+  T xc[Law::Vehicle::kStates], U[kInputs];
+  history.read(received, xc);
+  LoopStep<T, kInputs> step;
+  T kt;
+  iterationNumber(k, kt);
+  step.ref = controllerHalf<Law>(p, task, clamp, kt, xc, s, U);
+  link.downlink(k, U, U);
+  droneHalf(p, clamp, step.ref, U, s, step.U);
+  observe(step, xc, received);
+  return stoppedEarly(early_stop, s.metrics.feasible());
+}
+
+// The history of one run (scalars): the last Capacity states as law `Law`
+// reads them (delay_buffer.h); read(j) gives back the state of step j.
+template <class Law, typename T, int Capacity>
+class StateHistory {
+ public:
+  using Sample = LawSample<T, Law>;
+  AURORA_HD void push(const T X[Law::Vehicle::kStates]) { ring_.push(Sample::fromState(X)); }
+  AURORA_HD void read(long step, T X[Law::Vehicle::kStates]) const { ring_.at(step).toState(X); }
+
+ private:
+  DelayBuffer<Sample, Capacity> ring_;  // on the stack: Capacity x the law's width, no allocation
+};
 
 // Number of loop iterations of `while t < duration: ...; t += Ts` with t
 // accumulated in double (1801 for 60 s at 1/30 s). Every precision runs this

@@ -14,18 +14,11 @@
 #include "aurora_sim/ardrone_params.h"
 #include "aurora_sim/host_device.h"
 #include "aurora_sim/state_index.h"
+#include "aurora_sim/vehicle/ardrone2.h"
 
 namespace aurora_control {
 
 enum class LawType : int { kPdSaturated = 0, kUnderactuated = 1 };
-
-// Calls f(std::integral_constant<LawType, law>()): a loop instantiated per
-// law, chosen once at run time.
-template <class F>
-void withLaw(LawType law, F&& f) {
-  if (law == LawType::kPdSaturated) return f(std::integral_constant<LawType, LawType::kPdSaturated>());
-  return f(std::integral_constant<LawType, LawType::kUnderactuated>());
-}
 
 // The gains of both laws; a law reads only its own.
 template <typename T>
@@ -52,21 +45,23 @@ struct LawInput<LawType::kUnderactuated> {
   AURORA_HD static constexpr int state(int j) { return j; }
 };
 
-// The part of a state a law reads (one delay-history entry).
-template <typename T, LawType Law>
+// The part of a state law `Law` reads (one delay-history entry): Law::Input
+// names kWidth components of its vehicle's state.
+template <typename T, class Law>
 struct LawSample {
-  static constexpr int kWidth = LawInput<Law>::kWidth;
+  static constexpr int kStates = Law::Vehicle::kStates;
+  static constexpr int kWidth = Law::Input::kWidth;
   T v[kWidth];
 
-  AURORA_HD static LawSample fromState(const T X[aurora_sim::kStateSize]) {
+  AURORA_HD static LawSample fromState(const T X[kStates]) {
     LawSample s;
-    for (int j = 0; j < kWidth; ++j) s.v[j] = X[LawInput<Law>::state(j)];
+    for (int j = 0; j < kWidth; ++j) s.v[j] = X[Law::Input::state(j)];
     return s;
   }
-  // Back into a 12-state (components the law does not read are 0).
-  AURORA_HD void toState(T X[aurora_sim::kStateSize]) const {
-    for (int i = 0; i < aurora_sim::kStateSize; ++i) X[i] = T(0);
-    for (int j = 0; j < kWidth; ++j) X[LawInput<Law>::state(j)] = v[j];
+  // Back into a whole state (components the law does not read are 0).
+  AURORA_HD void toState(T X[kStates]) const {
+    for (int i = 0; i < kStates; ++i) X[i] = T(0);
+    for (int j = 0; j < kWidth; ++j) X[Law::Input::state(j)] = v[j];
   }
 };
 
@@ -104,6 +99,49 @@ AURORA_HD inline void lawCommand(const aurora_sim::ArdroneParams<T>& model, cons
     underactuatedCommand(model, g.underactuated, memory, Xd, acc, X, U);
     for (int i = 0; i < 3; ++i) pos_err[i] = ref.pos[i] - pos[i];
   }
+}
+
+// What the AR.Drone's two laws share (a law's Data): the vehicle they fly,
+// the gains of both (each reads its own) and the underactuated law's memory.
+// Loop parameters and states are typed by a law's Data, so that a loop that
+// picks its law at run time keeps one type of state.
+struct ArdroneLawData {
+  using Vehicle = aurora_sim::Ardrone2;
+  template <typename T>
+  using Gains = LawGains<T>;
+  template <typename T>
+  using Memory = UnderactuatedMemory<T>;
+};
+
+// A law as a type (docs/architecture.md, "Laws"), what every generic loop
+// is instantiated on: its Data (the vehicle it flies, its gains and its own
+// memory: structs of T only), what of the state it reads (Input), and one
+// call on the state it received: the command U (Vehicle::kInputs, not
+// clamped) and the position error ref - X the metrics use. `value` names the
+// AR.Drone's two laws for the code that picks one at run time (withLaw).
+template <LawType L>
+struct ArdroneLaw : ArdroneLawData {
+  using Data = ArdroneLawData;
+  static constexpr LawType value = L;
+  using Input = LawInput<L>;
+
+  template <typename T>
+  AURORA_HD static void command(const aurora_sim::ArdroneParams<T>& model, const Gains<T>& g, Memory<T>& memory,
+                                const Reference<T>& ref, const T X[Vehicle::kStates], T U[Vehicle::kInputs],
+                                T pos_err[3]) {
+    lawCommand<L>(model, g, memory, ref, X, U, pos_err);
+  }
+};
+
+template <LawType L>
+constexpr LawType ArdroneLaw<L>::value;
+
+// Calls f(ArdroneLaw<law>()): a loop instantiated per law, chosen once at
+// run time (decltype(f's argument) is the law's type, ::value its LawType).
+template <class F>
+void withLaw(LawType law, F&& f) {
+  if (law == LawType::kPdSaturated) return f(ArdroneLaw<LawType::kPdSaturated>());
+  return f(ArdroneLaw<LawType::kUnderactuated>());
 }
 
 }  // namespace aurora_control

@@ -126,7 +126,7 @@ class DelayedController {
     out.delay_pending = link_.active() ? 0 : history_.pendingUntilInForce(settings.delay);
     const LawGains<double> gains{settings.gains, settings.underactuated};
     withLaw(settings.law, [&](auto law) {
-      controllerCommand<decltype(law)::value>(settings.vehicle, gains, memory_, ref, used.X,
+      controllerCommand<decltype(law)>(settings.vehicle, gains, memory_, ref, used.X,
                                               settings.clamp_commands, out.U_unclamped, out.U,
                                               out.position_error);
     });
@@ -179,7 +179,7 @@ class DelayedController {
     // re-sent state, does not count twice), at the loop clock's time.
     const long step = newest().step;
     if (step != metrics_step_) {
-      metrics_.accumulate(criteria_, out.position_error, out.U, clock_.at(step, settings.Ts));
+      metrics_.template accumulate<aurora_sim::Ardrone2::kInputs>(criteria_, out.position_error, out.U, clock_.at(step, settings.Ts));
       metrics_step_ = step;
     }
     out.iae = metrics_.iae;

@@ -47,11 +47,15 @@ struct PositioningMetrics {
   }
 
   // Step (3) of the loop: accumulate with the controller's (delayed) error.
-  AURORA_HD void accumulate(const FeasibilityCriteria<T>& c, const T pos_err[3], const T U[4],
+  // |U| over the vehicle's Inputs commands, summed left to right.
+  template <int Inputs>
+  AURORA_HD void accumulate(const FeasibilityCriteria<T>& c, const T pos_err[3], const T U[Inputs],
                             const T& t) {
     using std::sqrt;
     const T e = norm3(pos_err);
-    const T u = sqrt(U[0] * U[0] + U[1] * U[1] + U[2] * U[2] + U[3] * U[3]);
+    T u2 = U[0] * U[0];
+    for (int i = 1; i < Inputs; ++i) u2 = u2 + U[i] * U[i];
+    const T u = sqrt(u2);
     iae = iae + e * c.metric_dt;
     itae = itae + e * t * c.metric_dt;
     iasc = iasc + u * c.metric_dt;

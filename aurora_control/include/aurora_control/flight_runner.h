@@ -23,7 +23,7 @@ struct FlightResult {
   double final_pos[3] = {0, 0, 0};    // [m]
 };
 
-// observe(LoopObservation<double>, tracking error of step k [m]) after each
+// observe(FlightObservation, tracking error of step k [m]) after each
 // iteration. Iteration k hands
 // state k (the state at task time k Ts) to the controller with the
 // reference of that time: `iterations` = taskStepCount() flies a task's
@@ -31,7 +31,7 @@ struct FlightResult {
 template <typename Observer>
 FlightResult runFlight(const aurora_sim::ArdroneParams<double>& p, const ControllerSettings& settings,
                        const Task<double>& task, long iterations, Observer observe) {
-  const StudyRun<double> run{p, settings.vehicle, LawGains<double>{settings.gains, settings.underactuated},
+  const ArdroneRun<double> run{p, settings.vehicle, LawGains<double>{settings.gains, settings.underactuated},
                              settings.delay};
   RunnerConfig<double> cfg;
   cfg.task = task;
@@ -40,7 +40,7 @@ FlightResult runFlight(const aurora_sim::ArdroneParams<double>& p, const Control
   cfg.link = settings.link;
   FlightResult r;
   double sum_sq = 0.0;
-  const RunnerResult done = runLoop(settings.law, run, cfg, iterations, [&](const LoopObservation<double>& o) {
+  const RunnerResult done = runLoop(settings.law, run, cfg, iterations, [&](const FlightObservation& o) {
     const double e = trackingError(o.step.ref, o.X_before);  // state k against reference k
     sum_sq += e * e;
     r.max_tracking_error = std::max(r.max_tracking_error, e);

@@ -29,6 +29,15 @@ struct FormationDrone {
   T start[3];
 };
 
+// A formation's drones are AR.Drones flying one of its laws: their loops'
+// parameters, states and steps.
+template <typename T>
+using DroneParams = LoopParams<ArdroneLawData, T>;
+template <typename T, typename Mask>
+using DroneState = LoopState<ArdroneLawData, T, Mask>;
+template <typename T>
+using DroneStep = LoopStep<T, ArdroneLawData::Vehicle::kInputs>;
+
 template <typename T, class Shape>
 struct FormationRun {
   static constexpr int kDrones = Shape::kDrones, kN = Shape::kVariables;
@@ -59,8 +68,8 @@ struct FormationObservation {
   long k;
   bool layer_ran;                                  // the layer ran at the start of this tick
   const T (*X_before)[aurora_sim::kStateSize];     // each drone's state at the tick's start (X_k)
-  const LoopState<T, bool>* drones;                // after the model step, per drone (X_(k+1))
-  const LoopStep<T>* steps;                        // each drone's reference and applied command
+  const DroneState<T, bool>* drones;                // after the model step, per drone (X_(k+1))
+  const DroneStep<T>* steps;                        // each drone's reference and applied command
   const FormationLayer<T, Shape>& layer;
 };
 
@@ -98,10 +107,10 @@ AURORA_HD inline Reference<T> heldReference(const FormationLayer<T, Shape>& laye
 // single-drone criteria, which a formation does not judge) and its state at
 // rest at its start; the layer started (startLayer).
 template <typename T, class Shape, typename Mask>
-AURORA_HD inline void startFormation(const FormationRun<T, Shape>& run, LoopParams<T>* params, LoopState<T, Mask>* state,
+AURORA_HD inline void startFormation(const FormationRun<T, Shape>& run, DroneParams<T>* params, DroneState<T, Mask>* state,
                                      FormationLayer<T, Shape>& layer) {
   for (int d = 0; d < Shape::kDrones; ++d) {
-    params[d] = LoopParams<T>{run.drone[d].plant, run.drone[d].model, run.drone[d].gains,
+    params[d] = DroneParams<T>{run.drone[d].plant, run.drone[d].model, run.drone[d].gains,
                               FeasibilityCriteria<T>::study()};
     state[d].reset(run.drone[d].start);
     for (int i = 0; i < 3; ++i) state[d].model.X[aurora_sim::kX + i] = run.drone[d].start[i];
@@ -115,10 +124,10 @@ AURORA_HD inline void startFormation(const FormationRun<T, Shape>& run, LoopPara
 // through downlink(d, U) and one model step. Scalars or SIMD batches (one
 // formation per lane, every lane at the same tick).
 template <LawType Law, typename T, typename Mask, class Shape, class Downlink>
-AURORA_HD inline void formationTick(const LoopParams<T>* params, const ClampPolicy& clamp,
+AURORA_HD inline void formationTick(const DroneParams<T>* params, const ClampPolicy& clamp,
                                     FormationLayer<T, Shape>& layer, const T* Qd, const T& k,
-                                    const T (*xc)[aurora_sim::kStateSize], LoopState<T, Mask>* state,
-                                    LoopStep<T>* step, Downlink&& downlink) {
+                                    const T (*xc)[aurora_sim::kStateSize], DroneState<T, Mask>* state,
+                                    DroneStep<T>* step, Downlink&& downlink) {
   constexpr int D = Shape::kDrones;
   if (Qd) {
     T seen[Shape::kVariables];
@@ -131,7 +140,7 @@ AURORA_HD inline void formationTick(const LoopParams<T>* params, const ClampPoli
     HeldReference<T> held;
     held.ref = heldReference(layer, d);
     T U[4];
-    step[d].ref = controllerHalf<Law>(params[d], held, clamp, k, xc[d], state[d], U);
+    step[d].ref = controllerHalf<ArdroneLaw<Law>>(params[d], held, clamp, k, xc[d], state[d], U);
     downlink(d, U);
     droneHalf(params[d], clamp, step[d].ref, U, state[d], step[d].U);
   }
@@ -157,10 +166,10 @@ AURORA_HD inline auto observeTick(Observer& observe, const Observation& o)
 template <LawType Law, typename T, class Shape, int Capacity, typename Observer, typename Link>
 AURORA_HD long runFormationOver(const FormationRun<T, Shape>& run, long iterations, Observer& observe, Link* links) {
   constexpr int D = Shape::kDrones, N = Shape::kVariables;
-  using Sample = LawSample<T, Law>;
+  using Sample = LawSample<T, ArdroneLaw<Law>>;
   FormationLayer<T, Shape> layer(run.law, run.gains, T(run.period_steps) * run.drone[0].plant.Ts);
-  LoopParams<T> params[D];
-  LoopState<T, bool> state[D];
+  DroneParams<T> params[D];
+  DroneState<T, bool> state[D];
   DelayBuffer<Sample, Capacity> history[D];
   startFormation(run, params, state, layer);
   for (long k = 0; k < iterations; ++k) {
@@ -172,7 +181,7 @@ AURORA_HD long runFormationOver(const FormationRun<T, Shape>& run, long iteratio
     }
     const bool due = k % run.period_steps == 0;
     if (due) run.reference.at(taskTime(T(k), run.drone[0].plant.Ts), Qd);
-    LoopStep<T> step[D];
+    DroneStep<T> step[D];
     formationTick<Law>(params, run.clamp, layer, due ? Qd : nullptr, T(k), xc, state, step,
                        [&](int d, T U[4]) { links[d].downlink(k, U, U); });
     if (!observeTick(observe, FormationObservation<T, Shape>{k, due, before, state, step, layer})) return k + 1;

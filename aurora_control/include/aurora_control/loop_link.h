@@ -18,20 +18,25 @@
 
 namespace aurora_control {
 
-struct IdealLink {
-  long delay;  // the uplink's [samples]
+// `Index`: long for one run, integer lanes (the SIMD engine) for many.
+template <typename Index>
+struct IdealLinkOf {
+  Index delay;  // the uplink's [samples]
 
   // The step whose state the controller receives at step k (0-based): the
   // delay rule, k - d once k >= d, else the current state.
-  AURORA_HD long uplinkIndex(long k) { return delayedHistoryIndex<long>(k + 1, delay) - 1; }
-
-  template <typename T>
-  AURORA_HD void downlink(long, const T sent[4], T received[4]) {
-    for (int i = 0; i < 4; ++i) received[i] = sent[i];
+  AURORA_HD Index uplinkIndex(const Index& k) const {
+    return delayedHistoryIndex<Index>(k + Index(1), delay) - Index(1);
   }
-};
 
-template <int Window, typename T>
+  // The command arrives as sent (the loop passes it in place: nothing to do).
+  template <typename T>
+  AURORA_HD void downlink(const Index&, const T*, T*) const {}
+};
+using IdealLink = IdealLinkOf<long>;
+
+// `Inputs`: the vehicle's command size (its kInputs).
+template <int Window, typename T, int Inputs = 4>
 class ModelLink {
  public:
   // `delay`: the run's (uplink) delay, which replaces the link's own.
@@ -53,12 +58,12 @@ class ModelLink {
   // The drone's command at step k: the newest-sent command that has
   // arrived, or hover (zero) while none has or when the newest arrived
   // cmd_timeout or longer ago (the drivers' watchdog).
-  AURORA_HD void downlink(long k, const T sent[4], T received[4]) {
-    for (int i = 0; i < 4; ++i) commands_[k % Window][i] = sent[i];
+  AURORA_HD void downlink(long k, const T sent[Inputs], T received[Inputs]) {
+    for (int i = 0; i < Inputs; ++i) commands_[k % Window][i] = sent[i];
     down_.send(link_.downlink, down_rule_, drawsAt(k).downlink, k);
     const long j = down_.receive(link_.downlink, k);
     hovering_ = j < 0 || down_.sinceArrival(k) >= timeout_steps_;
-    for (int i = 0; i < 4; ++i) received[i] = hovering_ ? T(0) : commands_[j % Window][i];
+    for (int i = 0; i < Inputs; ++i) received[i] = hovering_ ? T(0) : commands_[j % Window][i];
   }
 
   // A step without a packet on a direction (the node: a state it never
@@ -94,7 +99,7 @@ class ModelLink {
   long drawn_step_ = -1;
   StepDraws draws_{};
   LinkChannel<Window> up_, down_;
-  T commands_[Window][4];
+  T commands_[Window][Inputs];
 };
 
 }  // namespace aurora_control

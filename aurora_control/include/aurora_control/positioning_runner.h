@@ -27,14 +27,14 @@ struct RunnerConfig {
   LinkParams link;              // the link (link.h); its uplink delay is the run's `delay`
 };
 
-// One simulation's own parameters: the simulated drone, the gains and the
-// delay. `model` is what the underactuated law inverts (the vehicle file's
+// One simulation's own parameters: the simulated vehicle, the gains of a
+// law with data `Data` (control_law.h) and the delay. `model` is what the law inverts (the vehicle file's
 // nominal values; `plant` differs from it in a robustness study).
-template <typename T>
+template <class Data, typename T>
 struct StudyRun {
-  aurora_sim::ArdroneParams<T> plant;
-  aurora_sim::ArdroneParams<T> model;
-  LawGains<T> gains;
+  typename Data::Vehicle::template Params<T> plant;
+  typename Data::Vehicle::template Params<T> model;
+  typename Data::template Gains<T> gains;
   long delay;  // [samples]
 };
 
@@ -50,15 +50,22 @@ struct RunnerResult {
 // node's (limits.h).
 constexpr long kMaxRunnerDelay = kMaxDelaySamples;
 
+// The vehicle's state after an iteration, as an observer sees it.
+template <class Vehicle, typename T>
+struct LoopView {
+  const typename Vehicle::template State<T>& model;  // X_(k+1)
+  const PositioningMetrics<T, bool>& metrics;
+};
+
 // What an observer sees after each iteration.
-template <typename T>
+template <class Vehicle, typename T>
 struct LoopObservation {
-  long k;                            // the iteration (0-based): task time k Ts
-  const T* X_before;                 // the state it started from (X_k, 12)
-  const LoopState<T, bool>& after;   // after the model step (X_(k+1), metrics)
-  const LoopStep<T>& step;           // its reference and the command applied
-  const T* xc;                       // the delayed state the law received (12)
-  long received;                     // its step: the delay in force is k - received
+  long k;                                     // the iteration (0-based): task time k Ts
+  const T* X_before;                          // the state it started from (X_k)
+  LoopView<Vehicle, T> after;                 // after the model step (X_(k+1), metrics)
+  const LoopStep<T, Vehicle::kInputs>& step;  // its reference and the command applied
+  const T* xc;                                // the delayed state the law received
+  long received;                              // its step: the delay in force is k - received
 };
 
 struct NoObserver {
@@ -66,16 +73,9 @@ struct NoObserver {
   AURORA_HD void operator()(const Args&...) const {}
 };
 
-// The early stop, written once for the runner and the SIMD engine (masks
-// of lanes there): with early_stop, a run ends at its first failed check.
-template <typename Mask>
-AURORA_HD inline Mask stoppedEarly(bool early_stop, const Mask& feasible) {
-  return early_stop ? !feasible : (feasible & !feasible);
-}
-
 // A finished run's result (the SIMD engine builds one lane's sim and calls it).
-template <typename T>
-AURORA_HD inline RunnerResult runnerResult(const LoopState<T, bool>& sim, long steps) {
+template <class Data, typename T>
+AURORA_HD inline RunnerResult runnerResult(const LoopState<Data, T, bool>& sim, long steps) {
   RunnerResult r;
   for (int i = 0; i < 4; ++i) r.ok[i] = sim.metrics.ok[i];
   r.feasible = sim.metrics.feasible();
@@ -83,47 +83,68 @@ AURORA_HD inline RunnerResult runnerResult(const LoopState<T, bool>& sim, long s
   r.itae = double(sim.metrics.itae);
   r.iasc = double(sim.metrics.iasc);
   r.steps = steps;
-  for (int i = 0; i < 3; ++i) r.final_pos[i] = double(sim.model.X[aurora_sim::kX + i]);
+  for (int i = 0; i < 3; ++i) r.final_pos[i] = double(sim.model.X[Data::Vehicle::kPosition + i]);
   return r;
 }
+
+// The runner's observation of one iteration, from loopIteration's step.
+template <class Law, typename T, class Observer>
+struct RunnerObserver {
+  using Vehicle = typename Law::Vehicle;
+  Observer& observe;
+  const LoopState<typename Law::Data, T, bool>& s;
+  long k;
+  T X_before[Vehicle::kStates];
+  AURORA_HD void operator()(const LoopStep<T, Vehicle::kInputs>& step, const T* xc, long received) const {
+    observe(LoopObservation<Vehicle, T>{k, X_before, LoopView<Vehicle, T>{s.model, s.metrics}, step, xc, received});
+  }
+};
+
+// The observer of iteration k, holding the state it starts from; none for
+// NoObserver (the sweep's and the kernel's runs keep no copy).
+template <class Law, typename T, class Observer>
+struct ObserverAt {
+  AURORA_HD static RunnerObserver<Law, T, Observer> at(Observer& observe,
+                                                      const LoopState<typename Law::Data, T, bool>& s, long k) {
+    RunnerObserver<Law, T, Observer> at_k{observe, s, k, {}};
+    for (int i = 0; i < Law::Vehicle::kStates; ++i) at_k.X_before[i] = s.model.X[i];
+    return at_k;
+  }
+};
+template <class Law, typename T>
+struct ObserverAt<Law, T, NoObserver> {
+  AURORA_HD static NoObserver at(NoObserver&, const LoopState<typename Law::Data, T, bool>&, long) {
+    return NoObserver();
+  }
+};
 
 // One whole run of law `Law` with a history of `Capacity` samples (delay <
 // Capacity, checked by the caller). No exceptions, no allocation: this is
 // also the CUDA kernel's per-thread body. `iterations`: studyIterationCount()
-// for the study, taskStepCount() for a flight. Iteration k (0-based) keeps
-// X_k in the history and hands the law the delayed state by the delay rule.
-template <LawType Law, typename T, int Capacity, typename Observer, typename Link>
-AURORA_HD RunnerResult runClosedLoopOver(const StudyRun<T>& run, const RunnerConfig<T>& cfg, long iterations,
+// for the study, taskStepCount() for a flight. Iteration k (0-based) is
+// loopIteration (closed_loop.h) over `link`.
+template <class Law, typename T, int Capacity, typename Observer, typename Link>
+AURORA_HD RunnerResult runClosedLoopOver(const StudyRun<typename Law::Data, T>& run, const RunnerConfig<T>& cfg, long iterations,
                                          Observer& observe, Link& link) {
-  using Sample = LawSample<T, Law>;
-  const LoopParams<T> params{run.plant, run.model, run.gains, cfg.criteria};
+  const LoopParams<typename Law::Data, T> params{run.plant, run.model, run.gains, cfg.criteria};
   const ClampPolicy clamp{cfg.clamp_commands, cfg.clamp_at_drone};
-  LoopState<T, bool> s;
+  LoopState<typename Law::Data, T, bool> s;
   s.reset(cfg.task.at(T(0)).pos);
-  // On the stack: Capacity x (6 or 12) scalars, no allocation.
-  DelayBuffer<Sample, Capacity> history;
+  StateHistory<Law, T, Capacity> history;
   long k = 0;
   while (k < iterations) {
-    history.push(Sample::fromState(s.model.X));  // H(k + 1) = X_k
-    T xc[aurora_sim::kStateSize], X_before[aurora_sim::kStateSize], U[4];
-    const long received = link.uplinkIndex(k);
-    history.at(received).toState(xc);
-    for (int i = 0; i < aurora_sim::kStateSize; ++i) X_before[i] = s.model.X[i];
-    LoopStep<T> step;
-    step.ref = controllerHalf<Law>(params, cfg.task, clamp, T(k), xc, s, U);
-    link.downlink(k, U, U);
-    droneHalf(params, clamp, step.ref, U, s, step.U);
-    observe(LoopObservation<T>{k, X_before, s, step, xc, received});
+    const bool stop = loopIteration<Law>(params, cfg.task, clamp, cfg.early_stop, k, history, link, s,
+                                         ObserverAt<Law, T, Observer>::at(observe, s, k));
     ++k;
-    if (stoppedEarly(cfg.early_stop, s.metrics.feasible())) break;
+    if (stop) break;
   }
   return runnerResult(s, k);
 }
 
 // The run over an ideal link (today's loop: the delay rule, no command
 // delay): the CUDA kernel's per-thread body and the sweep's scalar loop.
-template <LawType Law, typename T, int Capacity, typename Observer>
-AURORA_HD RunnerResult runClosedLoop(const StudyRun<T>& run, const RunnerConfig<T>& cfg, long iterations,
+template <class Law, typename T, int Capacity, typename Observer>
+AURORA_HD RunnerResult runClosedLoop(const StudyRun<typename Law::Data, T>& run, const RunnerConfig<T>& cfg, long iterations,
                                      Observer& observe) {
   IdealLink link{run.delay};
   return runClosedLoopOver<Law, T, Capacity>(run, cfg, iterations, observe, link);
@@ -132,11 +153,11 @@ AURORA_HD RunnerResult runClosedLoop(const StudyRun<T>& run, const RunnerConfig<
 // The run over cfg.link's model (host only: the channels and the commands
 // in flight live on the heap). `combination` keys the link's draws: the
 // sweep's combination index, 0 for a single flight (as the node's).
-template <LawType Law, typename T, int Capacity, typename Observer>
-RunnerResult runOverModelLink(const StudyRun<T>& run, const RunnerConfig<T>& cfg, long iterations,
+template <class Law, typename T, int Capacity, typename Observer>
+RunnerResult runOverModelLink(const StudyRun<typename Law::Data, T>& run, const RunnerConfig<T>& cfg, long iterations,
                               Observer& observe, uint64_t combination) {
-  std::unique_ptr<ModelLink<Capacity, T>> link(
-      new ModelLink<Capacity, T>(cfg.link, run.delay, combination, double(run.plant.Ts)));
+  using Link = ModelLink<Capacity, T, Law::Vehicle::kInputs>;
+  std::unique_ptr<Link> link(new Link(cfg.link, run.delay, combination, double(run.plant.Ts)));
   return runClosedLoopOver<Law, T, Capacity>(run, cfg, iterations, observe, *link);
 }
 
@@ -148,35 +169,41 @@ inline void checkRunnerDelay(long delay) {
   }
 }
 
-// Runs `iterations` iterations; `observe(LoopObservation)` is called after
-// each (for callers that record the trajectory).
-template <typename T, typename Observer = NoObserver>
-RunnerResult runLoop(LawType law, const StudyRun<T>& run, const RunnerConfig<T>& cfg, long iterations,
+// Runs `iterations` iterations of law `Law`; `observe(LoopObservation)` is
+// called after each (for callers that record the trajectory).
+template <class Law, typename T, typename Observer = NoObserver>
+RunnerResult runLoop(const StudyRun<typename Law::Data, T>& run, const RunnerConfig<T>& cfg, long iterations,
                      Observer observe = Observer()) {
   checkRunnerDelay(run.delay);
-  RunnerResult result;
-  if (cfg.link.ideal()) {
-    withHistoryCapacity(run.delay, [&](auto capacity) {
-      withLaw(law, [&](auto law_tag) {
-        result = runClosedLoop<decltype(law_tag)::value, T, decltype(capacity)::value>(run, cfg, iterations, observe);
-      });
-    });
-    return result;
-  }
-  const long history = cfg.link.historyNeeded(run.delay);
+  const long history = cfg.link.ideal() ? run.delay : cfg.link.historyNeeded(run.delay);
   checkRunnerDelay(history);
+  RunnerResult result;
   withHistoryCapacity(history, [&](auto capacity) {
-    withLaw(law, [&](auto law_tag) {
-      result = runOverModelLink<decltype(law_tag)::value, T, decltype(capacity)::value>(run, cfg, iterations,
-                                                                                        observe, 0);
-    });
+    constexpr int kCapacity = decltype(capacity)::value;
+    result = cfg.link.ideal() ? runClosedLoop<Law, T, kCapacity>(run, cfg, iterations, observe)
+                              : runOverModelLink<Law, T, kCapacity>(run, cfg, iterations, observe, 0);
   });
+  return result;
+}
+
+// An AR.Drone run of either law (flight_runner.h, the study's runs), and
+// what an observer of a flight sees.
+template <typename T>
+using ArdroneRun = StudyRun<ArdroneLawData, T>;
+using FlightObservation = LoopObservation<aurora_sim::Ardrone2, double>;
+
+// The same with the AR.Drone's law chosen at run time.
+template <typename T, typename Observer = NoObserver>
+RunnerResult runLoop(LawType law, const ArdroneRun<T>& run, const RunnerConfig<T>& cfg, long iterations,
+                     Observer observe = Observer()) {
+  RunnerResult result;
+  withLaw(law, [&](auto law_tag) { result = runLoop<decltype(law_tag)>(run, cfg, iterations, observe); });
   return result;
 }
 
 // The study's run: its task's iterations (studyIterationCount).
 template <typename T, typename Observer = NoObserver>
-RunnerResult runStudy(LawType law, const StudyRun<T>& run, const RunnerConfig<T>& cfg,
+RunnerResult runStudy(LawType law, const ArdroneRun<T>& run, const RunnerConfig<T>& cfg,
                       Observer observe = Observer()) {
   const long n = studyIterationCount(double(cfg.task.duration()), double(run.plant.Ts));
   return runLoop(law, run, cfg, n, observe);
@@ -186,7 +213,7 @@ RunnerResult runStudy(LawType law, const StudyRun<T>& run, const RunnerConfig<T>
 template <typename T, typename Observer = NoObserver>
 RunnerResult runPositioning(const aurora_sim::ArdroneParams<T>& p, const RunnerConfig<T>& cfg,
                             const PdGains<T>& gains, long delay, Observer observe = Observer()) {
-  StudyRun<T> run{p, p, LawGains<T>{gains, UnderactuatedGains<T>::defaults()}, delay};
+  ArdroneRun<T> run{p, p, LawGains<T>{gains, UnderactuatedGains<T>::defaults()}, delay};
   return runStudy(LawType::kPdSaturated, run, cfg, observe);
 }
 

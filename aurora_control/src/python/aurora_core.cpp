@@ -35,7 +35,7 @@ py::dict simulateFiles(const std::string& controller, const std::string& task, c
   FlightResult r;
   {
     py::gil_scoped_release unlocked;  // the flight touches no Python object
-    r = runFlight(f.vehicle, f.settings, f.task, f.steps, [&](const LoopObservation<double>& o, double e) {
+    r = runFlight(f.vehicle, f.settings, f.task, f.steps, [&](const FlightObservation& o, double e) {
       const long k = o.k;
       pt[k] = taskTime(k, f.vehicle.Ts);
       for (int i = 0; i < 12; ++i) px[12 * k + i] = o.X_before[i];

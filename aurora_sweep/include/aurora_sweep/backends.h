@@ -18,9 +18,14 @@ namespace aurora_sweep {
 // thread reads it for the ETA.
 using Progress = std::atomic<long>;
 
+// The sweep's vehicle (a sweep file's vehicle is an AR.Drone's).
+using SweepVehicle = aurora_sim::Ardrone2;
 template <typename T>
-SimSetup<T> makeSetup(const SweepSpec& spec) {
-  SimSetup<T> s;
+using SweepSetup = SimSetup<SweepVehicle, T>;
+
+template <typename T>
+SweepSetup<T> makeSetup(const SweepSpec& spec) {
+  SweepSetup<T> s;
   s.vehicle = spec.vehicle;
   s.model = spec.vehicle.cast<T>();
   s.config.task = spec.task.cast<T>();
@@ -68,7 +73,8 @@ template <class Loop>
 void runEachCombination(const SweepSpec& spec, std::vector<SimResult>& out, Progress& progress, Loop&& loop) {
   withSweepTypes(spec, [&](auto type, auto capacity, auto law) {
     using T = decltype(type);
-    constexpr aurora_control::LawType kLaw = decltype(law)::value;
+    using Law = decltype(law);
+    constexpr aurora_control::LawType kLaw = Law::value;
     constexpr int kCapacity = decltype(capacity)::value;
     const GridView grid = spec.view();
     const long first = spec.rangeBegin();
@@ -81,10 +87,10 @@ void runEachCombination(const SweepSpec& spec, std::vector<SimResult>& out, Prog
         progress.fetch_add(1, std::memory_order_relaxed);
       });
     }
-    const SimSetup<T> setup = makeSetup<T>(spec);
+    const SweepSetup<T> setup = makeSetup<T>(spec);
     loop(spec.rangeSize(), [&](long i) {
-      out[i] = setup.ideal_link ? simulateCombination<kLaw, T, kCapacity, false>(setup, grid, first + i)
-                                : simulateCombination<kLaw, T, kCapacity, true>(setup, grid, first + i);
+      out[i] = setup.ideal_link ? simulateCombination<Law, T, kCapacity, false>(setup, grid, first + i)
+                                : simulateCombination<Law, T, kCapacity, true>(setup, grid, first + i);
       progress.fetch_add(1, std::memory_order_relaxed);
     });
   });

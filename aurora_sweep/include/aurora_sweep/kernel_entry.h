@@ -17,8 +17,8 @@ AURORA_HD inline long threadIndex(unsigned block, unsigned block_dim, unsigned t
   return static_cast<long>(block) * static_cast<long>(block_dim) + static_cast<long>(thread);
 }
 
-template <aurora_control::LawType Law, typename T, int Capacity, bool Linked = false>
-AURORA_HD inline void sweepThread(const SimSetup<T>& setup, const GridView& grid, long first, long n,
+template <class Law, typename T, int Capacity, bool Linked = false>
+AURORA_HD inline void sweepThread(const SimSetup<typename Law::Vehicle, T>& setup, const GridView& grid, long first, long n,
                                   SimResult* out, unsigned block, unsigned block_dim, unsigned thread) {
   const long i = threadIndex(block, block_dim, thread);
   if (i < n) out[i] = simulateCombination<Law, T, Capacity, Linked>(setup, grid, first + i);

@@ -11,50 +11,53 @@
 
 namespace aurora_sweep {
 
-// Everything a simulation needs besides its combination, in precision T.
-template <typename T>
+// Everything a simulation needs besides its combination, in precision T,
+// for vehicle `Vehicle` (aurora_sim/vehicle/).
+template <class Vehicle, typename T>
 struct SimSetup {
-  aurora_sim::ArdroneParams<double> vehicle;  // the vehicle file's (nominal) values
-  aurora_sim::ArdroneParams<T> model;         // the same in T: what the underactuated law inverts
+  typename Vehicle::template Params<double> vehicle;  // the vehicle file's (nominal) values
+  typename Vehicle::template Params<T> model;         // the same in T: what the law inverts
   aurora_control::RunnerConfig<T> config;
   long iterations;    // loop iterations of the task (1801 for 60 s)
-  bool varies_model;  // some model factor is not 1: each run scales its own drone
+  bool varies_model;  // some model factor is not 1: each run scales its own vehicle
   bool ideal_link;    // every run is today's loop (SweepSpec::linkIdeal)
 };
 
 static_assert(kLinkParamCount == aurora_control::kLinkValueCount, "one sweep parameter per link value");
 
-// The model parameters the factors multiply (factor i is parameter
-// kParamFirstModelFactor + i: m, Ixx, Iyy, Izz, Cf, Ct, Km, Jm); then the
-// derived quantities follow (k2 = Ct/Cf, hover speed and voltage). In
-// double, as the vehicle file is loaded, then converted: every backend and
-// precision scales the same way.
-AURORA_HD inline aurora_sim::ArdroneParams<double> scaledModel(aurora_sim::ArdroneParams<double> p,
-                                                               const double* factor) {
-  p.m *= factor[0];
-  p.Ixx *= factor[1];
-  p.Iyy *= factor[2];
-  p.Izz *= factor[3];
-  p.Cf *= factor[4];
-  p.Ct *= factor[5];
-  p.Km *= factor[6];
-  p.Jm *= factor[7];
-  p.updateDerived();
-  return p;
-}
+// How a combination's values set the gains of a law with data `Data`
+// (control_law.h): each law family names the sweep parameters it reads.
+template <class Data>
+struct SweepGains;
 
-// A combination's own run: its gains, its delay and its drone.
-template <typename T>
-AURORA_HD inline aurora_control::StudyRun<T> studyRun(const SimSetup<T>& s, const Combination& c) {
-  aurora_control::StudyRun<T> run;
-  run.model = s.model;
-  run.plant = s.varies_model ? scaledModel(s.vehicle, c.v + kParamFirstModelFactor).template cast<T>()
-                             : s.model;
-  run.gains.pd.kp = T(c.v[kParamKp]);
-  run.gains.pd.kd = T(c.v[kParamKd]);
-  for (int i = 0; i < kUnderactuatedGainCount; ++i) {
-    aurora_control::underactuatedGain(run.gains.underactuated, i) = T(c.v[kParamFirstUnderactuatedGain + i]);
+// The AR.Drone's laws: the PD law's kp, kd; the underactuated law's 12
+// gains (underactuatedGainName order).
+template <>
+struct SweepGains<aurora_control::ArdroneLawData> {
+  template <typename T>
+  AURORA_HD static aurora_control::LawGains<T> from(const Combination& c) {
+    aurora_control::LawGains<T> g;
+    g.pd.kp = T(c.v[kParamKp]);
+    g.pd.kd = T(c.v[kParamKd]);
+    for (int i = 0; i < kUnderactuatedGainCount; ++i) {
+      aurora_control::underactuatedGain(g.underactuated, i) = T(c.v[kParamFirstUnderactuatedGain + i]);
+    }
+    return g;
   }
+};
+
+// A combination's own run of law `Law`: its gains, its delay and its
+// vehicle (the vehicle file's scaled by the combination's model factors,
+// factor i being parameter kParamFirstModelFactor + i: Vehicle::scaled).
+template <class Law, class Vehicle, typename T>
+AURORA_HD inline aurora_control::StudyRun<typename Law::Data, T> studyRun(const SimSetup<Vehicle, T>& s,
+                                                                          const Combination& c) {
+  static_assert(Vehicle::kFactors <= kModelFactorCount, "the sweep holds kModelFactorCount model factors");
+  aurora_control::StudyRun<typename Law::Data, T> run;
+  run.model = s.model;
+  run.plant = s.varies_model ? Vehicle::scaled(s.vehicle, c.v + kParamFirstModelFactor).template cast<T>()
+                             : s.model;
+  run.gains = SweepGains<typename Law::Data>::template from<T>(c);
   run.delay = c.delay();
   return run;
 }
@@ -113,9 +116,9 @@ AURORA_HD inline aurora_control::LinkParams combinationLink(const aurora_control
 }
 
 // A combination's run over an ideal link: today's loop, the delay rule.
-template <aurora_control::LawType Law, typename T, int Capacity>
-AURORA_HD inline aurora_control::RunnerResult runCombination(const SimSetup<T>& setup, const Combination&,
-                                                             const aurora_control::StudyRun<T>& run,
+template <class Law, typename T, int Capacity, class Setup>
+AURORA_HD inline aurora_control::RunnerResult runCombination(const Setup& setup, const Combination&,
+                                                             const aurora_control::StudyRun<typename Law::Data, T>& run,
                                                              std::false_type /*linked*/) {
   aurora_control::NoObserver none;
   return aurora_control::runClosedLoop<Law, T, Capacity>(run, setup.config, setup.iterations, none);
@@ -125,23 +128,24 @@ AURORA_HD inline aurora_control::RunnerResult runCombination(const SimSetup<T>& 
 // repeat, not the chunk), so every backend and range split draws the same.
 // The channels and the commands in flight live in this frame
 // (Capacity-sized, as the history): no allocation, host and device.
-template <aurora_control::LawType Law, typename T, int Capacity>
-AURORA_HD inline aurora_control::RunnerResult runCombination(const SimSetup<T>& setup, const Combination& c,
-                                                             const aurora_control::StudyRun<T>& run,
+template <class Law, typename T, int Capacity, class Setup>
+AURORA_HD inline aurora_control::RunnerResult runCombination(const Setup& setup, const Combination& c,
+                                                             const aurora_control::StudyRun<typename Law::Data, T>& run,
                                                              std::true_type /*linked*/) {
   aurora_control::NoObserver none;
-  aurora_control::ModelLink<Capacity, T> link(combinationLink(setup.config.link, run.delay, c), run.delay,
-                                              static_cast<uint64_t>(c.key), double(run.plant.Ts));
+  aurora_control::ModelLink<Capacity, T, Law::Vehicle::kInputs> link(
+      combinationLink(setup.config.link, run.delay, c), run.delay, static_cast<uint64_t>(c.key), double(run.plant.Ts));
   return aurora_control::runClosedLoopOver<Law, T, Capacity>(run, setup.config, setup.iterations, none, link);
 }
 
-// Combination `index`'s run (over its link when `Linked`): the CUDA thread's
-// and the scalar loop's body.
-template <aurora_control::LawType Law, typename T, int Capacity, bool Linked = false>
-AURORA_HD inline SimResult simulateCombination(const SimSetup<T>& setup, const GridView& grid, long index) {
+// Combination `index`'s run of law `Law` (over its link when `Linked`): the
+// CUDA thread's and the scalar loop's body.
+template <class Law, typename T, int Capacity, bool Linked = false>
+AURORA_HD inline SimResult simulateCombination(const SimSetup<typename Law::Vehicle, T>& setup, const GridView& grid,
+                                               long index) {
   const Combination c = grid.decode(index);
-  return compactResult(
-      runCombination<Law, T, Capacity>(setup, c, studyRun(setup, c), std::integral_constant<bool, Linked>()));
+  return compactResult(runCombination<Law, T, Capacity>(setup, c, studyRun<Law>(setup, c),
+                                                        std::integral_constant<bool, Linked>()));
 }
 
 }  // namespace aurora_sweep

@@ -1,0 +1,68 @@
+// The AR.Drone 2.0 as a vehicle (docs/architecture.md, "Vehicles"): the
+// type every generic loop, the sweep's engines and the kernel are
+// instantiated on. A vehicle gives, as static members:
+// - Params<T>, State<T>: its parameters (a struct of T only, with the robot
+//   sample time Ts [s]) and its state (X[kStates], reset() to the study's
+//   start), templated on the scalar (double, float, SIMD batches, CUDA);
+// - kStates, kInputs, kPosition: the state's size, the command's size, and
+//   where x y z [m, world frame] sit in X;
+// - step(p, s, U): one model step of Ts with command U;
+// - limitInput(i, u): the drone's own clamp of command component i (what
+//   its driver does with what it receives);
+// - kFactors, scaled(p, factor): the model parameters a sweep may scale
+//   (factor i multiplies parameter i of factorName order), derived values
+//   recomputed.
+// Only the files of a vehicle name it; the rest chooses it by name.
+#pragma once
+
+#include "aurora_sim/ardrone_model.h"
+
+namespace aurora_sim {
+
+struct Ardrone2 {
+  template <typename T>
+  using Params = ArdroneParams<T>;
+  template <typename T>
+  using State = ArdroneState<T>;
+
+  static constexpr int kStates = kStateSize;    // StateIndex order (state_index.h)
+  static constexpr int kInputs = kCommandSize;  // CommandIndex order, each in [-1, 1]
+  static constexpr int kPosition = kX;
+  static constexpr int kFactors = 8;
+
+  // One step of docs/model.md, "One model step", without disturbances.
+  template <typename T>
+  AURORA_HD static void step(const Params<T>& p, State<T>& s, const T U[kInputs]) {
+    ardroneStep(p, s, U, Disturbance<T>::zero());
+  }
+
+  // The AR.Drone's driver (and the sim node) clamp each command to [-1, 1].
+  template <typename T>
+  AURORA_HD static T limitInput(int, const T& u) {
+    return clampUnit(u);
+  }
+
+  // The factors' parameters, in factor order (the sweep's m_factor ...).
+  static const char* factorName(int i) {
+    static const char* const names[kFactors] = {"m", "Ixx", "Iyy", "Izz", "Cf", "Ct", "Km", "Jm"};
+    return names[i];
+  }
+
+  // Factor i multiplies parameter factorName(i); then the derived quantities
+  // follow (k2 = Ct/Cf, hover speed and voltage). In double, as the vehicle
+  // file is loaded, then converted: every backend and precision scales alike.
+  AURORA_HD static Params<double> scaled(Params<double> p, const double* factor) {
+    p.m *= factor[0];
+    p.Ixx *= factor[1];
+    p.Iyy *= factor[2];
+    p.Izz *= factor[3];
+    p.Cf *= factor[4];
+    p.Ct *= factor[5];
+    p.Km *= factor[6];
+    p.Jm *= factor[7];
+    p.updateDerived();
+    return p;
+  }
+};
+
+}  // namespace aurora_sim

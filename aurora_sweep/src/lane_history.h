@@ -1,0 +1,140 @@
+// The SIMD engine's history and links as the policies of the one iteration
+// (closed_loop.h, loopIteration): the same interface as the scalar runner's
+// StateHistory, IdealLink and ModelLink, on lanes. Each lane runs its own
+// simulation; `k` is each lane's iteration as integer lanes. Included by
+// batch_engine.h only.
+#pragma once
+
+#include <xsimd/xsimd.hpp>
+
+#include <vector>
+
+#include "aurora_control/control_law.h"
+#include "gather_lanes.h"
+#include "lane_links.h"
+
+namespace aurora_sweep {
+
+namespace {
+
+// Every lane's last Capacity states as law `Law` reads them, in one ring of
+// slots [slot][j][lane]: every lane writes the same slot at each push (a
+// plain vector store); lane l's H(i) sits at slot start_l + i - 1.
+template <class Law, typename T, class Arch, int Capacity>
+class LaneHistory {
+ public:
+  using B = xsimd::batch<T, Arch>;
+  using Int = xsimd::as_integer_t<T>;
+  using I = xsimd::batch<Int, Arch>;
+  using Input = typename Law::Input;
+  static constexpr int L = static_cast<int>(B::size);
+  static constexpr int W = Input::kWidth;
+  static constexpr int kStates = Law::Vehicle::kStates;
+  static_assert((Capacity & (Capacity - 1)) == 0, "history capacity must be a power of two");
+
+  LaneHistory() : ring_(static_cast<size_t>(Capacity) * W * L) {
+    alignas(64) Int iota[L];
+    for (int l = 0; l < L; ++l) iota[l] = static_cast<Int>(l);
+    lane_ = I::load_aligned(iota);
+  }
+
+  // Lane l starts a run: empty, its H(1) at the next slot pushed.
+  void startLane(int l) {
+    setLane(count_, l, Int(0));
+    setLane(start_, l, static_cast<Int>((slot_ + 1) % Capacity));
+  }
+
+  // States kept by each lane: its iteration k about to run (k + 1 once pushed).
+  const I& size() const { return count_; }
+  const I& start() const { return start_; }
+  long slot() const { return slot_; }  // the ring slot written last
+
+  void push(const B X[kStates]) {
+    ++slot_;
+    const long slot = slot_ % Capacity;
+    for (int j = 0; j < W; ++j) X[Input::state(j)].store_aligned(&ring_[(slot * W + j) * L]);
+    count_ = count_ + I(Int(1));
+  }
+
+  // Each lane's state of its step `step` (0-based), gathered from the ring.
+  void read(const I& step, B X[kStates]) const {
+    const I base = ((start_ + step) & I(Int(Capacity - 1))) * I(Int(W * L)) + lane_;
+    aurora_control::LawSample<B, Law> sample;
+    for (int j = 0; j < W; ++j) sample.v[j] = gatherLanes<B>(ring_.data(), base + I(Int(j * L)));
+    sample.toState(X);
+  }
+
+ private:
+  static void setLane(I& b, int lane, Int v) {
+    alignas(64) Int tmp[L];
+    b.store_aligned(tmp);
+    tmp[lane] = v;
+    b = I::load_aligned(tmp);
+  }
+
+  std::vector<T, xsimd::aligned_allocator<T, 64>> ring_;
+  I count_ = I(Int(0));
+  I start_ = I(Int(0));
+  I lane_;
+  long slot_ = 0;
+};
+
+// Every lane over its own link model: vectorized (LaneLinks) or, where those
+// do not apply (a geometric jitter), each lane's ModelLink in turn.
+template <class Law, typename T, class Arch, int Capacity>
+class LaneModelLinks {
+ public:
+  using History = LaneHistory<Law, T, Arch, Capacity>;
+  using B = typename History::B;
+  using Int = typename History::Int;
+  using I = typename History::I;
+  static constexpr int L = History::L, kInputs = Law::Vehicle::kInputs;
+  using Link = aurora_control::ModelLink<Capacity, T, kInputs>;
+
+  LaneModelLinks(const aurora_control::LinkParams& base, double Ts, const History& history) : history_(history) {
+    if (laneLinksApply(base)) {
+      lanes_.reset(new LaneLinks<Capacity, T, Arch, kInputs>(std::lround(base.cmd_timeout / Ts)));
+    } else {
+      links_.reserve(L);
+      for (int l = 0; l < L; ++l) links_.emplace_back(base, 0, 0, Ts);
+    }
+  }
+
+  // Lane l's run over `link`, its draws keyed by `key`.
+  void startLane(int l, const aurora_control::LinkParams& link, long delay, uint64_t key, double Ts) {
+    if (lanes_) return lanes_->start(l, link, key);
+    links_[l] = Link(link, delay, key, Ts);
+  }
+
+  // The step (0-based) whose state each lane's controller receives at its k.
+  I uplinkIndex(const I& k) {
+    const I one(Int(1));
+    if (lanes_) return lanes_->uplink(k + one, history_.start(), history_.slot()) - one;
+    long steps[L];
+    laneSteps(k, steps);
+    return modelLinksUplink<I>(links_, steps) - one;
+  }
+
+  // The commands each lane sent at its k become the ones its vehicle applies.
+  void downlink(const I& k, const B*, B* U) {
+    if (lanes_) return lanes_->downlink(k + I(Int(1)), history_.start(), history_.slot(), U);
+    long steps[L];
+    laneSteps(k, steps);
+    modelLinksDownlink<kInputs>(links_, steps, U);
+  }
+
+ private:
+  static void laneSteps(const I& k, long (&steps)[L]) {
+    alignas(64) Int at[L];
+    k.store_aligned(at);
+    for (int l = 0; l < L; ++l) steps[l] = long(at[l]);
+  }
+
+  const History& history_;
+  std::unique_ptr<LaneLinks<Capacity, T, Arch, kInputs>> lanes_;
+  std::vector<Link> links_;
+};
+
+}  // namespace
+
+}  // namespace aurora_sweep
