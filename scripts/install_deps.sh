@@ -2,7 +2,7 @@
 # Installs what AuRoRA-ROS needs to build, test and run its demo, only where
 # missing (idempotent). Debian 12: ROS 1 from Debian's own packages.
 # Ubuntu 20.04: ROS Noetic from /opt/ros/noetic (ros-noetic-* packages; the
-# ROS apt repository must be configured, see README).
+# ROS apt repository must be configured, see docs/platforms.md).
 set -euo pipefail
 
 SUDO=""

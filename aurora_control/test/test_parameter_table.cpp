@@ -1,5 +1,5 @@
 // The parameter table (parameter_table.h) is the one source: the laws' own
-// defaults and the names they are read by equal its rows, and the README's
+// defaults and the names they are read by equal its rows, and docs/parameters.md's
 // parameter reference is the table's (regenerate it from the failure's text).
 #include <gtest/gtest.h>
 
@@ -32,16 +32,16 @@ TEST(ParameterTable, BothPdGainsShareOneRange) {
   EXPECT_EQ(kDelayHistory, kMaxDelaySamples + 1);
 }
 
-TEST(ParameterTable, ReadmeReferenceIsTheTables) {
-  std::ifstream in(AURORA_README);
-  ASSERT_TRUE(in.good()) << AURORA_README;
+TEST(ParameterTable, DocsReferenceIsTheTables) {
+  std::ifstream in(AURORA_PARAMETER_DOC);
+  ASSERT_TRUE(in.good()) << AURORA_PARAMETER_DOC;
   std::stringstream text;
   text << in.rdbuf();
   const std::string readme = text.str(), begin = "<!-- parameter-reference:begin -->\n",
                     end = "<!-- parameter-reference:end -->";
   const size_t a = readme.find(begin), b = readme.find(end);
-  ASSERT_NE(a, std::string::npos) << "README.md lacks the marker " << begin;
-  ASSERT_NE(b, std::string::npos) << "README.md lacks the marker " << end;
+  ASSERT_NE(a, std::string::npos) << "docs/parameters.md lacks the marker " << begin;
+  ASSERT_NE(b, std::string::npos) << "docs/parameters.md lacks the marker " << end;
   EXPECT_EQ(readme.substr(a + begin.size(), b - a - begin.size()), parameterReference())
-      << "README.md's parameter reference differs from parameter_table.h: put this between the markers";
+      << "docs/parameters.md's reference differs from parameter_table.h: put this between the markers";
 }

@@ -153,10 +153,40 @@ AURORA_HD inline void iterationNumber(const K& k, T& out) {
   out = T(k);
 }
 
+// Steps 1-2 of iteration k (loopIteration below): the history keeps X_k,
+// the link picks the step whose state the controller receives, read back
+// into xc. Returns that step. A formation runs it for each robot before its
+// layer (formation_runner.h).
+template <class Data, typename T, typename Mask, typename K, class History, class Link>
+AURORA_HD inline K receiveState(const K& k, History& history, Link& link, const LoopState<Data, T, Mask>& s,
+                                T xc[Data::Vehicle::kStates]) {
+  history.push(s.model.X);  // H(k + 1) = X_k
+  const K received = link.uplinkIndex(k);
+  history.read(received, xc);
+  return received;
+}
+
+// Steps 3-5 of iteration k on the state xc received: the controller's half
+// towards task's reference, the command through the link's downlink, the
+// vehicle's half. Returns the reference and the command applied.
+template <class Law, class Data, typename T, typename Mask, typename TaskT, typename K, class Link>
+AURORA_HD inline LoopStep<T, Data::Vehicle::kInputs> actOn(const LoopParams<Data, T>& p, const TaskT& task,
+                                                           const ClampPolicy& clamp, const K& k,
+                                                           const T xc[Data::Vehicle::kStates], Link& link,
+                                                           LoopState<Data, T, Mask>& s) {
+  T U[Data::Vehicle::kInputs], kt;
+  iterationNumber(k, kt);
+  LoopStep<T, Data::Vehicle::kInputs> step;
+  step.ref = controllerHalf<Law>(p, task, clamp, kt, xc, s, U);
+  link.downlink(k, U, U);
+  droneHalf(p, clamp, step.ref, U, s, step.U);
+  return step;
+}
+
 // One iteration k of the closed loop, written once for every loop that runs
 // one (docs/architecture.md, "One iteration"): the offline runner (the
 // sweep's scalar backend, the flight tool, each CUDA thread) and the SIMD
-// engine on lanes. In order:
+// engine on lanes; a formation runs its two parts around its layer. In order:
 //  1. history.push(X_k): the history keeps the state (what the law reads);
 //  2. link.uplinkIndex(k): the step whose state the controller receives
 //     (the delay rule over an ideal link), read back from the history;
@@ -174,17 +204,9 @@ template <class Law, class Data, typename T, typename Mask, typename TaskT, type
 AURORA_HD inline Mask loopIteration(const LoopParams<Data, T>& p, const TaskT& task, const ClampPolicy& clamp,
                                     bool early_stop, const K& k, History& history, Link& link,
                                     LoopState<Data, T, Mask>& s, Observer&& observe) {
-  constexpr int kInputs = Law::Vehicle::kInputs;
-  history.push(s.model.X);  // H(k + 1) = X_k
-  const K received = link.uplinkIndex(k);
-  T xc[Law::Vehicle::kStates], U[kInputs];
-  history.read(received, xc);
-  LoopStep<T, kInputs> step;
-  T kt;
-  iterationNumber(k, kt);
-  step.ref = controllerHalf<Law>(p, task, clamp, kt, xc, s, U);
-  link.downlink(k, U, U);
-  droneHalf(p, clamp, step.ref, U, s, step.U);
+  T xc[Data::Vehicle::kStates];
+  const K received = receiveState(k, history, link, s, xc);
+  const LoopStep<T, Data::Vehicle::kInputs> step = actOn<Law>(p, task, clamp, k, xc, link, s);
   observe(step, xc, received);
   return stoppedEarly(early_stop, s.metrics.feasible());
 }

@@ -118,6 +118,17 @@ AURORA_HD inline void startFormation(const FormationRun<T, Shape>& run, DronePar
   startLayer(run, layer);
 }
 
+// Drone d's downlink(d, U) as the link actOn (closed_loop.h) sends through.
+template <class Downlink>
+struct DroneDownlink {
+  Downlink& to;
+  int drone;
+  template <typename K, typename T>
+  AURORA_HD void downlink(const K&, const T*, T* U) const {
+    to(drone, U);
+  }
+};
+
 // Steps 2-3 of tick k (docs/formation.md, "One tick") on the states xc the
 // drones' uplinks delivered: the layer when `Qd` is given (a period is
 // due), then each drone's law towards its held reference, its command
@@ -139,10 +150,8 @@ AURORA_HD inline void formationTick(const DroneParams<T>* params, const ClampPol
   for (int d = 0; d < D; ++d) {
     HeldReference<T> held;
     held.ref = heldReference(layer, d);
-    T U[4];
-    step[d].ref = controllerHalf<ArdroneLaw<Law>>(params[d], held, clamp, k, xc[d], state[d], U);
-    downlink(d, U);
-    droneHalf(params[d], clamp, step[d].ref, U, state[d], step[d].U);
+    DroneDownlink<Downlink> link{downlink, d};
+    step[d] = actOn<ArdroneLaw<Law>>(params[d], held, clamp, k, xc[d], link, state[d]);
   }
 }
 
@@ -166,18 +175,16 @@ AURORA_HD inline auto observeTick(Observer& observe, const Observation& o)
 template <LawType Law, typename T, class Shape, int Capacity, typename Observer, typename Link>
 AURORA_HD long runFormationOver(const FormationRun<T, Shape>& run, long iterations, Observer& observe, Link* links) {
   constexpr int D = Shape::kDrones, N = Shape::kVariables;
-  using Sample = LawSample<T, ArdroneLaw<Law>>;
   FormationLayer<T, Shape> layer(run.law, run.gains, T(run.period_steps) * run.drone[0].plant.Ts);
   DroneParams<T> params[D];
   DroneState<T, bool> state[D];
-  DelayBuffer<Sample, Capacity> history[D];
+  StateHistory<ArdroneLaw<Law>, T, Capacity> history[D];
   startFormation(run, params, state, layer);
   for (long k = 0; k < iterations; ++k) {
     T xc[D][aurora_sim::kStateSize], before[D][aurora_sim::kStateSize], Qd[N];
     for (int d = 0; d < D; ++d) {
       for (int i = 0; i < aurora_sim::kStateSize; ++i) before[d][i] = state[d].model.X[i];
-      history[d].push(Sample::fromState(state[d].model.X));
-      history[d].at(links[d].uplinkIndex(k)).toState(xc[d]);
+      receiveState(k, history[d], links[d], state[d], xc[d]);
     }
     const bool due = k % run.period_steps == 0;
     if (due) run.reference.at(taskTime(T(k), run.drone[0].plant.Ts), Qd);

@@ -2,7 +2,7 @@
 // table"): each one's name, kind, default, accepted range, unit and meaning.
 // The controller node, replay, flight, the sweep and the live settings
 // (dynamic_reconfigure) take their limits from here through limits.h; a test
-// checks Controller.cfg's limits against it and another that the README's
+// checks Controller.cfg's limits against it and another that docs/parameters.md's
 // parameter reference is parameterReference() of this table.
 #pragma once
 
@@ -147,7 +147,7 @@ inline std::string referenceValue(const ParameterSpec& p, double v) {
   return text;
 }
 
-// The table as the README's markdown (the "Parameter reference" section).
+// The table as docs/parameters.md's markdown (between its markers).
 inline std::string parameterReference() {
   std::string md = "| parameter | live setting | kind | default | min | max | unit | meaning |\n"
                    "|---|---|---|---|---|---|---|---|\n";
