@@ -14,6 +14,7 @@
 #include "aurora_sim/ros/conversions.h"
 #include "aurora_sim/rotation.h"
 #include "aurora_sim/ros/params.h"
+#include "aurora_sim/vehicle/ardrone2.h"
 
 namespace aurora_sim {
 
@@ -167,7 +168,7 @@ void ArdroneSimNode::onCmdVel(const geometry_msgs::Twist::ConstPtr& msg) {
     for (double& u : command_) u = 0.0;
   } else {
     nan_burst_.accepted();
-    for (int i = 0; i < 4; ++i) command_[i] = clampUnit(U[i]);
+    for (int i = 0; i < Ardrone2::kInputs; ++i) command_[i] = Ardrone2::limitInput(i, U[i]);  // as the driver
   }
   have_command_ = true;
   command_time_ = ros::Time::now();
@@ -272,7 +273,7 @@ void ArdroneSimNode::stepAndPublish(const ros::Time& now, bool command_fresh) {
       }
       break;
   }
-  if (!resting) ardroneStep(params_, model_, U, Disturbance<double>::zero());
+  if (!resting) Ardrone2::step(params_, model_, U);  // the vehicle's step, as every offline loop's
   ++step_;
   // The ground holds the drone while its rotors spin up or it touches down.
   // (In flight there is no ground, as in the study's model, so a flight

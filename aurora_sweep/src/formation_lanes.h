@@ -29,28 +29,21 @@ class FormationBatch {
   using Int = xsimd::as_integer_t<T>;
   using I = xsimd::batch<Int, Arch>;
   using Line = aurora_control::LineFormation<B>;
-  using Input = aurora_control::LawInput<Law>;
-  static constexpr int W = Input::kWidth;
-  using Link = aurora_control::ModelLink<Capacity, T>;
+  using DroneLaw = aurora_control::ArdroneLaw<Law>;
+  using History = LaneHistory<DroneLaw, T, Arch, Capacity>;
+  using Links = LaneModelLinks<DroneLaw, T, Arch, Capacity>;
 
   FormationBatch(const SweepSpec& spec, std::vector<SimResult>& out, std::atomic<long>& next, Progress& progress)
       : grid_(spec.view()), first_(spec.rangeBegin()), total_(spec.rangeEnd()), out_(out), next_(next),
         progress_(progress), setup_(makeFormationSetup<T>(spec)) {
+    // A sweep's link values may change a drone's link per combination: the
+    // vectorized links apply unless the drone's own jitter is geometric.
     for (int d = 0; d < D; ++d) {
-      history_[d].resize(static_cast<size_t>(Capacity) * W * L);
-      const aurora_control::LinkParams& link = setup_.run.drone[d].link;
-      if (setup_.ideal_link) continue;
-      // A sweep's link values may change a drone's link per combination: the
-      // vectorized links apply unless the drone's own jitter is geometric.
-      if (laneLinksApply(link)) {
-        lane_links_[d].reset(new LaneLinks<Capacity, T, Arch>(std::lround(link.cmd_timeout / double(setup_.run.drone[d].plant.Ts))));
-      } else {
-        for (int l = 0; l < L; ++l) links_[d].emplace_back(link, 0, 0, double(setup_.run.drone[d].plant.Ts));
+      ideal_[d].delay = I(Int(0));
+      if (!setup_.ideal_link) {
+        links_[d].reset(new Links(setup_.run.drone[d].link, double(setup_.run.drone[d].plant.Ts), history_[d]));
       }
     }
-    alignas(64) Int iota[L];
-    for (int l = 0; l < L; ++l) iota[l] = static_cast<Int>(l);
-    lane_ = I::load_aligned(iota);
   }
 
   void run() {
@@ -75,9 +68,12 @@ class FormationBatch {
       if (l == 0) broadcast(lane, run);
       for (int i = 0; i < 6; ++i) LaneOps::set(run.gains.k1[i], l, lane.gains.k1[i]), LaneOps::set(run.gains.k2[i], l, lane.gains.k2[i]);
       for (int d = 0; d < D; ++d) {
-        LaneOps::set(delay_[d], l, static_cast<Int>(lane.drone[d].delay));
-        if (lane_links_[d]) lane_links_[d]->start(l, lane.drone[d].link, formationLinkKey(c, d));
-        else if (!setup_.ideal_link) links_[d][l] = Link(lane.drone[d].link, lane.drone[d].delay, formationLinkKey(c, d), double(lane.drone[d].plant.Ts));
+        LaneOps::set(ideal_[d].delay, l, static_cast<Int>(lane.drone[d].delay));
+        history_[d].startLane(l);
+        if (links_[d]) {
+          links_[d]->startLane(l, lane.drone[d].link, lane.drone[d].delay, formationLinkKey(c, d),
+                               double(lane.drone[d].plant.Ts));
+        }
       }
     }
   }
@@ -104,44 +100,20 @@ class FormationBatch {
     for (int i = 0; i < 6; ++i) run.reference.Q[i] = B(s.reference.Q[i]);
   }
 
-  // Each drone's delayed state at tick k (count = k + 1 states in its ring,
-  // X_j at slot j): the delay rule or the lanes' links, gathered.
-  void delayedStates(long k, B xc[D][aurora_sim::kStateSize]) {
-    const I count(static_cast<Int>(k + 1)), mask(Int(Capacity - 1));
+  // Steps 1-2 of tick k for each drone (closed_loop.h, receiveState): its
+  // history keeps X_k, its link (the delay rule, or the lanes' link models)
+  // picks the state it receives.
+  void receiveStates(long k, const aurora_control::DroneState<B, M>* state, B xc[D][aurora_sim::kStateSize]) {
+    const I at(static_cast<Int>(k));
     for (int d = 0; d < D; ++d) {
-      I index;  // 1-based
-      if (setup_.ideal_link) index = aurora_control::delayedHistoryIndex(count, delay_[d]);
-      else if (lane_links_[d]) index = lane_links_[d]->uplink(count, I(Int(0)), k);
-      else index = modelLinksUplink<I>(links_[d], everyLaneTicks(k).k);
-      const I base = ((index - I(Int(1))) & mask) * I(Int(W * L)) + lane_;
-      aurora_control::LawSample<B, aurora_control::ArdroneLaw<Law>> delayed;
-      for (int j = 0; j < W; ++j) delayed.v[j] = gatherLanes<B>(history_[d].data(), base + I(Int(j * L)));
-      delayed.toState(xc[d]);
+      if (links_[d]) aurora_control::receiveState(at, history_[d], *links_[d], state[d], xc[d]);
+      else aurora_control::receiveState(at, history_[d], ideal_[d], state[d], xc[d]);
     }
-  }
-
-  // Every lane is at tick k.
-  struct LaneTicks {
-    long k[L];
-  };
-  static LaneTicks everyLaneTicks(long k) {
-    LaneTicks t;
-    for (long& v : t.k) v = k;
-    return t;
   }
 
   // Drone d's sent commands U become the ones it applies (ideal: as sent).
-  void downlink(int d, long k, B U[4]) {
-    if (setup_.ideal_link) return;
-    if (lane_links_[d]) return lane_links_[d]->downlink(I(static_cast<Int>(k + 1)), I(Int(0)), k, U);
-    modelLinksDownlink<aurora_sim::kCommandSize>(links_[d], everyLaneTicks(k).k, U);
-  }
-
-  void push(long k, const aurora_control::DroneState<B, M>* state) {
-    const long slot = k % Capacity;
-    for (int d = 0; d < D; ++d) {
-      for (int j = 0; j < W; ++j) state[d].model.X[Input::state(j)].store_aligned(&history_[d][(slot * W + j) * L]);
-    }
+  void downlink(int d, long k, B U[aurora_sim::kCommandSize]) {
+    if (links_[d]) links_[d]->downlink(I(static_cast<Int>(k)), U, U);
   }
 
   void runBatch(long first, int count) {
@@ -170,9 +142,8 @@ class FormationBatch {
             aurora_control::FormationMetrics<B, M, Line>& metrics, const aurora_control::FormationCriteria<B>& criteria,
             long first, bool* ended) {
     const T Ts = setup_.run.drone[0].plant.Ts;
-    push(k, state);
     B xc[D][aurora_sim::kStateSize], X[6];
-    delayedStates(k, xc);
+    receiveStates(k, state, xc);
     for (int d = 0; d < D; ++d) {
       for (int i = 0; i < 3; ++i) X[3 * d + i] = state[d].model.X[aurora_sim::kX + i];
     }
@@ -228,11 +199,9 @@ class FormationBatch {
   std::atomic<long>& next_;
   Progress& progress_;
   const FormationSetup<T> setup_;
-  std::vector<T, xsimd::aligned_allocator<T, 64>> history_[D];  // per drone [slot][W][lane]
-  std::unique_ptr<LaneLinks<Capacity, T, Arch>> lane_links_[D];
-  std::vector<Link> links_[D];
-  I delay_[D];
-  I lane_;
+  History history_[D];                             // each drone's, every lane at the same tick
+  aurora_control::IdealLinkOf<I> ideal_[D];         // each drone's delay [samples] per lane, over the delay rule
+  std::unique_ptr<Links> links_[D];                // or each drone's lanes' link models
   B Xd_[6];  // the positions of the layer's held Qd (the same on every lane)
 };
 
