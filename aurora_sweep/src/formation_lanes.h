@@ -5,9 +5,9 @@
 // ended (its last tick, or a failed check with early stop); a lane's
 // result is taken at the tick it ended. The tick is the scalar runner's
 // (formation_runner.h's formationTick and formation_checks.h on batches);
-// each drone's delayed state is gathered from its ring by the delay rule or
-// its lanes' link models (lane_links.h, or ModelLink lane by lane for a
-// geometric jitter). Included by batch_engine.h only.
+// each drone's delayed state comes from receiveState (closed_loop.h) over
+// the lane policies of lane_history.h: its LaneHistory and the delay rule
+// on integer lanes or its lanes' link models. Included by batch_engine.h only.
 #pragma once
 
 #include <memory>
