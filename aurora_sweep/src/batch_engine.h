@@ -39,7 +39,6 @@ inline void iterationNumber(const batch<as_integer_t<T>, A>& k, batch<T, A>& out
 #include <type_traits>
 #include <vector>
 
-#include "aurora_control/delay_buffer.h"
 #include "aurora_sweep/backends.h"
 #include "lane_history.h"
 
@@ -51,38 +50,6 @@ namespace {
 // combinations run for similar lengths).
 constexpr long kChunk = 64;
 
-template <typename T, class A>
-struct Lanes {
-  using Arch = A;
-  using B = xsimd::batch<T, Arch>;
-  using M = xsimd::batch_bool<T, Arch>;
-  static constexpr int L = static_cast<int>(B::size);
-
-  // One lane of a batch (of T or of integers of T's width).
-  template <class Batch>
-  static void set(Batch& b, int lane, typename Batch::value_type v) {
-    alignas(64) typename Batch::value_type tmp[L];
-    b.store_aligned(tmp);
-    tmp[lane] = v;
-    b = Batch::load_aligned(tmp);
-  }
-  template <class Batch>
-  static typename Batch::value_type get(const Batch& b, int lane) {
-    alignas(64) typename Batch::value_type tmp[L];
-    b.store_aligned(tmp);
-    return tmp[lane];
-  }
-  static void set(M& m, int lane, bool v) {
-    B as_number = xsimd::select(m, B(T(1)), B(T(0)));
-    set(as_number, lane, v ? T(1) : T(0));
-    m = as_number != B(T(0));
-  }
-  static bool get(const M& m, int lane) {
-    alignas(64) bool tmp[L];
-    m.store_aligned(tmp);
-    return tmp[lane];
-  }
-};
 
 // Runs the combinations [first, total) of `grid` on the lanes of batches of
 // instruction set Arch, law `Law` on its vehicle (setup), histories of

@@ -17,6 +17,40 @@ namespace aurora_sweep {
 
 namespace {
 
+// One lane of a SIMD batch, read or written (the engine sets each lane's run).
+template <typename T, class A>
+struct Lanes {
+  using Arch = A;
+  using B = xsimd::batch<T, Arch>;
+  using M = xsimd::batch_bool<T, Arch>;
+  static constexpr int L = static_cast<int>(B::size);
+
+  // One lane of a batch (of T or of integers of T's width).
+  template <class Batch>
+  static void set(Batch& b, int lane, typename Batch::value_type v) {
+    alignas(64) typename Batch::value_type tmp[L];
+    b.store_aligned(tmp);
+    tmp[lane] = v;
+    b = Batch::load_aligned(tmp);
+  }
+  template <class Batch>
+  static typename Batch::value_type get(const Batch& b, int lane) {
+    alignas(64) typename Batch::value_type tmp[L];
+    b.store_aligned(tmp);
+    return tmp[lane];
+  }
+  static void set(M& m, int lane, bool v) {
+    B as_number = xsimd::select(m, B(T(1)), B(T(0)));
+    set(as_number, lane, v ? T(1) : T(0));
+    m = as_number != B(T(0));
+  }
+  static bool get(const M& m, int lane) {
+    alignas(64) bool tmp[L];
+    m.store_aligned(tmp);
+    return tmp[lane];
+  }
+};
+
 // Every lane's last Capacity states as law `Law` reads them, in one ring of
 // slots [slot][j][lane]: every lane writes the same slot at each push (a
 // plain vector store); lane l's H(i) sits at slot start_l + i - 1.
@@ -40,8 +74,8 @@ class LaneHistory {
 
   // Lane l starts a run: empty, its H(1) at the next slot pushed.
   void startLane(int l) {
-    setLane(count_, l, Int(0));
-    setLane(start_, l, static_cast<Int>((slot_ + 1) % Capacity));
+    Lanes<T, Arch>::set(count_, l, Int(0));
+    Lanes<T, Arch>::set(start_, l, static_cast<Int>((slot_ + 1) % Capacity));
   }
 
   // States kept by each lane: its iteration k about to run (k + 1 once pushed).
@@ -65,13 +99,6 @@ class LaneHistory {
   }
 
  private:
-  static void setLane(I& b, int lane, Int v) {
-    alignas(64) Int tmp[L];
-    b.store_aligned(tmp);
-    tmp[lane] = v;
-    b = I::load_aligned(tmp);
-  }
-
   std::vector<T, xsimd::aligned_allocator<T, 64>> ring_;
   I count_ = I(Int(0));
   I start_ = I(Int(0));

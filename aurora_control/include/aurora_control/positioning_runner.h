@@ -28,8 +28,9 @@ struct RunnerConfig {
 };
 
 // One simulation's own parameters: the simulated vehicle, the gains of a
-// law with data `Data` (control_law.h) and the delay. `model` is what the law inverts (the vehicle file's
-// nominal values; `plant` differs from it in a robustness study).
+// law with data `Data` (control_law.h) and the delay. `model` is what the
+// law inverts (the vehicle file's nominal values; `plant` differs from it in
+// a robustness study).
 template <class Data, typename T>
 struct StudyRun {
   typename Data::Vehicle::template Params<T> plant;
@@ -124,8 +125,8 @@ struct ObserverAt<Law, T, NoObserver> {
 // for the study, taskStepCount() for a flight. Iteration k (0-based) is
 // loopIteration (closed_loop.h) over `link`.
 template <class Law, typename T, int Capacity, typename Observer, typename Link>
-AURORA_HD RunnerResult runClosedLoopOver(const StudyRun<typename Law::Data, T>& run, const RunnerConfig<T>& cfg, long iterations,
-                                         Observer& observe, Link& link) {
+AURORA_HD RunnerResult runClosedLoopOver(const StudyRun<typename Law::Data, T>& run, const RunnerConfig<T>& cfg,
+                                         long iterations, Observer& observe, Link& link) {
   const LoopParams<typename Law::Data, T> params{run.plant, run.model, run.gains, cfg.criteria};
   const ClampPolicy clamp{cfg.clamp_commands, cfg.clamp_at_drone};
   LoopState<typename Law::Data, T, bool> s;
