@@ -44,7 +44,6 @@ class FormationErrors {
 
 const char* kDroneColumns[16] = {"x", "y", "z", "phi", "theta", "psi", "dx", "dy", "dz", "dphi", "dtheta", "dpsi",
                                  "u1", "u2", "u3", "u4"};
-const char* kQColumns[6] = {"xF", "yF", "zF", "rho", "alpha", "beta"};
 
 // One row per tick k from 0: step, t, each drone's 12-state after k model
 // steps and the commands it applied at tick k, then Q of those positions
@@ -59,7 +58,7 @@ class FormationCsv {
       for (const char* c : kDroneColumns) std::fprintf(f_, ",d%d_%s", d, c);
     }
     for (const char* prefix : {"Q", "Qd"}) {
-      for (const char* c : kQColumns) std::fprintf(f_, ",%s_%s", prefix, c);
+      for (int i = 0; i < Line::kVariables; ++i) std::fprintf(f_, ",%s_%s", prefix, Line::variableName(i));
     }
     std::fprintf(f_, "\n");
   }

@@ -225,24 +225,30 @@ namespace aurora_sweep {
 
 namespace {
 
+// work() on each of `threads` threads.
+template <class Work>
+void onThreads(int threads, Work&& work) {
+  std::vector<std::thread> pool;
+  for (int t = 0; t < threads; ++t) pool.emplace_back(work);
+  for (auto& th : pool) th.join();
+}
+
 template <typename T, class Arch, int Capacity, class Law>
 void runBatchWith(const SweepSpec& spec, int threads, std::vector<SimResult>& out,
                   Progress& progress) {
   out.resize(spec.rangeSize());
   std::atomic<long> next{spec.rangeBegin()};
-  std::vector<std::thread> pool;
   const GridView grid = spec.view();
-  const SweepSetup<T> setup = makeSetup<T>(spec);
-  for (int t = 0; t < threads; ++t) {
-    pool.emplace_back([&] {
-      if (spec.formation()) {
-        FormationBatch<T, Arch, Capacity, Law::value>(spec, out, next, progress).run();
-      } else {
-        BatchWorker<T, Arch, Capacity, Law>(setup, grid, spec.rangeBegin(), spec.rangeEnd(), out, next, progress).run();
-      }
+  const long first = spec.rangeBegin(), total = spec.rangeEnd();
+  if (spec.formation()) {
+    const FormationSetup<T> setup = makeFormationSetup<T>(spec);
+    onThreads(threads, [&] {
+      FormationBatch<T, Arch, Capacity, Law::value>(setup, grid, first, total, out, next, progress).run();
     });
+  } else {
+    const SweepSetup<T> setup = makeSetup<T>(spec);
+    onThreads(threads, [&] { BatchWorker<T, Arch, Capacity, Law>(setup, grid, first, total, out, next, progress).run(); });
   }
-  for (auto& th : pool) th.join();
 }
 
 }  // namespace

@@ -148,8 +148,8 @@ uint32_t definitionHash(const SweepSpec& spec) {
     std::ifstream f(spec.formation_file);
     crc.add(std::string(std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>()));
     crc.add(spec.formation_criteria);
-    for (int id = kParamFirstDroneDelay; id < kParamCountBeforeDroneLinks; ++id) crc.add(spec.fixed[id]);
-    for (int id = kParamFirstDroneLinkValue; id < kParamCount; ++id) {  // only those given: older hashes stay
+    for (int id = kLineLayout.delay(0); id < kParamCountBeforeDroneLinks; ++id) crc.add(spec.fixed[id]);
+    for (int id = kLineLayout.linkValue(0, 0); id < kLineLayout.count(); ++id) {  // only those given: older hashes stay
       if (spec.given(id)) crc.add(id), crc.add(spec.fixed[id]);
     }
   }

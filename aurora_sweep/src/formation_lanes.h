@@ -19,23 +19,25 @@ namespace aurora_sweep {
 
 namespace {
 
-template <typename T, class Arch, int Capacity, aurora_control::LawType Law>
+template <typename T, class Arch, int Capacity, aurora_control::LawType Law,
+          template <typename> class Shape = aurora_control::LineFormation>
 class FormationBatch {
  public:
   using LaneOps = Lanes<T, Arch>;
   using B = typename LaneOps::B;
   using M = typename LaneOps::M;
-  static constexpr int L = LaneOps::L, D = kFormationDroneCount;
+  using LaneShape = Shape<B>;  // the shape on lanes ...
+  using OneLane = Shape<T>;  // ... and on one lane (the scalar judge's)
+  static constexpr int L = LaneOps::L, D = OneLane::kDrones, N = OneLane::kVariables;
   using Int = xsimd::as_integer_t<T>;
   using I = xsimd::batch<Int, Arch>;
-  using Line = aurora_control::LineFormation<B>;
   using DroneLaw = aurora_control::ArdroneLaw<Law>;
   using History = LaneHistory<DroneLaw, T, Arch, Capacity>;
   using Links = LaneModelLinks<DroneLaw, T, Arch, Capacity>;
 
-  FormationBatch(const SweepSpec& spec, std::vector<SimResult>& out, std::atomic<long>& next, Progress& progress)
-      : grid_(spec.view()), first_(spec.rangeBegin()), total_(spec.rangeEnd()), out_(out), next_(next),
-        progress_(progress), setup_(makeFormationSetup<T>(spec)) {
+  FormationBatch(const FormationSetup<T, Shape>& setup, const GridView& grid, long first, long total,
+                 std::vector<SimResult>& out, std::atomic<long>& next, Progress& progress)
+      : grid_(grid), first_(first), total_(total), out_(out), next_(next), progress_(progress), setup_(setup) {
     // A sweep's link values may change a drone's link per combination: the
     // vectorized links apply unless the drone's own jitter is geometric.
     for (int d = 0; d < D; ++d) {
@@ -61,17 +63,17 @@ class FormationBatch {
   }
 
   // The lanes' runs (lanes past `count` repeat the first, their results dropped).
-  void startLanes(long first, int count, aurora_control::FormationRun<B, Line>& run) {
+  void startLanes(long first, int count, aurora_control::FormationRun<B, LaneShape>& run) {
     for (int l = 0; l < L; ++l) {
       const Combination c = grid_.decode(first + (l < count ? l : 0));
-      const LineRun<T> lane = formationCombination(setup_, c);
+      const ShapeRun<T, Shape> lane = formationCombination(setup_, c);
       if (l == 0) broadcast(lane, run);
-      for (int i = 0; i < 6; ++i) LaneOps::set(run.gains.k1[i], l, lane.gains.k1[i]), LaneOps::set(run.gains.k2[i], l, lane.gains.k2[i]);
+      for (int i = 0; i < N; ++i) LaneOps::set(run.gains.k1[i], l, lane.gains.k1[i]), LaneOps::set(run.gains.k2[i], l, lane.gains.k2[i]);
       for (int d = 0; d < D; ++d) {
         LaneOps::set(ideal_[d].delay, l, static_cast<Int>(lane.drone[d].delay));
         history_[d].startLane(l);
         if (links_[d]) {
-          links_[d]->startLane(l, lane.drone[d].link, lane.drone[d].delay, formationLinkKey(c, d),
+          links_[d]->startLane(l, lane.drone[d].link, lane.drone[d].delay, formationLinkKey<OneLane>(c, d),
                                double(lane.drone[d].plant.Ts));
         }
       }
@@ -80,24 +82,9 @@ class FormationBatch {
 
   // What every lane shares: the drones' models, gains and starts, the law,
   // the period (the file's; the sweep varies none of them).
-  static void broadcast(const LineRun<T>& s, aurora_control::FormationRun<B, Line>& run) {
-    for (int d = 0; d < D; ++d) {
-      run.drone[d].plant = s.drone[d].plant.template cast<B>();
-      run.drone[d].model = s.drone[d].model.template cast<B>();
-      run.drone[d].gains.pd.kp = B(s.drone[d].gains.pd.kp), run.drone[d].gains.pd.kd = B(s.drone[d].gains.pd.kd);
-      for (int i = 0; i < aurora_control::kAxes; ++i) {
-        run.drone[d].gains.underactuated.k1[i] = B(s.drone[d].gains.underactuated.k1[i]);
-        run.drone[d].gains.underactuated.k2[i] = B(s.drone[d].gains.underactuated.k2[i]);
-      }
-      for (int i = 0; i < 3; ++i) run.drone[d].start[i] = B(s.drone[d].start[i]);
-    }
-    run.law = s.law;
-    run.period_steps = s.period_steps;
-    run.clamp = s.clamp;
-    run.reference.path = s.reference.path;
-    run.reference.duration = B(s.reference.duration);
-    for (int i = 0; i < 2; ++i) run.reference.amplitude[i] = B(s.reference.amplitude[i]);
-    for (int i = 0; i < 6; ++i) run.reference.Q[i] = B(s.reference.Q[i]);
+  static void broadcast(const ShapeRun<T, Shape>& s, aurora_control::FormationRun<B, LaneShape>& run) {
+    for (int d = 0; d < D; ++d) castFormationDrone(s.drone[d], run.drone[d]);
+    castFormationLayer(s, run);
   }
 
   // Steps 1-2 of tick k for each drone (closed_loop.h, receiveState): its
@@ -117,13 +104,13 @@ class FormationBatch {
   }
 
   void runBatch(long first, int count) {
-    aurora_control::FormationRun<B, Line> run;
+    aurora_control::FormationRun<B, LaneShape> run;
     startLanes(first, count, run);
-    aurora_control::FormationLayer<B, Line> layer(run.law, run.gains, B(T(run.period_steps) * setup_.run.drone[0].plant.Ts));
+    aurora_control::FormationLayer<B, LaneShape> layer(run.law, run.gains, B(T(run.period_steps) * setup_.run.drone[0].plant.Ts));
     aurora_control::DroneParams<B> params[D];
     aurora_control::DroneState<B, M> state[D];
     aurora_control::startFormation(run, params, state, layer);
-    aurora_control::FormationMetrics<B, M, Line> metrics;
+    aurora_control::FormationMetrics<B, M, LaneShape> metrics;
     metrics.reset();
     const aurora_control::FormationCriteria<B> criteria = setup_.criteria.template cast<B>();
     bool ended[L];
@@ -137,25 +124,23 @@ class FormationBatch {
   }
 
   // Tick k on every lane; true when every lane has ended.
-  bool tick(long k, const aurora_control::FormationRun<B, Line>& run, aurora_control::FormationLayer<B, Line>& layer,
+  bool tick(long k, const aurora_control::FormationRun<B, LaneShape>& run, aurora_control::FormationLayer<B, LaneShape>& layer,
             const aurora_control::DroneParams<B>* params, aurora_control::DroneState<B, M>* state,
-            aurora_control::FormationMetrics<B, M, Line>& metrics, const aurora_control::FormationCriteria<B>& criteria,
+            aurora_control::FormationMetrics<B, M, LaneShape>& metrics, const aurora_control::FormationCriteria<B>& criteria,
             long first, bool* ended) {
     const T Ts = setup_.run.drone[0].plant.Ts;
-    B xc[D][aurora_sim::kStateSize], X[6];
+    B xc[D][aurora_sim::kStateSize], X[N];
     receiveStates(k, state, xc);
-    for (int d = 0; d < D; ++d) {
-      for (int i = 0; i < 3; ++i) X[3 * d + i] = state[d].model.X[aurora_sim::kX + i];
-    }
+    aurora_control::modelPositions<LaneShape>(state, X);
     const bool due = k % run.period_steps == 0;
-    T qd[6];
-    B Qd[6];
+    T qd[N];
+    B Qd[N];
     if (due) {
       // Every lane's Qd and its positions (the scalar judge's, in T).
       setup_.run.reference.at(aurora_control::taskTime(T(k), Ts), qd);
-      T xd[6];
-      aurora_control::LineFormation<T>::positions(qd, xd);
-      for (int i = 0; i < 6; ++i) Qd[i] = B(qd[i]), Xd_[i] = B(xd[i]);
+      T xd[N];
+      OneLane::positions(qd, xd);
+      for (int i = 0; i < N; ++i) Qd[i] = B(qd[i]), Xd_[i] = B(xd[i]);
     }
     aurora_control::DroneStep<B> step[D];
     aurora_control::formationTick<Law>(params, setup_.run.clamp, layer, due ? Qd : nullptr, B(T(k)), xc, state, step,
@@ -165,7 +150,7 @@ class FormationBatch {
   }
 
   // Lanes whose check failed (early stop) end at tick k.
-  bool endLanes(long k, long first, const aurora_control::FormationMetrics<B, M, Line>& metrics,
+  bool endLanes(long k, long first, const aurora_control::FormationMetrics<B, M, LaneShape>& metrics,
                 const aurora_control::DroneState<B, M>* state, bool* ended) {
     if (!setup_.early_stop) return false;
     alignas(64) bool ok[L];
@@ -178,18 +163,18 @@ class FormationBatch {
     return all;
   }
 
-  void finishLane(int l, long first, const aurora_control::FormationMetrics<B, M, Line>& m,
+  void finishLane(int l, long first, const aurora_control::FormationMetrics<B, M, LaneShape>& m,
                   const aurora_control::DroneState<B, M>* state, long ticks) {
-    aurora_control::FormationMetrics<T, bool, aurora_control::LineFormation<T>> lane;
+    aurora_control::FormationMetrics<T, bool, OneLane> lane;
     lane.iae_position = LaneOps::get(m.iae_position, l), lane.iae_shape = LaneOps::get(m.iae_shape, l);
     lane.max_position = LaneOps::get(m.max_position, l), lane.max_shape = LaneOps::get(m.max_shape, l);
     lane.closest = LaneOps::get(m.closest, l);
     for (int i = 0; i < 4; ++i) lane.ok[i] = LaneOps::get(m.ok[i], l);
-    T X[6];
+    T X[N];
     for (int d = 0; d < D; ++d) {
       for (int i = 0; i < 3; ++i) X[3 * d + i] = LaneOps::get(state[d].model.X[aurora_sim::kX + i], l);
     }
-    out_[first + l - first_] = formationResult(lane, ticks, aurora_control::closestPair<aurora_control::LineFormation<T>>(X));
+    out_[first + l - first_] = formationResult(lane, ticks, aurora_control::closestPair<OneLane>(X));
     progress_.fetch_add(1, std::memory_order_relaxed);
   }
 
@@ -198,11 +183,11 @@ class FormationBatch {
   std::vector<SimResult>& out_;
   std::atomic<long>& next_;
   Progress& progress_;
-  const FormationSetup<T> setup_;
+  const FormationSetup<T, Shape> setup_;
   History history_[D];                             // each drone's, every lane at the same tick
   aurora_control::IdealLinkOf<I> ideal_[D];         // each drone's delay [samples] per lane, over the delay rule
   std::unique_ptr<Links> links_[D];                // or each drone's lanes' link models
-  B Xd_[6];  // the positions of the layer's held Qd (the same on every lane)
+  B Xd_[N];  // the positions of the layer's held Qd (the same on every lane)
 };
 
 }  // namespace

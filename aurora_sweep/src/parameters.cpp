@@ -17,9 +17,38 @@ namespace {
 // longer describe a drone of this kind).
 constexpr double kFactorMin = 0.1, kFactorMax = 10.0;
 
+// A formation's parameters where shapeLayout puts them (combination.h):
+// each robot's delay, the shape's gains by its variables' names, each
+// robot's own link values (the link values' rows, suffixed _1 ... _N).
+template <class Shape>
+void addShapeParams(std::vector<ParamInfo>& t) {
+  using namespace aurora_control;
+  constexpr ShapeLayout at = shapeLayout<Shape>();
+  for (int d = 0; d < at.robots; ++d) {
+    t[at.delay(d)] = {"delay_" + std::to_string(d + 1), ParamGroup::kDroneDelay, 0.0, double(kMaxDelaySamples),
+                      "whole samples of Ts, the histories' limit", true};
+  }
+  for (int i = 0; i < at.variables; ++i) {
+    const std::string limit = "a formation gain: positive, as the underactuated law's";
+    t[at.k1(i)] = {std::string("formation_k1_") + Shape::gainName(i), ParamGroup::kFormationGain,
+                   kUnderactuatedGainMin, kUnderactuatedGainMax, limit};
+    t[at.k2(i)] = {std::string("formation_k2_") + Shape::gainName(i), ParamGroup::kFormationGain,
+                   kUnderactuatedGainMin, kUnderactuatedGainMax, limit};
+  }
+  for (int d = 0; d < at.robots; ++d) {
+    for (int i = 0; i < kLinkParamCount; ++i) {
+      ParamInfo info = t[kParamFirstLinkValue + i];
+      info.name += "_" + std::to_string(d + 1);
+      info.group = ParamGroup::kDroneLink;
+      t[at.linkValue(d, i)] = info;
+    }
+  }
+}
+
 std::vector<ParamInfo> makeTable() {
   using namespace aurora_control;
-  std::vector<ParamInfo> t(kParamCount);
+  // Room no shape of the sweep uses: no name, applies to no sweep.
+  std::vector<ParamInfo> t(kParamCount, ParamInfo{"", ParamGroup::kUnused, 0.0, 0.0, "", false});
   const std::string pd = "the controller node's PD gain range";
   t[kParamKp] = {"kp", ParamGroup::kPdGain, kPdGainMin, kPdGainMax, pd};
   t[kParamKd] = {"kd", ParamGroup::kPdGain, kPdGainMin, kPdGainMax, pd};
@@ -43,25 +72,7 @@ std::vector<ParamInfo> makeTable() {
                                    row.kind == ParamKind::kWholeSamples};
   }
   t[kParamRepeat] = {"repeat", ParamGroup::kRepeat, 0.0, 1e9, "which link seed (sweep.repeats)", true};
-  for (int d = 0; d < kFormationDroneCount; ++d) {
-    t[kParamFirstDroneDelay + d] = {"delay_" + std::to_string(d + 1), ParamGroup::kDroneDelay, 0.0,
-                                    double(kMaxDelaySamples), "whole samples of Ts, the histories' limit", true};
-  }
-  const char* variable[6] = {"x", "y", "z", "rho", "alpha", "beta"};
-  for (int i = 0; i < kFormationGainCount; ++i) {
-    t[kParamFirstFormationGain + i] = {std::string(i < 6 ? "formation_k1_" : "formation_k2_") + variable[i % 6],
-                                       ParamGroup::kFormationGain, kUnderactuatedGainMin, kUnderactuatedGainMax,
-                                       "a formation gain: positive, as the underactuated law's"};
-  }
-  // A formation drone's own link values: the link values' rows, suffixed _1, _2.
-  for (int d = 0; d < kFormationDroneCount; ++d) {
-    for (int i = 0; i < kLinkParamCount; ++i) {
-      ParamInfo info = t[kParamFirstLinkValue + i];
-      info.name += "_" + std::to_string(d + 1);
-      info.group = ParamGroup::kDroneLink;
-      t[kParamFirstDroneLinkValue + d * kLinkParamCount + i] = info;
-    }
-  }
+  addShapeParams<LineFormation<double>>(t);
   return t;
 }
 
@@ -73,6 +84,7 @@ const ParamInfo& paramInfo(int id) {
 }
 
 int paramIdOf(const std::string& name) {
+  if (name.empty()) return -1;
   for (int id = 0; id < kParamCount; ++id) {
     if (paramInfo(id).name == name) return id;
   }
@@ -92,6 +104,7 @@ bool paramApplies(int id, aurora_control::LawType law, bool formation) {
     case ParamGroup::kDroneDelay:
     case ParamGroup::kFormationGain:
     case ParamGroup::kDroneLink: return false;  // a formation sweep's
+    case ParamGroup::kUnused: return false;
     default: return true;
   }
 }
@@ -125,9 +138,9 @@ double paramDefault(int id) {
     case ParamGroup::kLink: return aurora_control::linkValueOf(aurora_control::LinkParams(), id - kParamFirstLinkValue);
     case ParamGroup::kRepeat: return 0.0;
     case ParamGroup::kFormationGain: {
-      const auto g = aurora_control::FormationGains<double, 6>::lineDefaults();
-      const int i = id - kParamFirstFormationGain;
-      return i < 6 ? g.k1[i] : g.k2[i - 6];
+      const auto g = aurora_control::FormationGains<double, kLineLayout.variables>::of<aurora_control::LineFormation<double>>();
+      const int i = id - kLineLayout.k1(0);
+      return i < kLineLayout.variables ? g.k1[i] : g.k2[i - kLineLayout.variables];
     }
     default: return std::numeric_limits<double>::quiet_NaN();
   }

@@ -398,7 +398,7 @@ void readCombinations(const Reader& r, const YAML::Node& s, const std::string& s
     orderAxes(r, s, varied.axes, spec);
   }
   requireAll(r, spec);
-  const std::vector<int> delays = spec.formation() ? std::vector<int>{kParamFirstDroneDelay, kParamFirstDroneDelay + 1}
+  const std::vector<int> delays = spec.formation() ? std::vector<int>{kLineLayout.delay(0), kLineLayout.delay(1)}
                                                    : std::vector<int>{kParamDelay};
   spec.max_delay = 0;
   for (int id : delays) {

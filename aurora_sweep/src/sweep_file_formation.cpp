@@ -19,10 +19,10 @@ void readSweepFormation(const aurora_control::YamlReader& r, const YAML::Node& s
   spec.formation_run = aurora_control::formationRun(f, spec.vehicle);
   spec.law = f.drones[0].controller.law;
   spec.controller = aurora_sweep::lawName(spec.law);
-  for (int d = 0; d < kFormationDroneCount; ++d) spec.fixed[kParamFirstDroneDelay + d] = double(f.drones[d].delay);
-  for (int i = 0; i < 6; ++i) {
-    spec.fixed[kParamFirstFormationGain + i] = f.gains.k1[i];
-    spec.fixed[kParamFirstFormationGain + 6 + i] = f.gains.k2[i];
+  for (int d = 0; d < kLineLayout.robots; ++d) spec.fixed[kLineLayout.delay(d)] = double(f.drones[d].delay);
+  for (int i = 0; i < kLineLayout.variables; ++i) {
+    spec.fixed[kLineLayout.k1(i)] = f.gains.k1[i];
+    spec.fixed[kLineLayout.k2(i)] = f.gains.k2[i];
   }
   for (int i = 0; i < kLinkParamCount; ++i) spec.fixed[kParamFirstLinkValue + i] = std::numeric_limits<double>::quiet_NaN();
 }
@@ -57,7 +57,7 @@ double smallestBurst(const SweepSpec& spec, int d, int burst_value, double own) 
 
 void checkFormationLinks(const aurora_control::YamlReader& r, const SweepSpec& spec) {
   bool draws = false;
-  for (int d = 0; d < kFormationDroneCount; ++d) {
+  for (int d = 0; d < kLineLayout.robots; ++d) {
     const aurora_control::LinkParams worst = spec.formationWorstLink(d);
     const aurora_control::LinkDirection* dirs[2] = {&worst.uplink, &worst.downlink};
     const int bursts[2] = {aurora_control::kLinkUplinkBurst, aurora_control::kLinkDownlinkBurst};

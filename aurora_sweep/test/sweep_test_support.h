@@ -56,6 +56,18 @@ inline std::vector<SimResult> runOn(const std::string& key, const SweepSpec& spe
   return out;
 }
 
+// A launch of `n` runs in blocks of `block` threads, on the host: thread(b,
+// t, out) for every (block, thread), as the kernel's threads would run; the
+// records they wrote.
+template <class Thread>
+std::vector<SimResult> launchOnHost(long n, int block, Thread&& thread) {
+  std::vector<SimResult> out(static_cast<size_t>(n));
+  for (long b = 0; b < (n + block - 1) / block; ++b) {
+    for (int t = 0; t < block; ++t) thread(unsigned(b), unsigned(block), unsigned(t), out.data());
+  }
+  return out;
+}
+
 // The build the cpu backend picks on this CPU (the first supported one).
 inline std::string widestIsa() {
   for (const CpuIsa& isa : cpuBatchIsas()) {
@@ -68,15 +80,14 @@ inline bool relClose(double a, double b, double rel) {
   return a == b || std::fabs(a - b) <= rel * std::max(std::fabs(a), std::fabs(b));
 }
 
-// One SIMD build against the scalar loop on the same spec: flags and step
-// counts equal, metrics to `rel` (xsimd's sin and cos differ from libm's in
-// the last bits), over at least `min_compared` runs that did not diverge.
-inline void expectAgreement(const std::string& key, const SweepSpec& spec, double rel, int min_compared = 20) {
-  const std::vector<SimResult> scalar = runOn("scalar", spec);
-  const std::vector<SimResult> simd = runOn(key, spec);
+// SIMD records against the scalar loop's: flags and step counts equal,
+// metrics to `rel` (xsimd's sin and cos differ from libm's in the last
+// bits), over at least `min_compared` runs that did not diverge.
+inline void expectRecordsAgree(const std::string& key, const std::vector<SimResult>& scalar,
+                               const std::vector<SimResult>& simd, double rel, int min_compared) {
   ASSERT_EQ(simd.size(), scalar.size());
   int compared = 0;
-  for (long i = 0; i < spec.size(); ++i) {
+  for (size_t i = 0; i < scalar.size(); ++i) {
     EXPECT_EQ(scalar[i].ok, simd[i].ok) << key << " combination " << i;
     EXPECT_EQ(scalar[i].steps, simd[i].steps) << key << " combination " << i;
     if (!(scalar[i].ok & 1)) continue;  // diverged: the metrics are meaningless
@@ -86,6 +97,11 @@ inline void expectAgreement(const std::string& key, const SweepSpec& spec, doubl
     EXPECT_PRED3(relClose, scalar[i].iasc, simd[i].iasc, rel) << key << " " << i;
   }
   EXPECT_GE(compared, min_compared) << key;
+}
+
+// One SIMD build against the scalar loop on the same spec.
+inline void expectAgreement(const std::string& key, const SweepSpec& spec, double rel, int min_compared = 20) {
+  expectRecordsAgree(key, runOn("scalar", spec), runOn(key, spec), rel, min_compared);
 }
 
 // config/sweeps/NAME.yaml with `samples_line` replaced by `samples` (relative

@@ -15,6 +15,7 @@
 #include "../src/batch_engine.h"
 #include "aurora_sweep/kernel_entry.h"
 #include "point_mass.h"
+#include "sweep_test_support.h"
 
 namespace {
 
@@ -76,14 +77,9 @@ std::vector<SimResult> scalarLoop(const SimSetup<Vehicle, T>& setup, const GridV
 
 template <typename T, bool Linked>
 std::vector<SimResult> kernelThreads(const SimSetup<Vehicle, T>& setup, const GridView& grid) {
-  const int block = 16;
-  std::vector<SimResult> out(static_cast<size_t>(grid.size()));
-  for (long b = 0; b < blocksFor(grid.size(), block); ++b) {
-    for (int t = 0; t < block; ++t) {
-      sweepThread<Law, T, 64, Linked>(setup, grid, 0, grid.size(), out.data(), unsigned(b), unsigned(block), unsigned(t));
-    }
-  }
-  return out;
+  return test::launchOnHost(grid.size(), 16, [&](unsigned b, unsigned block, unsigned t, SimResult* out) {
+    sweepThread<Law, T, 64, Linked>(setup, grid, 0, grid.size(), out, b, block, t);
+  });
 }
 
 template <typename T>

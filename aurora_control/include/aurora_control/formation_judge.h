@@ -11,21 +11,19 @@ namespace aurora_control {
 // The formation's checks as the runner's observer: tick k's positions X_k
 // against the positions of the layer's held Qd (computed when the layer
 // runs); false (stop) at the first failed check with early_stop.
-template <typename T>
+template <typename T, class Shape = LineFormation<T>>
 struct FormationJudge {
-  using Line = LineFormation<T>;
+  static constexpr int kN = Shape::kVariables;
   FormationCriteria<T> criteria;
   bool early_stop;
   T Ts;
-  FormationMetrics<T, bool, Line> metrics;
-  T Xd[6];
+  FormationMetrics<T, bool, Shape> metrics;
+  T Xd[kN];
 
-  AURORA_HD bool operator()(const FormationObservation<T, Line>& o) {
-    T X[6];
-    for (int d = 0; d < 2; ++d) {
-      for (int i = 0; i < 3; ++i) X[3 * d + i] = o.X_before[d][aurora_sim::kX + i];
-    }
-    if (o.layer_ran) Line::positions(o.layer.Qd(), Xd);
+  AURORA_HD bool operator()(const FormationObservation<T, Shape>& o) {
+    T X[kN];
+    dronePositions<Shape>(o.X_before, X);
+    if (o.layer_ran) Shape::positions(o.layer.Qd(), Xd);
     metrics.add(criteria, X, Xd, taskTime(T(o.k), Ts), Ts);
     return !(early_stop && !metrics.feasible());
   }

@@ -17,13 +17,12 @@ template <typename T, int N>
 struct FormationGains {
   T k1[N], k2[N];
 
-  // AuRoRA's defaults of the line (its mInit, and the lab's script).
-  AURORA_HD static FormationGains lineDefaults() {
-    static_assert(N == 6, "the line's six variables");
+  // The shape's own defaults (Shape::defaultGains: the line's are AuRoRA's).
+  template <class Shape>
+  AURORA_HD static FormationGains of() {
+    static_assert(Shape::kVariables == N, "a shape's gains, one of each per variable");
     FormationGains g;
-    const T k1[6] = {T(0.1), T(0.1), T(1.0), T(0.75), T(0.5), T(0.5)};
-    const T k2[6] = {T(0.5), T(0.5), T(0.5), T(0.5), T(0.25), T(0.25)};
-    for (int i = 0; i < 6; ++i) g.k1[i] = k1[i], g.k2[i] = k2[i];
+    Shape::defaultGains(g.k1, g.k2);
     return g;
   }
 };

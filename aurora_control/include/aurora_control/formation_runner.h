@@ -43,7 +43,7 @@ struct FormationRun {
   static constexpr int kDrones = Shape::kDrones, kN = Shape::kVariables;
   FormationDrone<T> drone[kDrones];
   FormationLaw law = FormationLaw::kPositionPriority;
-  FormationGains<T, kN> gains = FormationGains<T, kN>::lineDefaults();
+  FormationGains<T, kN> gains = FormationGains<T, kN>::template of<Shape>();
   long period_steps = 6;  // the layer's period in drone steps (0.2 s at 1/30 s)
   FormationReference<T, kN> reference;
   ClampPolicy clamp;      // none: AuRoRA's formation script does not clamp
@@ -72,6 +72,21 @@ struct FormationObservation {
   const DroneStep<T>* steps;                        // each drone's reference and applied command
   const FormationLayer<T, Shape>& layer;
 };
+
+// The drones' stacked positions (3 per drone, the shape's X) of their
+// states X (each kStateSize), and of their loops' models.
+template <class Shape, typename T, class States>
+AURORA_HD inline void dronePositions(const States& X, T positions[Shape::kVariables]) {
+  for (int d = 0; d < Shape::kDrones; ++d) {
+    for (int i = 0; i < 3; ++i) positions[3 * d + i] = X[d][aurora_sim::kX + i];
+  }
+}
+template <class Shape, typename T, class Loops>
+AURORA_HD inline void modelPositions(const Loops& state, T positions[Shape::kVariables]) {
+  for (int d = 0; d < Shape::kDrones; ++d) {
+    for (int i = 0; i < 3; ++i) positions[3 * d + i] = state[d].model.X[aurora_sim::kX + i];
+  }
+}
 
 // The layer started with the drones at X0 (3 positions per drone, m): the
 // offline runner's at the file's starts, real drones' where they hover
@@ -142,9 +157,7 @@ AURORA_HD inline void formationTick(const DroneParams<T>* params, const ClampPol
   constexpr int D = Shape::kDrones;
   if (Qd) {
     T seen[Shape::kVariables];
-    for (int d = 0; d < D; ++d) {
-      for (int i = 0; i < 3; ++i) seen[3 * d + i] = xc[d][aurora_sim::kX + i];
-    }
+    dronePositions<Shape>(xc, seen);
     layer.update(seen, Qd);
   }
   for (int d = 0; d < D; ++d) {

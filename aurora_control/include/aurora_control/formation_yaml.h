@@ -32,7 +32,7 @@ struct FormationDroneFile {
 struct FormationFile {
   FormationLaw law = FormationLaw::kPositionPriority;
   double period = 0.2;  // [s]
-  FormationGains<double, 6> gains = FormationGains<double, 6>::lineDefaults();
+  FormationGains<double, 6> gains = FormationGains<double, 6>::of<LineFormation<double>>();
   FormationReference<double, 6> reference;
   std::vector<FormationDroneFile> drones;
 };

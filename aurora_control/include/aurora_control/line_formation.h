@@ -32,6 +32,25 @@ struct LineFormation {
   // "Formation files").
   static constexpr double kMinStartHeightGap = 0.05;
 
+  // Variable i's name: in the flight tool's columns (Q_xF, Qd_rho, ...) and
+  // in a sweep's gain names (formation_k1_x, ..., formation_k2_beta). Host only.
+  static const char* variableName(int i) {
+    static const char* const names[kVariables] = {"xF", "yF", "zF", "rho", "alpha", "beta"};
+    return names[i];
+  }
+  static const char* gainName(int i) {
+    static const char* const names[kVariables] = {"x", "y", "z", "rho", "alpha", "beta"};
+    return names[i];
+  }
+
+  // K1 (amplitudes) and K2 (slopes) of the layer's law by default:
+  // AuRoRA's (its mInit, and the lab's script).
+  AURORA_HD static void defaultGains(T k1[6], T k2[6]) {
+    const T a[6] = {T(0.1), T(0.1), T(1.0), T(0.75), T(0.5), T(0.5)};
+    const T b[6] = {T(0.5), T(0.5), T(0.5), T(0.5), T(0.25), T(0.25)};
+    for (int i = 0; i < 6; ++i) k1[i] = a[i], k2[i] = b[i];
+  }
+
   // Q of positions X = (x1, y1, z1, x2, y2, z2) (eq. F1): the formation's
   // position is drone 1's, rho the distance to drone 2, alpha = asin(dx /
   // rho), beta = asin(dy / rho).

@@ -15,11 +15,8 @@ namespace aurora_sweep {
 // link's values (aurora_control::LinkValue order: uplink_jitter, ...,
 // downlink_burst; the delay is the uplink's base delay), the repeat: which
 // of a combination's `repeats` link seeds a run draws with (not a name a
-// sweep file gives; `repeats: N` makes it vary), and a formation sweep's
-// own: each drone's delay, the formation layer's gains and each drone's own
-// link values (uplink_jitter_1 ... downlink_burst_2: drone d's value i at
-// kParamFirstDroneLinkValue + d * kLinkParamCount + i; docs/formation.md,
-// "Formation sweeps").
+// sweep file gives; `repeats: N` makes it vary). A formation sweep's own
+// parameters follow, where its shape's ShapeLayout puts them.
 enum ParamId : int {
   kParamKp = 0,
   kParamKd = 1,
@@ -28,20 +25,52 @@ enum ParamId : int {
   kParamFirstModelFactor = 15,       // m, Ixx, Iyy, Izz, Cf, Ct, Km, Jm
   kParamFirstLinkValue = 23,         // 7 of them
   kParamRepeat = 30,
-  kParamFirstDroneDelay = 31,        // a formation's drones' uplink delays: delay_1, delay_2
-  kParamFirstFormationGain = 33,     // the formation layer's K1 (6), then K2 (6)
-  kParamFirstDroneLinkValue = 45,    // a formation's drones' own link values, 7 per drone
-  kParamCount = 59
+  kParamFirstRobotParam = 31,        // a formation's: ShapeLayout
 };
 constexpr int kUnderactuatedGainCount = 12;
 constexpr int kModelFactorCount = 8;
 constexpr int kLinkParamCount = 7;
-constexpr int kFormationDroneCount = 2;   // the line's drones
-constexpr int kFormationGainCount = 12;   // K1 and K2 of the line's 6 variables
+
+// Where a formation sweep's parameters sit, for a shape of `robots` robots
+// and `variables` formation variables: each robot's uplink delay (delay_1
+// ... delay_N), the formation layer's gains (K1 of each variable, then
+// K2), each robot's own link values (uplink_jitter_1 ... downlink_burst_N:
+// robot r's value i at linkValue(r, i)); docs/formation.md, "Formation
+// sweeps". The line of two puts them where they always were (31, 33, 45;
+// 59 in all), so its records and definition hashes stay.
+struct ShapeLayout {
+  int robots, variables;
+  AURORA_HD constexpr int delay(int robot) const { return kParamFirstRobotParam + robot; }
+  AURORA_HD constexpr int k1(int i) const { return delay(robots) + i; }
+  AURORA_HD constexpr int k2(int i) const { return k1(variables) + i; }
+  AURORA_HD constexpr int gains() const { return 2 * variables; }
+  AURORA_HD constexpr int linkValue(int robot, int i) const { return k2(variables) + robot * kLinkParamCount + i; }
+  AURORA_HD constexpr int count() const { return linkValue(robots, 0); }
+};
+template <class Shape>
+AURORA_HD constexpr ShapeLayout layoutOf() {
+  return ShapeLayout{Shape::kDrones, Shape::kVariables};
+}
+
+// The room of every combination: the largest shape a sweep flies (three
+// robots, nine variables: AuRoRA's triangle); a shape that needs more is
+// refused where it is laid out (static_assert in shapeLayout).
+constexpr int kParamCount = ShapeLayout{3, 9}.count();
+template <class Shape>
+AURORA_HD constexpr ShapeLayout shapeLayout() {
+  static_assert(layoutOf<Shape>().count() <= kParamCount, "a shape whose parameters exceed kParamCount");
+  return layoutOf<Shape>();
+}
+
+// The line of two drones (the shape a sweep file flies today).
+constexpr ShapeLayout kLineLayout{2, 6};
 // The parameters of the sweeps before links, and before per-drone link
 // values (definition hashes keep them).
 constexpr int kParamCountBeforeLinks = kParamFirstLinkValue;
-constexpr int kParamCountBeforeDroneLinks = kParamFirstDroneLinkValue;
+constexpr int kParamCountBeforeDroneLinks = kLineLayout.linkValue(0, 0);
+static_assert(kLineLayout.delay(0) == 31 && kLineLayout.k1(0) == 33 && kLineLayout.linkValue(0, 0) == 45 &&
+                  kLineLayout.count() == 59,
+              "the line's parameters where its records and hashes have them");
 
 struct Combination {
   double v[kParamCount];  // every parameter's value, ParamId order

@@ -1,13 +1,17 @@
 // One formation of a formation sweep (docs/formation.md, "Formation
 // sweeps"), from its combination index: the formation file's run with the
-// combination's drone delays, formation gains and link values, flown by the
-// offline formation runner and judged by the formation's checks. The
-// per-thread body of the CUDA kernel and of the scalar loop (host and
-// device, no allocation); the SIMD engine builds each lane's run with the
-// same formationCombination().
+// combination's robot delays, formation gains and link values, flown by the
+// offline formation runner and judged by the formation's checks. Written
+// against a shape (a template of the scalar, as LineFormation; its
+// parameters where shapeLayout puts them). The per-thread body of the CUDA
+// kernel and of the scalar loop (host and device, no allocation); the SIMD
+// engine builds each lane's run with the same formationCombination().
 #pragma once
 
+#include <cstddef>
+#include <cstring>
 #include <type_traits>
+#include <utility>
 
 #include "aurora_control/formation_judge.h"
 #include "aurora_control/formation_runner.h"
@@ -15,45 +19,58 @@
 
 namespace aurora_sweep {
 
+// A shape's run in precision T.
+template <typename T, template <typename> class Shape = aurora_control::LineFormation>
+using ShapeRun = aurora_control::FormationRun<T, Shape<T>>;
 template <typename T>
-using LineRun = aurora_control::FormationRun<T, aurora_control::LineFormation<T>>;
+using LineRun = ShapeRun<T>;
 
 // Everything a formation of the sweep needs besides its combination.
-template <typename T>
+template <typename T, template <typename> class Shape = aurora_control::LineFormation>
 struct FormationSetup {
-  LineRun<T> run;  // the formation file's, in T
+  ShapeRun<T, Shape> run;  // the formation file's, in T
   aurora_control::FormationCriteria<T> criteria;
   long iterations;  // ticks (2700 for 90 s)
   bool early_stop;  // stop a run at its first failed check
   bool ideal_link;  // every drone over today's delay rule (SweepSpec::linkIdeal)
 };
 
-// The file's run in precision T (its values are loaded in double).
-template <typename T>
-LineRun<T> castFormationRun(const LineRun<double>& r) {
-  LineRun<T> run;
-  for (int d = 0; d < kFormationDroneCount; ++d) {
-    const auto& from = r.drone[d];
-    auto& to = run.drone[d];
-    to.plant = from.plant.template cast<T>();
-    to.model = from.model.template cast<T>();
-    to.gains.pd.kp = T(from.gains.pd.kp), to.gains.pd.kd = T(from.gains.pd.kd);
-    for (int i = 0; i < aurora_control::kAxes; ++i) {
-      to.gains.underactuated.k1[i] = T(from.gains.underactuated.k1[i]);
-      to.gains.underactuated.k2[i] = T(from.gains.underactuated.k2[i]);
-    }
-    to.delay = from.delay;
-    to.link = from.link;
-    for (int i = 0; i < 3; ++i) to.start[i] = T(from.start[i]);
+// Drone `from`'s fixed values in precision T: its models, gains, delay,
+// link and start.
+template <typename T, typename U>
+void castFormationDrone(const aurora_control::FormationDrone<U>& from, aurora_control::FormationDrone<T>& to) {
+  to.plant = from.plant.template cast<T>();
+  to.model = from.model.template cast<T>();
+  to.gains.pd.kp = T(from.gains.pd.kp), to.gains.pd.kd = T(from.gains.pd.kd);
+  for (int i = 0; i < aurora_control::kAxes; ++i) {
+    to.gains.underactuated.k1[i] = T(from.gains.underactuated.k1[i]);
+    to.gains.underactuated.k2[i] = T(from.gains.underactuated.k2[i]);
   }
+  to.delay = from.delay;
+  to.link = from.link;
+  for (int i = 0; i < 3; ++i) to.start[i] = T(from.start[i]);
+}
+
+// The formation's own values (law, gains, period, reference, clamp) in T.
+template <typename T, class ToShape, typename U, class FromShape>
+void castFormationLayer(const aurora_control::FormationRun<U, FromShape>& r, aurora_control::FormationRun<T, ToShape>& run) {
+  constexpr int N = FromShape::kVariables;
   run.law = r.law;
-  for (int i = 0; i < 6; ++i) run.gains.k1[i] = T(r.gains.k1[i]), run.gains.k2[i] = T(r.gains.k2[i]);
+  for (int i = 0; i < N; ++i) run.gains.k1[i] = T(r.gains.k1[i]), run.gains.k2[i] = T(r.gains.k2[i]);
   run.period_steps = r.period_steps;
   run.reference.path = r.reference.path;
   run.reference.duration = T(r.reference.duration);
   for (int i = 0; i < 2; ++i) run.reference.amplitude[i] = T(r.reference.amplitude[i]);
-  for (int i = 0; i < 6; ++i) run.reference.Q[i] = T(r.reference.Q[i]);
+  for (int i = 0; i < N; ++i) run.reference.Q[i] = T(r.reference.Q[i]);
   run.clamp = r.clamp;
+}
+
+// The file's run in precision T (its values are loaded in double).
+template <typename T, template <typename> class Shape>
+ShapeRun<T, Shape> castFormationRun(const ShapeRun<double, Shape>& r) {
+  ShapeRun<T, Shape> run;
+  for (int d = 0; d < Shape<T>::kDrones; ++d) castFormationDrone(r.drone[d], run.drone[d]);
+  castFormationLayer(r, run);
   return run;
 }
 
@@ -61,95 +78,118 @@ LineRun<T> castFormationRun(const LineRun<double>& r) {
 // each drone's link with the link values the sweep gives, the drones'
 // common ones (combinationLink) then the drone's own (uplink_loss_2); a
 // value it does not give keeps the drone's file's.
-template <typename T>
-AURORA_HD inline LineRun<T> formationCombination(const FormationSetup<T>& s, const Combination& c) {
-  LineRun<T> run = s.run;
-  for (int d = 0; d < kFormationDroneCount; ++d) {
-    run.drone[d].delay = static_cast<long>(c.v[kParamFirstDroneDelay + d]);
+template <typename T, template <typename> class Shape>
+AURORA_HD inline ShapeRun<T, Shape> formationCombination(const FormationSetup<T, Shape>& s, const Combination& c) {
+  constexpr ShapeLayout at = shapeLayout<Shape<T>>();
+  ShapeRun<T, Shape> run = s.run;
+  for (int d = 0; d < at.robots; ++d) {
+    run.drone[d].delay = static_cast<long>(c.v[at.delay(d)]);
     run.drone[d].link = combinationLink(run.drone[d].link, run.drone[d].delay, c);
-    applyLinkValues(run.drone[d].link, c.v + kParamFirstDroneLinkValue + d * kLinkParamCount);  // its own last
+    applyLinkValues(run.drone[d].link, c.v + at.linkValue(d, 0));  // its own last
   }
-  for (int i = 0; i < 6; ++i) {
-    run.gains.k1[i] = T(c.v[kParamFirstFormationGain + i]);
-    run.gains.k2[i] = T(c.v[kParamFirstFormationGain + 6 + i]);
+  for (int i = 0; i < at.variables; ++i) {
+    run.gains.k1[i] = T(c.v[at.k1(i)]);
+    run.gains.k2[i] = T(c.v[at.k2(i)]);
   }
   return run;
 }
 
 // Drone d's link draws are keyed by the combination and the drone (the
 // flight tool's key is the drone's index: combination 0 draws as it does).
+template <class Shape>
 AURORA_HD inline uint64_t formationLinkKey(const Combination& c, int drone) {
-  return static_cast<uint64_t>(c.key) * kFormationDroneCount + static_cast<uint64_t>(drone);
+  return static_cast<uint64_t>(c.key) * Shape::kDrones + static_cast<uint64_t>(drone);
 }
 
-// The record a formation writes (the sweep's 48 bytes, its columns named by
-// result_columns.h's formation list): iae = the position error's integral,
-// itae = the shape error's, iasc = the smallest distance, the floats the
-// largest position and shape errors and the drones' distance at the end.
-template <typename T>
-AURORA_HD inline SimResult formationResult(const aurora_control::FormationMetrics<T, bool, aurora_control::LineFormation<T>>& m,
-                                           long ticks, T end_distance) {
+// A formation's record: the sweep's 48 bytes (SimResult) with each field
+// named for what it holds (its columns: result_columns.h's formation list).
+struct FormationRecord {
+  float max_position_error, max_shape_error, end_distance;  // [m] after settle_time; the closest pair at the end
+  int ticks;                                                // ticks run
+  double iae_position, iae_shape;                           // [m s] after settle_time
+  double min_distance;                                      // [m] the closest two drones came, whole flight
+  unsigned char ok;                                         // SimResult::ok's bits
+  unsigned char zero[7];
+};
+static_assert(sizeof(FormationRecord) == sizeof(SimResult) &&
+                  offsetof(FormationRecord, ticks) == offsetof(SimResult, steps) &&
+                  offsetof(FormationRecord, iae_position) == offsetof(SimResult, iae) &&
+                  offsetof(FormationRecord, min_distance) == offsetof(SimResult, iasc) &&
+                  offsetof(FormationRecord, ok) == offsetof(SimResult, ok),
+              "a formation's record is the sweep's record, field for field");
+
+// The record of a formation's metrics after `ticks` ticks, its drones
+// `end_distance` apart at the end.
+template <typename T, class Shape>
+AURORA_HD inline SimResult formationResult(const aurora_control::FormationMetrics<T, bool, Shape>& m, long ticks,
+                                           T end_distance) {
+  FormationRecord f;
+  for (int i = 0; i < 7; ++i) f.zero[i] = 0;
+  f.max_position_error = static_cast<float>(m.max_position);
+  f.max_shape_error = static_cast<float>(m.max_shape);
+  f.end_distance = static_cast<float>(end_distance);
+  f.ticks = static_cast<int>(ticks);
+  f.iae_position = double(m.iae_position);
+  f.iae_shape = double(m.iae_shape);
+  f.min_distance = double(m.closest);
+  f.ok = 0;
+  for (int i = 0; i < 4; ++i) f.ok |= static_cast<unsigned char>((m.ok[i] ? 1 : 0) << i);
+  f.ok |= static_cast<unsigned char>((m.feasible() ? 1 : 0) << kFeasibleBit);
   SimResult s;
-  for (int i = 0; i < 7; ++i) s.zero[i] = 0;
-  s.final_pos[0] = static_cast<float>(m.max_position);
-  s.final_pos[1] = static_cast<float>(m.max_shape);
-  s.final_pos[2] = static_cast<float>(end_distance);
-  s.steps = static_cast<int>(ticks);
-  s.iae = double(m.iae_position);
-  s.itae = double(m.iae_shape);
-  s.iasc = double(m.closest);
-  s.ok = 0;
-  for (int i = 0; i < 4; ++i) s.ok |= static_cast<unsigned char>((m.ok[i] ? 1 : 0) << i);
-  s.ok |= static_cast<unsigned char>((m.feasible() ? 1 : 0) << kFeasibleBit);
+  memcpy(&s, &f, sizeof s);
   return s;
 }
 
-// The drones' distance at the end of a run (positions after its last tick).
-template <typename T, class Observer>
+// The closest two drones' distance at the end of a run (positions after
+// its last tick).
+template <typename T, class Shape, class Observer>
 struct EndDistance {
   Observer& judge;
   T distance = T(0);
-  AURORA_HD bool operator()(const aurora_control::FormationObservation<T, aurora_control::LineFormation<T>>& o) {
-    T X[6];
-    for (int d = 0; d < 2; ++d) {
-      for (int i = 0; i < 3; ++i) X[3 * d + i] = o.drones[d].model.X[aurora_sim::kX + i];
-    }
-    distance = aurora_control::closestPair<aurora_control::LineFormation<T>>(X);
+  AURORA_HD bool operator()(const aurora_control::FormationObservation<T, Shape>& o) {
+    T X[Shape::kVariables];
+    aurora_control::modelPositions<Shape>(o.drones, X);
+    distance = aurora_control::closestPair<Shape>(X);
     return judge(o);
   }
 };
 
 // Over today's delay rule on every drone.
-template <aurora_control::LawType Law, typename T, int Capacity, class Observer>
-AURORA_HD inline long flyFormation(const LineRun<T>& run, const Combination&, long iterations, Observer& observe,
-                                   std::false_type /*linked*/) {
-  aurora_control::IdealLink links[kFormationDroneCount];
-  for (int d = 0; d < kFormationDroneCount; ++d) links[d] = aurora_control::IdealLink{run.drone[d].delay};
-  return aurora_control::runFormationOver<Law, T, aurora_control::LineFormation<T>, Capacity>(run, iterations, observe,
-                                                                                          links);
+template <aurora_control::LawType Law, typename T, int Capacity, class Shape, class Observer>
+AURORA_HD inline long flyFormation(const aurora_control::FormationRun<T, Shape>& run, const Combination&,
+                                   long iterations, Observer& observe, std::false_type /*linked*/) {
+  aurora_control::IdealLink links[Shape::kDrones];
+  for (int d = 0; d < Shape::kDrones; ++d) links[d] = aurora_control::IdealLink{run.drone[d].delay};
+  return aurora_control::runFormationOver<Law, T, Shape, Capacity>(run, iterations, observe, links);
 }
 
-// Over each drone's link model, in this frame (no allocation).
-template <aurora_control::LawType Law, typename T, int Capacity, class Observer>
-AURORA_HD inline long flyFormation(const LineRun<T>& run, const Combination& c, long iterations, Observer& observe,
-                                   std::true_type /*linked*/) {
+// Over each drone's link model, built in this frame (no allocation).
+template <aurora_control::LawType Law, typename T, int Capacity, class Shape, class Observer, size_t... D>
+AURORA_HD inline long flyFormationOverModels(const aurora_control::FormationRun<T, Shape>& run, const Combination& c,
+                                             long iterations, Observer& observe, std::index_sequence<D...>) {
   using Link = aurora_control::ModelLink<Capacity, T>;
-  Link links[kFormationDroneCount] = {
-      Link(run.drone[0].link, run.drone[0].delay, formationLinkKey(c, 0), double(run.drone[0].plant.Ts)),
-      Link(run.drone[1].link, run.drone[1].delay, formationLinkKey(c, 1), double(run.drone[1].plant.Ts))};
-  return aurora_control::runFormationOver<Law, T, aurora_control::LineFormation<T>, Capacity>(run, iterations, observe,
-                                                                                          links);
+  Link links[Shape::kDrones] = {Link(run.drone[D].link, run.drone[D].delay, formationLinkKey<Shape>(c, int(D)),
+                                     double(run.drone[D].plant.Ts))...};
+  return aurora_control::runFormationOver<Law, T, Shape, Capacity>(run, iterations, observe, links);
+}
+template <aurora_control::LawType Law, typename T, int Capacity, class Shape, class Observer>
+AURORA_HD inline long flyFormation(const aurora_control::FormationRun<T, Shape>& run, const Combination& c,
+                                   long iterations, Observer& observe, std::true_type /*linked*/) {
+  return flyFormationOverModels<Law, T, Capacity>(run, c, iterations, observe,
+                                                  std::make_index_sequence<Shape::kDrones>());
 }
 
 // Formation `index` of the sweep (over its drones' links when `Linked`):
 // the CUDA thread's and the scalar loop's body.
-template <aurora_control::LawType Law, typename T, int Capacity, bool Linked = false>
-AURORA_HD inline SimResult simulateFormation(const FormationSetup<T>& setup, const GridView& grid, long index) {
+template <aurora_control::LawType Law, typename T, int Capacity, bool Linked = false,
+          template <typename> class Shape>
+AURORA_HD inline SimResult simulateFormation(const FormationSetup<T, Shape>& setup, const GridView& grid, long index) {
   const Combination c = grid.decode(index);
-  const LineRun<T> run = formationCombination(setup, c);
-  aurora_control::FormationJudge<T> judge{setup.criteria, setup.early_stop, run.drone[0].plant.Ts, {}, {}};
+  const ShapeRun<T, Shape> run = formationCombination(setup, c);
+  using Judge = aurora_control::FormationJudge<T, Shape<T>>;
+  Judge judge{setup.criteria, setup.early_stop, run.drone[0].plant.Ts, {}, {}};
   judge.metrics.reset();
-  EndDistance<T, aurora_control::FormationJudge<T>> observe{judge};
+  EndDistance<T, Shape<T>, Judge> observe{judge};
   const long ticks = flyFormation<Law, T, Capacity>(run, c, setup.iterations, observe,
                                                     std::integral_constant<bool, Linked>());
   return formationResult(judge.metrics, ticks, observe.distance);

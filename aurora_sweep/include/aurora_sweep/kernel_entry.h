@@ -24,9 +24,10 @@ AURORA_HD inline void sweepThread(const SimSetup<typename Law::Vehicle, T>& setu
   if (i < n) out[i] = simulateCombination<Law, T, Capacity, Linked>(setup, grid, first + i);
 }
 
-// The same for a formation sweep: one formation per thread.
-template <aurora_control::LawType Law, typename T, int Capacity, bool Linked = false>
-AURORA_HD inline void formationThread(const FormationSetup<T>& setup, const GridView& grid, long first, long n,
+// The same for a formation sweep (of any shape): one formation per thread.
+template <aurora_control::LawType Law, typename T, int Capacity, bool Linked = false,
+          template <typename> class Shape>
+AURORA_HD inline void formationThread(const FormationSetup<T, Shape>& setup, const GridView& grid, long first, long n,
                                       SimResult* out, unsigned block, unsigned block_dim, unsigned thread) {
   const long i = threadIndex(block, block_dim, thread);
   if (i < n) out[i] = simulateFormation<Law, T, Capacity, Linked>(setup, grid, first + i);

@@ -12,7 +12,7 @@
 
 namespace aurora_sweep {
 
-enum class ParamGroup { kPdGain, kDelay, kUnderactuatedGain, kModelFactor, kLink, kRepeat, kDroneDelay, kFormationGain, kDroneLink };
+enum class ParamGroup { kPdGain, kDelay, kUnderactuatedGain, kModelFactor, kLink, kRepeat, kDroneDelay, kFormationGain, kDroneLink, kUnused };
 
 struct ParamInfo {
   std::string name;

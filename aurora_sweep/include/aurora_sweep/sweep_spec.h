@@ -100,8 +100,8 @@ struct SweepSpec {
   // plus its worst link's jitter.
   long formationHistoryNeeded() const {
     long longest = 0;
-    for (int d = 0; d < kFormationDroneCount; ++d) {
-      const long h = formationWorstLink(d).historyNeeded(static_cast<long>(maxValue(kParamFirstDroneDelay + d)));
+    for (int d = 0; d < kLineLayout.robots; ++d) {
+      const long h = formationWorstLink(d).historyNeeded(static_cast<long>(maxValue(kLineLayout.delay(d))));
       longest = h > longest ? h : longest;
     }
     return longest;
@@ -113,7 +113,7 @@ struct SweepSpec {
   // (uplink_loss_2) when the sweep gives it, else the drones' common one
   // (formationCombination applies them in that order).
   int droneLinkParam(int d, int i) const {
-    const int own = kParamFirstDroneLinkValue + d * kLinkParamCount + i;
+    const int own = kLineLayout.linkValue(d, i);
     return given(own) ? own : kParamFirstLinkValue + i;
   }
   bool droneLinkValueGiven(int d, int i) const { return given(droneLinkParam(d, i)); }
@@ -131,7 +131,7 @@ struct SweepSpec {
       if (varies(kParamFirstLinkValue + i)) return false;
     }
     if (!formation()) return link.ideal();
-    for (int d = 0; d < kFormationDroneCount; ++d) {
+    for (int d = 0; d < kLineLayout.robots; ++d) {
       aurora_control::LinkParams l = formation_run.drone[d].link;
       for (int i = 0; i < kLinkParamCount; ++i) {
         if (varies(droneLinkParam(d, i))) return false;

@@ -1,0 +1,210 @@
+// The shape seam (issue 32): a shape of three robots defined only under
+// test/ (three_abreast.h) flies through the generic formation code of
+// every backend, with no edit outside test/: the offline runner
+// (runFormation), the sweep's scalar loop (simulateFormation), its SIMD
+// engine (FormationBatch on this build's default instruction set) and the
+// CUDA kernel's per-thread entry (formationThread, on the host for every
+// thread of a launch). Its sweep parameters sit where its ShapeLayout puts
+// them: three delays, 18 gains, three robots' own link values.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <vector>
+
+#include "../src/batch_engine.h"
+#include "aurora_sim/vehicle_yaml.h"
+#include "aurora_sweep/kernel_entry.h"
+#include "sweep_test_support.h"
+#include "three_abreast.h"
+
+namespace {
+
+using namespace aurora_sweep;
+using aurora_control::LawType;
+using three_abreast::ThreeAbreast;
+template <typename T>
+using Run3 = ShapeRun<T, ThreeAbreast>;
+constexpr LawType kLaw = LawType::kUnderactuated;
+constexpr ShapeLayout kAt = shapeLayout<ThreeAbreast<double>>();
+constexpr int kCapacity = 64;
+
+// Three AR.Drones (the vehicle file's) at 1 m, told to hold robot 1 at
+// (0.5, 0.5, 1.5) with robot 2 1.5 m along x and robot 3 1.5 m along y.
+Run3<double> threeDrones(const aurora_control::LinkParams& link) {
+  const auto vehicle = aurora_sim::loadVehicleYaml(test::configDir() + "/vehicles/ardrone2.yaml");
+  Run3<double> run;
+  const double starts[3][3] = {{0, 0, 1}, {1, 0, 1}, {0, 1, 1}};
+  for (int d = 0; d < 3; ++d) {
+    auto& drone = run.drone[d];
+    drone.plant = drone.model = vehicle;
+    drone.gains.pd = {0.5, 0.85};
+    drone.gains.underactuated = aurora_control::UnderactuatedGains<double>::defaults();
+    drone.gains.underactuated.k1[0] = drone.gains.underactuated.k1[1] = 0.1;  // the lab's formation gains
+    drone.gains.underactuated.k2[4] = 15.0;
+    drone.link = link;
+    for (int i = 0; i < 3; ++i) drone.start[i] = starts[d][i];
+  }
+  for (int i = 0; i < 9; ++i) run.gains.k1[i] = i < 2 ? 0.1 : 0.5, run.gains.k2[i] = 0.5;
+  const double Q[9] = {0.5, 0.5, 1.5, 1.5, 0, 0, 0, 1.5, 0};
+  for (int i = 0; i < 9; ++i) run.reference.Q[i] = Q[i];
+  run.period_steps = 6;
+  return run;
+}
+
+template <typename T>
+FormationSetup<T, ThreeAbreast> setupOf(const Run3<double>& run) {
+  FormationSetup<T, ThreeAbreast> s;
+  s.run = castFormationRun<T>(run);
+  s.criteria = aurora_control::FormationCriteria<double>::study().cast<T>();
+  s.iterations = aurora_control::formationTicks(40.0, run.drone[0].plant.Ts);
+  s.early_stop = false;
+  s.ideal_link = true;
+  for (int d = 0; d < 3; ++d) s.ideal_link = s.ideal_link && run.drone[d].link.ideal();
+  return s;
+}
+
+// delay_1 x delay_2 x delay_3 x formation_k1 of robot 2's x offset (24
+// combinations); robot 3's own uplink loss `loss_3` (NaN: its file's).
+// Delays up to 8 samples: beyond, robots brush past each other and the
+// last bits of xsimd's sin against libm's grow into other distances.
+struct ThreeGrid {
+  std::vector<std::vector<double>> axes{{0, 3}, {0, 6}, {0, 4, 8}, {0.5, 1.0}};
+  GridView view{};
+  explicit ThreeGrid(double loss_3) {
+    const int params[4] = {kAt.delay(0), kAt.delay(1), kAt.delay(2), kAt.k1(3)};
+    for (int i = 0; i < kParamCount; ++i) view.fixed[i] = std::nan("");
+    for (int i = 0; i < kAt.variables; ++i) view.fixed[kAt.k1(i)] = 0.5, view.fixed[kAt.k2(i)] = 0.5;
+    view.fixed[kAt.linkValue(2, aurora_control::kLinkUplinkLoss)] = loss_3;
+    view.n_axes = 4;
+    for (int a = 0; a < 4; ++a) {
+      view.param[a] = params[a];
+      view.count[a] = static_cast<long>(axes[a].size());
+      view.values[a] = axes[a].data();
+    }
+    view.points = nullptr, view.n_points = 0, view.points_first = 0, view.point_cols = 0;
+    view.repeats = 1;
+  }
+};
+
+template <typename T, bool Linked>
+std::vector<SimResult> scalarLoop(const FormationSetup<T, ThreeAbreast>& setup, const GridView& grid) {
+  std::vector<SimResult> out;
+  for (long i = 0; i < grid.size(); ++i) out.push_back(simulateFormation<kLaw, T, kCapacity, Linked>(setup, grid, i));
+  return out;
+}
+
+template <typename T, bool Linked>
+std::vector<SimResult> kernelThreads(const FormationSetup<T, ThreeAbreast>& setup, const GridView& grid) {
+  return test::launchOnHost(grid.size(), 8, [&](unsigned b, unsigned block, unsigned t, SimResult* out) {
+    formationThread<kLaw, T, kCapacity, Linked>(setup, grid, 0, grid.size(), out, b, block, t);
+  });
+}
+
+template <typename T>
+std::vector<SimResult> simdLanes(const FormationSetup<T, ThreeAbreast>& setup, const GridView& grid) {
+  std::vector<SimResult> out(static_cast<size_t>(grid.size()));
+  std::atomic<long> next{0};
+  Progress progress{0};
+  FormationBatch<T, xsimd::default_arch, kCapacity, kLaw, ThreeAbreast>(setup, grid, 0, grid.size(), out, next,
+                                                                        progress)
+      .run();
+  EXPECT_EQ(progress.load(), grid.size());
+  return out;
+}
+
+// The offline runner (the flight tool's) on combination i's run, judged as
+// a sweep judges it; its drones' positions at the end into `end`.
+template <typename T>
+SimResult runner(const FormationSetup<T, ThreeAbreast>& setup, const GridView& grid, long i, T end[9] = nullptr) {
+  const Run3<T> run = formationCombination(setup, grid.decode(i));
+  using Judge = aurora_control::FormationJudge<T, ThreeAbreast<T>>;
+  Judge judge{setup.criteria, setup.early_stop, run.drone[0].plant.Ts, {}, {}};
+  judge.metrics.reset();
+  EndDistance<T, ThreeAbreast<T>, Judge> observe{judge};
+  auto observeAndKeep = [&](const aurora_control::FormationObservation<T, ThreeAbreast<T>>& o) {
+    if (end) aurora_control::modelPositions<ThreeAbreast<T>>(o.drones, end);
+    return observe(o);
+  };
+  const long ticks = aurora_control::runFormation<kLaw, T, ThreeAbreast<T>, kCapacity>(run, setup.iterations,
+                                                                                       observeAndKeep);
+  return formationResult(judge.metrics, ticks, observe.distance);
+}
+
+int differing(const std::vector<SimResult>& a, const std::vector<SimResult>& b) {
+  int n = static_cast<int>(a.size() != b.size());
+  for (size_t i = 0; i < a.size() && i < b.size(); ++i) n += std::memcmp(&a[i], &b[i], sizeof(SimResult)) != 0;
+  return n;
+}
+
+// Every backend on the grid: runner, scalar loop and kernel threads the
+// same bytes; SIMD lanes the same flags and ticks, metrics to `rel`. Over
+// links the runner keys drone d's draws by d, as the sweep keys
+// combination 0's: it is compared there.
+template <typename T, bool Linked>
+void expectEveryBackendAgrees(const Run3<double>& file, double loss_3, double rel) {
+  const ThreeGrid grid(loss_3);
+  const FormationSetup<T, ThreeAbreast> setup = setupOf<T>(file);
+  ASSERT_EQ(setup.ideal_link, !Linked);
+  const std::vector<SimResult> scalar = scalarLoop<T, Linked>(setup, grid.view);
+  for (long i = 0; i < (Linked ? 1 : grid.view.size()); ++i) {
+    const SimResult r = runner(setup, grid.view, i);
+    EXPECT_EQ(std::memcmp(&r, &scalar[i], sizeof r), 0) << "runner " << i;
+  }
+  EXPECT_EQ(differing(scalar, kernelThreads<T, Linked>(setup, grid.view)), 0) << "kernel threads";
+  test::expectRecordsAgree("simd lanes", scalar, simdLanes(setup, grid.view), rel, 8);
+}
+
+aurora_control::LinkParams lossyLink() {
+  aurora_control::LinkParams l;
+  l.uplink.jitter = aurora_control::JitterKind::kUniform;
+  l.uplink.jitter_max = 2;
+  l.uplink.loss = 0.1;
+  l.downlink.loss = 0.05;
+  l.seed = 11;
+  return l;
+}
+
+}  // namespace
+
+TEST(ShapeConcept, AThreeRobotShapeFliesEveryBackend) {
+  // Its parameters: three delays, then 2 x 9 gains, then 3 x 7 link values,
+  // where the line has its gains and link values (no room is shared).
+  EXPECT_EQ(kAt.delay(2), kLineLayout.k1(0));
+  EXPECT_EQ(kAt.count(), kParamCount);
+  const Run3<double> ideal = threeDrones(aurora_control::LinkParams());
+  const ThreeGrid grid(std::nan(""));
+  const FormationSetup<double, ThreeAbreast> setup = setupOf<double>(ideal);
+  for (long i = 0; i < grid.view.size(); ++i) {  // each robot's delay and the gain reach its run
+    const Combination c = grid.view.decode(i);
+    const Run3<double> run = formationCombination(setup, c);
+    for (int d = 0; d < 3; ++d) EXPECT_EQ(run.drone[d].delay, long(c.v[kAt.delay(d)])) << i;
+    EXPECT_EQ(run.gains.k1[3], c.v[kAt.k1(3)]);
+  }
+  // It flies: undelayed, the three end in their shape, the checks hold.
+  double end[9];
+  const SimResult flown = runner(setup, grid.view, 0, end);
+  const double want[9] = {0.5, 0.5, 1.5, 2.0, 0.5, 1.5, 0.5, 2.0, 1.5};
+  for (int i = 0; i < 9; ++i) EXPECT_NEAR(end[i], want[i], 0.02) << i;
+  EXPECT_TRUE(feasible(flown));
+  FormationRecord record;
+  std::memcpy(&record, &flown, sizeof record);
+  EXPECT_NEAR(record.end_distance, 1.5, 0.02);  // the closest pair at the end: robots 1-2 and 1-3
+  EXPECT_LT(record.min_distance, 1.0 + 1e-9);   // they started 1 m apart
+  EXPECT_EQ(record.ticks, 1200);
+  // Robot 3's delay reaches its run: delay_3 8 (combination 8) against 0.
+  EXPECT_NE(std::memcmp(&flown, &scalarLoop<double, false>(setup, grid.view)[8], sizeof flown), 0);
+
+  expectEveryBackendAgrees<double, false>(ideal, std::nan(""), 1e-9);
+  expectEveryBackendAgrees<float, false>(ideal, std::nan(""), 2e-3);
+  const Run3<double> lossy = threeDrones(lossyLink());
+  expectEveryBackendAgrees<double, true>(lossy, 0.3, 1e-9);
+  expectEveryBackendAgrees<float, true>(lossy, 0.3, 2e-3);
+
+  // Robot 3's own uplink_loss_3 applies to robot 3 only.
+  const ThreeGrid own(0.3);
+  const Run3<double> run = formationCombination(setupOf<double>(lossy), own.view.decode(5));
+  EXPECT_EQ(run.drone[2].link.uplink.loss, 0.3);
+  EXPECT_EQ(run.drone[0].link.uplink.loss, 0.1);
+  EXPECT_EQ(run.drone[1].link.uplink.loss, 0.1);
+}
