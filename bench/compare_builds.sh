@@ -29,7 +29,9 @@ for precision in double float; do
   for r in $(seq "$ROUNDS"); do
     for side in old new; do
       build=$OLD; [ "$side" = new ] && build=$NEW
-      "$build/devel/lib/aurora_sweep/sweep" --config "$SWEEP" --out "$OUT/$side-$precision-$r" --backend cpu \
+      # Each build with its own instruction-set libraries (the sourced
+      # setup.bash puts NEW's first on the library path; OLD's may differ in ABI).
+      LD_LIBRARY_PATH="$build/devel/lib:$LD_LIBRARY_PATH" "$build/devel/lib/aurora_sweep/sweep" --config "$SWEEP" --out "$OUT/$side-$precision-$r" --backend cpu \
         --precision "$precision" --threads "$THREADS" --no-plots --quiet > /dev/null 2> "$OUT/stderr" ||
         { cat "$OUT/stderr" >&2; exit 1; }
     done

@@ -136,7 +136,7 @@ FormationFlight flyFormationFiles(const FormationFlightOptions& o, const Formati
   };
   withHistoryCapacity(history, [&](auto capacity) {
     withLaw(r.file.drones[0].controller.law, [&](auto law) {
-      runFormation<decltype(law)::value, double, Line, decltype(capacity)::value>(r.run, r.ticks, each);
+      runFormation<decltype(law), double, Line, decltype(capacity)::value>(r.run, r.ticks, each);
     });
   });
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

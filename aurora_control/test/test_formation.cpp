@@ -120,7 +120,7 @@ TEST(LineFormation, TheLabScenarioStartsAsTheReference) {
     }
     periods.push_back(p);
   };
-  runFormation<LawType::kUnderactuated, double, Line, 64>(labScenario(FormationLaw::kPositionPriority), 13, observe);
+  runFormation<aurora_control::ArdroneLaw<LawType::kUnderactuated>, double, Line, 64>(labScenario(FormationLaw::kPositionPriority), 13, observe);
   ASSERT_EQ(periods.size(), 3u);
   const auto near = [](const double* got, std::initializer_list<double> want, const char* what, long k) {
     int i = 0;
@@ -176,7 +176,7 @@ TEST(LineFormation, BothLawsFlyTheLabScenarioAsTheOriginal) {
       closest = std::min(closest, std::sqrt((X[0] - X[3]) * (X[0] - X[3]) + (X[1] - X[4]) * (X[1] - X[4]) +
                                             (X[2] - X[5]) * (X[2] - X[5])));
     };
-    runFormation<LawType::kUnderactuated, double, Line, 64>(labScenario(w.law), 2700, observe);
+    runFormation<aurora_control::ArdroneLaw<LawType::kUnderactuated>, double, Line, 64>(labScenario(w.law), 2700, observe);
     double rms[5];
     for (int i = 0; i < 5; ++i) rms[i] = std::sqrt(sum[i] / n);
     std::printf("law %d: RMS after 10 s rho %.4f m, alpha %.4f rad, beta %.4f rad, position %.4f m, z %.4f m; "
@@ -211,14 +211,14 @@ TEST(LineFormation, TheLayerSeesEachDroneThroughItsOwnDelay) {
     }
     X.push_back(now);
   };
-  runFormation<LawType::kUnderactuated, double, Line, 64>(run, 600, observe);
+  runFormation<aurora_control::ArdroneLaw<LawType::kUnderactuated>, double, Line, 64>(run, 600, observe);
   EXPECT_GT(checked, 90);
   EXPECT_EQ(differ, 0);
   // Not vacuous: with the delays the formation flies differently.
   double last_delayed[6], last_plain[6];
   for (int i = 0; i < 6; ++i) last_delayed[i] = X.back()[i];
   X.assign(1, std::vector<double>(6, 0.0));
-  runFormation<LawType::kUnderactuated, double, Line, 64>(labScenario(FormationLaw::kPositionPriority), 600, observe);
+  runFormation<aurora_control::ArdroneLaw<LawType::kUnderactuated>, double, Line, 64>(labScenario(FormationLaw::kPositionPriority), 600, observe);
   for (int i = 0; i < 6; ++i) last_plain[i] = X.back()[i];
   double gap = 0;
   for (int i = 0; i < 6; ++i) gap += std::fabs(last_delayed[i] - last_plain[i]);
@@ -243,8 +243,8 @@ TEST(FormationFile, ShippedFilesAreTheLabScenario) {
       };
     };
     auto ra = record(a), rb = record(b);
-    runFormation<LawType::kUnderactuated, double, Line, 64>(shipped, 300, ra);
-    runFormation<LawType::kUnderactuated, double, Line, 64>(labScenario(f.second), 300, rb);
+    runFormation<aurora_control::ArdroneLaw<LawType::kUnderactuated>, double, Line, 64>(shipped, 300, ra);
+    runFormation<aurora_control::ArdroneLaw<LawType::kUnderactuated>, double, Line, 64>(labScenario(f.second), 300, rb);
     EXPECT_EQ(a, b) << f.first;
   }
 }
@@ -313,7 +313,7 @@ TEST(LineFormation, EachDroneFliesOverItsOwnLink) {
     auto observe = [&](const FormationObservation<double, Line>& o) {
       for (int d = 0; d < 2; ++d) out.insert(out.end(), o.drones[d].model.X, o.drones[d].model.X + 12);
     };
-    runFormation<LawType::kUnderactuated, double, Line, 64>(run, 900, observe);
+    runFormation<aurora_control::ArdroneLaw<LawType::kUnderactuated>, double, Line, 64>(run, 900, observe);
     return out;
   };
   FormationRun<double, Line> plain = labScenario(FormationLaw::kInverseKinematics);
@@ -358,7 +358,7 @@ TEST(FormationController, IsTheRunnersTickOverDelaysAndLinks) {
     for (int i = 0; i < 6; ++i) t.Q[i] = o.layer.Q()[i], t.Qd[i] = o.layer.Qd()[i];
     offline.push_back(t);
   };
-  runFormation<LawType::kUnderactuated, double, Line, 64>(run, 900, observe);
+  runFormation<aurora_control::ArdroneLaw<LawType::kUnderactuated>, double, Line, 64>(run, 900, observe);
   FormationController<64> core(run, LawType::kUnderactuated);
   long mismatches = 0, hovers = 0;
   for (long k = 0; k < 900; ++k) {
@@ -405,7 +405,7 @@ TEST(FormationChecks, ADroneFlyingNaNFailsEveryCheck) {
       m.add(criteria, X, Xd, double(o.k) * run.drone[0].plant.Ts, run.drone[0].plant.Ts);
       nan_seen = nan_seen || std::isnan(o.steps[1].U[0]);
     };
-    runFormation<LawType::kUnderactuated, double, Line, 64>(run, 600, observe);
+    runFormation<aurora_control::ArdroneLaw<LawType::kUnderactuated>, double, Line, 64>(run, 600, observe);
     ASSERT_TRUE(nan_seen) << "the level start did not fly NaN: no test of the checks";
     for (int i = 0; i < 4; ++i) EXPECT_FALSE(m.ok[i]) << "check " << i + 1 << " passed a NaN drone";
     EXPECT_FALSE(m.feasible());

@@ -99,7 +99,7 @@ __global__ void sweepKernel(SweepSetup<T> setup, GridView grid, long first, long
 // formation file's run, about 2 kB) is read from device memory.
 template <aurora_control::LawType Law, typename T, int Capacity, bool Linked>
 __global__ void formationKernel(const FormationSetup<T>* setup, GridView grid, long first, long n, SimResult* out) {
-  formationThread<Law, T, Capacity, Linked>(*setup, grid, first, n, out, blockIdx.x, blockDim.x, threadIdx.x);
+  formationThread<aurora_control::ArdroneLaw<Law>, T, Capacity, Linked>(*setup, grid, first, n, out, blockIdx.x, blockDim.x, threadIdx.x);
 }
 
 // Calls f(T(), capacity, law, linked) with the kernel's compile-time

@@ -243,7 +243,7 @@ void runBatchWith(const SweepSpec& spec, int threads, std::vector<SimResult>& ou
   if (spec.formation()) {
     const FormationSetup<T> setup = makeFormationSetup<T>(spec);
     onThreads(threads, [&] {
-      FormationBatch<T, Arch, Capacity, Law::value>(setup, grid, first, total, out, next, progress).run();
+      FormationBatch<T, Arch, Capacity, Law>(setup, grid, first, total, out, next, progress).run();
     });
   } else {
     const SweepSetup<T> setup = makeSetup<T>(spec);

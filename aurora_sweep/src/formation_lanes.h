@@ -19,8 +19,7 @@ namespace aurora_sweep {
 
 namespace {
 
-template <typename T, class Arch, int Capacity, aurora_control::LawType Law,
-          template <typename> class Shape = aurora_control::LineFormation>
+template <typename T, class Arch, int Capacity, class Law, template <typename> class Shape = aurora_control::LineFormation>
 class FormationBatch {
  public:
   using LaneOps = Lanes<T, Arch>;
@@ -31,11 +30,14 @@ class FormationBatch {
   static constexpr int L = LaneOps::L, D = OneLane::kDrones, N = OneLane::kVariables;
   using Int = xsimd::as_integer_t<T>;
   using I = xsimd::batch<Int, Arch>;
-  using DroneLaw = aurora_control::ArdroneLaw<Law>;
+  using DroneLaw = Law;
+  using Data = typename Law::Data;
+  using Vehicle = typename Law::Vehicle;
+  static constexpr int S = Vehicle::kStates;
   using History = LaneHistory<DroneLaw, T, Arch, Capacity>;
   using Links = LaneModelLinks<DroneLaw, T, Arch, Capacity>;
 
-  FormationBatch(const FormationSetup<T, Shape>& setup, const GridView& grid, long first, long total,
+  FormationBatch(const FormationSetup<T, Shape, Data>& setup, const GridView& grid, long first, long total,
                  std::vector<SimResult>& out, std::atomic<long>& next, Progress& progress)
       : grid_(grid), first_(first), total_(total), out_(out), next_(next), progress_(progress), setup_(setup) {
     // A sweep's link values may change a drone's link per combination: the
@@ -63,10 +65,10 @@ class FormationBatch {
   }
 
   // The lanes' runs (lanes past `count` repeat the first, their results dropped).
-  void startLanes(long first, int count, aurora_control::FormationRun<B, LaneShape>& run) {
+  void startLanes(long first, int count, aurora_control::FormationRun<B, LaneShape, Data>& run) {
     for (int l = 0; l < L; ++l) {
       const Combination c = grid_.decode(first + (l < count ? l : 0));
-      const ShapeRun<T, Shape> lane = formationCombination(setup_, c);
+      const ShapeRun<T, Shape, Data> lane = formationCombination(setup_, c);
       if (l == 0) broadcast(lane, run);
       for (int i = 0; i < N; ++i) LaneOps::set(run.gains.k1[i], l, lane.gains.k1[i]), LaneOps::set(run.gains.k2[i], l, lane.gains.k2[i]);
       for (int d = 0; d < D; ++d) {
@@ -82,7 +84,7 @@ class FormationBatch {
 
   // What every lane shares: the drones' models, gains and starts, the law,
   // the period (the file's; the sweep varies none of them).
-  static void broadcast(const ShapeRun<T, Shape>& s, aurora_control::FormationRun<B, LaneShape>& run) {
+  static void broadcast(const ShapeRun<T, Shape, Data>& s, aurora_control::FormationRun<B, LaneShape, Data>& run) {
     for (int d = 0; d < D; ++d) castFormationDrone(s.drone[d], run.drone[d]);
     castFormationLayer(s, run);
   }
@@ -90,7 +92,7 @@ class FormationBatch {
   // Steps 1-2 of tick k for each drone (closed_loop.h, receiveState): its
   // history keeps X_k, its link (the delay rule, or the lanes' link models)
   // picks the state it receives.
-  void receiveStates(long k, const aurora_control::DroneState<B, M>* state, B xc[D][aurora_sim::kStateSize]) {
+  void receiveStates(long k, const aurora_control::DroneState<B, M, Data>* state, B xc[D][S]) {
     const I at(static_cast<Int>(k));
     for (int d = 0; d < D; ++d) {
       if (links_[d]) aurora_control::receiveState(at, history_[d], *links_[d], state[d], xc[d]);
@@ -99,16 +101,16 @@ class FormationBatch {
   }
 
   // Drone d's sent commands U become the ones it applies (ideal: as sent).
-  void downlink(int d, long k, B U[aurora_sim::kCommandSize]) {
+  void downlink(int d, long k, B U[Vehicle::kInputs]) {
     if (links_[d]) links_[d]->downlink(I(static_cast<Int>(k)), U, U);
   }
 
   void runBatch(long first, int count) {
-    aurora_control::FormationRun<B, LaneShape> run;
+    aurora_control::FormationRun<B, LaneShape, Data> run;
     startLanes(first, count, run);
     aurora_control::FormationLayer<B, LaneShape> layer(run.law, run.gains, B(T(run.period_steps) * setup_.run.drone[0].plant.Ts));
-    aurora_control::DroneParams<B> params[D];
-    aurora_control::DroneState<B, M> state[D];
+    aurora_control::DroneParams<B, Data> params[D];
+    aurora_control::DroneState<B, M, Data> state[D];
     aurora_control::startFormation(run, params, state, layer);
     aurora_control::FormationMetrics<B, M, LaneShape> metrics;
     metrics.reset();
@@ -124,15 +126,15 @@ class FormationBatch {
   }
 
   // Tick k on every lane; true when every lane has ended.
-  bool tick(long k, const aurora_control::FormationRun<B, LaneShape>& run, aurora_control::FormationLayer<B, LaneShape>& layer,
-            const aurora_control::DroneParams<B>* params, aurora_control::DroneState<B, M>* state,
+  bool tick(long k, const aurora_control::FormationRun<B, LaneShape, Data>& run, aurora_control::FormationLayer<B, LaneShape>& layer,
+            const aurora_control::DroneParams<B, Data>* params, aurora_control::DroneState<B, M, Data>* state,
             aurora_control::FormationMetrics<B, M, LaneShape>& metrics, const aurora_control::FormationCriteria<B>& criteria,
             long first, bool* ended) {
     const T Ts = setup_.run.drone[0].plant.Ts;
-    B xc[D][aurora_sim::kStateSize], X[N];
+    B xc[D][S], X[N];
     receiveStates(k, state, xc);
-    aurora_control::modelPositions<LaneShape>(state, X);
-    const bool due = k % run.period_steps == 0;
+    aurora_control::modelPositions<LaneShape, Vehicle>(state, X);
+    const bool due = aurora_control::layerDue(k, run.period_steps);
     T qd[N];
     B Qd[N];
     if (due) {
@@ -142,16 +144,16 @@ class FormationBatch {
       OneLane::positions(qd, xd);
       for (int i = 0; i < N; ++i) Qd[i] = B(qd[i]), Xd_[i] = B(xd[i]);
     }
-    aurora_control::DroneStep<B> step[D];
+    aurora_control::DroneStep<B, Data> step[D];
     aurora_control::formationTick<Law>(params, setup_.run.clamp, layer, due ? Qd : nullptr, B(T(k)), xc, state, step,
-                                       [&](int d, B U[4]) { downlink(d, k, U); });
+                                       [&](int d, B U[Vehicle::kInputs]) { downlink(d, k, U); });
     metrics.add(criteria, X, Xd_, B(aurora_control::taskTime(T(k), Ts)), B(Ts));
     return endLanes(k, first, metrics, state, ended);
   }
 
   // Lanes whose check failed (early stop) end at tick k.
   bool endLanes(long k, long first, const aurora_control::FormationMetrics<B, M, LaneShape>& metrics,
-                const aurora_control::DroneState<B, M>* state, bool* ended) {
+                const aurora_control::DroneState<B, M, Data>* state, bool* ended) {
     if (!setup_.early_stop) return false;
     alignas(64) bool ok[L];
     metrics.feasible().store_aligned(ok);
@@ -164,7 +166,7 @@ class FormationBatch {
   }
 
   void finishLane(int l, long first, const aurora_control::FormationMetrics<B, M, LaneShape>& m,
-                  const aurora_control::DroneState<B, M>* state, long ticks) {
+                  const aurora_control::DroneState<B, M, Data>* state, long ticks) {
     aurora_control::FormationMetrics<T, bool, OneLane> lane;
     lane.iae_position = LaneOps::get(m.iae_position, l), lane.iae_shape = LaneOps::get(m.iae_shape, l);
     lane.max_position = LaneOps::get(m.max_position, l), lane.max_shape = LaneOps::get(m.max_shape, l);
@@ -172,7 +174,7 @@ class FormationBatch {
     for (int i = 0; i < 4; ++i) lane.ok[i] = LaneOps::get(m.ok[i], l);
     T X[N];
     for (int d = 0; d < D; ++d) {
-      for (int i = 0; i < 3; ++i) X[3 * d + i] = LaneOps::get(state[d].model.X[aurora_sim::kX + i], l);
+      for (int i = 0; i < 3; ++i) X[3 * d + i] = LaneOps::get(state[d].model.X[Vehicle::kPosition + i], l);
     }
     out_[first + l - first_] = formationResult(lane, ticks, aurora_control::closestPair<OneLane>(X));
     progress_.fetch_add(1, std::memory_order_relaxed);
@@ -183,7 +185,7 @@ class FormationBatch {
   std::vector<SimResult>& out_;
   std::atomic<long>& next_;
   Progress& progress_;
-  const FormationSetup<T, Shape> setup_;
+  const FormationSetup<T, Shape, Data> setup_;
   History history_[D];                             // each drone's, every lane at the same tick
   aurora_control::IdealLinkOf<I> ideal_[D];         // each drone's delay [samples] per lane, over the delay rule
   std::unique_ptr<Links> links_[D];                // or each drone's lanes' link models

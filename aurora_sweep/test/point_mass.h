@@ -58,6 +58,13 @@ struct Gains {
   T kp, kd;  // [1/s^2], [1/s]
 };
 
+// Its gains in another precision (a formation sweep casts each robot's;
+// found by argument-dependent lookup).
+template <typename T, typename U>
+void castGains(const Gains<U>& from, Gains<T>& to) {
+  to.kp = T(from.kp), to.kd = T(from.kd);
+}
+
 template <typename T>
 struct Memory {
   AURORA_HD void reset() {}

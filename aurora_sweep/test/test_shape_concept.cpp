@@ -16,6 +16,7 @@
 #include "aurora_sim/vehicle_yaml.h"
 #include "aurora_sweep/kernel_entry.h"
 #include "sweep_test_support.h"
+#include "point_mass.h"
 #include "three_abreast.h"
 
 namespace {
@@ -23,27 +24,29 @@ namespace {
 using namespace aurora_sweep;
 using aurora_control::LawType;
 using three_abreast::ThreeAbreast;
-template <typename T>
-using Run3 = ShapeRun<T, ThreeAbreast>;
-constexpr LawType kLaw = LawType::kUnderactuated;
+template <typename T, class Data = aurora_control::ArdroneLawData>
+using Run3 = ShapeRun<T, ThreeAbreast, Data>;
+template <typename T, class Law>
+using Setup3 = FormationSetup<T, ThreeAbreast, typename Law::Data>;
+using DroneLaw = aurora_control::ArdroneLaw<LawType::kUnderactuated>;
+using PointLaw = point_mass::PointPd;
 constexpr ShapeLayout kAt = shapeLayout<ThreeAbreast<double>>();
 constexpr int kCapacity = 64;
 
-// Three AR.Drones (the vehicle file's) at 1 m, told to hold robot 1 at
-// (0.5, 0.5, 1.5) with robot 2 1.5 m along x and robot 3 1.5 m along y.
-Run3<double> threeDrones(const aurora_control::LinkParams& link) {
-  const auto vehicle = aurora_sim::loadVehicleYaml(test::configDir() + "/vehicles/ardrone2.yaml");
-  Run3<double> run;
+// Three robots of `vehicle` flying `gains` at 1 m, told to hold robot 1
+// at (0.5, 0.5, 1.5) with robot 2 1.5 m along x and robot 3 1.5 m along y.
+template <class Data>
+Run3<double, Data> threeRobots(const typename Data::Vehicle::template Params<double>& vehicle,
+                               const typename Data::template Gains<double>& gains,
+                               const aurora_control::LinkParams& link) {
+  Run3<double, Data> run;
   const double starts[3][3] = {{0, 0, 1}, {1, 0, 1}, {0, 1, 1}};
   for (int d = 0; d < 3; ++d) {
-    auto& drone = run.drone[d];
-    drone.plant = drone.model = vehicle;
-    drone.gains.pd = {0.5, 0.85};
-    drone.gains.underactuated = aurora_control::UnderactuatedGains<double>::defaults();
-    drone.gains.underactuated.k1[0] = drone.gains.underactuated.k1[1] = 0.1;  // the lab's formation gains
-    drone.gains.underactuated.k2[4] = 15.0;
-    drone.link = link;
-    for (int i = 0; i < 3; ++i) drone.start[i] = starts[d][i];
+    auto& robot = run.drone[d];
+    robot.plant = robot.model = vehicle;
+    robot.gains = gains;
+    robot.link = link;
+    for (int i = 0; i < 3; ++i) robot.start[i] = starts[d][i];
   }
   for (int i = 0; i < 9; ++i) run.gains.k1[i] = i < 2 ? 0.1 : 0.5, run.gains.k2[i] = 0.5;
   const double Q[9] = {0.5, 0.5, 1.5, 1.5, 0, 0, 0, 1.5, 0};
@@ -52,9 +55,25 @@ Run3<double> threeDrones(const aurora_control::LinkParams& link) {
   return run;
 }
 
-template <typename T>
-FormationSetup<T, ThreeAbreast> setupOf(const Run3<double>& run) {
-  FormationSetup<T, ThreeAbreast> s;
+// Three AR.Drones (the vehicle file's) with the lab's formation gains.
+Run3<double> threeDrones(const aurora_control::LinkParams& link) {
+  aurora_control::LawGains<double> gains;
+  gains.pd = {0.5, 0.85};
+  gains.underactuated = aurora_control::UnderactuatedGains<double>::defaults();
+  gains.underactuated.k1[0] = gains.underactuated.k1[1] = 0.1;
+  gains.underactuated.k2[4] = 15.0;
+  return threeRobots<aurora_control::ArdroneLawData>(
+      aurora_sim::loadVehicleYaml(test::configDir() + "/vehicles/ardrone2.yaml"), gains, link);
+}
+
+// Three point masses (the test vehicle) of 0.5 kg.
+Run3<double, PointLaw> threePoints(const aurora_control::LinkParams& link) {
+  return threeRobots<PointLaw>(point_mass::Params<double>{1.0 / 30.0, 0.5}, point_mass::Gains<double>{2.0, 3.0}, link);
+}
+
+template <typename T, class Data>
+FormationSetup<T, ThreeAbreast, Data> setupOf(const Run3<double, Data>& run) {
+  FormationSetup<T, ThreeAbreast, Data> s;
   s.run = castFormationRun<T>(run);
   s.criteria = aurora_control::FormationCriteria<double>::study().cast<T>();
   s.iterations = aurora_control::formationTicks(40.0, run.drone[0].plant.Ts);
@@ -87,27 +106,27 @@ struct ThreeGrid {
   }
 };
 
-template <typename T, bool Linked>
-std::vector<SimResult> scalarLoop(const FormationSetup<T, ThreeAbreast>& setup, const GridView& grid) {
+template <class Law, typename T, bool Linked>
+std::vector<SimResult> scalarLoop(const Setup3<T, Law>& setup, const GridView& grid) {
   std::vector<SimResult> out;
-  for (long i = 0; i < grid.size(); ++i) out.push_back(simulateFormation<kLaw, T, kCapacity, Linked>(setup, grid, i));
+  for (long i = 0; i < grid.size(); ++i) out.push_back(simulateFormation<Law, T, kCapacity, Linked>(setup, grid, i));
   return out;
 }
 
-template <typename T, bool Linked>
-std::vector<SimResult> kernelThreads(const FormationSetup<T, ThreeAbreast>& setup, const GridView& grid) {
+template <class Law, typename T, bool Linked>
+std::vector<SimResult> kernelThreads(const Setup3<T, Law>& setup, const GridView& grid) {
   return test::launchOnHost(grid.size(), 8, [&](unsigned b, unsigned block, unsigned t, SimResult* out) {
-    formationThread<kLaw, T, kCapacity, Linked>(setup, grid, 0, grid.size(), out, b, block, t);
+    formationThread<Law, T, kCapacity, Linked>(setup, grid, 0, grid.size(), out, b, block, t);
   });
 }
 
-template <typename T>
-std::vector<SimResult> simdLanes(const FormationSetup<T, ThreeAbreast>& setup, const GridView& grid) {
+template <class Law, typename T>
+std::vector<SimResult> simdLanes(const Setup3<T, Law>& setup, const GridView& grid) {
   std::vector<SimResult> out(static_cast<size_t>(grid.size()));
   std::atomic<long> next{0};
   Progress progress{0};
-  FormationBatch<T, xsimd::default_arch, kCapacity, kLaw, ThreeAbreast>(setup, grid, 0, grid.size(), out, next,
-                                                                        progress)
+  FormationBatch<T, xsimd::default_arch, kCapacity, Law, ThreeAbreast>(setup, grid, 0, grid.size(), out, next,
+                                                                       progress)
       .run();
   EXPECT_EQ(progress.load(), grid.size());
   return out;
@@ -115,19 +134,20 @@ std::vector<SimResult> simdLanes(const FormationSetup<T, ThreeAbreast>& setup, c
 
 // The offline runner (the flight tool's) on combination i's run, judged as
 // a sweep judges it; its drones' positions at the end into `end`.
-template <typename T>
-SimResult runner(const FormationSetup<T, ThreeAbreast>& setup, const GridView& grid, long i, T end[9] = nullptr) {
-  const Run3<T> run = formationCombination(setup, grid.decode(i));
-  using Judge = aurora_control::FormationJudge<T, ThreeAbreast<T>>;
+template <class Law, typename T>
+SimResult runner(const Setup3<T, Law>& setup, const GridView& grid, long i, T end[9] = nullptr) {
+  using Data = typename Law::Data;
+  const Run3<T, Data> run = formationCombination(setup, grid.decode(i));
+  using Judge = aurora_control::FormationJudge<T, ThreeAbreast<T>, Data>;
   Judge judge{setup.criteria, setup.early_stop, run.drone[0].plant.Ts, {}, {}};
   judge.metrics.reset();
-  EndDistance<T, ThreeAbreast<T>, Judge> observe{judge};
-  auto observeAndKeep = [&](const aurora_control::FormationObservation<T, ThreeAbreast<T>>& o) {
-    if (end) aurora_control::modelPositions<ThreeAbreast<T>>(o.drones, end);
+  EndDistance<T, ThreeAbreast<T>, Judge, Data> observe{judge};
+  auto observeAndKeep = [&](const aurora_control::FormationObservation<T, ThreeAbreast<T>, Data>& o) {
+    if (end) aurora_control::modelPositions<ThreeAbreast<T>, typename Law::Vehicle>(o.drones, end);
     return observe(o);
   };
-  const long ticks = aurora_control::runFormation<kLaw, T, ThreeAbreast<T>, kCapacity>(run, setup.iterations,
-                                                                                       observeAndKeep);
+  const long ticks = aurora_control::runFormation<Law, T, ThreeAbreast<T>, kCapacity>(run, setup.iterations,
+                                                                                      observeAndKeep);
   return formationResult(judge.metrics, ticks, observe.distance);
 }
 
@@ -141,18 +161,47 @@ int differing(const std::vector<SimResult>& a, const std::vector<SimResult>& b) 
 // same bytes; SIMD lanes the same flags and ticks, metrics to `rel`. Over
 // links the runner keys drone d's draws by d, as the sweep keys
 // combination 0's: it is compared there.
-template <typename T, bool Linked>
-void expectEveryBackendAgrees(const Run3<double>& file, double loss_3, double rel) {
+template <class Law, typename T, bool Linked>
+void expectEveryBackendAgrees(const Run3<double, typename Law::Data>& file, double loss_3, double rel) {
   const ThreeGrid grid(loss_3);
-  const FormationSetup<T, ThreeAbreast> setup = setupOf<T>(file);
+  const Setup3<T, Law> setup = setupOf<T>(file);
   ASSERT_EQ(setup.ideal_link, !Linked);
-  const std::vector<SimResult> scalar = scalarLoop<T, Linked>(setup, grid.view);
+  const std::vector<SimResult> scalar = scalarLoop<Law, T, Linked>(setup, grid.view);
   for (long i = 0; i < (Linked ? 1 : grid.view.size()); ++i) {
-    const SimResult r = runner(setup, grid.view, i);
+    const SimResult r = runner<Law>(setup, grid.view, i);
     EXPECT_EQ(std::memcmp(&r, &scalar[i], sizeof r), 0) << "runner " << i;
   }
-  EXPECT_EQ(differing(scalar, kernelThreads<T, Linked>(setup, grid.view)), 0) << "kernel threads";
-  test::expectRecordsAgree("simd lanes", scalar, simdLanes(setup, grid.view), rel, 8);
+  EXPECT_EQ(differing(scalar, kernelThreads<Law, T, Linked>(setup, grid.view)), 0) << "kernel threads";
+  test::expectRecordsAgree("simd lanes", scalar, simdLanes<Law>(setup, grid.view), rel, 8);
+}
+
+// Every backend, ideal and lossy, double and float.
+template <class Law>
+void expectEveryBackendAgrees(const Run3<double, typename Law::Data>& ideal,
+                              const Run3<double, typename Law::Data>& lossy) {
+  expectEveryBackendAgrees<Law, double, false>(ideal, std::nan(""), 1e-9);
+  expectEveryBackendAgrees<Law, float, false>(ideal, std::nan(""), 2e-3);
+  expectEveryBackendAgrees<Law, double, true>(lossy, 0.3, 1e-9);
+  expectEveryBackendAgrees<Law, float, true>(lossy, 0.3, 2e-3);
+}
+
+// Undelayed (combination 0), the three end in their shape and the checks hold.
+template <class Law>
+void expectItFlies(const Run3<double, typename Law::Data>& ideal) {
+  const ThreeGrid grid(std::nan(""));
+  const Setup3<double, Law> setup = setupOf<double>(ideal);
+  double end[9];
+  const SimResult flown = runner<Law>(setup, grid.view, 0, end);
+  const double want[9] = {0.5, 0.5, 1.5, 2.0, 0.5, 1.5, 0.5, 2.0, 1.5};
+  for (int i = 0; i < 9; ++i) EXPECT_NEAR(end[i], want[i], 0.02) << i;
+  EXPECT_TRUE(feasible(flown));
+  FormationRecord record;
+  std::memcpy(&record, &flown, sizeof record);
+  EXPECT_NEAR(record.end_distance, 1.5, 0.02);  // the closest pair at the end: robots 1-2 and 1-3
+  EXPECT_LT(record.min_distance, 1.0 + 1e-9);   // they started 1 m apart
+  EXPECT_EQ(record.ticks, 1200);
+  // Robot 3's delay reaches its run: delay_3 8 (combination 8) against 0.
+  EXPECT_NE(std::memcmp(&flown, &scalarLoop<Law, double, false>(setup, grid.view)[8], sizeof flown), 0);
 }
 
 aurora_control::LinkParams lossyLink() {
@@ -174,37 +223,24 @@ TEST(ShapeConcept, AThreeRobotShapeFliesEveryBackend) {
   EXPECT_EQ(kAt.count(), kParamCount);
   const Run3<double> ideal = threeDrones(aurora_control::LinkParams());
   const ThreeGrid grid(std::nan(""));
-  const FormationSetup<double, ThreeAbreast> setup = setupOf<double>(ideal);
+  const Setup3<double, DroneLaw> setup = setupOf<double>(ideal);
   for (long i = 0; i < grid.view.size(); ++i) {  // each robot's delay and the gain reach its run
     const Combination c = grid.view.decode(i);
     const Run3<double> run = formationCombination(setup, c);
     for (int d = 0; d < 3; ++d) EXPECT_EQ(run.drone[d].delay, long(c.v[kAt.delay(d)])) << i;
     EXPECT_EQ(run.gains.k1[3], c.v[kAt.k1(3)]);
   }
-  // It flies: undelayed, the three end in their shape, the checks hold.
-  double end[9];
-  const SimResult flown = runner(setup, grid.view, 0, end);
-  const double want[9] = {0.5, 0.5, 1.5, 2.0, 0.5, 1.5, 0.5, 2.0, 1.5};
-  for (int i = 0; i < 9; ++i) EXPECT_NEAR(end[i], want[i], 0.02) << i;
-  EXPECT_TRUE(feasible(flown));
-  FormationRecord record;
-  std::memcpy(&record, &flown, sizeof record);
-  EXPECT_NEAR(record.end_distance, 1.5, 0.02);  // the closest pair at the end: robots 1-2 and 1-3
-  EXPECT_LT(record.min_distance, 1.0 + 1e-9);   // they started 1 m apart
-  EXPECT_EQ(record.ticks, 1200);
-  // Robot 3's delay reaches its run: delay_3 8 (combination 8) against 0.
-  EXPECT_NE(std::memcmp(&flown, &scalarLoop<double, false>(setup, grid.view)[8], sizeof flown), 0);
-
-  expectEveryBackendAgrees<double, false>(ideal, std::nan(""), 1e-9);
-  expectEveryBackendAgrees<float, false>(ideal, std::nan(""), 2e-3);
-  const Run3<double> lossy = threeDrones(lossyLink());
-  expectEveryBackendAgrees<double, true>(lossy, 0.3, 1e-9);
-  expectEveryBackendAgrees<float, true>(lossy, 0.3, 2e-3);
-
   // Robot 3's own uplink_loss_3 applies to robot 3 only.
-  const ThreeGrid own(0.3);
-  const Run3<double> run = formationCombination(setupOf<double>(lossy), own.view.decode(5));
-  EXPECT_EQ(run.drone[2].link.uplink.loss, 0.3);
-  EXPECT_EQ(run.drone[0].link.uplink.loss, 0.1);
-  EXPECT_EQ(run.drone[1].link.uplink.loss, 0.1);
+  const Run3<double> lossy = threeDrones(lossyLink());
+  const Run3<double> own = formationCombination(setupOf<double>(lossy), ThreeGrid(0.3).view.decode(5));
+  EXPECT_EQ(own.drone[2].link.uplink.loss, 0.3);
+  EXPECT_EQ(own.drone[0].link.uplink.loss, 0.1);
+  EXPECT_EQ(own.drone[1].link.uplink.loss, 0.1);
+
+  // Three AR.Drones, and three of the test-only vehicle (point_mass.h):
+  // the shape and the vehicle seams together.
+  expectItFlies<DroneLaw>(ideal);
+  expectEveryBackendAgrees<DroneLaw>(ideal, lossy);
+  expectItFlies<PointLaw>(threePoints(aurora_control::LinkParams()));
+  expectEveryBackendAgrees<PointLaw>(threePoints(aurora_control::LinkParams()), threePoints(lossyLink()));
 }

@@ -56,7 +56,7 @@ SimResult flightToolRecord(const std::string& file, long d1, long d2, double k1_
     end = aurora_control::closestPair<Line>(X);
     judge(o);
   };
-  const long ran = aurora_control::runFormation<LawType::kUnderactuated, double, Line, 64>(run, ticks, observe);
+  const long ran = aurora_control::runFormation<aurora_control::ArdroneLaw<LawType::kUnderactuated>, double, Line, 64>(run, ticks, observe);
   return formationResult(judge.metrics, ran, end);
 }
 
@@ -134,9 +134,9 @@ TEST(FormationSweep, TheKernelsPerThreadEntryIsTheScalarLoop) {
     for (unsigned b = 0; b < blocksFor(n, 4); ++b) {
       for (unsigned t = 0; t < 4; ++t) {
         if (setup.ideal_link) {
-          formationThread<LawType::kUnderactuated, double, aurora_control::kShortHistory, false>(setup, grid, 3, n, out.data(), b, 4, t);
+          formationThread<aurora_control::ArdroneLaw<LawType::kUnderactuated>, double, aurora_control::kShortHistory, false>(setup, grid, 3, n, out.data(), b, 4, t);
         } else {
-          formationThread<LawType::kUnderactuated, double, aurora_control::kShortHistory, true>(setup, grid, 3, n, out.data(), b, 4, t);
+          formationThread<aurora_control::ArdroneLaw<LawType::kUnderactuated>, double, aurora_control::kShortHistory, true>(setup, grid, 3, n, out.data(), b, 4, t);
         }
       }
     }
@@ -181,7 +181,7 @@ TEST(FormationSweep, EachDroneFliesItsOwnLinkValues) {
   }
   std::vector<SimResult> out(static_cast<size_t>(spec.size()));
   for (unsigned t = 0; t < 8; ++t) {
-    formationThread<LawType::kUnderactuated, double, aurora_control::kShortHistory, true>(setup, grid, 0, spec.size(),
+    formationThread<aurora_control::ArdroneLaw<LawType::kUnderactuated>, double, aurora_control::kShortHistory, true>(setup, grid, 0, spec.size(),
                                                                                          out.data(), 0, 8, t);
   }
   EXPECT_EQ(differing(scalar, out), 0);

@@ -56,7 +56,7 @@ TEST(FormationEquivalence, RosLoopEqualsTheFormationRunnerBitForBit) {
     Qd.emplace_back(o.layer.Qd(), o.layer.Qd() + 6);
   };
   withLaw(f.drones[0].controller.law, [&](auto law) {
-    runFormation<decltype(law)::value, double, Line, 64>(run, steps, observe);
+    runFormation<decltype(law), double, Line, 64>(run, steps, observe);
   });
   EXPECT_EQ(aurora_tests::bitMismatches(flown1, offline[0], steps), 0) << "drone 1";
   EXPECT_EQ(aurora_tests::bitMismatches(flown2, offline[1], steps), 0) << "drone 2";

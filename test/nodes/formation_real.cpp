@@ -89,7 +89,7 @@ std::vector<std::vector<double>> offlineRun(const Recording& r, const aurora_msg
     states.emplace_back(o.drones[d].model.X, o.drones[d].model.X + 3);
   };
   withLaw(f.drones[0].controller.law, [&](auto law) {
-    runFormation<decltype(law)::value, double, Line, 64>(run, ticks, observe);
+    runFormation<decltype(law), double, Line, 64>(run, ticks, observe);
   });
   return states;
 }

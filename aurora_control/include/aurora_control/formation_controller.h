@@ -77,7 +77,7 @@ class FormationController {
     last_k_ = k;
     Tick t;
     t.k = k;
-    t.layer_ran = k % run_.period_steps == 0;
+    t.layer_ran = layerDue(k, run_.period_steps);
     if (t.layer_ran) {
       double seen[Line::kVariables], Qd[Line::kVariables];
       for (int d = 0; d < kDrones; ++d) {

@@ -11,7 +11,7 @@ namespace aurora_control {
 // The formation's checks as the runner's observer: tick k's positions X_k
 // against the positions of the layer's held Qd (computed when the layer
 // runs); false (stop) at the first failed check with early_stop.
-template <typename T, class Shape = LineFormation<T>>
+template <typename T, class Shape = LineFormation<T>, class Data = ArdroneLawData>
 struct FormationJudge {
   static constexpr int kN = Shape::kVariables;
   FormationCriteria<T> criteria;
@@ -20,9 +20,9 @@ struct FormationJudge {
   FormationMetrics<T, bool, Shape> metrics;
   T Xd[kN];
 
-  AURORA_HD bool operator()(const FormationObservation<T, Shape>& o) {
+  AURORA_HD bool operator()(const FormationObservation<T, Shape, Data>& o) {
     T X[kN];
-    dronePositions<Shape>(o.X_before, X);
+    dronePositions<Shape, typename Data::Vehicle>(o.X_before, X);
     if (o.layer_ran) Shape::positions(o.layer.Qd(), Xd);
     metrics.add(criteria, X, Xd, taskTime(T(o.k), Ts), Ts);
     return !(early_stop && !metrics.feasible());

@@ -27,6 +27,11 @@ struct FormationGains {
   }
 };
 
+// Whether the layer runs at tick k: every `period_steps` robot steps from
+// tick 0 (T_F = period_steps Ts; docs/formation.md, "One tick"). The
+// runner, the SIMD engine and the formation node all ask this.
+AURORA_HD inline bool layerDue(long k, long period_steps) { return k % period_steps == 0; }
+
 template <typename T, class Shape>
 class FormationLayer {
  public:

@@ -17,31 +17,33 @@
 
 namespace aurora_control {
 
-// One drone of a formation: its model (plant and the law's nominal model),
-// its gains, its link (link.h; ideal by default) with its uplink delay
-// [samples], and where it starts [m].
-template <typename T>
+// One robot of a formation, flying a law of data `Data` (control_law.h:
+// its vehicle, gains and memory; the AR.Drone's laws by default): its model
+// (plant and the law's nominal model), its gains, its link (link.h; ideal
+// by default) with its uplink delay [samples], and where it starts [m].
+template <typename T, class Data = ArdroneLawData>
 struct FormationDrone {
-  aurora_sim::ArdroneParams<T> plant, model;
-  LawGains<T> gains;
+  typename Data::Vehicle::template Params<T> plant, model;
+  typename Data::template Gains<T> gains;
   long delay = 0;
   LinkParams link;
   T start[3];
 };
 
-// A formation's drones are AR.Drones flying one of its laws: their loops'
-// parameters, states and steps.
-template <typename T>
-using DroneParams = LoopParams<ArdroneLawData, T>;
-template <typename T, typename Mask>
-using DroneState = LoopState<ArdroneLawData, T, Mask>;
-template <typename T>
-using DroneStep = LoopStep<T, ArdroneLawData::Vehicle::kInputs>;
+// A formation's robots' loops: their parameters, states and steps.
+template <typename T, class Data = ArdroneLawData>
+using DroneParams = LoopParams<Data, T>;
+template <typename T, typename Mask, class Data = ArdroneLawData>
+using DroneState = LoopState<Data, T, Mask>;
+template <typename T, class Data = ArdroneLawData>
+using DroneStep = LoopStep<T, Data::Vehicle::kInputs>;
 
-template <typename T, class Shape>
+template <typename T, class Shape, class Data = ArdroneLawData>
 struct FormationRun {
+  using LawData = Data;
+  using Vehicle = typename Data::Vehicle;
   static constexpr int kDrones = Shape::kDrones, kN = Shape::kVariables;
-  FormationDrone<T> drone[kDrones];
+  FormationDrone<T, Data> drone[kDrones];
   FormationLaw law = FormationLaw::kPositionPriority;
   FormationGains<T, kN> gains = FormationGains<T, kN>::template of<Shape>();
   long period_steps = 6;  // the layer's period in drone steps (0.2 s at 1/30 s)
@@ -63,36 +65,37 @@ struct HeldReference {
 
 // What an observer sees after each tick k (0-based: the drones' states went
 // from X_k to X_(k+1)).
-template <typename T, class Shape>
+template <typename T, class Shape, class Data = ArdroneLawData>
 struct FormationObservation {
+  using Vehicle = typename Data::Vehicle;
   long k;
   bool layer_ran;                                  // the layer ran at the start of this tick
-  const T (*X_before)[aurora_sim::kStateSize];     // each drone's state at the tick's start (X_k)
-  const DroneState<T, bool>* drones;                // after the model step, per drone (X_(k+1))
-  const DroneStep<T>* steps;                        // each drone's reference and applied command
+  const T (*X_before)[Vehicle::kStates];           // each drone's state at the tick's start (X_k)
+  const DroneState<T, bool, Data>* drones;          // after the model step, per drone (X_(k+1))
+  const DroneStep<T, Data>* steps;                  // each drone's reference and applied command
   const FormationLayer<T, Shape>& layer;
 };
 
-// The drones' stacked positions (3 per drone, the shape's X) of their
-// states X (each kStateSize), and of their loops' models.
-template <class Shape, typename T, class States>
+// The robots' stacked positions (3 per robot, the shape's X) of their
+// states X (each Vehicle::kStates), and of their loops' models.
+template <class Shape, class Vehicle = aurora_sim::Ardrone2, typename T, class States>
 AURORA_HD inline void dronePositions(const States& X, T positions[Shape::kVariables]) {
   for (int d = 0; d < Shape::kDrones; ++d) {
-    for (int i = 0; i < 3; ++i) positions[3 * d + i] = X[d][aurora_sim::kX + i];
+    for (int i = 0; i < 3; ++i) positions[3 * d + i] = X[d][Vehicle::kPosition + i];
   }
 }
-template <class Shape, typename T, class Loops>
+template <class Shape, class Vehicle = aurora_sim::Ardrone2, typename T, class Loops>
 AURORA_HD inline void modelPositions(const Loops& state, T positions[Shape::kVariables]) {
   for (int d = 0; d < Shape::kDrones; ++d) {
-    for (int i = 0; i < 3; ++i) positions[3 * d + i] = state[d].model.X[aurora_sim::kX + i];
+    for (int i = 0; i < 3; ++i) positions[3 * d + i] = state[d].model.X[Vehicle::kPosition + i];
   }
 }
 
 // The layer started with the drones at X0 (3 positions per drone, m): the
 // offline runner's at the file's starts, real drones' where they hover
 // when the formation begins (docs/formation.md, "Real drones").
-template <typename T, class Shape>
-AURORA_HD inline void startLayerAt(const FormationRun<T, Shape>& run, const T X0[Shape::kVariables],
+template <typename T, class Shape, class Data>
+AURORA_HD inline void startLayerAt(const FormationRun<T, Shape, Data>& run, const T X0[Shape::kVariables],
                                    FormationLayer<T, Shape>& layer) {
   T Qd[Shape::kVariables];
   run.reference.at(T(0), Qd);
@@ -101,8 +104,8 @@ AURORA_HD inline void startLayerAt(const FormationRun<T, Shape>& run, const T X0
 
 // The layer before its first period: the references at the drones' starts,
 // the previous Qd = Qd(0) (formation_layer.h).
-template <typename T, class Shape>
-AURORA_HD inline void startLayer(const FormationRun<T, Shape>& run, FormationLayer<T, Shape>& layer) {
+template <typename T, class Shape, class Data>
+AURORA_HD inline void startLayer(const FormationRun<T, Shape, Data>& run, FormationLayer<T, Shape>& layer) {
   T X0[Shape::kVariables];
   for (int d = 0; d < Shape::kDrones; ++d) {
     for (int i = 0; i < 3; ++i) X0[3 * d + i] = run.drone[d].start[i];
@@ -121,14 +124,15 @@ AURORA_HD inline Reference<T> heldReference(const FormationLayer<T, Shape>& laye
 // Each drone's fixed parameters (its plant, model and gains; the study's
 // single-drone criteria, which a formation does not judge) and its state at
 // rest at its start; the layer started (startLayer).
-template <typename T, class Shape, typename Mask>
-AURORA_HD inline void startFormation(const FormationRun<T, Shape>& run, DroneParams<T>* params, DroneState<T, Mask>* state,
-                                     FormationLayer<T, Shape>& layer) {
+template <typename T, class Shape, class Data, typename Mask>
+AURORA_HD inline void startFormation(const FormationRun<T, Shape, Data>& run, DroneParams<T, Data>* params,
+                                     DroneState<T, Mask, Data>* state, FormationLayer<T, Shape>& layer) {
+  using Vehicle = typename Data::Vehicle;
   for (int d = 0; d < Shape::kDrones; ++d) {
-    params[d] = DroneParams<T>{run.drone[d].plant, run.drone[d].model, run.drone[d].gains,
-                              FeasibilityCriteria<T>::study()};
+    params[d] = DroneParams<T, Data>{run.drone[d].plant, run.drone[d].model, run.drone[d].gains,
+                                     FeasibilityCriteria<T>::study()};
     state[d].reset(run.drone[d].start);
-    for (int i = 0; i < 3; ++i) state[d].model.X[aurora_sim::kX + i] = run.drone[d].start[i];
+    for (int i = 0; i < 3; ++i) state[d].model.X[Vehicle::kPosition + i] = run.drone[d].start[i];
   }
   startLayer(run, layer);
 }
@@ -149,22 +153,22 @@ struct DroneDownlink {
 // due), then each drone's law towards its held reference, its command
 // through downlink(d, U) and one model step. Scalars or SIMD batches (one
 // formation per lane, every lane at the same tick).
-template <LawType Law, typename T, typename Mask, class Shape, class Downlink>
-AURORA_HD inline void formationTick(const DroneParams<T>* params, const ClampPolicy& clamp,
+template <class Law, typename T, typename Mask, class Shape, class Downlink>
+AURORA_HD inline void formationTick(const DroneParams<T, typename Law::Data>* params, const ClampPolicy& clamp,
                                     FormationLayer<T, Shape>& layer, const T* Qd, const T& k,
-                                    const T (*xc)[aurora_sim::kStateSize], DroneState<T, Mask>* state,
-                                    DroneStep<T>* step, Downlink&& downlink) {
+                                    const T (*xc)[Law::Vehicle::kStates], DroneState<T, Mask, typename Law::Data>* state,
+                                    DroneStep<T, typename Law::Data>* step, Downlink&& downlink) {
   constexpr int D = Shape::kDrones;
   if (Qd) {
     T seen[Shape::kVariables];
-    dronePositions<Shape>(xc, seen);
+    dronePositions<Shape, typename Law::Vehicle>(xc, seen);
     layer.update(seen, Qd);
   }
   for (int d = 0; d < D; ++d) {
     HeldReference<T> held;
     held.ref = heldReference(layer, d);
     DroneDownlink<Downlink> link{downlink, d};
-    step[d] = actOn<ArdroneLaw<Law>>(params[d], held, clamp, k, xc[d], link, state[d]);
+    step[d] = actOn<Law>(params[d], held, clamp, k, xc[d], link, state[d]);
   }
 }
 
@@ -182,29 +186,32 @@ AURORA_HD inline auto observeTick(Observer& observe, const Observation& o)
   return observe(o);
 }
 
-// `iterations` ticks of law `Law` on every drone, drone d over links[d]
-// (IdealLink or ModelLink), histories of `Capacity` samples (every drone's
-// history below it, checked by the caller). Returns the ticks run.
-template <LawType Law, typename T, class Shape, int Capacity, typename Observer, typename Link>
-AURORA_HD long runFormationOver(const FormationRun<T, Shape>& run, long iterations, Observer& observe, Link* links) {
-  constexpr int D = Shape::kDrones, N = Shape::kVariables;
+// `iterations` ticks of law `Law` (control_law.h: a law type, all robots
+// its vehicle) on every robot, robot d over links[d] (IdealLink or
+// ModelLink), histories of `Capacity` samples (every robot's history below
+// it, checked by the caller). Returns the ticks run.
+template <class Law, typename T, class Shape, int Capacity, typename Observer, typename Link>
+AURORA_HD long runFormationOver(const FormationRun<T, Shape, typename Law::Data>& run, long iterations,
+                                Observer& observe, Link* links) {
+  using Data = typename Law::Data;
+  constexpr int D = Shape::kDrones, N = Shape::kVariables, S = Law::Vehicle::kStates;
   FormationLayer<T, Shape> layer(run.law, run.gains, T(run.period_steps) * run.drone[0].plant.Ts);
-  DroneParams<T> params[D];
-  DroneState<T, bool> state[D];
-  StateHistory<ArdroneLaw<Law>, T, Capacity> history[D];
+  DroneParams<T, Data> params[D];
+  DroneState<T, bool, Data> state[D];
+  StateHistory<Law, T, Capacity> history[D];
   startFormation(run, params, state, layer);
   for (long k = 0; k < iterations; ++k) {
-    T xc[D][aurora_sim::kStateSize], before[D][aurora_sim::kStateSize], Qd[N];
+    T xc[D][S], before[D][S], Qd[N];
     for (int d = 0; d < D; ++d) {
-      for (int i = 0; i < aurora_sim::kStateSize; ++i) before[d][i] = state[d].model.X[i];
+      for (int i = 0; i < S; ++i) before[d][i] = state[d].model.X[i];
       receiveState(k, history[d], links[d], state[d], xc[d]);
     }
-    const bool due = k % run.period_steps == 0;
+    const bool due = layerDue(k, run.period_steps);
     if (due) run.reference.at(taskTime(T(k), run.drone[0].plant.Ts), Qd);
-    DroneStep<T> step[D];
+    DroneStep<T, Data> step[D];
     formationTick<Law>(params, run.clamp, layer, due ? Qd : nullptr, T(k), xc, state, step,
-                       [&](int d, T U[4]) { links[d].downlink(k, U, U); });
-    if (!observeTick(observe, FormationObservation<T, Shape>{k, due, before, state, step, layer})) return k + 1;
+                       [&](int d, T U[Law::Vehicle::kInputs]) { links[d].downlink(k, U, U); });
+    if (!observeTick(observe, FormationObservation<T, Shape, Data>{k, due, before, state, step, layer})) return k + 1;
   }
   return iterations;
 }
@@ -212,8 +219,8 @@ AURORA_HD long runFormationOver(const FormationRun<T, Shape>& run, long iteratio
 // Every drone over its own link: today's delay rule when every link is
 // ideal, else each drone's link model, its draws keyed by the drone's index
 // (two drones over one link file lose different packets).
-template <LawType Law, typename T, class Shape, int Capacity, typename Observer>
-long runFormation(const FormationRun<T, Shape>& run, long iterations, Observer& observe) {
+template <class Law, typename T, class Shape, int Capacity, typename Observer>
+long runFormation(const FormationRun<T, Shape, typename Law::Data>& run, long iterations, Observer& observe) {
   constexpr int D = Shape::kDrones;
   bool ideal = true;
   for (int d = 0; d < D; ++d) ideal = ideal && run.drone[d].link.ideal();
@@ -222,7 +229,7 @@ long runFormation(const FormationRun<T, Shape>& run, long iterations, Observer& 
     for (int d = 0; d < D; ++d) links[d] = IdealLink{run.drone[d].delay};
     return runFormationOver<Law, T, Shape, Capacity>(run, iterations, observe, links);
   }
-  std::vector<ModelLink<Capacity, T>> links;  // on the heap: Capacity-sized rings
+  std::vector<ModelLink<Capacity, T, Law::Vehicle::kInputs>> links;  // on the heap: Capacity-sized rings
   links.reserve(D);
   for (int d = 0; d < D; ++d) {
     links.emplace_back(run.drone[d].link, run.drone[d].delay, static_cast<uint64_t>(d), double(run.drone[d].plant.Ts));
@@ -236,8 +243,8 @@ inline long formationTicks(double duration, double Ts) { return std::lround(dura
 
 // The history drone d's link needs (its uplink delay plus jitter, or its
 // command path's).
-template <typename T, class Shape>
-long formationHistory(const FormationRun<T, Shape>& run) {
+template <typename T, class Shape, class Data>
+long formationHistory(const FormationRun<T, Shape, Data>& run) {
   long longest = 0;
   for (int d = 0; d < Shape::kDrones; ++d) {
     const long h = run.drone[d].link.historyNeeded(run.drone[d].delay);

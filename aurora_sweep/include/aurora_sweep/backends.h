@@ -82,8 +82,8 @@ void runEachCombination(const SweepSpec& spec, std::vector<SimResult>& out, Prog
     if (spec.formation()) {
       const FormationSetup<T> setup = makeFormationSetup<T>(spec);
       return loop(spec.rangeSize(), [&](long i) {
-        out[i] = setup.ideal_link ? simulateFormation<kLaw, T, kCapacity, false>(setup, grid, first + i)
-                                  : simulateFormation<kLaw, T, kCapacity, true>(setup, grid, first + i);
+        out[i] = setup.ideal_link ? simulateFormation<Law, T, kCapacity, false>(setup, grid, first + i)
+                                  : simulateFormation<Law, T, kCapacity, true>(setup, grid, first + i);
         progress.fetch_add(1, std::memory_order_relaxed);
       });
     }

@@ -19,41 +19,53 @@
 
 namespace aurora_sweep {
 
-// A shape's run in precision T.
-template <typename T, template <typename> class Shape = aurora_control::LineFormation>
-using ShapeRun = aurora_control::FormationRun<T, Shape<T>>;
+// A shape's run in precision T, its robots flying laws of data `Data`
+// (the AR.Drone's by default).
+template <typename T, template <typename> class Shape = aurora_control::LineFormation,
+          class Data = aurora_control::ArdroneLawData>
+using ShapeRun = aurora_control::FormationRun<T, Shape<T>, Data>;
 template <typename T>
 using LineRun = ShapeRun<T>;
 
 // Everything a formation of the sweep needs besides its combination.
-template <typename T, template <typename> class Shape = aurora_control::LineFormation>
+template <typename T, template <typename> class Shape = aurora_control::LineFormation,
+          class Data = aurora_control::ArdroneLawData>
 struct FormationSetup {
-  ShapeRun<T, Shape> run;  // the formation file's, in T
+  using LawData = Data;
+  ShapeRun<T, Shape, Data> run;  // the formation file's, in T
   aurora_control::FormationCriteria<T> criteria;
   long iterations;  // ticks (2700 for 90 s)
   bool early_stop;  // stop a run at its first failed check
   bool ideal_link;  // every drone over today's delay rule (SweepSpec::linkIdeal)
 };
 
-// Drone `from`'s fixed values in precision T: its models, gains, delay,
-// link and start.
+// The AR.Drone laws' gains in precision T (another law's data gives its
+// own castGains, found by argument-dependent lookup).
 template <typename T, typename U>
-void castFormationDrone(const aurora_control::FormationDrone<U>& from, aurora_control::FormationDrone<T>& to) {
+void castGains(const aurora_control::LawGains<U>& from, aurora_control::LawGains<T>& to) {
+  to.pd.kp = T(from.pd.kp), to.pd.kd = T(from.pd.kd);
+  for (int i = 0; i < aurora_control::kAxes; ++i) {
+    to.underactuated.k1[i] = T(from.underactuated.k1[i]);
+    to.underactuated.k2[i] = T(from.underactuated.k2[i]);
+  }
+}
+
+// Robot `from`'s fixed values in precision T: its models, gains, delay,
+// link and start.
+template <typename T, typename U, class Data>
+void castFormationDrone(const aurora_control::FormationDrone<U, Data>& from, aurora_control::FormationDrone<T, Data>& to) {
   to.plant = from.plant.template cast<T>();
   to.model = from.model.template cast<T>();
-  to.gains.pd.kp = T(from.gains.pd.kp), to.gains.pd.kd = T(from.gains.pd.kd);
-  for (int i = 0; i < aurora_control::kAxes; ++i) {
-    to.gains.underactuated.k1[i] = T(from.gains.underactuated.k1[i]);
-    to.gains.underactuated.k2[i] = T(from.gains.underactuated.k2[i]);
-  }
+  castGains(from.gains, to.gains);
   to.delay = from.delay;
   to.link = from.link;
   for (int i = 0; i < 3; ++i) to.start[i] = T(from.start[i]);
 }
 
 // The formation's own values (law, gains, period, reference, clamp) in T.
-template <typename T, class ToShape, typename U, class FromShape>
-void castFormationLayer(const aurora_control::FormationRun<U, FromShape>& r, aurora_control::FormationRun<T, ToShape>& run) {
+template <typename T, class ToShape, typename U, class FromShape, class Data>
+void castFormationLayer(const aurora_control::FormationRun<U, FromShape, Data>& r,
+                        aurora_control::FormationRun<T, ToShape, Data>& run) {
   constexpr int N = FromShape::kVariables;
   run.law = r.law;
   for (int i = 0; i < N; ++i) run.gains.k1[i] = T(r.gains.k1[i]), run.gains.k2[i] = T(r.gains.k2[i]);
@@ -66,9 +78,9 @@ void castFormationLayer(const aurora_control::FormationRun<U, FromShape>& r, aur
 }
 
 // The file's run in precision T (its values are loaded in double).
-template <typename T, template <typename> class Shape>
-ShapeRun<T, Shape> castFormationRun(const ShapeRun<double, Shape>& r) {
-  ShapeRun<T, Shape> run;
+template <typename T, template <typename> class Shape, class Data>
+ShapeRun<T, Shape, Data> castFormationRun(const ShapeRun<double, Shape, Data>& r) {
+  ShapeRun<T, Shape, Data> run;
   for (int d = 0; d < Shape<T>::kDrones; ++d) castFormationDrone(r.drone[d], run.drone[d]);
   castFormationLayer(r, run);
   return run;
@@ -78,10 +90,11 @@ ShapeRun<T, Shape> castFormationRun(const ShapeRun<double, Shape>& r) {
 // each drone's link with the link values the sweep gives, the drones'
 // common ones (combinationLink) then the drone's own (uplink_loss_2); a
 // value it does not give keeps the drone's file's.
-template <typename T, template <typename> class Shape>
-AURORA_HD inline ShapeRun<T, Shape> formationCombination(const FormationSetup<T, Shape>& s, const Combination& c) {
+template <typename T, template <typename> class Shape, class Data>
+AURORA_HD inline ShapeRun<T, Shape, Data> formationCombination(const FormationSetup<T, Shape, Data>& s,
+                                                               const Combination& c) {
   constexpr ShapeLayout at = shapeLayout<Shape<T>>();
-  ShapeRun<T, Shape> run = s.run;
+  ShapeRun<T, Shape, Data> run = s.run;
   for (int d = 0; d < at.robots; ++d) {
     run.drone[d].delay = static_cast<long>(c.v[at.delay(d)]);
     run.drone[d].link = combinationLink(run.drone[d].link, run.drone[d].delay, c);
@@ -142,21 +155,21 @@ AURORA_HD inline SimResult formationResult(const aurora_control::FormationMetric
 
 // The closest two drones' distance at the end of a run (positions after
 // its last tick).
-template <typename T, class Shape, class Observer>
+template <typename T, class Shape, class Observer, class Data = aurora_control::ArdroneLawData>
 struct EndDistance {
   Observer& judge;
   T distance = T(0);
-  AURORA_HD bool operator()(const aurora_control::FormationObservation<T, Shape>& o) {
+  AURORA_HD bool operator()(const aurora_control::FormationObservation<T, Shape, Data>& o) {
     T X[Shape::kVariables];
-    aurora_control::modelPositions<Shape>(o.drones, X);
+    aurora_control::modelPositions<Shape, typename Data::Vehicle>(o.drones, X);
     distance = aurora_control::closestPair<Shape>(X);
     return judge(o);
   }
 };
 
 // Over today's delay rule on every drone.
-template <aurora_control::LawType Law, typename T, int Capacity, class Shape, class Observer>
-AURORA_HD inline long flyFormation(const aurora_control::FormationRun<T, Shape>& run, const Combination&,
+template <class Law, typename T, int Capacity, class Shape, class Observer>
+AURORA_HD inline long flyFormation(const aurora_control::FormationRun<T, Shape, typename Law::Data>& run, const Combination&,
                                    long iterations, Observer& observe, std::false_type /*linked*/) {
   aurora_control::IdealLink links[Shape::kDrones];
   for (int d = 0; d < Shape::kDrones; ++d) links[d] = aurora_control::IdealLink{run.drone[d].delay};
@@ -164,32 +177,35 @@ AURORA_HD inline long flyFormation(const aurora_control::FormationRun<T, Shape>&
 }
 
 // Over each drone's link model, built in this frame (no allocation).
-template <aurora_control::LawType Law, typename T, int Capacity, class Shape, class Observer, size_t... D>
-AURORA_HD inline long flyFormationOverModels(const aurora_control::FormationRun<T, Shape>& run, const Combination& c,
-                                             long iterations, Observer& observe, std::index_sequence<D...>) {
-  using Link = aurora_control::ModelLink<Capacity, T>;
+template <class Law, typename T, int Capacity, class Shape, class Observer, size_t... D>
+AURORA_HD inline long flyFormationOverModels(const aurora_control::FormationRun<T, Shape, typename Law::Data>& run,
+                                             const Combination& c, long iterations, Observer& observe,
+                                             std::index_sequence<D...>) {
+  using Link = aurora_control::ModelLink<Capacity, T, Law::Vehicle::kInputs>;
   Link links[Shape::kDrones] = {Link(run.drone[D].link, run.drone[D].delay, formationLinkKey<Shape>(c, int(D)),
                                      double(run.drone[D].plant.Ts))...};
   return aurora_control::runFormationOver<Law, T, Shape, Capacity>(run, iterations, observe, links);
 }
-template <aurora_control::LawType Law, typename T, int Capacity, class Shape, class Observer>
-AURORA_HD inline long flyFormation(const aurora_control::FormationRun<T, Shape>& run, const Combination& c,
+template <class Law, typename T, int Capacity, class Shape, class Observer>
+AURORA_HD inline long flyFormation(const aurora_control::FormationRun<T, Shape, typename Law::Data>& run, const Combination& c,
                                    long iterations, Observer& observe, std::true_type /*linked*/) {
   return flyFormationOverModels<Law, T, Capacity>(run, c, iterations, observe,
                                                   std::make_index_sequence<Shape::kDrones>());
 }
 
-// Formation `index` of the sweep (over its drones' links when `Linked`):
-// the CUDA thread's and the scalar loop's body.
-template <aurora_control::LawType Law, typename T, int Capacity, bool Linked = false,
-          template <typename> class Shape>
-AURORA_HD inline SimResult simulateFormation(const FormationSetup<T, Shape>& setup, const GridView& grid, long index) {
+// Formation `index` of the sweep (over its drones' links when `Linked`),
+// every robot flying law `Law` (a law type): the CUDA thread's and the
+// scalar loop's body.
+template <class Law, typename T, int Capacity, bool Linked = false, template <typename> class Shape>
+AURORA_HD inline SimResult simulateFormation(const FormationSetup<T, Shape, typename Law::Data>& setup,
+                                             const GridView& grid, long index) {
+  using Data = typename Law::Data;
   const Combination c = grid.decode(index);
-  const ShapeRun<T, Shape> run = formationCombination(setup, c);
-  using Judge = aurora_control::FormationJudge<T, Shape<T>>;
+  const ShapeRun<T, Shape, Data> run = formationCombination(setup, c);
+  using Judge = aurora_control::FormationJudge<T, Shape<T>, Data>;
   Judge judge{setup.criteria, setup.early_stop, run.drone[0].plant.Ts, {}, {}};
   judge.metrics.reset();
-  EndDistance<T, Shape<T>, Judge> observe{judge};
+  EndDistance<T, Shape<T>, Judge, Data> observe{judge};
   const long ticks = flyFormation<Law, T, Capacity>(run, c, setup.iterations, observe,
                                                     std::integral_constant<bool, Linked>());
   return formationResult(judge.metrics, ticks, observe.distance);

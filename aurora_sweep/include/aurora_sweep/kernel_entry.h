@@ -25,9 +25,8 @@ AURORA_HD inline void sweepThread(const SimSetup<typename Law::Vehicle, T>& setu
 }
 
 // The same for a formation sweep (of any shape): one formation per thread.
-template <aurora_control::LawType Law, typename T, int Capacity, bool Linked = false,
-          template <typename> class Shape>
-AURORA_HD inline void formationThread(const FormationSetup<T, Shape>& setup, const GridView& grid, long first, long n,
+template <class Law, typename T, int Capacity, bool Linked = false, template <typename> class Shape>
+AURORA_HD inline void formationThread(const FormationSetup<T, Shape, typename Law::Data>& setup, const GridView& grid, long first, long n,
                                       SimResult* out, unsigned block, unsigned block_dim, unsigned thread) {
   const long i = threadIndex(block, block_dim, thread);
   if (i < n) out[i] = simulateFormation<Law, T, Capacity, Linked>(setup, grid, first + i);
