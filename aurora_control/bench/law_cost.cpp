@@ -8,10 +8,10 @@
 #include <cstdio>
 #include <vector>
 
-#include "aurora_control/flight_runner.h"
-#include "aurora_control/pd_controller.h"
-#include "aurora_control/closed_loop.h"
-#include "aurora_control/underactuated_law.h"
+#include "aurora_control/loop/flight_runner.h"
+#include "aurora_control/law/pd_controller.h"
+#include "aurora_control/loop/closed_loop.h"
+#include "aurora_control/law/underactuated_law.h"
 
 using namespace aurora_control;
 

@@ -1,4 +1,4 @@
-"""The parameter table's rows (include/aurora_control/parameter_table.h,
+"""The parameter table's rows (include/aurora_control/params/parameter_table.h,
 kParameterTable), read from the header itself: Controller.cfg generates the
 live settings' limits from them, so the table stays the one source (as PX4
 generates its parameter metadata from one file). A row the reader cannot
@@ -6,7 +6,7 @@ parse stops the build with the row's text."""
 import os
 import re
 
-HEADER = os.path.join(os.path.dirname(os.path.abspath(__file__)), os.pardir, "include", "aurora_control",
+HEADER = os.path.join(os.path.dirname(os.path.abspath(__file__)), os.pardir, "include", "aurora_control", "params",
                       "parameter_table.h")
 TOKEN = re.compile(r'"(?:[^"\\]|\\.)*"|[{},]|[^\s{},"]+')
 

@@ -15,11 +15,11 @@
 #include <memory>
 #include <string>
 
-#include "aurora_control/delayed_controller.h"
-#include "aurora_control/flight_supervisor.h"
-#include "aurora_control/joystick.h"
-#include "aurora_control/limits.h"
-#include "aurora_control/task.h"
+#include "aurora_control/loop/delayed_controller.h"
+#include "aurora_control/robot/flight_supervisor.h"
+#include "aurora_control/robot/joystick.h"
+#include "aurora_control/params/limits.h"
+#include "aurora_control/task/task.h"
 #include "driver_command_channel.h"
 
 namespace aurora_control {

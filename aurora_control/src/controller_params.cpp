@@ -4,9 +4,9 @@
 #include <cmath>
 #include <cstdio>
 
-#include "aurora_control/law_yaml.h"
-#include "aurora_control/link_yaml.h"
-#include "aurora_control/task_yaml.h"
+#include "aurora_control/law/law_yaml.h"
+#include "aurora_control/link/link_yaml.h"
+#include "aurora_control/task/task_yaml.h"
 #include "param_tree.h"
 #include "aurora_sim/ros/params.h"
 

@@ -7,11 +7,11 @@
 
 #include <string>
 
-#include "aurora_control/parameter_table.h"
-#include "aurora_control/flight_supervisor.h"
-#include "aurora_control/joystick.h"
-#include "aurora_control/delayed_controller.h"
-#include "aurora_control/task.h"
+#include "aurora_control/params/parameter_table.h"
+#include "aurora_control/robot/flight_supervisor.h"
+#include "aurora_control/robot/joystick.h"
+#include "aurora_control/loop/delayed_controller.h"
+#include "aurora_control/task/task.h"
 #include "aurora_sim/ros/params.h"
 
 namespace aurora_control {

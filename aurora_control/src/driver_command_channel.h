@@ -9,8 +9,8 @@
 
 #include <string>
 
-#include "aurora_control/driver_command.h"
-#include "aurora_control/flight_supervisor.h"
+#include "aurora_control/robot/driver_command.h"
+#include "aurora_control/robot/flight_supervisor.h"
 
 namespace aurora_control {
 

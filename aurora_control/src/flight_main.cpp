@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "aurora_control/flight_setup.h"
+#include "aurora_control/loop/flight_setup.h"
 #include "aurora_sim/ros/config_dir.h"
 #include "formation_flight.h"
 #include "option_values.h"

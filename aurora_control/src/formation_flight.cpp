@@ -6,8 +6,8 @@
 #include <memory>
 #include <stdexcept>
 
-#include "aurora_control/formation_judge.h"
-#include "aurora_control/formation_yaml.h"
+#include "aurora_control/formation/formation_judge.h"
+#include "aurora_control/formation/formation_yaml.h"
 #include "aurora_sim/vehicle_yaml.h"
 
 namespace aurora_control {

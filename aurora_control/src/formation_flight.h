@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "aurora_control/formation_judge.h"
-#include "aurora_control/formation_yaml.h"
+#include "aurora_control/formation/formation_judge.h"
+#include "aurora_control/formation/formation_yaml.h"
 
 namespace aurora_control {
 

@@ -7,7 +7,7 @@
 
 #include <visualization_msgs/MarkerArray.h>
 
-#include "aurora_control/formation_layer.h"
+#include "aurora_control/formation/formation_layer.h"
 
 namespace aurora_control {
 

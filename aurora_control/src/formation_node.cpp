@@ -2,7 +2,7 @@
 
 #include <geometry_msgs/Twist.h>
 
-#include "aurora_control/formation_yaml.h"
+#include "aurora_control/formation/formation_yaml.h"
 #include "formation_markers.h"
 #include "param_tree.h"
 #include "aurora_control/ros/control_msg.h"

@@ -18,9 +18,9 @@
 #include <string>
 #include <vector>
 
-#include "aurora_control/formation_controller.h"
-#include "aurora_control/formation_supervisor.h"
-#include "aurora_control/limits.h"
+#include "aurora_control/formation/formation_controller.h"
+#include "aurora_control/formation/formation_supervisor.h"
+#include "aurora_control/params/limits.h"
 #include "driver_command_channel.h"
 
 namespace aurora_control {

@@ -10,7 +10,7 @@
 
 #include <string>
 
-#include "aurora_control/mocap_estimator.h"
+#include "aurora_control/robot/mocap_estimator.h"
 
 namespace aurora_control {
 

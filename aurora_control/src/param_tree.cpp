@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <set>
 
-#include "aurora_control/yaml_reader.h"
+#include "aurora_control/params/yaml_reader.h"
 #include "aurora_sim/ros/params.h"
 #include "aurora_sim/yaml_file.h"
 

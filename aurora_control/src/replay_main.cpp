@@ -24,12 +24,12 @@
 #include <string>
 #include <vector>
 
-#include "aurora_control/delayed_controller.h"
+#include "aurora_control/loop/delayed_controller.h"
 #include "option_values.h"
-#include "aurora_control/law_yaml.h"
-#include "aurora_control/link_yaml.h"
-#include "aurora_control/limits.h"
-#include "aurora_control/tracking.h"
+#include "aurora_control/law/law_yaml.h"
+#include "aurora_control/link/link_yaml.h"
+#include "aurora_control/params/limits.h"
+#include "aurora_control/task/tracking.h"
 #include "aurora_sim/ros/config_dir.h"
 #include "aurora_sim/vehicle_yaml.h"
 #include "aurora_sim/ros/conversions.h"

@@ -6,7 +6,7 @@
 #include <nav_msgs/Path.h>
 #include <visualization_msgs/MarkerArray.h>
 
-#include "aurora_control/task.h"
+#include "aurora_control/task/task.h"
 
 namespace aurora_control {
 

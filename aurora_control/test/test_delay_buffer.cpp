@@ -1,7 +1,7 @@
 // DelayBuffer semantics (docs/delay-and-study.md, "Delayed feedback").
 #include <gtest/gtest.h>
 
-#include "aurora_control/delay_buffer.h"
+#include "aurora_control/loop/delay_buffer.h"
 
 using aurora_control::DelayBuffer;
 using aurora_control::delayedHistoryIndex;

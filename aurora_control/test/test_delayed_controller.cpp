@@ -2,7 +2,7 @@
 // and metrics once per state step.
 #include <gtest/gtest.h>
 
-#include "aurora_control/delayed_controller.h"
+#include "aurora_control/loop/delayed_controller.h"
 
 using namespace aurora_control;
 

@@ -2,7 +2,7 @@
 // driver listens, re-sent until shown, one attempt for reset, timeout.
 #include <gtest/gtest.h>
 
-#include "aurora_control/driver_command.h"
+#include "aurora_control/robot/driver_command.h"
 
 using namespace aurora_control;
 

@@ -3,8 +3,8 @@
 
 #include <limits>
 
-#include "aurora_control/flight_supervisor.h"
-#include "aurora_control/formation_supervisor.h"
+#include "aurora_control/robot/flight_supervisor.h"
+#include "aurora_control/formation/formation_supervisor.h"
 
 using namespace aurora_control;
 

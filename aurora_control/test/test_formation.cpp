@@ -13,10 +13,10 @@
 #include <fstream>
 #include <iterator>
 
-#include "aurora_control/formation_controller.h"
-#include "aurora_control/formation_runner.h"
-#include "aurora_control/formation_yaml.h"
-#include "aurora_control/line_formation.h"
+#include "aurora_control/formation/formation_controller.h"
+#include "aurora_control/formation/formation_runner.h"
+#include "aurora_control/formation/formation_yaml.h"
+#include "aurora_control/formation/line_formation.h"
 #include "aurora_sim/vehicle_yaml.h"
 
 using namespace aurora_control;

@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "aurora_control/joystick.h"
+#include "aurora_control/robot/joystick.h"
 
 using namespace aurora_control;
 

@@ -8,10 +8,10 @@
 #include <string>
 #include <vector>
 
-#include "aurora_control/delayed_controller.h"
-#include "aurora_control/flight_runner.h"
-#include "aurora_control/link_yaml.h"
-#include "aurora_control/loop_link.h"
+#include "aurora_control/loop/delayed_controller.h"
+#include "aurora_control/loop/flight_runner.h"
+#include "aurora_control/link/link_yaml.h"
+#include "aurora_control/link/loop_link.h"
 #include "aurora_sim/ardrone_params.h"
 
 using namespace aurora_control;

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <limits>
 
-#include "aurora_control/live_settings.h"
-#include "aurora_control/tracking.h"
+#include "aurora_control/params/live_settings.h"
+#include "aurora_control/task/tracking.h"
 
 using namespace aurora_control;
 

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <random>
 
-#include "aurora_control/mocap_estimator.h"
+#include "aurora_control/robot/mocap_estimator.h"
 
 using aurora_control::MocapEstimator;
 

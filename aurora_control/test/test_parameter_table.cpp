@@ -7,9 +7,9 @@
 #include <sstream>
 #include <string>
 
-#include "aurora_control/limits.h"
-#include "aurora_control/parameter_table.h"
-#include "aurora_control/underactuated_law.h"
+#include "aurora_control/params/limits.h"
+#include "aurora_control/params/parameter_table.h"
+#include "aurora_control/law/underactuated_law.h"
 
 using namespace aurora_control;
 

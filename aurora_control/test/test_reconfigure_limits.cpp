@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "aurora_control/law_yaml.h"
-#include "aurora_control/limits.h"
-#include "aurora_control/parameter_table.h"
+#include "aurora_control/law/law_yaml.h"
+#include "aurora_control/params/limits.h"
+#include "aurora_control/params/parameter_table.h"
 
 using namespace aurora_control;
 

@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "aurora_control/positioning_runner.h"
+#include "aurora_control/loop/positioning_runner.h"
 
 using namespace aurora_control;
 

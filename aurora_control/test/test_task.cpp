@@ -1,8 +1,8 @@
 // Waypoint task schedule and validation.
 #include <gtest/gtest.h>
 
-#include "aurora_control/task.h"
-#include "aurora_control/task_check.h"
+#include "aurora_control/task/task.h"
+#include "aurora_control/task/task_check.h"
 
 using aurora_control::checkTask;
 using aurora_control::WaypointTask;

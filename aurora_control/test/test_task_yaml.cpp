@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "aurora_control/task_yaml.h"
+#include "aurora_control/task/task_yaml.h"
 
 using namespace aurora_control;
 

@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-#include "aurora_control/trajectory_task.h"
+#include "aurora_control/task/trajectory_task.h"
 
 using namespace aurora_control;
 

@@ -2,7 +2,7 @@
 
 #include <chrono>
 
-#include "aurora_control/closed_loop.h"
+#include "aurora_control/loop/closed_loop.h"
 #include "aurora_sweep/cuda_backend.h"
 
 namespace aurora_sweep {

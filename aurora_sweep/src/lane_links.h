@@ -1,5 +1,5 @@
 // The SIMD engine's link models, one per lane, as structs of arrays: the
-// rules of the scalar channels (aurora_control/link.h, docs/links.md: one
+// rules of the scalar channels (aurora_control/link/link.h, docs/links.md: one
 // Philox block per step, the loss chain and the uniform jitter on the draws'
 // words, the receive rule, the drone's hover on a stale command) written as
 // loops over the lanes without branches, so that the compiler turns them
@@ -15,7 +15,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "aurora_control/link.h"
+#include "aurora_control/link/link.h"
 #include "gather_lanes.h"
 
 namespace aurora_sweep {

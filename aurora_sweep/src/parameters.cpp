@@ -2,11 +2,11 @@
 
 #include <limits>
 
-#include "aurora_control/formation_layer.h"
-#include "aurora_control/limits.h"
-#include "aurora_control/link.h"
-#include "aurora_control/parameter_table.h"
-#include "aurora_control/underactuated_law.h"
+#include "aurora_control/formation/formation_layer.h"
+#include "aurora_control/params/limits.h"
+#include "aurora_control/link/link.h"
+#include "aurora_control/params/parameter_table.h"
+#include "aurora_control/law/underactuated_law.h"
 
 namespace aurora_sweep {
 

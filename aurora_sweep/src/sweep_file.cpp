@@ -9,9 +9,9 @@
 #include <iterator>
 #include <map>
 
-#include "aurora_control/link_yaml.h"
-#include "aurora_control/positioning_runner.h"
-#include "aurora_control/task_yaml.h"
+#include "aurora_control/link/link_yaml.h"
+#include "aurora_control/loop/positioning_runner.h"
+#include "aurora_control/task/task_yaml.h"
 #include "aurora_sweep/design.h"
 #include "sweep_file_formation.h"
 #include "aurora_sim/vehicle_yaml.h"
@@ -147,7 +147,7 @@ void readPoints(const Reader& r, const std::string& path, const std::string& key
 }
 
 // sweep.task: a task file's name (e.g. tasks/positioning.yaml) or the task
-// inline, in the one task schema (aurora_control/task_yaml.h).
+// inline, in the one task schema (aurora_control/task/task_yaml.h).
 void readSweepTask(const Reader& r, const YAML::Node& t, const std::string& sweep_dir,
                    const std::string& config_dir, SweepSpec& spec) {
   aurora_control::Task<double> task;

@@ -2,7 +2,7 @@
 
 #include <limits>
 
-#include "aurora_control/formation_yaml.h"
+#include "aurora_control/formation/formation_yaml.h"
 
 namespace aurora_sweep {
 

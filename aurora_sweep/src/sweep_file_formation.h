@@ -7,7 +7,7 @@
 
 #include <string>
 
-#include "aurora_control/yaml_reader.h"
+#include "aurora_control/params/yaml_reader.h"
 #include "aurora_sweep/sweep_spec.h"
 
 namespace aurora_sweep {

@@ -5,7 +5,7 @@
 // kernel's per-thread entry.
 #pragma once
 
-#include "aurora_control/closed_loop.h"
+#include "aurora_control/loop/closed_loop.h"
 #include "aurora_sim/host_device.h"
 #include "aurora_sim/scalar_math.h"
 #include "aurora_sweep/simulation.h"

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "aurora_control/flight_runner.h"
+#include "aurora_control/loop/flight_runner.h"
 #include "aurora_sweep/backends.h"
 #include "aurora_sweep/sweep_file.h"
 #include "sweep_test_support.h"

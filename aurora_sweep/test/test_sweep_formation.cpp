@@ -8,8 +8,8 @@
 #include <algorithm>
 #include <cstring>
 
-#include "aurora_control/formation_judge.h"
-#include "aurora_control/formation_yaml.h"
+#include "aurora_control/formation/formation_judge.h"
+#include "aurora_control/formation/formation_yaml.h"
 #include "aurora_sim/vehicle_yaml.h"
 #include "aurora_sweep/chunk_store.h"
 #include "aurora_sweep/kernel_entry.h"

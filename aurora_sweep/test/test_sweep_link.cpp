@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "aurora_sweep/chunk_store.h"
-#include "aurora_control/link_yaml.h"
+#include "aurora_control/link/link_yaml.h"
 #include "aurora_sweep/kernel_entry.h"
 #include "sweep_test_support.h"
 #include "../src/lane_links.h"

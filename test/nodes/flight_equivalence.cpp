@@ -12,10 +12,10 @@
 #include <map>
 #include <vector>
 
-#include "aurora_control/flight_runner.h"
-#include "aurora_control/law_yaml.h"
-#include "aurora_control/link_yaml.h"
-#include "aurora_control/task_yaml.h"
+#include "aurora_control/loop/flight_runner.h"
+#include "aurora_control/law/law_yaml.h"
+#include "aurora_control/link/link_yaml.h"
+#include "aurora_control/task/task_yaml.h"
 #include "aurora_sim/ros/conversions.h"
 #include "aurora_sim/ros/params.h"
 #include "lockstep_states.h"

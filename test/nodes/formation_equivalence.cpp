@@ -13,7 +13,7 @@
 #include <map>
 #include <vector>
 
-#include "aurora_control/formation_yaml.h"
+#include "aurora_control/formation/formation_yaml.h"
 #include "aurora_sim/ros/params.h"
 #include "lockstep_states.h"
 

@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "aurora_control/formation_yaml.h"
+#include "aurora_control/formation/formation_yaml.h"
 #include "aurora_sim/ros/params.h"
 #include "truth_track.h"
 

@@ -12,10 +12,10 @@
 
 #include <yaml-cpp/yaml.h>
 
-#include "aurora_control/flight_runner.h"
-#include "aurora_control/law_yaml.h"
-#include "aurora_control/closed_loop.h"
-#include "aurora_control/task_yaml.h"
+#include "aurora_control/loop/flight_runner.h"
+#include "aurora_control/law/law_yaml.h"
+#include "aurora_control/loop/closed_loop.h"
+#include "aurora_control/task/task_yaml.h"
 #include "aurora_sim/ros/conversions.h"
 #include "aurora_sim/ros/params.h"
 #include "truth_track.h"

@@ -7,7 +7,7 @@
 #include <map>
 #include <vector>
 
-#include "aurora_control/positioning_runner.h"
+#include "aurora_control/loop/positioning_runner.h"
 #include "aurora_sim/ros/conversions.h"
 #include "aurora_sim/ros/params.h"
 #include "lockstep_states.h"

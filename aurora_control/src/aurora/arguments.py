@@ -7,7 +7,7 @@ The YAML readers (PyYAML's safe_dump, the C++ readers behind it) know
 only plain values, so a dict is made plain before it is written."""
 import numbers
 
-from aurora._core import MAX_DELAY_SAMPLES  # the history a delay may need (aurora_control/limits.h)
+from aurora._core import MAX_DELAY_SAMPLES  # the history a delay may need (aurora_control/params/limits.h)
 
 
 def _numpy():

@@ -12,7 +12,7 @@ import sys
 
 FORMATION_TOPIC = "/formation/formation"
 FORMATION_TYPE = "aurora_msgs/Formation"
-# The formation checks' defaults (aurora_control/formation_checks.h, FormationCriteria::study).
+# The formation checks' defaults (aurora_control/formation/formation_checks.h, FormationCriteria::study).
 SETTLE_TIME = 10.0
 MIN_DISTANCE = 0.6
 VARIABLES = ("xF", "yF", "zF", "rho", "alpha", "beta")

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "aurora_control/flight_setup.h"
+#include "aurora_control/loop/flight_setup.h"
 #include "../formation_flight.h"
 
 namespace py = pybind11;

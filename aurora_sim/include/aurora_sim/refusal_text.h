@@ -1,5 +1,5 @@
 // Texts shared by every refusal, ROS-free: the node's parameters
-// (ros/params.h), every YAML file (aurora_control/yaml_reader.h) and the
+// (ros/params.h), every YAML file (aurora_control/params/yaml_reader.h) and the
 // task checks word numbers and booleans the same way.
 #pragma once
 

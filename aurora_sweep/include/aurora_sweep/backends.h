@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "aurora_control/limits.h"
+#include "aurora_control/params/limits.h"
 #include "aurora_sweep/formation_simulation.h"
 #include "aurora_sweep/simulation.h"
 #include "aurora_sweep/sweep_spec.h"

@@ -13,8 +13,8 @@
 #include <type_traits>
 #include <utility>
 
-#include "aurora_control/formation_judge.h"
-#include "aurora_control/formation_runner.h"
+#include "aurora_control/formation/formation_judge.h"
+#include "aurora_control/formation/formation_runner.h"
 #include "aurora_sweep/simulation.h"
 
 namespace aurora_sweep {

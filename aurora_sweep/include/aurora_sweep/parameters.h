@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "aurora_control/control_law.h"
+#include "aurora_control/law/control_law.h"
 #include "aurora_sweep/combination.h"
 
 namespace aurora_sweep {

@@ -6,7 +6,7 @@
 
 #include <type_traits>
 
-#include "aurora_control/positioning_runner.h"
+#include "aurora_control/loop/positioning_runner.h"
 #include "aurora_sweep/combination.h"
 
 namespace aurora_sweep {

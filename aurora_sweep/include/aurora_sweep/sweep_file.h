@@ -5,12 +5,12 @@
 #include <stdexcept>
 #include <string>
 
-#include "aurora_control/yaml_reader.h"
+#include "aurora_control/params/yaml_reader.h"
 #include "aurora_sweep/sweep_spec.h"
 
 namespace aurora_sweep {
 
-// The shared configuration error (aurora_control/yaml_reader.h): the sweep
+// The shared configuration error (aurora_control/params/yaml_reader.h): the sweep
 // file, the task and controller schemas are read with the same rules.
 using aurora_control::ConfigError;
 

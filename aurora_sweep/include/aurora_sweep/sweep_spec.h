@@ -5,11 +5,11 @@
 #include <string>
 #include <vector>
 
-#include "aurora_control/feasibility.h"
-#include "aurora_control/formation_checks.h"
-#include "aurora_control/formation_runner.h"
-#include "aurora_control/link.h"
-#include "aurora_control/task.h"
+#include "aurora_control/loop/feasibility.h"
+#include "aurora_control/formation/formation_checks.h"
+#include "aurora_control/formation/formation_runner.h"
+#include "aurora_control/link/link.h"
+#include "aurora_control/task/task.h"
 #include "aurora_sim/ardrone_params.h"
 #include "aurora_sweep/combination.h"
 #include "aurora_sweep/parameters.h"

@@ -5,8 +5,8 @@
 #include <aurora_msgs/Control.h>
 #include <aurora_msgs/DroneState.h>
 
-#include "aurora_control/delayed_controller.h"
-#include "aurora_control/task.h"
+#include "aurora_control/loop/delayed_controller.h"
+#include "aurora_control/task/task.h"
 #include "aurora_sim/ros/conversions.h"
 
 namespace aurora_control {

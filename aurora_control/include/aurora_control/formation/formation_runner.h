@@ -9,11 +9,11 @@
 #include <type_traits>
 #include <vector>
 
-#include "aurora_control/closed_loop.h"
-#include "aurora_control/delay_buffer.h"
-#include "aurora_control/formation_layer.h"
-#include "aurora_control/formation_reference.h"
-#include "aurora_control/loop_link.h"
+#include "aurora_control/loop/closed_loop.h"
+#include "aurora_control/loop/delay_buffer.h"
+#include "aurora_control/formation/formation_layer.h"
+#include "aurora_control/formation/formation_reference.h"
+#include "aurora_control/link/loop_link.h"
 
 namespace aurora_control {
 

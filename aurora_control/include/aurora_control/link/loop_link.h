@@ -13,8 +13,8 @@
 #include <cmath>
 #include <cstdint>
 
-#include "aurora_control/delay_buffer.h"
-#include "aurora_control/link.h"
+#include "aurora_control/loop/delay_buffer.h"
+#include "aurora_control/link/link.h"
 
 namespace aurora_control {
 

@@ -9,10 +9,10 @@
 #include <cstdio>
 #include <string>
 
-#include "aurora_control/limits.h"
-#include "aurora_control/link.h"
-#include "aurora_control/parameter_table.h"
-#include "aurora_control/yaml_reader.h"
+#include "aurora_control/params/limits.h"
+#include "aurora_control/link/link.h"
+#include "aurora_control/params/parameter_table.h"
+#include "aurora_control/params/yaml_reader.h"
 
 namespace aurora_control {
 

@@ -5,8 +5,8 @@
 // (task_yaml.h).
 #pragma once
 
-#include "aurora_control/trajectory_task.h"
-#include "aurora_control/waypoint_task.h"
+#include "aurora_control/task/trajectory_task.h"
+#include "aurora_control/task/waypoint_task.h"
 #include "aurora_sim/host_device.h"
 #include "aurora_sim/scalar_math.h"
 

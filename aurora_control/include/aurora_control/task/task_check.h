@@ -5,7 +5,7 @@
 #include <cmath>
 #include <string>
 
-#include "aurora_control/waypoint_task.h"
+#include "aurora_control/task/waypoint_task.h"
 #include "aurora_sim/refusal_text.h"
 
 namespace aurora_control {

@@ -11,14 +11,14 @@
 
 #include <cstdint>
 
-#include "aurora_control/closed_loop.h"
-#include "aurora_control/delay_buffer.h"
-#include "aurora_control/link.h"
-#include "aurora_control/node_link.h"
-#include "aurora_control/feasibility.h"
-#include "aurora_control/pd_controller.h"
-#include "aurora_control/trajectory_task.h"
-#include "aurora_control/underactuated_law.h"
+#include "aurora_control/loop/closed_loop.h"
+#include "aurora_control/loop/delay_buffer.h"
+#include "aurora_control/link/link.h"
+#include "aurora_control/link/node_link.h"
+#include "aurora_control/loop/feasibility.h"
+#include "aurora_control/law/pd_controller.h"
+#include "aurora_control/task/trajectory_task.h"
+#include "aurora_control/law/underactuated_law.h"
 #include "aurora_sim/ardrone_params.h"
 #include "aurora_sim/scalar_math.h"
 #include "aurora_sim/state_index.h"

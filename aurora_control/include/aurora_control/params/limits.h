@@ -8,7 +8,7 @@
 #include <string>
 #include <type_traits>
 
-#include "aurora_control/parameter_table.h"
+#include "aurora_control/params/parameter_table.h"
 
 namespace aurora_control {
 

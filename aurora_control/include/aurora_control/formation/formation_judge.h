@@ -3,8 +3,8 @@
 // scalar run records. ROS-free, host and device.
 #pragma once
 
-#include "aurora_control/formation_checks.h"
-#include "aurora_control/formation_runner.h"
+#include "aurora_control/formation/formation_checks.h"
+#include "aurora_control/formation/formation_runner.h"
 
 namespace aurora_control {
 

@@ -8,7 +8,7 @@
 
 #include <cmath>
 
-#include "aurora_control/feasibility.h"
+#include "aurora_control/loop/feasibility.h"
 #include "aurora_sim/scalar_math.h"
 
 namespace aurora_control {

@@ -22,9 +22,9 @@
 #include <string>
 #include <vector>
 
-#include "aurora_control/task.h"
-#include "aurora_control/task_check.h"
-#include "aurora_control/yaml_reader.h"
+#include "aurora_control/task/task.h"
+#include "aurora_control/task/task_check.h"
+#include "aurora_control/params/yaml_reader.h"
 
 namespace aurora_control {
 

@@ -6,11 +6,11 @@
 
 #include <string>
 
-#include "aurora_control/flight_runner.h"
-#include "aurora_control/law_yaml.h"
-#include "aurora_control/limits.h"
-#include "aurora_control/link_yaml.h"
-#include "aurora_control/task_yaml.h"
+#include "aurora_control/loop/flight_runner.h"
+#include "aurora_control/law/law_yaml.h"
+#include "aurora_control/params/limits.h"
+#include "aurora_control/link/link_yaml.h"
+#include "aurora_control/task/task_yaml.h"
 #include "aurora_sim/vehicle_yaml.h"
 
 namespace aurora_control {

@@ -16,7 +16,7 @@
 #include <limits>
 #include <string>
 
-#include "aurora_control/flight_supervisor.h"
+#include "aurora_control/robot/flight_supervisor.h"
 
 namespace aurora_control {
 

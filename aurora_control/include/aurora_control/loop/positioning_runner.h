@@ -9,10 +9,10 @@
 #include <stdexcept>
 #include <string>
 
-#include "aurora_control/delay_buffer.h"
-#include "aurora_control/limits.h"
-#include "aurora_control/closed_loop.h"
-#include "aurora_control/loop_link.h"
+#include "aurora_control/loop/delay_buffer.h"
+#include "aurora_control/params/limits.h"
+#include "aurora_control/loop/closed_loop.h"
+#include "aurora_control/link/loop_link.h"
 #include "aurora_sim/refusal_text.h"
 
 namespace aurora_control {

@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "aurora_control/task.h"
+#include "aurora_control/task/task.h"
 #include "aurora_sim/state_index.h"
 
 namespace aurora_control {

@@ -12,10 +12,10 @@
 // aurora_sim/vehicle/ardrone2.h).
 #pragma once
 
-#include "aurora_control/control_law.h"
-#include "aurora_control/delay_buffer.h"
-#include "aurora_control/feasibility.h"
-#include "aurora_control/task.h"
+#include "aurora_control/law/control_law.h"
+#include "aurora_control/loop/delay_buffer.h"
+#include "aurora_control/loop/feasibility.h"
+#include "aurora_control/task/task.h"
 #include "aurora_sim/scalar_math.h"
 
 namespace aurora_control {

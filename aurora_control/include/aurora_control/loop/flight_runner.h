@@ -9,9 +9,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "aurora_control/delayed_controller.h"
-#include "aurora_control/positioning_runner.h"
-#include "aurora_control/tracking.h"
+#include "aurora_control/loop/delayed_controller.h"
+#include "aurora_control/loop/positioning_runner.h"
+#include "aurora_control/task/tracking.h"
 
 namespace aurora_control {
 

@@ -9,9 +9,9 @@
 // offline runner's bit for bit.
 #pragma once
 
-#include "aurora_control/delayed_controller.h"
-#include "aurora_control/formation_layer.h"
-#include "aurora_control/formation_runner.h"
+#include "aurora_control/loop/delayed_controller.h"
+#include "aurora_control/formation/formation_layer.h"
+#include "aurora_control/formation/formation_runner.h"
 #include "aurora_sim/command_mapping.h"
 
 namespace aurora_control {

@@ -8,9 +8,9 @@
 
 #include <type_traits>
 
-#include "aurora_control/pd_controller.h"
-#include "aurora_control/trajectory_task.h"
-#include "aurora_control/underactuated_law.h"
+#include "aurora_control/law/pd_controller.h"
+#include "aurora_control/task/trajectory_task.h"
+#include "aurora_control/law/underactuated_law.h"
 #include "aurora_sim/ardrone_params.h"
 #include "aurora_sim/host_device.h"
 #include "aurora_sim/state_index.h"

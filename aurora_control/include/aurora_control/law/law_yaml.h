@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "aurora_control/delayed_controller.h"
-#include "aurora_control/limits.h"
-#include "aurora_control/yaml_reader.h"
+#include "aurora_control/loop/delayed_controller.h"
+#include "aurora_control/params/limits.h"
+#include "aurora_control/params/yaml_reader.h"
 
 namespace aurora_control {
 

@@ -8,11 +8,11 @@
 #include <string>
 #include <vector>
 
-#include "aurora_control/law_yaml.h"
-#include "aurora_control/limits.h"
-#include "aurora_control/link_yaml.h"
-#include "aurora_control/parameter_table.h"
-#include "aurora_control/yaml_reader.h"
+#include "aurora_control/law/law_yaml.h"
+#include "aurora_control/params/limits.h"
+#include "aurora_control/link/link_yaml.h"
+#include "aurora_control/params/parameter_table.h"
+#include "aurora_control/params/yaml_reader.h"
 
 namespace aurora_control {
 
