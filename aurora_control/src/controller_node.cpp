@@ -327,7 +327,7 @@ void ControllerNode::onJoy(const sensor_msgs::Joy::ConstPtr& msg) {
     if (!was_held) ROS_WARN("controller: joystick override (deadman held)");
     // The joystick wins at once, not at the next cycle.
     double U[4];
-    aurora_sim::modelCommandFromTwist(joy_.sticks, U);
+    aurora_sim::Ardrone2::fromDriver(joy_.sticks, U);
     sendCommand(U);
   } else if (was_held) {
     ROS_INFO("controller: joystick released: back to the controller");
@@ -375,7 +375,7 @@ void ControllerNode::cycle(const ros::Time& now) {
   ControlOutput out = decision.run_law ? core_->compute(ref) : core_->hover();
   std::string mode = decision.mode;
   if (joy_.deadman) {
-    aurora_sim::modelCommandFromTwist(joy_.sticks, out.U);
+    aurora_sim::Ardrone2::fromDriver(joy_.sticks, out.U);
     mode = "joystick";
   } else if (resume_.active()) {
     resume_.apply(out.U);

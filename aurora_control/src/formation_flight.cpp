@@ -116,7 +116,7 @@ void printChecks(const FormationJudge<double>& judge) {
 }
 
 FormationFlight flyFormationFiles(const FormationFlightOptions& o, const FormationObserver& observe) {
-  const auto p = aurora_sim::loadVehicleYaml(o.vehicle);
+  const auto p = aurora_sim::loadVehicleFile<ArdroneLawData::Vehicle>(o.vehicle, "the formation's drones' laws");
   FormationFlight r{readFormationFile(o.formation, o.config_dir), {}, p.Ts, 0, 0.0, {},
                     FormationJudge<double>{FormationCriteria<double>::study(), false, p.Ts, {}, {}}};
   r.run = loadRun(o, p, r.file);

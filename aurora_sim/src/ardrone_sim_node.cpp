@@ -155,7 +155,7 @@ ros::Time ArdroneSimNode::lockstepTime() const {
 
 void ArdroneSimNode::onCmdVel(const geometry_msgs::Twist::ConstPtr& msg) {
   double U[4];
-  modelCommandFromTwist(twistCommandFromMsg(*msg), U);
+  Ardrone2::fromDriver(twistCommandFromMsg(*msg), U);
   const double t = ros::WallTime::now().toSec();
   logBurst(nan_burst_.poll(t));
   if (!allFinite(U, 4)) {

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 
 #include "aurora_sim/ardrone_model.h"
@@ -141,7 +142,7 @@ TEST(VehicleFile, MissingKeyIsNamed) {
   const std::string path = ::testing::TempDir() + "/vehicle_no_mass.yaml";
   {
     std::ofstream f(path);
-    f << "sample_time: 0.03333333333333333\ngravity: 9.8\n";
+    f << "type: ardrone2\nsample_time: 0.03333333333333333\ngravity: 9.8\n";
   }
   try {
     loadVehicleYaml(path);
@@ -149,4 +150,41 @@ TEST(VehicleFile, MissingKeyIsNamed) {
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find("'mass'"), std::string::npos) << e.what();
   }
+}
+
+// The shipped file with its `type:` line replaced by `type_line`: the
+// refusal of loading it for `flown_by`.
+std::string typeRefusal(const std::string& type_line, const std::string& flown_by = "this loop") {
+  std::ifstream in(std::string(AURORA_CONFIG_DIR) + "/vehicles/ardrone2.yaml");
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const size_t at = text.find("type: ardrone2");
+  text.replace(at, text.find('\n', at) - at, type_line);
+  const std::string path = ::testing::TempDir() + "/vehicle_type.yaml";
+  std::ofstream(path) << text;
+  try {
+    loadVehicleYaml(path, flown_by);
+  } catch (const ConfigError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// A file says which vehicle it describes: missing, unknown and (for a loop
+// of another vehicle) foreign types are refused naming the file, the type
+// and what is accepted; the shipped file's type loads.
+TEST(VehicleFile, ItsTypeNamesTheVehicle) {
+  EXPECT_EQ(typeRefusal("type: ardrone2"), "");
+  const std::string missing = typeRefusal("", "the controller 'pd_saturated'");
+  EXPECT_NE(missing.find("vehicle_type.yaml': lacks the key 'type'"), std::string::npos) << missing;
+  EXPECT_NE(missing.find("add 'type: ardrone2'"), std::string::npos) << missing;
+  const std::string unknown = typeRefusal("type: ardrone3");
+  EXPECT_NE(unknown.find("type 'ardrone3' is not a vehicle this build knows (accepted: ardrone2)"), std::string::npos)
+      << unknown;
+  // A loop of another vehicle (a test-only one) refuses an AR.Drone's file, naming both.
+  struct Rover {
+    static const char* name() { return "rover"; }
+  };
+  const std::string foreign = vehicleTypeRefusal<Rover>("ardrone2", "the controller 'rover_law'");
+  EXPECT_EQ(foreign, "is of type 'ardrone2', but the controller 'rover_law' flies type 'rover': give a vehicle file "
+                     "of type 'rover' (config/vehicles/rover.yaml), or a controller for 'ardrone2'");
 }

@@ -117,17 +117,6 @@ std::string acceptedParamNames(aurora_control::LawType law, bool formation) {
   return names;
 }
 
-bool lawFromName(const std::string& name, aurora_control::LawType& law) {
-  if (name == "pd_saturated") law = aurora_control::LawType::kPdSaturated;
-  else if (name == "underactuated") law = aurora_control::LawType::kUnderactuated;
-  else return false;
-  return true;
-}
-
-const char* lawName(aurora_control::LawType law) {
-  return law == aurora_control::LawType::kPdSaturated ? "pd_saturated" : "underactuated";
-}
-
 double paramDefault(int id) {
   switch (paramInfo(id).group) {
     case ParamGroup::kUnderactuatedGain: {

@@ -493,7 +493,8 @@ SweepSpec parseSweepFile(const std::string& path, const std::string& config_dir)
   const std::string vehicle = s["vehicle"] ? r.text(s["vehicle"], "sweep.vehicle")
                                            : std::string("vehicles/ardrone2.yaml");
   spec.vehicle_file = resolve(vehicle, sweep_dir, config_dir);
-  spec.vehicle = aurora_sim::loadVehicleYaml(spec.vehicle_file);
+  spec.vehicle = aurora_sim::loadVehicleFile<SweepVehicle>(spec.vehicle_file, "the sweep's controller '" +
+                                                                                 spec.controller + "'");
 
   if (s["formation"]) {
     const std::string file = resolve(r.text(s["formation"], "sweep.formation"), sweep_dir, config_dir);

@@ -36,6 +36,7 @@ struct PointMass {
   template <typename T>
   using State = point_mass::State<T>;
   static constexpr int kStates = 6, kInputs = 3, kPosition = 0, kFactors = 1;
+  static const char* name() { return "point_mass"; }
 
   // Semi-implicit Euler: v += F / m Ts, then x += v Ts.
   template <typename T>

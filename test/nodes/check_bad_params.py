@@ -115,6 +115,10 @@ class BadParamsTest(unittest.TestCase):
         rc, out = self.sim_case("/no_mass", lambda p: rospy.delete_param(p + "vehicle/mass"))
         self.assert_refused(rc, out, "/no_mass/vehicle/mass", "config/vehicles/ardrone2.yaml")
 
+    def test_sim_vehicle_without_its_type(self):
+        rc, out = self.sim_case("/no_type", lambda p: rospy.delete_param(p + "vehicle/type"))
+        self.assert_refused(rc, out, "'/no_type/vehicle/': lacks the key 'type'", "add 'type: ardrone2'")
+
     def test_sim_out_of_range_vehicle_constant(self):
         rc, out = self.sim_case("/neg_mass", lambda p: rospy.set_param(p + "vehicle/mass", -0.4))
         self.assert_refused(rc, out, "/neg_mass/vehicle/mass", "accepted range")

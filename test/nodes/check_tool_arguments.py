@@ -161,6 +161,17 @@ class FormationAndLinkArgumentsTest(unittest.TestCase):
                 f.write("controller:\n  name: pd_saturated\n  kp: 0.5\n  kd: 0.85\n  kp: 0.7\n")
             self.refused(["--controller", path], "'controller.kp' is given twice, on lines 3 and 5")
 
+    def test_a_vehicle_file_says_which_vehicle_it_describes(self):
+        """Issue 32: a vehicle file's `type:` is read first, by flight as by the nodes."""
+        text = open(os.path.join(config_dir(), "vehicles", "ardrone2.yaml")).read()
+        with tempfile.TemporaryDirectory() as tmp:
+            for old, new, said in (("type: ardrone2", "", "lacks the key 'type'"),
+                                   ("type: ardrone2", "type: bebop", "type 'bebop' is not a vehicle this build knows")):
+                path = os.path.join(tmp, "vehicle.yaml")
+                with open(path, "w") as f:
+                    f.write(text.replace(old, new))
+                self.refused(["--vehicle", path], "vehicle file '%s'" % path, said, "accepted: ardrone2")
+
     def test_two_sweeps_on_one_folder_and_an_interrupted_sweep(self):
         sweep = subprocess.run(["catkin_find", "--first-only", "--libexec", "aurora_sweep", "sweep"],
                                stdout=subprocess.PIPE).stdout.decode().strip()

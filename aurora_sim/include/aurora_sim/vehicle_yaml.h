@@ -1,48 +1,67 @@
 // Reads a vehicle file (config/vehicles/*.yaml) with yaml-cpp, strictly:
-// every key of vehicle_keys.h must be present and in range. For ROS-free
-// callers (the sweep, tests); the nodes read the same keys from the
-// parameter server (ros/params.h).
+// its `type:` names the vehicle it describes, and every key of that
+// vehicle's file (Vehicle::fileKeys) must be present and in range. For
+// ROS-free callers (the flight tool, the sweep, Python, tests); the nodes
+// read the same keys from the parameter server (ros/params.h).
 #pragma once
 
 #include <yaml-cpp/yaml.h>
 
 #include <sstream>
-#include <stdexcept>
 #include <string>
 
-#include "aurora_sim/ardrone_params.h"
 #include "aurora_sim/refusal_text.h"
-#include "aurora_sim/vehicle_keys.h"
+#include "aurora_sim/vehicle/vehicle_type.h"
 #include "aurora_sim/yaml_file.h"
 
 namespace aurora_sim {
 
-inline ArdroneParams<double> loadVehicleYaml(const std::string& path) {
+// The value under a '/'-separated key of a vehicle file.
+inline double vehicleFileNumber(const YAML::Node& root, const std::string& path, const std::string& name,
+                                const std::string& unit) {
+  std::stringstream parts(name);
+  std::string part;
+  YAML::Node node = YAML::Clone(root);
+  while (std::getline(parts, part, '/')) {
+    if (!node.IsMap() || !node[part]) {
+      throw ConfigError("vehicle file '" + path + "' lacks the key '" + name + "' (" + unit + ")");
+    }
+    node = node[part];
+  }
+  try {
+    return node.as<double>();
+  } catch (const YAML::Exception&) {
+    throw ConfigError("vehicle file '" + path + "': '" + name + "' is not a number");
+  }
+}
+
+// The parameters of a vehicle of type `Vehicle` from the file at `path`,
+// which `flown_by` (e.g. "the controller 'pd_saturated'") flies.
+template <class Vehicle>
+typename Vehicle::template Params<double> loadVehicleFile(const std::string& path,
+                                                          const std::string& flown_by = "this loop") {
   const YAML::Node root = loadYamlFile("vehicle file", path);
-  ArdroneParams<double> p{};
-  for (const VehicleKey& key : vehicleKeys()) {
-    std::stringstream parts(key.name);
-    std::string part;
-    YAML::Node node = YAML::Clone(root);
-    while (std::getline(parts, part, '/')) {
-      if (!node.IsMap() || !node[part]) {
-        throw ConfigError("vehicle file '" + path + "' lacks the key '" + key.name +
-                                 "' (" + key.unit + ")");
-      }
-      node = node[part];
-    }
-    double value = 0.0;
-    try {
-      value = node.as<double>();
-    } catch (const YAML::Exception&) {
-      throw ConfigError("vehicle file '" + path + "': '" + key.name + "' is not a number");
-    }
+  std::string type;
+  try {
+    type = root.IsMap() && root["type"] ? root["type"].as<std::string>() : "";
+  } catch (const YAML::Exception&) {
+  }
+  const std::string refusal = vehicleTypeRefusal<Vehicle>(type, flown_by);
+  if (!refusal.empty()) throw ConfigError("vehicle file '" + path + "': " + refusal);
+  typename Vehicle::template Params<double> p{};
+  for (const auto& key : Vehicle::fileKeys()) {
+    const double value = vehicleFileNumber(root, path, key.name, key.unit);
     const std::string problem = checkVehicleValue(path + ": ", key, value);
     if (!problem.empty()) throw ConfigError(problem);
-    setVehicleValue(p, key, value);
+    Vehicle::setFileValue(p, key, value);
   }
-  p.updateDerived();
+  Vehicle::finishFile(p);
   return p;
+}
+
+// The AR.Drone 2.0's (every loop of this build flies it).
+inline ArdroneParams<double> loadVehicleYaml(const std::string& path, const std::string& flown_by = "this loop") {
+  return loadVehicleFile<Ardrone2>(path, flown_by);
 }
 
 }  // namespace aurora_sim

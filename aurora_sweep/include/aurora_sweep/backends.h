@@ -18,8 +18,6 @@ namespace aurora_sweep {
 // thread reads it for the ETA.
 using Progress = std::atomic<long>;
 
-// The sweep's vehicle (a sweep file's vehicle is an AR.Drone's).
-using SweepVehicle = aurora_sim::Ardrone2;
 template <typename T>
 using SweepSetup = SimSetup<SweepVehicle, T>;
 

@@ -34,9 +34,9 @@ inline const char* paramName(int id) { return paramInfo(id).name.c_str(); }
 bool paramApplies(int id, aurora_control::LawType law, bool formation = false);
 // The accepted names, in ParamId order, comma separated.
 std::string acceptedParamNames(aurora_control::LawType law, bool formation = false);
-// "pd_saturated" / "underactuated"; false for another name.
-bool lawFromName(const std::string& name, aurora_control::LawType& law);
-const char* lawName(aurora_control::LawType law);
+// "pd_saturated" / "underactuated" (control_law.h).
+using aurora_control::lawFromName;
+using aurora_control::lawName;
 
 // The value of a parameter a sweep file leaves out: the underactuated law's
 // gains default to the spec's (UnderactuatedGains::defaults), model factors

@@ -28,13 +28,17 @@ struct Axis {
   std::vector<double> values;
 };
 
+// The sweep's vehicle: the one its laws fly (both AR.Drone laws'), whose
+// file the sweep file names (`vehicle:`, of that `type:`).
+using SweepVehicle = aurora_control::ArdroneLawData::Vehicle;
+
 struct SweepSpec {
   std::string file;                 // the sweep file it came from
   std::string name;
   std::string controller = "pd_saturated";
   aurora_control::LawType law = aurora_control::LawType::kPdSaturated;
   std::string vehicle_file;
-  aurora_sim::ArdroneParams<double> vehicle{};
+  SweepVehicle::Params<double> vehicle{};
   // The task (one schema with the node: positioning point, waypoints,
   // circle, lemniscate); the study's by default.
   aurora_control::Task<double> task = aurora_control::positioningTask(2.0, 1.0, 2.0, 60.0);

@@ -6,6 +6,8 @@
 // a SIMD batch), host and device.
 #pragma once
 
+#include <string>
+
 #include <type_traits>
 
 #include "aurora_control/law/pd_controller.h"
@@ -19,6 +21,18 @@
 namespace aurora_control {
 
 enum class LawType : int { kPdSaturated = 0, kUnderactuated = 1 };
+
+// A law's name in controller files, sweep files and messages, and the law
+// of a name (false for a name no law has). Host only.
+inline const char* lawName(LawType law) {
+  return law == LawType::kUnderactuated ? "underactuated" : "pd_saturated";
+}
+inline bool lawFromName(const std::string& name, LawType& law) {
+  if (name == "pd_saturated") law = LawType::kPdSaturated;
+  else if (name == "underactuated") law = LawType::kUnderactuated;
+  else return false;
+  return true;
+}
 
 // The gains of both laws; a law reads only its own.
 template <typename T>
@@ -124,6 +138,7 @@ struct ArdroneLaw : ArdroneLawData {
   using Data = ArdroneLawData;
   static constexpr LawType value = L;
   using Input = LawInput<L>;
+  static const char* name() { return lawName(L); }
 
   template <typename T>
   AURORA_HD static void command(const aurora_sim::ArdroneParams<T>& model, const Gains<T>& g, Memory<T>& memory,

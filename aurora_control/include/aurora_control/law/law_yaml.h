@@ -14,10 +14,6 @@
 
 namespace aurora_control {
 
-inline const char* lawName(LawType law) {
-  return law == LawType::kUnderactuated ? "underactuated" : "pd_saturated";
-}
-
 // The gains of `law` by configuration name, in the order Control lists them.
 inline std::vector<std::string> lawGainNames(LawType law) {
   if (law == LawType::kPdSaturated) return {"kp", "kd"};
@@ -42,11 +38,7 @@ inline void readLaw(const YamlReader& r, const YAML::Node& node, const std::stri
   if (!node || !node.IsMap()) r.fail(key, "is missing or not a mapping: load a controller file such as config/controllers/pd_saturated.yaml");
   const std::string name =
       r.text(r.require(node, key, "name", "'pd_saturated' or 'underactuated'"), r.key(key, "name"));
-  if (name == "pd_saturated") {
-    set.law = LawType::kPdSaturated;
-  } else if (name == "underactuated") {
-    set.law = LawType::kUnderactuated;
-  } else {
+  if (!lawFromName(name, set.law)) {
     r.fail(r.key(key, "name"), "= '" + name + "' is unknown: accepted controllers: 'pd_saturated', 'underactuated'");
   }
   std::vector<std::string> accepted{"name"};

@@ -30,8 +30,10 @@ struct FlightSetup {
 
 inline FlightSetup loadFlight(const FlightFiles& f) {
   FlightSetup s;
-  s.vehicle = aurora_sim::loadVehicleYaml(f.vehicle);
   s.settings = readControllerFile(f.controller).settings;
+  // The vehicle its law flies (both AR.Drone laws: ArdroneLawData::Vehicle).
+  s.vehicle = aurora_sim::loadVehicleFile<ArdroneLawData::Vehicle>(
+      f.vehicle, std::string("the controller '") + lawName(s.settings.law) + "'");
   s.settings.clamp_commands = !f.no_clamp;
   s.settings.vehicle = s.vehicle;
   s.settings.Ts = s.vehicle.Ts;

@@ -6,6 +6,7 @@
 #include <geometry_msgs/Twist.h>
 
 #include "aurora_sim/command_mapping.h"
+#include "aurora_sim/vehicle/ardrone2.h"
 #include "aurora_sim/state_index.h"
 
 namespace aurora_sim {
@@ -31,7 +32,7 @@ inline TwistCommand twistCommandFromMsg(const geometry_msgs::Twist& t) {
 }
 
 inline geometry_msgs::Twist twistMsgFromModelCommand(const double U[4]) {
-  const TwistCommand c = twistFromModelCommand(U);
+  const TwistCommand c = Ardrone2::toDriver(U);
   geometry_msgs::Twist t;
   t.linear.x = c.linear_x; t.linear.y = c.linear_y; t.linear.z = c.linear_z;
   t.angular.z = c.angular_z;

@@ -13,7 +13,7 @@
 
 #include "aurora_sim/ardrone_params.h"
 #include "aurora_sim/refusal_text.h"
-#include "aurora_sim/vehicle_keys.h"
+#include "aurora_sim/vehicle/vehicle_type.h"
 
 namespace aurora_sim {
 
@@ -63,22 +63,32 @@ inline double rangedParam(const ros::NodeHandle& nh, const std::string& key, dou
   return v;
 }
 
-// Reads every vehicle key under `ns` (e.g. "vehicle") and checks its range.
-inline ArdroneParams<double> loadVehicleParams(const ros::NodeHandle& nh, const std::string& ns) {
-  ArdroneParams<double> p{};
+// Reads a vehicle's parameters under `ns` (e.g. "vehicle", a vehicle file
+// loaded there): its `type` must be `Vehicle`'s, every key of its file is
+// required and checked against its range.
+template <class Vehicle = Ardrone2>
+typename Vehicle::template Params<double> loadVehicleParams(const ros::NodeHandle& nh, const std::string& ns,
+                                                            const std::string& flown_by = "this node") {
   const std::string prefix = fullKey(nh, ns) + "/";
-  for (const VehicleKey& key : vehicleKeys()) {
+  const std::string load = ": load a vehicle file such as config/vehicles/" + std::string(Vehicle::name()) +
+                           ".yaml (launch arg 'vehicle')";
+  std::string type;
+  if (nh.hasParam(ns + "/type") && !nh.getParam(ns + "/type", type)) {
+    throw ConfigError("vehicle parameter '" + prefix + "type' is not a name" + load);
+  }
+  const std::string refusal = vehicleTypeRefusal<Vehicle>(type, flown_by);
+  if (!refusal.empty()) throw ConfigError("vehicle parameters '" + prefix + "': " + refusal);
+  typename Vehicle::template Params<double> p{};
+  for (const auto& key : Vehicle::fileKeys()) {
     double value = 0.0;
     if (!nh.getParam(ns + "/" + key.name, value)) {
-      throw ConfigError("missing vehicle parameter '" + prefix + key.name +
-                           "': load a vehicle file such as config/vehicles/ardrone2.yaml "
-                           "(launch arg 'vehicle')");
+      throw ConfigError("missing vehicle parameter '" + prefix + key.name + "'" + load);
     }
     const std::string problem = checkVehicleValue(prefix, key, value);
     if (!problem.empty()) throw ConfigError(problem);
-    setVehicleValue(p, key, value);
+    Vehicle::setFileValue(p, key, value);
   }
-  p.updateDerived();
+  Vehicle::finishFile(p);
   return p;
 }
 

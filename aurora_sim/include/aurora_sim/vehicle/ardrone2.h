@@ -11,11 +11,20 @@
 //   its driver does with what it receives);
 // - kFactors, scaled(p, factor): the model parameters a sweep may scale
 //   (factor i multiplies parameter i of factorName order), derived values
-//   recomputed.
+//   recomputed;
+// - name(): its name, as a vehicle file's `type:` gives it;
+// - fileKeys(), setFileValue(p, key, v), finishFile(p): its vehicle file's
+//   keys (name, accepted range, unit; vehicle_file.h reads them);
+// - toDriver(U), fromDriver(msg, U): how its commands map to its driver's
+//   command message (host only).
 // Only the files of a vehicle name it; the rest chooses it by name.
 #pragma once
 
+#include <vector>
+
 #include "aurora_sim/ardrone_model.h"
+#include "aurora_sim/command_mapping.h"
+#include "aurora_sim/vehicle_keys.h"
 
 namespace aurora_sim {
 
@@ -63,6 +72,19 @@ struct Ardrone2 {
     p.updateDerived();
     return p;
   }
+
+  static const char* name() { return "ardrone2"; }
+
+  // The vehicle file (config/vehicles/ardrone2.yaml): every key of
+  // vehicle_keys.h, required; angles in degrees there.
+  static const std::vector<VehicleKey>& fileKeys() { return vehicleKeys(); }
+  static void setFileValue(Params<double>& p, const VehicleKey& key, double value) { setVehicleValue(p, key, value); }
+  static void finishFile(Params<double>& p) { p.updateDerived(); }
+
+  // ardrone_autonomy's cmd_vel (command_mapping.h).
+  using DriverCommand = TwistCommand;
+  static DriverCommand toDriver(const double U[kInputs]) { return twistFromModelCommand(U); }
+  static void fromDriver(const DriverCommand& msg, double U[kInputs]) { modelCommandFromTwist(msg, U); }
 };
 
 }  // namespace aurora_sim
