@@ -184,8 +184,7 @@ class LaneLinks {
   void start(int l, const aurora_control::LinkParams& link, uint64_t key) {
     up_.start(l, link.uplink, link.uplink.delay);
     down_.start(l, link.downlink, link.downlink.delay);
-    key_[0][l] = link.seed, key_[1][l] = key & 0xffffffffu;
-    key_hi_[l] = key >> 32;
+    seed_[l] = link.seed, combination_[l] = key;
   }
 
   // Each lane's history index (1-based) of the state its controller
@@ -195,12 +194,13 @@ class LaneLinks {
   I uplink(const I& count, const I& start, long slot) {
     alignas(64) Int k[L];
     (count - I(Int(1))).store_aligned(k);
-    uint64_t ctr[4][L];
-    for (int l = 0; l < L; ++l) {
-      ctr[0][l] = uint64_t(int64_t(k[l])) & 0xffffffffu, ctr[1][l] = uint64_t(int64_t(k[l])) >> 32;
-      ctr[2][l] = key_hi_[l], ctr[3][l] = 0;
+    uint64_t ctr[4][L], key[2][L];
+    for (int l = 0; l < L; ++l) {  // the draws' key layout (link.h, drawBlock)
+      const aurora_control::DrawBlock b = aurora_control::drawBlock(seed_[l], combination_[l], uint64_t(int64_t(k[l])));
+      for (int w = 0; w < 4; ++w) ctr[w][l] = b.ctr[w];
+      for (int w = 0; w < 2; ++w) key[w][l] = b.key[w];
     }
-    LanePhilox<L, Arch>::blocks(ctr, key_, words_);
+    LanePhilox<L, Arch>::blocks(ctr, key, words_);
     up_.send(k, slot, words_[0], words_[1]);
     up_.receive(I::load_aligned(k), start, I::load_unaligned(lane_));
     const I newest = I::load_unaligned(up_.newest);
@@ -234,7 +234,8 @@ class LaneLinks {
   Int timeout_;
   Int lane_[L];  // 0, 1, ..., L - 1 (no batch members: this object is not over-aligned)
   LaneChannel<Window, Int, Arch> up_, down_;
-  uint64_t key_[2][L], key_hi_[L];  // 32-bit values
+  uint32_t seed_[L];         // each lane's link seed ...
+  uint64_t combination_[L];  // ... and what its draws are keyed by
   uint64_t words_[4][L];
   std::vector<T, xsimd::aligned_allocator<T, 64>> commands_ =
       std::vector<T, xsimd::aligned_allocator<T, 64>>(static_cast<size_t>(Window) * Inputs * L);  // [slot][i][lane]

@@ -138,11 +138,22 @@ struct StepDraws {
   }
 };
 
+// The block's key and counter of step `step`: the draws' key layout, for
+// every backend (stepDraws here; the SIMD engine's lanes, lane_links.h).
+struct DrawBlock {
+  uint32_t key[2], ctr[4];
+};
+AURORA_HD inline DrawBlock drawBlock(uint32_t seed, uint64_t combination, uint64_t step) {
+  return DrawBlock{{seed, static_cast<uint32_t>(combination)},
+                   {static_cast<uint32_t>(step), static_cast<uint32_t>(step >> 32),
+                    static_cast<uint32_t>(combination >> 32), 0u}};
+}
+
 AURORA_HD inline StepDraws stepDraws(uint32_t seed, uint64_t combination, uint64_t step) {
   r123::Philox4x32 philox;
-  const r123::Philox4x32::key_type key = {{seed, static_cast<uint32_t>(combination)}};
-  const r123::Philox4x32::ctr_type ctr = {{static_cast<uint32_t>(step), static_cast<uint32_t>(step >> 32),
-                                           static_cast<uint32_t>(combination >> 32), 0u}};
+  const DrawBlock b = drawBlock(seed, combination, step);
+  const r123::Philox4x32::key_type key = {{b.key[0], b.key[1]}};
+  const r123::Philox4x32::ctr_type ctr = {{b.ctr[0], b.ctr[1], b.ctr[2], b.ctr[3]}};
   const r123::Philox4x32::ctr_type r = philox(ctr, key);
   return StepDraws{PacketDraws{r.v[0], r.v[1]}, PacketDraws{r.v[2], r.v[3]}};
 }
