@@ -27,7 +27,7 @@ ControllerNode::ControllerNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
   refuseDuplicatedKeysInLoadedFiles(pnh_);
   // The vehicle, with the same range rules as the sim's: Ts for every law,
   // the whole model for the underactuated law, which inverts it.
-  const aurora_sim::ArdroneParams<double> vehicle = aurora_sim::loadVehicleParams(nh_, "vehicle");
+  const aurora_control::LawVehicleParams vehicle = aurora_sim::loadVehicleParams(nh_, "vehicle");
   Ts_ = vehicle.Ts;
   core_.reset(new Core());
   ControllerSettings& set = core_->settings;
@@ -327,7 +327,7 @@ void ControllerNode::onJoy(const sensor_msgs::Joy::ConstPtr& msg) {
     if (!was_held) ROS_WARN("controller: joystick override (deadman held)");
     // The joystick wins at once, not at the next cycle.
     double U[4];
-    aurora_sim::Ardrone2::fromDriver(joy_.sticks, U);
+    aurora_control::LawVehicle::fromDriver(joy_.sticks, U);
     sendCommand(U);
   } else if (was_held) {
     ROS_INFO("controller: joystick released: back to the controller");
@@ -375,7 +375,7 @@ void ControllerNode::cycle(const ros::Time& now) {
   ControlOutput out = decision.run_law ? core_->compute(ref) : core_->hover();
   std::string mode = decision.mode;
   if (joy_.deadman) {
-    aurora_sim::Ardrone2::fromDriver(joy_.sticks, out.U);
+    aurora_control::LawVehicle::fromDriver(joy_.sticks, out.U);
     mode = "joystick";
   } else if (resume_.active()) {
     resume_.apply(out.U);

@@ -12,7 +12,7 @@
 
 namespace aurora_control {
 
-void loadLaw(const ros::NodeHandle& pnh, const aurora_sim::ArdroneParams<double>& vehicle,
+void loadLaw(const ros::NodeHandle& pnh, const aurora_control::LawVehicleParams& vehicle,
              ControllerSettings& set) {
   readLaw(YamlReader("parameter ", "/"), paramAsYaml(pnh, "controller"), fullKey(pnh, "controller"), set);
   set.vehicle = vehicle;

@@ -25,7 +25,7 @@ using aurora_sim::rangedParam;
 // The law named by ~controller/name and its gains (all required), with the
 // vehicle model the underactuated law inverts. Unknown keys under
 // ~controller are refused naming the accepted ones for that law.
-void loadLaw(const ros::NodeHandle& pnh, const aurora_sim::ArdroneParams<double>& vehicle,
+void loadLaw(const ros::NodeHandle& pnh, const aurora_control::LawVehicleParams& vehicle,
              ControllerSettings& settings);
 
 // "Kp=0.5 Kd=0.85" or "k1_x=0.5 k2_x=2 ...": the gains in force, for the log.

@@ -85,7 +85,7 @@ class FormationCsv {
 };
 
 // The file's run with --delay's per-drone delays, checked.
-FormationRun<double, Line> loadRun(const FormationFlightOptions& o, const aurora_sim::ArdroneParams<double>& p,
+FormationRun<double, Line> loadRun(const FormationFlightOptions& o, const LawVehicleParams& p,
                                    const FormationFile& f) {
   FormationRun<double, Line> run = formationRun(f, p);
   if (!o.delays.empty() && o.delays.size() != 2) {

@@ -38,7 +38,7 @@ FormationRun<double, LineFormation<double>> FormationNode::loadRun(LawType& law)
   const std::string file = aurora_sim::requireParam<std::string>(pnh_, "formation_file", "a formation file (config/formations/NAME.yaml)");
   const std::string config_dir = aurora_sim::paramOr<std::string>(pnh_, "config_dir", "");
   const FormationFile f = readFormationFile(file, config_dir);
-  const aurora_sim::ArdroneParams<double> vehicle = aurora_sim::loadVehicleParams(pnh_, "vehicle");
+  const aurora_control::LawVehicleParams vehicle = aurora_sim::loadVehicleParams(pnh_, "vehicle");
   FormationRun<double, LineFormation<double>> run = formationRun(f, vehicle);
   law = f.drones[0].controller.law;
   for (int d = 0; d < kDrones; ++d) {

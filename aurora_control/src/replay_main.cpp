@@ -304,7 +304,7 @@ void readDrone(rosbag::Bag& bag, const std::string& bag_path, const std::string&
 }
 
 // The vehicle the underactuated law inverts (--vehicle, else ardrone2).
-aurora_sim::ArdroneParams<double> vehicleFor(const std::string& path) {
+aurora_control::LawVehicleParams vehicleFor(const std::string& path) {
   try {
     return aurora_sim::loadVehicleYaml(path.empty() ? aurora_sim::configDir() + "/vehicles/ardrone2.yaml" : path);
   } catch (const std::runtime_error& e) {

@@ -78,13 +78,13 @@ struct FormationObservation {
 
 // The robots' stacked positions (3 per robot, the shape's X) of their
 // states X (each Vehicle::kStates), and of their loops' models.
-template <class Shape, class Vehicle = aurora_sim::Ardrone2, typename T, class States>
+template <class Shape, class Vehicle = ArdroneLawData::Vehicle, typename T, class States>
 AURORA_HD inline void dronePositions(const States& X, T positions[Shape::kVariables]) {
   for (int d = 0; d < Shape::kDrones; ++d) {
     for (int i = 0; i < 3; ++i) positions[3 * d + i] = X[d][Vehicle::kPosition + i];
   }
 }
-template <class Shape, class Vehicle = aurora_sim::Ardrone2, typename T, class Loops>
+template <class Shape, class Vehicle = ArdroneLawData::Vehicle, typename T, class Loops>
 AURORA_HD inline void modelPositions(const Loops& state, T positions[Shape::kVariables]) {
   for (int d = 0; d < Shape::kDrones; ++d) {
     for (int i = 0; i < 3; ++i) positions[3 * d + i] = state[d].model.X[Vehicle::kPosition + i];

@@ -234,7 +234,7 @@ inline void refuseFormationDelays(const FormationRun<double, LineFormation<doubl
 // The run of a formation file with the drones' vehicle `vehicle`, its
 // period in whole drone steps (refused otherwise).
 inline FormationRun<double, LineFormation<double>> formationRun(const FormationFile& f,
-                                                                const aurora_sim::ArdroneParams<double>& vehicle) {
+                                                                const LawVehicleParams& vehicle) {
   FormationRun<double, LineFormation<double>> run;
   run.law = f.law;
   run.gains = f.gains;

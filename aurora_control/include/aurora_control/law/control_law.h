@@ -127,6 +127,12 @@ struct ArdroneLawData {
   using Memory = UnderactuatedMemory<T>;
 };
 
+// The vehicle the laws of the node, replay, flight and formations fly
+// (both AR.Drone laws share their data, so a law chosen at run time by
+// withLaw flies it): the one place those entry points choose a vehicle.
+using LawVehicle = ArdroneLawData::Vehicle;
+using LawVehicleParams = LawVehicle::Params<double>;
+
 // A law as a type (docs/architecture.md, "Laws"), what every generic loop
 // is instantiated on: its Data (the vehicle it flies, its gains and its own
 // memory: structs of T only), what of the state it reads (Input), and one

@@ -35,7 +35,7 @@ struct ControllerSettings {
   LawType law = LawType::kPdSaturated;
   PdGains<double> gains{0.0, 0.0};
   UnderactuatedGains<double> underactuated = UnderactuatedGains<double>::defaults();
-  aurora_sim::ArdroneParams<double> vehicle{};  // the model the underactuated law inverts
+  LawVehicleParams vehicle{};  // the model the underactuated law inverts
   long delay = 0;          // [samples] the uplink's base delay
   LinkParams link;         // the rest of the link (link.h, docs/links.md); apply with configureLink()
   bool clamp_commands = true;
@@ -179,7 +179,7 @@ class DelayedController {
     // re-sent state, does not count twice), at the loop clock's time.
     const long step = newest().step;
     if (step != metrics_step_) {
-      metrics_.template accumulate<aurora_sim::Ardrone2::kInputs>(criteria_, out.position_error, out.U, clock_.at(step, settings.Ts));
+      metrics_.template accumulate<LawVehicle::kInputs>(criteria_, out.position_error, out.U, clock_.at(step, settings.Ts));
       metrics_step_ = step;
     }
     out.iae = metrics_.iae;

@@ -29,7 +29,7 @@ struct FlightResult {
 // reference of that time: `iterations` = taskStepCount() flies a task's
 // steps 0..N.
 template <typename Observer>
-FlightResult runFlight(const aurora_sim::ArdroneParams<double>& p, const ControllerSettings& settings,
+FlightResult runFlight(const LawVehicleParams& p, const ControllerSettings& settings,
                        const Task<double>& task, long iterations, Observer observe) {
   const ArdroneRun<double> run{p, settings.vehicle, LawGains<double>{settings.gains, settings.underactuated},
                              settings.delay};

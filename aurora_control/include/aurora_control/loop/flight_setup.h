@@ -22,7 +22,7 @@ struct FlightFiles {
 };
 
 struct FlightSetup {
-  aurora_sim::ArdroneParams<double> vehicle;
+  LawVehicleParams vehicle;
   ControllerSettings settings;
   Task<double> task;
   long steps = 0;  // steps 0..N of the task (taskStepCount), as the node and report
