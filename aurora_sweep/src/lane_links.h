@@ -185,6 +185,11 @@ class LaneLinks {
     up_.start(l, link.uplink, link.uplink.delay);
     down_.start(l, link.downlink, link.downlink.delay);
     seed_[l] = link.seed, combination_[l] = key;
+    // The draws' key layout (link.h, drawBlock): the key and the
+    // combination's counter words are the same at every step.
+    const aurora_control::DrawBlock b = aurora_control::drawBlock(link.seed, key, 0);
+    for (int w = 0; w < 2; ++w) key_[w][l] = b.key[w];
+    for (int w = 2; w < 4; ++w) ctr_[w][l] = b.ctr[w];
   }
 
   // Each lane's history index (1-based) of the state its controller
@@ -194,13 +199,11 @@ class LaneLinks {
   I uplink(const I& count, const I& start, long slot) {
     alignas(64) Int k[L];
     (count - I(Int(1))).store_aligned(k);
-    uint64_t ctr[4][L], key[2][L];
-    for (int l = 0; l < L; ++l) {  // the draws' key layout (link.h, drawBlock)
+    for (int l = 0; l < L; ++l) {  // the step's counter words (link.h, drawBlock)
       const aurora_control::DrawBlock b = aurora_control::drawBlock(seed_[l], combination_[l], uint64_t(int64_t(k[l])));
-      for (int w = 0; w < 4; ++w) ctr[w][l] = b.ctr[w];
-      for (int w = 0; w < 2; ++w) key[w][l] = b.key[w];
+      ctr_[0][l] = b.ctr[0], ctr_[1][l] = b.ctr[1];
     }
-    LanePhilox<L, Arch>::blocks(ctr, key, words_);
+    LanePhilox<L, Arch>::blocks(ctr_, key_, words_);
     up_.send(k, slot, words_[0], words_[1]);
     up_.receive(I::load_aligned(k), start, I::load_unaligned(lane_));
     const I newest = I::load_unaligned(up_.newest);
@@ -236,6 +239,7 @@ class LaneLinks {
   LaneChannel<Window, Int, Arch> up_, down_;
   uint32_t seed_[L];         // each lane's link seed ...
   uint64_t combination_[L];  // ... and what its draws are keyed by
+  uint64_t key_[2][L], ctr_[4][L];  // their Philox key and counter (32-bit values)
   uint64_t words_[4][L];
   std::vector<T, xsimd::aligned_allocator<T, 64>> commands_ =
       std::vector<T, xsimd::aligned_allocator<T, 64>>(static_cast<size_t>(Window) * Inputs * L);  // [slot][i][lane]
