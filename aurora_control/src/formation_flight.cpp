@@ -22,10 +22,8 @@ using Line = LineFormation<double>;
 class FormationErrors {
  public:
   void add(const FormationObservation<double, Line>& o, double Ts) {
-    double X[6];
-    for (int d = 0; d < 2; ++d) {
-      for (int i = 0; i < 3; ++i) X[3 * d + i] = o.X_before[d][i];
-    }
+    double X[Line::kVariables];
+    dronePositions<Line>(o.X_before, X);
     if (double(o.k) * Ts < 10.0) return;
     double Q[6];
     Line::variables(X, Q);
@@ -68,12 +66,12 @@ class FormationCsv {
   void add(const FormationObservation<double, Line>& o, double Ts) {
     if (!f_) return;
     std::fprintf(f_, "%ld,%.17g", o.k, double(o.k) * Ts);
-    double P[6], Q[6];
-    for (int d = 0; d < 2; ++d) {
+    double P[Line::kVariables], Q[Line::kVariables];
+    for (int d = 0; d < Line::kDrones; ++d) {
       for (int i = 0; i < aurora_sim::kStateSize; ++i) std::fprintf(f_, ",%.17g", o.X_before[d][i]);
       for (int i = 0; i < 4; ++i) std::fprintf(f_, ",%.17g", o.steps[d].U[i]);
-      for (int i = 0; i < 3; ++i) P[3 * d + i] = o.X_before[d][i];
     }
+    dronePositions<Line>(o.X_before, P);
     Line::variables(P, Q);
     for (int i = 0; i < 6; ++i) std::fprintf(f_, ",%.17g", Q[i]);
     for (int i = 0; i < 6; ++i) std::fprintf(f_, ",%.17g", o.layer.Qd()[i]);

@@ -161,11 +161,11 @@ void FormationNode::publish(const Core::Tick& t, const ros::Time& stamp) {
   }
   formation_pub_.publish(m);
   if (t.k % kMarkerDecimation == 0 && markers_pub_.getNumSubscribers() > 0) {
-    double X[6];
     for (int d = 0; d < kDrones; ++d) {
       if (!core_->ready(d)) return;
-      for (int i = 0; i < 3; ++i) X[3 * d + i] = core_->newest(d).X[aurora_sim::kX + i];
     }
+    double X[LineFormation<double>::kVariables];
+    core_->newestPositions(X);
     markers_pub_.publish(formationMarkers(X, layer, "world"));
   }
 }

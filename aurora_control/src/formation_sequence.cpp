@@ -47,9 +47,7 @@ void FormationNode::flightCycle(const ros::Time& now) {
   serviceDriverCommands(c, now);
   if (c.started) {  // tick 0 from where the drones hover now
     double X0[LineFormation<double>::kVariables];
-    for (int d = 0; d < kDrones; ++d) {
-      for (int i = 0; i < 3; ++i) X0[3 * d + i] = core_->newest(d).X[aurora_sim::kX + i];
-    }
+    core_->newestPositions(X0);
     core_->startFrom(X0);
     formation_k_ = 0;
   }

@@ -30,12 +30,11 @@ class FormationBatch {
   static constexpr int L = LaneOps::L, D = OneLane::kDrones, N = OneLane::kVariables;
   using Int = xsimd::as_integer_t<T>;
   using I = xsimd::batch<Int, Arch>;
-  using DroneLaw = Law;
   using Data = typename Law::Data;
   using Vehicle = typename Law::Vehicle;
   static constexpr int S = Vehicle::kStates;
-  using History = LaneHistory<DroneLaw, T, Arch, Capacity>;
-  using Links = LaneModelLinks<DroneLaw, T, Arch, Capacity>;
+  using History = LaneHistory<Law, T, Arch, Capacity>;
+  using Links = LaneModelLinks<Law, T, Arch, Capacity>;
 
   FormationBatch(const FormationSetup<T, Shape, Data>& setup, const GridView& grid, long first, long total,
                  std::vector<SimResult>& out, std::atomic<long>& next, Progress& progress)

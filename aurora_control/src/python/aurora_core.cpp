@@ -92,8 +92,8 @@ py::dict simulateFormationFiles(const std::string& formation, const std::string&
         X.insert(X.end(), obs.X_before[d], obs.X_before[d] + 12);
         U.insert(U.end(), obs.steps[d].U, obs.steps[d].U + 4);
         R.insert(R.end(), obs.steps[d].ref.pos, obs.steps[d].ref.pos + 3);
-        for (int i = 0; i < 3; ++i) P[3 * d + i] = obs.X_before[d][i];
       }
+      dronePositions<LineFormation<double>>(obs.X_before, P);
       LineFormation<double>::variables(P, q);
       Q.insert(Q.end(), q, q + 6);
       Qd.insert(Qd.end(), obs.layer.Qd(), obs.layer.Qd() + 6);

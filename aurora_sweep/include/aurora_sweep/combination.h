@@ -43,7 +43,6 @@ struct ShapeLayout {
   AURORA_HD constexpr int delay(int robot) const { return kParamFirstRobotParam + robot; }
   AURORA_HD constexpr int k1(int i) const { return delay(robots) + i; }
   AURORA_HD constexpr int k2(int i) const { return k1(variables) + i; }
-  AURORA_HD constexpr int gains() const { return 2 * variables; }
   AURORA_HD constexpr int linkValue(int robot, int i) const { return k2(variables) + robot * kLinkParamCount + i; }
   AURORA_HD constexpr int count() const { return linkValue(robots, 0); }
 };

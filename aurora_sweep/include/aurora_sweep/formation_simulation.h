@@ -31,7 +31,6 @@ using LineRun = ShapeRun<T>;
 template <typename T, template <typename> class Shape = aurora_control::LineFormation,
           class Data = aurora_control::ArdroneLawData>
 struct FormationSetup {
-  using LawData = Data;
   ShapeRun<T, Shape, Data> run;  // the formation file's, in T
   aurora_control::FormationCriteria<T> criteria;
   long iterations;  // ticks (2700 for 90 s)

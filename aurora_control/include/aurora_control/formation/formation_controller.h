@@ -48,9 +48,7 @@ class FormationController {
       s.Ts = run.drone[d].plant.Ts;
       core_[d].configureLink(static_cast<uint64_t>(d));  // keyed by the drone, as runFormation
     }
-    for (int d = 0; d < kDrones; ++d) {
-      for (int i = 0; i < 3; ++i) start_[3 * d + i] = run.drone[d].start[i];
-    }
+    startPositions(run, start_);
     startLayer();
   }
 
@@ -69,6 +67,12 @@ class FormationController {
   }
   bool ready(int d) const { return !core_[d].empty(); }
   const StateSample& newest(int d) const { return core_[d].newest(); }
+  // The drones' stacked positions of their newest states (every drone ready).
+  void newestPositions(double X[Line::kVariables]) const {
+    const double* newest_X[kDrones];
+    for (int d = 0; d < kDrones; ++d) newest_X[d] = core_[d].newest().X;
+    dronePositions<Line>(newest_X, X);
+  }
 
   // Tick k (the layer's period counts from k = 0; a k below the last one
   // starts the layer again, as the drones' reset did).
@@ -80,9 +84,9 @@ class FormationController {
     t.layer_ran = layerDue(k, run_.period_steps);
     if (t.layer_ran) {
       double seen[Line::kVariables], Qd[Line::kVariables];
-      for (int d = 0; d < kDrones; ++d) {
-        for (int i = 0; i < 3; ++i) seen[3 * d + i] = core_[d].delivered().X[aurora_sim::kX + i];
-      }
+      const double* delivered[kDrones];
+      for (int d = 0; d < kDrones; ++d) delivered[d] = core_[d].delivered().X;
+      dronePositions<Line>(delivered, seen);
       run_.reference.at(taskTime(double(k), run_.drone[0].plant.Ts), Qd);
       layer_.update(seen, Qd);
     }

@@ -40,8 +40,6 @@ using DroneStep = LoopStep<T, Data::Vehicle::kInputs>;
 
 template <typename T, class Shape, class Data = ArdroneLawData>
 struct FormationRun {
-  using LawData = Data;
-  using Vehicle = typename Data::Vehicle;
   static constexpr int kDrones = Shape::kDrones, kN = Shape::kVariables;
   FormationDrone<T, Data> drone[kDrones];
   FormationLaw law = FormationLaw::kPositionPriority;
@@ -102,14 +100,20 @@ AURORA_HD inline void startLayerAt(const FormationRun<T, Shape, Data>& run, cons
   layer.start(X0, Qd);
 }
 
+// The drones' stacked start positions (the shape's X before tick 0).
+template <typename T, class Shape, class Data>
+AURORA_HD inline void startPositions(const FormationRun<T, Shape, Data>& run, T X0[Shape::kVariables]) {
+  for (int d = 0; d < Shape::kDrones; ++d) {
+    for (int i = 0; i < 3; ++i) X0[3 * d + i] = run.drone[d].start[i];
+  }
+}
+
 // The layer before its first period: the references at the drones' starts,
 // the previous Qd = Qd(0) (formation_layer.h).
 template <typename T, class Shape, class Data>
 AURORA_HD inline void startLayer(const FormationRun<T, Shape, Data>& run, FormationLayer<T, Shape>& layer) {
   T X0[Shape::kVariables];
-  for (int d = 0; d < Shape::kDrones; ++d) {
-    for (int i = 0; i < 3; ++i) X0[3 * d + i] = run.drone[d].start[i];
-  }
+  startPositions(run, X0);
   startLayerAt(run, X0, layer);
 }
 
