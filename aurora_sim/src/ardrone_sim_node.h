@@ -11,7 +11,7 @@
 
 #include <string>
 
-#include "aurora_sim/ardrone_model.h"
+#include "aurora_sim/vehicle/ardrone2.h"
 #include "aurora_sim/rejection_burst.h"
 
 namespace aurora_sim {
@@ -42,8 +42,8 @@ class ArdroneSimNode {
   ros::Time lockstepTime() const;
 
   ros::NodeHandle nh_, pnh_;
-  ArdroneParams<double> params_;
-  ArdroneState<double> model_;
+  Ardrone2::Params<double> params_;
+  Ardrone2::State<double> model_;
   Mode mode_;
   Flight flight_;
   double cmd_timeout_;

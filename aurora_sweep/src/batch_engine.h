@@ -18,7 +18,7 @@
 
 namespace xsimd {
 // The model's sin and cos of one angle in one go (found by argument-dependent
-// lookup from aurora_sim::ardroneStep): xsimd shares the range reduction.
+// lookup from the AR.Drone's model step): xsimd shares the range reduction.
 template <class T, class A>
 inline void sinCos(const batch<T, A>& x, batch<T, A>& s, batch<T, A>& c) {
   const auto sc = xsimd::sincos(x);

@@ -46,21 +46,13 @@ typename Vehicle::template Params<double> loadVehicleFile(const std::string& pat
     type = root.IsMap() && root["type"] ? root["type"].as<std::string>() : "";
   } catch (const YAML::Exception&) {
   }
-  const std::string refusal = vehicleTypeRefusal<Vehicle>(type, flown_by);
-  if (!refusal.empty()) throw ConfigError("vehicle file '" + path + "': " + refusal);
-  typename Vehicle::template Params<double> p{};
-  for (const auto& key : Vehicle::fileKeys()) {
-    const double value = vehicleFileNumber(root, path, key.name, key.unit);
-    const std::string problem = checkVehicleValue(path + ": ", key, value);
-    if (!problem.empty()) throw ConfigError(problem);
-    Vehicle::setFileValue(p, key, value);
-  }
-  Vehicle::finishFile(p);
-  return p;
+  return vehicleFromKeys<Vehicle>("vehicle file '" + path + "': ", type, flown_by, path + ": ", [&](const auto& key) {
+    return vehicleFileNumber(root, path, key.name, key.unit);
+  });
 }
 
 // The AR.Drone 2.0's (every loop of this build flies it).
-inline ArdroneParams<double> loadVehicleYaml(const std::string& path, const std::string& flown_by = "this loop") {
+inline Ardrone2::Params<double> loadVehicleYaml(const std::string& path, const std::string& flown_by = "this loop") {
   return loadVehicleFile<Ardrone2>(path, flown_by);
 }
 

@@ -212,7 +212,7 @@ RunnerResult runStudy(LawType law, const ArdroneRun<T>& run, const RunnerConfig<
 
 // The delay study's PD law on drone `p` (the thesis's runs).
 template <typename T, typename Observer = NoObserver>
-RunnerResult runPositioning(const aurora_sim::ArdroneParams<T>& p, const RunnerConfig<T>& cfg,
+RunnerResult runPositioning(const LawVehicle::Params<T>& p, const RunnerConfig<T>& cfg,
                             const PdGains<T>& gains, long delay, Observer observe = Observer()) {
   ArdroneRun<T> run{p, p, LawGains<T>{gains, UnderactuatedGains<T>::defaults()}, delay};
   return runStudy(LawType::kPdSaturated, run, cfg, observe);

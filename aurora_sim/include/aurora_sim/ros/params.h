@@ -76,20 +76,13 @@ typename Vehicle::template Params<double> loadVehicleParams(const ros::NodeHandl
   if (nh.hasParam(ns + "/type") && !nh.getParam(ns + "/type", type)) {
     throw ConfigError("vehicle parameter '" + prefix + "type' is not a name" + load);
   }
-  const std::string refusal = vehicleTypeRefusal<Vehicle>(type, flown_by);
-  if (!refusal.empty()) throw ConfigError("vehicle parameters '" + prefix + "': " + refusal);
-  typename Vehicle::template Params<double> p{};
-  for (const auto& key : Vehicle::fileKeys()) {
+  return vehicleFromKeys<Vehicle>("vehicle parameters '" + prefix + "': ", type, flown_by, prefix, [&](const auto& key) {
     double value = 0.0;
     if (!nh.getParam(ns + "/" + key.name, value)) {
       throw ConfigError("missing vehicle parameter '" + prefix + key.name + "'" + load);
     }
-    const std::string problem = checkVehicleValue(prefix, key, value);
-    if (!problem.empty()) throw ConfigError(problem);
-    Vehicle::setFileValue(p, key, value);
-  }
-  Vehicle::finishFile(p);
-  return p;
+    return value;
+  });
 }
 
 }  // namespace aurora_sim

@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include "aurora_sim/refusal_text.h"
 #include "aurora_sim/vehicle/ardrone2.h"
 
 namespace aurora_sim {
@@ -31,6 +32,27 @@ std::string vehicleTypeRefusal(const std::string& type, const std::string& flown
            ".yaml), or a controller for '" + type + "'";
   }
   return "";
+}
+
+// A vehicle's parameters as every loader reads them (a YAML file, the
+// parameter server): `type` checked first (refused as `where` + why), then
+// each of its file's keys from number(key), checked against its range
+// (named with `prefix`), then the derived values.
+template <class Vehicle, class Number>
+typename Vehicle::template Params<double> vehicleFromKeys(const std::string& where, const std::string& type,
+                                                          const std::string& flown_by, const std::string& prefix,
+                                                          Number&& number) {
+  const std::string refusal = vehicleTypeRefusal<Vehicle>(type, flown_by);
+  if (!refusal.empty()) throw ConfigError(where + refusal);
+  typename Vehicle::template Params<double> p{};
+  for (const auto& key : Vehicle::fileKeys()) {
+    const double value = number(key);
+    const std::string problem = checkVehicleValue(prefix, key, value);
+    if (!problem.empty()) throw ConfigError(problem);
+    Vehicle::setFileValue(p, key, value);
+  }
+  Vehicle::finishFile(p);
+  return p;
 }
 
 }  // namespace aurora_sim
