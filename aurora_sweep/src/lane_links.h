@@ -184,7 +184,6 @@ class LaneLinks {
   void start(int l, const aurora_control::LinkParams& link, uint64_t key) {
     up_.start(l, link.uplink, link.uplink.delay);
     down_.start(l, link.downlink, link.downlink.delay);
-    seed_[l] = link.seed, combination_[l] = key;
     // The draws' key layout (link.h, drawBlock): the key and the
     // combination's counter words are the same at every step.
     const aurora_control::DrawBlock b = aurora_control::drawBlock(link.seed, key, 0);
@@ -199,9 +198,9 @@ class LaneLinks {
   I uplink(const I& count, const I& start, long slot) {
     alignas(64) Int k[L];
     (count - I(Int(1))).store_aligned(k);
-    for (int l = 0; l < L; ++l) {  // the step's counter words (link.h, drawBlock)
-      const aurora_control::DrawBlock b = aurora_control::drawBlock(seed_[l], combination_[l], uint64_t(int64_t(k[l])));
-      ctr_[0][l] = b.ctr[0], ctr_[1][l] = b.ctr[1];
+    for (int l = 0; l < L; ++l) {  // the step's counter words (link.h, DrawBlock)
+      const uint64_t step = uint64_t(int64_t(k[l]));
+      ctr_[0][l] = aurora_control::DrawBlock::stepLow(step), ctr_[1][l] = aurora_control::DrawBlock::stepHigh(step);
     }
     LanePhilox<L, Arch>::blocks(ctr_, key_, words_);
     up_.send(k, slot, words_[0], words_[1]);
@@ -237,9 +236,7 @@ class LaneLinks {
   Int timeout_;
   Int lane_[L];  // 0, 1, ..., L - 1 (no batch members: this object is not over-aligned)
   LaneChannel<Window, Int, Arch> up_, down_;
-  uint32_t seed_[L];         // each lane's link seed ...
-  uint64_t combination_[L];  // ... and what its draws are keyed by
-  uint64_t key_[2][L], ctr_[4][L];  // their Philox key and counter (32-bit values)
+  uint64_t key_[2][L], ctr_[4][L];  // each lane's Philox key and counter (32-bit values)
   uint64_t words_[4][L];
   std::vector<T, xsimd::aligned_allocator<T, 64>> commands_ =
       std::vector<T, xsimd::aligned_allocator<T, 64>>(static_cast<size_t>(Window) * Inputs * L);  // [slot][i][lane]

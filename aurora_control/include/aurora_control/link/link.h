@@ -140,13 +140,16 @@ struct StepDraws {
 
 // The block's key and counter of step `step`: the draws' key layout, for
 // every backend (stepDraws here; the SIMD engine's lanes, lane_links.h).
+// The key and the counter's last two words are the same at every step;
+// only the step's two words (stepLow, stepHigh) change.
 struct DrawBlock {
   uint32_t key[2], ctr[4];
+  AURORA_HD static uint32_t stepLow(uint64_t step) { return static_cast<uint32_t>(step); }
+  AURORA_HD static uint32_t stepHigh(uint64_t step) { return static_cast<uint32_t>(step >> 32); }
 };
 AURORA_HD inline DrawBlock drawBlock(uint32_t seed, uint64_t combination, uint64_t step) {
   return DrawBlock{{seed, static_cast<uint32_t>(combination)},
-                   {static_cast<uint32_t>(step), static_cast<uint32_t>(step >> 32),
-                    static_cast<uint32_t>(combination >> 32), 0u}};
+                   {DrawBlock::stepLow(step), DrawBlock::stepHigh(step), static_cast<uint32_t>(combination >> 32), 0u}};
 }
 
 AURORA_HD inline StepDraws stepDraws(uint32_t seed, uint64_t combination, uint64_t step) {
