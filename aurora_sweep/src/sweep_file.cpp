@@ -398,8 +398,11 @@ void readCombinations(const Reader& r, const YAML::Node& s, const std::string& s
     orderAxes(r, s, varied.axes, spec);
   }
   requireAll(r, spec);
-  const std::vector<int> delays = spec.formation() ? std::vector<int>{kLineLayout.delay(0), kLineLayout.delay(1)}
-                                                   : std::vector<int>{kParamDelay};
+  std::vector<int> delays{kParamDelay};
+  if (spec.formation()) {
+    delays.clear();
+    for (int d = 0; d < kLineLayout.robots; ++d) delays.push_back(kLineLayout.delay(d));
+  }
   spec.max_delay = 0;
   for (int id : delays) {
     spec.max_delay = std::max(spec.max_delay, static_cast<long>(spec.maxValue(id)));

@@ -56,6 +56,20 @@ inline std::vector<SimResult> runOn(const std::string& key, const SweepSpec& spe
   return out;
 }
 
+// `view`'s axes: parameter params[a] over axes[a] (axis 0 varies fastest;
+// the values stay in `axes`), one run per combination; `fixed` is the
+// caller's.
+inline void setAxes(GridView& view, const int* params, const std::vector<std::vector<double>>& axes) {
+  view.n_axes = static_cast<int>(axes.size());
+  for (int a = 0; a < view.n_axes; ++a) {
+    view.param[a] = params[a];
+    view.count[a] = static_cast<long>(axes[a].size());
+    view.values[a] = axes[a].data();
+  }
+  view.points = nullptr, view.n_points = 0, view.points_first = 0, view.point_cols = 0;
+  view.repeats = 1;
+}
+
 // A launch of `n` runs in blocks of `block` threads, on the host: thread(b,
 // t, out) for every (block, thread), as the kernel's threads would run; the
 // records they wrote.

@@ -95,14 +95,7 @@ struct ThreeGrid {
     for (int i = 0; i < kParamCount; ++i) view.fixed[i] = std::nan("");
     for (int i = 0; i < kAt.variables; ++i) view.fixed[kAt.k1(i)] = 0.5, view.fixed[kAt.k2(i)] = 0.5;
     view.fixed[kAt.linkValue(2, aurora_control::kLinkUplinkLoss)] = loss_3;
-    view.n_axes = 4;
-    for (int a = 0; a < 4; ++a) {
-      view.param[a] = params[a];
-      view.count[a] = static_cast<long>(axes[a].size());
-      view.values[a] = axes[a].data();
-    }
-    view.points = nullptr, view.n_points = 0, view.points_first = 0, view.point_cols = 0;
-    view.repeats = 1;
+    test::setAxes(view, params, axes);
   }
 };
 

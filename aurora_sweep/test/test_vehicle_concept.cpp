@@ -32,14 +32,7 @@ struct PointGrid {
     for (int i = 0; i < kParamCount; ++i) view.fixed[i] = 0.0;
     for (int i = 0; i < kModelFactorCount; ++i) view.fixed[kParamFirstModelFactor + i] = 1.0;
     for (int i = 0; i < kLinkParamCount; ++i) view.fixed[kParamFirstLinkValue + i] = std::nan("");
-    view.n_axes = 4;
-    for (int a = 0; a < 4; ++a) {
-      view.param[a] = params[a];
-      view.count[a] = static_cast<long>(axes[a].size());
-      view.values[a] = axes[a].data();
-    }
-    view.points = nullptr, view.n_points = 0, view.points_first = 0, view.point_cols = 0;
-    view.repeats = 1;
+    test::setAxes(view, params, axes);
   }
 };
 
