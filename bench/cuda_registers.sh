@@ -10,7 +10,7 @@ ARCH=${1:-sm_90}
 NVCC=$(command -v nvcc || echo /usr/local/cuda/bin/nvcc)
 cd "$(dirname "$0")/.."
 "$NVCC" -c aurora_sweep/cuda/cuda_backend.cu -o /dev/null -arch="$ARCH" --fmad=false -O3 -std=c++14 \
-  -Xptxas -v -Iaurora_sweep/include -Iaurora_control/include -Iaurora_sim/include 2>&1 |
+  -Xptxas -v -Iaurora_sweep/include -Iaurora_control/include -Iaurora_sim/include -Iaurora_common/include 2>&1 |
 python3 -c '
 import re, sys
 law = {"0": "pd_saturated", "1": "underactuated"}

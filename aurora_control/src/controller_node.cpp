@@ -11,7 +11,7 @@
 
 #include "aurora_sim/command_mapping.h"
 #include "aurora_sim/ros/conversions.h"
-#include "aurora_sim/ros/params.h"
+#include "aurora_sim/ros/vehicle_params.h"
 #include "aurora_control/law/law_yaml.h"
 #include "aurora_control/params/live_settings.h"
 #include "aurora_control/task/tracking.h"
@@ -35,7 +35,7 @@ ControllerNode::ControllerNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
   loadLaw(pnh_, vehicle, set);
   const long given_delay = readDelaySamples();
   loadLink(pnh_, given_delay, set);
-  set.clamp_commands = aurora_sim::boolParam(pnh_, "clamp_commands", true);
+  set.clamp_commands = aurora_common::boolParam(pnh_, "clamp_commands", true);
   const std::string mode = readLoopMode();
   task_ = loadTask(pnh_);
   task_iterations_ = taskStepCount(task_.duration(), Ts_);  // steps 0..N (docs/controllers.md)
@@ -115,7 +115,7 @@ void ControllerNode::refuseDelayBeyondTheTask(long delay) const {
 // link:=) and, unless ideal, every value that defines it.
 std::string ControllerNode::linkName() const {
   const LinkParams& l = core_->settings.link;
-  const std::string name = aurora_sim::paramOr<std::string>(pnh_, "link_name", pnh_.hasParam("link") ? "~link" : "ideal");
+  const std::string name = aurora_common::paramOr<std::string>(pnh_, "link_name", pnh_.hasParam("link") ? "~link" : "ideal");
   return l.ideal() && l.uplink.delay == 0 ? name : name + " (" + linkText(l) + ")";
 }
 
@@ -146,7 +146,7 @@ long ControllerNode::readDelaySamples() {
                                      : std::string("is refused: accepted ") + (has_seconds ? "seconds" : delayRangeText());
   if (!refusal.empty()) {
     throw ConfigError("parameter '" + fullKey(pnh_, key) + "' = " +
-                      (number ? aurora_sim::numberText(value) : std::string("(not a number)")) + " " + refusal);
+                      (number ? aurora_common::numberText(value) : std::string("(not a number)")) + " " + refusal);
   }
   if (has_seconds) {
     ROS_INFO("controller: delay %.6f s rounded to %ld whole samples of Ts = %.6f s (%.6f s)", value, samples, Ts_,

@@ -28,7 +28,7 @@ class ControllerNode {
  public:
   static constexpr int kHistoryCapacity = kDelayHistory;  // limits.h: delays up to 2047 samples (68 s)
 
-  // Throws aurora_sim::ConfigError on a missing or invalid parameter.
+  // Throws aurora_common::ConfigError on a missing or invalid parameter.
   ControllerNode(ros::NodeHandle nh, ros::NodeHandle private_nh);
 
  private:

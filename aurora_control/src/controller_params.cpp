@@ -8,7 +8,7 @@
 #include "aurora_control/link/link_yaml.h"
 #include "aurora_control/task/task_yaml.h"
 #include "param_tree.h"
-#include "aurora_sim/ros/params.h"
+#include "aurora_common/ros/params.h"
 
 namespace aurora_control {
 
@@ -98,7 +98,7 @@ AxisMap axisParam(const ros::NodeHandle& pnh, const std::string& key, const Axis
 SafetyConfig loadSafetyConfig(const ros::NodeHandle& pnh) {
   const SafetyConfig d;  // the defaults, written once in flight_supervisor.h
   SafetyConfig c;
-  c.flight_sequence = aurora_sim::boolParam(pnh, "safety/flight_sequence", d.flight_sequence);
+  c.flight_sequence = aurora_common::boolParam(pnh, "safety/flight_sequence", d.flight_sequence);
   c.takeoff_altitude = rangedParam(pnh, "safety/takeoff_altitude", d.takeoff_altitude, 0.2, 5.0, "m");
   c.takeoff_timeout = rangedParam(pnh, "safety/takeoff_timeout", d.takeoff_timeout, 1.0, 120.0, "s");
   c.hover_after = rangedParam(pnh, "safety/hover_after", d.hover_after, 0.01, 60.0, "s");
@@ -128,7 +128,7 @@ SafetyConfig loadSafetyConfig(const ros::NodeHandle& pnh) {
 }
 
 bool loadJoystickConfig(const ros::NodeHandle& pnh, JoystickConfig& c) {
-  if (!aurora_sim::boolParam(pnh, "joystick/enabled", false)) return false;
+  if (!aurora_common::boolParam(pnh, "joystick/enabled", false)) return false;
   const JoystickConfig d;
   c.deadman_button = buttonParam(pnh, "joystick/buttons/deadman", d.deadman_button);
   if (c.deadman_button < 0) {

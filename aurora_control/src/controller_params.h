@@ -12,15 +12,15 @@
 #include "aurora_control/robot/joystick.h"
 #include "aurora_control/loop/delayed_controller.h"
 #include "aurora_control/task/task.h"
-#include "aurora_sim/ros/params.h"
+#include "aurora_common/ros/params.h"
 
 namespace aurora_control {
 
-// The strict ROS parameter readers (aurora_sim/ros/params.h) the node's
+// The strict ROS parameter readers (aurora_common/ros/params.h) the node's
 // sources use.
-using aurora_sim::fullKey;
-using aurora_sim::paramOr;
-using aurora_sim::rangedParam;
+using aurora_common::fullKey;
+using aurora_common::paramOr;
+using aurora_common::rangedParam;
 
 // The law named by ~controller/name and its gains (all required), with the
 // vehicle model the underactuated law inverts. Unknown keys under

@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "aurora_control/loop/flight_setup.h"
-#include "aurora_sim/ros/config_dir.h"
+#include "aurora_common/ros/config_dir.h"
 #include "formation_flight.h"
 #include "option_values.h"
 
@@ -47,7 +47,7 @@ void refuseFlightOnlyOptions(const po::variables_map& vm) {
 }
 
 bool parse(int argc, char** argv, Options& o) {
-  const std::string config = o.config = aurora_sim::configDir();  // throws: says what to source
+  const std::string config = o.config = aurora_common::configDir();  // throws: says what to source
   po::options_description d("usage: flight [options]\n\nFlies one task offline with the controller node's core and prints its tracking error.\n\noptions");
   d.add_options()("help,h", "this text")
       ("controller", po::value(&o.controller)->default_value(config + "/controllers/pd_saturated.yaml"), "controller YAML (law and gains)")

@@ -1,7 +1,7 @@
 // The formation node: the drones of a formation file, flown together.
-#include "aurora_sim/ros/node_main.h"
+#include "aurora_common/ros/node_main.h"
 #include "formation_node.h"
 
 int main(int argc, char** argv) {
-  return aurora_sim::runNode<aurora_control::FormationNode>(argc, argv, "formation_controller");
+  return aurora_common::runNode<aurora_control::FormationNode>(argc, argv, "formation_controller");
 }

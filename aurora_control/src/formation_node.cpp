@@ -7,7 +7,7 @@
 #include "param_tree.h"
 #include "aurora_control/ros/control_msg.h"
 #include "aurora_sim/ros/conversions.h"
-#include "aurora_sim/ros/params.h"
+#include "aurora_sim/ros/vehicle_params.h"
 
 namespace aurora_control {
 
@@ -16,15 +16,15 @@ FormationNode::FormationNode(ros::NodeHandle nh, ros::NodeHandle private_nh) : n
   LawType law = LawType::kUnderactuated;
   const FormationRun<double, LineFormation<double>> run = loadRun(law);
   core_.reset(new Core(run, law));
-  const std::string mode = aurora_sim::paramOr<std::string>(pnh_, "mode", "realtime");
+  const std::string mode = aurora_common::paramOr<std::string>(pnh_, "mode", "realtime");
   if (mode != "realtime" && mode != "lockstep") {
-    throw aurora_sim::ConfigError("parameter '" + aurora_sim::fullKey(pnh_, "mode") + "' = '" + mode +
+    throw aurora_common::ConfigError("parameter '" + aurora_common::fullKey(pnh_, "mode") + "' = '" + mode +
                                   "' is invalid: accepted values 'realtime', 'lockstep'");
   }
   lockstep_ = mode == "lockstep";
   configureSequence();
-  cmd_subscribers_ = static_cast<int>(aurora_sim::rangedParam(pnh_, "lockstep_subscribers/cmd_vel", 1, 0, 100, ""));
-  formation_subscribers_ = static_cast<int>(aurora_sim::rangedParam(pnh_, "lockstep_subscribers/formation", 0, 0, 100, ""));
+  cmd_subscribers_ = static_cast<int>(aurora_common::rangedParam(pnh_, "lockstep_subscribers/cmd_vel", 1, 0, 100, ""));
+  formation_subscribers_ = static_cast<int>(aurora_common::rangedParam(pnh_, "lockstep_subscribers/formation", 0, 0, 100, ""));
   connect();
   ROS_INFO("formation_controller: %s, drones %s and %s, delays %ld and %ld samples, %s law, layer every %ld steps",
            mode.c_str(), drones_[0].c_str(), drones_[1].c_str(), run.drone[0].delay, run.drone[1].delay,
@@ -35,8 +35,8 @@ FormationNode::FormationNode(ros::NodeHandle nh, ros::NodeHandle private_nh) : n
 // and ~delay_1, ~delay_2 (-1: the file's); ~drones, when given, must be the
 // file's namespaces (the launch started those sims).
 FormationRun<double, LineFormation<double>> FormationNode::loadRun(LawType& law) {
-  const std::string file = aurora_sim::requireParam<std::string>(pnh_, "formation_file", "a formation file (config/formations/NAME.yaml)");
-  const std::string config_dir = aurora_sim::paramOr<std::string>(pnh_, "config_dir", "");
+  const std::string file = aurora_common::requireParam<std::string>(pnh_, "formation_file", "a formation file (config/formations/NAME.yaml)");
+  const std::string config_dir = aurora_common::paramOr<std::string>(pnh_, "config_dir", "");
   const FormationFile f = readFormationFile(file, config_dir);
   const aurora_control::LawVehicleParams vehicle = aurora_sim::loadVehicleParams(pnh_, "vehicle");
   FormationRun<double, LineFormation<double>> run = formationRun(f, vehicle);
@@ -44,23 +44,23 @@ FormationRun<double, LineFormation<double>> FormationNode::loadRun(LawType& law)
   for (int d = 0; d < kDrones; ++d) {
     drones_.push_back(f.drones[d].name_space);
     const std::string key = "delay_" + std::to_string(d + 1);
-    const double given = aurora_sim::rangedParam(pnh_, key, -1, -1, double(kMaxDelaySamples), "samples (-1: the file's)");
+    const double given = aurora_common::rangedParam(pnh_, key, -1, -1, double(kMaxDelaySamples), "samples (-1: the file's)");
     if (given != double(long(given))) {
-      throw aurora_sim::ConfigError("parameter '" + aurora_sim::fullKey(pnh_, key) + "' = " + aurora_sim::numberText(given) +
+      throw aurora_common::ConfigError("parameter '" + aurora_common::fullKey(pnh_, key) + "' = " + aurora_common::numberText(given) +
                                     " is refused: accepted whole samples");
     }
     // A delay given replaces the drone's, its link's uplink delay included (docs/links.md).
     if (given >= 0) run.drone[d].delay = static_cast<long>(given);
   }
-  refuseFormationDelays(run, vehicle.Ts, {aurora_sim::fullKey(pnh_, "delay_1"), aurora_sim::fullKey(pnh_, "delay_2")});
+  refuseFormationDelays(run, vehicle.Ts, {aurora_common::fullKey(pnh_, "delay_1"), aurora_common::fullKey(pnh_, "delay_2")});
   std::vector<std::string> launched;
   if (pnh_.getParam("drones", launched) && launched != drones_) {
-    throw aurora_sim::ConfigError("parameter '" + aurora_sim::fullKey(pnh_, "drones") + "': the launch started drones '" +
+    throw aurora_common::ConfigError("parameter '" + aurora_common::fullKey(pnh_, "drones") + "': the launch started drones '" +
                                   (launched.empty() ? std::string() : launched[0]) + "', ... but the formation file '" + file +
                                   "' names " + drones_[0] + " and " + drones_[1] + ": give the file's namespaces");
   }
   if (formationHistory(run) > kMaxDelaySamples) {
-    throw aurora_sim::ConfigError("the drones' delays plus their links' jitter need more than " +
+    throw aurora_common::ConfigError("the drones' delays plus their links' jitter need more than " +
                                   std::to_string(kMaxDelaySamples) + " samples of history");
   }
   return run;

@@ -27,7 +27,7 @@ namespace aurora_control {
 
 class FormationNode {
  public:
-  // Throws aurora_sim::ConfigError on a missing or invalid parameter.
+  // Throws aurora_common::ConfigError on a missing or invalid parameter.
   FormationNode(ros::NodeHandle nh, ros::NodeHandle private_nh);
 
  private:

@@ -17,8 +17,8 @@ void FormationNode::configureSequence() {
   sequence_ = safety_.flight_sequence;
   if (!sequence_) return;
   if (lockstep_) {
-    throw aurora_sim::ConfigError("parameter '" + aurora_sim::fullKey(pnh_, "safety/flight_sequence") +
-                                  "' = true needs '" + aurora_sim::fullKey(pnh_, "mode") +
+    throw aurora_common::ConfigError("parameter '" + aurora_common::fullKey(pnh_, "safety/flight_sequence") +
+                                  "' = true needs '" + aurora_common::fullKey(pnh_, "mode") +
                                   "' = 'realtime': real drones fly in real time");
   }
   std::string names[kDrones];

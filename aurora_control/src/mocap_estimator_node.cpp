@@ -7,13 +7,13 @@
 #include <vector>
 
 #include "aurora_sim/ros/conversions.h"
-#include "aurora_sim/ros/params.h"
+#include "aurora_sim/ros/vehicle_params.h"
 
 namespace aurora_control {
 
-using aurora_sim::fullKey;
-using aurora_sim::ConfigError;
-using aurora_sim::paramOr;
+using aurora_common::fullKey;
+using aurora_common::ConfigError;
+using aurora_common::paramOr;
 
 namespace {
 
@@ -31,7 +31,7 @@ MocapEstimatorNode::MocapEstimatorNode(ros::NodeHandle nh, ros::NodeHandle priva
     : nh_(nh), pnh_(private_nh) {
   const double Ts = aurora_sim::loadVehicleParams(nh_, "vehicle").Ts;
   MocapFilterConfig filter;
-  using aurora_sim::rangedParam;
+  using aurora_common::rangedParam;
   filter.velocity_cutoff_hz =
       rangedParam(pnh_, "filter/velocity_cutoff_hz", filter.velocity_cutoff_hz, 0.0, 100.0, "Hz", false);
   filter.rate_cutoff_hz =

@@ -16,7 +16,7 @@ namespace aurora_control {
 
 class MocapEstimatorNode {
  public:
-  // Throws aurora_sim::ConfigError on a missing or invalid parameter.
+  // Throws aurora_common::ConfigError on a missing or invalid parameter.
   MocapEstimatorNode(ros::NodeHandle nh, ros::NodeHandle private_nh);
 
  private:

@@ -5,8 +5,8 @@
 #include <set>
 
 #include "aurora_control/params/yaml_reader.h"
-#include "aurora_sim/ros/params.h"
-#include "aurora_sim/yaml_file.h"
+#include "aurora_common/ros/params.h"
+#include "aurora_common/yaml_file.h"
 
 namespace aurora_control {
 
@@ -52,7 +52,7 @@ void refuseUnknownParams(const ros::NodeHandle& nh, const std::string& group,
                          const std::vector<std::string>& accepted, const std::string& hint) {
   std::vector<std::string> names;
   ros::param::getParamNames(names);
-  const std::string prefix = (group.empty() ? nh.getNamespace() : aurora_sim::fullKey(nh, group)) + "/";
+  const std::string prefix = (group.empty() ? nh.getNamespace() : aurora_common::fullKey(nh, group)) + "/";
   std::set<std::string> seen;
   for (const std::string& name : names) {
     if (name.compare(0, prefix.size(), prefix) != 0) continue;
@@ -60,7 +60,7 @@ void refuseUnknownParams(const ros::NodeHandle& nh, const std::string& group,
     const std::string first = rest.substr(0, rest.find('/'));
     if (!seen.insert(first).second) continue;
     if (std::find(accepted.begin(), accepted.end(), first) == accepted.end()) {
-      throw aurora_sim::ConfigError("parameter '" + prefix + first + "' is not a known key: accepted " +
+      throw aurora_common::ConfigError("parameter '" + prefix + first + "' is not a known key: accepted " +
                                        joinKeys(accepted) + (hint.empty() ? "" : " (" + hint + ")"));
     }
   }
@@ -70,10 +70,10 @@ void refuseDuplicatedKeysInLoadedFiles(const ros::NodeHandle& pnh) {
   if (!pnh.hasParam("yaml_files")) return;
   std::vector<std::string> files;
   if (!pnh.getParam("yaml_files", files)) {
-    throw aurora_sim::ConfigError("parameter '" + pnh.resolveName("yaml_files") +
+    throw aurora_common::ConfigError("parameter '" + pnh.resolveName("yaml_files") +
                                   "' is invalid: accepted a list of YAML file paths");
   }
-  for (const std::string& f : files) aurora_sim::loadYamlFile("file", f);
+  for (const std::string& f : files) aurora_common::loadYamlFile("file", f);
 }
 
 }  // namespace aurora_control

@@ -19,7 +19,7 @@ YAML::Node paramAsYaml(const ros::NodeHandle& nh, const std::string& key);
 
 // Refuses any parameter directly under `group` of `nh` (the node's private
 // namespace when group is empty) whose name is not in `accepted`, naming it
-// and the accepted names. Throws aurora_sim::ConfigError.
+// and the accepted names. Throws aurora_common::ConfigError.
 void refuseUnknownParams(const ros::NodeHandle& nh, const std::string& group,
                          const std::vector<std::string>& accepted, const std::string& hint);
 
@@ -27,7 +27,7 @@ void refuseUnknownParams(const ros::NodeHandle& nh, const std::string& group,
 // a list of paths): roslaunch's loader keeps the last of a duplicated key
 // where `flight` reads the files strictly, so each is read again here and a
 // key given twice is refused, naming it and both lines
-// (aurora_sim/yaml_file.h). Throws aurora_sim::ConfigError.
+// (aurora_common/yaml_file.h). Throws aurora_common::ConfigError.
 void refuseDuplicatedKeysInLoadedFiles(const ros::NodeHandle& pnh);
 
 }  // namespace aurora_control

@@ -30,7 +30,7 @@
 #include "aurora_control/link/link_yaml.h"
 #include "aurora_control/params/limits.h"
 #include "aurora_control/task/tracking.h"
-#include "aurora_sim/ros/config_dir.h"
+#include "aurora_common/ros/config_dir.h"
 #include "aurora_sim/vehicle_yaml.h"
 #include "aurora_sim/ros/conversions.h"
 #include "aurora_control/ros/control_msg.h"
@@ -306,7 +306,7 @@ void readDrone(rosbag::Bag& bag, const std::string& bag_path, const std::string&
 // The vehicle the underactuated law inverts (--vehicle, else ardrone2).
 aurora_control::LawVehicleParams vehicleFor(const std::string& path) {
   try {
-    return aurora_sim::loadVehicleYaml(path.empty() ? aurora_sim::configDir() + "/vehicles/ardrone2.yaml" : path);
+    return aurora_sim::loadVehicleYaml(path.empty() ? aurora_common::configDir() + "/vehicles/ardrone2.yaml" : path);
   } catch (const std::runtime_error& e) {
     fail(std::string("--vehicle: ") + e.what());
   }

@@ -262,7 +262,7 @@ TEST(FormationFile, MistakesAreRefusedNamingTheKey) {
     std::ofstream(path) << text;
     try {
       readFormationFile(path, config);
-    } catch (const aurora_sim::ConfigError& e) {
+    } catch (const aurora_common::ConfigError& e) {
       return std::string(e.what());
     }
     return std::string();
@@ -290,7 +290,7 @@ TEST(FormationFile, MistakesAreRefusedNamingTheKey) {
   try {
     readFormationFile(path, config);
     ADD_FAILURE() << "one drone accepted";
-  } catch (const aurora_sim::ConfigError& e) {
+  } catch (const aurora_common::ConfigError& e) {
     EXPECT_NE(std::string(e.what()).find("'formation.drones' must list the line's 2 drones (it lists 1)"), std::string::npos) << e.what();
   }
   const auto vehicle = aurora_sim::loadVehicleYaml(config + "/vehicles/ardrone2.yaml");
@@ -299,7 +299,7 @@ TEST(FormationFile, MistakesAreRefusedNamingTheKey) {
   try {
     formationRun(f, vehicle);
     ADD_FAILURE() << "a period of 7.5 steps accepted";
-  } catch (const aurora_sim::ConfigError& e) {
+  } catch (const aurora_common::ConfigError& e) {
     EXPECT_NE(std::string(e.what()).find("accepted a whole number of drone steps"), std::string::npos) << e.what();
   }
 }

@@ -294,7 +294,7 @@ TEST(Link, TheNodesCoreOverALinkIsTheRunners) {
     for (int i = 0; i < aurora_sim::kStateSize; ++i) s.X[i] = o.X_before[i];
     node->push(s);
     const ControlOutput out = node->compute(task.at(taskTime(o.k, p.Ts)));
-    for (int i = 0; i < 4; ++i) differ += aurora_sim::clampUnit(out.U[i]) != o.step.U[i];
+    for (int i = 0; i < 4; ++i) differ += aurora_common::clampUnit(out.U[i]) != o.step.U[i];
     hovered += out.drone_hovers;
   });
   EXPECT_EQ(differ, 0);

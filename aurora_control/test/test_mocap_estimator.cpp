@@ -10,7 +10,7 @@
 using aurora_control::MocapEstimator;
 
 namespace {
-using aurora_sim::kPi;
+using aurora_common::kPi;
 }
 
 TEST(MocapEstimator, VelocityOfKnownTrajectoryWithNoise) {

@@ -90,5 +90,5 @@ TEST(Runner, RejectsNegativeDelay) {
   RunnerConfig<double> cfg;
   EXPECT_THROW(runPositioning(aurora_sim::referenceArdrone2Params(), cfg,
                               PdGains<double>{0.5, 0.85}, -1),
-               aurora_sim::ConfigError);
+               aurora_common::ConfigError);
 }

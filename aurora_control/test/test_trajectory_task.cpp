@@ -31,7 +31,7 @@ TrajectoryTask<double> lemniscate(bool along) {
   return t;
 }
 
-double yawDiff(double a, double b) { return std::remainder(a - b, 2 * aurora_sim::kPi); }
+double yawDiff(double a, double b) { return std::remainder(a - b, 2 * aurora_common::kPi); }
 
 void expectConsistentDerivatives(const TrajectoryTask<double>& task) {
   const double h = 1e-4, tol = 1e-6;
@@ -64,8 +64,8 @@ TEST(TrajectoryTask, ShapeAndEnd) {
   EXPECT_NEAR(start.pos[0], 0.5 + 1.2, 1e-12);
   EXPECT_NEAR(quarter.pos[1], -0.2 + 1.2, 1e-12);
   EXPECT_NEAR(quarter.pos[2], 1.5, 0.0);
-  EXPECT_NEAR(start.yaw, aurora_sim::kPi / 2, 1e-12);  // heading along +y at the start
-  EXPECT_NEAR(start.yaw_rate, 2 * aurora_sim::kPi / 12.0, 1e-12);
+  EXPECT_NEAR(start.yaw, aurora_common::kPi / 2, 1e-12);  // heading along +y at the start
+  EXPECT_NEAR(start.yaw_rate, 2 * aurora_common::kPi / 12.0, 1e-12);
   // After two laps: the start point, at rest.
   const Reference<double> after = c.at(30.0);
   EXPECT_NEAR(after.pos[0], 0.5 + 1.2, 1e-12);

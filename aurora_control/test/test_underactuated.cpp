@@ -127,8 +127,8 @@ TEST(UnderactuatedLaw, AgreesWithTheSvdVersionOnAllAxesAndFeedForward) {
 }
 
 TEST(UnderactuatedLaw, ErrorWrapFollowsTheReference) {
-  using aurora_sim::kPi;
-  using aurora_sim::wrapErrorAsReference;
+  using aurora_common::kPi;
+  using aurora_common::wrapErrorAsReference;
   EXPECT_DOUBLE_EQ(wrapErrorAsReference(0.5), 0.5);
   EXPECT_DOUBLE_EQ(wrapErrorAsReference(6.0), 6.0 - 2 * kPi);
   // Below -pi the reference subtracts 2 pi, then adds it back.

@@ -40,7 +40,7 @@ class UnderactuatedSvdReference {
   void compute(const double Xd_in[aurora_sim::kStateSize], const double dXd_acc[6],
                const double X[aurora_sim::kStateSize], double U[4]) {
     using Eigen::Matrix;
-    const double pi = aurora_sim::kPi;
+    const double pi = aurora_common::kPi;
     const aurora_sim::ArdroneParams<double>& p = p_;
     double Xd[aurora_sim::kStateSize];
     for (int i = 0; i < aurora_sim::kStateSize; ++i) Xd[i] = Xd_in[i];

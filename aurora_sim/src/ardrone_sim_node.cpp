@@ -1,6 +1,6 @@
 #include "ardrone_sim_node.h"
 
-#include "aurora_sim/ros/node_main.h"
+#include "aurora_common/ros/node_main.h"
 
 #include <geometry_msgs/TransformStamped.h>
 #include <nav_msgs/Odometry.h>
@@ -12,11 +12,16 @@
 
 #include "aurora_sim/command_mapping.h"
 #include "aurora_sim/ros/conversions.h"
-#include "aurora_sim/rotation.h"
-#include "aurora_sim/ros/params.h"
+#include "aurora_common/rotation.h"
+#include "aurora_sim/ros/vehicle_params.h"
 #include "aurora_sim/vehicle/ardrone2.h"
 
 namespace aurora_sim {
+
+using aurora_common::ConfigError;
+using aurora_common::fullKey;
+using aurora_common::paramOr;
+using aurora_common::rangedParam;
 
 namespace {
 constexpr double kLandedAltitude = 0.05;  // [m] below this while landing the drone is down
@@ -64,10 +69,10 @@ ArdroneSimNode::ArdroneSimNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
   max_real_time_factor_ = rangedParam(pnh_, "max_real_time_factor", 0.0, 0.0, kNoLimit,
                                       "(0 = as fast as possible)");
   // The study's initial state (z = 0.75 m, in the air); false starts landed.
-  flight_ = aurora_sim::boolParam(pnh_, "start_flying", true) ? Flight::kFlying : Flight::kLanded;
+  flight_ = aurora_common::boolParam(pnh_, "start_flying", true) ? Flight::kFlying : Flight::kLanded;
   readStart();
   // Several sims in lockstep (formation.launch): one of them owns /clock.
-  publish_clock_ = aurora_sim::boolParam(pnh_, "publish_clock", true);
+  publish_clock_ = aurora_common::boolParam(pnh_, "publish_clock", true);
 
   resetModel();
   path_.header.frame_id = frame_id_;
@@ -212,7 +217,7 @@ void ArdroneSimNode::onLand(const std_msgs::Empty::ConstPtr&) {
 
 void ArdroneSimNode::onReset(const std_msgs::Empty::ConstPtr&) {
   ROS_INFO("ardrone_sim: reset to the initial state");
-  flight_ = aurora_sim::boolParam(pnh_, "start_flying", true) ? Flight::kFlying : Flight::kLanded;
+  flight_ = aurora_common::boolParam(pnh_, "start_flying", true) ? Flight::kFlying : Flight::kLanded;
   resetModel();
 }
 
@@ -309,7 +314,7 @@ void ArdroneSimNode::stepAndPublish(const ros::Time& now, bool command_fresh) {
     cmd_sub_.shutdown();
     // A short grace period lets subscribers (rosbag) receive the last state.
     shutdown_timer_ = nh_.createWallTimer(
-        ros::WallDuration(0.5), [](const ros::WallTimerEvent&) { endAsPlanned(); }, true);
+        ros::WallDuration(0.5), [](const ros::WallTimerEvent&) { aurora_common::endAsPlanned(); }, true);
   }
 }
 
@@ -352,7 +357,7 @@ void ArdroneSimNode::publishState(const ros::Time& stamp) {
     const double sth = std::sin(X[kPitch]), cth = std::cos(X[kPitch]);
     const double spsi = std::sin(X[kYaw]), cpsi = std::cos(X[kYaw]);
     double R[3][3];
-    rotationMatrix(sphi, cphi, sth, cth, spsi, cpsi, R);  // the model's own (rotation.h)
+    aurora_common::rotationMatrix(sphi, cphi, sth, cth, spsi, cpsi, R);  // the model's own (rotation.h)
     nav_msgs::Odometry odom;
     odom.header = tf.header;
     odom.child_frame_id = child_frame_id_;

@@ -14,9 +14,10 @@
 #include "aurora_sim/vehicle_yaml.h"
 
 using namespace aurora_sim;
+using namespace aurora_common;
 
 namespace {
-using aurora_sim::kPi;
+using aurora_common::kPi;
 }
 
 TEST(AngleWrap, WrapsOnceIntoPiRange) {

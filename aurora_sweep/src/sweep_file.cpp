@@ -155,8 +155,8 @@ void readSweepTask(const Reader& r, const YAML::Node& t, const std::string& swee
     const std::string path = resolve(r.text(t, "sweep.task"), sweep_dir, config_dir);
     YAML::Node file;
     try {
-      file = aurora_sim::loadYamlFile("task file", path);
-    } catch (const aurora_sim::ConfigError& e) {
+      file = aurora_common::loadYamlFile("task file", path);
+    } catch (const aurora_common::ConfigError& e) {
       r.fail("sweep.task", "names a file that is refused: " + std::string(e.what()));
     }
     const aurora_control::YamlReader tr("task file '" + path + "': ");
@@ -421,7 +421,7 @@ void readSweepLink(const Reader& r, const YAML::Node& node, const std::string& s
   spec.link_file = resolve(r.text(node, "sweep.link"), sweep_dir, config_dir);
   try {
     spec.setLink(aurora_control::readLinkFile(spec.link_file));
-  } catch (const aurora_sim::ConfigError& e) {
+  } catch (const aurora_common::ConfigError& e) {
     r.fail("sweep.link", "names a link file that is refused: " + std::string(e.what()));
   }
 }
@@ -474,7 +474,7 @@ void checkSweepLink(const Reader& r, SweepSpec& spec) {
 
 SweepSpec parseSweepFile(const std::string& path, const std::string& config_dir) {
   Reader r(path);
-  const YAML::Node root = aurora_sim::loadYamlFile("sweep file", path);
+  const YAML::Node root = aurora_common::loadYamlFile("sweep file", path);
   r.onlyKeys(root, "", {"sweep"});
   const YAML::Node s = root["sweep"];
   if (!s) r.fail("sweep", "is missing: the file's top level must be 'sweep:'");

@@ -23,7 +23,7 @@
 #include <thread>
 #include <vector>
 
-#include "aurora_sim/ros/config_dir.h"
+#include "aurora_common/ros/config_dir.h"
 #include "aurora_sweep/backends.h"
 #include "aurora_sweep/cuda_backend.h"
 #include "aurora_sweep/recent_rate.h"

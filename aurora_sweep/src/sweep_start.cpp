@@ -12,7 +12,7 @@
 #include <cstring>
 #include <map>
 
-#include "aurora_sim/ros/config_dir.h"
+#include "aurora_common/ros/config_dir.h"
 #include "aurora_sweep/backends.h"
 #include "aurora_sweep/cuda_backend.h"
 #include "aurora_sweep/sweep_file.h"
@@ -175,7 +175,7 @@ std::string outputFormat(const Options& opt, long combinations) {
 
 StartCheck loadAndChooseBackend(const Options& opt, const MpiRanks* mpi, Start& s) {
   try {
-    s.spec = loadSweepFile(opt.config, opt.config_dir.empty() ? aurora_sim::configDir() : opt.config_dir);
+    s.spec = loadSweepFile(opt.config, opt.config_dir.empty() ? aurora_common::configDir() : opt.config_dir);
   } catch (const std::exception& e) {
     return {2, e.what()};
   }

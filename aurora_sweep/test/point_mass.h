@@ -6,8 +6,8 @@
 #pragma once
 
 #include "aurora_control/loop/closed_loop.h"
-#include "aurora_sim/host_device.h"
-#include "aurora_sim/scalar_math.h"
+#include "aurora_common/host_device.h"
+#include "aurora_common/scalar_math.h"
 #include "aurora_sweep/simulation.h"
 
 namespace point_mass {
@@ -46,7 +46,7 @@ struct PointMass {
   }
   template <typename T>
   AURORA_HD static T limitInput(int, const T& u) {
-    return aurora_sim::clampUnit(u);  // [N]
+    return aurora_common::clampUnit(u);  // [N]
   }
   AURORA_HD static Params<double> scaled(Params<double> p, const double* factor) {
     p.m *= factor[0];

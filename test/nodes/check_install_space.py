@@ -56,7 +56,7 @@ class InstallSpaceTest(unittest.TestCase):
         self.assertEqual(self.installed.returncode, 0, self.installed.stdout[-3000:])
 
     def test_1_packages_resolve_to_the_install_space(self):
-        for pkg in ("aurora_config", "aurora_bringup", "aurora_sim", "aurora_control", "aurora_sweep"):
+        for pkg in ("aurora_config", "aurora_bringup", "aurora_common", "aurora_sim", "aurora_control", "aurora_sweep"):
             rc, out = self.sh("rospack find %s" % pkg)
             self.assertEqual((rc, out.strip()), (0, os.path.join(self.prefix, "share", pkg)), out)
 

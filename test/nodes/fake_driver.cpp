@@ -29,11 +29,12 @@
 #include "aurora_sim/ardrone_model.h"
 #include "aurora_sim/command_mapping.h"
 #include "aurora_sim/ros/conversions.h"
-#include "aurora_sim/ros/params.h"
+#include "aurora_sim/ros/vehicle_params.h"
 
 namespace {
 
 using namespace aurora_sim;
+using namespace aurora_common;
 
 class FakeDriver {
  public:

@@ -17,7 +17,7 @@
 #include "aurora_control/link/link_yaml.h"
 #include "aurora_control/task/task_yaml.h"
 #include "aurora_sim/ros/conversions.h"
-#include "aurora_sim/ros/params.h"
+#include "aurora_sim/ros/vehicle_params.h"
 #include "lockstep_states.h"
 
 using namespace aurora_control;

@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "aurora_control/formation/formation_yaml.h"
-#include "aurora_sim/ros/params.h"
+#include "aurora_sim/ros/vehicle_params.h"
 #include "truth_track.h"
 
 using namespace aurora_control;

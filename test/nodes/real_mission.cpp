@@ -17,7 +17,7 @@
 #include "aurora_control/loop/closed_loop.h"
 #include "aurora_control/task/task_yaml.h"
 #include "aurora_sim/ros/conversions.h"
-#include "aurora_sim/ros/params.h"
+#include "aurora_sim/ros/vehicle_params.h"
 #include "truth_track.h"
 
 using namespace aurora_control;

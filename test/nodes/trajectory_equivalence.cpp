@@ -9,7 +9,7 @@
 
 #include "aurora_control/loop/positioning_runner.h"
 #include "aurora_sim/ros/conversions.h"
-#include "aurora_sim/ros/params.h"
+#include "aurora_sim/ros/vehicle_params.h"
 #include "lockstep_states.h"
 
 using namespace aurora_control;

@@ -121,7 +121,7 @@ py::dict simulateFormationFiles(const std::string& formation, const std::string&
 
 PYBIND11_MODULE(_core, m) {
   m.doc() = "The C++ core of AuRoRA-ROS (use aurora.simulate)";
-  py::register_exception<aurora_sim::ConfigError>(m, "ConfigError", PyExc_ValueError);
+  py::register_exception<aurora_common::ConfigError>(m, "ConfigError", PyExc_ValueError);
   // The delay rule's constants, for aurora/arguments.py (limits.h, link_yaml.h).
   m.attr("MAX_DELAY_SAMPLES") = kMaxDelaySamples;
   m.attr("DELAY_NOT_GIVEN") = kDelayNotGiven;

@@ -8,9 +8,9 @@
 #include <cmath>
 
 #include "aurora_sim/ardrone_params.h"
-#include "aurora_sim/host_device.h"
-#include "aurora_sim/rotation.h"
-#include "aurora_sim/scalar_math.h"
+#include "aurora_common/host_device.h"
+#include "aurora_common/rotation.h"
+#include "aurora_common/scalar_math.h"
 #include "aurora_sim/state_index.h"
 
 namespace aurora_sim {
@@ -174,6 +174,7 @@ AURORA_HD inline void ardroneStep(const ArdroneParams<T>& p, ArdroneState<T>& s,
   for (int c = 0; c < 4; ++c) s.Xa[c] = X[onboardChannel(c)];
 
   T sphi, cphi, sth, cth, spsi, cpsi;
+  using aurora_common::sinCos;  // a SIMD batch brings its own (argument-dependent lookup)
   sinCos(X[kRoll], sphi, cphi);
   sinCos(X[kPitch], sth, cth);
   sinCos(X[kYaw], spsi, cpsi);
@@ -182,7 +183,7 @@ AURORA_HD inline void ardroneStep(const ArdroneParams<T>& p, ArdroneState<T>& s,
   // The thrust acts along the body z axis, R's third column.
   const T thrust = F[0] + F[1] + F[2] + F[3];
   T R[3][3];
-  rotationMatrix(sphi, cphi, sth, cth, spsi, cpsi, R);
+  aurora_common::rotationMatrix(sphi, cphi, sth, cth, spsi, cpsi, R);
   const T weight[3] = {T(0), T(0), p.m * p.g};
   for (int i = 0; i < 3; ++i) {
     X[kVx + i] = X[kVx + i] + ((R[i][2] * thrust - dist.force[i]) - weight[i]) / p.m * p.Ts;
@@ -205,7 +206,7 @@ AURORA_HD inline void ardroneStep(const ArdroneParams<T>& p, ArdroneState<T>& s,
 
   // 9. Integration with the updated velocities, then angle wrapping.
   for (int i = 0; i < 6; ++i) X[i] = X[i] + X[i + 6] * p.Ts;
-  for (int i = kRoll; i <= kYaw; ++i) X[i] = wrapAngleOnce(X[i]);
+  for (int i = kRoll; i <= kYaw; ++i) X[i] = aurora_common::wrapAngleOnce(X[i]);
 }
 
 }  // namespace aurora_sim

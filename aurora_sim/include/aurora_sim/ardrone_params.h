@@ -3,11 +3,11 @@
 // scalar so the float sweep converts once instead of at every use.
 #pragma once
 
-#include "aurora_sim/scalar_math.h"
+#include "aurora_common/scalar_math.h"
 
 #include <cmath>
 
-#include "aurora_sim/host_device.h"
+#include "aurora_common/host_device.h"
 
 namespace aurora_sim {
 
@@ -71,7 +71,7 @@ struct ArdroneParams {
 // g = 9.8 as in the reference code). The ROS nodes do not use this: they read
 // config/vehicles/ardrone2.yaml strictly; a test checks both agree.
 inline ArdroneParams<double> referenceArdrone2Params() {
-  const double pi = kPi;
+  const double pi = aurora_common::kPi;
   ArdroneParams<double> p{};
   p.Ts = 1.0 / 30.0;
   p.g = 9.8;

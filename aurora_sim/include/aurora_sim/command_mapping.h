@@ -7,7 +7,7 @@
 
 #include <cmath>
 
-#include "aurora_sim/scalar_math.h"
+#include "aurora_common/scalar_math.h"
 #include "aurora_sim/state_index.h"
 
 namespace aurora_sim {

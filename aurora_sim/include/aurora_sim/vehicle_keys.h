@@ -4,7 +4,7 @@
 // fall-back to built-in constants.
 #pragma once
 
-#include "aurora_sim/scalar_math.h"
+#include "aurora_common/scalar_math.h"
 
 #include <cmath>
 #include <string>
@@ -65,7 +65,7 @@ inline void setVehicleValue(ArdroneParams<double>& p, const VehicleKey& key, dou
   } else if (key.usat_index == 2) {
     p.uSat[2] = value;
   } else {
-    p.uSat[key.usat_index] = value * kPi / 180.0;
+    p.uSat[key.usat_index] = value * aurora_common::kPi / 180.0;
   }
 }
 

@@ -10,9 +10,9 @@
 #include <sstream>
 #include <string>
 
-#include "aurora_sim/refusal_text.h"
+#include "aurora_common/refusal_text.h"
 #include "aurora_sim/vehicle/vehicle_type.h"
-#include "aurora_sim/yaml_file.h"
+#include "aurora_common/yaml_file.h"
 
 namespace aurora_sim {
 
@@ -24,14 +24,14 @@ inline double vehicleFileNumber(const YAML::Node& root, const std::string& path,
   YAML::Node node = YAML::Clone(root);
   while (std::getline(parts, part, '/')) {
     if (!node.IsMap() || !node[part]) {
-      throw ConfigError("vehicle file '" + path + "' lacks the key '" + name + "' (" + unit + ")");
+      throw aurora_common::ConfigError("vehicle file '" + path + "' lacks the key '" + name + "' (" + unit + ")");
     }
     node = node[part];
   }
   try {
     return node.as<double>();
   } catch (const YAML::Exception&) {
-    throw ConfigError("vehicle file '" + path + "': '" + name + "' is not a number");
+    throw aurora_common::ConfigError("vehicle file '" + path + "': '" + name + "' is not a number");
   }
 }
 
@@ -40,7 +40,7 @@ inline double vehicleFileNumber(const YAML::Node& root, const std::string& path,
 template <class Vehicle>
 typename Vehicle::template Params<double> loadVehicleFile(const std::string& path,
                                                           const std::string& flown_by = "this loop") {
-  const YAML::Node root = loadYamlFile("vehicle file", path);
+  const YAML::Node root = aurora_common::loadYamlFile("vehicle file", path);
   std::string type;
   try {
     type = root.IsMap() && root["type"] ? root["type"].as<std::string>() : "";

@@ -4,7 +4,7 @@
 // table of every combination is ever built.
 #pragma once
 
-#include "aurora_sim/host_device.h"
+#include "aurora_common/host_device.h"
 
 namespace aurora_sweep {
 

@@ -9,7 +9,7 @@
 #include <cmath>
 
 #include "aurora_control/loop/feasibility.h"
-#include "aurora_sim/scalar_math.h"
+#include "aurora_common/scalar_math.h"
 
 namespace aurora_control {
 
@@ -61,7 +61,7 @@ AURORA_HD inline void formationErrors(const T X[Shape::kVariables], const T Xd[S
 // where a drone's position is NaN.
 template <class Shape, typename T>
 AURORA_HD inline T closestPair(const T X[Shape::kVariables]) {
-  using aurora_sim::select;
+  using aurora_common::select;
   T closest = T(1e30);
   for (int a = 0; a < Shape::kDrones; ++a) {
     for (int b = a + 1; b < Shape::kDrones; ++b) {
@@ -91,7 +91,7 @@ struct FormationMetrics {
   // the layer's held Qd (the errors of "Formation errors"), integrated over
   // one tick dt.
   AURORA_HD void add(const FormationCriteria<T>& c, const T X[kN], const T Xd[kN], const T& t, const T& dt) {
-    using aurora_sim::select;
+    using aurora_common::select;
     T position, shape;
     formationErrors<Shape>(X, Xd, position, shape);
     const T r = closestPair<Shape>(X);

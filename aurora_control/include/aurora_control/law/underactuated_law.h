@@ -18,9 +18,9 @@
 #include <cmath>
 
 #include "aurora_sim/ardrone_model.h"
-#include "aurora_sim/host_device.h"
-#include "aurora_sim/rotation.h"
-#include "aurora_sim/scalar_math.h"
+#include "aurora_common/host_device.h"
+#include "aurora_common/rotation.h"
+#include "aurora_common/scalar_math.h"
 #include "aurora_sim/state_index.h"
 
 namespace aurora_control {
@@ -190,6 +190,11 @@ AURORA_HD inline void underactuatedCommand(const aurora_sim::ArdroneParams<T>& p
   using std::atan2;
   namespace ud = underactuated_detail;
   using namespace aurora_sim;
+  // The branch-free helpers; a SIMD batch brings its own select and sinCos (argument-dependent lookup).
+  using aurora_common::rotationMatrix;
+  using aurora_common::select;
+  using aurora_common::sinCos;
+  using aurora_common::wrapErrorAsReference;
   // 1. Errors, angle errors wrapped as the reference does.
   T e[kStateSize];
   for (int i = 0; i < kStateSize; ++i) e[i] = Xd[i] - X[i];

@@ -15,7 +15,7 @@
 #include <cmath>
 #include <cstdint>
 
-#include "aurora_sim/host_device.h"
+#include "aurora_common/host_device.h"
 
 namespace aurora_control {
 

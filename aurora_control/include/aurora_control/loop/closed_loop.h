@@ -16,7 +16,7 @@
 #include "aurora_control/loop/delay_buffer.h"
 #include "aurora_control/loop/feasibility.h"
 #include "aurora_control/task/task.h"
-#include "aurora_sim/scalar_math.h"
+#include "aurora_common/scalar_math.h"
 
 namespace aurora_control {
 

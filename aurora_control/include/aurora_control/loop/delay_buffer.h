@@ -4,8 +4,8 @@
 // current state H(k).
 #pragma once
 
-#include "aurora_sim/host_device.h"
-#include "aurora_sim/scalar_math.h"
+#include "aurora_common/host_device.h"
+#include "aurora_common/scalar_math.h"
 
 namespace aurora_control {
 
@@ -16,7 +16,7 @@ namespace aurora_control {
 // all call it.
 template <typename Index>
 AURORA_HD inline Index delayedHistoryIndex(const Index& k, const Index& d) {
-  using aurora_sim::select;
+  using aurora_common::select;
   return select(k > d, k - d, k);
 }
 

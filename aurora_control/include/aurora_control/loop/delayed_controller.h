@@ -20,7 +20,7 @@
 #include "aurora_control/task/trajectory_task.h"
 #include "aurora_control/law/underactuated_law.h"
 #include "aurora_sim/ardrone_params.h"
-#include "aurora_sim/scalar_math.h"
+#include "aurora_common/scalar_math.h"
 #include "aurora_sim/state_index.h"
 
 namespace aurora_control {

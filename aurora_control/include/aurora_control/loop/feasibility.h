@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-#include "aurora_sim/host_device.h"
+#include "aurora_common/host_device.h"
 
 namespace aurora_control {
 

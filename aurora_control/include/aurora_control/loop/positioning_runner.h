@@ -13,7 +13,7 @@
 #include "aurora_control/params/limits.h"
 #include "aurora_control/loop/closed_loop.h"
 #include "aurora_control/link/loop_link.h"
-#include "aurora_sim/refusal_text.h"
+#include "aurora_common/refusal_text.h"
 
 namespace aurora_control {
 
@@ -165,7 +165,7 @@ RunnerResult runOverModelLink(const StudyRun<typename Law::Data, T>& run, const 
 // Refuses a delay the runner's history cannot hold.
 inline void checkRunnerDelay(long delay) {
   if (delay < 0 || delay > kMaxRunnerDelay) {
-    throw aurora_sim::ConfigError("delay " + std::to_string(delay) + " samples is outside the accepted range: " +
+    throw aurora_common::ConfigError("delay " + std::to_string(delay) + " samples is outside the accepted range: " +
                                   delayRangeText());
   }
 }

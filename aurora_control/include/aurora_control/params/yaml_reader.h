@@ -13,12 +13,12 @@
 #include <string>
 #include <vector>
 
-#include "aurora_sim/refusal_text.h"
-#include "aurora_sim/yaml_file.h"
+#include "aurora_common/refusal_text.h"
+#include "aurora_common/yaml_file.h"
 
 namespace aurora_control {
 
-using aurora_sim::ConfigError;  // refusal_text.h: the one error type
+using aurora_common::ConfigError;  // refusal_text.h: the one error type
 
 inline std::string joinKeys(const std::vector<std::string>& keys) {
   std::string out;
@@ -26,8 +26,8 @@ inline std::string joinKeys(const std::vector<std::string>& keys) {
   return out;
 }
 
-// A YAML file's root, duplicated keys refused (aurora_sim/yaml_file.h).
-using aurora_sim::loadYamlFile;
+// A YAML file's root, duplicated keys refused (aurora_common/yaml_file.h).
+using aurora_common::loadYamlFile;
 
 class YamlReader {
  public:
@@ -96,7 +96,7 @@ class YamlReader {
     return static_cast<long>(v);
   }
 
-  // The one boolean rule (aurora_sim/refusal_text.h): a quoted scalar is a
+  // The one boolean rule (aurora_common/refusal_text.h): a quoted scalar is a
   // string, even "false".
   bool boolean(const YAML::Node& node, const std::string& key) const {
     const std::string text = node.IsScalar() ? node.as<std::string>() : std::string("(not a scalar)");
@@ -106,7 +106,7 @@ class YamlReader {
       } catch (const YAML::Exception&) {
       }
     }
-    failWith(aurora_sim::booleanRefusal(key, text));
+    failWith(aurora_common::booleanRefusal(key, text));
   }
 
   std::string text(const YAML::Node& node, const std::string& key) const {
@@ -147,7 +147,7 @@ class YamlReader {
     return " (YAML 1.1, which rosparam reads, takes '" + text + "' as text: write " + fixed + ")";
   }
 
-  static std::string fmt(double v) { return aurora_sim::numberText(v); }
+  static std::string fmt(double v) { return aurora_common::numberText(v); }
 
  private:
   std::string context_;

@@ -19,7 +19,7 @@
 
 #include <cmath>
 
-#include "aurora_sim/scalar_math.h"
+#include "aurora_common/scalar_math.h"
 #include "aurora_sim/state_index.h"
 
 namespace aurora_control {
@@ -50,8 +50,8 @@ class MocapEstimator {
       store(t, pos, rpy);
       return Result::kRestarted;
     }
-    const double av = dt / (dt + 1.0 / (2.0 * aurora_sim::kPi * cfg_.velocity_cutoff_hz));
-    const double ar = dt / (dt + 1.0 / (2.0 * aurora_sim::kPi * cfg_.rate_cutoff_hz));
+    const double av = dt / (dt + 1.0 / (2.0 * aurora_common::kPi * cfg_.velocity_cutoff_hz));
+    const double ar = dt / (dt + 1.0 / (2.0 * aurora_common::kPi * cfg_.rate_cutoff_hz));
     for (int i = 0; i < 3; ++i) {
       vel_[i] += av * ((pos[i] - pos_[i]) / dt - vel_[i]);
       rate_[i] += ar * (angles::normalize_angle(rpy[i] - rpy_[i]) / dt - rate_[i]);

@@ -7,8 +7,8 @@
 
 #include "aurora_control/task/trajectory_task.h"
 #include "aurora_control/task/waypoint_task.h"
-#include "aurora_sim/host_device.h"
-#include "aurora_sim/scalar_math.h"
+#include "aurora_common/host_device.h"
+#include "aurora_common/scalar_math.h"
 
 namespace aurora_control {
 
@@ -38,7 +38,7 @@ struct Task {
   template <typename Time>
   AURORA_HD Reference<Time> at(const Time& t) const {
     if (isTrajectory()) return trajectory.at(t);
-    using aurora_sim::select;
+    using aurora_common::select;
     Reference<Time> r;
     for (int j = 0; j < 3; ++j) r.pos[j] = Time(waypoints.position[0][j]);
     for (int i = 1; i < waypoints.count; ++i) {

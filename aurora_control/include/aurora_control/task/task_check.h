@@ -6,7 +6,7 @@
 #include <string>
 
 #include "aurora_control/task/waypoint_task.h"
-#include "aurora_sim/refusal_text.h"
+#include "aurora_common/refusal_text.h"
 
 namespace aurora_control {
 
@@ -34,8 +34,8 @@ std::string checkTask(const WaypointTask<T, N>& task, const std::string& prefix)
     }
     const double z = double(task.position[i][2]);
     if (z < kMinTaskHeight || z > kMaxTaskHeight) {
-      return wp + " has z = " + aurora_sim::numberText(z) + " m: accepted heights [" +
-             aurora_sim::numberText(kMinTaskHeight) + ", " + aurora_sim::numberText(kMaxTaskHeight) +
+      return wp + " has z = " + aurora_common::numberText(z) + " m: accepted heights [" +
+             aurora_common::numberText(kMinTaskHeight) + ", " + aurora_common::numberText(kMaxTaskHeight) +
              "] m (z is up; the ground is z = 0)";
     }
     const double prev = i == 0 ? 0.0 : double(task.end_time[i - 1]);
@@ -45,8 +45,8 @@ std::string checkTask(const WaypointTask<T, N>& task, const std::string& prefix)
              " is invalid: end times must be positive and strictly increasing";
     }
     if (double(task.end_time[i]) > double(task.duration)) {
-      return "'" + prefix + "end_times[" + std::to_string(i) + "]' = " + aurora_sim::numberText(task.end_time[i]) +
-             " is after the task's duration (" + aurora_sim::numberText(task.duration) +
+      return "'" + prefix + "end_times[" + std::to_string(i) + "]' = " + aurora_common::numberText(task.end_time[i]) +
+             " is after the task's duration (" + aurora_common::numberText(task.duration) +
              " s): accepted end times up to the duration (the last waypoint is held after its end time)";
     }
   }

@@ -88,7 +88,7 @@ inline void readTrajectory(const YamlReader& r, const YAML::Node& n, const std::
     if (n["yaw"].IsScalar() && n["yaw"].as<std::string>() == "along_path") {
       t.yaw_along_path = true;
     } else {
-      t.yaw = r.numberIn(n["yaw"], ykey, -aurora_sim::kPi, aurora_sim::kPi, "rad (or 'along_path')");
+      t.yaw = r.numberIn(n["yaw"], ykey, -aurora_common::kPi, aurora_common::kPi, "rad (or 'along_path')");
     }
   }
 }

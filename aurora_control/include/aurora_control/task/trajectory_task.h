@@ -15,8 +15,8 @@
 
 #include <cmath>
 
-#include "aurora_sim/host_device.h"
-#include "aurora_sim/scalar_math.h"
+#include "aurora_common/host_device.h"
+#include "aurora_common/scalar_math.h"
 
 namespace aurora_control {
 
@@ -48,9 +48,9 @@ struct TrajectoryTask {
   // The reference at task time t [s] (t >= 0).
   template <typename Time>
   AURORA_HD Reference<Time> at(const Time& t) const {
-    using aurora_sim::select;
+    using aurora_common::select;
     using std::atan2;
-    const Time w = Time(T(2.0 * aurora_sim::kPi) / period);
+    const Time w = Time(T(2.0 * aurora_common::kPi) / period);
     const auto moving = t < Time(duration());
     // Past the end: the end point (a whole number of laps: the phase is 0).
     const Time s = select(moving, w * t, Time(0));
@@ -86,8 +86,8 @@ struct TrajectoryTask {
   template <typename Time>
   AURORA_HD void offsetDerivatives(const Time& s, const Time& w, Time d[4][2]) const {
     Time s1, c1, s2, c2;
-    aurora_sim::sinCos(s, s1, c1);
-    aurora_sim::sinCos(Time(2) * s, s2, c2);
+    aurora_common::sinCos(s, s1, c1);
+    aurora_common::sinCos(Time(2) * s, s2, c2);
     const Time w2 = w * w, w3 = w2 * w;
     if (kind == TrajectoryKind::kCircle) {
       const Time r = Time(size[0]);

@@ -4,7 +4,7 @@
 // study" for the single point).
 #pragma once
 
-#include "aurora_sim/host_device.h"
+#include "aurora_common/host_device.h"
 
 namespace aurora_control {
 

@@ -48,7 +48,7 @@ struct Ardrone2 {
   // The AR.Drone's driver (and the sim node) clamp each command to [-1, 1].
   template <typename T>
   AURORA_HD static T limitInput(int, const T& u) {
-    return clampUnit(u);
+    return aurora_common::clampUnit(u);
   }
 
   // The factors' parameters, in factor order (the sweep's m_factor ...).

@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "aurora_sim/refusal_text.h"
+#include "aurora_common/refusal_text.h"
 #include "aurora_sim/vehicle/ardrone2.h"
 
 namespace aurora_sim {
@@ -43,12 +43,12 @@ typename Vehicle::template Params<double> vehicleFromKeys(const std::string& whe
                                                           const std::string& flown_by, const std::string& prefix,
                                                           Number&& number) {
   const std::string refusal = vehicleTypeRefusal<Vehicle>(type, flown_by);
-  if (!refusal.empty()) throw ConfigError(where + refusal);
+  if (!refusal.empty()) throw aurora_common::ConfigError(where + refusal);
   typename Vehicle::template Params<double> p{};
   for (const auto& key : Vehicle::fileKeys()) {
     const double value = number(key);
     const std::string problem = checkVehicleValue(prefix, key, value);
-    if (!problem.empty()) throw ConfigError(problem);
+    if (!problem.empty()) throw aurora_common::ConfigError(problem);
     Vehicle::setFileValue(p, key, value);
   }
   Vehicle::finishFile(p);

@@ -6,9 +6,9 @@
 
 #include <cmath>
 
-#include "aurora_sim/host_device.h"
+#include "aurora_common/host_device.h"
 
-namespace aurora_sim {
+namespace aurora_common {
 
 // pi, written once for the whole project (the double nearest to it).
 constexpr double kPi = 3.141592653589793;
@@ -59,4 +59,4 @@ AURORA_HD inline T clampUnit(const T& u) {
   return select(c < T(-1), T(-1), c);
 }
 
-}  // namespace aurora_sim
+}  // namespace aurora_common

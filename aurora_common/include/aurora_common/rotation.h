@@ -3,9 +3,9 @@
 // and the batch engines; from the sines and cosines the caller already has.
 #pragma once
 
-#include "aurora_sim/host_device.h"
+#include "aurora_common/host_device.h"
 
-namespace aurora_sim {
+namespace aurora_common {
 
 template <typename T>
 AURORA_HD inline void rotationMatrix(const T& sphi, const T& cphi, const T& sth, const T& cth,
@@ -21,4 +21,4 @@ AURORA_HD inline void rotationMatrix(const T& sphi, const T& cphi, const T& sth,
   R[2][2] = cth * cphi;
 }
 
-}  // namespace aurora_sim
+}  // namespace aurora_common

@@ -13,9 +13,9 @@
 #include <map>
 #include <string>
 
-#include "aurora_sim/refusal_text.h"
+#include "aurora_common/refusal_text.h"
 
-namespace aurora_sim {
+namespace aurora_common {
 
 namespace yaml_detail {
 
@@ -65,4 +65,4 @@ inline YAML::Node loadYamlFile(const std::string& what, const std::string& path)
   return root;
 }
 
-}  // namespace aurora_sim
+}  // namespace aurora_common

@@ -10,7 +10,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace aurora_sim {
+namespace aurora_common {
 
 inline std::string configDir() {
   const char* env = std::getenv("AURORA_CONFIG_DIR");
@@ -24,4 +24,4 @@ inline std::string configDir() {
   return path;
 }
 
-}  // namespace aurora_sim
+}  // namespace aurora_common

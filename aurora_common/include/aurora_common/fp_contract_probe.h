@@ -5,7 +5,7 @@
 // if allowed, then turns a*b + c into one fused operation.
 #pragma once
 
-namespace aurora_sim {
+namespace aurora_common {
 
 // a*b + c with (1 + 2^-30)^2 - (1 + 2^-29): 0 when the product is rounded
 // first (as the model expects), 2^-60 when fused.
@@ -15,4 +15,4 @@ inline double contractionProbe() {
   return x * y + z;
 }
 
-}  // namespace aurora_sim
+}  // namespace aurora_common

@@ -1,4 +1,4 @@
-// Strict parameter reading for the nodes: a missing or invalid parameter is
+// Strict parameter reading for every node (ROS parameter server): a missing or invalid parameter is
 // an error naming the full key and the accepted values (no made-up defaults
 // for vehicle constants).
 #pragma once
@@ -11,11 +11,9 @@
 #include <stdexcept>
 #include <string>
 
-#include "aurora_sim/ardrone_params.h"
-#include "aurora_sim/refusal_text.h"
-#include "aurora_sim/vehicle/vehicle_type.h"
+#include "aurora_common/refusal_text.h"
 
-namespace aurora_sim {
+namespace aurora_common {
 
 inline std::string fullKey(const ros::NodeHandle& nh, const std::string& key) {
   return nh.resolveName(key);
@@ -63,26 +61,4 @@ inline double rangedParam(const ros::NodeHandle& nh, const std::string& key, dou
   return v;
 }
 
-// Reads a vehicle's parameters under `ns` (e.g. "vehicle", a vehicle file
-// loaded there): its `type` must be `Vehicle`'s, every key of its file is
-// required and checked against its range.
-template <class Vehicle = Ardrone2>
-typename Vehicle::template Params<double> loadVehicleParams(const ros::NodeHandle& nh, const std::string& ns,
-                                                            const std::string& flown_by = "this node") {
-  const std::string prefix = fullKey(nh, ns) + "/";
-  const std::string load = ": load a vehicle file such as config/vehicles/" + std::string(Vehicle::name()) +
-                           ".yaml (launch arg 'vehicle')";
-  std::string type;
-  if (nh.hasParam(ns + "/type") && !nh.getParam(ns + "/type", type)) {
-    throw ConfigError("vehicle parameter '" + prefix + "type' is not a name" + load);
-  }
-  return vehicleFromKeys<Vehicle>("vehicle parameters '" + prefix + "': ", type, flown_by, prefix, [&](const auto& key) {
-    double value = 0.0;
-    if (!nh.getParam(ns + "/" + key.name, value)) {
-      throw ConfigError("missing vehicle parameter '" + prefix + key.name + "'" + load);
-    }
-    return value;
-  });
-}
-
-}  // namespace aurora_sim
+}  // namespace aurora_common

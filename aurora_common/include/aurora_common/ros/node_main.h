@@ -12,9 +12,9 @@
 #include <csignal>
 #include <cstdio>
 
-#include "aurora_sim/ros/params.h"
+#include "aurora_common/ros/params.h"
 
-namespace aurora_sim {
+namespace aurora_common {
 
 constexpr int kExitShutDownFromOutside = 3;
 
@@ -74,4 +74,4 @@ int runNode(int argc, char** argv, const char* name) {
   return 0;
 }
 
-}  // namespace aurora_sim
+}  // namespace aurora_common

@@ -8,7 +8,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace aurora_sim {
+namespace aurora_common {
 
 // The one error type of a refused value, parameter or file: its message
 // names the key, the value and what is accepted. Every reader throws it (ROS
@@ -34,4 +34,4 @@ inline std::string booleanRefusal(const std::string& key, const std::string& val
          "(a quoted \"false\" is a string)";
 }
 
-}  // namespace aurora_sim
+}  // namespace aurora_common

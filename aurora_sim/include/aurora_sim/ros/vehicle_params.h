@@ -1,0 +1,39 @@
+// A vehicle's parameters from the parameter server (a vehicle file loaded
+// under a namespace), strictly: its `type` must be the vehicle's, every key
+// of its file is required and range-checked (vehicle_type.h), no made-up
+// defaults for vehicle constants.
+#pragma once
+
+#include <ros/ros.h>
+
+#include <string>
+
+#include "aurora_common/ros/params.h"
+#include "aurora_sim/vehicle/ardrone2.h"
+#include "aurora_sim/vehicle/vehicle_type.h"
+
+namespace aurora_sim {
+
+// Reads a vehicle's parameters under `ns` (e.g. "vehicle", a vehicle file
+// loaded there): its `type` must be `Vehicle`'s, every key of its file is
+// required and checked against its range.
+template <class Vehicle = Ardrone2>
+typename Vehicle::template Params<double> loadVehicleParams(const ros::NodeHandle& nh, const std::string& ns,
+                                                            const std::string& flown_by = "this node") {
+  const std::string prefix = aurora_common::fullKey(nh, ns) + "/";
+  const std::string load = ": load a vehicle file such as config/vehicles/" + std::string(Vehicle::name()) +
+                           ".yaml (launch arg 'vehicle')";
+  std::string type;
+  if (nh.hasParam(ns + "/type") && !nh.getParam(ns + "/type", type)) {
+    throw aurora_common::ConfigError("vehicle parameter '" + prefix + "type' is not a name" + load);
+  }
+  return vehicleFromKeys<Vehicle>("vehicle parameters '" + prefix + "': ", type, flown_by, prefix, [&](const auto& key) {
+    double value = 0.0;
+    if (!nh.getParam(ns + "/" + key.name, value)) {
+      throw aurora_common::ConfigError("missing vehicle parameter '" + prefix + key.name + "'" + load);
+    }
+    return value;
+  });
+}
+
+}  // namespace aurora_sim
