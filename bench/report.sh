@@ -20,7 +20,7 @@ roslaunch -p "$PORT" launch/sim.launch mode:=lockstep delay:=10 record:=true bag
   bag_name:=bench stop_after:=60 sim_output:=log > "$OUT/launch.log" 2>&1 || true
 bag=$(ls -t "$OUT"/bench_*.bag | head -1)
 start=$(date +%s.%N)
-rosrun aurora_control report "$bag" --out "$OUT/report" 2> "$OUT/report.log"
+rosrun aurora report "$bag" --out "$OUT/report" 2> "$OUT/report.log"
 end=$(date +%s.%N)
 python3 - "$OUT/report/metrics.json" "$start" "$end" <<'PY'
 import json, sys

@@ -32,7 +32,7 @@ bag=$(ls -t "$OUT"/bags/demo_*.bag 2>/dev/null | head -1)
 [ -n "$bag" ] || { echo "demo: no bag was written, see $OUT/demo_launch.log" >&2; exit 1; }
 echo "demo: 60 s mission flown in $(python3 -c "print(round($end-$start, 2))") s wall; bag $bag"
 rm -rf "$OUT/report"
-rosrun aurora_control report "$bag" --out "$OUT/report"
+rosrun aurora report "$bag" --out "$OUT/report"
 python3 - "$OUT/report/metrics.json" <<'PY'
 import json, sys
 m = json.load(open(sys.argv[1]))["drones"][0]

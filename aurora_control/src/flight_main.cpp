@@ -15,7 +15,7 @@
 
 #include "aurora_control/loop/flight_setup.h"
 #include "aurora_common/ros/config_dir.h"
-#include "formation_flight.h"
+#include "aurora_control/formation/formation_flight.h"
 #include "option_values.h"
 
 namespace po = boost::program_options;

@@ -1,4 +1,4 @@
-#include "formation_flight.h"
+#include "aurora_control/formation/formation_flight.h"
 
 #include <chrono>
 #include <cmath>

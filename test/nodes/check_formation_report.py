@@ -64,7 +64,7 @@ class FormationReportTest(unittest.TestCase):
         bag = record_until(900, rospy.get_param("~bag_dir"), rospy.get_param("~prefix"),
                            state="/ardrone2/state", recorder="/recorder")
         out = bag[:-4] + "_report"
-        p = subprocess.run(["rosrun", "aurora_control", "report", bag, "--out", out, "--no-pdf"],
+        p = subprocess.run(["rosrun", "aurora", "report", bag, "--out", out, "--no-pdf"],
                            stdout=subprocess.PIPE, stderr=subprocess.STDOUT, universal_newlines=True)
         self.assertEqual(p.returncode, 0, p.stdout)
         # Issue 31: it said nothing while it rendered the video (80 s for a whole flight).

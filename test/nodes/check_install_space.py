@@ -56,7 +56,7 @@ class InstallSpaceTest(unittest.TestCase):
         self.assertEqual(self.installed.returncode, 0, self.installed.stdout[-3000:])
 
     def test_1_packages_resolve_to_the_install_space(self):
-        for pkg in ("aurora_config", "aurora_bringup", "aurora_common", "aurora_sim", "aurora_control", "aurora_sweep"):
+        for pkg in ("aurora_config", "aurora_bringup", "aurora_common", "aurora_sim", "aurora", "aurora_control", "aurora_sweep"):
             rc, out = self.sh("rospack find %s" % pkg)
             self.assertEqual((rc, out.strip()), (0, os.path.join(self.prefix, "share", pkg)), out)
 
@@ -70,7 +70,7 @@ class InstallSpaceTest(unittest.TestCase):
         bag = [f for f in os.listdir(bags) if f.endswith(".bag")]
         self.assertEqual(len(bag), 1, os.listdir(bags))
         report = os.path.join(self.tmp, "report")
-        rc, out = self.sh("rosrun aurora_control report %s --out %s --no-video --no-pdf"
+        rc, out = self.sh("rosrun aurora report %s --out %s --no-video --no-pdf"
                           % (os.path.join(bags, bag[0]), report))
         self.assertEqual(rc, 0, out)
         m = json.load(open(os.path.join(report, "metrics.json")))["drones"][0]

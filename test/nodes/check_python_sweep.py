@@ -116,7 +116,7 @@ class PythonSweepTest(unittest.TestCase):
         import matplotlib
         matplotlib.use("Agg")
         import matplotlib.pyplot as plt
-        from aurora.plot_sweep import share_contours
+        from aurora_sweep.plot_sweep import share_contours
         x, y = np.arange(4.0), np.arange(3.0)
         for grid, lines in ((np.ones((3, 4)), []), (np.full((3, 4), np.nan), []),
                             (np.array([[0.0, 0.6, 1.0, 1.0]] * 3), [0.5, 0.9]), (np.array([[0.0, 0.6, 0.7, 0.8]] * 3), [0.5])):

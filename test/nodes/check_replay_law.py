@@ -33,7 +33,7 @@ class ReplayLawTest(unittest.TestCase):
             self.assertEqual(rc, 2, log)
             self.assertIn("--kp is a gain of the pd_saturated law, but the bag's controller is underactuated", log)
         out = tempfile.mkdtemp(prefix="aurora_replay_law_")
-        rc, log = run(["rosrun", "aurora_control", "report", bag, "--out", out, "--no-video"])
+        rc, log = run(["rosrun", "aurora", "report", bag, "--out", out, "--no-video"])
         self.assertEqual(rc, 0, log)
         m = json.load(open(os.path.join(out, "metrics.json")))["drones"][0]
         self.assertEqual(m["controller"], rospy.get_param("~controller"))

@@ -37,7 +37,7 @@ class ReportReplayTest(unittest.TestCase):
 
     def test_1_report_writes_figures_video_and_controller_metrics(self):
         out = os.path.join(self.tmp, "report")
-        rc, log = run(["rosrun", "aurora_control", "report", self.bag, "--out", out])
+        rc, log = run(["rosrun", "aurora", "report", self.bag, "--out", out])
         self.assertEqual(rc, 0, log)
         self.assertNotIn("Traceback", log)
         metrics = json.load(open(os.path.join(out, "metrics.json")))
@@ -114,7 +114,7 @@ class ReportReplayTest(unittest.TestCase):
             for topic, msg, t in src.read_messages():
                 if not topic.endswith("/control"):
                     dst.write(topic, msg, t)
-        rc, log = run(["rosrun", "aurora_control", "report", stripped, "--no-video"])
+        rc, log = run(["rosrun", "aurora", "report", stripped, "--no-video"])
         self.assertEqual(rc, 2, log)
         self.assertIn("missing /ardrone1/control", log)
         self.assertIn("present: ", log)
@@ -129,7 +129,7 @@ class ReportReplayTest(unittest.TestCase):
             data = f.read()
         with open(truncated, "wb") as f:
             f.write(data[: len(data) // 2])
-        rc, log = run(["rosrun", "aurora_control", "report", truncated, "--no-video"])
+        rc, log = run(["rosrun", "aurora", "report", truncated, "--no-video"])
         self.assertEqual(rc, 2, log)
         self.assertIn("report: error:", log)
         self.assertIn("reindex", log)
@@ -146,7 +146,7 @@ class ReportReplayTest(unittest.TestCase):
                 if topic.startswith("/ardrone1/"):
                     dst.write(topic.replace("/ardrone1/", "/ardrone2/"), msg, t)
         out = os.path.join(self.tmp, "two")
-        rc, log = run(["rosrun", "aurora_control", "report", two, "--out", out, "--no-video", "--no-pdf"])
+        rc, log = run(["rosrun", "aurora", "report", two, "--out", out, "--no-video", "--no-pdf"])
         self.assertEqual(rc, 0, log)
         drones = json.load(open(os.path.join(out, "metrics.json")))["drones"]
         self.assertEqual([d["namespace"] for d in drones], ["/ardrone1", "/ardrone2"])

@@ -1,6 +1,6 @@
 """Report of a recorded flight (simulated or real) from its bag.
 
-    rosrun aurora_control report BAG [--out DIR] [--ns NAME ...] [--no-video]
+    rosrun aurora report BAG [--out DIR] [--ns NAME ...] [--no-video]
 
 Writes, per drone namespace: metrics (IAE, ITAE, IASC with the study's
 conventions, maximum and final position error, settling time and overshoot per

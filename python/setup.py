@@ -1,4 +1,4 @@
-# The Python package `aurora` (aurora_control/src/aurora), installed by
+# The Python package `aurora` (python/src/aurora), installed by
 # catkin_python_setup() into the devel and install spaces.
 from setuptools import setup
 

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "aurora_control/loop/flight_setup.h"
-#include "../formation_flight.h"
+#include "aurora_control/formation/formation_flight.h"
 
 namespace py = pybind11;
 using namespace aurora_control;

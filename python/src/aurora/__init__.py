@@ -2,10 +2,8 @@
 
 Modules:
     aurora.report      the analysis of a recorded flight (bag -> metrics, figures,
-                       video, report.md); `rosrun aurora_control report` calls it
+                       video, report.md); `rosrun aurora report` calls it
     aurora.formation_report  its part for a formation's bag (formation.launch)
-    aurora.plot_sweep  the plots of a sweep's results; the sweep program runs
-                       `rosrun aurora_sweep plot_sweep DIR`, which calls it
 
     aurora.simulate    one offline flight on the C++ core (aurora.simulation)
     aurora.simulate_formation  one offline formation flight (flight --formation's)
