@@ -65,6 +65,18 @@ struct LoopParams {
   FeasibilityCriteria<T> criteria;
 };
 
+// What the controller's half changes (controllerHalf): the metrics, the
+// law's own memory and the loop clock it reads. The controller node keeps
+// one (delayed_controller.h); a loop's state (below) has the same members
+// beside the vehicle's (kept in one struct, in this order: the kernels'
+// registers and spills depend on it).
+template <class Data, typename T, typename Mask>
+struct ControllerState {
+  PositioningMetrics<T, Mask> metrics;
+  typename Data::template Memory<T> memory;  // the law's own state (the underactuated law's; empty for others)
+  T t;  // the loop clock: metric time of the next iteration
+};
+
 // What changes during a run.
 template <class Data, typename T, typename Mask>
 struct LoopState {
@@ -108,17 +120,31 @@ struct LoopStep {
 
 // The controller's side of iteration k (k as T: a batch of per-lane step
 // numbers on SIMD lanes) with xc the state it received: the reference at
-// task time k Ts, the law, its clamp and the metrics. Writes the command it
-// sends to U; returns the reference.
-template <class Law, class Data, typename T, typename Mask, typename TaskT>
+// task time k Ts, the law, its clamp and the metrics at the clock's time
+// s.t. Writes the command it sends to U, the law's unclamped command to
+// U_law and the position error (ref - xc) to err; returns the reference.
+// `s`: a ControllerState, or a LoopState (the same members).
+// Every loop runs it: the offline runner, the SIMD engine and each CUDA
+// thread (through loopIteration), and the controller node and replay
+// (through DelayedController, with the node's reference as the task).
+template <class Law, class Data, typename T, typename TaskT, class State>
 AURORA_HD inline Reference<T> controllerHalf(const LoopParams<Data, T>& p, const TaskT& task, const ClampPolicy& clamp,
-                                             const T& k, const T xc[Law::Vehicle::kStates],
-                                             LoopState<Data, T, Mask>& s, T U[Law::Vehicle::kInputs]) {
+                                             const T& k, const T xc[Law::Vehicle::kStates], State& s,
+                                             T U_law[Law::Vehicle::kInputs],
+                                             T U[Law::Vehicle::kInputs], T err[3]) {
   const Reference<T> ref = task.at(taskTime(k, p.plant.Ts));
-  T U_law[Law::Vehicle::kInputs], err[3];
   controllerCommand<Law>(p.model, p.gains, s.memory, ref, xc, clamp.at_controller, U_law, U, err);
   s.metrics.template accumulate<Law::Vehicle::kInputs>(p.criteria, err, U, s.t);
   return ref;
+}
+
+// The same for a loop that needs the command it sends only.
+template <class Law, class Data, typename T, typename TaskT, class State>
+AURORA_HD inline Reference<T> controllerHalf(const LoopParams<Data, T>& p, const TaskT& task, const ClampPolicy& clamp,
+                                             const T& k, const T xc[Law::Vehicle::kStates], State& s,
+                                             T U[Law::Vehicle::kInputs]) {
+  T U_law[Law::Vehicle::kInputs], err[3];
+  return controllerHalf<Law>(p, task, clamp, k, xc, s, U_law, U, err);
 }
 
 // The vehicle's side: the command it received (the sent one over an ideal

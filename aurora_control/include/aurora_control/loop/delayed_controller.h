@@ -1,12 +1,13 @@
-// The controller node's per-cycle computation, ROS-free: the controller half
-// of the closed loop (closed_loop.h) in its incremental form. Received states
-// go into the delay buffer; each cycle the chosen law (the delay study's PD
-// law with saturation, eq. 3.1, or the underactuated 12-gain law) runs on the
-// delayed state (docs/delay-and-study.md) through controllerCommand, the
-// command is clamped as the drivers do (optional), and the study's metrics
-// accumulate once per state step at the loop clock's time. The node and the
-// offline `replay` tool both call this class, so a replay of a bag
-// reproduces every command.
+// The controller node's per-cycle computation, ROS-free: the controller's
+// side of the one iteration (closed_loop.h) in its incremental form.
+// Received states go into the delay buffer (and through the node's link);
+// each cycle runs the iteration's controller half, controllerHalf, with the
+// node's reference: the chosen law (the delay study's PD law with
+// saturation, eq. 3.1, or the underactuated 12-gain law) on the delivered
+// state (docs/delay-and-study.md), the optional clamp (as the drivers
+// clamp), the study's metrics at the loop clock's time, once per state
+// step; then the link's downlink. The node and the offline `replay` tool
+// both call this class, so a replay of a bag reproduces every command.
 #pragma once
 
 #include <cstdint>
@@ -57,6 +58,13 @@ struct ControlOutput {
   double iae = 0, itae = 0, iasc = 0;    // running metrics after this cycle
 };
 
+// The node's reference as controllerHalf's task: the node computes it from
+// its own task clock (which starts after take-off), so it holds at any time.
+struct GivenReference {
+  Reference<double> ref;
+  Reference<double> at(double) const { return ref; }
+};
+
 template <int Capacity>
 class DelayedController {
  public:
@@ -68,7 +76,7 @@ class DelayedController {
 
   void reset() {
     history_.clear();
-    memory_.reset();
+    side_.memory.reset();
     link_.reset();
     resetMetrics();
   }
@@ -80,7 +88,7 @@ class DelayedController {
 
   // The metrics start again (e.g. when the task starts after take-off).
   void resetMetrics() {
-    metrics_.reset();
+    side_.metrics.reset();
     metrics_step_ = -1;
   }
 
@@ -124,13 +132,8 @@ class DelayedController {
     out.used = &used;
     out.delay_in_force = link_.active() ? newest().step - used.step : history_.delayInForce(settings.delay);
     out.delay_pending = link_.active() ? 0 : history_.pendingUntilInForce(settings.delay);
-    const LawGains<double> gains{settings.gains, settings.underactuated};
-    withLaw(settings.law, [&](auto law) {
-      controllerCommand<decltype(law)>(settings.vehicle, gains, memory_, ref, used.X,
-                                              settings.clamp_commands, out.U_unclamped, out.U,
-                                              out.position_error);
-    });
-    finish(out);
+    controllerSide(ref, used, out);
+    metricsOut(out);
     overLink(out);
     return out;
   }
@@ -147,7 +150,13 @@ class DelayedController {
   ControlOutput hover() {
     ControlOutput out;
     out.used = &newest();
-    finish(out);
+    const long step = newest().step;
+    if (step != metrics_step_) {
+      side_.metrics.template accumulate<LawVehicle::kInputs>(criteria_, out.position_error, out.U,
+                                                             clock_.at(step, settings.Ts));
+      metrics_step_ = step;
+    }
+    metricsOut(out);
     return out;
   }
 
@@ -174,22 +183,38 @@ class DelayedController {
     out.downlink_losses = link_.downlinkLosses();
   }
 
-  void finish(ControlOutput& out) {
-    // Metrics once per state step (a timer cycle without a new state, or a
-    // re-sent state, does not count twice), at the loop clock's time.
+  // The iteration's controller half (controllerHalf) on the delivered state,
+  // its metrics at the loop clock's time of the newest step. The metrics
+  // count once per state step: a timer cycle without a new state, or a
+  // re-sent state, runs the law again (its memory moves on, as the node's
+  // law always did) but its metrics do not count twice.
+  void controllerSide(const Reference<double>& ref, const StateSample& used, ControlOutput& out) {
     const long step = newest().step;
-    if (step != metrics_step_) {
-      metrics_.template accumulate<LawVehicle::kInputs>(criteria_, out.position_error, out.U, clock_.at(step, settings.Ts));
-      metrics_step_ = step;
-    }
-    out.iae = metrics_.iae;
-    out.itae = metrics_.itae;
-    out.iasc = metrics_.iasc;
+    const bool counted = step == metrics_step_;
+    const PositioningMetrics<double, bool> before = side_.metrics;
+    side_.t = clock_.at(step, settings.Ts);
+    const LoopParams<ArdroneLawData, double> params{settings.vehicle, settings.vehicle,
+                                                    LawGains<double>{settings.gains, settings.underactuated},
+                                                    criteria_};
+    const ClampPolicy clamp{settings.clamp_commands, false};
+    withLaw(settings.law, [&](auto law) {
+      controllerHalf<decltype(law)>(params, GivenReference{ref}, clamp, double(step), used.X, side_,
+                                    out.U_unclamped, out.U, out.position_error);
+    });
+    if (counted) side_.metrics = before;
+    metrics_step_ = step;
+  }
+
+  void metricsOut(ControlOutput& out) const {
+    out.iae = side_.metrics.iae;
+    out.itae = side_.metrics.itae;
+    out.iasc = side_.metrics.iasc;
   }
 
   DelayBuffer<StateSample, Capacity> history_;
-  UnderactuatedMemory<double> memory_;  // the underactuated law's own state
-  PositioningMetrics<double, bool> metrics_;
+  // What the controller's half changes: the metrics, the underactuated
+  // law's memory, the clock's time (set from clock_ each cycle).
+  ControllerState<ArdroneLawData, double, bool> side_;
   FeasibilityCriteria<double> criteria_ = FeasibilityCriteria<double>::study();
   long metrics_step_ = -1;
   LoopClock clock_;
