@@ -18,22 +18,6 @@ void loadLaw(const ros::NodeHandle& pnh, const aurora_control::LawVehicleParams&
   set.vehicle = vehicle;
 }
 
-double tableParam(const ros::NodeHandle& pnh, const ParameterSpec& row) {
-  return rangedParam(pnh, row.name, row.default_value, row.min, row.max, row.unit);
-}
-
-std::string wordParam(const ros::NodeHandle& pnh, const ParameterSpec& row) {
-  const std::vector<std::string> words = paramChoices(row);
-  const std::string value = paramOr<std::string>(pnh, row.name, words[static_cast<size_t>(row.default_value)]);
-  if (std::find(words.begin(), words.end(), value) == words.end()) {
-    std::string accepted;
-    for (const std::string& w : words) accepted += (accepted.empty() ? "'" : ", '") + w + "'";
-    throw ConfigError("parameter '" + fullKey(pnh, row.name) + "' = '" + value + "' is invalid: accepted values " +
-                      accepted);
-  }
-  return value;
-}
-
 std::string gainsText(const ControllerSettings& set) {
   std::string out;
   const std::vector<std::string> names = lawGainNames(set.law);

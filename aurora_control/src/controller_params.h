@@ -21,6 +21,8 @@ namespace aurora_control {
 using aurora_common::fullKey;
 using aurora_common::paramOr;
 using aurora_common::rangedParam;
+using aurora_common::tableParam;
+using aurora_common::wordParam;
 
 // The law named by ~controller/name and its gains (all required), with the
 // vehicle model the underactuated law inverts. Unknown keys under
@@ -30,11 +32,6 @@ void loadLaw(const ros::NodeHandle& pnh, const aurora_control::LawVehicleParams&
 
 // "Kp=0.5 Kd=0.85" or "k1_x=0.5 k2_x=2 ...": the gains in force, for the log.
 std::string gainsText(const ControllerSettings& settings);
-// A row of the parameter table (parameter_table.h) as the node's private
-// parameter: a number within the row's range (its default when absent), or
-// one of a word row's words. Refused with the full key and what is accepted.
-double tableParam(const ros::NodeHandle& pnh, const ParameterSpec& row);
-std::string wordParam(const ros::NodeHandle& pnh, const ParameterSpec& row);
 const char* taskTypeName(TaskType type);
 
 // The underactuated gains to / from the reconfigure server's config.

@@ -3,10 +3,7 @@
 // parameter reference is the table's (regenerate it from the failure's text).
 #include <gtest/gtest.h>
 
-#include <fstream>
-#include <sstream>
-#include <string>
-
+#include "aurora_common/testing/doc_section.h"
 #include "aurora_control/params/limits.h"
 #include "aurora_control/params/parameter_table.h"
 #include "aurora_control/law/underactuated_law.h"
@@ -33,15 +30,6 @@ TEST(ParameterTable, BothPdGainsShareOneRange) {
 }
 
 TEST(ParameterTable, DocsReferenceIsTheTables) {
-  std::ifstream in(AURORA_PARAMETER_DOC);
-  ASSERT_TRUE(in.good()) << AURORA_PARAMETER_DOC;
-  std::stringstream text;
-  text << in.rdbuf();
-  const std::string readme = text.str(), begin = "<!-- parameter-reference:begin -->\n",
-                    end = "<!-- parameter-reference:end -->";
-  const size_t a = readme.find(begin), b = readme.find(end);
-  ASSERT_NE(a, std::string::npos) << "docs/parameters.md lacks the marker " << begin;
-  ASSERT_NE(b, std::string::npos) << "docs/parameters.md lacks the marker " << end;
-  EXPECT_EQ(readme.substr(a + begin.size(), b - a - begin.size()), parameterReference())
+  EXPECT_EQ(aurora_common::docSection(AURORA_PARAMETER_DOC, "parameter-reference"), parameterReference())
       << "docs/parameters.md's reference differs from parameter_table.h: put this between the markers";
 }

@@ -14,17 +14,21 @@
 #include "aurora_sim/ros/conversions.h"
 #include "aurora_common/rotation.h"
 #include "aurora_sim/ros/vehicle_params.h"
+#include "aurora_sim/sim_parameters.h"
 #include "aurora_sim/vehicle/ardrone2.h"
 
 namespace aurora_sim {
 
 using aurora_common::ConfigError;
+using aurora_common::flagParam;
 using aurora_common::fullKey;
 using aurora_common::paramOr;
-using aurora_common::rangedParam;
+using aurora_common::tableParam;
+using aurora_common::textParam;
+using aurora_common::wholeParam;
+using aurora_common::wordParam;
 
 namespace {
-constexpr double kLandedAltitude = 0.05;  // [m] below this while landing the drone is down
 constexpr double kTakeoffClimb = 0.5;     // climb command during take-off (fraction)
 constexpr double kLandingClimb = -0.5;    // climb command during landing (fraction)
 }  // namespace
@@ -33,46 +37,7 @@ ArdroneSimNode::ArdroneSimNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
     : nh_(nh), pnh_(private_nh) {
   params_ = loadVehicleParams(nh_, "vehicle");
 
-  const std::string mode = paramOr<std::string>(pnh_, "mode", "realtime");
-  if (mode == "realtime") {
-    mode_ = Mode::kRealtime;
-  } else if (mode == "lockstep") {
-    mode_ = Mode::kLockstep;
-  } else {
-    throw ConfigError("parameter '" + fullKey(pnh_, "mode") + "' = '" + mode +
-                         "' is invalid: accepted values 'realtime', 'lockstep'");
-  }
-  cmd_timeout_ = rangedParam(pnh_, "cmd_timeout", 0.2, 0.0, 10.0, "s", false);
-  takeoff_altitude_ = rangedParam(pnh_, "takeoff_altitude", 0.75, kLandedAltitude, 5.0, "m", false);
-  frame_id_ = paramOr<std::string>(pnh_, "frame_id", "world");
-  std::string ns = nh_.getNamespace();
-  while (!ns.empty() && ns.front() == '/') ns.erase(ns.begin());
-  child_frame_id_ =
-      paramOr<std::string>(pnh_, "child_frame_id", ns.empty() ? "base_link" : ns + "/base_link");
-  path_decimation_ = paramOr(pnh_, "path_decimation", 3);
-  if (path_decimation_ < 1) {
-    throw ConfigError("parameter '" + fullKey(pnh_, "path_decimation") +
-                         "' is invalid: accepted values integers >= 1");
-  }
-  const double kNoLimit = std::numeric_limits<double>::max();
-  nan_quiet_period_ = rangedParam(pnh_, "nan_burst/quiet_period", 1.0, 0.0, 60.0,
-                                  "s", false);
-  const double summary = rangedParam(pnh_, "nan_burst/summary_period", 5.0, 0.1, 3600.0,
-                                     "s");
-  nan_burst_ = RejectionBurst(nan_quiet_period_, summary);
-  stop_after_ = rangedParam(pnh_, "stop_after", 0.0, 0.0, kNoLimit, "s (0 = run until stopped)");
-  lockstep_subscribers_ = paramOr(pnh_, "lockstep_subscribers", 1);
-  if (lockstep_subscribers_ < 0) {
-    throw ConfigError("parameter '" + fullKey(pnh_, "lockstep_subscribers") +
-                         "' is invalid: accepted integers >= 0");
-  }
-  max_real_time_factor_ = rangedParam(pnh_, "max_real_time_factor", 0.0, 0.0, kNoLimit,
-                                      "(0 = as fast as possible)");
-  // The study's initial state (z = 0.75 m, in the air); false starts landed.
-  flight_ = aurora_common::boolParam(pnh_, "start_flying", true) ? Flight::kFlying : Flight::kLanded;
-  readStart();
-  // Several sims in lockstep (formation.launch): one of them owns /clock.
-  publish_clock_ = aurora_common::boolParam(pnh_, "publish_clock", true);
+  readParameters();
 
   resetModel();
   path_.header.frame_id = frame_id_;
@@ -105,6 +70,29 @@ ArdroneSimNode::ArdroneSimNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
   }
 }
 
+// Every row of the simulator's parameter table (sim_parameters.h).
+void ArdroneSimNode::readParameters() {
+  const auto& rows = kSimParameterTable;
+  mode_ = wordParam(pnh_, rows[kSimRowMode]) == "lockstep" ? Mode::kLockstep : Mode::kRealtime;
+  cmd_timeout_ = tableParam(pnh_, rows[kSimRowCmdTimeout]);
+  takeoff_altitude_ = tableParam(pnh_, rows[kSimRowTakeoffAltitude]);
+  frame_id_ = textParam(pnh_, rows[kSimRowFrameId], rows[kSimRowFrameId].text);
+  std::string ns = nh_.getNamespace();
+  while (!ns.empty() && ns.front() == '/') ns.erase(ns.begin());
+  child_frame_id_ = textParam(pnh_, rows[kSimRowChildFrameId], ns.empty() ? "base_link" : ns + "/base_link");
+  path_decimation_ = static_cast<int>(wholeParam(pnh_, rows[kSimRowPathDecimation]));
+  nan_quiet_period_ = tableParam(pnh_, rows[kSimRowNanQuietPeriod]);
+  nan_burst_ = RejectionBurst(nan_quiet_period_, tableParam(pnh_, rows[kSimRowNanSummaryPeriod]));
+  stop_after_ = tableParam(pnh_, rows[kSimRowStopAfter]);
+  lockstep_subscribers_ = static_cast<int>(wholeParam(pnh_, rows[kSimRowLockstepSubscribers]));
+  max_real_time_factor_ = tableParam(pnh_, rows[kSimRowMaxRealTimeFactor]);
+  // The study's initial state (z = 0.75 m, in the air); false starts landed.
+  flight_ = flagParam(pnh_, rows[kSimRowStartFlying]) ? Flight::kFlying : Flight::kLanded;
+  readStart();
+  // Several sims in lockstep (formation.launch): one of them owns /clock.
+  publish_clock_ = flagParam(pnh_, rows[kSimRowPublishClock]);
+}
+
 namespace {
 
 double xmlNumber(XmlRpc::XmlRpcValue& v, const std::string& key) {
@@ -119,20 +107,22 @@ double xmlNumber(XmlRpc::XmlRpcValue& v, const std::string& key) {
 // drone ~formation_drone (0-based) of the formation file loaded under
 // ~formation (formation.launch: the file's drones[i].start); else (0, 0, 0.75).
 void ArdroneSimNode::readStart() {
+  const char* start = kSimParameterTable[kSimRowStart].name;
+  const aurora_common::ParameterSpec& robot = kSimParameterTable[kSimRowFormationDrone];
   XmlRpc::XmlRpcValue list;
-  std::string key = fullKey(pnh_, "start");
-  if (pnh_.hasParam("formation_drone")) {
-    const int i = paramOr(pnh_, "formation_drone", -1);
+  std::string key = fullKey(pnh_, start);
+  if (pnh_.hasParam(robot.name)) {
+    const int i = static_cast<int>(wholeParam(pnh_, robot));
     XmlRpc::XmlRpcValue drones;
     key = fullKey(pnh_, "formation/formation/drones");
     if (!pnh_.getParam("formation/formation/drones", drones) || drones.getType() != XmlRpc::XmlRpcValue::TypeArray ||
         i < 0 || i >= drones.size() || !drones[i].hasMember("start")) {
-      throw ConfigError("parameter '" + fullKey(pnh_, "formation_drone") + "' = " + std::to_string(i) +
+      throw ConfigError("parameter '" + fullKey(pnh_, robot.name) + "' = " + std::to_string(i) +
                         ": no such drone with a start in '" + key + "' (formation.launch loads the formation file there)");
     }
     list = drones[i]["start"];
     key += "[" + std::to_string(i) + "].start";
-  } else if (!pnh_.getParam("start", list)) {
+  } else if (!pnh_.getParam(start, list)) {
     return;
   }
   if (list.getType() != XmlRpc::XmlRpcValue::TypeArray || list.size() != 3) {

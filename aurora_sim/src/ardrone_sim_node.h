@@ -38,6 +38,7 @@ class ArdroneSimNode {
   void stepAndPublish(const ros::Time& now, bool command_fresh);
   void publishState(const ros::Time& stamp);
   void resetModel();
+  void readParameters();
   void readStart();
   ros::Time lockstepTime() const;
 

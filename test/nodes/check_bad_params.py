@@ -129,6 +129,15 @@ class BadParamsTest(unittest.TestCase):
         self.assert_refused(rc, out, "'/neg_stop/ardrone_sim/stop_after' = -5 is invalid", "accepted range [0, inf) s")
         self.assertNotIn("179769", out)
 
+    def test_sim_whole_number_with_a_fraction(self):
+        # A fraction is refused naming the key (it once fell back silently to the default).
+        rc, out = self.sim_case("/half_path", lambda p: rospy.set_param(p + "ardrone_sim/path_decimation", 2.5))
+        self.assert_refused(rc, out, "'/half_path/ardrone_sim/path_decimation' = ", "accepted a whole number from 1")
+
+    def test_sim_unknown_mode(self):
+        rc, out = self.sim_case("/bad_mode", lambda p: rospy.set_param(p + "ardrone_sim/mode", "fast"))
+        self.assert_refused(rc, out, "'/bad_mode/ardrone_sim/mode' = 'fast' is invalid", "'realtime', 'lockstep'")
+
 if __name__ == "__main__":
     rospy.init_node("check_bad_params")
     rostest.rosrun("aurora_tests", "bad_params", BadParamsTest)

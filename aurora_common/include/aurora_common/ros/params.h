@@ -5,12 +5,14 @@
 
 #include <ros/ros.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
 #include <stdexcept>
 #include <string>
 
+#include "aurora_common/parameter_spec.h"
 #include "aurora_common/refusal_text.h"
 
 namespace aurora_common {
@@ -59,6 +61,51 @@ inline double rangedParam(const ros::NodeHandle& nh, const std::string& key, dou
                          ", " + (open ? std::string("inf)") : numberText(hi) + "]") + " " + unit);
   }
   return v;
+}
+
+// A row of a parameter table (parameter_spec.h) as a node's private
+// parameter, its default when absent; refused with the full key and what is
+// accepted. A number within the row's range:
+inline double tableParam(const ros::NodeHandle& nh, const ParameterSpec& row) {
+  const double hi = std::isnan(row.max) ? std::numeric_limits<double>::max() : row.max;
+  return rangedParam(nh, row.name, row.default_value, row.min, hi, row.unit, !row.min_excluded);
+}
+
+// A whole number within the row's range (an integer, or a real without a
+// fraction; 2.5 is refused, not truncated).
+inline long wholeParam(const ros::NodeHandle& nh, const ParameterSpec& row) {
+  XmlRpc::XmlRpcValue v;
+  if (nh.getParam(row.name, v) && v.getType() != XmlRpc::XmlRpcValue::TypeInt &&
+      !(v.getType() == XmlRpc::XmlRpcValue::TypeDouble && std::floor(double(v)) == double(v))) {
+    throw ConfigError("parameter '" + fullKey(nh, row.name) + "' = " + v.toXml() +
+                      " is invalid: accepted a whole number from " + numberText(row.min) +
+                      (std::isnan(row.max) ? std::string(" up") : " to " + numberText(row.max)));
+  }
+  return static_cast<long>(tableParam(nh, row));
+}
+
+// One of a word row's words.
+inline std::string wordParam(const ros::NodeHandle& nh, const ParameterSpec& row) {
+  const std::vector<std::string> words = paramChoices(row);
+  const std::string value = paramOr<std::string>(nh, row.name, words[static_cast<size_t>(row.default_value)]);
+  if (std::find(words.begin(), words.end(), value) == words.end()) {
+    std::string accepted;
+    for (const std::string& w : words) accepted += (accepted.empty() ? "'" : ", '") + w + "'";
+    throw ConfigError("parameter '" + fullKey(nh, row.name) + "' = '" + value + "' is invalid: accepted values " +
+                      accepted);
+  }
+  return value;
+}
+
+// A flag row, by the one boolean rule.
+inline bool flagParam(const ros::NodeHandle& nh, const ParameterSpec& row) {
+  return boolParam(nh, row.name, row.default_value != 0.0);
+}
+
+// A text row (a frame name); `fallback` where the row's default depends on
+// the node (its namespace).
+inline std::string textParam(const ros::NodeHandle& nh, const ParameterSpec& row, const std::string& fallback) {
+  return paramOr<std::string>(nh, row.name, fallback);
 }
 
 }  // namespace aurora_common

@@ -6,27 +6,16 @@
 // parameter reference is parameterReference() of this table.
 #pragma once
 
-#include <cmath>
-#include <cstdio>
-#include <limits>
-#include <algorithm>
 #include <string>
-#include <vector>
+
+#include "aurora_common/parameter_spec.h"
 
 namespace aurora_control {
 
-enum class ParamKind { kReal, kWholeSamples, kWhole, kBool, kWord };
-
-struct ParameterSpec {
-  const char* name;      // in the controller YAML and ROS parameters (sweep files and reconfigure: see doc)
-  ParamKind kind;
-  double default_value;  // NaN: none, the file must give it
-  double min, max;       // accepted values, inclusive (NaN max: see doc)
-  const char* unit;      // "" for none
-  const char* doc;
-  const char* choices;   // kWord: the accepted words, '|'-separated; default_value is the default's index
-  const char* live;      // its name as a live setting (dynamic_reconfigure, Controller.cfg), or none
-};
+using aurora_common::kNoValue;
+using aurora_common::ParameterSpec;
+using aurora_common::ParamKind;
+using aurora_common::paramChoices;
 
 // The rows, named.
 enum ParameterRow : int {
@@ -49,8 +38,6 @@ enum ParameterRow : int {
   kRowDownlinkBurst,
   kParameterRows,
 };
-
-constexpr double kNoValue = std::numeric_limits<double>::quiet_NaN();
 
 constexpr ParameterSpec kParameterTable[kParameterRows] = {
     {"kp", ParamKind::kReal, kNoValue, 0.0, 10.0, "",
@@ -103,29 +90,6 @@ constexpr ParameterSpec kParameterTable[kParameterRows] = {
      "link: mean run of lost command packets (1: independent losses)", nullptr, "downlink_burst"},
 };
 
-inline const char* paramKindName(ParamKind k) {
-  switch (k) {
-    case ParamKind::kReal: return "real";
-    case ParamKind::kWholeSamples:
-    case ParamKind::kWhole: return "whole";
-    case ParamKind::kBool: return "bool";
-    case ParamKind::kWord: break;
-  }
-  return "word";
-}
-
-// A word row's accepted words, in order.
-inline std::vector<std::string> paramChoices(const ParameterSpec& p) {
-  std::vector<std::string> words;
-  const std::string all = p.choices ? p.choices : "";
-  for (size_t a = 0; a <= all.size() && !all.empty();) {
-    const size_t b = std::min(all.find('|', a), all.size());
-    words.push_back(all.substr(a, b - a));
-    a = b + 1;
-  }
-  return words;
-}
-
 // The row of a live setting's name, or nullptr.
 inline const ParameterSpec* rowOfLiveSetting(const std::string& live) {
   for (const ParameterSpec& p : kParameterTable) {
@@ -134,35 +98,7 @@ inline const ParameterSpec* rowOfLiveSetting(const std::string& live) {
   return nullptr;
 }
 
-// One value of the reference: "—" for none, true/false for a flag.
-inline std::string referenceValue(const ParameterSpec& p, double v) {
-  if (std::isnan(v)) return "—";
-  if (p.kind == ParamKind::kBool) return v != 0.0 ? "true" : "false";
-  if (p.kind == ParamKind::kWord) {
-    const std::vector<std::string> words = paramChoices(p);
-    return words[static_cast<size_t>(v)];
-  }
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", v);
-  return text;
-}
-
 // The table as docs/parameters.md's markdown (between its markers).
-inline std::string parameterReference() {
-  std::string md = "| parameter | live setting | kind | default | min | max | unit | meaning |\n"
-                   "|---|---|---|---|---|---|---|---|\n";
-  for (const ParameterSpec& p : kParameterTable) {
-    std::string lo = referenceValue(p, p.min), hi = referenceValue(p, p.max);
-    if (p.kind == ParamKind::kWord) {  // the accepted words instead of a range
-      lo = "one of ", hi = "—";
-      for (const std::string& w : paramChoices(p)) lo += (lo.size() > 7 ? ", " : "") + w;
-    }
-    const std::string live = p.live ? std::string("`") + p.live + "`" : std::string("—");
-    md += std::string("| `") + p.name + "` | " + live + " | " + paramKindName(p.kind) + " | " +
-          referenceValue(p, p.default_value) +
-          " | " + lo + " | " + hi + " | " + p.unit + " | " + p.doc + " |\n";
-  }
-  return md;
-}
+inline std::string parameterReference() { return aurora_common::parameterReference(kParameterTable); }
 
 }  // namespace aurora_control
