@@ -118,7 +118,7 @@ TEST(Link, IntegerRulesAreTheDocumentedFormulas) {
       if (burst > 1.0 && loss > burst / (burst + 1.0)) continue;
       const LossRule rule = LossRule::of(d);
       std::vector<uint32_t> near = words;
-      for (const uint64_t t : {rule.lose, rule.leave, rule.enter}) {
+      for (const uint64_t t : {rule.good, rule.bad}) {
         for (int64_t o = -2; o <= 2; ++o) {
           if (int64_t(t) + o >= 0 && int64_t(t) + o <= 0xffffffffLL) near.push_back(static_cast<uint32_t>(int64_t(t) + o));
         }

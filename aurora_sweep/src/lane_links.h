@@ -74,11 +74,8 @@ struct LaneChannel {
   static constexpr int L = static_cast<int>(I::size);
   Int delay[L];  // (members: the engine's `new` does not over-align in C++14, so unaligned loads)
   Int jitter_max[L];          // 0: none
-  // aurora_control::LossRule per lane, as the threshold of each state of
-  // the chain (independent losses: `lose` in both) and whether the bad
-  // state flips the test (lost unless the word says it leaves).
-  uint64_t good_threshold[L], bad_threshold[L], bad_flips[L];
-  uint64_t lost[L];                       // 0 or 1: the chain's state
+  aurora_control::LossRule rule[L];       // each lane's loss rule
+  bool lost[L];                           // each lane's chain state
   Int newest[L];
   Int newest_at[L];
   std::vector<Int, xsimd::aligned_allocator<Int, 64>> arrival =
@@ -89,24 +86,19 @@ struct LaneChannel {
     delay[l] = static_cast<Int>(delay_samples);
     jitter_max[l] = static_cast<Int>(d.jitter == aurora_control::JitterKind::kNone ? 0 : d.jitter_max);
     longest_jitter = std::max(longest_jitter, long(jitter_max[l]));
-    const aurora_control::LossRule rule = aurora_control::LossRule::of(d);
-    good_threshold[l] = rule.chain ? rule.enter : rule.lose;
-    bad_threshold[l] = rule.chain ? rule.leave : rule.lose;
-    bad_flips[l] = rule.chain ? 1 : 0;
-    lost[l] = 0, newest[l] = -1, newest_at[l] = -1;
+    rule[l] = aurora_control::LossRule::of(d);
+    lost[l] = false, newest[l] = -1, newest_at[l] = -1;
   }
 
   // Sends every lane's packet of its step k[l] at global slot `slot`, from
-  // the words of its draws (jitter_w, loss_w): the loss chain (LossRule) and
-  // the uniform jitter (uniformJitter).
+  // the words of its draws (jitter_w, loss_w): the one-run channel's rule
+  // (packetArrival: the loss chain, the arrival) with the uniform jitter.
   void send(const Int k[L], long slot, const uint64_t jitter_w[L], const uint64_t loss_w[L]) {
     Int* at = &arrival[static_cast<size_t>(slot & (Window - 1)) * L];
     for (int l = 0; l < L; ++l) {
-      const uint64_t threshold = lost[l] ? bad_threshold[l] : good_threshold[l];
-      const uint64_t now = uint64_t(loss_w[l] < threshold) ^ (lost[l] & bad_flips[l]);
-      lost[l] = now;
-      const Int arrives = static_cast<Int>(k[l] + delay[l] + aurora_control::uniformJitter(static_cast<uint32_t>(jitter_w[l]), jitter_max[l]));
-      at[l] = now ? Int(-1) : arrives;
+      const Int jitter = static_cast<Int>(aurora_control::uniformJitter(static_cast<uint32_t>(jitter_w[l]), jitter_max[l]));
+      at[l] = aurora_control::packetArrival<Int>(rule[l], lost[l], static_cast<uint32_t>(loss_w[l]), k[l], delay[l],
+                                                 jitter);
     }
   }
 

@@ -218,29 +218,42 @@ AURORA_HD inline uint64_t wordsBelow(double p) {
 }
 
 // packetLost on words: the chain's thresholds, computed once per direction.
+// After a packet that arrived (the good state) the next is lost when
+// w < good; after a lost one (the bad state) when w < bad, and for the
+// chain that test is flipped (it stays bad unless the word says it leaves).
+// Independent losses: good = bad, no flip. Branch-free, as SIMD lanes run it.
 struct LossRule {
-  bool chain;            // burst > 1: the Gilbert-Elliott chain
-  uint64_t lose;         // independent losses: lost when w < lose
-  uint64_t leave, enter; // the chain: leave the bad state when w < leave, enter it when w < enter
+  uint64_t good;  // independent losses: lost when w < good; the chain: enter the bad state when w < good
+  uint64_t bad;   // the chain: leave the bad state when w < bad
+  bool flips;     // burst > 1: the Gilbert-Elliott chain
 
   AURORA_HD static LossRule of(const LinkDirection& d) {
-    LossRule rule{false, 0, 0, 0};
+    LossRule rule{0, 0, false};
     if (d.loss <= 0.0) return rule;
     if (d.burst <= 1.0) {
-      rule.lose = wordsBelow(d.loss);
+      rule.good = rule.bad = wordsBelow(d.loss);
       return rule;
     }
     const double r = 1.0 / d.burst;
-    rule.chain = true;
-    rule.leave = wordsBelow(r);
-    rule.enter = wordsBelow(d.loss * r / (1.0 - d.loss));
+    rule.flips = true;
+    rule.bad = wordsBelow(r);
+    rule.good = wordsBelow(d.loss * r / (1.0 - d.loss));
     return rule;
   }
   AURORA_HD bool lost(bool previous_lost, uint32_t w) const {
-    if (!chain) return w < lose;
-    return previous_lost ? !(w < leave) : w < enter;
+    return (uint64_t(w) < (previous_lost ? bad : good)) != (previous_lost && flips);
   }
 };
+
+// One packet sent, written once for one run (LinkChannel) and for SIMD
+// lanes (the sweep's LaneChannel): the loss chain moves on its word (`lost`,
+// the chain's state, is updated), and the packet of step k arrives at step
+// k + delay + jitter, or never (-1) when lost.
+template <typename Int>
+AURORA_HD inline Int packetArrival(const LossRule& rule, bool& lost, uint32_t loss_w, Int k, Int delay, Int jitter) {
+  lost = rule.lost(lost, loss_w);
+  return lost ? Int(-1) : Int(k + delay + jitter);
+}
 
 // One direction of a link, from its sender's step to its receiver's choice.
 // Window: how many recent packets it tracks; a link's maxLatency() must be
@@ -267,9 +280,8 @@ class LinkChannel {
       arrival_[k % Window] = k + d.delay;
       return;
     }
-    lost_ = rule.lost(lost_, u.loss_w);
+    arrival_[k % Window] = packetArrival<long>(rule, lost_, u.loss_w, k, d.delay, jitterOfWord(d, u.jitter_w));
     losses_ += lost_ ? 1 : 0;
-    arrival_[k % Window] = lost_ ? kNever : k + d.delay + jitterOfWord(d, u.jitter_w);
   }
 
   // At step k (after send(k)): the step of the newest-sent packet that has
