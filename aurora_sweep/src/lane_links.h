@@ -74,8 +74,9 @@ struct LaneChannel {
   static constexpr int L = static_cast<int>(I::size);
   Int delay[L];  // (members: the engine's `new` does not over-align in C++14, so unaligned loads)
   Int jitter_max[L];          // 0: none
-  aurora_control::LossRule rule[L];       // each lane's loss rule
-  bool lost[L];                           // each lane's chain state
+  // Each lane's aurora_control::LossRule, as arrays (the send loop vectorizes).
+  uint64_t good[L], bad[L], flips[L];
+  uint64_t lost[L];                       // 0 or 1: the chain's state
   Int newest[L];
   Int newest_at[L];
   std::vector<Int, xsimd::aligned_allocator<Int, 64>> arrival =
@@ -86,19 +87,20 @@ struct LaneChannel {
     delay[l] = static_cast<Int>(delay_samples);
     jitter_max[l] = static_cast<Int>(d.jitter == aurora_control::JitterKind::kNone ? 0 : d.jitter_max);
     longest_jitter = std::max(longest_jitter, long(jitter_max[l]));
-    rule[l] = aurora_control::LossRule::of(d);
-    lost[l] = false, newest[l] = -1, newest_at[l] = -1;
+    const aurora_control::LossRule rule = aurora_control::LossRule::of(d);
+    good[l] = rule.good, bad[l] = rule.bad, flips[l] = rule.flips;
+    lost[l] = 0, newest[l] = -1, newest_at[l] = -1;
   }
 
   // Sends every lane's packet of its step k[l] at global slot `slot`, from
-  // the words of its draws (jitter_w, loss_w): the one-run channel's rule
-  // (packetArrival: the loss chain, the arrival) with the uniform jitter.
+  // the words of its draws (jitter_w, loss_w): the one-run channel's rules
+  // (lossStep, packetArrival) with the uniform jitter (uniformJitter).
   void send(const Int k[L], long slot, const uint64_t jitter_w[L], const uint64_t loss_w[L]) {
     Int* at = &arrival[static_cast<size_t>(slot & (Window - 1)) * L];
     for (int l = 0; l < L; ++l) {
+      lost[l] = aurora_control::lossStep(lost[l], loss_w[l], good[l], bad[l], flips[l]);
       const Int jitter = static_cast<Int>(aurora_control::uniformJitter(static_cast<uint32_t>(jitter_w[l]), jitter_max[l]));
-      at[l] = aurora_control::packetArrival<Int>(rule[l], lost[l], static_cast<uint32_t>(loss_w[l]), k[l], delay[l],
-                                                 jitter);
+      at[l] = aurora_control::packetArrival<Int>(lost[l], k[l], delay[l], jitter);
     }
   }
 

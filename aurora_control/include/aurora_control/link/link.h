@@ -217,43 +217,45 @@ AURORA_HD inline uint64_t wordsBelow(double p) {
   return t >= 4294967296.0 ? 4294967296ull : static_cast<uint64_t>(t);
 }
 
-// packetLost on words: the chain's thresholds, computed once per direction.
-// After a packet that arrived (the good state) the next is lost when
-// w < good; after a lost one (the bad state) when w < bad, and for the
-// chain that test is flipped (it stays bad unless the word says it leaves).
-// Independent losses: good = bad, no flip. Branch-free, as SIMD lanes run it.
+// packetLost on words, written once for one run (LossRule, LinkChannel)
+// and for SIMD lanes (the sweep's LaneChannel, on arrays of each): after a
+// packet that arrived (the good state) the next is lost when w < good; after
+// a lost one (the bad state) when w < bad, and for the chain (flips 1) that
+// test is flipped: it stays bad unless the word says it leaves. Independent
+// losses: good = bad, flips 0. Branch-free integers (0 or 1), so the lanes'
+// loop vectorizes.
+AURORA_HD inline uint64_t lossStep(uint64_t previous_lost, uint64_t w, uint64_t good, uint64_t bad, uint64_t flips) {
+  return uint64_t(w < (previous_lost ? bad : good)) ^ (previous_lost & flips);
+}
+
+// One packet sent, after the loss step (same callers): the packet of step k
+// arrives at step k + delay + jitter, or never (-1) when lost.
+template <typename Int>
+AURORA_HD inline Int packetArrival(uint64_t lost, Int k, Int delay, Int jitter) {
+  return lost ? Int(-1) : Int(k + delay + jitter);
+}
+
+// lossStep's thresholds of a direction, computed once.
 struct LossRule {
-  uint64_t good;  // independent losses: lost when w < good; the chain: enter the bad state when w < good
-  uint64_t bad;   // the chain: leave the bad state when w < bad
-  bool flips;     // burst > 1: the Gilbert-Elliott chain
+  uint64_t good;   // independent losses: lost when w < good; the chain: enter the bad state when w < good
+  uint64_t bad;    // the chain: leave the bad state when w < bad
+  uint64_t flips;  // 1: the Gilbert-Elliott chain (burst > 1)
 
   AURORA_HD static LossRule of(const LinkDirection& d) {
-    LossRule rule{0, 0, false};
+    LossRule rule{0, 0, 0};
     if (d.loss <= 0.0) return rule;
     if (d.burst <= 1.0) {
       rule.good = rule.bad = wordsBelow(d.loss);
       return rule;
     }
     const double r = 1.0 / d.burst;
-    rule.flips = true;
+    rule.flips = 1;
     rule.bad = wordsBelow(r);
     rule.good = wordsBelow(d.loss * r / (1.0 - d.loss));
     return rule;
   }
-  AURORA_HD bool lost(bool previous_lost, uint32_t w) const {
-    return (uint64_t(w) < (previous_lost ? bad : good)) != (previous_lost && flips);
-  }
+  AURORA_HD bool lost(bool previous_lost, uint32_t w) const { return lossStep(previous_lost, w, good, bad, flips) != 0; }
 };
-
-// One packet sent, written once for one run (LinkChannel) and for SIMD
-// lanes (the sweep's LaneChannel): the loss chain moves on its word (`lost`,
-// the chain's state, is updated), and the packet of step k arrives at step
-// k + delay + jitter, or never (-1) when lost.
-template <typename Int>
-AURORA_HD inline Int packetArrival(const LossRule& rule, bool& lost, uint32_t loss_w, Int k, Int delay, Int jitter) {
-  lost = rule.lost(lost, loss_w);
-  return lost ? Int(-1) : Int(k + delay + jitter);
-}
 
 // One direction of a link, from its sender's step to its receiver's choice.
 // Window: how many recent packets it tracks; a link's maxLatency() must be
@@ -280,8 +282,9 @@ class LinkChannel {
       arrival_[k % Window] = k + d.delay;
       return;
     }
-    arrival_[k % Window] = packetArrival<long>(rule, lost_, u.loss_w, k, d.delay, jitterOfWord(d, u.jitter_w));
+    lost_ = rule.lost(lost_, u.loss_w);
     losses_ += lost_ ? 1 : 0;
+    arrival_[k % Window] = packetArrival<long>(lost_, k, d.delay, jitterOfWord(d, u.jitter_w));
   }
 
   // At step k (after send(k)): the step of the newest-sent packet that has
