@@ -235,26 +235,29 @@ AURORA_HD inline Int packetArrival(uint64_t lost, Int k, Int delay, Int jitter) 
   return lost ? Int(-1) : Int(k + delay + jitter);
 }
 
-// lossStep's thresholds of a direction, computed once.
+// lossStep's thresholds of a direction, computed once. (`flips` a bool, not
+// a word: the kernels keep one register and several spills fewer.)
 struct LossRule {
   uint64_t good;   // independent losses: lost when w < good; the chain: enter the bad state when w < good
   uint64_t bad;    // the chain: leave the bad state when w < bad
-  uint64_t flips;  // 1: the Gilbert-Elliott chain (burst > 1)
+  bool flips;      // the Gilbert-Elliott chain (burst > 1)
 
   AURORA_HD static LossRule of(const LinkDirection& d) {
-    LossRule rule{0, 0, 0};
+    LossRule rule{0, 0, false};
     if (d.loss <= 0.0) return rule;
     if (d.burst <= 1.0) {
       rule.good = rule.bad = wordsBelow(d.loss);
       return rule;
     }
     const double r = 1.0 / d.burst;
-    rule.flips = 1;
+    rule.flips = true;
     rule.bad = wordsBelow(r);
     rule.good = wordsBelow(d.loss * r / (1.0 - d.loss));
     return rule;
   }
-  AURORA_HD bool lost(bool previous_lost, uint32_t w) const { return lossStep(previous_lost, w, good, bad, flips) != 0; }
+  AURORA_HD bool lost(bool previous_lost, uint32_t w) const {
+    return lossStep(previous_lost, w, good, bad, flips ? 1 : 0) != 0;
+  }
 };
 
 // One direction of a link, from its sender's step to its receiver's choice.
