@@ -469,6 +469,12 @@ def figures(ns, series, cmd, out_dir, pdf):
             files.append(path)
         plt.close(fig)
 
+    def finish(fig, axes, title, name):
+        """A time-series figure's common end: time axis, title under the flight's label, saved."""
+        axes[-1].set_xlabel("t [s]")
+        axes[0].set_title("%s\n%s" % (series["label"], title))
+        save(fig, name)
+
     route_figure(plt, series, save)
 
     t = series["t"]
@@ -480,9 +486,7 @@ def figures(ns, series, cmd, out_dir, pdf):
         ax.set_ylabel("%s [m]" % k)
         ax.grid(True, alpha=0.3)
         ax.legend(loc="best")
-    axes[-1].set_xlabel("t [s]")
-    axes[0].set_title("%s\nposition against desired" % series["label"])
-    save(fig, "position")
+    finish(fig, axes, "position against desired", "position")
 
     fig, axes = plt.subplots(3, 1, figsize=(8, 7), sharex=True)
     for ax, k, name in zip(axes, ("roll", "pitch", "yaw"), ("roll φ", "pitch θ", "yaw ψ")):
@@ -492,9 +496,7 @@ def figures(ns, series, cmd, out_dir, pdf):
             ax.legend(loc="best")
         ax.set_ylabel(name + " [deg]")
         ax.grid(True, alpha=0.3)
-    axes[-1].set_xlabel("t [s]")
-    axes[0].set_title("%s\nattitude" % series["label"])
-    save(fig, "attitude")
+    finish(fig, axes, "attitude", "attitude")
 
     fig, axes = plt.subplots(2, 1, figsize=(8, 6), sharex=True)
     for k in ("vx", "vy", "vz"):
@@ -507,9 +509,7 @@ def figures(ns, series, cmd, out_dir, pdf):
     for ax in axes:
         ax.grid(True, alpha=0.3)
         ax.legend(loc="best")
-    axes[-1].set_xlabel("t [s]")
-    axes[0].set_title("%s\nlinear and angular velocities" % series["label"])
-    save(fig, "velocities")
+    finish(fig, axes, "linear and angular velocities", "velocities")
 
     fig, axes = plt.subplots(4, 1, figsize=(8, 8), sharex=True)
     for ax, i, name in zip(axes, range(4), (r"$u_\phi$ (roll)", r"$u_\theta$ (pitch)" "\n" r"+ = negative $\theta$",
@@ -518,9 +518,7 @@ def figures(ns, series, cmd, out_dir, pdf):
         ax.plot(cmd["t"], cmd["u"][i])
         ax.set_ylabel(name)
         ax.grid(True, alpha=0.3)
-    axes[-1].set_xlabel("t [s]")
-    axes[0].set_title("%s\ncommands (model order, fraction of full scale)" % series["label"])
-    save(fig, "commands")
+    finish(fig, axes, "commands (model order, fraction of full scale)", "commands")
     if "state_age" in series:
         link_figure(plt, series, save)
     return files
