@@ -127,9 +127,8 @@ struct LaneChannel {
     return ((start + nonNegative(best)) & mask) * I(Int(L)) + lane;
   }
 
-  // All ones where a >= b, else 0 (the sign of b - a; no overflow here:
-  // steps and delays are far below the integers' range).
-  static I atLeast(const I& a, const I& b) { return ~((a - b) >> (8 * sizeof(Int) - 1)); }
+  // All ones where a >= b, else 0 (link.h's mask form).
+  static I atLeast(const I& a, const I& b) { return aurora_control::atLeastMask<Int>(a, b); }
   static I nonNegative(const I& x) { return x & atLeast(x, I(Int(0))); }
 };
 
@@ -208,7 +207,6 @@ class LaneLinks {
   // newest arrived, or hover (0) while none has or when the newest arrived
   // timeout steps ago or more.
   void downlink(const I& count, const I& start, long slot, B U[Inputs]) {
-    using Channel = LaneChannel<Window, Int, Arch>;
     alignas(64) Int k[L];
     (count - I(Int(1))).store_aligned(k);
     T* sent = &commands_[static_cast<size_t>(slot & (Window - 1)) * Inputs * L];
@@ -217,8 +215,8 @@ class LaneLinks {
     const I kb = I::load_aligned(k), lane = I::load_unaligned(lane_);
     const I at = down_.receive(kb, start, lane);  // slot L + lane of each lane's newest command
     const I newest = I::load_unaligned(down_.newest), since = kb - I::load_unaligned(down_.newest_at);
-    // Hover (all ones): none arrived (newest < 0) or since >= timeout.
-    const I hover = ~Channel::atLeast(newest, I(Int(0))) | Channel::atLeast(since, I(timeout_));
+    // Hover (all ones): the drivers' watchdog, the one-run link's rule (hoverMask).
+    const I hover = aurora_control::hoverMask<Int>(newest, since, I(timeout_));
     const B hover_bits = xsimd::bitwise_cast<B>(hover);
     const I base = (at - lane) * I(Int(Inputs)) + lane;  // [slot][i][lane]
     for (int i = 0; i < Inputs; ++i) {

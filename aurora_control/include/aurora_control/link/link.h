@@ -235,6 +235,24 @@ AURORA_HD inline Int packetArrival(uint64_t lost, Int k, Int delay, Int jitter) 
   return lost ? Int(-1) : Int(k + delay + jitter);
 }
 
+// A condition as an integer mask (all ones: true), the form SIMD lanes
+// compute conditions in (xsimd 8.1 builds some integer comparisons element by
+// element); on one run's long it is the same arithmetic. a >= b is the sign
+// of a - b (steps and delays are far from the integers' range). Int: the
+// integers' type (a batch's element type).
+template <typename Int, typename I>
+AURORA_HD inline I atLeastMask(const I& a, const I& b) {
+  return ~((a - b) >> (8 * sizeof(Int) - 1));
+}
+
+// The drone's watchdog, written once for one run (ModelLink) and for SIMD
+// lanes (the sweep's LaneLinks): it hovers when no command has arrived
+// (newest < 0) or the newest arrived `timeout` steps ago or more (`since`).
+template <typename Int, typename I>
+AURORA_HD inline I hoverMask(const I& newest, const I& since, const I& timeout) {
+  return ~atLeastMask<Int>(newest, I(Int(0))) | atLeastMask<Int>(since, timeout);
+}
+
 // lossStep's thresholds of a direction, computed once. (`flips` a bool, not
 // a word: the kernels keep one register and several spills fewer.)
 struct LossRule {

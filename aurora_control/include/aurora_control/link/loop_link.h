@@ -62,7 +62,7 @@ class ModelLink {
     for (int i = 0; i < Inputs; ++i) commands_[k % Window][i] = sent[i];
     down_.send(link_.downlink, down_rule_, drawsAt(k).downlink, k);
     const long j = down_.receive(link_.downlink, k);
-    hovering_ = j < 0 || down_.sinceArrival(k) >= timeout_steps_;
+    hovering_ = hoverMask<long>(j, down_.sinceArrival(k), timeout_steps_) != 0;
     for (int i = 0; i < Inputs; ++i) received[i] = hovering_ ? T(0) : commands_[j % Window][i];
   }
 
