@@ -3,6 +3,7 @@
 #include <geometry_msgs/Twist.h>
 
 #include "aurora_control/formation/formation_yaml.h"
+#include "aurora_control/params/parameter_table.h"
 #include "formation_markers.h"
 #include "param_tree.h"
 #include "aurora_control/ros/control_msg.h"
@@ -16,11 +17,7 @@ FormationNode::FormationNode(ros::NodeHandle nh, ros::NodeHandle private_nh) : n
   LawType law = LawType::kUnderactuated;
   const FormationRun<double, LineFormation<double>> run = loadRun(law);
   core_.reset(new Core(run, law));
-  const std::string mode = aurora_common::paramOr<std::string>(pnh_, "mode", "realtime");
-  if (mode != "realtime" && mode != "lockstep") {
-    throw aurora_common::ConfigError("parameter '" + aurora_common::fullKey(pnh_, "mode") + "' = '" + mode +
-                                  "' is invalid: accepted values 'realtime', 'lockstep'");
-  }
+  const std::string mode = aurora_common::wordParam(pnh_, kParameterTable[kRowMode]);  // the controller's row
   lockstep_ = mode == "lockstep";
   configureSequence();
   cmd_subscribers_ = static_cast<int>(aurora_common::rangedParam(pnh_, "lockstep_subscribers/cmd_vel", 1, 0, 100, ""));
