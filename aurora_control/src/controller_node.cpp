@@ -79,8 +79,8 @@ std::string ControllerNode::readLoopMode() {
   // must see every step are connected (a recorder, test nodes); until then
   // the sim re-sends it. Without this a link that connects late misses the
   // first steps, depending on machine load.
-  lockstep_cmd_subscribers_ = static_cast<int>(tableParam(pnh_, kParameterTable[kRowLockstepCmdSubscribers]));
-  lockstep_control_subscribers_ = static_cast<int>(tableParam(pnh_, kParameterTable[kRowLockstepControlSubscribers]));
+  lockstep_cmd_subscribers_ = static_cast<int>(wholeParam(pnh_, kParameterTable[kRowLockstepCmdSubscribers]));
+  lockstep_control_subscribers_ = static_cast<int>(wholeParam(pnh_, kParameterTable[kRowLockstepControlSubscribers]));
   return mode;
 }
 

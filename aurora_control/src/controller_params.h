@@ -22,6 +22,7 @@ using aurora_common::fullKey;
 using aurora_common::paramOr;
 using aurora_common::rangedParam;
 using aurora_common::tableParam;
+using aurora_common::wholeParam;
 using aurora_common::wordParam;
 
 // The law named by ~controller/name and its gains (all required), with the

@@ -12,6 +12,16 @@
 
 namespace aurora_control {
 
+namespace {
+
+// The formation node's own row; its other parameters are the controller's
+// rows (parameter_table.h).
+constexpr ParameterSpec kFormationSubscribers{
+    "lockstep_subscribers/formation", ParamKind::kWhole, 0, 0, 100, "subscribers",
+    "formation node, lockstep: subscribers of formation to wait for (a recorder, a test)"};
+
+}  // namespace
+
 FormationNode::FormationNode(ros::NodeHandle nh, ros::NodeHandle private_nh) : nh_(nh), pnh_(private_nh) {
   refuseDuplicatedKeysInLoadedFiles(pnh_);
   LawType law = LawType::kUnderactuated;
@@ -20,8 +30,8 @@ FormationNode::FormationNode(ros::NodeHandle nh, ros::NodeHandle private_nh) : n
   const std::string mode = aurora_common::wordParam(pnh_, kParameterTable[kRowMode]);  // the controller's row
   lockstep_ = mode == "lockstep";
   configureSequence();
-  cmd_subscribers_ = static_cast<int>(aurora_common::rangedParam(pnh_, "lockstep_subscribers/cmd_vel", 1, 0, 100, ""));
-  formation_subscribers_ = static_cast<int>(aurora_common::rangedParam(pnh_, "lockstep_subscribers/formation", 0, 0, 100, ""));
+  cmd_subscribers_ = static_cast<int>(aurora_common::wholeParam(pnh_, kParameterTable[kRowLockstepCmdSubscribers]));
+  formation_subscribers_ = static_cast<int>(aurora_common::wholeParam(pnh_, kFormationSubscribers));
   connect();
   ROS_INFO("formation_controller: %s, drones %s and %s, delays %ld and %ld samples, %s law, layer every %ld steps",
            mode.c_str(), drones_[0].c_str(), drones_[1].c_str(), run.drone[0].delay, run.drone[1].delay,

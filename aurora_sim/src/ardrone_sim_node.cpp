@@ -163,7 +163,7 @@ void ArdroneSimNode::onCmdVel(const geometry_msgs::Twist::ConstPtr& msg) {
     for (double& u : command_) u = 0.0;
   } else {
     nan_burst_.accepted();
-    for (int i = 0; i < Ardrone2::kInputs; ++i) command_[i] = Ardrone2::limitInput(i, U[i]);  // as the driver
+    for (int i = 0; i < Ardrone2::kInputs; ++i) command_[i] = Ardrone2::limitInput(params_, i, U[i]);  // as the driver
   }
   have_command_ = true;
   command_time_ = ros::Time::now();

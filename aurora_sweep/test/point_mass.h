@@ -45,7 +45,7 @@ struct PointMass {
     for (int i = 0; i < 3; ++i) s.X[i] = s.X[i] + s.X[3 + i] * p.Ts;
   }
   template <typename T>
-  AURORA_HD static T limitInput(int, const T& u) {
+  AURORA_HD static T limitInput(const Params<T>&, int, const T& u) {
     return aurora_common::clampUnit(u);  // [N]
   }
   AURORA_HD static Params<double> scaled(Params<double> p, const double* factor) {

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "../src/batch_engine.h"
+#include "aurora_control/law/either_law.h"
 #include "aurora_sim/vehicle_yaml.h"
 #include "aurora_sweep/kernel_entry.h"
 #include "sweep_test_support.h"
@@ -30,6 +31,7 @@ template <typename T, class Law>
 using Setup3 = FormationSetup<T, ThreeAbreast, typename Law::Data>;
 using DroneLaw = aurora_control::ArdroneLaw<LawType::kUnderactuated>;
 using PointLaw = point_mass::PointPd;
+using MixedLaw = aurora_control::EitherLaw<DroneLaw, PointLaw>;  // an AR.Drone or a point mass, per robot
 constexpr ShapeLayout kAt = shapeLayout<ThreeAbreast<double>>();
 constexpr int kCapacity = 64;
 
@@ -55,20 +57,43 @@ Run3<double, Data> threeRobots(const typename Data::Vehicle::template Params<dou
   return run;
 }
 
-// Three AR.Drones (the vehicle file's) with the lab's formation gains.
-Run3<double> threeDrones(const aurora_control::LinkParams& link) {
+// The AR.Drone (the vehicle file's) with the lab's formation gains.
+aurora_sim::Ardrone2::Params<double> ardrone() {
+  return aurora_sim::loadVehicleYaml(test::configDir() + "/vehicles/ardrone2.yaml");
+}
+aurora_control::LawGains<double> droneGains() {
   aurora_control::LawGains<double> gains;
   gains.pd = {0.5, 0.85};
   gains.underactuated = aurora_control::UnderactuatedGains<double>::defaults();
   gains.underactuated.k1[0] = gains.underactuated.k1[1] = 0.1;
   gains.underactuated.k2[4] = 15.0;
-  return threeRobots<aurora_control::ArdroneLawData>(
-      aurora_sim::loadVehicleYaml(test::configDir() + "/vehicles/ardrone2.yaml"), gains, link);
+  return gains;
 }
 
-// Three point masses (the test vehicle) of 0.5 kg.
+// The point mass (the test vehicle) of 0.5 kg and its gains.
+const point_mass::Params<double> kPoint{1.0 / 30.0, 0.5};
+const point_mass::Gains<double> kPointGains{2.0, 3.0};
+
+Run3<double> threeDrones(const aurora_control::LinkParams& link) {
+  return threeRobots<aurora_control::ArdroneLawData>(ardrone(), droneGains(), link);
+}
+
 Run3<double, PointLaw> threePoints(const aurora_control::LinkParams& link) {
-  return threeRobots<PointLaw>(point_mass::Params<double>{1.0 / 30.0, 0.5}, point_mass::Gains<double>{2.0, 3.0}, link);
+  return threeRobots<PointLaw>(kPoint, kPointGains, link);
+}
+
+// A mixed crew: robot d a point mass where `points[d]`, else an AR.Drone,
+// each with its own law (MixedLaw: the robots' type).
+Run3<double, MixedLaw> mixedCrew(const bool points[3], const aurora_control::LinkParams& link) {
+  using Params = MixedLaw::Vehicle::Params<double>;
+  MixedLaw::Gains<double> gains;
+  gains.first = droneGains();
+  gains.second = kPointGains;
+  Run3<double, MixedLaw> run = threeRobots<MixedLaw>(Params::ofFirst(ardrone()), gains, link);
+  for (int d = 0; d < 3; ++d) {
+    if (points[d]) run.drone[d].plant = run.drone[d].model = Params::ofSecond(kPoint);
+  }
+  return run;
 }
 
 template <typename T, class Data>
@@ -236,4 +261,38 @@ TEST(ShapeConcept, AThreeRobotShapeFliesEveryBackend) {
   expectEveryBackendAgrees<DroneLaw>(ideal, lossy);
   expectItFlies<PointLaw>(threePoints(aurora_control::LinkParams()));
   expectEveryBackendAgrees<PointLaw>(threePoints(aurora_control::LinkParams()), threePoints(lossyLink()));
+}
+
+// Robots of different vehicles in one formation, each with its own law:
+// their type is EitherLaw (either_law.h), which the generic code flies as
+// any law. A crew of AR.Drones only flies as the AR.Drones' own formation,
+// bit for bit, on the scalar loop, the kernel's threads and the SIMD lanes;
+// a point mass between two AR.Drones flies every backend.
+TEST(ShapeConcept, RobotsOfDifferentVehiclesFlyOneFormation) {
+  const bool none[3] = {false, false, false}, middle[3] = {false, true, false};
+  const ThreeGrid grid(std::nan(""));
+  const std::vector<SimResult> own = scalarLoop<DroneLaw, double, false>(setupOf<double>(threeDrones({})), grid.view);
+  const Setup3<double, MixedLaw> drones = setupOf<double>(mixedCrew(none, {}));
+  EXPECT_EQ(differing(own, scalarLoop<MixedLaw, double, false>(drones, grid.view)), 0);
+  EXPECT_EQ(differing(own, kernelThreads<MixedLaw, double, false>(drones, grid.view)), 0);
+  EXPECT_EQ(differing(simdLanes<DroneLaw>(setupOf<double>(threeDrones({})), grid.view),
+                      simdLanes<MixedLaw>(drones, grid.view)), 0);
+
+  // The point mass is robot 2 (its velocities in X[3..5], nothing beyond).
+  const Run3<double, MixedLaw> mixed = mixedCrew(middle, {});
+  const Setup3<double, MixedLaw> setup = setupOf<double>(mixed);
+  const aurora_control::FormationRun<double, ThreeAbreast<double>, MixedLaw> run =
+      formationCombination(setup, grid.view.decode(0));
+  long ticks = 0;
+  auto pointOnly = [&](const aurora_control::FormationObservation<double, ThreeAbreast<double>, MixedLaw>& o) {
+    for (int i = point_mass::PointMass::kStates; i < MixedLaw::Vehicle::kStates; ++i) {
+      EXPECT_EQ(o.drones[1].model.X[i], 0.0) << "tick " << o.k << " state " << i;
+    }
+    ++ticks;
+  };
+  aurora_control::runFormation<MixedLaw, double, ThreeAbreast<double>, kCapacity>(run, 30, pointOnly);
+  EXPECT_EQ(ticks, 30);
+  expectItFlies<MixedLaw>(mixed);
+  expectEveryBackendAgrees<MixedLaw>(mixed, mixedCrew(middle, lossyLink()));
+  EXPECT_NE(differing(own, scalarLoop<MixedLaw, double, false>(setup, grid.view)), 0);
 }

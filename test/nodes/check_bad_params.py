@@ -106,6 +106,13 @@ class BadParamsTest(unittest.TestCase):
         rc, out = self.controller_case("/no_kd", lambda p: rospy.delete_param(p + "controller/kd"))
         self.assert_refused(rc, out, "/no_kd/controller/controller/kd", "accepted: a number in [0, 10]")
 
+    def test_whole_number_with_a_fraction(self):
+        # A fraction is refused naming the key (it was once truncated silently).
+        rc, out = self.controller_case(
+            "/half_subs", lambda p: rospy.set_param(p + "lockstep_subscribers/cmd_vel", 1.5))
+        self.assert_refused(rc, out, "'/half_subs/controller/lockstep_subscribers/cmd_vel' = ",
+                            "accepted a whole number from 0 to 100")
+
     def sim_case(self, ns, edit):
         load_yaml(os.path.join(self.config, "vehicles/ardrone2.yaml"), ns + "/vehicle")
         edit(ns + "/")

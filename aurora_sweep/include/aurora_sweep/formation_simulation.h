@@ -38,18 +38,8 @@ struct FormationSetup {
   bool ideal_link;  // every drone over today's delay rule (SweepSpec::linkIdeal)
 };
 
-// The AR.Drone laws' gains in precision T (another law's data gives its
-// own castGains, found by argument-dependent lookup).
-template <typename T, typename U>
-void castGains(const aurora_control::LawGains<U>& from, aurora_control::LawGains<T>& to) {
-  to.pd.kp = T(from.pd.kp), to.pd.kd = T(from.pd.kd);
-  for (int i = 0; i < aurora_control::kAxes; ++i) {
-    to.underactuated.k1[i] = T(from.underactuated.k1[i]);
-    to.underactuated.k2[i] = T(from.underactuated.k2[i]);
-  }
-}
-
-// Robot `from`'s fixed values in precision T: its models, gains, delay,
+// Robot `from`'s fixed values in precision T: its models, gains (each law's
+// data gives its castGains, found by argument-dependent lookup), delay,
 // link and start.
 template <typename T, typename U, class Data>
 void castFormationDrone(const aurora_control::FormationDrone<U, Data>& from, aurora_control::FormationDrone<T, Data>& to) {

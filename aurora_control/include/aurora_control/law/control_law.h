@@ -41,6 +41,17 @@ struct LawGains {
   UnderactuatedGains<T> underactuated;
 };
 
+// The gains in precision T (a formation sweep casts each robot's; every
+// law's data gives its castGains, found by argument-dependent lookup).
+template <typename T, typename U>
+void castGains(const LawGains<U>& from, LawGains<T>& to) {
+  to.pd.kp = T(from.pd.kp), to.pd.kd = T(from.pd.kd);
+  for (int i = 0; i < kAxes; ++i) {
+    to.underactuated.k1[i] = T(from.underactuated.k1[i]);
+    to.underactuated.k2[i] = T(from.underactuated.k2[i]);
+  }
+}
+
 // Which components of the 12-state a law reads, in a fixed order: what a
 // delay history must keep (the PD law: position and velocity, 6; the
 // underactuated law: all 12). Keeping 6 halves the PD sweep's gathers.

@@ -108,7 +108,7 @@ AURORA_HD inline void controllerCommand(const Params& model, const Gains& gains,
                                         T U_law[Law::Vehicle::kInputs], T U[Law::Vehicle::kInputs], T err[3]) {
   using Vehicle = typename Law::Vehicle;
   Law::command(model, gains, memory, ref, xc, U_law, err);
-  for (int i = 0; i < Vehicle::kInputs; ++i) U[i] = clamp ? Vehicle::limitInput(i, U_law[i]) : U_law[i];
+  for (int i = 0; i < Vehicle::kInputs; ++i) U[i] = clamp ? Vehicle::limitInput(model, i, U_law[i]) : U_law[i];
 }
 
 // What an iteration hands its observer besides the state.
@@ -156,7 +156,7 @@ AURORA_HD inline void droneHalf(const LoopParams<Data, T>& p, const ClampPolicy&
                                 T applied[Data::Vehicle::kInputs]) {
   using Vehicle = typename Data::Vehicle;
   for (int i = 0; i < Vehicle::kInputs; ++i) {
-    applied[i] = clamp.at_drone ? Vehicle::limitInput(i, received[i]) : received[i];
+    applied[i] = clamp.at_drone ? Vehicle::limitInput(p.plant, i, received[i]) : received[i];
   }
   Vehicle::step(p.plant, s.model, applied);
   T e[3];

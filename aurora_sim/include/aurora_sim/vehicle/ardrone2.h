@@ -7,8 +7,9 @@
 // - kStates, kInputs, kPosition: the state's size, the command's size, and
 //   where x y z [m, world frame] sit in X;
 // - step(p, s, U): one model step of Ts with command U;
-// - limitInput(i, u): the drone's own clamp of command component i (what
-//   its driver does with what it receives);
+// - limitInput(p, i, u): the vehicle's own clamp of command component i
+//   (what its driver does with what it receives; a vehicle's limits may be
+//   its parameters);
 // - kFactors, scaled(p, factor): the model parameters a sweep may scale
 //   (factor i multiplies parameter i of factorName order), derived values
 //   recomputed;
@@ -47,7 +48,7 @@ struct Ardrone2 {
 
   // The AR.Drone's driver (and the sim node) clamp each command to [-1, 1].
   template <typename T>
-  AURORA_HD static T limitInput(int, const T& u) {
+  AURORA_HD static T limitInput(const Params<T>&, int, const T& u) {
     return aurora_common::clampUnit(u);
   }
 
