@@ -13,15 +13,36 @@
 #include <vector>
 
 #include "../src/batch_engine.h"
+#include "aurora_control/law/bebop2_compensator.h"
+#include "aurora_sim/vehicle_yaml.h"
 #include "aurora_sweep/kernel_entry.h"
 #include "point_mass.h"
 #include "sweep_test_support.h"
+
+namespace aurora_sweep {
+
+// The sweep's kp and kd as the Bebop 2 compensator's horizontal ksp and ksd
+// (a mapping of this test only; its other gains AuRoRA's defaults).
+template <>
+struct SweepGains<aurora_control::Bebop2Compensator> {
+  template <typename T>
+  AURORA_HD static aurora_control::CompensatorGains<T> from(const Combination& c) {
+    aurora_control::CompensatorGains<T> g;
+    aurora_control::castGains(aurora_control::CompensatorGains<double>::defaults(), g);
+    g.ksp[0] = g.ksp[1] = T(c.v[kParamKp]);
+    g.ksd[0] = g.ksd[1] = T(c.v[kParamKd]);
+    return g;
+  }
+};
+
+}  // namespace aurora_sweep
 
 namespace {
 
 using namespace aurora_sweep;
 using Law = point_mass::PointPd;
 using Vehicle = point_mass::PointMass;
+using BebopLaw = aurora_control::Bebop2Compensator;
 
 // A grid over kp, kd, the delay and the mass factor (48 combinations).
 struct PointGrid {
@@ -36,17 +57,24 @@ struct PointGrid {
   }
 };
 
-// 60 s towards (2, 1, 2) from the origin; over `link` unless it is ideal.
-template <typename T>
-SimSetup<Vehicle, T> pointSetup(const aurora_control::LinkParams& link) {
-  SimSetup<Vehicle, T> s;
-  s.vehicle = point_mass::Params<double>{1.0 / 30.0, 0.5};
+// A vehicle of parameters `vehicle` flying 60 s towards the setup's task,
+// (2, 1, 2); over `link` unless it is ideal.
+template <typename T, class V>
+SimSetup<V, T> setupOf(const typename V::template Params<double>& vehicle, const aurora_control::LinkParams& link) {
+  SimSetup<V, T> s;
+  s.vehicle = vehicle;
   s.model = s.vehicle.template cast<T>();
   s.config.link = link;
   s.iterations = aurora_control::studyIterationCount(60.0, s.vehicle.Ts);
   s.varies_model = true;
   s.ideal_link = link.ideal();
   return s;
+}
+
+// The point mass of 0.5 kg, from the origin.
+template <typename T>
+SimSetup<Vehicle, T> pointSetup(const aurora_control::LinkParams& link) {
+  return setupOf<T, Vehicle>(point_mass::Params<double>{1.0 / 30.0, 0.5}, link);
 }
 
 aurora_control::LinkParams lossyLink() {
@@ -61,44 +89,44 @@ aurora_control::LinkParams lossyLink() {
   return l;
 }
 
-template <typename T, bool Linked>
-std::vector<SimResult> scalarLoop(const SimSetup<Vehicle, T>& setup, const GridView& grid) {
+template <typename T, bool Linked, class L = Law>
+std::vector<SimResult> scalarLoop(const SimSetup<typename L::Vehicle, T>& setup, const GridView& grid) {
   std::vector<SimResult> out;
-  for (long i = 0; i < grid.size(); ++i) out.push_back(simulateCombination<Law, T, 64, Linked>(setup, grid, i));
+  for (long i = 0; i < grid.size(); ++i) out.push_back(simulateCombination<L, T, 64, Linked>(setup, grid, i));
   return out;
 }
 
-template <typename T, bool Linked>
-std::vector<SimResult> kernelThreads(const SimSetup<Vehicle, T>& setup, const GridView& grid) {
+template <typename T, bool Linked, class L = Law>
+std::vector<SimResult> kernelThreads(const SimSetup<typename L::Vehicle, T>& setup, const GridView& grid) {
   return test::launchOnHost(grid.size(), 16, [&](unsigned b, unsigned block, unsigned t, SimResult* out) {
-    sweepThread<Law, T, 64, Linked>(setup, grid, 0, grid.size(), out, b, block, t);
+    sweepThread<L, T, 64, Linked>(setup, grid, 0, grid.size(), out, b, block, t);
   });
 }
 
-template <typename T>
-std::vector<SimResult> simdLanes(const SimSetup<Vehicle, T>& setup, const GridView& grid) {
+template <class L = Law, typename T>
+std::vector<SimResult> simdLanes(const SimSetup<typename L::Vehicle, T>& setup, const GridView& grid) {
   std::vector<SimResult> out(static_cast<size_t>(grid.size()));
   std::atomic<long> next{0};
   Progress progress{0};
-  BatchWorker<T, xsimd::default_arch, 64, Law>(setup, grid, 0, grid.size(), out, next, progress).run();
+  BatchWorker<T, xsimd::default_arch, 64, L>(setup, grid, 0, grid.size(), out, next, progress).run();
   EXPECT_EQ(progress.load(), grid.size());
   return out;
 }
 
 // The offline runner, one combination at a time: runLoop over the delay
 // rule; over a link, the combination's link keyed by its index (as a sweep).
-template <typename T>
-std::vector<SimResult> runner(const SimSetup<Vehicle, T>& setup, const GridView& grid) {
+template <class L = Law, typename T>
+std::vector<SimResult> runner(const SimSetup<typename L::Vehicle, T>& setup, const GridView& grid) {
   std::vector<SimResult> out;
   for (long i = 0; i < grid.size(); ++i) {
     const Combination c = grid.decode(i);
-    const auto run = studyRun<Law>(setup, c);
+    const auto run = studyRun<L>(setup, c);
     aurora_control::RunnerConfig<T> cfg = setup.config;
     cfg.link = combinationLink(setup.config.link, run.delay, c);
     aurora_control::NoObserver none;
     out.push_back(compactResult(
-        setup.ideal_link ? aurora_control::runLoop<Law>(run, cfg, setup.iterations)
-                         : aurora_control::runOverModelLink<Law, T, 64>(run, cfg, setup.iterations, none, c.key)));
+        setup.ideal_link ? aurora_control::runLoop<L>(run, cfg, setup.iterations)
+                         : aurora_control::runOverModelLink<L, T, 64>(run, cfg, setup.iterations, none, c.key)));
   }
   return out;
 }
@@ -108,17 +136,34 @@ void expectSameBytes(const std::vector<SimResult>& a, const std::vector<SimResul
   for (size_t i = 0; i < a.size(); ++i) EXPECT_EQ(std::memcmp(&a[i], &b[i], sizeof(SimResult)), 0) << what << " " << i;
 }
 
+// The runner and the kernel's threads give the scalar loop's bytes; the
+// SIMD lanes too, or (simd_rel > 0: a law with sin, cos or tanh, which
+// xsimd computes to the last bits differently from libm) the same flags
+// and steps, and metrics to simd_rel.
+template <class L, typename T>
+void expectEveryBackendAgrees(const SimSetup<typename L::Vehicle, T>& setup, const GridView& grid,
+                              double simd_rel = 0.0) {
+  const bool ideal = setup.ideal_link;
+  const std::vector<SimResult> scalar =
+      ideal ? scalarLoop<T, false, L>(setup, grid) : scalarLoop<T, true, L>(setup, grid);
+  expectSameBytes(scalar, runner<L>(setup, grid), "runner");
+  if (simd_rel > 0.0) test::expectRecordsAgree("simd lanes", scalar, simdLanes<L>(setup, grid), simd_rel, 8);
+  else expectSameBytes(scalar, simdLanes<L>(setup, grid), "simd lanes");
+  expectSameBytes(scalar, ideal ? kernelThreads<T, false, L>(setup, grid) : kernelThreads<T, true, L>(setup, grid),
+                  "kernel threads");
+}
+
 template <typename T>
 void expectEveryBackendAgrees(const aurora_control::LinkParams& link) {
-  const PointGrid grid;
-  const SimSetup<Vehicle, T> setup = pointSetup<T>(link);
-  const std::vector<SimResult> scalar =
-      link.ideal() ? scalarLoop<T, false>(setup, grid.view) : scalarLoop<T, true>(setup, grid.view);
-  expectSameBytes(scalar, runner(setup, grid.view), "runner");
-  expectSameBytes(scalar, simdLanes(setup, grid.view), "simd lanes");
-  expectSameBytes(scalar,
-                  link.ideal() ? kernelThreads<T, false>(setup, grid.view) : kernelThreads<T, true>(setup, grid.view),
-                  "kernel threads");
+  expectEveryBackendAgrees<Law>(pointSetup<T>(link), PointGrid().view);
+}
+
+// The Bebop 2 (the vehicle file's) flying its compensator towards the
+// setup's task for 60 s; over `link` unless it is ideal.
+template <typename T>
+SimSetup<aurora_sim::Bebop2, T> bebopSetup(const aurora_control::LinkParams& link) {
+  return setupOf<T, aurora_sim::Bebop2>(
+      aurora_sim::loadVehicleFile<aurora_sim::Bebop2>(test::configDir() + "/vehicles/bebop2.yaml"), link);
 }
 
 }  // namespace
@@ -147,6 +192,31 @@ TEST(VehicleConcept, ATestVehicleFliesEveryBackend) {
   ASSERT_FALSE(lossyLink().ideal());
   expectEveryBackendAgrees<double>(lossyLink());
   expectEveryBackendAgrees<float>(lossyLink());
+}
+
+// A real vehicle and its law, added as the seam says (aurora_sim/vehicle/
+// bebop2.h, law/bebop2_compensator.h): the Bebop 2 flies every backend
+// (the SIMD lanes to rounding: xsimd's sin, cos and tanh), its delay and
+// model factor (Ku_x) reaching its runs.
+TEST(VehicleConcept, TheBebop2FliesEveryBackend) {
+  PointGrid grid;
+  grid.axes = {{1.0, 2.0}, {1.0, 2.0}, {0, 3, 9}, {1.0, 0.8}};
+  const int params[4] = {kParamKp, kParamKd, kParamDelay, kParamFirstModelFactor};
+  test::setAxes(grid.view, params, grid.axes);
+  const SimSetup<aurora_sim::Bebop2, double> ideal = bebopSetup<double>(aurora_control::LinkParams());
+  const std::vector<SimResult> flown = scalarLoop<double, false, BebopLaw>(ideal, grid.view);
+  const Combination c = grid.view.decode(3);  // ksp 2, ksd 2, no delay, nominal model
+  ASSERT_EQ(c.delay(), 0);
+  ASSERT_EQ(c.v[kParamFirstModelFactor], 1.0);
+  const aurora_control::Reference<double> goal = ideal.config.task.at(60.0);
+  for (int i = 0; i < 3; ++i) EXPECT_NEAR(flown[3].final_pos[i], goal.pos[i], 0.02) << i;
+  EXPECT_TRUE(feasible(flown[3]));
+  EXPECT_NE(flown[3].iae, flown[3 + 12].iae);  // Ku_x 0.8
+  EXPECT_NE(flown[3].iae, flown[3 + 4].iae);   // delay 3
+  expectEveryBackendAgrees<BebopLaw>(ideal, grid.view, 1e-9);
+  expectEveryBackendAgrees<BebopLaw>(bebopSetup<float>(aurora_control::LinkParams()), grid.view, 2e-3);
+  expectEveryBackendAgrees<BebopLaw>(bebopSetup<double>(lossyLink()), grid.view, 1e-9);
+  expectEveryBackendAgrees<BebopLaw>(bebopSetup<float>(lossyLink()), grid.view, 2e-3);
 }
 
 // The delay rule holds for the test vehicle as for the AR.Drone: the state

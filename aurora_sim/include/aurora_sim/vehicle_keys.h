@@ -20,6 +20,7 @@ struct VehicleKey {
   int usat_index;        // 0..3 for command scaling entries, -1 otherwise
   double min, max;       // accepted range, inclusive
   const char* unit;
+  bool flag = false;     // true / false in the file (none of the AR.Drone's)
 };
 
 inline const std::vector<VehicleKey>& vehicleKeys() {
@@ -69,10 +70,11 @@ inline void setVehicleValue(ArdroneParams<double>& p, const VehicleKey& key, dou
   }
 }
 
-// Empty when `value` is acceptable for `key`; otherwise a message naming the
-// full key (with `prefix`, e.g. "/ardrone1/vehicle/"), the value and the range.
-inline std::string checkVehicleValue(const std::string& prefix, const VehicleKey& key,
-                                     double value) {
+// Empty when `value` is acceptable for `key` (any vehicle's key: name,
+// min, max, unit); otherwise a message naming the full key (with `prefix`,
+// e.g. "/ardrone1/vehicle/"), the value and the range.
+template <class Key>
+std::string checkVehicleValue(const std::string& prefix, const Key& key, double value) {
   if (std::isfinite(value) && value >= key.min && value <= key.max) return "";
   return "parameter '" + prefix + key.name + "' = " + std::to_string(value) +
          " is invalid: accepted range [" + std::to_string(key.min) + ", " +

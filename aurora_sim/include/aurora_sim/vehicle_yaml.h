@@ -16,9 +16,10 @@
 
 namespace aurora_sim {
 
-// The value under a '/'-separated key of a vehicle file.
+// The value under a '/'-separated key of a vehicle file (a flag: true 1,
+// false 0).
 inline double vehicleFileNumber(const YAML::Node& root, const std::string& path, const std::string& name,
-                                const std::string& unit) {
+                                const std::string& unit, bool flag = false) {
   std::stringstream parts(name);
   std::string part;
   YAML::Node node = YAML::Clone(root);
@@ -29,9 +30,10 @@ inline double vehicleFileNumber(const YAML::Node& root, const std::string& path,
     node = node[part];
   }
   try {
-    return node.as<double>();
+    return flag ? (node.as<bool>() ? 1.0 : 0.0) : node.as<double>();
   } catch (const YAML::Exception&) {
-    throw aurora_common::ConfigError("vehicle file '" + path + "': '" + name + "' is not a number");
+    throw aurora_common::ConfigError("vehicle file '" + path + "': '" + name + "' is not " +
+                                     (flag ? "true or false" : "a number"));
   }
 }
 
@@ -47,7 +49,7 @@ typename Vehicle::template Params<double> loadVehicleFile(const std::string& pat
   } catch (const YAML::Exception&) {
   }
   return vehicleFromKeys<Vehicle>("vehicle file '" + path + "': ", type, flown_by, path + ": ", [&](const auto& key) {
-    return vehicleFileNumber(root, path, key.name, key.unit);
+    return vehicleFileNumber(root, path, key.name, key.unit, key.flag);
   });
 }
 

@@ -29,10 +29,12 @@ typename Vehicle::template Params<double> loadVehicleParams(const ros::NodeHandl
   }
   return vehicleFromKeys<Vehicle>("vehicle parameters '" + prefix + "': ", type, flown_by, prefix, [&](const auto& key) {
     double value = 0.0;
-    if (!nh.getParam(ns + "/" + key.name, value)) {
-      throw aurora_common::ConfigError("missing vehicle parameter '" + prefix + key.name + "'" + load);
+    bool flag = false;
+    if (key.flag ? !nh.getParam(ns + "/" + key.name, flag) : !nh.getParam(ns + "/" + key.name, value)) {
+      throw aurora_common::ConfigError("missing vehicle parameter '" + prefix + key.name + "'" +
+                                       (key.flag ? " (true or false)" : "") + load);
     }
-    return value;
+    return key.flag ? (flag ? 1.0 : 0.0) : value;
   });
 }
 
