@@ -94,7 +94,10 @@ bool FormationNode::listenersReady() const {
 }
 
 // Lockstep: a drone's state; once every drone's state of step k is here,
-// tick k. A re-sent state (no answer arrived) gets the same command again.
+// tick k. A re-sent state of the step last answered (its command was lost)
+// gets that command again; a re-sent state of a step not answered yet (the
+// other drone's state has not come) gets nothing: the sim would step on
+// the previous command and leave the drones a step apart.
 void FormationNode::onState(int d, const aurora_msgs::DroneState::ConstPtr& msg) {
   if (msg->stale) return;  // the estimator's source stopped: the state ages
   if (lockstep_ && answered_ < 0 && !listenersReady()) {
@@ -105,7 +108,9 @@ void FormationNode::onState(int d, const aurora_msgs::DroneState::ConstPtr& msg)
   last_state_[d] = ros::Time::now();
   if (!lockstep_) return;
   if (!fresh) {
-    cmd_pubs_[d].publish(aurora_sim::twistMsgFromModelCommand(last_sent_[d]));
+    if (static_cast<long>(msg->step) == answered_) {
+      cmd_pubs_[d].publish(aurora_sim::twistMsgFromModelCommand(last_sent_[d]));
+    }
     return;
   }
   const long k = core_->commonStep();
