@@ -1,6 +1,8 @@
-// flight: one whole flight offline (no roscore) with either law and any
+// flight: one whole flight offline (no roscore) with any controller and
 // task, on the same core as the controller node (flight_runner.h): the
-// lockstep ROS loop flies exactly this trajectory. Prints the tracking error
+// lockstep ROS loop flies exactly this trajectory. The controller file's
+// law chooses the vehicle: the AR.Drone's laws, or the Bebop 2's
+// compensator (docs/bebop2.md). Prints the tracking error
 // per lap (per waypoint segment for missions), the controller's metrics and
 // the cost of the law per step; --csv writes the trajectory. --formation
 // flies a formation file instead (formation_flight.h).
@@ -52,7 +54,7 @@ bool parse(int argc, char** argv, Options& o) {
   d.add_options()("help,h", "this text")
       ("controller", po::value(&o.controller)->default_value(config + "/controllers/pd_saturated.yaml"), "controller YAML (law and gains)")
       ("task", po::value(&o.task)->default_value(config + "/tasks/mission4.yaml"), "task YAML (waypoints, circle, lemniscate)")
-      ("vehicle", po::value(&o.vehicle)->default_value(config + "/vehicles/ardrone2.yaml"), "vehicle YAML")
+      ("vehicle", po::value(&o.vehicle), "vehicle YAML (default: the controller's vehicle, config/vehicles/NAME.yaml: ardrone2, or bebop2 for bebop2_compensator)")
       ("delay", po::value(&o.delays)->multitoken()->composing(), "feedback delay [samples of Ts], 0 to 2047 (limits.h); with --formation one per drone (default: the file's)")
       ("no-clamp", po::bool_switch(&o.no_clamp), "do not clamp the law's commands (the sim still does, as the drivers)")
       ("formation", po::value(&o.formation), "formation YAML (config/formations/*.yaml, docs/formation.md): fly its drones and formation layer instead of --controller and --task")
@@ -74,6 +76,10 @@ bool parse(int argc, char** argv, Options& o) {
     }
   }
   if (!o.formation.empty()) refuseFlightOnlyOptions(vm);
+  if (o.vehicle.empty()) {
+    const bool bebop = o.formation.empty() && controllerFileName(o.controller) == Bebop2Compensator::name();
+    o.vehicle = config + "/vehicles/" + (bebop ? aurora_sim::Bebop2::name() : LawVehicle::name()) + ".yaml";
+  }
   o.delay = o.delays.empty() ? kDelayNotGiven : o.delays[0];
   return true;
 }
@@ -108,40 +114,56 @@ class SegmentErrors {
 const char* kCsvHeader =
     "step,t,x,y,z,phi,theta,psi,dx,dy,dz,dphi,dtheta,dpsi,u1,u2,u3,u4,xd,yd,zd,error\n";
 
-void writeCsvRow(FILE* csv, const FlightObservation& o, double t, double error) {
+template <class Vehicle>
+void writeCsvRow(FILE* csv, const LoopObservation<Vehicle, double>& o, double t, double error) {
+  static_assert(Vehicle::kStates == aurora_sim::kStateSize && Vehicle::kInputs == 4, "the header's columns");
   std::fprintf(csv, "%ld,%.17g", o.k, t);
-  for (int i = 0; i < aurora_sim::kStateSize; ++i) std::fprintf(csv, ",%.17g", o.X_before[i]);
-  for (int i = 0; i < aurora_sim::kCommandSize; ++i) std::fprintf(csv, ",%.17g", o.step.U[i]);
+  for (int i = 0; i < Vehicle::kStates; ++i) std::fprintf(csv, ",%.17g", o.X_before[i]);
+  for (int i = 0; i < Vehicle::kInputs; ++i) std::fprintf(csv, ",%.17g", o.step.U[i]);
   for (int i = 0; i < 3; ++i) std::fprintf(csv, ",%.17g", o.step.ref.pos[i]);
   std::fprintf(csv, ",%.17g\n", error);
 }
 
-// Flies the options' task once and prints what it measured.
-void run(const Options& o) {
-  const FlightSetup f = loadFlight(FlightFiles{o.controller, o.task, o.vehicle, o.link, o.delay, o.no_clamp});
-  const auto& p = f.vehicle;
-  const ControllerSettings& set = f.settings;
-  const Task<double>& task = f.task;
-  const long n = f.steps;
+// Flies once (fly(observe) runs the flight) and prints what it measured:
+// `law` names the controller, the task, link and Ts are the flight's.
+template <class Fly>
+void flyAndReport(const Options& o, const std::string& law, const Task<double>& task, const LinkParams& link,
+                  double Ts, Fly&& fly) {
   FILE* csv = o.csv.empty() ? nullptr : std::fopen(o.csv.c_str(), "w");
   if (!o.csv.empty() && !csv) throw std::runtime_error("cannot write '" + o.csv + "'");
   if (csv) std::fprintf(csv, "%s", kCsvHeader);
   SegmentErrors segments(task);
   const auto t0 = std::chrono::steady_clock::now();
-  const FlightResult r = runFlight(p, set, task, n, [&](const FlightObservation& o, double e) {
-    segments.add(o.k, p.Ts, e);
-    if (csv) writeCsvRow(csv, o, taskTime(o.k, p.Ts), e);
+  const FlightResult r = fly([&](const auto& ob, double e) {
+    segments.add(ob.k, Ts, e);
+    if (csv) writeCsvRow(csv, ob, taskTime(ob.k, Ts), e);
   });
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (csv) std::fclose(csv);
   std::printf("flight: %s, %s task of %.1f s, delay %s, link %s: %ld steps in %.3f s (%.2f us per step, model included)\n",
-              lawName(set.law), task.isTrajectory() ? (task.type == TaskType::kCircle ? "circle" : "lemniscate") : "waypoint",
-              task.duration(), delayOriginText(o.delay, set.link).c_str(),
-              o.link.empty() ? "ideal" : ("'" + o.link + "' (" + linkText(set.link) + ")").c_str(), r.steps, seconds,
+              law.c_str(), task.isTrajectory() ? (task.type == TaskType::kCircle ? "circle" : "lemniscate") : "waypoint",
+              task.duration(), delayOriginText(o.delay, link).c_str(),
+              o.link.empty() ? "ideal" : ("'" + o.link + "' (" + linkText(link) + ")").c_str(), r.steps, seconds,
               1e6 * seconds / double(r.steps));
   segments.print();
   std::printf("  whole flight: RMS %.4f m, max %.4f m; IAE %.4f, ITAE %.4f, IASC %.4f\n", r.rms_tracking_error,
               r.max_tracking_error, r.iae, r.itae, r.iasc);
+}
+
+// Flies the options' task once with the controller file's law on its vehicle.
+void run(const Options& o) {
+  const FlightFiles files{o.controller, o.task, o.vehicle, o.link, o.delay, o.no_clamp};
+  if (controllerFileName(o.controller) == Bebop2Compensator::name()) {
+    const CompensatorFlight f = loadCompensatorFlight(files);
+    const std::string law = std::string(Bebop2Compensator::name()) + " at " + YamlReader::fmt(f.rate) + " Hz";
+    return flyAndReport(o, law, f.cfg.task, f.cfg.link, f.run.plant.Ts, [&](auto&& observe) {
+      return flyLaw<Bebop2Compensator>(f.run, f.cfg, f.steps, observe);
+    });
+  }
+  const FlightSetup f = loadFlight(files);
+  flyAndReport(o, lawName(f.settings.law), f.task, f.settings.link, f.vehicle.Ts, [&](auto&& observe) {
+    return runFlight(f.vehicle, f.settings, f.task, f.steps, observe);
+  });
 }
 
 }  // namespace

@@ -172,6 +172,33 @@ class FormationAndLinkArgumentsTest(unittest.TestCase):
                     f.write(text.replace(old, new))
                 self.refused(["--vehicle", path], "vehicle file '%s'" % path, said, "accepted: ardrone2")
 
+    def test_the_controller_chooses_the_vehicle_and_a_mismatch_is_refused(self):
+        """Issue 33: the Bebop 2's compensator flies config/vehicles/bebop2.yaml by default; either
+        law given the other vehicle's file is refused naming both types; its rate must divide 30 Hz."""
+        c = config_dir()
+        bebop = os.path.join(c, "controllers", "bebop2_compensator.yaml")
+        with tempfile.TemporaryDirectory() as tmp:
+            csv = os.path.join(tmp, "bebop.csv")
+            rc, out = flight("--controller", bebop, "--task", os.path.join(c, "tasks", "lemniscate.yaml"),
+                             "--csv", csv)
+            self.assertEqual(rc, 0, out)
+            self.assertIn("flight: bebop2_compensator at 30 Hz, lemniscate task of 60.0 s", out)
+            rows = open(csv).read().splitlines()
+            self.assertEqual(len(rows), 1 + 1801)
+            lap2 = float(out.split("lap 2: RMS tracking error ")[1].split(" m")[0])
+            self.assertLess(lap2, 0.01, out)  # it tracks the figure-eight (its model is the plant)
+            self.refused(["--controller", bebop, "--vehicle", os.path.join(c, "vehicles", "ardrone2.yaml")],
+                         "is of type 'ardrone2', but the controller 'bebop2_compensator' flies type 'bebop2'",
+                         "config/vehicles/bebop2.yaml")
+            self.refused(["--vehicle", os.path.join(c, "vehicles", "bebop2.yaml")],
+                         "is of type 'bebop2', but the controller 'pd_saturated' flies type 'ardrone2'",
+                         "config/vehicles/ardrone2.yaml")
+            path = os.path.join(tmp, "slow.yaml")
+            with open(path, "w") as f:
+                f.write(open(bebop).read().replace("rate: 30 ", "rate: 7 "))
+            self.refused(["--controller", path], "'controller.rate' = 7 Hz does not divide the vehicle's 30 Hz",
+                         "accepted 30, 15, 10, 7.5, 6, 5")
+
     def test_two_sweeps_on_one_folder_and_an_interrupted_sweep(self):
         sweep = subprocess.run(["catkin_find", "--first-only", "--libexec", "aurora_sweep", "sweep"],
                                stdout=subprocess.PIPE).stdout.decode().strip()

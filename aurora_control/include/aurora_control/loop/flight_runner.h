@@ -23,11 +23,31 @@ struct FlightResult {
   double final_pos[3] = {0, 0, 0};    // [m]
 };
 
-// observe(FlightObservation, tracking error of step k [m]) after each
-// iteration. Iteration k hands
-// state k (the state at task time k Ts) to the controller with the
-// reference of that time: `iterations` = taskStepCount() flies a task's
-// steps 0..N.
+// A flight of law `Law` (on its vehicle): `iterations` iterations of the
+// runner, observe(LoopObservation, tracking error of step k [m]) after
+// each. Iteration k hands state k (the state at task time k Ts) to the
+// controller with the reference of that time: `iterations` =
+// taskStepCount() flies a task's steps 0..N.
+template <class Law, typename Observer>
+FlightResult flyLaw(const StudyRun<typename Law::Data, double>& run, const RunnerConfig<double>& cfg, long iterations,
+                    Observer&& observe) {
+  FlightResult r;
+  double sum_sq = 0.0;
+  const RunnerResult done =
+      runLoop<Law>(run, cfg, iterations, [&](const LoopObservation<typename Law::Vehicle, double>& o) {
+        const double e = trackingError(o.step.ref, o.X_before);  // state k against reference k
+        sum_sq += e * e;
+        r.max_tracking_error = std::max(r.max_tracking_error, e);
+        observe(o, e);
+      });
+  r.steps = done.steps;
+  r.iae = done.iae, r.itae = done.itae, r.iasc = done.iasc;
+  r.rms_tracking_error = r.steps > 0 ? std::sqrt(sum_sq / double(r.steps)) : 0.0;
+  for (int i = 0; i < 3; ++i) r.final_pos[i] = done.final_pos[i];
+  return r;
+}
+
+// An AR.Drone flight with the node's settings (its law chosen at run time).
 template <typename Observer>
 FlightResult runFlight(const LawVehicleParams& p, const ControllerSettings& settings,
                        const Task<double>& task, long iterations, Observer observe) {
@@ -39,17 +59,7 @@ FlightResult runFlight(const LawVehicleParams& p, const ControllerSettings& sett
   cfg.clamp_at_drone = true;  // the sim's clamp
   cfg.link = settings.link;
   FlightResult r;
-  double sum_sq = 0.0;
-  const RunnerResult done = runLoop(settings.law, run, cfg, iterations, [&](const FlightObservation& o) {
-    const double e = trackingError(o.step.ref, o.X_before);  // state k against reference k
-    sum_sq += e * e;
-    r.max_tracking_error = std::max(r.max_tracking_error, e);
-    observe(o, e);
-  });
-  r.steps = done.steps;
-  r.iae = done.iae, r.itae = done.itae, r.iasc = done.iasc;
-  r.rms_tracking_error = r.steps > 0 ? std::sqrt(sum_sq / double(r.steps)) : 0.0;
-  for (int i = 0; i < 3; ++i) r.final_pos[i] = done.final_pos[i];
+  withLaw(settings.law, [&](auto law) { r = flyLaw<decltype(law)>(run, cfg, iterations, observe); });
   return r;
 }
 

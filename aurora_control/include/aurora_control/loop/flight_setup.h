@@ -7,6 +7,7 @@
 #include <string>
 
 #include "aurora_control/loop/flight_runner.h"
+#include "aurora_control/law/compensator_yaml.h"
 #include "aurora_control/law/law_yaml.h"
 #include "aurora_control/params/limits.h"
 #include "aurora_control/link/link_yaml.h"
@@ -28,6 +29,31 @@ struct FlightSetup {
   long steps = 0;  // steps 0..N of the task (taskStepCount), as the node and report
 };
 
+// What every flight reads besides its vehicle and law, for a vehicle of
+// sample time Ts: the task (its steps 0..N), the link and the delay in
+// force, each checked.
+struct FlightCourse {
+  Task<double> task;
+  long steps = 0;
+  LinkParams link;
+  long delay = 0;
+};
+
+inline FlightCourse loadCourse(const FlightFiles& f, double Ts) {
+  FlightCourse c;
+  if (!f.link.empty()) c.link = readLinkFile(f.link);
+  c.delay = delayInForce(f.delay, c.link);  // docs/links.md, "A delay beside a link"
+  c.task = readTask(YamlReader("task file '" + f.task + "': "), loadYamlFile("task file", f.task)["task"], "task");
+  c.steps = taskStepCount(c.task.duration(), Ts);
+  long samples = 0;
+  const std::string refusal = delayRefusal(double(c.delay), false, Ts, samples);
+  if (!refusal.empty()) throw ConfigError("--delay " + std::to_string(c.delay) + " " + refusal);
+  if (!delayShorterThanRun(c.delay, c.steps)) throw ConfigError("--delay " + delayRunText(c.delay, c.steps, Ts));
+  const std::string late = latestPacketRefusal(c.link, c.delay, c.steps, Ts);
+  if (!late.empty()) throw ConfigError("--link " + f.link + ": " + late);
+  return c;
+}
+
 inline FlightSetup loadFlight(const FlightFiles& f) {
   FlightSetup s;
   s.settings = readControllerFile(f.controller).settings;
@@ -37,18 +63,36 @@ inline FlightSetup loadFlight(const FlightFiles& f) {
   s.settings.clamp_commands = !f.no_clamp;
   s.settings.vehicle = s.vehicle;
   s.settings.Ts = s.vehicle.Ts;
-  if (!f.link.empty()) s.settings.link = readLinkFile(f.link);
-  s.settings.delay = delayInForce(f.delay, s.settings.link);  // docs/links.md, "A delay beside a link"
-  s.task = readTask(YamlReader("task file '" + f.task + "': "), loadYamlFile("task file", f.task)["task"], "task");
-  s.steps = taskStepCount(s.task.duration(), s.vehicle.Ts);
-  long samples = 0;
-  const std::string refusal = delayRefusal(double(s.settings.delay), false, s.vehicle.Ts, samples);
-  if (!refusal.empty()) throw ConfigError("--delay " + std::to_string(s.settings.delay) + " " + refusal);
-  if (!delayShorterThanRun(s.settings.delay, s.steps)) {
-    throw ConfigError("--delay " + delayRunText(s.settings.delay, s.steps, s.vehicle.Ts));
-  }
-  const std::string late = latestPacketRefusal(s.settings.link, s.settings.delay, s.steps, s.vehicle.Ts);
-  if (!late.empty()) throw ConfigError("--link " + f.link + ": " + late);
+  const FlightCourse c = loadCourse(f, s.vehicle.Ts);
+  s.settings.link = c.link, s.settings.delay = c.delay, s.task = c.task, s.steps = c.steps;
+  return s;
+}
+
+// A Bebop 2 flight with its compensator (docs/bebop2.md): the run (the
+// vehicle file as plant and as the law's model) and the runner's settings.
+// Its driver clamps what it receives, and so does the controller unless
+// the file says otherwise; no_clamp clamps nowhere (AuRoRA's simulation).
+struct CompensatorFlight {
+  StudyRun<Bebop2Compensator, double> run;
+  RunnerConfig<double> cfg;
+  double rate = 30.0;  // [Hz] the law's
+  long steps = 0;
+};
+
+inline CompensatorFlight loadCompensatorFlight(const FlightFiles& f) {
+  const CompensatorFile file = readCompensatorFile(f.controller);
+  const aurora_sim::Bebop2::Params<double> vehicle = aurora_sim::loadVehicleFile<aurora_sim::Bebop2>(
+      f.vehicle, std::string("the controller '") + Bebop2Compensator::name() + "'");
+  CompensatorFlight s;
+  s.rate = file.rate;
+  s.run.plant = s.run.model = vehicle;
+  s.run.gains = file.gains;
+  s.run.gains.period_steps = double(compensatorPeriod(f.controller, file.rate, vehicle.Ts));
+  const FlightCourse c = loadCourse(f, vehicle.Ts);
+  s.run.delay = c.delay;
+  s.cfg.task = c.task, s.cfg.link = c.link, s.steps = c.steps;
+  s.cfg.clamp_commands = !f.no_clamp && (!file.has_clamp || file.clamp);
+  s.cfg.clamp_at_drone = !f.no_clamp;
   return s;
 }
 

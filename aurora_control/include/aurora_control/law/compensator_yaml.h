@@ -1,0 +1,72 @@
+// The Bebop 2 compensator's controller file (config/controllers/
+// bebop2_compensator.yaml, docs/bebop2.md, "The compensator"), read
+// strictly: its 16 gains in four lists of x, y, z, yaw, and its rate,
+// which must divide the vehicle's own (30 Hz: 30, 15, 10, 6, 5 ...).
+#pragma once
+
+#include <cmath>
+#include <string>
+
+#include "aurora_control/law/bebop2_compensator.h"
+#include "aurora_control/params/yaml_reader.h"
+
+namespace aurora_control {
+
+constexpr double kCompensatorGainMax = 100.0;
+
+struct CompensatorFile {
+  CompensatorGains<double> gains;  // period_steps set by compensatorPeriod
+  double rate = 30.0;              // [Hz] the law's
+  bool has_clamp = false;          // the file sets clamp_commands
+  bool clamp = true;
+};
+
+// The name under 'controller:' of a controller file ("" when it has none):
+// what chooses the vehicle a flight flies.
+inline std::string controllerFileName(const std::string& path) {
+  const YAML::Node root = loadYamlFile("controller file", path);
+  const YAML::Node name = root.IsMap() && root["controller"] && root["controller"].IsMap()
+                              ? root["controller"]["name"] : YAML::Node();
+  return name && name.IsScalar() ? name.as<std::string>() : "";
+}
+
+inline CompensatorFile readCompensatorFile(const std::string& path) {
+  const YAML::Node root = loadYamlFile("controller file", path);
+  const YamlReader r("controller file '" + path + "': ");
+  r.onlyKeys(root, "", {"controller", "clamp_commands"});
+  const YAML::Node c = root["controller"];
+  r.onlyKeys(c, "controller", {"name", "ksp", "ksd", "kp", "kd", "rate"});
+  CompensatorFile f;
+  const char* names[4] = {"ksp", "ksd", "kp", "kd"};
+  double* into[4] = {f.gains.ksp, f.gains.ksd, f.gains.kp, f.gains.kd};
+  const std::string four = "a list of 4 numbers in [0, " + YamlReader::fmt(kCompensatorGainMax) + "] (x, y, z, yaw)";
+  for (int g = 0; g < 4; ++g) {
+    const std::string key = r.key("controller", names[g]);
+    const std::vector<double> v = r.numbers(r.require(c, "controller", names[g], four), key, 4, four);
+    for (int i = 0; i < 4; ++i) {
+      into[g][i] = v[static_cast<size_t>(i)];
+      if (!(into[g][i] >= 0.0 && into[g][i] <= kCompensatorGainMax)) r.fail(key, "must be " + four);
+    }
+  }
+  f.rate = r.numberIn(r.require(c, "controller", "rate", "Hz, dividing the vehicle's rate (30 Hz: 30, 15, 10, 6, 5)"),
+                      "controller.rate", 0.0, 1000.0, "Hz", false);
+  if (root["clamp_commands"]) f.has_clamp = true, f.clamp = r.boolean(root["clamp_commands"], "clamp_commands");
+  return f;
+}
+
+// The law's period in model steps of Ts: its rate must divide the
+// vehicle's (1/Ts) into a whole number of steps.
+inline long compensatorPeriod(const std::string& path, double rate, double Ts) {
+  const double steps = 1.0 / (rate * Ts);
+  const long whole = std::lround(steps);
+  if (whole < 1 || std::fabs(steps - double(whole)) > 1e-9 * steps) {
+    std::string accepted;
+    for (long n = 1; n <= 6; ++n) accepted += (n > 1 ? ", " : "") + YamlReader::fmt(1.0 / (double(n) * Ts));
+    throw ConfigError("controller file '" + path + "': 'controller.rate' = " + YamlReader::fmt(rate) +
+                      " Hz does not divide the vehicle's " + YamlReader::fmt(1.0 / Ts) +
+                      " Hz into whole model steps: accepted " + accepted + ", ... Hz");
+  }
+  return whole;
+}
+
+}  // namespace aurora_control
