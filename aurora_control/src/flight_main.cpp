@@ -29,8 +29,17 @@ struct Options {
   std::string controller, task, vehicle, csv, link, formation, config;
   std::vector<long> delays;  // one (a flight), or one per drone (a formation)
   long delay = 0;            // a flight's
+  double rate = 0.0;         // [Hz] the compensator's, instead of its file's (0: the file's)
   bool no_clamp = false;
 };
+
+// A shipped file by its NAME (config/<folder>/NAME.yaml), as the launch
+// files take them; a path (with a '/' or ending .yaml) as it is.
+std::string shippedOrPath(const std::string& given, const std::string& config, const char* folder) {
+  const bool path = given.find('/') != std::string::npos ||
+                    (given.size() > 5 && given.compare(given.size() - 5, 5, ".yaml") == 0);
+  return given.empty() || path ? given : config + "/" + folder + "/" + given + ".yaml";
+}
 
 // A formation file gives each drone's link (drones[i].link) and never
 // clamps (AuRoRA's formation script does not): the flight's --link,
@@ -48,17 +57,20 @@ void refuseFlightOnlyOptions(const po::variables_map& vm) {
   }
 }
 
+void resolve(const po::variables_map& vm, const std::string& config, Options& o);
+
 bool parse(int argc, char** argv, Options& o) {
   const std::string config = o.config = aurora_common::configDir();  // throws: says what to source
   po::options_description d("usage: flight [options]\n\nFlies one task offline with the controller node's core and prints its tracking error.\n\noptions");
   d.add_options()("help,h", "this text")
-      ("controller", po::value(&o.controller)->default_value(config + "/controllers/pd_saturated.yaml"), "controller YAML (law and gains)")
-      ("task", po::value(&o.task)->default_value(config + "/tasks/mission4.yaml"), "task YAML (waypoints, circle, lemniscate)")
-      ("vehicle", po::value(&o.vehicle), "vehicle YAML (default: the controller's vehicle, config/vehicles/NAME.yaml: ardrone2, or bebop2 for bebop2_compensator)")
+      ("controller", po::value(&o.controller)->default_value(config + "/controllers/pd_saturated.yaml"), "controller YAML (law and gains), or a shipped NAME (config/controllers/NAME.yaml: pd_saturated, underactuated, bebop2_compensator); its law chooses the vehicle")
+      ("task", po::value(&o.task)->default_value(config + "/tasks/mission4.yaml"), "task YAML (waypoints, circle, lemniscate), or a shipped NAME (config/tasks/NAME.yaml)")
+      ("rate", po::value(&o.rate), "the Bebop 2 compensator's rate [Hz] instead of its file's: the vehicle's 30 Hz divided by whole steps (30, 15, 10, 7.5, 6, 5, ...)")
+      ("vehicle", po::value(&o.vehicle), "vehicle YAML or a shipped NAME (default: the controller's vehicle, config/vehicles/NAME.yaml: ardrone2, or bebop2 for bebop2_compensator)")
       ("delay", po::value(&o.delays)->multitoken()->composing(), "feedback delay [samples of Ts], 0 to 2047 (limits.h); with --formation one per drone (default: the file's)")
       ("no-clamp", po::bool_switch(&o.no_clamp), "do not clamp the law's commands (the sim still does, as the drivers)")
-      ("formation", po::value(&o.formation), "formation YAML (config/formations/*.yaml, docs/formation.md): fly its drones and formation layer instead of --controller and --task")
-      ("link", po::value(&o.link), "link YAML (config/links/*.yaml, docs/links.md): jitter, losses, a command-path delay; its uplink delay unless --delay is given")
+      ("formation", po::value(&o.formation), "formation YAML or a shipped NAME (config/formations/*.yaml, docs/formation.md): fly its drones and formation layer instead of --controller and --task")
+      ("link", po::value(&o.link), "link YAML or a shipped NAME (config/links/*.yaml, docs/links.md): jitter, losses, a command-path delay; its uplink delay unless --delay is given")
       ("csv", po::value(&o.csv), "write one row per step k = 0..N at round-trip precision: step, t, the 12-state after k model steps, the 4 commands the drone applied at step k (model order), the reference of step k and the tracking error (with --formation: each drone's state and commands, Q and Qd; docs/formation.md)");
   po::variables_map vm;
   po::store(po::command_line_parser(joinOptionValues(argc, argv, d)).options(d).run(), vm);
@@ -75,13 +87,31 @@ bool parse(int argc, char** argv, Options& o) {
       throw ConfigError(std::string("--") + file + " '' is refused: give a file's path (or leave --" + file + " out)");
     }
   }
+  resolve(vm, config, o);
+  return true;
+}
+
+// The files by their paths, the rate checked, the vehicle defaulted to the
+// controller's, the one delay of a flight.
+void resolve(const po::variables_map& vm, const std::string& config, Options& o) {
+  o.controller = shippedOrPath(o.controller, config, "controllers");
+  o.task = shippedOrPath(o.task, config, "tasks");
+  o.vehicle = shippedOrPath(o.vehicle, config, "vehicles");
+  o.link = shippedOrPath(o.link, config, "links");
+  o.formation = shippedOrPath(o.formation, config, "formations");
+  if (vm.count("rate")) {
+    if (!o.formation.empty()) throw ConfigError("--rate is refused with --formation: its robots run at the vehicle's rate");
+    if (!(o.rate > 0.0)) {
+      throw ConfigError("--rate " + YamlReader::fmt(o.rate) + " is refused: accepted a rate above 0 Hz that divides "
+                        "the vehicle's (30 Hz: 30, 15, 10, 7.5, 6, 5, ...)");
+    }
+    refuseRateFor(o.controller, o.rate, "--rate");
+  }
   if (!o.formation.empty()) refuseFlightOnlyOptions(vm);
   if (o.vehicle.empty()) {
-    const bool bebop = o.formation.empty() && controllerFileName(o.controller) == Bebop2Compensator::name();
-    o.vehicle = config + "/vehicles/" + (bebop ? aurora_sim::Bebop2::name() : LawVehicle::name()) + ".yaml";
+    o.vehicle = config + "/vehicles/" + (o.formation.empty() ? controllerVehicle(o.controller) : LawVehicle::name()) + ".yaml";
   }
   o.delay = o.delays.empty() ? kDelayNotGiven : o.delays[0];
-  return true;
 }
 
 // RMS and maximum tracking error per segment (a waypoint's, or a lap), on
@@ -153,8 +183,8 @@ void flyAndReport(const Options& o, const std::string& law, const Task<double>& 
 // Flies the options' task once with the controller file's law on its vehicle.
 void run(const Options& o) {
   const FlightFiles files{o.controller, o.task, o.vehicle, o.link, o.delay, o.no_clamp};
-  if (controllerFileName(o.controller) == Bebop2Compensator::name()) {
-    const CompensatorFlight f = loadCompensatorFlight(files);
+  if (controllerVehicle(o.controller) == aurora_sim::Bebop2::name()) {
+    const CompensatorFlight f = loadCompensatorFlight(files, o.rate);
     const std::string law = std::string(Bebop2Compensator::name()) + " at " + YamlReader::fmt(f.rate) + " Hz";
     return flyAndReport(o, law, f.cfg.task, f.cfg.link, f.run.plant.Ts, [&](auto&& observe) {
       return flyLaw<Bebop2Compensator>(f.run, f.cfg, f.steps, observe);

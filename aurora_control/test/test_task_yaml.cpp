@@ -28,7 +28,7 @@ std::string refusal(const std::string& yaml) {
 }  // namespace
 
 TEST(TaskYaml, ShippedTaskFilesLoad) {
-  for (const char* name : {"mission4", "positioning", "circle", "lemniscate"}) {
+  for (const char* name : {"mission4", "positioning", "circle", "lemniscate", "bebop2_waypoints", "bebop2_lemniscate"}) {
     const std::string path = std::string(AURORA_CONFIG_DIR) + "/tasks/" + name + ".yaml";
     const YamlReader r("task file '" + path + "': ");
     const Task<double> t = readTask(r, YAML::LoadFile(path)["task"], "task");
@@ -83,6 +83,24 @@ TEST(TaskYaml, RefusalsNameTheKey) {
 
 // YAML 1.1 readers (rosparam) take 6e1 as text: the refusal says how to
 // write it so that both readers see a number.
+// A waypoint may carry a yaw (the Bebop 2's scenario); a lemniscate may
+// have x go twice per lap. Neither changes a task that does not say so.
+TEST(TaskYaml, WaypointYawAndTheLemniscatesFastAxis) {
+  const Task<double> w = load("task: {duration: 20, waypoints: [[1, 2, 3, 1.5], [0, 0, 1]], end_times: [10, 20]}");
+  EXPECT_EQ(w.at(5.0).yaw, 1.5);
+  EXPECT_EQ(w.at(15.0).yaw, 0.0);
+  EXPECT_NE(refusal("task: {duration: 20, waypoints: [[1, 2, 3, 4]], end_times: [20]}")
+                .find("'task.waypoints[0]' has yaw 4: accepted [-pi, pi] rad"), std::string::npos);
+  EXPECT_NE(refusal("task: {duration: 20, waypoints: [[1, 2, 3, 0, 5]], end_times: [20]}")
+                .find("'task.waypoints[0]' must be [x, y, z] in m (or [x, y, z, yaw], yaw in rad)"), std::string::npos);
+  const std::string fig = "task: {type: lemniscate, centre: [0, 0], height: 1.5, amplitudes: [0.75, 1.25], period: 30";
+  EXPECT_FALSE(load(fig + "}").trajectory.fast_x);
+  EXPECT_TRUE(load(fig + ", fast_axis: x}").trajectory.fast_x);
+  EXPECT_NE(refusal(fig + ", fast_axis: z}").find("'task.fast_axis' = 'z' is not accepted: x or y"), std::string::npos);
+  EXPECT_NE(refusal("task: {type: circle, centre: [0, 0], height: 1.5, radius: 1, period: 30, fast_axis: x}")
+                .find("'task.fast_axis' is not a known key"), std::string::npos);
+}
+
 TEST(TaskYaml, AnExponentReadAsTextSaysHowToWriteIt) {
   const std::string msg = refusal("task: {duration: '6e1', waypoints: [[1, 2, 3]], end_times: [20]}");
   EXPECT_NE(msg.find("not a string (YAML 1.1, which rosparam reads, takes '6e1' as text: write 6.0e+1)"),

@@ -56,6 +56,23 @@ TEST(TrajectoryTask, CircleDerivatives) {
 TEST(TrajectoryTask, LemniscateDerivatives) {
   expectConsistentDerivatives(lemniscate(false));
   expectConsistentDerivatives(lemniscate(true));
+  TrajectoryTask<double> fast_x = lemniscate(false);
+  fast_x.fast_x = true;
+  expectConsistentDerivatives(fast_x);
+}
+
+// The Bebop 2's figure-eight (docs/bebop2.md): x goes twice per lap.
+TEST(TrajectoryTask, ALemniscateWhoseXGoesTwicePerLap) {
+  TrajectoryTask<double> t = lemniscate(false);
+  t.size[0] = 0.75, t.size[1] = 1.25, t.fast_x = true;
+  const double w = 2 * aurora_common::kPi / t.period;
+  for (double s : {0.0, 1.3, 4.7, 11.0}) {
+    const Reference<double> r = t.at(s);
+    EXPECT_NEAR(r.pos[0], t.centre[0] + 0.75 * std::sin(2 * w * s), 1e-15) << s;
+    EXPECT_NEAR(r.pos[1], t.centre[1] + 1.25 * std::sin(w * s), 1e-15) << s;
+    EXPECT_NEAR(r.vel[0], 1.5 * w * std::cos(2 * w * s), 1e-15) << s;
+    EXPECT_NEAR(r.vel[1], 1.25 * w * std::cos(w * s), 1e-15) << s;
+  }
 }
 
 TEST(TrajectoryTask, ShapeAndEnd) {

@@ -95,6 +95,7 @@ void addTask(Crc& crc, const aurora_control::Task<double>& task) {
     for (double v : {t.centre[0], t.centre[1], t.centre[2], t.size[0], t.size[1], t.period, t.yaw}) crc.add(v);
     crc.add(t.laps);
     crc.add(t.yaw_along_path);
+    if (t.fast_x) crc.add(t.fast_x);  // only when set: the hashes of tasks that predate it stay
     return;
   }
   const auto& w = task.waypoints;
@@ -102,6 +103,7 @@ void addTask(Crc& crc, const aurora_control::Task<double>& task) {
   for (int i = 0; i < w.count; ++i) {
     for (int j = 0; j < 3; ++j) crc.add(w.position[i][j]);
     crc.add(w.end_time[i]);
+    if (w.yaw[i] != 0.0) crc.add(w.yaw[i]);  // only when set: the hashes of tasks that predate it stay
   }
   crc.add(w.duration);
 }

@@ -18,14 +18,14 @@ using namespace aurora_control;
 
 namespace {
 
-// Rows k = 0..n-1, as flight --csv writes them: t, the state after k model
-// steps, the command the drone applied at step k, the reference of step k
-// and its tracking error; and the delay in force (samples between state k
-// and the one the law received). The arrays are filled in place (no copy).
-py::dict simulateFiles(const std::string& controller, const std::string& task, const std::string& vehicle, long delay,
-                       const std::string& link, bool clamp) {
-  const FlightSetup f = loadFlight(FlightFiles{controller, task, vehicle, link, delay, !clamp});
-  const py::ssize_t n = f.steps;
+// Rows k = 0..n-1 of a flight of n steps (fly(observe) runs it), as
+// flight --csv writes them: t, the state after k model steps, the command
+// the drone applied at step k, the reference of step k and its tracking
+// error; and the delay in force (samples between state k and the one the
+// law received). The arrays are filled in place (no copy).
+template <class Fly>
+py::dict flightArrays(long steps, double Ts, long delay, const std::string& law, Fly&& fly) {
+  const py::ssize_t n = steps;
   py::array_t<double> t(n), states({n, py::ssize_t(12)}), commands({n, py::ssize_t(4)}), reference({n, py::ssize_t(3)}),
       error(n);
   py::array_t<long> delay_in_force(n);
@@ -35,9 +35,9 @@ py::dict simulateFiles(const std::string& controller, const std::string& task, c
   FlightResult r;
   {
     py::gil_scoped_release unlocked;  // the flight touches no Python object
-    r = runFlight(f.vehicle, f.settings, f.task, f.steps, [&](const FlightObservation& o, double e) {
+    r = fly([&](const auto& o, double e) {
       const long k = o.k;
-      pt[k] = taskTime(k, f.vehicle.Ts);
+      pt[k] = taskTime(k, Ts);
       for (int i = 0; i < 12; ++i) px[12 * k + i] = o.X_before[i];
       for (int i = 0; i < 4; ++i) pu[4 * k + i] = o.step.U[i];
       for (int i = 0; i < 3; ++i) pr[3 * k + i] = o.step.ref.pos[i];
@@ -49,15 +49,37 @@ py::dict simulateFiles(const std::string& controller, const std::string& task, c
   metrics["steps"] = r.steps;
   metrics["iae"] = r.iae, metrics["itae"] = r.itae, metrics["iasc"] = r.iasc;
   metrics["rms_tracking_error"] = r.rms_tracking_error, metrics["max_tracking_error"] = r.max_tracking_error;
-  metrics["delay"] = f.settings.delay;
+  metrics["delay"] = delay;
   py::dict out;
   out["t"] = t, out["states"] = states, out["commands"] = commands, out["reference"] = reference, out["error"] = error;
   out["delay_in_force"] = delay_in_force;
   out["metrics"] = metrics;
-  out["sample_time"] = f.vehicle.Ts;
-  out["law"] = lawName(f.settings.law);
+  out["sample_time"] = Ts;
+  out["law"] = law;
   return out;
 }
+
+// One flight from its files, as the flight tool flies it: the controller
+// file's law chooses the vehicle; `rate` [Hz] (0: the file's) is the Bebop
+// 2 compensator's.
+py::dict simulateFiles(const std::string& controller, const std::string& task, const std::string& vehicle, long delay,
+                       const std::string& link, bool clamp, double rate) {
+  const FlightFiles files{controller, task, vehicle, link, delay, !clamp};
+  refuseRateFor(controller, rate, "rate=" + YamlReader::fmt(rate));
+  if (controllerVehicle(controller) == aurora_sim::Bebop2::name()) {
+    const CompensatorFlight f = loadCompensatorFlight(files, rate, "rate=");
+    return flightArrays(f.steps, f.run.plant.Ts, f.run.delay, Bebop2Compensator::name(), [&](auto&& observe) {
+      return flyLaw<Bebop2Compensator>(f.run, f.cfg, f.steps, observe);
+    });
+  }
+  const FlightSetup f = loadFlight(files);
+  return flightArrays(f.steps, f.vehicle.Ts, f.settings.delay, lawName(f.settings.law), [&](auto&& observe) {
+    return runFlight(f.vehicle, f.settings, f.task, f.steps, observe);
+  });
+}
+
+// The vehicle a controller file's law flies (its name).
+std::string vehicleOf(const std::string& controller) { return controllerVehicle(controller); }
 
 // The formation checks and errors of a formation flight, as flight --formation prints them.
 py::dict formationMetrics(const FormationFlight& r) {
@@ -126,8 +148,10 @@ PYBIND11_MODULE(_core, m) {
   m.attr("MAX_DELAY_SAMPLES") = kMaxDelaySamples;
   m.attr("DELAY_NOT_GIVEN") = kDelayNotGiven;
   m.def("simulate_files", &simulateFiles, py::arg("controller"), py::arg("task"), py::arg("vehicle"), py::arg("delay"),
-        py::arg("link"), py::arg("clamp"),
+        py::arg("link"), py::arg("clamp"), py::arg("rate"),
         "One flight from YAML files, as the flight tool flies it: a dict of numpy arrays and metrics.");
+  m.def("controller_vehicle", &vehicleOf, py::arg("controller"),
+        "The name of the vehicle a controller file's law flies (config/vehicles/NAME.yaml).");
   m.def("simulate_formation_files", &simulateFormationFiles, py::arg("formation"), py::arg("vehicle"),
         py::arg("delays"), py::arg("config_dir"),
         "One formation flight from YAML files, as flight --formation flies it: a dict of numpy arrays and metrics.");

@@ -61,6 +61,24 @@ class SimulateTest(unittest.TestCase):
         self.assertGreater(g.delay_in_force.max(), 2)
         self.assertGreater(g.metrics["iae"], 0.0)
 
+    def test_the_bebop_2_equals_the_flight_tool(self):
+        """Issue 33: the compensator's controller file chooses the Bebop 2 (its vehicle file by default), at
+        its file's rate or `rate`, clamped or not, as flight flies it; the AR.Drone's laws refuse a rate."""
+        f = aurora.simulate("bebop2_compensator", "bebop2_waypoints", rate=5, clamp=False)
+        self.assertSameFlight(f, flight_csv("--controller", "bebop2_compensator", "--task", "bebop2_waypoints",
+                                            "--rate", "5", "--no-clamp"))
+        self.assertEqual(f.law, "bebop2_compensator")
+        g = aurora.simulate("bebop2_compensator", "bebop2_lemniscate", delay=3, vehicle="bebop2")
+        self.assertSameFlight(g, flight_csv("--controller", "bebop2_compensator", "--task", "bebop2_lemniscate",
+                                            "--delay", "3"))
+        expect_refusals(self, [
+            (lambda: aurora.simulate("pd_saturated", "mission4", rate=10), "rate=10 is refused here"),
+            (lambda: aurora.simulate("bebop2_compensator", "mission4", rate=7), "rate=7 Hz does not divide"),
+            (lambda: aurora.simulate("bebop2_compensator", "mission4", rate=0), "rate: expected a number above 0"),
+            (lambda: aurora.simulate("bebop2_compensator", "mission4", vehicle="ardrone2"),
+             "but the controller 'bebop2_compensator' flies type 'bebop2'"),
+        ])
+
     def test_a_dict_is_its_file(self):
         cfg = aurora.simulation.config_dir()
         with open(cfg + "/controllers/pd_saturated.yaml") as fh:

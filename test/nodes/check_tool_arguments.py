@@ -198,6 +198,39 @@ class FormationAndLinkArgumentsTest(unittest.TestCase):
                 f.write(open(bebop).read().replace("rate: 30 ", "rate: 7 "))
             self.refused(["--controller", path], "'controller.rate' = 7 Hz does not divide the vehicle's 30 Hz",
                          "accepted 30, 15, 10, 7.5, 6, 5")
+        # Shipped files by NAME; --rate instead of the file's, refused where no law has a rate of its own.
+        rc, out = flight("--controller", "bebop2_compensator", "--task", "bebop2_lemniscate", "--rate", "5")
+        self.assertEqual(rc, 0, out)
+        self.assertIn("flight: bebop2_compensator at 5 Hz, lemniscate task of 60.0 s", out)
+        self.refused(["--controller", "bebop2_compensator", "--rate", "7"], "--rate 7 Hz does not divide")
+        self.refused(["--controller", "underactuated", "--rate", "10"], "--rate is refused here")
+
+    def test_the_bebop_scenarios_fly_as_the_spec_computed(self):
+        """Issue 33: the standard waypoint scenario's first step, unclamped (AuRoRA's simulation), through
+        flight: the compensator's command and the state after one step are the values of AuRoRA's code."""
+        c = config_dir()
+        bebop = os.path.join(c, "controllers", "bebop2_compensator.yaml")
+        with tempfile.TemporaryDirectory() as tmp:
+            csv = os.path.join(tmp, "wp.csv")
+            rc, out = flight("--controller", bebop, "--task", os.path.join(c, "tasks", "bebop2_waypoints.yaml"),
+                             "--no-clamp", "--csv", csv)
+            self.assertEqual(rc, 0, out)
+            rows = [r.split(",") for r in open(csv).read().splitlines()]
+            col = {name: i for i, name in enumerate(rows[0])}
+            self.assertEqual(len(rows), 1 + 901)  # steps 0..900 of 30 s
+            self.assertAlmostEqual(float(rows[1][col["u3"]]), -5.8913868868668304, places=12)
+            for u in ("u1", "u2", "u4"):
+                self.assertEqual(float(rows[1][col[u]]), 0.0)
+            self.assertAlmostEqual(float(rows[2][col["z"]]), 0.72403862178520684, places=14)
+            self.assertAlmostEqual(float(rows[2][col["dz"]]), -0.77884134644379499, places=14)
+            # It reaches each waypoint; the second one's yaw (pi/2) is the reference from step 120 (4 s).
+            self.assertEqual([float(rows[1 + k][col["xd"]]) for k in (119, 120)], [0.0, 0.5])
+            psi = float(rows[1 + 239][col["psi"]])
+            self.assertAlmostEqual(psi, 1.5707963267948966, places=2)
+            rc, out = flight("--controller", bebop, "--task", os.path.join(c, "tasks", "bebop2_lemniscate.yaml"))
+            self.assertEqual(rc, 0, out)
+            lap2 = float(out.split("lap 2: RMS tracking error ")[1].split(" m")[0])
+            self.assertLess(lap2, 0.01, out)
 
     def test_two_sweeps_on_one_folder_and_an_interrupted_sweep(self):
         sweep = subprocess.run(["catkin_find", "--first-only", "--libexec", "aurora_sweep", "sweep"],

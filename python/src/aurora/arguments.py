@@ -51,6 +51,13 @@ def whole(value, name, low=0, high=MAX_DELAY_SAMPLES, what="whole samples", acce
     return value
 
 
+def positive(value, name):
+    """A real number above 0 (a Python or numpy int or float, not a bool)."""
+    if isinstance(value, bool) or not isinstance(value, numbers.Real) or not value > 0:
+        raise ValueError("%s: expected a number above 0, got %r" % (name, value))
+    return float(value)
+
+
 def boolean(value, name):
     """True or False (a Python or numpy bool); "no", 0 and the like are refused."""
     np = _numpy()

@@ -19,7 +19,7 @@ import tempfile
 import yaml
 
 from aurora import _core
-from aurora.arguments import boolean, per_drone, plain, whole
+from aurora.arguments import boolean, per_drone, plain, positive, whole
 
 _FOLDERS = {"controller": "controllers", "task": "tasks", "vehicle": "vehicles", "link": "links",
             "formation": "formations"}
@@ -77,18 +77,23 @@ def _as_file(value, kind, tmp):
     return path
 
 
-def simulate(controller, task, vehicle=None, delay=None, link=None, clamp=True):
+def simulate(controller, task, vehicle=None, delay=None, link=None, clamp=True, rate=None):
     """One flight of `controller` on `task` with a feedback delay of `delay`
     samples. Over `link`, a given delay replaces the link's uplink delay and
     None keeps it (docs/links.md, "A delay beside a link"); without a link
-    None is 0."""
+    None is 0. The controller's law chooses the vehicle (None: its shipped
+    file, ardrone2 or, for bebop2_compensator, bebop2); `rate` [Hz] is the
+    Bebop 2 compensator's instead of its file's (docs/bebop2.md)."""
     delay = _core.DELAY_NOT_GIVEN if delay is None else whole(delay, "delay")
     clamp = boolean(clamp, "clamp")
+    rate = 0.0 if rate is None else positive(rate, "rate")
     with tempfile.TemporaryDirectory() as tmp:
-        files = [_as_file(v, k, tmp) for v, k in ((controller, "controller"), (task, "task"),
-                                                   ("ardrone2" if vehicle is None else vehicle, "vehicle"))]
+        controller_file = _as_file(controller, "controller", tmp)
+        if vehicle is None:
+            vehicle = _core.controller_vehicle(controller_file)
+        task_file, vehicle_file = _as_file(task, "task", tmp), _as_file(vehicle, "vehicle", tmp)
         link_file = _as_file(link, "link", tmp) if link is not None else ""
-        return Flight(_core.simulate_files(files[0], files[1], files[2], delay, link_file, clamp))
+        return Flight(_core.simulate_files(controller_file, task_file, vehicle_file, delay, link_file, clamp, rate))
 
 
 class FormationFlight:

@@ -55,15 +55,15 @@ inline CompensatorFile readCompensatorFile(const std::string& path) {
 }
 
 // The law's period in model steps of Ts: its rate must divide the
-// vehicle's (1/Ts) into a whole number of steps.
-inline long compensatorPeriod(const std::string& path, double rate, double Ts) {
+// vehicle's (1/Ts) into a whole number of steps. `given` names where the
+// rate came from in a refusal (e.g. "--rate 7").
+inline long compensatorPeriod(const std::string& given, double rate, double Ts) {
   const double steps = 1.0 / (rate * Ts);
   const long whole = std::lround(steps);
   if (whole < 1 || std::fabs(steps - double(whole)) > 1e-9 * steps) {
     std::string accepted;
     for (long n = 1; n <= 6; ++n) accepted += (n > 1 ? ", " : "") + YamlReader::fmt(1.0 / (double(n) * Ts));
-    throw ConfigError("controller file '" + path + "': 'controller.rate' = " + YamlReader::fmt(rate) +
-                      " Hz does not divide the vehicle's " + YamlReader::fmt(1.0 / Ts) +
+    throw ConfigError(given + " Hz does not divide the vehicle's " + YamlReader::fmt(1.0 / Ts) +
                       " Hz into whole model steps: accepted " + accepted + ", ... Hz");
   }
   return whole;

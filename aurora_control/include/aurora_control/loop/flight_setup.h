@@ -68,6 +68,22 @@ inline FlightSetup loadFlight(const FlightFiles& f) {
   return s;
 }
 
+// The vehicle a controller file's law flies, by name (its file:
+// config/vehicles/NAME.yaml): where a flight chooses its vehicle.
+inline std::string controllerVehicle(const std::string& controller_file) {
+  return controllerFileName(controller_file) == Bebop2Compensator::name() ? aurora_sim::Bebop2::name()
+                                                                           : LawVehicle::name();
+}
+
+// A rate given (`given`, e.g. "--rate", non-zero `rate`) for a controller
+// whose law has none of its own is refused.
+inline void refuseRateFor(const std::string& controller_file, double rate, const std::string& given) {
+  if (rate != 0.0 && controllerVehicle(controller_file) != aurora_sim::Bebop2::name()) {
+    throw ConfigError(given + " is refused here: it sets the Bebop 2 compensator's rate (controller "
+                      "bebop2_compensator); the AR.Drone's laws and a formation run at the vehicle's rate");
+  }
+}
+
 // A Bebop 2 flight with its compensator (docs/bebop2.md): the run (the
 // vehicle file as plant and as the law's model) and the runner's settings.
 // Its driver clamps what it receives, and so does the controller unless
@@ -79,15 +95,22 @@ struct CompensatorFlight {
   long steps = 0;
 };
 
-inline CompensatorFlight loadCompensatorFlight(const FlightFiles& f) {
-  const CompensatorFile file = readCompensatorFile(f.controller);
+// `rate` [Hz]: instead of the file's (0: the file's), named `rate_option`
+// in a refusal ("--rate " for the tool, "rate=" for Python).
+inline CompensatorFlight loadCompensatorFlight(const FlightFiles& f, double rate = 0.0,
+                                               const std::string& rate_option = "--rate ") {
+  CompensatorFile file = readCompensatorFile(f.controller);
+  const std::string given = rate != 0.0 ? rate_option + YamlReader::fmt(rate)
+                                        : "controller file '" + f.controller + "': 'controller.rate' = " +
+                                              YamlReader::fmt(file.rate);
+  if (rate != 0.0) file.rate = rate;
   const aurora_sim::Bebop2::Params<double> vehicle = aurora_sim::loadVehicleFile<aurora_sim::Bebop2>(
       f.vehicle, std::string("the controller '") + Bebop2Compensator::name() + "'");
   CompensatorFlight s;
   s.rate = file.rate;
   s.run.plant = s.run.model = vehicle;
   s.run.gains = file.gains;
-  s.run.gains.period_steps = double(compensatorPeriod(f.controller, file.rate, vehicle.Ts));
+  s.run.gains.period_steps = double(compensatorPeriod(given, file.rate, vehicle.Ts));
   const FlightCourse c = loadCourse(f, vehicle.Ts);
   s.run.delay = c.delay;
   s.cfg.task = c.task, s.cfg.link = c.link, s.steps = c.steps;

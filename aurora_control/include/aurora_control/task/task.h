@@ -33,20 +33,22 @@ struct Task {
   AURORA_HD bool isTrajectory() const { return type != TaskType::kWaypoints; }
   AURORA_HD T duration() const { return isTrajectory() ? trajectory.duration() : waypoints.duration; }
 
-  // The reference at task time t [s]. Waypoints: the active point at rest,
-  // yaw 0; chosen by selects, so lanes at different times work.
+  // The reference at task time t [s]. Waypoints: the active point and its
+  // yaw, at rest; chosen by selects, so lanes at different times work.
   template <typename Time>
   AURORA_HD Reference<Time> at(const Time& t) const {
     if (isTrajectory()) return trajectory.at(t);
     using aurora_common::select;
     Reference<Time> r;
     for (int j = 0; j < 3; ++j) r.pos[j] = Time(waypoints.position[0][j]);
+    r.yaw = Time(waypoints.yaw[0]);
     for (int i = 1; i < waypoints.count; ++i) {
       const auto later = t > Time(waypoints.end_time[i - 1]);
       for (int j = 0; j < 3; ++j) r.pos[j] = select(later, Time(waypoints.position[i][j]), r.pos[j]);
+      r.yaw = select(later, Time(waypoints.yaw[i]), r.yaw);
     }
     for (int j = 0; j < 3; ++j) r.vel[j] = r.acc[j] = Time(0);
-    r.yaw = r.yaw_rate = r.yaw_acc = Time(0);
+    r.yaw_rate = r.yaw_acc = Time(0);
     return r;
   }
 
@@ -66,6 +68,7 @@ struct Task {
     c.waypoints.count = waypoints.count;
     for (int i = 0; i < waypoints.count; ++i) {
       for (int j = 0; j < 3; ++j) c.waypoints.position[i][j] = U(waypoints.position[i][j]);
+      c.waypoints.yaw[i] = U(waypoints.yaw[i]);
       c.waypoints.end_time[i] = U(waypoints.end_time[i]);
     }
     c.waypoints.duration = U(waypoints.duration);
@@ -74,7 +77,7 @@ struct Task {
     TrajectoryTask<U>& b = c.trajectory;
     b.kind = a.kind;
     for (int j = 0; j < 3; ++j) b.centre[j] = U(a.centre[j]);
-    b.size[0] = U(a.size[0]), b.size[1] = U(a.size[1]);
+    b.size[0] = U(a.size[0]), b.size[1] = U(a.size[1]), b.fast_x = a.fast_x;
     b.period = U(a.period), b.laps = a.laps, b.yaw_along_path = a.yaw_along_path, b.yaw = U(a.yaw);
     return c;
   }

@@ -5,13 +5,14 @@
 //     type: waypoints                   # waypoints (default) | circle | lemniscate
 //     # waypoints:
 //     duration: 60.0                    # s
-//     waypoints: [[x, y, z], ...]       # m, world frame, 1 to 16
+//     waypoints: [[x, y, z], ...]       # m, world frame, 1 to 16; [x, y, z, yaw] with a yaw in rad
 //     end_times: [15.0, ...]            # s; waypoint i is desired while t <= end_times[i]
 //     # circle / lemniscate:
 //     centre: [x, y]                    # m, world frame
 //     height: 1.5                       # m
 //     radius: 1.0                       # m (circle)
 //     amplitudes: [ax, ay]              # m (lemniscate: x = ax sin wt, y = ay sin 2wt)
+//     fast_axis: y                      # lemniscate: the axis going twice per lap (x: x = ax sin 2wt, y = ay sin wt)
 //     period: 20.0                      # s per lap
 //     laps: 2                           # the task lasts laps * period
 //     yaw: along_path                   # or a fixed yaw in rad
@@ -33,7 +34,7 @@ namespace task_yaml_detail {
 inline void readWaypoints(const YamlReader& r, const YAML::Node& n, const std::string& key,
                           Task<double>& task) {
   r.onlyKeys(n, key, {"name", "type", "duration", "waypoints", "end_times"});
-  const YAML::Node wps = r.require(n, key, "waypoints", "a list of [x, y, z] in m");
+  const YAML::Node wps = r.require(n, key, "waypoints", "a list of [x, y, z] in m (or [x, y, z, yaw], yaw in rad)");
   const YAML::Node ends = r.require(n, key, "end_times", "one time [s] per waypoint");
   const std::string wkey = r.key(key, "waypoints"), ekey = r.key(key, "end_times");
   if (!wps.IsSequence()) r.fail(wkey, "must be a list of [x, y, z] in m");
@@ -43,8 +44,11 @@ inline void readWaypoints(const YamlReader& r, const YAML::Node& n, const std::s
   if (w.count > 16) w.count = 17;  // refused by checkTask with the accepted range
   for (int i = 0; i < static_cast<int>(wps.size()) && i < 16; ++i) {
     const std::string k = wkey + "[" + std::to_string(i) + "]";
-    const std::vector<double> p = r.numbers(wps[i], k, 3, "[x, y, z] in m");
+    const size_t size = wps[i].IsSequence() && wps[i].size() == 4 ? 4 : 3;
+    const std::vector<double> p = r.numbers(wps[i], k, size, "[x, y, z] in m (or [x, y, z, yaw], yaw in rad)");
     for (int j = 0; j < 3; ++j) w.position[i][j] = p[j];
+    w.yaw[i] = size == 4 ? p[3] : 0.0;
+    if (std::fabs(w.yaw[i]) > aurora_common::kPi) r.fail(k, "has yaw " + YamlReader::fmt(w.yaw[i]) + ": accepted [-pi, pi] rad");
     w.end_time[i] = r.number(ends[i], ekey + "[" + std::to_string(i) + "]");
   }
   w.duration = r.number(r.require(n, key, "duration", "a time in (0, 86400] s"), r.key(key, "duration"));
@@ -55,7 +59,9 @@ inline void readWaypoints(const YamlReader& r, const YAML::Node& n, const std::s
 inline void readTrajectory(const YamlReader& r, const YAML::Node& n, const std::string& key,
                            bool circle, Task<double>& task) {
   const char* size_key = circle ? "radius" : "amplitudes";
-  r.onlyKeys(n, key, {"name", "type", "centre", "height", size_key, "period", "laps", "yaw"});
+  std::vector<std::string> keys{"name", "type", "centre", "height", size_key, "period", "laps", "yaw"};
+  if (!circle) keys.push_back("fast_axis");
+  r.onlyKeys(n, key, keys);
   TrajectoryTask<double>& t = task.trajectory;
   t.kind = circle ? TrajectoryKind::kCircle : TrajectoryKind::kLemniscate;
   const std::vector<double> c =
@@ -76,6 +82,12 @@ inline void readTrajectory(const YamlReader& r, const YAML::Node& n, const std::
       if (!(a[i] > 0.0 && a[i] <= 100.0)) r.fail(skey, "is outside the accepted range (0, 100] m per axis");
       t.size[i] = a[i];
     }
+  }
+  t.fast_x = false;
+  if (n["fast_axis"]) {
+    const std::string axis = r.text(n["fast_axis"], r.key(key, "fast_axis"));
+    if (axis != "x" && axis != "y") r.fail(r.key(key, "fast_axis"), "= '" + axis + "' is not accepted: x or y");
+    t.fast_x = axis == "x";
   }
   t.period = r.numberIn(r.require(n, key, "period", "a time in [1, 3600] s"), r.key(key, "period"), 1.0, 3600.0, "s");
   t.laps = static_cast<int>(n["laps"] ? r.integer(n["laps"], r.key(key, "laps")) : 1);

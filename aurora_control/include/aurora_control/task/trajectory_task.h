@@ -8,7 +8,7 @@
 //
 // With w = 2 pi / period and phase s = w t:
 //   circle:      p = c + r [cos s, sin s, 0]
-//   lemniscate:  p = c + [ax sin s, ay sin 2s, 0]
+//   lemniscate:  p = c + [ax sin s, ay sin 2s, 0]  (fast_x: [ax sin 2s, ay sin s, 0])
 // at the height c_z; yaw fixed, or along the path: psi = atan2(vy, vx).
 // After laps * period the reference holds the end point at rest.
 #pragma once
@@ -38,6 +38,7 @@ struct TrajectoryTask {
   TrajectoryKind kind = TrajectoryKind::kCircle;
   T centre[3];         // [m]: x, y of the centre and the flight height
   T size[2];           // circle: radius in size[0]; lemniscate: amplitudes ax, ay [m]
+  bool fast_x = false;  // lemniscate: x, not y, goes twice per lap (the Bebop 2's figure-eight)
   T period;            // [s] per lap
   int laps = 1;
   bool yaw_along_path = false;
@@ -96,11 +97,12 @@ struct TrajectoryTask {
       d[2][0] = -r * w2 * c1, d[2][1] = -r * w2 * s1;
       d[3][0] = r * w3 * s1, d[3][1] = -r * w3 * c1;
     } else {
-      const Time ax = Time(size[0]), ay = Time(size[1]);
-      d[0][0] = ax * s1, d[0][1] = ay * s2;
-      d[1][0] = ax * w * c1, d[1][1] = Time(2) * ay * w * c2;
-      d[2][0] = -ax * w2 * s1, d[2][1] = -Time(4) * ay * w2 * s2;
-      d[3][0] = -ax * w3 * c1, d[3][1] = -Time(8) * ay * w3 * c2;
+      // The slow axis goes once per lap, the fast one twice.
+      const Time a_slow = Time(size[fast_x ? 1 : 0]), a_fast = Time(size[fast_x ? 0 : 1]);
+      const Time slow[4] = {a_slow * s1, a_slow * w * c1, -a_slow * w2 * s1, -a_slow * w3 * c1};
+      const Time fast[4] = {a_fast * s2, Time(2) * a_fast * w * c2, -Time(4) * a_fast * w2 * s2,
+                            -Time(8) * a_fast * w3 * c2};
+      for (int n = 0; n < 4; ++n) d[n][0] = fast_x ? fast[n] : slow[n], d[n][1] = fast_x ? slow[n] : fast[n];
     }
   }
 };

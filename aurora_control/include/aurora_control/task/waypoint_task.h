@@ -12,6 +12,7 @@ template <typename T, int MaxWaypoints = 16>
 struct WaypointTask {
   int count = 0;
   T position[MaxWaypoints][3];  // world frame [m]
+  T yaw[MaxWaypoints] = {};     // [rad] in [-pi, pi] (0 unless the task file gives it)
   T end_time[MaxWaypoints];     // the waypoint is desired while t <= end_time [s]
   T duration;                   // the task ends at this time [s]
 
