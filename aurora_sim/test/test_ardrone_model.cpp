@@ -179,7 +179,7 @@ TEST(VehicleFile, ItsTypeNamesTheVehicle) {
   EXPECT_NE(missing.find("vehicle_type.yaml': lacks the key 'type'"), std::string::npos) << missing;
   EXPECT_NE(missing.find("add 'type: ardrone2'"), std::string::npos) << missing;
   const std::string unknown = typeRefusal("type: ardrone3");
-  EXPECT_NE(unknown.find("type 'ardrone3' is not a vehicle this build knows (accepted: ardrone2, bebop2)"), std::string::npos)
+  EXPECT_NE(unknown.find("type 'ardrone3' is not a vehicle this build knows (accepted: ardrone2, bebop2, pioneer3dx)"), std::string::npos)
       << unknown;
   // A loop of another vehicle (a test-only one) refuses an AR.Drone's file, naming both.
   struct Rover {

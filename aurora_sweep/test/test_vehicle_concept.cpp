@@ -14,6 +14,7 @@
 
 #include "../src/batch_engine.h"
 #include "aurora_control/law/bebop2_compensator.h"
+#include "aurora_control/law/pioneer_laws.h"
 #include "aurora_sim/vehicle_yaml.h"
 #include "aurora_sweep/kernel_entry.h"
 #include "point_mass.h"
@@ -31,6 +32,20 @@ struct SweepGains<aurora_control::Bebop2Compensator> {
     aurora_control::castGains(aurora_control::CompensatorGains<double>::defaults(), g);
     g.ksp[0] = g.ksp[1] = T(c.v[kParamKp]);
     g.ksd[0] = g.ksd[1] = T(c.v[kParamKd]);
+    return g;
+  }
+};
+
+// The sweep's kp and kd as the Pioneer dynamic controller's kinematic
+// amplitudes kc1 and its compensation gains kd1 (this test's mapping).
+template <>
+struct SweepGains<aurora_control::PioneerDynamic> {
+  template <typename T>
+  AURORA_HD static aurora_control::PioneerDynamicGains<T> from(const Combination& c) {
+    aurora_control::PioneerDynamicGains<T> g;
+    aurora_control::castGains(aurora_control::PioneerDynamicGains<double>::defaults(), g);
+    g.kc1[0] = g.kc1[1] = T(c.v[kParamKp]);
+    g.kd1[0] = g.kd1[1] = T(c.v[kParamKd]);
     return g;
   }
 };
@@ -217,6 +232,38 @@ TEST(VehicleConcept, TheBebop2FliesEveryBackend) {
   expectEveryBackendAgrees<BebopLaw>(bebopSetup<float>(aurora_control::LinkParams()), grid.view, 2e-3);
   expectEveryBackendAgrees<BebopLaw>(bebopSetup<double>(lossyLink()), grid.view, 1e-9);
   expectEveryBackendAgrees<BebopLaw>(bebopSetup<float>(lossyLink()), grid.view, 2e-3);
+}
+
+// The Pioneer P3-DX (aurora_sim/vehicle/pioneer3dx.h, law/pioneer_laws.h):
+// 14 states, 2 inputs, Ts 0.1 s, on the floor; every backend, its delay and
+// model factor (theta1) reaching its runs.
+TEST(VehicleConcept, ThePioneerFliesEveryBackend) {
+  using PioneerLaw = aurora_control::PioneerDynamic;
+  PointGrid grid;
+  grid.axes = {{0.2, 0.35}, {0.5, 0.75}, {0, 2, 5}, {1.0, 1.2}};
+  const int params[4] = {kParamKp, kParamKd, kParamDelay, kParamFirstModelFactor};
+  test::setAxes(grid.view, params, grid.axes);
+  auto setup = [](const aurora_control::LinkParams& link, auto precision) {
+    using T = decltype(precision);
+    auto s = setupOf<T, aurora_sim::Pioneer3dx>(
+        aurora_sim::loadVehicleFile<aurora_sim::Pioneer3dx>(test::configDir() + "/vehicles/pioneer3dx.yaml"), link);
+    s.config.task = aurora_control::positioningTask(T(2), T(1), T(0), T(60));  // on the floor
+    s.iterations = aurora_control::studyIterationCount(60.0, s.vehicle.Ts);
+    return s;
+  };
+  const auto ideal = setup(aurora_control::LinkParams(), 0.0);
+  const std::vector<SimResult> flown = scalarLoop<double, false, PioneerLaw>(ideal, grid.view);
+  const Combination c = grid.view.decode(3);  // kc1 0.35, kd1 0.75, no delay, nominal model
+  ASSERT_EQ(c.delay(), 0);
+  EXPECT_NEAR(flown[3].final_pos[0], 2.0, 0.02);
+  EXPECT_NEAR(flown[3].final_pos[1], 1.0, 0.02);
+  EXPECT_EQ(flown[3].final_pos[2], 0.0);
+  EXPECT_NE(flown[3].iae, flown[3 + 12].iae);  // theta1 x 1.2
+  EXPECT_NE(flown[3].iae, flown[3 + 4].iae);   // delay 2
+  expectEveryBackendAgrees<PioneerLaw>(ideal, grid.view, 1e-9);
+  expectEveryBackendAgrees<PioneerLaw>(setup(aurora_control::LinkParams(), 0.0f), grid.view, 2e-3);
+  expectEveryBackendAgrees<PioneerLaw>(setup(lossyLink(), 0.0), grid.view, 1e-9);
+  expectEveryBackendAgrees<PioneerLaw>(setup(lossyLink(), 0.0f), grid.view, 2e-3);
 }
 
 // The delay rule holds for the test vehicle as for the AR.Drone: the state

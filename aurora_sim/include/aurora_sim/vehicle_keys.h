@@ -14,6 +14,18 @@
 
 namespace aurora_sim {
 
+// A key of a vehicle file whose values go to `field` (a vehicle's own enum
+// of its parameters), entry `index` of it where it is an array.
+template <class Field>
+struct FileKey {
+  const char* name;
+  Field field;
+  int index;
+  double min, max;   // accepted range, inclusive
+  const char* unit;
+  bool flag;         // true / false in the file
+};
+
 struct VehicleKey {
   const char* name;      // key under the vehicle namespace, e.g. "mass"
   double ArdroneParams<double>::*field;  // nullptr for the uSat entries

@@ -11,6 +11,7 @@
 
 #include "aurora_common/host_device.h"
 #include "aurora_common/scalar_math.h"
+#include "aurora_control/law/law_of.h"
 #include "aurora_control/task/task.h"
 #include "aurora_sim/vehicle/bebop2.h"
 
@@ -81,13 +82,7 @@ AURORA_HD inline void compensatorCommand(const aurora_sim::Bebop2Params<T>& mode
 }
 
 // The compensator as a law type (control_law.h's concept).
-struct Bebop2Compensator {
-  using Vehicle = aurora_sim::Bebop2;
-  using Data = Bebop2Compensator;
-  template <typename T>
-  using Gains = CompensatorGains<T>;
-  template <typename T>
-  using Memory = CompensatorMemory<T>;
+struct Bebop2Compensator : LawOf<Bebop2Compensator, aurora_sim::Bebop2, CompensatorGains, CompensatorMemory> {
   // x y z yaw and their rates.
   struct Input {
     static constexpr int kWidth = 8;

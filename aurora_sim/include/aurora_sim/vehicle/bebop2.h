@@ -14,17 +14,10 @@
 
 namespace aurora_sim {
 
-// A key of the Bebop 2's vehicle file: the sample time, one channel's
-// input gain or damping, or the drag option (a flag).
-struct Bebop2Key {
-  enum Field { kSampleTime, kInputGain, kDamping, kRotatedDrag };
-  const char* name;
-  Field field;
-  int axis;          // Bebop2Axis for kInputGain and kDamping
-  double min, max;   // accepted range, inclusive
-  const char* unit;
-  bool flag;         // true / false in the file
-};
+// The Bebop 2's vehicle file sets the sample time, one channel's input gain
+// or damping (index: its Bebop2Axis), or the drag option (a flag).
+enum class Bebop2Field { kSampleTime, kInputGain, kDamping, kRotatedDrag };
+using Bebop2Key = FileKey<Bebop2Field>;
 
 struct Bebop2 {
   template <typename T>
@@ -61,7 +54,7 @@ struct Bebop2 {
 
   // config/vehicles/bebop2.yaml: every key required.
   static const std::vector<Bebop2Key>& fileKeys() {
-    using K = Bebop2Key;
+    using K = Bebop2Field;
     static const std::vector<Bebop2Key> keys = {
         {"sample_time", K::kSampleTime, 0, 1e-4, 1.0, "s", false},
         {"input_gain/x", K::kInputGain, kBebopX, 1e-6, 1e3, "m/s^2 per unit command", false},
@@ -78,10 +71,10 @@ struct Bebop2 {
   }
   static void setFileValue(Params<double>& p, const Bebop2Key& key, double value) {
     switch (key.field) {
-      case Bebop2Key::kSampleTime: p.Ts = value; break;
-      case Bebop2Key::kInputGain: p.Ku[key.axis] = value; break;
-      case Bebop2Key::kDamping: p.Kv[key.axis] = value; break;
-      case Bebop2Key::kRotatedDrag: p.rotated_drag = value != 0.0 ? 1.0 : 0.0; break;
+      case Bebop2Field::kSampleTime: p.Ts = value; break;
+      case Bebop2Field::kInputGain: p.Ku[key.index] = value; break;
+      case Bebop2Field::kDamping: p.Kv[key.index] = value; break;
+      case Bebop2Field::kRotatedDrag: p.rotated_drag = value != 0.0 ? 1.0 : 0.0; break;
     }
   }
   static void finishFile(Params<double>&) {}

@@ -8,13 +8,18 @@
 #include "aurora_common/refusal_text.h"
 #include "aurora_sim/vehicle/ardrone2.h"
 #include "aurora_sim/vehicle/bebop2.h"
+#include "aurora_sim/vehicle/pioneer3dx.h"
 
 namespace aurora_sim {
 
 // The names a vehicle file's `type:` accepts, comma separated.
-inline std::string knownVehicleTypes() { return std::string(Ardrone2::name()) + ", " + Bebop2::name(); }
+inline std::string knownVehicleTypes() {
+  return std::string(Ardrone2::name()) + ", " + Bebop2::name() + ", " + Pioneer3dx::name();
+}
 
-inline bool isKnownVehicleType(const std::string& type) { return type == Ardrone2::name() || type == Bebop2::name(); }
+inline bool isKnownVehicleType(const std::string& type) {
+  return type == Ardrone2::name() || type == Bebop2::name() || type == Pioneer3dx::name();
+}
 
 // Empty when a vehicle file of type `type` is one `flown_by` (which flies a
 // `Vehicle`) can fly; else why not: a missing or unknown type, or another

@@ -1,0 +1,136 @@
+// The Pioneer P3-DX (docs/pioneer3dx.md): its model and laws against the
+// values the spec computed with AuRoRA's own code, its vehicle file, and the
+// spec's lemniscate flown with the dynamic controller on the dynamic model.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "aurora_control/law/pioneer_laws.h"
+#include "aurora_sim/vehicle_yaml.h"
+
+namespace {
+
+using aurora_control::PioneerDynamic;
+using aurora_control::PioneerKinematic;
+using aurora_control::Reference;
+using aurora_sim::Pioneer3dx;
+
+// The spec's start: a new robot put at the origin, heading 0 (its control
+// point at (a, 0)), at rest.
+Pioneer3dx::State<double> start(const Pioneer3dx::Params<double>& p) {
+  Pioneer3dx::State<double> s;
+  s.reset();
+  aurora_sim::pioneerSetPose(p, s, 0.0, 0.0, 0.0, 0.0);
+  return s;
+}
+
+// The lemniscate of AuRoRA's TestPioneer3D: x = sin(wt), y = sin(2wt), w = 0.1.
+Reference<double> lemniscate(double t) {
+  const double w = 0.1;
+  Reference<double> r{};
+  r.pos[0] = std::sin(w * t), r.pos[1] = std::sin(2 * w * t);
+  r.vel[0] = w * std::cos(w * t), r.vel[1] = 2 * w * std::cos(2 * w * t);
+  return r;
+}
+
+void expectRel(double got, double want, double rel, const char* what) {
+  EXPECT_NEAR(got, want, rel * (1.0 + std::fabs(want))) << what;
+}
+
+}  // namespace
+
+// The spec's first step (corrected model, default gains): the dynamic
+// controller at t = 0, then one dynamic model step.
+TEST(Pioneer3dx, FirstStepAsTheOriginal) {
+  const Pioneer3dx::Params<double> p = aurora_sim::referencePioneerParams();
+  Pioneer3dx::State<double> s = start(p);
+  EXPECT_EQ(s.X[aurora_sim::kX], 0.15);
+  PioneerDynamic::Memory<double> m;
+  m.reset();
+  double U[2], err[3];
+  PioneerDynamic::command(p, aurora_control::PioneerDynamicGains<double>::defaults(), m, lemniscate(0.0), s.X, U, err);
+  expectRel(U[0], 0.05843564625337886, 1e-13, "u_ref");
+  EXPECT_EQ(U[1], 1.0);  // omega_ref saturates
+  Pioneer3dx::step(p, s, U);
+  expectRel(s.X[aurora_sim::kPioneerU], 0.010947104955672323, 1e-13, "u");
+  expectRel(s.X[aurora_sim::kPioneerOmega], 0.46125461254612549, 1e-13, "omega");
+  expectRel(s.X[aurora_sim::kX], 0.15109471049556722, 1e-13, "x");
+  expectRel(s.X[aurora_sim::kY], 0.0069188191881918827, 1e-13, "y");
+  expectRel(s.X[aurora_sim::kYaw], 0.046125461254612553, 1e-13, "yaw");
+  // The published omega gain (theta2 instead of 1/theta2): omega = 0.02168.
+  Pioneer3dx::Params<double> bug = p;
+  bug.omega_gain_bug = 1.0;
+  Pioneer3dx::State<double> b = start(bug);
+  Pioneer3dx::step(bug, b, U);
+  expectRel(b.X[aurora_sim::kPioneerOmega], 0.02168, 1e-13, "omega with the published gain");
+}
+
+// The kinematic law's reference velocity (Ur before saturation, spec:
+// (0.058200445512964952, 1) after it) and its own limits.
+TEST(Pioneer3dx, TheKinematicLawSaturatesAsTheOriginal) {
+  const Pioneer3dx::Params<double> p = aurora_sim::referencePioneerParams();
+  Pioneer3dx::State<double> s = start(p);
+  PioneerKinematic::Memory<double> m;
+  double U[2], err[3];
+  PioneerKinematic::command(p, aurora_control::PioneerKinematicGains<double>::defaults(), m, lemniscate(0.0), s.X, U,
+                            err);
+  expectRel(U[0], 0.058200445512964952, 1e-13, "u_r");
+  EXPECT_EQ(U[1], 1.0);
+  EXPECT_EQ(err[2], 0.0);  // a ground robot's error is planar
+}
+
+// The kinematic model: the velocities are the commands; the pose moves by
+// them at the heading before the step.
+TEST(Pioneer3dx, TheKinematicModelTakesTheCommandAsItsVelocity) {
+  Pioneer3dx::Params<double> p = aurora_sim::referencePioneerParams();
+  p.kinematic = 1.0;
+  Pioneer3dx::State<double> s = start(p);
+  const double U[2] = {0.3, 0.5};
+  Pioneer3dx::step(p, s, U);
+  EXPECT_EQ(s.X[aurora_sim::kPioneerU], 0.3);
+  EXPECT_EQ(s.X[aurora_sim::kPioneerOmega], 0.5);
+  EXPECT_DOUBLE_EQ(s.X[aurora_sim::kX], 0.15 + 0.3 * 0.1);
+  EXPECT_DOUBLE_EQ(s.X[aurora_sim::kY], 0.15 * 0.5 * 0.1);
+  EXPECT_DOUBLE_EQ(s.X[aurora_sim::kYaw], 0.05);
+}
+
+// The spec's scenario: two laps of the lemniscate (k = 0 .. 1256, Ts 0.1 s),
+// the dynamic controller on the dynamic model: below 5 cm after 20 s.
+TEST(Pioneer3dx, TracksTheLemniscate) {
+  const Pioneer3dx::Params<double> p = aurora_sim::referencePioneerParams();
+  Pioneer3dx::State<double> s = start(p);
+  PioneerDynamic::Memory<double> m;
+  m.reset();
+  const auto g = aurora_control::PioneerDynamicGains<double>::defaults();
+  double worst = 0.0;
+  for (long k = 0; k <= 1256; ++k) {
+    const double t = double(k) * p.Ts;
+    const Reference<double> r = lemniscate(t);
+    if (t > 20.0) worst = std::max(worst, std::hypot(r.pos[0] - s.X[0], r.pos[1] - s.X[1]));
+    double U[2], err[3];
+    PioneerDynamic::command(p, g, m, r, s.X, U, err);
+    Pioneer3dx::step(p, s, U);
+  }
+  EXPECT_LT(worst, 0.05);
+}
+
+TEST(Pioneer3dx, TheVehicleFileIsTheReference) {
+  const std::string path = std::string(AURORA_CONFIG_DIR) + "/vehicles/pioneer3dx.yaml";
+  const Pioneer3dx::Params<double> file = aurora_sim::loadVehicleFile<Pioneer3dx>(path);
+  const Pioneer3dx::Params<double> ref = aurora_sim::referencePioneerParams();
+  EXPECT_EQ(file.Ts, ref.Ts);
+  EXPECT_EQ(file.a, ref.a);
+  for (int i = 0; i < 6; ++i) EXPECT_EQ(file.theta[i], ref.theta[i]) << i;
+  EXPECT_EQ(file.kinematic, 0.0);
+  EXPECT_EQ(file.omega_gain_bug, 0.0);
+  try {
+    aurora_sim::loadVehicleFile<aurora_sim::Bebop2>(path, "the controller 'bebop2_compensator'");
+    ADD_FAILURE() << "a Bebop loop loaded a Pioneer file";
+  } catch (const aurora_common::ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("is of type 'pioneer3dx', but the controller 'bebop2_compensator' flies "
+                                         "type 'bebop2'"),
+              std::string::npos)
+        << e.what();
+  }
+}
