@@ -30,6 +30,7 @@ struct Options {
   std::vector<long> delays;  // one (a flight), or one per drone (a formation)
   long delay = 0;            // a flight's
   double rate = 0.0;         // [Hz] the compensator's, instead of its file's (0: the file's)
+  std::string flown;         // the vehicle the controller's law flies (controllerVehicle; a flight's)
   bool no_clamp = false;
 };
 
@@ -99,17 +100,18 @@ void resolve(const po::variables_map& vm, const std::string& config, Options& o)
   o.vehicle = shippedOrPath(o.vehicle, config, "vehicles");
   o.link = shippedOrPath(o.link, config, "links");
   o.formation = shippedOrPath(o.formation, config, "formations");
+  if (o.formation.empty()) o.flown = controllerVehicle(o.controller);
   if (vm.count("rate")) {
     if (!o.formation.empty()) throw ConfigError("--rate is refused with --formation: its robots run at the vehicle's rate");
     if (!(o.rate > 0.0)) {
       throw ConfigError("--rate " + YamlReader::fmt(o.rate) + " is refused: accepted a rate above 0 Hz that divides "
                         "the vehicle's (30 Hz: 30, 15, 10, 7.5, 6, 5, ...)");
     }
-    refuseRateFor(o.controller, o.rate, "--rate");
+    refuseRateFor(o.flown, o.rate, "--rate");
   }
   if (!o.formation.empty()) refuseFlightOnlyOptions(vm);
   if (o.vehicle.empty()) {
-    o.vehicle = config + "/vehicles/" + (o.formation.empty() ? controllerVehicle(o.controller) : LawVehicle::name()) + ".yaml";
+    o.vehicle = config + "/vehicles/" + (o.formation.empty() ? o.flown : LawVehicle::name()) + ".yaml";
   }
   o.delay = o.delays.empty() ? kDelayNotGiven : o.delays[0];
 }
@@ -183,7 +185,7 @@ void flyAndReport(const Options& o, const std::string& law, const Task<double>& 
 // Flies the options' task once with the controller file's law on its vehicle.
 void run(const Options& o) {
   const FlightFiles files{o.controller, o.task, o.vehicle, o.link, o.delay, o.no_clamp};
-  if (controllerVehicle(o.controller) == aurora_sim::Bebop2::name()) {
+  if (o.flown == aurora_sim::Bebop2::name()) {
     const CompensatorFlight f = loadCompensatorFlight(files, o.rate);
     const std::string law = std::string(Bebop2Compensator::name()) + " at " + YamlReader::fmt(f.rate) + " Hz";
     return flyAndReport(o, law, f.cfg.task, f.cfg.link, f.run.plant.Ts, [&](auto&& observe) {

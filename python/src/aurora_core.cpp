@@ -65,8 +65,9 @@ py::dict flightArrays(long steps, double Ts, long delay, const std::string& law,
 py::dict simulateFiles(const std::string& controller, const std::string& task, const std::string& vehicle, long delay,
                        const std::string& link, bool clamp, double rate) {
   const FlightFiles files{controller, task, vehicle, link, delay, !clamp};
-  refuseRateFor(controller, rate, "rate=" + YamlReader::fmt(rate));
-  if (controllerVehicle(controller) == aurora_sim::Bebop2::name()) {
+  const std::string flown = controllerVehicle(controller);
+  refuseRateFor(flown, rate, "rate=" + YamlReader::fmt(rate));
+  if (flown == aurora_sim::Bebop2::name()) {
     const CompensatorFlight f = loadCompensatorFlight(files, rate, "rate=");
     return flightArrays(f.steps, f.run.plant.Ts, f.run.delay, Bebop2Compensator::name(), [&](auto&& observe) {
       return flyLaw<Bebop2Compensator>(f.run, f.cfg, f.steps, observe);

@@ -51,12 +51,18 @@ AURORA_HD inline T wrapErrorAsReference(const T& e) {
   return select(once < -pi, once + two_pi, once);
 }
 
-// Clamps a command to [-1, 1], as the AR.Drone and Bebop drivers do. NaN is
+// Clamps u to [-limit, limit] (|u| > limit becomes limit sign(u)). NaN is
 // not a number a driver could send; callers reject it before clamping.
 template <typename T>
+AURORA_HD inline T clampSymmetric(const T& u, const T& limit) {
+  T c = select(u > limit, limit, u);
+  return select(c < -limit, -limit, c);
+}
+
+// Clamps a command to [-1, 1], as the AR.Drone and Bebop drivers do.
+template <typename T>
 AURORA_HD inline T clampUnit(const T& u) {
-  T c = select(u > T(1), T(1), u);
-  return select(c < T(-1), T(-1), c);
+  return clampSymmetric(u, T(1));
 }
 
 }  // namespace aurora_common

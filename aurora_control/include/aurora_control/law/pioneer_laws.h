@@ -15,15 +15,6 @@
 
 namespace aurora_control {
 
-// |v| > limit becomes limit sign(v), as the original saturates.
-template <typename T>
-AURORA_HD inline T saturate(const T& v, double limit) {
-  using aurora_common::select;
-  const T l = T(limit);
-  const T high = select(v > l, l, v);
-  return select(high < -l, -l, high);
-}
-
 // The kinematic law's reference velocity Ur = K^-1 (dXd + K1 tanh(K2 Xtil))
 // on x, y (eq. P4), K^-1 in closed form at heading psi, each saturated.
 template <typename T>
@@ -39,8 +30,8 @@ AURORA_HD inline void pioneerReferenceVelocity(const T& a, const T k1[2], const 
   pos_err[2] = T(0);  // a ground robot: its error is in the floor plane
   T s, c;
   aurora_common::sinCos(X[aurora_sim::kYaw], s, c);
-  Ur[0] = saturate(c * v[0] + s * v[1], u_limit);
-  Ur[1] = saturate((-s * v[0] + c * v[1]) / a, omega_limit);
+  Ur[0] = aurora_common::clampSymmetric(c * v[0] + s * v[1], T(u_limit));  // as the original saturates
+  Ur[1] = aurora_common::clampSymmetric((-s * v[0] + c * v[1]) / a, T(omega_limit));
 }
 
 template <typename T>
@@ -126,8 +117,8 @@ struct PioneerDynamic : LawOf<PioneerDynamic, aurora_sim::Pioneer3dx, PioneerDyn
       const T dU = (meas[i] - m.Ua[i]) / model.Ts;
       nu[i] = T(0.1) * tanh(T(0.1) * dU) + g.kd1[i] * tanh(g.kd2[i] * (Ur[i] - meas[i]));
     }
-    U[aurora_sim::kPioneerURef] = saturate(th[0] * nu[0] + (th[3] * Ur[0] + -th[2] * w * Ur[1]), 1.0);
-    U[aurora_sim::kPioneerOmegaRef] = saturate(th[1] * nu[1] + (th[4] * w * Ur[0] + th[5] * Ur[1]), 1.0);
+    U[aurora_sim::kPioneerURef] = aurora_common::clampUnit(th[0] * nu[0] + (th[3] * Ur[0] + -th[2] * w * Ur[1]));
+    U[aurora_sim::kPioneerOmegaRef] = aurora_common::clampUnit(th[1] * nu[1] + (th[4] * w * Ur[0] + th[5] * Ur[1]));
     m.Ua[0] = u, m.Ua[1] = w;
   }
 };

@@ -75,10 +75,10 @@ inline std::string controllerVehicle(const std::string& controller_file) {
                                                                            : LawVehicle::name();
 }
 
-// A rate given (`given`, e.g. "--rate", non-zero `rate`) for a controller
-// whose law has none of its own is refused.
-inline void refuseRateFor(const std::string& controller_file, double rate, const std::string& given) {
-  if (rate != 0.0 && controllerVehicle(controller_file) != aurora_sim::Bebop2::name()) {
+// A rate given (`given`, e.g. "--rate", non-zero `rate`) for a law that has
+// none of its own (one flying `vehicle`, controllerVehicle's) is refused.
+inline void refuseRateFor(const std::string& vehicle, double rate, const std::string& given) {
+  if (rate != 0.0 && vehicle != aurora_sim::Bebop2::name()) {
     throw ConfigError(given + " is refused here: it sets the Bebop 2 compensator's rate (controller "
                       "bebop2_compensator); the AR.Drone's laws and a formation run at the vehicle's rate");
   }
