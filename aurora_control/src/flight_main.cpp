@@ -1,8 +1,8 @@
 // flight: one whole flight offline (no roscore) with any controller and
 // task, on the same core as the controller node (flight_runner.h): the
 // lockstep ROS loop flies exactly this trajectory. The controller file's
-// law chooses the vehicle: the AR.Drone's laws, or the Bebop 2's
-// compensator (docs/bebop2.md). Prints the tracking error
+// law chooses the vehicle: the AR.Drone's laws, the Bebop 2's compensator
+// (docs/bebop2.md) or the Pioneer P3-DX's laws (docs/pioneer3dx.md). Prints the tracking error
 // per lap (per waypoint segment for missions), the controller's metrics and
 // the cost of the law per step; --csv writes the trajectory. --formation
 // flies a formation file instead (formation_flight.h).
@@ -64,15 +64,15 @@ bool parse(int argc, char** argv, Options& o) {
   const std::string config = o.config = aurora_common::configDir();  // throws: says what to source
   po::options_description d("usage: flight [options]\n\nFlies one task offline with the controller node's core and prints its tracking error.\n\noptions");
   d.add_options()("help,h", "this text")
-      ("controller", po::value(&o.controller)->default_value(config + "/controllers/pd_saturated.yaml"), "controller YAML (law and gains), or a shipped NAME (config/controllers/NAME.yaml: pd_saturated, underactuated, bebop2_compensator); its law chooses the vehicle")
+      ("controller", po::value(&o.controller)->default_value(config + "/controllers/pd_saturated.yaml"), "controller YAML (law and gains), or a shipped NAME (config/controllers/NAME.yaml: pd_saturated, underactuated, bebop2_compensator, pioneer_dynamic, pioneer_kinematic); its law chooses the vehicle")
       ("task", po::value(&o.task)->default_value(config + "/tasks/mission4.yaml"), "task YAML (waypoints, circle, lemniscate), or a shipped NAME (config/tasks/NAME.yaml)")
       ("rate", po::value(&o.rate), "the Bebop 2 compensator's rate [Hz] instead of its file's: the vehicle's 30 Hz divided by whole steps (30, 15, 10, 7.5, 6, 5, ...)")
-      ("vehicle", po::value(&o.vehicle), "vehicle YAML or a shipped NAME (default: the controller's vehicle, config/vehicles/NAME.yaml: ardrone2, or bebop2 for bebop2_compensator)")
+      ("vehicle", po::value(&o.vehicle), "vehicle YAML or a shipped NAME (default: the controller's vehicle, config/vehicles/NAME.yaml: ardrone2, bebop2 for bebop2_compensator, pioneer3dx for the pioneer_ laws)")
       ("delay", po::value(&o.delays)->multitoken()->composing(), "feedback delay [samples of Ts], 0 to 2047 (limits.h); with --formation one per drone (default: the file's)")
-      ("no-clamp", po::bool_switch(&o.no_clamp), "do not clamp the law's commands (the sim still does, as the drivers)")
+      ("no-clamp", po::bool_switch(&o.no_clamp), "do not clamp the law's commands (an AR.Drone's sim still does, as its driver; a Bebop is clamped nowhere; refused for the Pioneer, whose laws saturate)")
       ("formation", po::value(&o.formation), "formation YAML or a shipped NAME (config/formations/*.yaml, docs/formation.md): fly its drones and formation layer instead of --controller and --task")
       ("link", po::value(&o.link), "link YAML or a shipped NAME (config/links/*.yaml, docs/links.md): jitter, losses, a command-path delay; its uplink delay unless --delay is given")
-      ("csv", po::value(&o.csv), "write one row per step k = 0..N at round-trip precision: step, t, the 12-state after k model steps, the 4 commands the drone applied at step k (model order), the reference of step k and the tracking error (with --formation: each drone's state and commands, Q and Qd; docs/formation.md)");
+      ("csv", po::value(&o.csv), "write one row per step k = 0..N at round-trip precision: step, t, the vehicle's state after k model steps (x, y, z, phi, theta, psi, dx, dy, dz, dphi, dtheta, dpsi; the Pioneer also u, omega), its commands u1..uN applied at step k (model order), the reference of step k and the tracking error (with --formation: each drone's state and commands, Q and Qd; docs/formation.md)");
   po::variables_map vm;
   po::store(po::command_line_parser(joinOptionValues(argc, argv, d)).options(d).run(), vm);
   if (vm.count("help")) {
@@ -140,15 +140,20 @@ class SegmentErrors {
   std::vector<long> n_;
 };
 
-// One row per step k: the state after k model steps, the command the drone
-// applied at step k, the reference of step k and its tracking error; %.17g
-// reads back to the same double.
-const char* kCsvHeader =
-    "step,t,x,y,z,phi,theta,psi,dx,dy,dz,dphi,dtheta,dpsi,u1,u2,u3,u4,xd,yd,zd,error\n";
+// One row per step k: the state after k model steps (the vehicle's state
+// names), the command the vehicle applied at step k (u1 .. uN, model
+// order), the reference of step k and its tracking error; %.17g reads back
+// to the same double.
+template <class Vehicle>
+std::string csvHeader() {
+  std::string h = "step,t";
+  for (int i = 0; i < Vehicle::kStates; ++i) h += std::string(",") + Vehicle::stateName(i);
+  for (int i = 0; i < Vehicle::kInputs; ++i) h += ",u" + std::to_string(i + 1);
+  return h + ",xd,yd,zd,error\n";
+}
 
 template <class Vehicle>
 void writeCsvRow(FILE* csv, const LoopObservation<Vehicle, double>& o, double t, double error) {
-  static_assert(Vehicle::kStates == aurora_sim::kStateSize && Vehicle::kInputs == 4, "the header's columns");
   std::fprintf(csv, "%ld,%.17g", o.k, t);
   for (int i = 0; i < Vehicle::kStates; ++i) std::fprintf(csv, ",%.17g", o.X_before[i]);
   for (int i = 0; i < Vehicle::kInputs; ++i) std::fprintf(csv, ",%.17g", o.step.U[i]);
@@ -156,17 +161,20 @@ void writeCsvRow(FILE* csv, const LoopObservation<Vehicle, double>& o, double t,
   std::fprintf(csv, ",%.17g\n", error);
 }
 
-// Flies once (fly(observe) runs the flight) and prints what it measured:
-// `law` names the controller, the task, link and Ts are the flight's.
-template <class Fly>
-void flyAndReport(const Options& o, const std::string& law, const Task<double>& task, const LinkParams& link,
-                  double Ts, Fly&& fly) {
+// Flies `f` once and prints what it measured.
+template <class Flight>
+void flyAndReport(const Options& o, const Flight& f) {
+  using Law = typename Flight::Law;
+  const Task<double>& task = f.cfg.task;
+  const LinkParams& link = f.cfg.link;
+  const double Ts = f.run.plant.Ts;
+  const std::string law = f.law + (f.rate != 0.0 ? " at " + YamlReader::fmt(f.rate) + " Hz" : "");
   FILE* csv = o.csv.empty() ? nullptr : std::fopen(o.csv.c_str(), "w");
   if (!o.csv.empty() && !csv) throw std::runtime_error("cannot write '" + o.csv + "'");
-  if (csv) std::fprintf(csv, "%s", kCsvHeader);
+  if (csv) std::fprintf(csv, "%s", csvHeader<typename Law::Vehicle>().c_str());
   SegmentErrors segments(task);
   const auto t0 = std::chrono::steady_clock::now();
-  const FlightResult r = fly([&](const auto& ob, double e) {
+  const FlightResult r = flyLaw<Law>(f.run, f.cfg, f.steps, [&](const auto& ob, double e) {
     segments.add(ob.k, Ts, e);
     if (csv) writeCsvRow(csv, ob, taskTime(ob.k, Ts), e);
   });
@@ -185,17 +193,7 @@ void flyAndReport(const Options& o, const std::string& law, const Task<double>& 
 // Flies the options' task once with the controller file's law on its vehicle.
 void run(const Options& o) {
   const FlightFiles files{o.controller, o.task, o.vehicle, o.link, o.delay, o.no_clamp};
-  if (o.flown == aurora_sim::Bebop2::name()) {
-    const CompensatorFlight f = loadCompensatorFlight(files, o.rate);
-    const std::string law = std::string(Bebop2Compensator::name()) + " at " + YamlReader::fmt(f.rate) + " Hz";
-    return flyAndReport(o, law, f.cfg.task, f.cfg.link, f.run.plant.Ts, [&](auto&& observe) {
-      return flyLaw<Bebop2Compensator>(f.run, f.cfg, f.steps, observe);
-    });
-  }
-  const FlightSetup f = loadFlight(files);
-  flyAndReport(o, lawName(f.settings.law), f.task, f.settings.link, f.vehicle.Ts, [&](auto&& observe) {
-    return runFlight(f.vehicle, f.settings, f.task, f.steps, observe);
-  });
+  withFlight(files, o.flown, o.rate, "--rate ", "--no-clamp", [&](const auto& f) { flyAndReport(o, f); });
 }
 
 }  // namespace

@@ -6,7 +6,10 @@
 #include <cmath>
 #include <string>
 
+#include <fstream>
+
 #include "aurora_control/law/pioneer_laws.h"
+#include "aurora_control/loop/flight_setup.h"
 #include "aurora_sim/vehicle_yaml.h"
 
 namespace {
@@ -17,11 +20,10 @@ using aurora_control::Reference;
 using aurora_sim::Pioneer3dx;
 
 // The spec's start: a new robot put at the origin, heading 0 (its control
-// point at (a, 0)), at rest.
+// point at (a, 0)), at rest: the vehicle's start, as every loop's.
 Pioneer3dx::State<double> start(const Pioneer3dx::Params<double>& p) {
   Pioneer3dx::State<double> s;
-  s.reset();
-  aurora_sim::pioneerSetPose(p, s, 0.0, 0.0, 0.0, 0.0);
+  Pioneer3dx::start(p, s);
   return s;
 }
 
@@ -133,4 +135,67 @@ TEST(Pioneer3dx, TheVehicleFileIsTheReference) {
               std::string::npos)
         << e.what();
   }
+}
+
+// The shipped controller files are AuRoRA's default gains; the standard
+// scenario flown from its files (as flight and aurora.simulate load it)
+// starts with the control point a ahead and gives the spec's first step.
+TEST(Pioneer3dx, TheShippedFilesFlyTheStandardScenario) {
+  const std::string c = AURORA_CONFIG_DIR;
+  const auto kin = aurora_control::readPioneerFile<PioneerKinematic>(c + "/controllers/pioneer_kinematic.yaml");
+  const auto kin_default = PioneerKinematic::Gains<double>::defaults();
+  const auto dyn = aurora_control::readPioneerFile<PioneerDynamic>(c + "/controllers/pioneer_dynamic.yaml");
+  const auto dyn_default = PioneerDynamic::Gains<double>::defaults();
+  for (int i = 0; i < 2; ++i) {
+    EXPECT_EQ(kin.k1[i], kin_default.k1[i]);
+    EXPECT_EQ(kin.k2[i], kin_default.k2[i]);
+    EXPECT_EQ(dyn.kc1[i], dyn_default.kc1[i]);
+    EXPECT_EQ(dyn.kc2[i], dyn_default.kc2[i]);
+    EXPECT_EQ(dyn.kd1[i], dyn_default.kd1[i]);
+    EXPECT_EQ(dyn.kd2[i], dyn_default.kd2[i]);
+  }
+  const aurora_control::FlightFiles files{c + "/controllers/pioneer_dynamic.yaml",
+                                          c + "/tasks/pioneer_lemniscate.yaml", c + "/vehicles/pioneer3dx.yaml", ""};
+  const auto f = aurora_control::loadPioneerFlight<PioneerDynamic>(files);
+  EXPECT_EQ(f.steps, 1258);  // k = 0..1257
+  std::vector<double> x, u;
+  aurora_control::flyLaw<PioneerDynamic>(f.run, f.cfg, 2, [&](const auto& o, double) {
+    x.push_back(o.X_before[aurora_sim::kX]);
+    u.push_back(o.step.U[aurora_sim::kPioneerURef]);
+  });
+  ASSERT_EQ(x.size(), 2u);
+  EXPECT_EQ(x[0], 0.15);
+  expectRel(u[0], 0.05843564625337886, 1e-13, "u_ref at step 0");
+  expectRel(x[1], 0.15109471049556722, 1e-13, "x after one step");
+}
+
+namespace {
+
+// The ConfigError a Pioneer dynamic controller file of `text` is refused with.
+std::string refusalOf(const std::string& text) {
+  const std::string path = testing::TempDir() + "/pioneer_controller.yaml";
+  std::ofstream(path) << text;
+  try {
+    aurora_control::readPioneerFile<PioneerDynamic>(path);
+  } catch (const aurora_common::ConfigError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST(Pioneer3dx, ABadControllerFileIsRefusedNamingTheKey) {
+  const std::string good = "controller: {name: pioneer_dynamic, kc1: [0.35, 0.35], kc2: [0.8, 0.8], "
+                           "kd1: [0.75, 0.75], kd2: [0.12, 0.035]}";
+  EXPECT_EQ(refusalOf(good), "");
+  std::string e = refusalOf("controller: {name: pioneer_dynamic, kc1: [0.35, 0.35], kc2: [0.8, 0.8], "
+                            "kd1: [0.75, 0.75], kd2: [0.12, -1]}");
+  EXPECT_NE(e.find("'controller.kd2' must be a list of 2 numbers in [0, 10] (u, omega)"), std::string::npos) << e;
+  e = refusalOf("controller: {name: pioneer_dynamic, kc1: [0.35], kc2: [0.8, 0.8], kd1: [0.75, 0.75], "
+                "kd2: [0.12, 0.035]}");
+  EXPECT_NE(e.find("controller.kc1"), std::string::npos) << e;
+  e = refusalOf("controller: {name: pioneer_dynamic, k1: [0.35, 0.35], kc2: [0.8, 0.8], kd1: [0.75, 0.75], "
+                "kd2: [0.12, 0.035]}");
+  EXPECT_NE(e.find("'controller.k1' is not a known key: accepted name, kc1, kc2, kd1, kd2"), std::string::npos) << e;
 }

@@ -34,6 +34,11 @@ TEST(TaskYaml, ShippedTaskFilesLoad) {
     const Task<double> t = readTask(r, YAML::LoadFile(path)["task"], "task");
     EXPECT_GT(t.duration(), 0.0) << name;
   }
+  // A ground robot's task lies on the floor; a drone's may not.
+  const std::string path = std::string(AURORA_CONFIG_DIR) + "/tasks/pioneer_lemniscate.yaml";
+  const YAML::Node floor = YAML::LoadFile(path)["task"];
+  EXPECT_EQ(readTask(YamlReader(), floor, "task", TaskHeights::onFloor()).trajectory.centre[2], 0.0);
+  EXPECT_THROW(readTask(YamlReader(), floor, "task"), ConfigError);
 }
 
 TEST(TaskYaml, WaypointsAndTrajectories) {

@@ -80,9 +80,9 @@ class BatchWorker {
     // The initial state every lane starts from, towards the task's first
     // reference; every lane of sim_ starts there (startLane then sets a lane's run).
     const aurora_control::Reference<T> start = setup_.config.task.at(T(0));
-    fresh_.reset(start.pos);
+    fresh_.reset(setup_.model, start.pos);
     const B start_pos[3] = {B(start.pos[0]), B(start.pos[1]), B(start.pos[2])};
-    sim_.reset(start_pos);
+    sim_.reset(loop_.model, start_pos);
   }
 
   void run() {

@@ -36,7 +36,16 @@ struct PointMass {
   template <typename T>
   using State = point_mass::State<T>;
   static constexpr int kStates = 6, kInputs = 3, kPosition = 0, kFactors = 1;
+  static constexpr bool kOnGround = false;
   static const char* name() { return "point_mass"; }
+  static const char* stateName(int i) {
+    static const char* const names[kStates] = {"x", "y", "z", "dx", "dy", "dz"};
+    return names[i];
+  }
+  template <typename T>
+  AURORA_HD static void start(const Params<T>&, State<T>& s) {
+    s.reset();
+  }
 
   // Semi-implicit Euler: v += F / m Ts, then x += v Ts.
   template <typename T>

@@ -18,16 +18,21 @@ using namespace aurora_control;
 
 namespace {
 
-// Rows k = 0..n-1 of a flight of n steps (fly(observe) runs it), as
-// flight --csv writes them: t, the state after k model steps, the command
-// the drone applied at step k, the reference of step k and its tracking
-// error; and the delay in force (samples between state k and the one the
-// law received). The arrays are filled in place (no copy).
-template <class Fly>
-py::dict flightArrays(long steps, double Ts, long delay, const std::string& law, Fly&& fly) {
-  const py::ssize_t n = steps;
-  py::array_t<double> t(n), states({n, py::ssize_t(12)}), commands({n, py::ssize_t(4)}), reference({n, py::ssize_t(3)}),
-      error(n);
+// Rows k = 0..n-1 of flight `f` (n steps), as flight --csv writes them: t,
+// the state after k model steps (the vehicle's kStates, named in
+// state_names), the command the vehicle applied at step k (kInputs), the
+// reference of step k and its tracking error; and the delay in force
+// (samples between state k and the one the law received). The arrays are
+// filled in place (no copy).
+template <class Flight>
+py::dict flightArrays(const Flight& f) {
+  using Law = typename Flight::Law;
+  using Vehicle = typename Law::Vehicle;
+  constexpr int kStates = Vehicle::kStates, kInputs = Vehicle::kInputs;
+  const double Ts = f.run.plant.Ts;
+  const py::ssize_t n = f.steps;
+  py::array_t<double> t(n), states({n, py::ssize_t(kStates)}), commands({n, py::ssize_t(kInputs)}),
+      reference({n, py::ssize_t(3)}), error(n);
   py::array_t<long> delay_in_force(n);
   double *pt = t.mutable_data(), *px = states.mutable_data(), *pu = commands.mutable_data(),
          *pr = reference.mutable_data(), *pe = error.mutable_data();
@@ -35,11 +40,11 @@ py::dict flightArrays(long steps, double Ts, long delay, const std::string& law,
   FlightResult r;
   {
     py::gil_scoped_release unlocked;  // the flight touches no Python object
-    r = fly([&](const auto& o, double e) {
+    r = flyLaw<Law>(f.run, f.cfg, f.steps, [&](const LoopObservation<Vehicle, double>& o, double e) {
       const long k = o.k;
       pt[k] = taskTime(k, Ts);
-      for (int i = 0; i < 12; ++i) px[12 * k + i] = o.X_before[i];
-      for (int i = 0; i < 4; ++i) pu[4 * k + i] = o.step.U[i];
+      for (int i = 0; i < kStates; ++i) px[kStates * k + i] = o.X_before[i];
+      for (int i = 0; i < kInputs; ++i) pu[kInputs * k + i] = o.step.U[i];
       for (int i = 0; i < 3; ++i) pr[3 * k + i] = o.step.ref.pos[i];
       pe[k] = e;
       pd[k] = k - o.received;
@@ -49,13 +54,17 @@ py::dict flightArrays(long steps, double Ts, long delay, const std::string& law,
   metrics["steps"] = r.steps;
   metrics["iae"] = r.iae, metrics["itae"] = r.itae, metrics["iasc"] = r.iasc;
   metrics["rms_tracking_error"] = r.rms_tracking_error, metrics["max_tracking_error"] = r.max_tracking_error;
-  metrics["delay"] = delay;
+  metrics["delay"] = f.run.delay;
+  py::list names;
+  for (int i = 0; i < kStates; ++i) names.append(Vehicle::stateName(i));
   py::dict out;
   out["t"] = t, out["states"] = states, out["commands"] = commands, out["reference"] = reference, out["error"] = error;
   out["delay_in_force"] = delay_in_force;
   out["metrics"] = metrics;
   out["sample_time"] = Ts;
-  out["law"] = law;
+  out["law"] = f.law;
+  out["vehicle"] = Vehicle::name();
+  out["state_names"] = names;
   return out;
 }
 
@@ -67,16 +76,9 @@ py::dict simulateFiles(const std::string& controller, const std::string& task, c
   const FlightFiles files{controller, task, vehicle, link, delay, !clamp};
   const std::string flown = controllerVehicle(controller);
   refuseRateFor(flown, rate, "rate=" + YamlReader::fmt(rate));
-  if (flown == aurora_sim::Bebop2::name()) {
-    const CompensatorFlight f = loadCompensatorFlight(files, rate, "rate=");
-    return flightArrays(f.steps, f.run.plant.Ts, f.run.delay, Bebop2Compensator::name(), [&](auto&& observe) {
-      return flyLaw<Bebop2Compensator>(f.run, f.cfg, f.steps, observe);
-    });
-  }
-  const FlightSetup f = loadFlight(files);
-  return flightArrays(f.steps, f.vehicle.Ts, f.settings.delay, lawName(f.settings.law), [&](auto&& observe) {
-    return runFlight(f.vehicle, f.settings, f.task, f.steps, observe);
-  });
+  py::dict out;
+  withFlight(files, flown, rate, "rate=", "clamp=False", [&](const auto& f) { out = flightArrays(f); });
+  return out;
 }
 
 // The vehicle a controller file's law flies (its name).

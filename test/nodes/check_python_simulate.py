@@ -36,11 +36,13 @@ STATE = ("x", "y", "z", "phi", "theta", "psi", "dx", "dy", "dz", "dphi", "dtheta
 
 
 class SimulateTest(unittest.TestCase):
-    def assertSameFlight(self, f, rows):
-        self.assertEqual(f.states.shape, (len(rows), 12))
-        want = np.array([[float(r[c]) for c in STATE] for r in rows])
+    def assertSameFlight(self, f, rows, states=STATE, inputs=4):
+        self.assertEqual(f.states.shape, (len(rows), len(states)))
+        self.assertEqual(tuple(f.state_names), states)
+        want = np.array([[float(r[c]) for c in states] for r in rows])
         self.assertTrue(np.array_equal(f.states, want), "states differ from flight --csv")
-        self.assertTrue(np.array_equal(f.commands, np.array([[float(r["u%d" % i]) for i in range(1, 5)] for r in rows])))
+        commands = [[float(r["u%d" % i]) for i in range(1, inputs + 1)] for r in rows]
+        self.assertTrue(np.array_equal(f.commands, np.array(commands)))
         self.assertTrue(np.array_equal(f.reference, np.array([[float(r[c]) for c in ("xd", "yd", "zd")] for r in rows])))
         self.assertTrue(np.array_equal(f.t, np.array([float(r["t"]) for r in rows])))
         self.assertTrue(np.array_equal(f.error, np.array([float(r["error"]) for r in rows])))
@@ -77,6 +79,23 @@ class SimulateTest(unittest.TestCase):
             (lambda: aurora.simulate("bebop2_compensator", "mission4", rate=0), "rate: expected a number above 0"),
             (lambda: aurora.simulate("bebop2_compensator", "mission4", vehicle="ardrone2"),
              "but the controller 'bebop2_compensator' flies type 'bebop2'"),
+        ])
+
+    def test_the_pioneer_equals_the_flight_tool(self):
+        """Issue 33: the Pioneer P3-DX's 14 states and 2 commands, the same bits as flight --csv."""
+        f = aurora.simulate("pioneer_dynamic", "pioneer_lemniscate", delay=4)
+        self.assertSameFlight(f, flight_csv("--controller", "pioneer_dynamic", "--task", "pioneer_lemniscate",
+                                            "--delay", "4"), STATE + ("u", "omega"), 2)
+        self.assertEqual((f.law, f.vehicle), ("pioneer_dynamic", "pioneer3dx"))
+        g = aurora.simulate({"controller": {"name": "pioneer_kinematic", "k1": [0.35, 0.35], "k2": [0.8, 0.8]}},
+                            "pioneer_lemniscate")
+        self.assertSameFlight(g, flight_csv("--controller", "pioneer_kinematic", "--task", "pioneer_lemniscate"),
+                              STATE + ("u", "omega"), 2)
+        expect_refusals(self, [
+            (lambda: aurora.simulate("pioneer_dynamic", "pioneer_lemniscate", clamp=False),
+             "clamp=False is refused for the Pioneer P3-DX"),
+            (lambda: aurora.simulate("pioneer_dynamic", "circle"), "'task.height' = 1.5 is outside the accepted range"),
+            (lambda: aurora.simulate("pioneer_dynamic", "pioneer_lemniscate", rate=10), "is refused here"),
         ])
 
     def test_a_dict_is_its_file(self):

@@ -232,6 +232,48 @@ class FormationAndLinkArgumentsTest(unittest.TestCase):
             lap2 = float(out.split("lap 2: RMS tracking error ")[1].split(" m")[0])
             self.assertLess(lap2, 0.01, out)
 
+    def test_the_pioneer_drives_the_specs_scenario(self):
+        """Issue 33: flight --controller pioneer_dynamic --task pioneer_lemniscate flies the Pioneer P3-DX
+        (its vehicle by default): the CSV names its 14 states and 2 commands; the first command and the
+        state after one step are the values of AuRoRA's code; it tracks within 5 cm after 20 s. A drone's
+        task, a take-off height, --no-clamp and --rate are refused naming why."""
+        with tempfile.TemporaryDirectory() as tmp:
+            csv = os.path.join(tmp, "pioneer.csv")
+            rc, out = flight("--controller", "pioneer_dynamic", "--task", "pioneer_lemniscate", "--csv", csv)
+            self.assertEqual(rc, 0, out)
+            self.assertIn("flight: pioneer_dynamic, lemniscate task of 125.7 s", out)
+            rows = [r.split(",") for r in open(csv).read().splitlines()]
+            self.assertEqual(rows[0], ["step", "t", "x", "y", "z", "phi", "theta", "psi", "dx", "dy", "dz", "dphi",
+                                       "dtheta", "dpsi", "u", "omega", "u1", "u2", "xd", "yd", "zd", "error"])
+            self.assertEqual(len(rows), 1 + 1258)  # k = 0..1257: AuRoRA's 0..1256 and one more
+            col = {name: i for i, name in enumerate(rows[0])}
+            first, second = rows[1], rows[2]
+            self.assertEqual(float(first[col["x"]]), 0.15)  # rSetPose([0 0 0 0]): the control point a ahead
+            self.assertAlmostEqual(float(first[col["u1"]]), 0.05843564625337886, places=14)
+            self.assertEqual(float(first[col["u2"]]), 1.0)  # omega_ref saturates
+            for name, value in (("x", 0.15109471049556722), ("y", 0.0069188191881918827),
+                                ("psi", 0.046125461254612553), ("u", 0.010947104955672323),
+                                ("omega", 0.46125461254612549)):
+                self.assertAlmostEqual(float(second[col[name]]), value, places=14, msg=name)
+            after20 = [float(r[col["error"]]) for r in rows[1:] if float(r[col["t"]]) > 20.0]
+            self.assertLess(max(after20), 0.05)
+        rc, out = flight("--controller", "pioneer_kinematic", "--task", "pioneer_lemniscate")
+        self.assertEqual(rc, 0, out)
+        self.assertIn("flight: pioneer_kinematic", out)
+        self.refused(["--controller", "pioneer_dynamic", "--task", "lemniscate"],
+                     "'task.height' = 1.5 is outside the accepted range [0, 0] m (a ground robot's task lies on the "
+                     "floor)")
+        self.refused(["--controller", "pioneer_dynamic", "--task", "mission4"],
+                     "'task.waypoints[0]' has z = 1.5 m: accepted heights [0, 0] m")
+        self.refused(["--controller", "pd_saturated", "--task", "pioneer_lemniscate"],
+                     "'task.height' = 0 is outside the accepted range [0.2, 100] m")
+        self.refused(["--controller", "pioneer_dynamic", "--task", "pioneer_lemniscate", "--no-clamp"],
+                     "--no-clamp is refused for the Pioneer P3-DX")
+        self.refused(["--controller", "pioneer_dynamic", "--task", "pioneer_lemniscate", "--rate", "5"],
+                     "--rate is refused here")
+        self.refused(["--controller", "pioneer_dynamic", "--task", "pioneer_lemniscate", "--vehicle", "bebop2"],
+                     "is of type 'bebop2', but the controller 'pioneer_dynamic' flies type 'pioneer3dx'")
+
     def test_two_sweeps_on_one_folder_and_an_interrupted_sweep(self):
         sweep = subprocess.run(["catkin_find", "--first-only", "--libexec", "aurora_sweep", "sweep"],
                                stdout=subprocess.PIPE).stdout.decode().strip()

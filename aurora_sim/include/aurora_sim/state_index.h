@@ -18,4 +18,12 @@ enum CommandIndex : int {
   kCommandSize = 4
 };
 
+// The 12-state's names in StateIndex order (a flight's CSV header, Python's
+// state_names): the spec's x, y, z, phi, theta, psi and their rates.
+inline const char* stateName12(int i) {
+  static const char* const names[kStateSize] = {"x",  "y",  "z",  "phi",  "theta",  "psi",
+                                                "dx", "dy", "dz", "dphi", "dtheta", "dpsi"};
+  return names[i];
+}
+
 }  // namespace aurora_sim

@@ -28,16 +28,20 @@ _FOLDERS = {"controller": "controllers", "task": "tasks", "vehicle": "vehicles",
 class Flight:
     """One flight: rows k = 0..n-1 (task time k Ts).
 
-    t [s] (n), states (n x 12: x, y, z [m], phi, theta, psi [rad], their
-    rates; the state after k model steps), commands (n x 4: the command the
-    drone applied at step k, model order, fraction of full scale), reference
-    (n x 3 [m]), error (n: tracking error [m]), delay_in_force (n: samples
-    between state k and the state the law received at step k: by the delay
-    rule 0 while k < delay, then delay; over a link its varying age), metrics (dict: steps,
-    iae, itae, iasc, rms_tracking_error, max_tracking_error, delay), law."""
+    t [s] (n), states (n x S: the state after k model steps, its columns
+    named by state_names: x, y, z [m], phi, theta, psi [rad] and their rates
+    for every vehicle, then u [m/s], omega [rad/s] for the Pioneer P3-DX),
+    commands (n x N: the command the vehicle applied at step k, model order:
+    fractions of full scale for the drones, u_ref [m/s], omega_ref [rad/s]
+    for the Pioneer), reference (n x 3 [m]), error (n: tracking error [m]),
+    delay_in_force (n: samples between state k and the state the law
+    received at step k: by the delay rule 0 while k < delay, then delay;
+    over a link its varying age), metrics (dict: steps, iae, itae, iasc,
+    rms_tracking_error, max_tracking_error, delay), law, vehicle."""
 
     def __init__(self, d):
-        for k in ("t", "states", "commands", "reference", "error", "delay_in_force", "metrics", "sample_time", "law"):
+        for k in ("t", "states", "commands", "reference", "error", "delay_in_force", "metrics", "sample_time", "law",
+                  "vehicle", "state_names"):
             setattr(self, k, d[k])
 
     def __repr__(self):
@@ -82,8 +86,10 @@ def simulate(controller, task, vehicle=None, delay=None, link=None, clamp=True, 
     samples. Over `link`, a given delay replaces the link's uplink delay and
     None keeps it (docs/links.md, "A delay beside a link"); without a link
     None is 0. The controller's law chooses the vehicle (None: its shipped
-    file, ardrone2 or, for bebop2_compensator, bebop2); `rate` [Hz] is the
-    Bebop 2 compensator's instead of its file's (docs/bebop2.md)."""
+    file: ardrone2, bebop2 for bebop2_compensator, pioneer3dx for
+    pioneer_dynamic and pioneer_kinematic); `rate` [Hz] is the Bebop 2
+    compensator's instead of its file's (docs/bebop2.md); clamp=False is
+    refused for the Pioneer (its laws saturate, docs/pioneer3dx.md)."""
     delay = _core.DELAY_NOT_GIVEN if delay is None else whole(delay, "delay")
     clamp = boolean(clamp, "clamp")
     rate = 0.0 if rate is None else positive(rate, "rate")

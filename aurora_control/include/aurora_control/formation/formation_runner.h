@@ -135,7 +135,7 @@ AURORA_HD inline void startFormation(const FormationRun<T, Shape, Data>& run, Dr
   for (int d = 0; d < Shape::kDrones; ++d) {
     params[d] = DroneParams<T, Data>{run.drone[d].plant, run.drone[d].model, run.drone[d].gains,
                                      FeasibilityCriteria<T>::study()};
-    state[d].reset(run.drone[d].start);
+    state[d].reset(params[d].plant, run.drone[d].start);
     for (int i = 0; i < 3; ++i) state[d].model.X[Vehicle::kPosition + i] = run.drone[d].start[i];
   }
   startLayer(run, layer);

@@ -5,7 +5,9 @@
 #pragma once
 
 #include <cmath>
+#include <initializer_list>
 #include <string>
+#include <vector>
 
 #include "aurora_control/law/bebop2_compensator.h"
 #include "aurora_control/params/yaml_reader.h"
@@ -30,6 +32,27 @@ inline std::string controllerFileName(const std::string& path) {
   return name && name.IsScalar() ? name.as<std::string>() : "";
 }
 
+// One gain list of a controller file: `controller.<key>`, one number per
+// axis of `axes` (e.g. "x, y, z, yaw"), each in [0, max].
+struct GainList {
+  const char* key;
+  double* into;
+};
+
+inline void readGainLists(const YamlReader& r, const YAML::Node& c, std::initializer_list<GainList> lists, size_t n,
+                          const std::string& axes, double max) {
+  const std::string text = "a list of " + std::to_string(n) + " numbers in [0, " + YamlReader::fmt(max) + "] (" +
+                           axes + ")";
+  for (const GainList& g : lists) {
+    const std::string key = r.key("controller", g.key);
+    const std::vector<double> v = r.numbers(r.require(c, "controller", g.key, text), key, n, text);
+    for (size_t i = 0; i < n; ++i) {
+      g.into[i] = v[i];
+      if (!(v[i] >= 0.0 && v[i] <= max)) r.fail(key, "must be " + text);
+    }
+  }
+}
+
 inline CompensatorFile readCompensatorFile(const std::string& path) {
   const YAML::Node root = loadYamlFile("controller file", path);
   const YamlReader r("controller file '" + path + "': ");
@@ -37,17 +60,8 @@ inline CompensatorFile readCompensatorFile(const std::string& path) {
   const YAML::Node c = root["controller"];
   r.onlyKeys(c, "controller", {"name", "ksp", "ksd", "kp", "kd", "rate"});
   CompensatorFile f;
-  const char* names[4] = {"ksp", "ksd", "kp", "kd"};
-  double* into[4] = {f.gains.ksp, f.gains.ksd, f.gains.kp, f.gains.kd};
-  const std::string four = "a list of 4 numbers in [0, " + YamlReader::fmt(kCompensatorGainMax) + "] (x, y, z, yaw)";
-  for (int g = 0; g < 4; ++g) {
-    const std::string key = r.key("controller", names[g]);
-    const std::vector<double> v = r.numbers(r.require(c, "controller", names[g], four), key, 4, four);
-    for (int i = 0; i < 4; ++i) {
-      into[g][i] = v[static_cast<size_t>(i)];
-      if (!(into[g][i] >= 0.0 && into[g][i] <= kCompensatorGainMax)) r.fail(key, "must be " + four);
-    }
-  }
+  readGainLists(r, c, {{"ksp", f.gains.ksp}, {"ksd", f.gains.ksd}, {"kp", f.gains.kp}, {"kd", f.gains.kd}}, 4,
+                "x, y, z, yaw", kCompensatorGainMax);
   f.rate = r.numberIn(r.require(c, "controller", "rate", "Hz, dividing the vehicle's rate (30 Hz: 30, 15, 10, 6, 5)"),
                       "controller.rate", 0.0, 1000.0, "Hz", false);
   if (root["clamp_commands"]) f.has_clamp = true, f.clamp = r.boolean(root["clamp_commands"], "clamp_commands");

@@ -87,8 +87,10 @@ struct LoopState {
   T t;              // the loop clock: metric time of the next iteration
   T initial_error;  // |Xd(0) - X0|, for check 4
 
-  AURORA_HD void reset(const T desired[3]) {
-    model.reset();
+  // A new run: the vehicle's start (at the origin, at rest), towards the
+  // task's first reference `desired`.
+  AURORA_HD void reset(const typename Vehicle::template Params<T>& plant, const T desired[3]) {
+    Vehicle::start(plant, model);
     metrics.reset();
     memory.reset();
     t = T(0);

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "aurora_control/loop/delayed_controller.h"
 #include "aurora_control/loop/positioning_runner.h"
@@ -47,19 +48,44 @@ FlightResult flyLaw(const StudyRun<typename Law::Data, double>& run, const Runne
   return r;
 }
 
-// An AR.Drone flight with the node's settings (its law chosen at run time).
+// A flight of law `Law` on its vehicle, ready to fly (flyLaw): its run,
+// the runner's settings, its steps 0..N, the law's name and its rate [Hz]
+// where it has one of its own (0: the vehicle's).
+template <class L>
+struct LawFlight {
+  using Law = L;
+  StudyRun<typename Law::Data, double> run;
+  RunnerConfig<double> cfg;
+  long steps = 0;
+  std::string law = Law::name();
+  double rate = 0.0;
+};
+
+// An AR.Drone flight of `Law` with the node's settings on drone `p`.
+template <class Law>
+LawFlight<Law> ardroneFlight(const LawVehicleParams& p, const ControllerSettings& settings, const Task<double>& task,
+                             long iterations) {
+  LawFlight<Law> f;
+  f.run = ArdroneRun<double>{p, settings.vehicle, LawGains<double>{settings.gains, settings.underactuated},
+                             settings.delay};
+  f.cfg.task = task;
+  f.cfg.clamp_commands = settings.clamp_commands;
+  f.cfg.clamp_at_drone = true;  // the sim's clamp
+  f.cfg.link = settings.link;
+  f.steps = iterations;
+  return f;
+}
+
+// The same with the AR.Drone's law chosen at run time.
 template <typename Observer>
 FlightResult runFlight(const LawVehicleParams& p, const ControllerSettings& settings,
                        const Task<double>& task, long iterations, Observer observe) {
-  const ArdroneRun<double> run{p, settings.vehicle, LawGains<double>{settings.gains, settings.underactuated},
-                             settings.delay};
-  RunnerConfig<double> cfg;
-  cfg.task = task;
-  cfg.clamp_commands = settings.clamp_commands;
-  cfg.clamp_at_drone = true;  // the sim's clamp
-  cfg.link = settings.link;
   FlightResult r;
-  withLaw(settings.law, [&](auto law) { r = flyLaw<decltype(law)>(run, cfg, iterations, observe); });
+  withLaw(settings.law, [&](auto law) {
+    using Law = decltype(law);
+    const LawFlight<Law> f = ardroneFlight<Law>(p, settings, task, iterations);
+    r = flyLaw<Law>(f.run, f.cfg, f.steps, observe);
+  });
   return r;
 }
 

@@ -5,10 +5,12 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "aurora_control/loop/flight_runner.h"
 #include "aurora_control/law/compensator_yaml.h"
 #include "aurora_control/law/law_yaml.h"
+#include "aurora_control/law/pioneer_yaml.h"
 #include "aurora_control/params/limits.h"
 #include "aurora_control/link/link_yaml.h"
 #include "aurora_control/task/task_yaml.h"
@@ -30,8 +32,8 @@ struct FlightSetup {
 };
 
 // What every flight reads besides its vehicle and law, for a vehicle of
-// sample time Ts: the task (its steps 0..N), the link and the delay in
-// force, each checked.
+// sample time Ts: the task (its steps 0..N, at the vehicle's heights), the
+// link and the delay in force, each checked.
 struct FlightCourse {
   Task<double> task;
   long steps = 0;
@@ -39,11 +41,12 @@ struct FlightCourse {
   long delay = 0;
 };
 
-inline FlightCourse loadCourse(const FlightFiles& f, double Ts) {
+inline FlightCourse loadCourse(const FlightFiles& f, double Ts, const TaskHeights& heights = TaskHeights::flying()) {
   FlightCourse c;
   if (!f.link.empty()) c.link = readLinkFile(f.link);
   c.delay = delayInForce(f.delay, c.link);  // docs/links.md, "A delay beside a link"
-  c.task = readTask(YamlReader("task file '" + f.task + "': "), loadYamlFile("task file", f.task)["task"], "task");
+  c.task = readTask(YamlReader("task file '" + f.task + "': "), loadYamlFile("task file", f.task)["task"], "task",
+                    heights);
   c.steps = taskStepCount(c.task.duration(), Ts);
   long samples = 0;
   const std::string refusal = delayRefusal(double(c.delay), false, Ts, samples);
@@ -68,11 +71,28 @@ inline FlightSetup loadFlight(const FlightFiles& f) {
   return s;
 }
 
+// The laws of a vehicle other than the AR.Drone, by name, and the vehicle
+// each flies (a controller file's controller.name chooses its vehicle).
+struct LawOfVehicle {
+  const char* law;
+  const char* vehicle;
+};
+inline const std::vector<LawOfVehicle>& otherVehicleLaws() {
+  static const std::vector<LawOfVehicle> laws = {
+      {Bebop2Compensator::name(), Bebop2Compensator::Vehicle::name()},
+      {PioneerKinematic::name(), PioneerKinematic::Vehicle::name()},
+      {PioneerDynamic::name(), PioneerDynamic::Vehicle::name()}};
+  return laws;
+}
+
 // The vehicle a controller file's law flies, by name (its file:
 // config/vehicles/NAME.yaml): where a flight chooses its vehicle.
 inline std::string controllerVehicle(const std::string& controller_file) {
-  return controllerFileName(controller_file) == Bebop2Compensator::name() ? aurora_sim::Bebop2::name()
-                                                                           : LawVehicle::name();
+  const std::string law = controllerFileName(controller_file);
+  for (const LawOfVehicle& l : otherVehicleLaws()) {
+    if (law == l.law) return l.vehicle;
+  }
+  return LawVehicle::name();
 }
 
 // A rate given (`given`, e.g. "--rate", non-zero `rate`) for a law that has
@@ -80,43 +100,74 @@ inline std::string controllerVehicle(const std::string& controller_file) {
 inline void refuseRateFor(const std::string& vehicle, double rate, const std::string& given) {
   if (rate != 0.0 && vehicle != aurora_sim::Bebop2::name()) {
     throw ConfigError(given + " is refused here: it sets the Bebop 2 compensator's rate (controller "
-                      "bebop2_compensator); the AR.Drone's laws and a formation run at the vehicle's rate");
+                      "bebop2_compensator); the AR.Drone's and the Pioneer's laws and a formation run at the "
+                      "vehicle's rate");
   }
 }
 
-// A Bebop 2 flight with its compensator (docs/bebop2.md): the run (the
-// vehicle file as plant and as the law's model) and the runner's settings.
-// Its driver clamps what it receives, and so does the controller unless
-// the file says otherwise; no_clamp clamps nowhere (AuRoRA's simulation).
-struct CompensatorFlight {
-  StudyRun<Bebop2Compensator, double> run;
-  RunnerConfig<double> cfg;
-  double rate = 30.0;  // [Hz] the law's
-  long steps = 0;
-};
+// A flight of `Law` with `gains` on the vehicle file (as plant and as the
+// law's model) over the files' course; no clamp yet.
+template <class Law>
+LawFlight<Law> lawFlight(const FlightFiles& f, const typename Law::template Gains<double>& gains) {
+  using Vehicle = typename Law::Vehicle;
+  const typename Vehicle::template Params<double> vehicle =
+      aurora_sim::loadVehicleFile<Vehicle>(f.vehicle, std::string("the controller '") + Law::name() + "'");
+  LawFlight<Law> s;
+  s.run.plant = s.run.model = vehicle;
+  s.run.gains = gains;
+  const FlightCourse c = loadCourse(f, vehicle.Ts, TaskHeights::of<Vehicle>());
+  s.run.delay = c.delay;
+  s.cfg.task = c.task, s.cfg.link = c.link, s.steps = c.steps;
+  return s;
+}
 
-// `rate` [Hz]: instead of the file's (0: the file's), named `rate_option`
-// in a refusal ("--rate " for the tool, "rate=" for Python).
-inline CompensatorFlight loadCompensatorFlight(const FlightFiles& f, double rate = 0.0,
-                                               const std::string& rate_option = "--rate ") {
+// A Bebop 2 flight with its compensator (docs/bebop2.md). Its driver clamps
+// what it receives, and so does the controller unless the file says
+// otherwise; no_clamp clamps nowhere (AuRoRA's simulation). `rate` [Hz]:
+// instead of the file's (0: the file's), named `rate_option` in a refusal
+// ("--rate " for the tool, "rate=" for Python).
+inline LawFlight<Bebop2Compensator> loadCompensatorFlight(const FlightFiles& f, double rate = 0.0,
+                                                          const std::string& rate_option = "--rate ") {
   CompensatorFile file = readCompensatorFile(f.controller);
   const std::string given = rate != 0.0 ? rate_option + YamlReader::fmt(rate)
                                         : "controller file '" + f.controller + "': 'controller.rate' = " +
                                               YamlReader::fmt(file.rate);
   if (rate != 0.0) file.rate = rate;
-  const aurora_sim::Bebop2::Params<double> vehicle = aurora_sim::loadVehicleFile<aurora_sim::Bebop2>(
-      f.vehicle, std::string("the controller '") + Bebop2Compensator::name() + "'");
-  CompensatorFlight s;
+  LawFlight<Bebop2Compensator> s = lawFlight<Bebop2Compensator>(f, file.gains);
   s.rate = file.rate;
-  s.run.plant = s.run.model = vehicle;
-  s.run.gains = file.gains;
-  s.run.gains.period_steps = double(compensatorPeriod(given, file.rate, vehicle.Ts));
-  const FlightCourse c = loadCourse(f, vehicle.Ts);
-  s.run.delay = c.delay;
-  s.cfg.task = c.task, s.cfg.link = c.link, s.steps = c.steps;
+  s.run.gains.period_steps = double(compensatorPeriod(given, file.rate, s.run.plant.Ts));
   s.cfg.clamp_commands = !f.no_clamp && (!file.has_clamp || file.clamp);
   s.cfg.clamp_at_drone = !f.no_clamp;
   return s;
+}
+
+// A Pioneer flight of `Law` (docs/pioneer3dx.md): the laws saturate their
+// commands as AuRoRA's do and RosAria passes them on, so there is no clamp
+// to leave out.
+template <class Law>
+LawFlight<Law> loadPioneerFlight(const FlightFiles& f, const std::string& no_clamp_option = "--no-clamp") {
+  if (f.no_clamp) {
+    throw ConfigError(no_clamp_option + " is refused for the Pioneer P3-DX: its laws saturate their commands "
+                      "(u within 0.75 or 1 m/s, omega within 1 rad/s) as AuRoRA's do, and RosAria clamps nothing");
+  }
+  return lawFlight<Law>(f, readPioneerFile<Law>(f.controller));
+}
+
+// Calls fly(LawFlight<Law>) with the flight of the controller file's law
+// (on `flown`, controllerVehicle's): the one place a flight's law is
+// chosen, for the flight tool and Python.
+template <class Fly>
+void withFlight(const FlightFiles& f, const std::string& flown, double rate, const std::string& rate_option,
+                const std::string& no_clamp_option, Fly&& fly) {
+  if (flown == aurora_sim::Bebop2::name()) return fly(loadCompensatorFlight(f, rate, rate_option));
+  if (flown == aurora_sim::Pioneer3dx::name()) {
+    if (controllerFileName(f.controller) == PioneerKinematic::name()) {
+      return fly(loadPioneerFlight<PioneerKinematic>(f, no_clamp_option));
+    }
+    return fly(loadPioneerFlight<PioneerDynamic>(f, no_clamp_option));
+  }
+  const FlightSetup s = loadFlight(f);
+  withLaw(s.settings.law, [&](auto law) { fly(ardroneFlight<decltype(law)>(s.vehicle, s.settings, s.task, s.steps)); });
 }
 
 }  // namespace aurora_control

@@ -130,7 +130,7 @@ AURORA_HD RunnerResult runClosedLoopOver(const StudyRun<typename Law::Data, T>& 
   const LoopParams<typename Law::Data, T> params{run.plant, run.model, run.gains, cfg.criteria};
   const ClampPolicy clamp{cfg.clamp_commands, cfg.clamp_at_drone};
   LoopState<typename Law::Data, T, bool> s;
-  s.reset(cfg.task.at(T(0)).pos);
+  s.reset(run.plant, cfg.task.at(T(0)).pos);
   StateHistory<Law, T, Capacity> history;
   long k = 0;
   while (k < iterations) {

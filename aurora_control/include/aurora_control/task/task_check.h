@@ -15,10 +15,33 @@ namespace aurora_control {
 // "Tasks").
 constexpr double kMinTaskHeight = 0.2, kMaxTaskHeight = 100.0;
 
+// The heights a vehicle's task may ask for: a drone's between the bounds
+// above, a ground robot's on the floor (z = 0; docs/pioneer3dx.md).
+struct TaskHeights {
+  double min, max;
+  const char* why;  // said after the accepted range in a refusal
+
+  static TaskHeights flying() { return {kMinTaskHeight, kMaxTaskHeight, "z is up; the ground is z = 0"}; }
+  static TaskHeights onFloor() { return {0.0, 0.0, "a ground robot's task lies on the floor"}; }
+  template <class Vehicle>
+  static TaskHeights of() {
+    return Vehicle::kOnGround ? onFloor() : flying();
+  }
+  bool accepts(double z) const { return z >= min && z <= max; }
+  // "[0.2, 100] m (why)": the accepted range, as every refusal says it.
+  std::string rangeText() const {
+    return "[" + aurora_common::numberText(min) + ", " + aurora_common::numberText(max) + "] m (" + why + ")";
+  }
+  std::string refusal(double z) const {
+    return "has z = " + aurora_common::numberText(z) + " m: accepted heights " + rangeText();
+  }
+};
+
 // Empty when the task is usable; otherwise what is wrong, naming the key
 // under `prefix` (e.g. "/ardrone1/controller/task/").
 template <typename T, int N>
-std::string checkTask(const WaypointTask<T, N>& task, const std::string& prefix) {
+std::string checkTask(const WaypointTask<T, N>& task, const std::string& prefix,
+                      const TaskHeights& heights = TaskHeights::flying()) {
   if (task.count < 1 || task.count > N) {
     return "'" + prefix + "waypoints' has " + std::to_string(task.count) +
            " entries: accepted 1 to " + std::to_string(N) + " waypoints [x, y, z] in m";
@@ -33,11 +56,7 @@ std::string checkTask(const WaypointTask<T, N>& task, const std::string& prefix)
       if (!std::isfinite(double(task.position[i][j]))) return wp + " is not finite";
     }
     const double z = double(task.position[i][2]);
-    if (z < kMinTaskHeight || z > kMaxTaskHeight) {
-      return wp + " has z = " + aurora_common::numberText(z) + " m: accepted heights [" +
-             aurora_common::numberText(kMinTaskHeight) + ", " + aurora_common::numberText(kMaxTaskHeight) +
-             "] m (z is up; the ground is z = 0)";
-    }
+    if (!heights.accepts(z)) return wp + " " + heights.refusal(z);
     const double prev = i == 0 ? 0.0 : double(task.end_time[i - 1]);
     if (!(double(task.end_time[i]) > prev)) {
       return "'" + prefix + "end_times[" + std::to_string(i) + "]' = " +

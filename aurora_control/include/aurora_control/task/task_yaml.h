@@ -32,7 +32,7 @@ namespace aurora_control {
 namespace task_yaml_detail {
 
 inline void readWaypoints(const YamlReader& r, const YAML::Node& n, const std::string& key,
-                          Task<double>& task) {
+                          const TaskHeights& heights, Task<double>& task) {
   r.onlyKeys(n, key, {"name", "type", "duration", "waypoints", "end_times"});
   const YAML::Node wps = r.require(n, key, "waypoints", "a list of [x, y, z] in m (or [x, y, z, yaw], yaw in rad)");
   const YAML::Node ends = r.require(n, key, "end_times", "one time [s] per waypoint");
@@ -52,12 +52,12 @@ inline void readWaypoints(const YamlReader& r, const YAML::Node& n, const std::s
     w.end_time[i] = r.number(ends[i], ekey + "[" + std::to_string(i) + "]");
   }
   w.duration = r.number(r.require(n, key, "duration", "a time in (0, 86400] s"), r.key(key, "duration"));
-  const std::string problem = checkTask(w, key + r.separator());
+  const std::string problem = checkTask(w, key + r.separator(), heights);
   if (!problem.empty()) r.failWith(problem);
 }
 
 inline void readTrajectory(const YamlReader& r, const YAML::Node& n, const std::string& key,
-                           bool circle, Task<double>& task) {
+                           bool circle, const TaskHeights& heights, Task<double>& task) {
   const char* size_key = circle ? "radius" : "amplitudes";
   std::vector<std::string> keys{"name", "type", "centre", "height", size_key, "period", "laps", "yaw"};
   if (!circle) keys.push_back("fast_axis");
@@ -70,8 +70,11 @@ inline void readTrajectory(const YamlReader& r, const YAML::Node& n, const std::
     if (std::fabs(c[i]) > 1000.0) r.fail(r.key(key, "centre"), "is outside the accepted range [-1000, 1000] m");
     t.centre[i] = c[i];
   }
-  t.centre[2] = r.numberIn(r.require(n, key, "height", "a height in m"), r.key(key, "height"), kMinTaskHeight,
-                           kMaxTaskHeight, "m");
+  const std::string hkey = r.key(key, "height");
+  t.centre[2] = r.number(r.require(n, key, "height", "a height in m"), hkey);
+  if (!heights.accepts(t.centre[2])) {
+    r.fail(hkey, "= " + YamlReader::fmt(t.centre[2]) + " is outside the accepted range " + heights.rangeText());
+  }
   const std::string skey = r.key(key, size_key);
   if (circle) {
     t.size[0] = r.numberIn(r.require(n, key, "radius", "a radius in m"), skey, 0.0, 100.0, "m", false);
@@ -107,17 +110,19 @@ inline void readTrajectory(const YamlReader& r, const YAML::Node& n, const std::
 
 }  // namespace task_yaml_detail
 
-// Reads the mapping under `key` (the task's own keys, not 'task:' itself).
-inline Task<double> readTask(const YamlReader& r, const YAML::Node& node, const std::string& key) {
+// Reads the mapping under `key` (the task's own keys, not 'task:' itself),
+// its heights those a vehicle accepts (TaskHeights::of<Vehicle>()).
+inline Task<double> readTask(const YamlReader& r, const YAML::Node& node, const std::string& key,
+                             const TaskHeights& heights = TaskHeights::flying()) {
   if (!node || !node.IsMap()) r.fail(key, "must be a mapping (a task file's 'task:')");
   Task<double> task;
   const std::string type = node["type"] ? r.text(node["type"], r.key(key, "type")) : "waypoints";
   if (type == "waypoints") {
     task.type = TaskType::kWaypoints;
-    task_yaml_detail::readWaypoints(r, node, key, task);
+    task_yaml_detail::readWaypoints(r, node, key, heights, task);
   } else if (type == "circle" || type == "lemniscate") {
     task.type = type == "circle" ? TaskType::kCircle : TaskType::kLemniscate;
-    task_yaml_detail::readTrajectory(r, node, key, type == "circle", task);
+    task_yaml_detail::readTrajectory(r, node, key, type == "circle", heights, task);
   } else {
     r.fail(r.key(key, "type"), "= '" + type + "' is not accepted: waypoints, circle or lemniscate");
   }

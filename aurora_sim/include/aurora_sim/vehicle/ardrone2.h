@@ -5,7 +5,10 @@
 //   sample time Ts [s]) and its state (X[kStates], reset() to the study's
 //   start), templated on the scalar (double, float, SIMD batches, CUDA);
 // - kStates, kInputs, kPosition: the state's size, the command's size, and
-//   where x y z [m, world frame] sit in X;
+//   where x y z [m, world frame] sit in X; stateName(i): X's names;
+// - kOnGround: a ground robot (its tasks lie on the floor, z = 0);
+// - start(p, s): a new robot at rest with its centre at the world origin,
+//   heading 0 (every loop's first state);
 // - step(p, s, U): one model step of Ts with command U;
 // - limitInput(p, i, u): the vehicle's own clamp of command component i
 //   (what its driver does with what it receives; a vehicle's limits may be
@@ -39,6 +42,14 @@ struct Ardrone2 {
   static constexpr int kInputs = kCommandSize;  // CommandIndex order, each in [-1, 1]
   static constexpr int kPosition = kX;
   static constexpr int kFactors = 8;
+  static constexpr bool kOnGround = false;
+
+  static const char* stateName(int i) { return stateName12(i); }
+
+  template <typename T>
+  AURORA_HD static void start(const Params<T>&, State<T>& s) {
+    s.reset();
+  }
 
   // One step of docs/model.md, "One model step", without disturbances.
   template <typename T>

@@ -29,6 +29,14 @@ struct Bebop2 {
   static constexpr int kInputs = kBebopAxes;  // u_x u_y u_z u_yaw, cmd_vel fractions
   static constexpr int kPosition = kX;
   static constexpr int kFactors = 2 * kBebopAxes;
+  static constexpr bool kOnGround = false;
+
+  static const char* stateName(int i) { return stateName12(i); }
+
+  template <typename T>
+  AURORA_HD static void start(const Params<T>&, State<T>& s) {
+    s.reset();
+  }
 
   template <typename T>
   AURORA_HD static void step(const Params<T>& p, State<T>& s, const T U[kInputs]) {

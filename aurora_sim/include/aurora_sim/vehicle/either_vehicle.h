@@ -85,6 +85,16 @@ struct EitherVehicle {
     else stepOne<First>(p.first, s.first, s.X, U);
   }
 
+  // Both started; X as the chosen one's start gives it.
+  template <typename T>
+  AURORA_HD static void start(const Params<T>& p, State<T>& s) {
+    s.reset();
+    First::start(p.first, s.first);
+    Second::start(p.second, s.second);
+    if (p.is_second) copyX<Second>(s.second, s.X);
+    else copyX<First>(s.first, s.X);
+  }
+
   template <typename T>
   AURORA_HD static T limitInput(const Params<T>& p, int i, const T& u) {
     if (p.is_second) return i < Second::kInputs ? Second::limitInput(p.second, i, u) : T(0);
@@ -92,6 +102,11 @@ struct EitherVehicle {
   }
 
  private:
+  template <class One, class OwnState, typename T>
+  AURORA_HD static void copyX(const OwnState& own, T X[kStates]) {
+    for (int i = 0; i < kStates; ++i) X[i] = i < One::kStates ? own.X[i] : T(0);
+  }
+
   template <class One, typename T, class OwnState>
   AURORA_HD static void stepOne(const typename One::template Params<T>& p, OwnState& own, T X[kStates],
                                 const T U[kInputs]) {

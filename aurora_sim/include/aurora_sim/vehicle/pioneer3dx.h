@@ -28,6 +28,17 @@ struct Pioneer3dx {
   static constexpr int kInputs = kPioneerInputs;     // u_ref [m/s], omega_ref [rad/s]
   static constexpr int kPosition = kX;
   static constexpr int kFactors = 6;                 // theta1 .. theta6
+  static constexpr bool kOnGround = true;
+
+  static const char* stateName(int i) { return i < kStateSize ? stateName12(i) : i == kPioneerU ? "u" : "omega"; }
+
+  // AuRoRA's rSetPose([0 0 0 0]) on a new robot: the control point a ahead
+  // of the centre (docs/pioneer3dx.md, "Standard scenario").
+  template <typename T>
+  AURORA_HD static void start(const Params<T>& p, State<T>& s) {
+    s.reset();
+    pioneerSetPose(p, s, T(0), T(0), T(0), T(0));
+  }
 
   template <typename T>
   AURORA_HD static void step(const Params<T>& p, State<T>& s, const T U[kInputs]) {

@@ -1,0 +1,41 @@
+// The Pioneer P3-DX's controller files (config/controllers/
+// pioneer_kinematic.yaml, pioneer_dynamic.yaml; docs/pioneer3dx.md,
+// "Controllers"), read strictly: each gain a list of two, on x, y for the
+// kinematic part, on u, omega for the dynamic compensation. The laws run
+// every model step (AuRoRA's Pioneer scripts): no rate of their own.
+#pragma once
+
+#include <string>
+
+#include "aurora_control/law/compensator_yaml.h"
+#include "aurora_control/law/pioneer_laws.h"
+
+namespace aurora_control {
+
+// [1/m], [m/s] and the compensation's gains: beyond 10 the tanh laws are steps.
+constexpr double kPioneerGainMax = 10.0;
+
+// The gain lists of each law, and its file's keys.
+inline void readPioneerGains(const YamlReader& r, const YAML::Node& c, PioneerKinematicGains<double>& g) {
+  r.onlyKeys(c, "controller", {"name", "k1", "k2"});
+  readGainLists(r, c, {{"k1", g.k1}, {"k2", g.k2}}, 2, "x, y", kPioneerGainMax);
+}
+
+inline void readPioneerGains(const YamlReader& r, const YAML::Node& c, PioneerDynamicGains<double>& g) {
+  r.onlyKeys(c, "controller", {"name", "kc1", "kc2", "kd1", "kd2"});
+  readGainLists(r, c, {{"kc1", g.kc1}, {"kc2", g.kc2}}, 2, "x, y", kPioneerGainMax);
+  readGainLists(r, c, {{"kd1", g.kd1}, {"kd2", g.kd2}}, 2, "u, omega", kPioneerGainMax);
+}
+
+// Law's gains from its controller file (controller.name is Law::name()).
+template <class Law>
+typename Law::template Gains<double> readPioneerFile(const std::string& path) {
+  const YAML::Node root = loadYamlFile("controller file", path);
+  const YamlReader r("controller file '" + path + "': ");
+  r.onlyKeys(root, "", {"controller"});
+  typename Law::template Gains<double> g;
+  readPioneerGains(r, root["controller"], g);
+  return g;
+}
+
+}  // namespace aurora_control
