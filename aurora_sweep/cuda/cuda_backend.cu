@@ -90,60 +90,83 @@ class CudaEvent {
   cudaEvent_t event_ = nullptr;
 };
 
-template <aurora_control::LawType Law, typename T, int Capacity, bool Linked>
-__global__ void sweepKernel(SweepSetup<T> setup, GridView grid, long first, long n, SimResult* out) {
-  sweepThread<aurora_control::ArdroneLaw<Law>, T, Capacity, Linked>(setup, grid, first, n, out, blockIdx.x, blockDim.x, threadIdx.x);
+// A single-robot sweep's kernel, law `Law` on its vehicle.
+template <class Law, typename T, int Capacity, bool Linked>
+__global__ void sweepKernel(SimSetup<typename Law::Vehicle, T> setup, GridView grid, long first, long n,
+                            SimResult* out) {
+  sweepThread<Law, T, Capacity, Linked>(setup, grid, first, n, out, blockIdx.x, blockDim.x, threadIdx.x);
 }
 
 // A formation sweep's kernel: one formation per thread; its setup (the
 // formation file's run, about 2 kB) is read from device memory.
-template <aurora_control::LawType Law, typename T, int Capacity, bool Linked>
+template <class Law, typename T, int Capacity, bool Linked>
 __global__ void formationKernel(const FormationSetup<T>* setup, GridView grid, long first, long n, SimResult* out) {
-  formationThread<aurora_control::ArdroneLaw<Law>, T, Capacity, Linked>(*setup, grid, first, n, out, blockIdx.x, blockDim.x, threadIdx.x);
+  formationThread<Law, T, Capacity, Linked>(*setup, grid, first, n, out, blockIdx.x, blockDim.x, threadIdx.x);
 }
 
-// Calls f(T(), capacity, law, linked) with the kernel's compile-time
-// parameters for `spec`: its precision, law, history tier (the tiers of
+// Calls f(T(), capacity, linked) with the kernel's compile-time parameters
+// for `spec`: its precision, history tier (the tiers of
 // withHistoryCapacity up to kMediumHistory; longer histories are refused)
 // and whether its runs go over a link model (a kernel of its own, so the
 // ideal sweeps' kernel keeps its registers and local memory).
 template <class F>
-void withKernelTypes(const SweepSpec& spec, F&& f) {
-  aurora_control::withLaw(spec.law, [&](auto law) {
-    auto linked = [&](auto type, auto capacity) {
-      if (spec.linkIdeal()) {
-        f(type, capacity, law, std::false_type());
-      } else {
-        f(type, capacity, law, std::true_type());
-      }
-    };
-    auto tier = [&](auto type) {
-      if (spec.historyNeeded() < aurora_control::kShortHistory) {
-        linked(type, std::integral_constant<int, aurora_control::kShortHistory>());
-      } else {
-        linked(type, std::integral_constant<int, aurora_control::kMediumHistory>());
-      }
-    };
-    if (spec.precision == Precision::kDouble) {
-      tier(double());
+void withKernelShape(const SweepSpec& spec, F&& f) {
+  auto linked = [&](auto type, auto capacity) {
+    if (spec.linkIdeal()) {
+      f(type, capacity, std::false_type());
     } else {
-      tier(float());
+      f(type, capacity, std::true_type());
     }
-  });
+  };
+  auto tier = [&](auto type) {
+    if (spec.historyNeeded() < aurora_control::kShortHistory) {
+      linked(type, std::integral_constant<int, aurora_control::kShortHistory>());
+    } else {
+      linked(type, std::integral_constant<int, aurora_control::kMediumHistory>());
+    }
+  };
+  if (spec.precision == Precision::kDouble) {
+    tier(double());
+  } else {
+    tier(float());
+  }
 }
 
-// Calls f(kernel): the kernel instantiation that runs `spec`.
+// How a kernel of law Law is started (`start`) and which it is (`kernel`):
+// a single robot's takes its setup by value, a formation's from device memory.
+template <class Law, typename T, int Capacity, bool Linked>
+struct SweepStart {
+  static auto kernel() { return sweepKernel<Law, T, Capacity, Linked>; }
+  static void start(const SweepSpec& spec, unsigned blocks, int block, const GridView& grid, long first, long n,
+                    SimResult* out) {
+    const SimSetup<typename Law::Vehicle, T> setup = makeSetup<typename Law::Vehicle, T>(spec);
+    sweepKernel<Law, T, Capacity, Linked><<<blocks, block>>>(setup, grid, first, n, out);
+  }
+};
+template <class Law, typename T, int Capacity, bool Linked>
+struct FormationStart {
+  static auto kernel() { return formationKernel<Law, T, Capacity, Linked>; }
+  static void start(const SweepSpec& spec, unsigned blocks, int block, const GridView& grid, long first, long n,
+                    SimResult* out) {
+    DeviceArray<FormationSetup<T>> setup(1);
+    const FormationSetup<T> host = makeFormationSetup<T>(spec);
+    setup.upload(&host);
+    formationKernel<Law, T, Capacity, Linked><<<blocks, block>>>(setup.get(), grid, first, n, out);
+    check(cudaDeviceSynchronize(), "kernel");  // before the setup is freed
+  }
+};
+
+// Calls f(Start()) with the start of the kernel that runs `spec`.
 template <class F>
 void withKernel(const SweepSpec& spec, F&& f) {
-  withKernelTypes(spec, [&](auto type, auto capacity, auto law, auto linked) {
-    constexpr auto kLaw = decltype(law)::value;
+  withKernelShape(spec, [&](auto type, auto capacity, auto linked) {
     using T = decltype(type);
     constexpr int kCapacity = decltype(capacity)::value;
     constexpr bool kLinked = decltype(linked)::value;
     if (spec.formation()) {
-      f(formationKernel<kLaw, T, kCapacity, kLinked>);
+      aurora_control::withLaw(spec.law, [&](auto law) { f(FormationStart<decltype(law), T, kCapacity, kLinked>()); });
     } else {
-      f(sweepKernel<kLaw, T, kCapacity, kLinked>);
+      withSweepLaw(spec, [&](auto law) { f(SweepStart<decltype(law), T, kCapacity, kLinked>()); });
     }
   });
 }
@@ -152,16 +175,16 @@ void withKernel(const SweepSpec& spec, F&& f) {
 // reason where this build has no code for the device or the driver is old).
 cudaFuncAttributes kernelAttributes(const SweepSpec& spec) {
   cudaFuncAttributes attr{};
-  withKernel(spec, [&](auto kernel) {
-    check(cudaFuncGetAttributes(&attr, kernel), "loading the sweep kernel (cudaFuncGetAttributes)");
+  withKernel(spec, [&](auto start) {
+    check(cudaFuncGetAttributes(&attr, start.kernel()), "loading the sweep kernel (cudaFuncGetAttributes)");
   });
   return attr;
 }
 
 int defaultBlockSize(const SweepSpec& spec) {
   int min_grid = 0, block = 0;
-  withKernel(spec, [&](auto kernel) {
-    check(cudaOccupancyMaxPotentialBlockSize(&min_grid, &block, kernel), "cudaOccupancyMaxPotentialBlockSize");
+  withKernel(spec, [&](auto start) {
+    check(cudaOccupancyMaxPotentialBlockSize(&min_grid, &block, start.kernel()), "cudaOccupancyMaxPotentialBlockSize");
   });
   return block;
 }
@@ -196,11 +219,11 @@ struct DeviceGrid {
   }
 };
 
-template <aurora_control::LawType Law, typename T, int Capacity, bool Linked>
+// Runs `spec`'s range with kernel start Start and times it.
+template <class Start>
 CudaRun launch(const SweepSpec& spec, int block_size, std::vector<SimResult>& out) {
   using Clock = std::chrono::steady_clock;
   const auto t0 = Clock::now();
-  const SweepSetup<T> setup = makeSetup<T>(spec);
   const long first = spec.rangeBegin(), n = spec.rangeSize();
   const DeviceGrid grid(spec.view(), first, n);
   CudaRun run;
@@ -209,18 +232,8 @@ CudaRun launch(const SweepSpec& spec, int block_size, std::vector<SimResult>& ou
   DeviceArray<SimResult> dev_out(static_cast<size_t>(n));
   CudaEvent start, stop;
   cudaGetLastError();  // a stale error of an earlier, failed call is not this launch's
-  DeviceArray<FormationSetup<T>> formation(spec.formation() ? 1 : 0);
-  if (spec.formation()) {
-    const FormationSetup<T> host = makeFormationSetup<T>(spec);
-    formation.upload(&host);
-  }
   check(cudaEventRecord(start.get()), "cudaEventRecord");
-  const unsigned blocks = static_cast<unsigned>(run.grid_size);
-  if (spec.formation()) {
-    formationKernel<Law, T, Capacity, Linked><<<blocks, run.block_size>>>(formation.get(), grid.view, first, n, dev_out.get());
-  } else {
-    sweepKernel<Law, T, Capacity, Linked><<<blocks, run.block_size>>>(setup, grid.view, first, n, dev_out.get());
-  }
+  Start::start(spec, static_cast<unsigned>(run.grid_size), run.block_size, grid.view, first, n, dev_out.get());
   check(cudaGetLastError(), "kernel launch");
   check(cudaEventRecord(stop.get()), "cudaEventRecord");
   check(cudaEventSynchronize(stop.get()), "kernel");
@@ -342,8 +355,8 @@ std::string cudaLaunchProblem(const SweepSpec& spec, int block_size) {
 long cudaResidentThreads(const SweepSpec& spec, int block_size) {
   int blocks = 0;
   const int block = block_size > 0 ? block_size : defaultBlockSize(spec);
-  withKernel(spec, [&](auto kernel) {
-    check(cudaOccupancyMaxActiveBlocksPerMultiprocessor(&blocks, kernel, block, 0),
+  withKernel(spec, [&](auto start) {
+    check(cudaOccupancyMaxActiveBlocksPerMultiprocessor(&blocks, start.kernel(), block, 0),
           "cudaOccupancyMaxActiveBlocksPerMultiprocessor");
   });
   return static_cast<long>(deviceAttribute(cudaDevAttrMultiProcessorCount)) * blocks * block;
@@ -353,10 +366,7 @@ CudaRun runCuda(const SweepSpec& spec, int block_size, std::vector<SimResult>& o
   const std::string delay = cudaDelayProblem(spec);
   if (!delay.empty()) throw std::runtime_error(delay);
   CudaRun run;
-  withKernelTypes(spec, [&](auto type, auto capacity, auto law, auto linked) {
-    using T = decltype(type);
-    run = launch<decltype(law)::value, T, decltype(capacity)::value, decltype(linked)::value>(spec, block_size, out);
-  });
+  withKernel(spec, [&](auto start) { run = launch<decltype(start)>(spec, block_size, out); });
   return run;
 }
 

@@ -233,22 +233,30 @@ void onThreads(int threads, Work&& work) {
   for (auto& th : pool) th.join();
 }
 
-template <typename T, class Arch, int Capacity, class Law>
-void runBatchWith(const SweepSpec& spec, int threads, std::vector<SimResult>& out,
-                  Progress& progress) {
+// work(grid, first, total, next) on each of `threads` threads: the spec's
+// range [first, total), `next` the combination the next free chunk starts at.
+template <class Work>
+void onRange(const SweepSpec& spec, int threads, std::vector<SimResult>& out, Work&& work) {
   out.resize(spec.rangeSize());
   std::atomic<long> next{spec.rangeBegin()};
   const GridView grid = spec.view();
-  const long first = spec.rangeBegin(), total = spec.rangeEnd();
-  if (spec.formation()) {
-    const FormationSetup<T> setup = makeFormationSetup<T>(spec);
-    onThreads(threads, [&] {
-      FormationBatch<T, Arch, Capacity, Law>(setup, grid, first, total, out, next, progress).run();
-    });
-  } else {
-    const SweepSetup<T> setup = makeSetup<T>(spec);
-    onThreads(threads, [&] { BatchWorker<T, Arch, Capacity, Law>(setup, grid, first, total, out, next, progress).run(); });
-  }
+  onThreads(threads, [&] { work(grid, spec.rangeBegin(), spec.rangeEnd(), next); });
+}
+
+template <typename T, class Arch, int Capacity, class Law>
+void runBatchWith(const SweepSpec& spec, int threads, std::vector<SimResult>& out, Progress& progress) {
+  const auto setup = makeSetup<typename Law::Vehicle, T>(spec);
+  onRange(spec, threads, out, [&](const GridView& grid, long first, long total, std::atomic<long>& next) {
+    BatchWorker<T, Arch, Capacity, Law>(setup, grid, first, total, out, next, progress).run();
+  });
+}
+
+template <typename T, class Arch, int Capacity, class Law>
+void runFormationBatchWith(const SweepSpec& spec, int threads, std::vector<SimResult>& out, Progress& progress) {
+  const FormationSetup<T> setup = makeFormationSetup<T>(spec);
+  onRange(spec, threads, out, [&](const GridView& grid, long first, long total, std::atomic<long>& next) {
+    FormationBatch<T, Arch, Capacity, Law>(setup, grid, first, total, out, next, progress).run();
+  });
 }
 
 }  // namespace
@@ -257,9 +265,14 @@ void runBatchWith(const SweepSpec& spec, int threads, std::vector<SimResult>& ou
 template <class Arch>
 void runBatchArch(const SweepSpec& spec, int threads, std::vector<SimResult>& out,
                   Progress& progress) {
+  if (spec.formation()) {
+    return withFormationTypes(spec, [&](auto type, auto capacity, auto law) {
+      runFormationBatchWith<decltype(type), Arch, decltype(capacity)::value, decltype(law)>(spec, threads, out,
+                                                                                            progress);
+    });
+  }
   withSweepTypes(spec, [&](auto type, auto capacity, auto law) {
-    runBatchWith<decltype(type), Arch, decltype(capacity)::value, decltype(law)>(spec, threads, out,
-                                                                                      progress);
+    runBatchWith<decltype(type), Arch, decltype(capacity)::value, decltype(law)>(spec, threads, out, progress);
   });
 }
 

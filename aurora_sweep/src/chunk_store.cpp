@@ -123,6 +123,25 @@ void addLink(Crc& crc, const aurora_control::LinkParams& l) {
 
 }  // namespace
 
+namespace {
+
+// Another vehicle's sweep (an AR.Drone sweep's hash stays as it was): its
+// type, its vehicle file's values and its law's own gains.
+void addOtherVehicle(Crc& crc, const SweepSpec& spec) {
+  crc.add(spec.vehicle_type);
+  const auto add = [&](const auto& params) {
+    static_assert(sizeof(params) % sizeof(double) == 0, "vehicle constants are doubles");
+    crc.add(params);
+  };
+  if (spec.vehicle_type == aurora_sim::Bebop2::name()) add(spec.bebop2);
+  if (spec.vehicle_type == aurora_sim::Pioneer3dx::name()) add(spec.pioneer3dx);
+  for (int id = kParamFirstLawGain; id < kParamLawGainEnd; ++id) {
+    if (spec.accepts(id)) crc.add(id), crc.add(spec.fixed[id]);
+  }
+}
+
+}  // namespace
+
 uint32_t definitionHash(const SweepSpec& spec) {
   static_assert(sizeof(spec.vehicle) % sizeof(double) == 0, "vehicle constants are doubles");
   Crc crc;
@@ -155,6 +174,7 @@ uint32_t definitionHash(const SweepSpec& spec) {
       if (spec.given(id)) crc.add(id), crc.add(spec.fixed[id]);
     }
   }
+  if (spec.vehicle_type != aurora_sim::Ardrone2::name()) addOtherVehicle(crc, spec);
   return crc.value();
 }
 

@@ -7,6 +7,7 @@
 #include "aurora_control/link/link.h"
 #include "aurora_control/params/parameter_table.h"
 #include "aurora_control/law/underactuated_law.h"
+#include "aurora_sweep/sweep_gains.h"
 
 namespace aurora_sweep {
 
@@ -45,19 +46,34 @@ void addShapeParams(std::vector<ParamInfo>& t) {
   }
 }
 
+// Law `Law`'s own gains where SweepGains<Law> puts them (its rows).
+template <class Law>
+void addLawGains(std::vector<ParamInfo>& t) {
+  using Gains = SweepGains<Law>;
+  for (int i = 0; i < Gains::kCount; ++i) {
+    const LawGainRow row = Gains::row(i);
+    const std::string limit = row.whole ? "whole model steps between the law's runs (1: every step)"
+                                        : "the range of the law's controller file";
+    ParamInfo info{row.name, ParamGroup::kLawGain, row.min, row.max, limit, row.whole, Law::name(), row.preset};
+    t[Gains::kFirst + i] = info;
+  }
+}
+
 std::vector<ParamInfo> makeTable() {
   using namespace aurora_control;
   // Room no shape of the sweep uses: no name, applies to no sweep.
   std::vector<ParamInfo> t(kParamCount, ParamInfo{"", ParamGroup::kUnused, 0.0, 0.0, "", false});
   const std::string pd = "the controller node's PD gain range";
-  t[kParamKp] = {"kp", ParamGroup::kPdGain, kPdGainMin, kPdGainMax, pd};
-  t[kParamKd] = {"kd", ParamGroup::kPdGain, kPdGainMin, kPdGainMax, pd};
+  const char* pd_law = lawName(LawType::kPdSaturated);
+  t[kParamKp] = {"kp", ParamGroup::kPdGain, kPdGainMin, kPdGainMax, pd, false, pd_law};
+  t[kParamKd] = {"kd", ParamGroup::kPdGain, kPdGainMin, kPdGainMax, pd, false, pd_law};
   t[kParamDelay] = {"delay", ParamGroup::kDelay, 0.0, double(kMaxDelaySamples),
                     "whole samples of Ts, the histories' limit", true};
   for (int i = 0; i < kUnderactuatedGainCount; ++i) {
     t[kParamFirstUnderactuatedGain + i] = {underactuatedGainName(i), ParamGroup::kUnderactuatedGain,
                                            kUnderactuatedGainMin, kUnderactuatedGainMax,
-                                           "the controller node's underactuated gain range (positive)"};
+                                           "the controller node's underactuated gain range (positive)", false,
+                                           lawName(LawType::kUnderactuated)};
   }
   const char* model[kModelFactorCount] = {"m", "Ixx", "Iyy", "Izz", "Cf", "Ct", "Km", "Jm"};
   for (int i = 0; i < kModelFactorCount; ++i) {
@@ -73,6 +89,7 @@ std::vector<ParamInfo> makeTable() {
   }
   t[kParamRepeat] = {"repeat", ParamGroup::kRepeat, 0.0, 1e9, "which link seed (sweep.repeats)", true};
   addShapeParams<LineFormation<double>>(t);
+  forEachOtherLaw([&](auto law) { addLawGains<decltype(law)>(t); });
   return t;
 }
 
@@ -91,15 +108,19 @@ int paramIdOf(const std::string& name) {
   return -1;
 }
 
-bool paramApplies(int id, aurora_control::LawType law, bool formation) {
-  const ParamGroup group = paramInfo(id).group;
+bool paramApplies(int id, const std::string& controller, bool formation) {
+  const ParamInfo& info = paramInfo(id);
+  const ParamGroup group = info.group;
+  aurora_control::LawType ardrone_law;
   if (formation) {
     return group == ParamGroup::kDroneDelay || group == ParamGroup::kFormationGain || group == ParamGroup::kLink ||
            group == ParamGroup::kDroneLink;
   }
   switch (group) {
-    case ParamGroup::kPdGain: return law == aurora_control::LawType::kPdSaturated;
-    case ParamGroup::kUnderactuatedGain: return law == aurora_control::LawType::kUnderactuated;
+    case ParamGroup::kPdGain:
+    case ParamGroup::kUnderactuatedGain:
+    case ParamGroup::kLawGain: return info.law == controller;
+    case ParamGroup::kModelFactor: return lawFromName(controller, ardrone_law);  // the AR.Drone's factors
     case ParamGroup::kRepeat: return false;  // sweep.repeats, not a parameter
     case ParamGroup::kDroneDelay:
     case ParamGroup::kFormationGain:
@@ -109,11 +130,20 @@ bool paramApplies(int id, aurora_control::LawType law, bool formation) {
   }
 }
 
-std::string acceptedParamNames(aurora_control::LawType law, bool formation) {
+std::string acceptedParamNames(const std::string& controller, bool formation) {
   std::string names;
   for (int id = 0; id < kParamCount; ++id) {
-    if (paramApplies(id, law, formation)) names += (names.empty() ? "" : ", ") + paramInfo(id).name;
+    if (paramApplies(id, controller, formation)) names += (names.empty() ? "" : ", ") + paramInfo(id).name;
   }
+  return names;
+}
+
+std::string sweepControllerNames() {
+  using namespace aurora_control;
+  std::string names;
+  std::vector<std::string> all = {lawName(LawType::kPdSaturated), lawName(LawType::kUnderactuated)};
+  forEachOtherLaw([&](auto law) { all.push_back(law.name()); });
+  for (const std::string& n : all) names += (names.empty() ? "'" : ", '") + n + "'";
   return names;
 }
 
@@ -124,6 +154,7 @@ double paramDefault(int id) {
       return aurora_control::underactuatedGain(g, id - kParamFirstUnderactuatedGain);
     }
     case ParamGroup::kModelFactor: return 1.0;
+    case ParamGroup::kLawGain: return paramInfo(id).preset;
     case ParamGroup::kLink: return aurora_control::linkValueOf(aurora_control::LinkParams(), id - kParamFirstLinkValue);
     case ParamGroup::kRepeat: return 0.0;
     case ParamGroup::kFormationGain: {

@@ -81,18 +81,22 @@ class CsvWriter : public ResultsWriter {
 }  // namespace
 
 DelayMonotony::DelayMonotony(const SweepSpec& spec) : grid_(spec.view()) {
-  // Applies to grids of exactly the axes kp, kd and delay, one run each.
+  // Applies to grids of exactly the axes delay and two of the law's gains, one run each.
   if (!spec.points.empty() || spec.axes.size() != 3 || spec.repeats > 1) return;
+  int gains = 0;
   for (const Axis& a : spec.axes) {
-    if (a.param != kParamKp && a.param != kParamKd && a.param != kParamDelay) return;
-  }
-  for (const Axis& a : spec.axes) {
-    std::vector<double>& v = a.param == kParamKp ? kps_ : a.param == kParamKd ? kds_ : delays_;
+    const ParamGroup g = paramInfo(a.param).group;
+    const bool gain = g == ParamGroup::kPdGain || g == ParamGroup::kUnderactuatedGain || g == ParamGroup::kLawGain;
+    if (a.param != kParamDelay && !gain) return;
+    std::vector<double>& v = a.param == kParamDelay ? delays_ : values_[gains];
+    if (a.param != kParamDelay) gain_[gains++] = a.param;
     v = a.values;
     std::sort(v.begin(), v.end());  // a `values:` list may come in any order
   }
+  if (gains != 2) return;
+  if (gain_[0] == kParamKd && gain_[1] == kParamKp) std::swap(gain_[0], gain_[1]), std::swap(values_[0], values_[1]);
   applies_ = true;
-  feasible_.assign(kps_.size() * kds_.size() * delays_.size(), 0);
+  feasible_.assign(values_[0].size() * values_[1].size() * delays_.size(), 0);
 }
 
 void DelayMonotony::add(long first, const std::vector<SimResult>& results) {
@@ -102,7 +106,7 @@ void DelayMonotony::add(long first, const std::vector<SimResult>& results) {
   };
   for (size_t i = 0; i < results.size(); ++i) {
     const Combination c = grid_.decode(first + static_cast<long>(i));
-    const size_t pair = at(kps_, c.v[kParamKp]) * kds_.size() + at(kds_, c.v[kParamKd]);
+    const size_t pair = at(values_[0], c.v[gain_[0]]) * values_[1].size() + at(values_[1], c.v[gain_[1]]);
     feasible_[pair * delays_.size() + at(delays_, c.v[kParamDelay])] = feasible(results[i]);
   }
 }
@@ -231,6 +235,7 @@ void writeSummaryJson(const std::string& path, const SweepSpec& spec, const RunI
       {"sweep_file_text", readFile(spec.file)},
       {"definition_hash", hashText(definitionHash(spec))},
       {"vehicle_file", spec.vehicle_file},
+      {"vehicle_type", spec.vehicle_type},
       {"controller", spec.controller},
       {"parameters", parameters},
       {"result_columns", resultColumnsJson(spec.formation())},

@@ -34,7 +34,7 @@ int publishFeasibleMarkers(int, char**, const SweepSpec& spec, const std::vector
   tf.sendTransform(t);
 
   const GridView grid = spec.view();
-  const double ts = spec.vehicle.Ts;
+  const double ts = spec.Ts();
   // x and y: the first two varied parameters besides the delay (kp and kd
   // for the PD law's grids), else the first columns.
   std::vector<int> xy;

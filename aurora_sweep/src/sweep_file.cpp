@@ -12,6 +12,7 @@
 #include "aurora_control/link/link_yaml.h"
 #include "aurora_control/loop/positioning_runner.h"
 #include "aurora_control/task/task_yaml.h"
+#include "aurora_sweep/backends.h"
 #include "aurora_sweep/design.h"
 #include "sweep_file_formation.h"
 #include "aurora_sim/vehicle_yaml.h"
@@ -58,7 +59,7 @@ std::string sweepKind(const SweepSpec& spec) {
 int paramOf(const Reader& r, const SweepSpec& spec, const std::string& name, const std::string& key) {
   const int id = paramIdOf(name);
   if (id < 0 || !spec.accepts(id)) {
-    r.fail(key, "is not a parameter of " + sweepKind(spec) + ": accepted " + acceptedParamNames(spec.law, spec.formation()));
+    r.fail(key, "is not a parameter of " + sweepKind(spec) + ": accepted " + acceptedParamNames(spec.controller, spec.formation()));
   }
   return id;
 }
@@ -148,6 +149,13 @@ void readPoints(const Reader& r, const std::string& path, const std::string& key
 
 // sweep.task: a task file's name (e.g. tasks/positioning.yaml) or the task
 // inline, in the one task schema (aurora_control/task/task_yaml.h).
+// The heights the sweep's vehicle accepts in a task (a ground robot's: the floor).
+aurora_control::TaskHeights taskHeightsOf(const SweepSpec& spec) {
+  aurora_control::TaskHeights h = aurora_control::TaskHeights::flying();
+  withSweepLaw(spec, [&](auto law) { h = aurora_control::TaskHeights::of<typename decltype(law)::Vehicle>(); });
+  return h;
+}
+
 void readSweepTask(const Reader& r, const YAML::Node& t, const std::string& sweep_dir,
                    const std::string& config_dir, SweepSpec& spec) {
   aurora_control::Task<double> task;
@@ -160,9 +168,9 @@ void readSweepTask(const Reader& r, const YAML::Node& t, const std::string& swee
       r.fail("sweep.task", "names a file that is refused: " + std::string(e.what()));
     }
     const aurora_control::YamlReader tr("task file '" + path + "': ");
-    task = aurora_control::readTask(tr, file["task"], "task");
+    task = aurora_control::readTask(tr, file["task"], "task", taskHeightsOf(spec));
   } else {
-    task = aurora_control::readTask(r, t, "sweep.task");
+    task = aurora_control::readTask(r, t, "sweep.task", taskHeightsOf(spec));
   }
   spec.task = task;
   if (!(spec.duration() <= 3600)) {
@@ -261,7 +269,7 @@ struct Varied {
 
 Varied readParameters(const Reader& r, const YAML::Node& params, bool design, bool points, SweepSpec& spec) {
   if (!params.IsMap()) r.fail("sweep.parameters", "must be a mapping of parameter names: accepted " +
-                                                      acceptedParamNames(spec.law, spec.formation()));
+                                                      acceptedParamNames(spec.controller, spec.formation()));
   std::map<int, YAML::Node> entries;
   for (const auto& kv : params) {
     const std::string name = kv.first.as<std::string>();
@@ -381,7 +389,7 @@ void readCombinations(const Reader& r, const YAML::Node& s, const std::string& s
   const YAML::Node params = s["parameters"];
   if (!params && !has_points) {
     r.fail("sweep.parameters", "is missing: give each parameter a value or a range (accepted " +
-                                   acceptedParamNames(spec.law, spec.formation()) + "), or 'points'");
+                                   acceptedParamNames(spec.controller, spec.formation()) + "), or 'points'");
   }
   const Varied varied = params ? readParameters(r, params, design, has_points, spec) : Varied();
   if (has_points) {
@@ -472,6 +480,28 @@ void checkSweepLink(const Reader& r, SweepSpec& spec) {
   }
 }
 
+// sweep.controller (a law's name: it chooses the vehicle) and sweep.vehicle
+// (default: that vehicle's shipped file), of the type the law flies.
+void readSweepVehicle(const Reader& r, const YAML::Node& s, const std::string& sweep_dir,
+                      const std::string& config_dir, SweepSpec& spec) {
+  if (s["controller"]) spec.controller = r.text(s["controller"], "sweep.controller");
+  bool known = lawFromName(spec.controller, spec.law);
+  forEachOtherLaw([&](auto law) { known = known || spec.controller == law.name(); });
+  if (!known) {
+    r.fail("sweep.controller", "= '" + spec.controller + "' is not a known controller: accepted " +
+                                   sweepControllerNames());
+  }
+  withSweepLaw(spec, [&](auto law) {
+    using Vehicle = typename decltype(law)::Vehicle;
+    spec.vehicle_type = Vehicle::name();
+    const std::string vehicle = s["vehicle"] ? r.text(s["vehicle"], "sweep.vehicle")
+                                             : "vehicles/" + spec.vehicle_type + ".yaml";
+    spec.vehicle_file = resolve(vehicle, sweep_dir, config_dir);
+    spec.paramsOf(Vehicle()) =
+        aurora_sim::loadVehicleFile<Vehicle>(spec.vehicle_file, "the sweep's controller '" + spec.controller + "'");
+  });
+}
+
 SweepSpec parseSweepFile(const std::string& path, const std::string& config_dir) {
   Reader r(path);
   const YAML::Node root = aurora_common::loadYamlFile("sweep file", path);
@@ -486,24 +516,18 @@ SweepSpec parseSweepFile(const std::string& path, const std::string& config_dir)
   const std::string sweep_dir = dirOf(path);
   spec.name = s["name"] ? r.text(s["name"], "sweep.name") : "sweep";
 
-  if (s["controller"]) {
-    spec.controller = r.text(s["controller"], "sweep.controller");
-    if (!lawFromName(spec.controller, spec.law)) {
-      r.fail("sweep.controller", "= '" + spec.controller +
-                                     "' is not a known controller: accepted 'pd_saturated', 'underactuated'");
-    }
-  }
-  const std::string vehicle = s["vehicle"] ? r.text(s["vehicle"], "sweep.vehicle")
-                                           : std::string("vehicles/ardrone2.yaml");
-  spec.vehicle_file = resolve(vehicle, sweep_dir, config_dir);
-  spec.vehicle = aurora_sim::loadVehicleFile<SweepVehicle>(spec.vehicle_file, "the sweep's controller '" +
-                                                                                 spec.controller + "'");
+  readSweepVehicle(r, s, sweep_dir, config_dir, spec);
 
   if (s["formation"]) {
     const std::string file = resolve(r.text(s["formation"], "sweep.formation"), sweep_dir, config_dir);
     readSweepFormation(r, s, file, config_dir, spec);
   }
   if (s["task"]) readSweepTask(r, s["task"], sweep_dir, config_dir, spec);
+  if (!s["task"] && !spec.formation() && !taskHeightsOf(spec).accepts(spec.task.at(0.0).pos[2])) {
+    r.fail("sweep.task", "is missing: the default task (the thesis's positioning, at " +
+                             Reader::fmt(spec.task.at(0.0).pos[2]) + " m) is not one a " + spec.vehicle_type +
+                             " can fly: give a task (accepted heights " + taskHeightsOf(spec).rangeText() + ")");
+  }
 
   if (s["criteria"] && spec.formation()) readFormationCriteria(r, s["criteria"], spec.formation_criteria);
   if (s["criteria"] && !spec.formation()) readCriteria(r, s["criteria"], spec.criteria);
@@ -524,14 +548,14 @@ SweepSpec loadSweepFile(const std::string& path, const std::string& config_dir) 
   if (!aurora_control::delayShorterThanRun(spec.max_delay, iterations)) {
     Reader(path).fail(!spec.points_file.empty() ? "sweep.points" : spec.formation() ? "sweep.parameters" : "sweep.parameters.delay",
                       "= " + aurora_control::delayRunText(spec.max_delay, iterations,
-                                                                           spec.vehicle.Ts));
+                                                                           spec.Ts()));
   }
   // The largest delay plus the link's jitter (or its command path), as flight and the node refuse it.
   const long latest = spec.historyNeeded();
   if (!aurora_control::delayShorterThanRun(latest, iterations)) {
     Reader(path).fail(spec.link_file.empty() ? "sweep.parameters" : "sweep.link",
                       "gives packets that would never arrive: the latest (the largest delay plus the jitter, or the "
-                      "command path) is " + aurora_control::delayRunText(latest, iterations, spec.vehicle.Ts));
+                      "command path) is " + aurora_control::delayRunText(latest, iterations, spec.Ts()));
   }
   return spec;
 }

@@ -238,7 +238,7 @@ TEST(ShapeConcept, AThreeRobotShapeFliesEveryBackend) {
   // Its parameters: three delays, then 2 x 9 gains, then 3 x 7 link values,
   // where the line has its gains and link values (no room is shared).
   EXPECT_EQ(kAt.delay(2), kLineLayout.k1(0));
-  EXPECT_EQ(kAt.count(), kParamCount);
+  EXPECT_EQ(kAt.count(), kParamFirstLawGain);  // the room of the shapes; the laws' own gains follow
   const Run3<double> ideal = threeDrones(aurora_control::LinkParams());
   const ThreeGrid grid(std::nan(""));
   const Setup3<double, DroneLaw> setup = setupOf<double>(ideal);

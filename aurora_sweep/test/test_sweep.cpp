@@ -100,7 +100,7 @@ TEST(Backends, ScalarAndCpuAgreeInDouble) {
 TEST(Backends, KernelBodyOnTheHostMatchesTheCpuBackend) {
   // simulateCombination() is what each CUDA thread runs; here it runs on the CPU.
   const SweepSpec spec = load(kData + "/small_grid.yaml");
-  const SweepSetup<double> setup = makeSetup<double>(spec);
+  const SweepSetup<double> setup = makeSetup<SweepVehicle, double>(spec);
   const GridView grid = spec.view();
   const auto cpu = runOn("cpu", spec);
   for (long i = 0; i < spec.size(); ++i) {

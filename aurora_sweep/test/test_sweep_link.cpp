@@ -123,7 +123,7 @@ TEST(SweepLink, TheKernelsPerThreadEntryOverALinkIsTheScalarLoop) {
   Progress progress{0};
   runScalar(lossy, scalar, progress);
   ASSERT_LT(lossy.historyNeeded(), aurora_control::kMediumHistory);
-  const SweepSetup<double> setup = makeSetup<double>(lossy);
+  const SweepSetup<double> setup = makeSetup<SweepVehicle, double>(lossy);
   ASSERT_FALSE(setup.ideal_link);
   const GridView grid = lossy.view();
   const long n = lossy.rangeSize();
@@ -150,7 +150,7 @@ TEST(SweepLink, ACombinationIsTheRunnersRunOverItsLink) {
   const std::vector<SimResult> sweep = runOn("scalar", spec);
   const aurora_control::LinkParams file = aurora_control::readLinkFile(configDir() + "/links/wifi_lab.yaml");
   const GridView grid = spec.view();
-  const SweepSetup<double> setup = makeSetup<double>(spec);
+  const SweepSetup<double> setup = makeSetup<SweepVehicle, double>(spec);
   long changed_by_seed = 0;
   for (long i = 0; i < spec.size(); ++i) {
     const Combination c = grid.decode(i);

@@ -16,41 +16,10 @@
 #include "aurora_control/law/bebop2_compensator.h"
 #include "aurora_control/law/pioneer_laws.h"
 #include "aurora_sim/vehicle_yaml.h"
+#include "aurora_sweep/parameters.h"
 #include "aurora_sweep/kernel_entry.h"
 #include "point_mass.h"
 #include "sweep_test_support.h"
-
-namespace aurora_sweep {
-
-// The sweep's kp and kd as the Bebop 2 compensator's horizontal ksp and ksd
-// (a mapping of this test only; its other gains AuRoRA's defaults).
-template <>
-struct SweepGains<aurora_control::Bebop2Compensator> {
-  template <typename T>
-  AURORA_HD static aurora_control::CompensatorGains<T> from(const Combination& c) {
-    aurora_control::CompensatorGains<T> g;
-    aurora_control::castGains(aurora_control::CompensatorGains<double>::defaults(), g);
-    g.ksp[0] = g.ksp[1] = T(c.v[kParamKp]);
-    g.ksd[0] = g.ksd[1] = T(c.v[kParamKd]);
-    return g;
-  }
-};
-
-// The sweep's kp and kd as the Pioneer dynamic controller's kinematic
-// amplitudes kc1 and its compensation gains kd1 (this test's mapping).
-template <>
-struct SweepGains<aurora_control::PioneerDynamic> {
-  template <typename T>
-  AURORA_HD static aurora_control::PioneerDynamicGains<T> from(const Combination& c) {
-    aurora_control::PioneerDynamicGains<T> g;
-    aurora_control::castGains(aurora_control::PioneerDynamicGains<double>::defaults(), g);
-    g.kc1[0] = g.kc1[1] = T(c.v[kParamKp]);
-    g.kd1[0] = g.kd1[1] = T(c.v[kParamKd]);
-    return g;
-  }
-};
-
-}  // namespace aurora_sweep
 
 namespace {
 
@@ -66,6 +35,7 @@ struct PointGrid {
   PointGrid() {
     const int params[4] = {kParamKp, kParamKd, kParamDelay, kParamFirstModelFactor};
     for (int i = 0; i < kParamCount; ++i) view.fixed[i] = 0.0;
+    for (int i = kParamFirstLawGain; i < kParamLawGainEnd; ++i) view.fixed[i] = paramDefault(i);  // the laws' own
     for (int i = 0; i < kModelFactorCount; ++i) view.fixed[kParamFirstModelFactor + i] = 1.0;
     for (int i = 0; i < kLinkParamCount; ++i) view.fixed[kParamFirstLinkValue + i] = std::nan("");
     test::setAxes(view, params, axes);
@@ -211,12 +181,13 @@ TEST(VehicleConcept, ATestVehicleFliesEveryBackend) {
 
 // A real vehicle and its law, added as the seam says (aurora_sim/vehicle/
 // bebop2.h, law/bebop2_compensator.h): the Bebop 2 flies every backend
-// (the SIMD lanes to rounding: xsimd's sin, cos and tanh), its delay and
-// model factor (Ku_x) reaching its runs.
+// (the SIMD lanes to rounding: xsimd's sin, cos and tanh), its gains
+// (the sweep's ksp_xy, ksd_xy: sweep_gains.h), delay and model factor
+// (Ku_x) reaching its runs.
 TEST(VehicleConcept, TheBebop2FliesEveryBackend) {
   PointGrid grid;
   grid.axes = {{1.0, 2.0}, {1.0, 2.0}, {0, 3, 9}, {1.0, 0.8}};
-  const int params[4] = {kParamKp, kParamKd, kParamDelay, kParamFirstModelFactor};
+  const int params[4] = {paramIdOf("ksp_xy"), paramIdOf("ksd_xy"), kParamDelay, kParamFirstModelFactor};
   test::setAxes(grid.view, params, grid.axes);
   const SimSetup<aurora_sim::Bebop2, double> ideal = bebopSetup<double>(aurora_control::LinkParams());
   const std::vector<SimResult> flown = scalarLoop<double, false, BebopLaw>(ideal, grid.view);
@@ -241,7 +212,7 @@ TEST(VehicleConcept, ThePioneerFliesEveryBackend) {
   using PioneerLaw = aurora_control::PioneerDynamic;
   PointGrid grid;
   grid.axes = {{0.2, 0.35}, {0.5, 0.75}, {0, 2, 5}, {1.0, 1.2}};
-  const int params[4] = {kParamKp, kParamKd, kParamDelay, kParamFirstModelFactor};
+  const int params[4] = {paramIdOf("kc1"), paramIdOf("kd1_u"), kParamDelay, kParamFirstModelFactor};
   test::setAxes(grid.view, params, grid.axes);
   auto setup = [](const aurora_control::LinkParams& link, auto precision) {
     using T = decltype(precision);
@@ -253,7 +224,7 @@ TEST(VehicleConcept, ThePioneerFliesEveryBackend) {
   };
   const auto ideal = setup(aurora_control::LinkParams(), 0.0);
   const std::vector<SimResult> flown = scalarLoop<double, false, PioneerLaw>(ideal, grid.view);
-  const Combination c = grid.view.decode(3);  // kc1 0.35, kd1 0.75, no delay, nominal model
+  const Combination c = grid.view.decode(3);  // kc1 0.35, kd1_u 0.75 (AuRoRA's), no delay, nominal model
   ASSERT_EQ(c.delay(), 0);
   EXPECT_NEAR(flown[3].final_pos[0], 2.0, 0.02);
   EXPECT_NEAR(flown[3].final_pos[1], 1.0, 0.02);

@@ -18,14 +18,16 @@ namespace aurora_sweep {
 // thread reads it for the ETA.
 using Progress = std::atomic<long>;
 
+// An AR.Drone sweep's setup (the kernels of its laws take it).
 template <typename T>
 using SweepSetup = SimSetup<SweepVehicle, T>;
 
-template <typename T>
-SweepSetup<T> makeSetup(const SweepSpec& spec) {
-  SweepSetup<T> s;
-  s.vehicle = spec.vehicle;
-  s.model = spec.vehicle.cast<T>();
+// The setup of a sweep whose law flies `Vehicle`.
+template <class Vehicle, typename T>
+SimSetup<Vehicle, T> makeSetup(const SweepSpec& spec) {
+  SimSetup<Vehicle, T> s;
+  s.vehicle = spec.paramsOf(Vehicle());
+  s.model = s.vehicle.template cast<T>();
   s.config.task = spec.task.cast<T>();
   s.config.criteria = spec.criteria.cast<T>();
   s.config.clamp_commands = spec.clamp_commands;
@@ -48,13 +50,24 @@ FormationSetup<T> makeFormationSetup(const SweepSpec& spec) {
   return s;
 }
 
-// Calls f(T(), capacity, law): the sweep's precision, history capacity
-// (limits.h) and law as compile-time values. The CPU backends instantiate
-// their loops here, once.
+// Calls f(Law()) with the law type of a single-robot sweep's controller:
+// one of the AR.Drone's two (spec.law), the Bebop 2 compensator or one of
+// the Pioneer's laws (the one place a sweep's law is chosen by name).
 template <class F>
-void withSweepTypes(const SweepSpec& spec, F&& f) {
+void withSweepLaw(const SweepSpec& spec, F&& f) {
+  bool other = false;
+  forEachOtherLaw([&](auto law) {
+    if (spec.controller == law.name()) other = true, f(law);
+  });
+  if (!other) aurora_control::withLaw(spec.law, f);
+}
+
+// Calls f(T(), capacity, law): the sweep's precision, history capacity
+// (limits.h) and law (chosen by `choose(spec, g)`) as compile-time values.
+template <class Choose, class F>
+void withTypesOf(const SweepSpec& spec, Choose&& choose, F&& f) {
   aurora_control::withHistoryCapacity(spec.historyNeeded(), [&](auto capacity) {
-    aurora_control::withLaw(spec.law, [&](auto law) {
+    choose(spec, [&](auto law) {
       if (spec.precision == Precision::kDouble) {
         f(double(), capacity, law);
       } else {
@@ -64,28 +77,45 @@ void withSweepTypes(const SweepSpec& spec, F&& f) {
   });
 }
 
+// A single-robot sweep's types (any law); the CPU backends instantiate
+// their loops here, once.
+template <class F>
+void withSweepTypes(const SweepSpec& spec, F&& f) {
+  withTypesOf(spec, [](const SweepSpec& s, auto&& g) { withSweepLaw(s, g); }, f);
+}
+
+// A formation sweep's (its drones fly an AR.Drone law).
+template <class F>
+void withFormationTypes(const SweepSpec& spec, F&& f) {
+  withTypesOf(spec, [](const SweepSpec& s, auto&& g) { aurora_control::withLaw(s.law, g); }, f);
+}
+
 // The scalar loops' body (scalar and threaded backends): `loop(n, simulate)`
 // calls simulate(i) once for each i in [0, n), in any order and on any
 // thread; simulate(i) runs combination rangeBegin() + i into out[i].
 template <class Loop>
 void runEachCombination(const SweepSpec& spec, std::vector<SimResult>& out, Progress& progress, Loop&& loop) {
-  withSweepTypes(spec, [&](auto type, auto capacity, auto law) {
-    using T = decltype(type);
-    using Law = decltype(law);
-    constexpr aurora_control::LawType kLaw = Law::value;
-    constexpr int kCapacity = decltype(capacity)::value;
-    const GridView grid = spec.view();
-    const long first = spec.rangeBegin();
-    out.resize(spec.rangeSize());
-    if (spec.formation()) {
+  const GridView grid = spec.view();
+  const long first = spec.rangeBegin();
+  out.resize(spec.rangeSize());
+  if (spec.formation()) {
+    return withFormationTypes(spec, [&](auto type, auto capacity, auto law) {
+      using T = decltype(type);
+      using Law = decltype(law);
+      constexpr int kCapacity = decltype(capacity)::value;
       const FormationSetup<T> setup = makeFormationSetup<T>(spec);
-      return loop(spec.rangeSize(), [&](long i) {
+      loop(spec.rangeSize(), [&](long i) {
         out[i] = setup.ideal_link ? simulateFormation<Law, T, kCapacity, false>(setup, grid, first + i)
                                   : simulateFormation<Law, T, kCapacity, true>(setup, grid, first + i);
         progress.fetch_add(1, std::memory_order_relaxed);
       });
-    }
-    const SweepSetup<T> setup = makeSetup<T>(spec);
+    });
+  }
+  withSweepTypes(spec, [&](auto type, auto capacity, auto law) {
+    using T = decltype(type);
+    using Law = decltype(law);
+    constexpr int kCapacity = decltype(capacity)::value;
+    const auto setup = makeSetup<typename Law::Vehicle, T>(spec);
     loop(spec.rangeSize(), [&](long i) {
       out[i] = setup.ideal_link ? simulateCombination<Law, T, kCapacity, false>(setup, grid, first + i)
                                 : simulateCombination<Law, T, kCapacity, true>(setup, grid, first + i);

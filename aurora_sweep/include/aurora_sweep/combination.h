@@ -51,15 +51,27 @@ AURORA_HD constexpr ShapeLayout layoutOf() {
   return ShapeLayout{Shape::kDrones, Shape::kVariables};
 }
 
-// The room of every combination: the largest shape a sweep flies (three
-// robots, nine variables: AuRoRA's triangle); a shape that needs more is
-// refused where it is laid out (static_assert in shapeLayout).
-constexpr int kParamCount = ShapeLayout{3, 9}.count();
+// The room of the formation parameters: the largest shape a sweep flies
+// (three robots, nine variables: AuRoRA's triangle); a shape that needs more
+// is refused where it is laid out (static_assert in shapeLayout).
+constexpr int kParamFirstLawGain = ShapeLayout{3, 9}.count();
 template <class Shape>
 AURORA_HD constexpr ShapeLayout shapeLayout() {
-  static_assert(layoutOf<Shape>().count() <= kParamCount, "a shape whose parameters exceed kParamCount");
+  static_assert(layoutOf<Shape>().count() <= kParamFirstLawGain, "a shape whose parameters exceed its room");
   return layoutOf<Shape>();
 }
+
+// The gains of the other vehicles' laws (sweep_gains.h: each law's names,
+// from kParamFirstLawGain on): the Bebop 2 compensator's 9 and its period,
+// the Pioneer's dynamic law's 6, its kinematic law's 2.
+enum LawGainId : int {
+  kParamFirstCompensatorGain = kParamFirstLawGain,   // ksp, ksd, kp: each xy, z, yaw
+  kParamCompensatorPeriod = kParamFirstCompensatorGain + 9,
+  kParamFirstPioneerDynamicGain,                     // kc1, kc2, kd1_u, kd1_omega, kd2_u, kd2_omega
+  kParamFirstPioneerKinematicGain = kParamFirstPioneerDynamicGain + 6,  // k1, k2
+  kParamLawGainEnd = kParamFirstPioneerKinematicGain + 2,
+};
+constexpr int kParamCount = kParamLawGainEnd;
 
 // The line of two drones (the shape a sweep file flies today).
 constexpr ShapeLayout kLineLayout{2, 6};

@@ -12,7 +12,10 @@
 
 namespace aurora_sweep {
 
-enum class ParamGroup { kPdGain, kDelay, kUnderactuatedGain, kModelFactor, kLink, kRepeat, kDroneDelay, kFormationGain, kDroneLink, kUnused };
+enum class ParamGroup {
+  kPdGain, kDelay, kUnderactuatedGain, kModelFactor, kLink, kRepeat, kDroneDelay, kFormationGain, kDroneLink, kUnused,
+  kLawGain,  // another vehicle's law's (sweep_gains.h)
+};
 
 struct ParamInfo {
   std::string name;
@@ -20,6 +23,8 @@ struct ParamInfo {
   double min, max;    // accepted values (inclusive)
   std::string limit;  // why: shown when a value or range is refused
   bool whole = false; // whole samples only (the delays, the jitters)
+  std::string law;    // a gain's: the controller whose gain it is (pd_saturated, ..., pioneer_kinematic)
+  double preset = 0;  // a kLawGain's default (the law's defaults())
 };
 
 const ParamInfo& paramInfo(int id);
@@ -28,18 +33,23 @@ int paramIdOf(const std::string& name);
 // A short name; "kp", "k1_theta", "m", ...
 inline const char* paramName(int id) { return paramInfo(id).name.c_str(); }
 
-// Whether a sweep of law `law` accepts parameter `id` (its gains, the delay,
-// the model, the link); a formation sweep (`formation`) accepts its drones'
-// delays, the formation's gains and the link's values instead.
-bool paramApplies(int id, aurora_control::LawType law, bool formation = false);
+// Whether a sweep of controller `controller` (a law's name) accepts
+// parameter `id` (its gains, the delay, the model factors of the AR.Drone,
+// the link); a formation sweep (`formation`) accepts its drones' delays, the
+// formation's gains and the link's values instead.
+bool paramApplies(int id, const std::string& controller, bool formation = false);
 // The accepted names, in ParamId order, comma separated.
-std::string acceptedParamNames(aurora_control::LawType law, bool formation = false);
+std::string acceptedParamNames(const std::string& controller, bool formation = false);
+// The controllers a sweep flies, comma separated, quoted: the AR.Drone's
+// two, the Bebop 2 compensator, the Pioneer's two.
+std::string sweepControllerNames();
 // "pd_saturated" / "underactuated" (control_law.h).
 using aurora_control::lawFromName;
 using aurora_control::lawName;
 
 // The value of a parameter a sweep file leaves out: the underactuated law's
-// gains default to the spec's (UnderactuatedGains::defaults), model factors
+// gains default to the spec's (UnderactuatedGains::defaults), the other
+// vehicles' laws' gains to their defaults (sweep_gains.h), model factors
 // to 1, the link's values to an ideal link's (a sweep's link file replaces
 // them), the repeat to 0, the formation's gains to AuRoRA's (a formation
 // file's replace them). The PD gains and the delays have none (NaN: the file

@@ -61,7 +61,8 @@ bool hdf5Available();
 std::unique_ptr<ResultsWriter> openHdf5Writer(const std::string& path, const SweepSpec& spec,
                                               bool feasible_only);
 
-// For grids varying kp, kd and delay (one run each): per gain pair, is feasibility monotone
+// For grids varying two of the law's gains and the delay (one run each:
+// kp, kd and delay for the PD law): per gain pair, is feasibility monotone
 // in the delay (feasible up to some delay, infeasible beyond)? A pair that
 // fails, then holds again at a longer delay is counted (summary.json).
 class DelayMonotony {
@@ -71,11 +72,13 @@ class DelayMonotony {
   void add(long first, const std::vector<SimResult>& results);
   long pairs() const { return static_cast<long>(feasible_.size() / delays_.size()); }
   long nonMonotonePairs() const;
+  const int* gains() const { return gain_; }  // the two gains' ParamIds, in the grid's order
 
  private:
   bool applies_ = false;
   GridView grid_;
-  std::vector<double> kps_, kds_, delays_;
+  int gain_[2] = {kParamKp, kParamKd};
+  std::vector<double> values_[2], delays_;
   std::vector<unsigned char> feasible_;  // [pair][delay]
 };
 

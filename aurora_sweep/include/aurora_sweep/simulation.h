@@ -8,6 +8,7 @@
 
 #include "aurora_control/loop/positioning_runner.h"
 #include "aurora_sweep/combination.h"
+#include "aurora_sweep/sweep_gains.h"
 
 namespace aurora_sweep {
 
@@ -24,27 +25,6 @@ struct SimSetup {
 };
 
 static_assert(kLinkParamCount == aurora_control::kLinkValueCount, "one sweep parameter per link value");
-
-// How a combination's values set the gains of a law with data `Data`
-// (control_law.h): each law family names the sweep parameters it reads.
-template <class Data>
-struct SweepGains;
-
-// The AR.Drone's laws: the PD law's kp, kd; the underactuated law's 12
-// gains (underactuatedGainName order).
-template <>
-struct SweepGains<aurora_control::ArdroneLawData> {
-  template <typename T>
-  AURORA_HD static aurora_control::LawGains<T> from(const Combination& c) {
-    aurora_control::LawGains<T> g;
-    g.pd.kp = T(c.v[kParamKp]);
-    g.pd.kd = T(c.v[kParamKd]);
-    for (int i = 0; i < kUnderactuatedGainCount; ++i) {
-      aurora_control::underactuatedGain(g.underactuated, i) = T(c.v[kParamFirstUnderactuatedGain + i]);
-    }
-    return g;
-  }
-};
 
 // A combination's own run of law `Law`: its gains, its delay and its
 // vehicle (the vehicle file's scaled by the combination's model factors,

@@ -10,7 +10,7 @@
 #include "aurora_control/formation/formation_runner.h"
 #include "aurora_control/link/link.h"
 #include "aurora_control/task/task.h"
-#include "aurora_sim/ardrone_params.h"
+#include "aurora_sim/vehicle/vehicle_type.h"
 #include "aurora_sweep/combination.h"
 #include "aurora_sweep/parameters.h"
 
@@ -28,17 +28,33 @@ struct Axis {
   std::vector<double> values;
 };
 
-// The sweep's vehicle: the one its laws fly (both AR.Drone laws'), whose
-// file the sweep file names (`vehicle:`, of that `type:`).
+// The AR.Drone: the vehicle of the AR.Drone's laws and of formation sweeps.
 using SweepVehicle = aurora_control::ArdroneLawData::Vehicle;
 
 struct SweepSpec {
   std::string file;                 // the sweep file it came from
   std::string name;
-  std::string controller = "pd_saturated";
-  aurora_control::LawType law = aurora_control::LawType::kPdSaturated;
+  std::string controller = "pd_saturated";                               // the law's name
+  aurora_control::LawType law = aurora_control::LawType::kPdSaturated;  // an AR.Drone law's
+  // The vehicle the controller flies (its file: `vehicle:`, of that
+  // `type:`): the AR.Drone's parameters in `vehicle`, another vehicle's in
+  // its own member (paramsOf).
   std::string vehicle_file;
+  std::string vehicle_type = aurora_sim::Ardrone2::name();
   SweepVehicle::Params<double> vehicle{};
+  aurora_sim::Bebop2::Params<double> bebop2{};
+  aurora_sim::Pioneer3dx::Params<double> pioneer3dx{};
+  const SweepVehicle::Params<double>& paramsOf(aurora_sim::Ardrone2) const { return vehicle; }
+  const aurora_sim::Bebop2::Params<double>& paramsOf(aurora_sim::Bebop2) const { return bebop2; }
+  const aurora_sim::Pioneer3dx::Params<double>& paramsOf(aurora_sim::Pioneer3dx) const { return pioneer3dx; }
+  SweepVehicle::Params<double>& paramsOf(aurora_sim::Ardrone2) { return vehicle; }
+  aurora_sim::Bebop2::Params<double>& paramsOf(aurora_sim::Bebop2) { return bebop2; }
+  aurora_sim::Pioneer3dx::Params<double>& paramsOf(aurora_sim::Pioneer3dx) { return pioneer3dx; }
+  double Ts() const {
+    return vehicle_type == aurora_sim::Bebop2::name()       ? bebop2.Ts
+           : vehicle_type == aurora_sim::Pioneer3dx::name() ? pioneer3dx.Ts
+                                                            : vehicle.Ts;
+  }
   // The task (one schema with the node: positioning point, waypoints,
   // circle, lemniscate); the study's by default.
   aurora_control::Task<double> task = aurora_control::positioningTask(2.0, 1.0, 2.0, 60.0);
@@ -56,10 +72,10 @@ struct SweepSpec {
   // The loop iterations (ticks) of every run: 1801 for the 60 s study.
   long iterations() const {
     return formation() ? aurora_control::formationTicks(duration(), vehicle.Ts)
-                       : aurora_control::studyIterationCount(duration(), vehicle.Ts);
+                       : aurora_control::studyIterationCount(duration(), Ts());
   }
   // Whether this sweep accepts parameter `id` (parameters.h).
-  bool accepts(int id) const { return paramApplies(id, law, formation()); }
+  bool accepts(int id) const { return paramApplies(id, controller, formation()); }
   aurora_control::FeasibilityCriteria<double> criteria =
       aurora_control::FeasibilityCriteria<double>::study();
   std::vector<Axis> axes;           // in variation order: axes[0] varies fastest

@@ -213,9 +213,10 @@ def formation_delays(np, plt, cols, ok, summary, out):
     plt.close(fig)
 
 
-def max_tolerable_delay(np, plt, kp, kd, delay, feasible, summary, out):
-    """For each (Kp, Kd): the largest d such that every delay up to d is
-    feasible (-1 when delay 0 already fails): the thesis's question."""
+def max_tolerable_delay(np, plt, gains, kp, kd, delay, feasible, summary, out):
+    """For each pair of the two gains (Kp, Kd for the PD law): the largest d
+    such that every delay up to d is feasible (-1 when delay 0 already
+    fails): the thesis's question."""
     ukp, ukd, ud = np.unique(kp), np.unique(kd), np.unique(delay)
     if len(ukp) < 2 or len(ukd) < 2 or len(ud) < 2 or len(kp) != len(ukp) * len(ukd) * len(ud):
         return
@@ -227,8 +228,8 @@ def max_tolerable_delay(np, plt, kp, kd, delay, feasible, summary, out):
     fig, ax = plt.subplots(figsize=(7, 5.5))
     im = ax.pcolormesh(cell_edges(np, ukp), cell_edges(np, ukd), tolerable, cmap="viridis")
     fig.colorbar(im, ax=ax, label="max tolerable delay [samples]")
-    ax.set_xlabel("Kp")
-    ax.set_ylabel("Kd")
+    ax.set_xlabel(gain_label(gains[0]))
+    ax.set_ylabel(gain_label(gains[1]))
     mono = summary.get("delay_monotony", {})
     ax.set_title("%s: every delay up to this one is feasible (blank: none)\n%s of %s gain pairs not monotone in the delay"
                  % (summary.get("name", "sweep"), mono.get("not_monotone", "?"), mono.get("gain_pairs", "?")))
@@ -237,10 +238,17 @@ def max_tolerable_delay(np, plt, kp, kd, delay, feasible, summary, out):
     plt.close(fig)
 
 
-def volume(np, plt, cols, mask, title, name, summary, total, out):
-    """The feasible (or one check's) set over (Kp, Kd, delay) in 3D and its
-    three projections (the thesis's figure 23a), as DIR/name."""
-    kp, kd, delay = cols["kp"], cols["kd"], cols["delay"]
+def gain_label(name):
+    """Kp, Kd for the PD law's gains; another law's gain by its name."""
+    return {"kp": "Kp", "kd": "Kd"}.get(name, name)
+
+
+def volume(np, plt, gains, cols, mask, title, name, summary, total, out):
+    """The feasible (or one check's) set over the two gains (Kp, Kd) and the
+    delay in 3D and its three projections (the thesis's figure 23a), as
+    DIR/name."""
+    kp, kd, delay = cols[gains[0]], cols[gains[1]], cols["delay"]
+    gx, gy = gain_label(gains[0]), gain_label(gains[1])
     fig = plt.figure(figsize=(12, 9))
     ax = fig.add_subplot(2, 2, 1, projection="3d")
     shown = np.flatnonzero(mask)
@@ -248,15 +256,15 @@ def volume(np, plt, cols, mask, title, name, summary, total, out):
         shown = np.sort(np.random.default_rng(0).choice(shown, MAX_SCATTER, replace=False))
         title += "\n(3D: %d of %d points shown)" % (MAX_SCATTER, int(mask.sum()))
     ax.scatter(kp[shown], kd[shown], delay[shown], s=4, c=delay[shown], cmap="viridis", depthshade=True)
-    ax.set_xlabel("Kp"); ax.set_ylabel("Kd"); ax.set_zlabel("delay [samples]")
+    ax.set_xlabel(gx); ax.set_ylabel(gy); ax.set_zlabel("delay [samples]")
     ax.set_xlim(kp.min(), kp.max()); ax.set_ylim(kd.min(), kd.max()); ax.set_zlim(delay.min(), delay.max())
     ax.set_title(title)
     # Projections: the largest delay that still holds at each (Kp, Kd), and
     # how many values of the third parameter hold in the other planes.
     ukp, ukd, ud = np.unique(kp), np.unique(kd), np.unique(delay)
-    panels = ((2, "Kp", "Kd", ukp, ukd, kp, kd, "largest delay that holds [samples]", "max"),
-              (3, "Kp", "delay [samples]", ukp, ud, kp, delay, "number of Kd values that hold", "count"),
-              (4, "Kd", "delay [samples]", ukd, ud, kd, delay, "number of Kp values that hold", "count"))
+    panels = ((2, gx, gy, ukp, ukd, kp, kd, "largest delay that holds [samples]", "max"),
+              (3, gx, "delay [samples]", ukp, ud, kp, delay, "number of %s values that hold" % gy, "count"),
+              (4, gy, "delay [samples]", ukd, ud, kd, delay, "number of %s values that hold" % gx, "count"))
     for panel in panels:
         projection(np, fig, panel, mask, delay)
     fig.suptitle("%s: %d of %d combinations (%s, %s)" % (
@@ -333,15 +341,18 @@ def main(argv):
     pairs(np, plt, params, ok["feasible"], summary, out)
     link_margins(np, plt, cols, ok["feasible"], summary, out)
     formation_delays(np, plt, cols, ok, summary, out)
-    # The (Kp, Kd, delay) figures of the thesis: the PD law's grids.
-    if not {"kp", "kd", "delay"} <= set(names):
+    # The (Kp, Kd, delay) figures of the thesis: the PD law's grids, or
+    # another law's grid of two gains and the delay (summary's delay_monotony).
+    gains = summary.get("delay_monotony", {}).get("gains", ["kp", "kd"])
+    if not set(gains + ["delay"]) <= set(names):
         return 0
-    if summary.get("design", "grid") == "grid" and total == len(cols["kp"]) and summary.get("repeats", 1) == 1:
-        volume(np, plt, cols, ok["feasible"], "feasible set", "feasible_volume.png", summary, total, out)
-        max_tolerable_delay(np, plt, cols["kp"], cols["kd"], cols["delay"], ok["feasible"], summary, out)
+    if summary.get("design", "grid") == "grid" and total == len(cols[gains[0]]) and summary.get("repeats", 1) == 1:
+        volume(np, plt, gains, cols, ok["feasible"], "feasible set", "feasible_volume.png", summary, total, out)
+        max_tolerable_delay(np, plt, gains, cols[gains[0]], cols[gains[1]], cols["delay"], ok["feasible"], summary,
+                            out)
     if summary.get("early_stop") is False:
         titles = {"ok1": "check 1: e <= 5 m", "ok2": "check 2: IAE limit", "ok3": "check 3: ITAE limit",
                   "ok4": "check 4: e <= 2 |e0|"}
         for k, title in titles.items():
-            volume(np, plt, cols, ok[k], title, "check%s_region.png" % k[-1], summary, total, out)
+            volume(np, plt, gains, cols, ok[k], title, "check%s_region.png" % k[-1], summary, total, out)
     return 0

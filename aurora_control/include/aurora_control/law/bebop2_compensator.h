@@ -17,6 +17,9 @@
 
 namespace aurora_control {
 
+// The largest gain a controller file or a sweep gives the compensator.
+constexpr double kCompensatorGainMax = 100.0;
+
 // The 16 gains in the order of x, y, z, yaw within each group (kd is
 // AuRoRA's fourth group, which its law never reads), and the law's period.
 // Gains and memory are structs of T only (the SIMD engine sets them lane

@@ -14,8 +14,6 @@
 
 namespace aurora_control {
 
-constexpr double kCompensatorGainMax = 100.0;
-
 struct CompensatorFile {
   CompensatorGains<double> gains;  // period_steps set by compensatorPeriod
   double rate = 30.0;              // [Hz] the law's

@@ -15,6 +15,10 @@
 
 namespace aurora_control {
 
+// The largest gain a controller file or a sweep gives the Pioneer's laws
+// ([1/m], [m/s] and the compensation's): beyond 10 the tanh laws are steps.
+constexpr double kPioneerGainMax = 10.0;
+
 // The kinematic law's reference velocity Ur = K^-1 (dXd + K1 tanh(K2 Xtil))
 // on x, y (eq. P4), K^-1 in closed form at heading psi, each saturated.
 template <typename T>

@@ -12,9 +12,6 @@
 
 namespace aurora_control {
 
-// [1/m], [m/s] and the compensation's gains: beyond 10 the tanh laws are steps.
-constexpr double kPioneerGainMax = 10.0;
-
 // The gain lists of each law, and its file's keys.
 inline void readPioneerGains(const YamlReader& r, const YAML::Node& c, PioneerKinematicGains<double>& g) {
   r.onlyKeys(c, "controller", {"name", "k1", "k2"});
