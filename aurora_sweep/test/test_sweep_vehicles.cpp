@@ -43,34 +43,13 @@ void expectSameRecord(const SimResult& a, const SimResult& b, long index) {
   EXPECT_EQ(std::memcmp(&a, &b, sizeof(SimResult)), 0) << "combination " << index;
 }
 
-// The SIMD lanes against the scalar loop: every flag and step count equal;
-// the metrics to 1e-9 relative for nine runs in ten at least (xsimd's
-// tanh, sin and cos differ from libm's in the last bits), and to 1e-2 for
-// every run: a run oscillating against the clamp for 60 s amplifies those
-// bits (the checks still agree).
-void expectLanesAgree(const std::vector<SimResult>& scalar, const std::vector<SimResult>& simd) {
-  ASSERT_EQ(scalar.size(), simd.size());
-  long loose = 0;
-  for (size_t i = 0; i < scalar.size(); ++i) {
-    EXPECT_EQ(scalar[i].ok, simd[i].ok) << i;
-    EXPECT_EQ(scalar[i].steps, simd[i].steps) << i;
-    bool close = true;
-    for (auto m : {&SimResult::iae, &SimResult::itae, &SimResult::iasc}) {
-      EXPECT_PRED3(test::relClose, scalar[i].*m, simd[i].*m, 1e-2) << i;
-      close = close && test::relClose(scalar[i].*m, simd[i].*m, 1e-9);
-    }
-    loose += !close;
-  }
-  EXPECT_LE(loose * 10, static_cast<long>(scalar.size())) << loose << " runs beyond 1e-9";
-}
-
 // The spec cut to [begin, begin + n): the scalar loop, the SIMD lanes and
 // the kernel's threads agree.
 template <class Law>
 void expectBackendsAgree(SweepSpec spec, long begin, long n) {
   spec.range_begin = begin, spec.range_end = begin + n;
   const std::vector<SimResult> scalar = test::runOn("scalar", spec);
-  expectLanesAgree(scalar, test::runOn("cpu", spec));
+  test::expectRunsAgree(scalar, test::runOn("cpu", spec), 0.0);
   const auto setup = makeSetup<typename Law::Vehicle, double>(spec);
   const GridView grid = spec.view();
   const std::vector<SimResult> threads = test::launchOnHost(n, 32, [&](unsigned b, unsigned block, unsigned t,
