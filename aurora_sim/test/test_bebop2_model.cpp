@@ -9,6 +9,7 @@
 #include <string>
 
 #include "aurora_sim/vehicle/bebop2.h"
+#include "aurora_sim/vehicle/pioneer3dx.h"
 #include "aurora_sim/vehicle_yaml.h"
 
 namespace {
@@ -117,4 +118,50 @@ TEST(Bebop2Model, CmdVelIsTheCommandAsItIs) {
   double back[4];
   Bebop2::fromDriver(t, back);
   for (int i = 0; i < 4; ++i) EXPECT_EQ(back[i], U[i]);
+}
+
+namespace {
+
+// The shipped file of `vehicle` with `from` replaced by `to`: the refusal
+// of loading it as a Vehicle ("" when it loads).
+template <class Vehicle>
+std::string refusalOfEdited(const std::string& from, const std::string& to) {
+  std::ifstream in(std::string(AURORA_CONFIG_DIR) + "/vehicles/" + Vehicle::name() + ".yaml");
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const size_t at = text.find(from);
+  if (at == std::string::npos) return "the test's edit '" + from + "' is not in the file";
+  text.replace(at, from.size(), to);
+  const std::string path = ::testing::TempDir() + "/edited_" + Vehicle::name() + ".yaml";
+  std::ofstream(path) << text;
+  try {
+    aurora_sim::loadVehicleFile<Vehicle>(path);
+  } catch (const aurora_common::ConfigError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+// The other vehicles' files are read as strictly as the AR.Drone's: a
+// missing, unknown or out-of-range key is refused naming it and what is
+// accepted (issue 33: a Ku of zero, a negative theta1).
+TEST(VehicleFile, TheOtherVehiclesFilesAreCheckedKeyByKey) {
+  using aurora_sim::Pioneer3dx;
+  EXPECT_EQ(refusalOfEdited<Bebop2>("z: 3.966", "z: 3.966"), "");
+  std::string e = refusalOfEdited<Bebop2>("z: 3.966", "z: 0.0");
+  EXPECT_NE(e.find("input_gain/z"), std::string::npos) << e;
+  EXPECT_NE(e.find("accepted range"), std::string::npos) << e;
+  e = refusalOfEdited<Bebop2>("  z: 3.966", "  zz: 3.966");
+  EXPECT_NE(e.find("lacks the key 'input_gain/z'"), std::string::npos) << e;
+  e = refusalOfEdited<Bebop2>("model_bug_rotated_drag: false", "model_bug_rotated_drag: false\nmass: 0.5");
+  EXPECT_NE(e.find("'mass' is not a key of a bebop2 file: accepted type, sample_time, input_gain/x"),
+            std::string::npos) << e;
+  e = refusalOfEdited<Pioneer3dx>("theta1: 0.5338", "theta1: -0.5338");
+  EXPECT_NE(e.find("dynamics/theta1"), std::string::npos) << e;
+  EXPECT_NE(e.find("accepted range"), std::string::npos) << e;
+  e = refusalOfEdited<Pioneer3dx>("control_point: 0.15", "control_point: 0.15\nwheel_base: 0.4");
+  EXPECT_NE(e.find("'wheel_base' is not a key of a pioneer3dx file"), std::string::npos) << e;
+  e = refusalOfEdited<Pioneer3dx>("kinematic_model: false", "kinematic_model: maybe");
+  EXPECT_NE(e.find("'kinematic_model' is not true or false"), std::string::npos) << e;
 }

@@ -260,9 +260,12 @@ class FormationAndLinkArgumentsTest(unittest.TestCase):
         rc, out = flight("--controller", "pioneer_kinematic", "--task", "pioneer_lemniscate")
         self.assertEqual(rc, 0, out)
         self.assertIn("flight: pioneer_kinematic", out)
-        self.refused(["--controller", "pioneer_dynamic", "--task", "lemniscate"],
-                     "'task.height' = 1.5 is outside the accepted range [0, 0] m (a ground robot's task lies on the "
-                     "floor)")
+        with tempfile.TemporaryDirectory() as tmp:  # refused before anything is written
+            csv = os.path.join(tmp, "never.csv")
+            self.refused(["--controller", "pioneer_dynamic", "--task", "lemniscate", "--csv", csv],
+                         "'task.height' = 1.5 is outside the accepted range [0, 0] m (a ground robot's task lies on "
+                         "the floor)")
+            self.assertFalse(os.path.exists(csv))
         self.refused(["--controller", "pioneer_dynamic", "--task", "mission4"],
                      "'task.waypoints[0]' has z = 1.5 m: accepted heights [0, 0] m")
         self.refused(["--controller", "pd_saturated", "--task", "pioneer_lemniscate"],

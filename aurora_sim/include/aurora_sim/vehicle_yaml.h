@@ -7,8 +7,10 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "aurora_common/refusal_text.h"
 #include "aurora_sim/vehicle/vehicle_type.h"
@@ -37,6 +39,32 @@ inline double vehicleFileNumber(const YAML::Node& root, const std::string& path,
   }
 }
 
+// The '/'-separated paths of the leaves under `node` (a mapping's), e.g.
+// "dynamics/theta1".
+inline void vehicleFileLeaves(const YAML::Node& node, const std::string& at, std::vector<std::string>& leaves) {
+  for (const auto& kv : node) {
+    const std::string key = at + kv.first.as<std::string>();
+    if (kv.second.IsMap()) vehicleFileLeaves(kv.second, key + "/", leaves);
+    else leaves.push_back(key);
+  }
+}
+
+// A key a `Vehicle` file does not have (a typo, another vehicle's key) is
+// refused naming it and the accepted ones: it would be silently ignored.
+template <class Vehicle>
+void refuseUnknownVehicleKeys(const YAML::Node& root, const std::string& path) {
+  std::vector<std::string> leaves, accepted{"type"};
+  vehicleFileLeaves(root, "", leaves);
+  for (const auto& key : Vehicle::fileKeys()) accepted.push_back(key.name);
+  for (const std::string& leaf : leaves) {
+    if (std::find(accepted.begin(), accepted.end(), leaf) != accepted.end()) continue;
+    std::string names;
+    for (const std::string& a : accepted) names += (names.empty() ? "" : ", ") + a;
+    throw aurora_common::ConfigError("vehicle file '" + path + "': '" + leaf + "' is not a key of a " +
+                                     Vehicle::name() + " file: accepted " + names);
+  }
+}
+
 // The parameters of a vehicle of type `Vehicle` from the file at `path`,
 // which `flown_by` (e.g. "the controller 'pd_saturated'") flies.
 template <class Vehicle>
@@ -48,9 +76,12 @@ typename Vehicle::template Params<double> loadVehicleFile(const std::string& pat
     type = root.IsMap() && root["type"] ? root["type"].as<std::string>() : "";
   } catch (const YAML::Exception&) {
   }
-  return vehicleFromKeys<Vehicle>("vehicle file '" + path + "': ", type, flown_by, path + ": ", [&](const auto& key) {
-    return vehicleFileNumber(root, path, key.name, key.unit, key.flag);
-  });
+  const auto params = vehicleFromKeys<Vehicle>("vehicle file '" + path + "': ", type, flown_by, path + ": ",
+                                               [&](const auto& key) {
+                                                 return vehicleFileNumber(root, path, key.name, key.unit, key.flag);
+                                               });
+  refuseUnknownVehicleKeys<Vehicle>(root, path);
+  return params;
 }
 
 // The AR.Drone 2.0's (every loop of this build flies it).
