@@ -14,7 +14,9 @@
 #include "aurora_control/link/link_yaml.h"
 #include "aurora_sweep/kernel_entry.h"
 #include "sweep_test_support.h"
+#ifdef AURORA_SWEEP_LANES  // xsimd >= 8
 #include "../src/lane_links.h"
+#endif
 
 using namespace aurora_sweep;
 using namespace aurora_sweep::test;
@@ -65,6 +67,7 @@ TEST(SweepLink, EveryCpuBackendAgreesOverALossyLink) {
   EXPECT_NE(definitionHash(lossy), definitionHash(smallGrid("wifi_lab")));
 }
 
+#ifdef AURORA_SWEEP_LANES
 // The SIMD lanes' own link models (lane_links.h: links without a geometric
 // jitter): the same draws and decisions as ModelLink, so the same flags and
 // steps as the scalar loop; with link values varied per lane and repeats.
@@ -114,6 +117,7 @@ void expectLanePhiloxIsRandom123s() {
 TEST(SweepLink, LanePhiloxIsRandom123s) {
   expectLanePhiloxIsRandom123s<xsimd::default_arch>();
 }
+#endif
 
 // Each CUDA thread's body over a link (kernel_entry.h), on the host.
 TEST(SweepLink, TheKernelsPerThreadEntryOverALinkIsTheScalarLoop) {

@@ -14,6 +14,8 @@ namespace three_abreast {
 
 template <typename T>
 struct ThreeAbreast {
+  using Law = aurora_control::FormationLaw;
+  static constexpr Law kDefaultLaw = aurora_control::FormationLaw::kInverseKinematics;
   static constexpr int kDrones = 3;
   static constexpr int kVariables = 9;
 
@@ -26,6 +28,9 @@ struct ThreeAbreast {
       Q[3 + i] = X[3 + i] - X[i];
       Q[6 + i] = X[6 + i] - X[i];
     }
+  }
+  AURORA_HD static void error(const T[9], const T Qd[9], const T Q[9], T e[9]) {
+    for (int i = 0; i < 9; ++i) e[i] = Qd[i] - Q[i];
   }
   AURORA_HD static void formationPosition(const T X[9], T p[3]) {
     for (int i = 0; i < 3; ++i) p[i] = X[i];

@@ -38,7 +38,7 @@ class FormationLayer {
   static constexpr int kN = Shape::kVariables;  // Q's size; also the drones' stacked positions (3 per drone)
   static_assert(kN == 3 * Shape::kDrones, "a shape of d drones has 3 d variables here");
 
-  AURORA_HD FormationLayer(FormationLaw law, const FormationGains<T, kN>& gains, T period)
+  AURORA_HD FormationLayer(typename Shape::Law law, const FormationGains<T, kN>& gains, T period)
       : law_(law), gains_(gains), period_(period) {}
 
   // Before the first period: the references are the drones' start
@@ -49,15 +49,17 @@ class FormationLayer {
   }
 
   // One period on the positions X the layer sees, towards Qd (eq. F3):
-  // Q of X, Q~ = Qd - Q (no angle wrapping), dQd the backward difference over
-  // the period, v = dQd + K1 tanh(K2 Q~), dXr of v by the law, Xr += dXr T_F.
+  // Q of X, Q~ = Qd - Q (the shape's error: the line's without angle
+  // wrapping, the triangle's with its wraps), dQd the backward difference
+  // over the period, v = dQd + K1 tanh(K2 Q~), dXr of v by the law,
+  // Xr += dXr T_F.
   AURORA_HD void update(const T X[kN], const T Qd[kN]) {
     using std::tanh;
     Shape::variables(X, Q_);
+    Shape::error(X, Qd, Q_, Qtil_);
     T v[kN];
     for (int i = 0; i < kN; ++i) {
       Qd_[i] = Qd[i];
-      Qtil_[i] = Qd[i] - Q_[i];
       dQd_[i] = (Qd[i] - Qd_prev_[i]) / period_;
       v[i] = dQd_[i] + gains_.k1[i] * tanh(gains_.k2[i] * Qtil_[i]);
       Qd_prev_[i] = Qd[i];
@@ -77,7 +79,7 @@ class FormationLayer {
   AURORA_HD T period() const { return period_; }
 
  private:
-  FormationLaw law_;
+  typename Shape::Law law_;
   FormationGains<T, kN> gains_;
   T period_;  // [s] T_F
   T Xr_[kN], dXr_[kN], Qd_prev_[kN];

@@ -42,7 +42,7 @@ template <typename T, class Shape, class Data = ArdroneLawData>
 struct FormationRun {
   static constexpr int kDrones = Shape::kDrones, kN = Shape::kVariables;
   FormationDrone<T, Data> drone[kDrones];
-  FormationLaw law = FormationLaw::kPositionPriority;
+  typename Shape::Law law = Shape::kDefaultLaw;
   FormationGains<T, kN> gains = FormationGains<T, kN>::template of<Shape>();
   long period_steps = 6;  // the layer's period in drone steps (0.2 s at 1/30 s)
   FormationReference<T, kN> reference;

@@ -24,6 +24,8 @@ enum class FormationLaw : int {
 
 template <typename T>
 struct LineFormation {
+  using Law = FormationLaw;
+  static constexpr Law kDefaultLaw = FormationLaw::kPositionPriority;  // the lab's script
   static constexpr int kDrones = 2;
   static constexpr int kVariables = 6;
   // The line is singular where the drones are level (eq. F4 divides by
@@ -63,6 +65,12 @@ struct LineFormation {
     Q[3] = rho;
     Q[4] = asin(d[0] / rho);
     Q[5] = asin(d[1] / rho);
+  }
+
+  // The error Q~ = Qd - Q: no angle wraps (the line's angles stay within
+  // [-pi/2, pi/2]).
+  AURORA_HD static void error(const T[6], const T Qd[6], const T Q[6], T e[6]) {
+    for (int i = 0; i < 6; ++i) e[i] = Qd[i] - Q[i];
   }
 
   // The formation's position of positions X: drone 1's.

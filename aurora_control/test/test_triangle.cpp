@@ -1,0 +1,206 @@
+// AuRoRA's 3-D triangle (docs/formation.md, "The triangle"): the
+// variables, their inverse, the closed-form Jacobian's pseudo-inverses
+// against their definitions, and the standard kinematic scenario through
+// the formation layer: the first step of each law equals the values the
+// spec computed with AuRoRA's own code, and the run tracks as it does.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "aurora_control/formation/formation_layer.h"
+#include "aurora_control/formation/triangle_formation.h"
+#include "aurora_control/formation/triangle_reference.h"
+
+namespace {
+
+using aurora_control::FormationGains;
+using aurora_control::FormationLayer;
+using aurora_control::TriangleLaw;
+using Triangle = aurora_control::TriangleFormation<double>;
+using Layer = FormationLayer<double, Triangle>;
+
+// The standard scenario's start (docs/formation.md): R1 (1, 0, 0), R2
+// (-1, 0, 0), R3 (0, 1, 0) at height z0.
+std::vector<double> start(double z0) { return {1, 0, z0, -1, 0, z0, 0, 1, z0}; }
+
+void expectNear(const double* got, const std::vector<double>& want, double tol, const char* what) {
+  for (size_t i = 0; i < want.size(); ++i) {
+    EXPECT_NEAR(got[i], want[i], tol * (1.0 + std::fabs(want[i]))) << what << " [" << i << "]";
+  }
+}
+
+// A layer of law `law` with gains K1 = k1 I, K2 = I, period 0.05 s,
+// started at X0 towards the reference at t = 0.
+Layer layerOf(TriangleLaw law, double k1, const double X0[9]) {
+  FormationGains<double, 9> g;
+  for (int i = 0; i < 9; ++i) g.k1[i] = k1, g.k2[i] = 1.0;
+  Layer layer(law, g, 0.05);
+  double Qd0[9];
+  aurora_control::carrouselReference(0.0, Qd0);
+  layer.start(X0, Qd0);
+  return layer;
+}
+
+// The layer's first period: dQd = 0, dXr of each law on the start.
+std::vector<double> firstVelocities(TriangleLaw law, double k1, double z0) {
+  const std::vector<double> X0 = start(z0);
+  Layer layer = layerOf(law, k1, X0.data());
+  double Qd[9];
+  aurora_control::carrouselReference(0.0, Qd);
+  layer.update(X0.data(), Qd);
+  std::vector<double> dX(9);
+  for (int d = 0; d < 3; ++d) {
+    for (int i = 0; i < 3; ++i) dX[3 * d + i] = layer.velocity(d)[i];
+  }
+  return dX;
+}
+
+}  // namespace
+
+TEST(Triangle, TheStartsVariablesAreTheSpecs) {
+  const std::vector<double> X = start(0.75);
+  double Q[9];
+  Triangle::variables(X.data(), Q);
+  expectNear(Q, {0, 1.0 / 3.0, 0.75, 2, std::sqrt(2.0), M_PI / 4, 0, 0, -0.3217505544}, 1e-10, "Q");
+  EXPECT_TRUE(std::signbit(Q[6]));  // 0 / -1: atan gives -0, as the original
+  double Qd[9];
+  aurora_control::carrouselReference(0.0, Qd);
+  expectNear(Qd, {0, 0, 1.6, 1.6, 1.6, M_PI / 3, 0, 0, -0.1}, 1e-15, "Qd(0)");
+}
+
+// The inverse gives back a reachable formation (theta = 0, phi in {0, pi};
+// away from a median along x, where phi is 0 / 0, and along y).
+TEST(Triangle, TheInverseGivesBackAReachableFormation) {
+  for (double psi : {-2.5, -0.3, 1.2, 3.0}) {
+    const double Qd[9] = {0.3, -0.2, 1.4, 1.6, 1.9, 1.1, 0.0, 0.0, psi};
+    double X[9], Q[9];
+    Triangle::positions(Qd, X);
+    Triangle::variables(X, Q);
+    for (int i = 0; i < 9; ++i) EXPECT_NEAR(Q[i], Qd[i], 1e-12) << "psi " << psi << " [" << i << "]";
+  }
+  // A median along x: phi's row is singular (0 / 0); its error is 0, as
+  // the spec decides, not NaN.
+  const double along_x[9] = {0.3, -0.2, 1.4, 1.6, 1.9, 1.1, 0.0, 0.0, 0.0};
+  double X[9], Q[9], e[9];
+  Triangle::positions(along_x, X);
+  Triangle::variables(X, Q);
+  EXPECT_TRUE(std::isnan(Q[6]));
+  Triangle::error(X, along_x, Q, e);
+  EXPECT_EQ(e[6], 0.0);
+}
+
+// The closed forms are pseudo-inverses: N's J+ v gives the velocity whose
+// Q-rate is v where v is reachable (finite differences of the variables),
+// and is orthogonal to the roll about the median (J's null vector).
+TEST(Triangle, TheJointLawMovesTheVariablesAsAsked) {
+  const double X[9] = {1.1, 0.2, 0.9, -0.8, -0.1, 1.3, 0.1, 1.2, 1.1};
+  double dX[9];
+  const double v[9] = {0.1, -0.2, 0.3, 0.05, -0.04, 0.02, 0.0, 0.0, 0.0};  // no orientation rate: reachable
+  Triangle::velocities(TriangleLaw::kN, X, v, dX);
+  double Xp[9], Xm[9], Qp[9], Qm[9];
+  const double h = 1e-6;
+  for (int k = 0; k < 9; ++k) Xp[k] = X[k] + h * dX[k], Xm[k] = X[k] - h * dX[k];
+  Triangle::variables(Xp, Qp);
+  Triangle::variables(Xm, Qm);
+  for (int i = 0; i < 6; ++i) EXPECT_NEAR((Qp[i] - Qm[i]) / (2 * h), v[i], 1e-7) << i;
+  // Orthogonal to the roll n_i = m x (p_i - c).
+  double m[3], c[3], roll = 0;
+  for (int i = 0; i < 3; ++i) m[i] = 2 * X[i] - X[3 + i] - X[6 + i], c[i] = (X[i] + X[3 + i] + X[6 + i]) / 3;
+  for (int r = 0; r < 3; ++r) {
+    double d[3], n[3];
+    for (int i = 0; i < 3; ++i) d[i] = X[3 * r + i] - c[i];
+    aurora_control::triangle_detail::cross(m, d, n);
+    for (int i = 0; i < 3; ++i) roll += n[i] * dX[3 * r + i];
+  }
+  EXPECT_NEAR(roll, 0.0, 1e-12);
+}
+
+// The spec's first step (t = 0, dQd = 0), kinematic with the class gains
+// and with three AR.Drones' start (z0 = 0.75, K1 = 0.1).
+TEST(Triangle, TheFirstStepOfEachLawIsAuRoRAs) {
+  const double tol = 1e-9;  // the spec prints 10 digits
+  expectNear(firstVelocities(TriangleLaw::kN, 3.0, 0.0).data(),
+             {-0.1214988965, -0.196752194, 2.765005663, 1.01834799, -2.504039688, 2.765005663, -0.8968490937,
+              -0.1928227556, 2.765005663},
+             tol, "N");
+  const std::vector<double> pso = {-0.3856497726, -0.9892048222, 2.765005663, 0.7541971142, -1.71158706,
+                                   2.765005663, -0.3685473416, -0.1928227556, 2.765005663};
+  for (TriangleLaw law : {TriangleLaw::kPSO, TriangleLaw::kSPO, TriangleLaw::kSdashPO}) {
+    expectNear(firstVelocities(law, 3.0, 0.0).data(), pso, tol, "PSO = SPO = S-PO");
+  }
+  expectNear(firstVelocities(TriangleLaw::kOSP, 3.0, 0.0).data(),
+             {-0.1214988965, -0.196752194, 2.765005663, 0.41757238, -1.903264078, 2.765005663, -0.2960734835,
+              -0.7935983658, 2.765005663},
+             tol, "OSP");
+  expectNear(firstVelocities(TriangleLaw::kN, 0.1, 0.75).data(),
+             {-0.004049963218, -0.006558406468, 0.06910694698, 0.03394493301, -0.08346798961, 0.06910694698,
+              -0.02989496979, -0.006427425185, 0.06910694698},
+             tol, "drones N");
+  expectNear(firstVelocities(TriangleLaw::kPSO, 0.1, 0.75).data(),
+             {-0.01285499242, -0.03297349407, 0.06910694698, 0.02513990381, -0.057052902, 0.06910694698,
+              -0.01228491139, -0.006427425185, 0.06910694698},
+             tol, "drones PSO");
+}
+
+namespace {
+
+// RMS of the errors over the periods with t >= 20 s of the kinematic
+// scenario (the robots at their references before every period; n = 0 ..
+// 999): position norm, p, q, psi; and the second period's Q and dQd.
+struct KinematicRun {
+  double rms_position = 0, rms_p = 0, rms_q = 0, rms_psi = 0;
+  double Q1[9], dQd1[9];
+};
+
+KinematicRun flyKinematic(TriangleLaw law) {
+  const std::vector<double> X0 = start(0.0);
+  Layer layer = layerOf(law, 3.0, X0.data());
+  double X[9];
+  for (int k = 0; k < 9; ++k) X[k] = X0[k];
+  KinematicRun r;
+  double sums[4] = {0, 0, 0, 0};
+  long n_late = 0;
+  for (long n = 0; n < 1000; ++n) {
+    const double t = 0.05 * double(n);
+    double Qd[9];
+    aurora_control::carrouselReference(t, Qd);
+    layer.update(X, Qd);
+    if (n == 1) {
+      for (int i = 0; i < 9; ++i) r.Q1[i] = layer.Q()[i], r.dQd1[i] = layer.dQd()[i];
+    }
+    if (t >= 20.0) {
+      const double* e = layer.Qtil();
+      sums[0] += e[0] * e[0] + e[1] * e[1] + e[2] * e[2], sums[1] += e[3] * e[3], sums[2] += e[4] * e[4];
+      sums[3] += e[8] * e[8];
+      ++n_late;
+    }
+    for (int d = 0; d < 3; ++d) {
+      for (int i = 0; i < 3; ++i) X[3 * d + i] = layer.position(d)[i];  // the robots are their references
+    }
+  }
+  r.rms_position = std::sqrt(sums[0] / n_late), r.rms_p = std::sqrt(sums[1] / n_late);
+  r.rms_q = std::sqrt(sums[2] / n_late), r.rms_psi = std::sqrt(sums[3] / n_late);
+  return r;
+}
+
+}  // namespace
+
+// The kinematic scenario: the second period's variables and feed-forward
+// are AuRoRA's; each law tracks as the spec measured with AuRoRA's code.
+TEST(Triangle, TheKinematicScenarioTracksAsAuRoRAs) {
+  const KinematicRun n = flyKinematic(TriangleLaw::kN);
+  expectNear(n.Q1, {0, 0.2851064227, 0.1382502832, 1.946429472, 1.442023204, 0.8257879404, 0, 0, -0.2884694979},
+             1e-9, "Q at n = 1");
+  EXPECT_NEAR(n.dQd1[8], -5.698233737e-4, 1e-12);
+  EXPECT_LT(n.rms_position, 0.001);  // spec: 0.0006 m
+  EXPECT_LT(n.rms_p, 0.001);         // 0.0004 m
+  EXPECT_LT(n.rms_psi, 0.001);       // 0.0003 rad
+  const KinematicRun pso = flyKinematic(TriangleLaw::kPSO);
+  EXPECT_NEAR(pso.rms_psi, 0.054, 0.005);  // the orientation lags (its feed-forward is projected away)
+  EXPECT_LT(pso.rms_p, 0.001);
+  const KinematicRun osp = flyKinematic(TriangleLaw::kOSP);
+  EXPECT_NEAR(osp.rms_p, 0.076, 0.008);  // the shape lags
+  EXPECT_NEAR(osp.rms_q, 0.072, 0.008);
+  EXPECT_LT(osp.rms_psi, 0.001);
+}
