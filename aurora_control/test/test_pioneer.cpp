@@ -197,5 +197,10 @@ TEST(Pioneer3dx, ABadControllerFileIsRefusedNamingTheKey) {
   EXPECT_NE(e.find("controller.kc1"), std::string::npos) << e;
   e = refusalOf("controller: {name: pioneer_dynamic, k1: [0.35, 0.35], kc2: [0.8, 0.8], kd1: [0.75, 0.75], "
                 "kd2: [0.12, 0.035]}");
-  EXPECT_NE(e.find("'controller.k1' is not a known key: accepted name, kc1, kc2, kd1, kd2"), std::string::npos) << e;
+  EXPECT_NE(e.find("'controller.k1' is not a known key: accepted name, kc1, kc2, kd1, kd2, accel_interval"),
+            std::string::npos) << e;
+  // The acceleration's interval (AuRoRA's 2018 law: 0.1 s at any period): optional, [0, 10] s.
+  EXPECT_EQ(refusalOf(good.substr(0, good.size() - 1) + ", accel_interval: 0.1}"), "");
+  e = refusalOf(good.substr(0, good.size() - 1) + ", accel_interval: -1}");
+  EXPECT_NE(e.find("'controller.accel_interval' = -1 is outside the accepted range [0, 10]"), std::string::npos) << e;
 }

@@ -92,6 +92,7 @@ struct SweepGains<aurora_control::PioneerDynamic> {
     g.kc2[0] = g.kc2[1] = T(v[1]);
     g.kd1[0] = T(v[2]), g.kd1[1] = T(v[3]);
     g.kd2[0] = T(v[4]), g.kd2[1] = T(v[5]);
+    g.accel_interval = T(0);  // the model's Ts
     return g;
   }
 };

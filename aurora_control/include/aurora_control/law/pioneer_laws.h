@@ -48,8 +48,12 @@ template <typename T>
 struct PioneerDynamicGains {
   T kc1[2], kc2[2];  // the kinematic part's
   T kd1[2], kd2[2];  // the compensation's (u, omega)
+  // [s] the interval the measured acceleration divides by; 0: the model's
+  // Ts. AuRoRA's 2018 fDynamicController divides by 0.1 at any period (the
+  // UAV-UGV line runs it at 1/30 s; docs/pioneer3dx.md).
+  T accel_interval;
   AURORA_HD static PioneerDynamicGains defaults() {
-    return {{T(0.35), T(0.35)}, {T(0.8), T(0.8)}, {T(0.75), T(0.75)}, {T(0.12), T(0.035)}};
+    return {{T(0.35), T(0.35)}, {T(0.8), T(0.8)}, {T(0.75), T(0.75)}, {T(0.12), T(0.035)}, T(0)};
   }
 };
 
@@ -62,6 +66,7 @@ void castGains(const PioneerDynamicGains<U>& from, PioneerDynamicGains<T>& to) {
   for (int i = 0; i < 2; ++i) {
     to.kc1[i] = T(from.kc1[i]), to.kc2[i] = T(from.kc2[i]), to.kd1[i] = T(from.kd1[i]), to.kd2[i] = T(from.kd2[i]);
   }
+  to.accel_interval = T(from.accel_interval);
 }
 
 template <typename T>
@@ -101,7 +106,8 @@ struct PioneerKinematic
 
 // cDynamicController (eq. P5): Ur of the kinematic part within 1, then
 // Ud = H nu + C Ur with nu = 0.1 tanh(0.1 dU) + Kd1 tanh(Kd2 (Ur - U)), dU
-// the measured acceleration over Ts; each of Ud within 1.
+// the measured acceleration over Ts (or the gains' accel_interval); each of Ud
+// within 1.
 struct PioneerDynamic : LawOf<PioneerDynamic, aurora_sim::Pioneer3dx, PioneerDynamicGains, PioneerDynamicMemory> {
   using Input = PioneerInput<5>;
   static const char* name() { return "pioneer_dynamic"; }
@@ -117,8 +123,10 @@ struct PioneerDynamic : LawOf<PioneerDynamic, aurora_sim::Pioneer3dx, PioneerDyn
     const T u = X[aurora_sim::kPioneerU], w = X[aurora_sim::kPioneerOmega];
     const T meas[2] = {u, w};
     T nu[2];
+    using aurora_common::select;  // a SIMD batch's own select by argument-dependent lookup
+    const T dt = select(g.accel_interval > T(0), g.accel_interval, model.Ts);
     for (int i = 0; i < 2; ++i) {
-      const T dU = (meas[i] - m.Ua[i]) / model.Ts;
+      const T dU = (meas[i] - m.Ua[i]) / dt;
       nu[i] = T(0.1) * tanh(T(0.1) * dU) + g.kd1[i] * tanh(g.kd2[i] * (Ur[i] - meas[i]));
     }
     U[aurora_sim::kPioneerURef] = aurora_common::clampUnit(th[0] * nu[0] + (th[3] * Ur[0] + -th[2] * w * Ur[1]));

@@ -19,9 +19,14 @@ inline void readPioneerGains(const YamlReader& r, const YAML::Node& c, PioneerKi
 }
 
 inline void readPioneerGains(const YamlReader& r, const YAML::Node& c, PioneerDynamicGains<double>& g) {
-  r.onlyKeys(c, "controller", {"name", "kc1", "kc2", "kd1", "kd2"});
+  r.onlyKeys(c, "controller", {"name", "kc1", "kc2", "kd1", "kd2", "accel_interval"});
   readGainLists(r, c, {{"kc1", g.kc1}, {"kc2", g.kc2}}, 2, "x, y", kPioneerGainMax);
   readGainLists(r, c, {{"kd1", g.kd1}, {"kd2", g.kd2}}, 2, "u, omega", kPioneerGainMax);
+  g.accel_interval = 0.0;
+  if (c["accel_interval"]) {
+    g.accel_interval = r.numberIn(c["accel_interval"], "controller.accel_interval", 0.0, 10.0,
+                                  "s (0: the vehicle's sample time)");
+  }
 }
 
 // Law's gains from its controller file (controller.name is Law::name()).

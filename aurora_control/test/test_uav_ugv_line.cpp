@@ -1,0 +1,177 @@
+// AuRoRA's UAV-UGV line (docs/formation.md, "The UAV-UGV line"): a Pioneer
+// P3-DX leading an AR.Drone, the spherical variables and the law without
+// integration. Its first tick and the states after one step, each robot on
+// its own law and model at 1/30 s, equal the values the spec computed with
+// AuRoRA's own code (the Pioneer's acceleration over 0.1 s, its control
+// point put at (-1, 0)).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "aurora_control/formation/uav_ugv_line.h"
+#include "aurora_control/law/control_law.h"
+#include "aurora_control/law/pioneer_laws.h"
+#include "aurora_sim/vehicle_yaml.h"
+
+namespace {
+
+using aurora_control::Reference;
+using aurora_sim::Ardrone2;
+using aurora_sim::Pioneer3dx;
+using Line = aurora_control::UavUgvLine<double>;
+using DroneLaw = aurora_control::ArdroneLaw<aurora_control::LawType::kUnderactuated>;
+
+void expectNear(const double* got, const std::vector<double>& want, double rel, const char* what) {
+  for (size_t i = 0; i < want.size(); ++i) {
+    EXPECT_NEAR(got[i], want[i], rel * (1.0 + std::fabs(want[i]))) << what << " [" << i << "]";
+  }
+}
+
+Reference<double> held(const double pos[3], const double vel[3]) {
+  Reference<double> r{};
+  for (int i = 0; i < 3; ++i) r.pos[i] = pos[i], r.vel[i] = vel[i];
+  return r;
+}
+
+// The standard scenario (docs/formation.md, "The UAV-UGV line"): the
+// Pioneer's control point at (-1, 0) (2018's rSetPose puts it there), the
+// drone at (0, 0, 0.75) at rest, every robot and the layer at 1/30 s. Each
+// tick: the layer on the measured positions, the drone's law, the
+// Pioneer's law, the drone's step, the Pioneer's step.
+class Scenario {
+ public:
+  explicit Scenario(bool kinematic_pioneer)
+      : dp_(aurora_sim::loadVehicleFile<Ardrone2>(std::string(AURORA_CONFIG_DIR) + "/vehicles/ardrone2.yaml")) {
+    pp_ = aurora_sim::referencePioneerParams();
+    pp_.Ts = 1.0 / 30.0;  // the formation script's 2018 Pioneer
+    pp_.kinematic = kinematic_pioneer ? 1.0 : 0.0;
+    pg_ = aurora_control::PioneerDynamicGains<double>::defaults();
+    pg_.accel_interval = 0.1;  // fDynamicController's literal 0.1
+    pioneer.reset();
+    pioneer.X[aurora_sim::kX] = -1.0;
+    pm_.reset();
+    drone.reset();
+    dg_ = {{0.0, 0.0}, aurora_control::UnderactuatedGains<double>::defaults()};
+    const double k1[6] = {0.5, 0.5, 5, 1, 1, 1}, k2[6] = {1, 1, 2, 15, 15, 2.5};  // the script's Cgains
+    for (int i = 0; i < 6; ++i) dg_.underactuated.k1[i] = k1[i], dg_.underactuated.k2[i] = k2[i];
+    dm_.reset();
+  }
+
+  // Tick k at t = k / 30.
+  void tick(long k) {
+    double Qd[6], dQd[6];
+    aurora_control::uavUgvReference(double(k) / 30.0, Qd, dQd);
+    const double X[6] = {pioneer.X[0], pioneer.X[1], pioneer.X[2], drone.X[0], drone.X[1], drone.X[2]};
+    layer.update(X, Qd, dQd);
+    double err[3];
+    DroneLaw::command(dp_, dg_, dm_, held(layer.position(1), layer.velocity(1)), drone.X, U_drone, err);
+    aurora_control::PioneerDynamic::command(pp_, pg_, pm_, held(layer.position(0), layer.velocity(0)), pioneer.X,
+                                            Ud, err);
+    Ardrone2::step(dp_, drone, U_drone);
+    Pioneer3dx::step(pp_, pioneer, Ud);
+  }
+
+  aurora_control::UavUgvLineLayer<double> layer{gains(0), gains(1)};
+  Pioneer3dx::State<double> pioneer;
+  Ardrone2::State<double> drone;
+  double Ud[2], U_drone[4];
+
+ private:
+  static const double* gains(int which) {
+    static double k[2][6];
+    Line::defaultGains(k[0], k[1]);
+    return k[which];
+  }
+  Ardrone2::Params<double> dp_;
+  Pioneer3dx::Params<double> pp_;
+  aurora_control::PioneerDynamicGains<double> pg_;
+  aurora_control::PioneerDynamic::Memory<double> pm_;
+  aurora_control::LawGains<double> dg_;
+  DroneLaw::Memory<double> dm_;
+};
+
+}  // namespace
+
+TEST(UavUgvLine, TheFirstTickIsAuRoRAs) {
+  Scenario f(false);
+  f.tick(0);
+  const double tol = 1e-9;  // the spec prints 10 digits at k = 0
+  expectNear(f.layer.Q(), {-1, 0, 0, 1.25, 0, 0.6435011088}, tol, "Q");
+  expectNear(f.layer.Qtil(), {1, 0, 0, 0.75, 1.570796327, 0.4036964424}, tol, "Q~");
+  expectNear(f.layer.velocity(0), {0.1397343957, 0.1, 0}, tol, "dXr of the Pioneer");
+  expectNear(f.layer.velocity(1), {0.140987219, 0.109836913, 0.0102748155}, tol, "dXr of the drone");
+  expectNear(f.layer.position(1), {6.1e-17, 1, 1.732050808}, tol, "the drone's desired position");
+  expectNear(f.Ud, {0.3736396088, 0.7097933116}, tol, "the Pioneer's Ud");
+  EXPECT_NEAR(f.U_drone[aurora_sim::kUClimb], 0.8810137624, tol);
+  for (int i : {aurora_sim::kURoll, aurora_sim::kUPitch, aurora_sim::kUYawRate}) EXPECT_NEAR(f.U_drone[i], 0.0, 1e-9);
+  // k = 1: the corrected dynamic Pioneer and the drone after one step each.
+  const double rel = 1e-12;
+  expectNear(f.pioneer.X + aurora_sim::kPioneerU, {0.02333205999780124, 0.10913181297804046}, rel, "Pioneer U");
+  const double pose[3] = {f.pioneer.X[aurora_sim::kX], f.pioneer.X[aurora_sim::kY], f.pioneer.X[aurora_sim::kYaw]};
+  expectNear(pose, {-0.9992222646667399, 0.0005456590648902024, 0.0036377270992680156}, rel, "Pioneer pose");
+  EXPECT_NEAR(f.drone.X[aurora_sim::kZ], 0.7458057587350768, rel);
+}
+
+// The original script's own pairing: the kinematic Pioneer (U = Ud).
+TEST(UavUgvLine, TheKinematicPioneersFirstStepIsAuRoRAs) {
+  Scenario f(true);
+  f.tick(0);
+  const double pose[3] = {f.pioneer.X[aurora_sim::kX], f.pioneer.X[aurora_sim::kY], f.pioneer.X[aurora_sim::kYaw]};
+  expectNear(pose, {-0.9875453463731737, 0.0035489665580458753, 0.02365977705363917}, 1e-12, "Pioneer pose");
+  EXPECT_NEAR(f.drone.X[aurora_sim::kZ], 0.7458057587350768, 1e-12);
+}
+
+// The whole run (k = 0 .. 3899, t < 130 s), RMS after 20 s, as the spec
+// measured AuRoRA's code: xf, yf 0.0069 m, rho 0.0039 m, alpha 0.0071 rad,
+// beta 0.0034 rad, the drone's position error 0.013 m, the closest
+// approach 1.24 m (dynamic Pioneer); 0.0093, 0.0093, 0.0080, 0.0080, 0.014,
+// 1.21 (kinematic).
+TEST(UavUgvLine, TheStandardScenarioTracksAsAuRoRAs) {
+  for (bool kinematic : {false, true}) {
+    SCOPED_TRACE(kinematic ? "kinematic Pioneer" : "dynamic Pioneer");
+    Scenario f(kinematic);
+    double sq[5] = {0, 0, 0, 0, 0}, closest = 1e9;
+    long n = 0;
+    for (long k = 0; k < 3900; ++k) {
+      f.tick(k);
+      const double* e = f.layer.Qtil();
+      double d[3];
+      for (int i = 0; i < 3; ++i) d[i] = f.drone.X[i] - f.pioneer.X[i];
+      closest = std::min(closest, std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]));
+      if (double(k) / 30.0 < 20.0) continue;
+      const double* Xd = f.layer.position(1);  // the drone's desired position of this tick
+      double de[3];
+      for (int i = 0; i < 3; ++i) de[i] = Xd[i] - f.drone.X[i];
+      sq[0] += e[0] * e[0] + e[1] * e[1], sq[1] += e[3] * e[3], sq[2] += e[4] * e[4], sq[3] += e[5] * e[5];
+      sq[4] += de[0] * de[0] + de[1] * de[1] + de[2] * de[2];
+      ++n;
+    }
+    double rms[5];
+    for (int i = 0; i < 5; ++i) rms[i] = std::sqrt(sq[i] / double(n));
+    const std::vector<double> spec = kinematic ? std::vector<double>{0.0093, 0.0093, 0.0080, 0.0080, 0.014}
+                                               : std::vector<double>{0.0069, 0.0039, 0.0071, 0.0034, 0.013};
+    const char* names[5] = {"xf, yf", "rho", "alpha", "beta", "drone"};
+    std::fprintf(stderr, "%s Pioneer: RMS after 20 s xf,yf %.4f m, rho %.4f m, alpha %.4f, beta %.4f rad, drone %.4f m; "
+                 "closest %.3f m\n", kinematic ? "kinematic" : "dynamic", rms[0], rms[1], rms[2], rms[3], rms[4], closest);
+    for (int i = 0; i < 5; ++i) EXPECT_NEAR(rms[i], spec[i], 0.05 * spec[i]) << names[i];  // the spec rounds to 2 digits
+    EXPECT_NEAR(closest, kinematic ? 1.21 : 1.24, 0.005);
+  }
+}
+
+// The variables and their inverse are proper inverses for rho > 0; a
+// vertical line has alpha = atan2(0, 0) = 0.
+TEST(UavUgvLine, TheVariablesAndTheirInverse) {
+  const double Q[6] = {0.3, -0.4, 0.0, 2.0, 2.5, -0.4};
+  double X[6], back[6];
+  Line::positions(Q, X);
+  Line::variables(X, back);
+  for (int i = 0; i < 6; ++i) EXPECT_NEAR(back[i], Q[i], 1e-14) << i;
+  const double vertical[6] = {0, 0, 0, 0, 0, 2};
+  Line::variables(vertical, back);
+  EXPECT_EQ(back[4], 0.0);
+  EXPECT_NEAR(back[5], M_PI / 2, 1e-15);
+}
