@@ -18,6 +18,7 @@
 #include "aurora_control/loop/flight_setup.h"
 #include "aurora_common/ros/config_dir.h"
 #include "aurora_control/formation/formation_flight.h"
+#include "aurora_control/params/shipped_files.h"
 #include "option_values.h"
 
 namespace po = boost::program_options;
@@ -33,14 +34,6 @@ struct Options {
   std::string flown;         // the vehicle the controller's law flies (controllerVehicle; a flight's)
   bool no_clamp = false;
 };
-
-// A shipped file by its NAME (config/<folder>/NAME.yaml), as the launch
-// files take them; a path (with a '/' or ending .yaml) as it is.
-std::string shippedOrPath(const std::string& given, const std::string& config, const char* folder) {
-  const bool path = given.find('/') != std::string::npos ||
-                    (given.size() > 5 && given.compare(given.size() - 5, 5, ".yaml") == 0);
-  return given.empty() || path ? given : config + "/" + folder + "/" + given + ".yaml";
-}
 
 // A formation file gives each drone's link (drones[i].link) and never
 // clamps (AuRoRA's formation script does not): the flight's --link,

@@ -12,6 +12,7 @@
 
 #include "aurora_control/loop/flight_setup.h"
 #include "aurora_control/formation/formation_flight.h"
+#include "aurora_control/params/shipped_files.h"
 
 namespace py = pybind11;
 using namespace aurora_control;
@@ -153,6 +154,12 @@ PYBIND11_MODULE(_core, m) {
   m.def("simulate_files", &simulateFiles, py::arg("controller"), py::arg("task"), py::arg("vehicle"), py::arg("delay"),
         py::arg("link"), py::arg("clamp"), py::arg("rate"),
         "One flight from YAML files, as the flight tool flies it: a dict of numpy arrays and metrics.");
+  m.def("is_shipped_name", &isShippedName, py::arg("given"),
+        "whether a file option is a shipped NAME (config/<folder>/NAME.yaml) rather than a path: flight's rule");
+  m.def("shipped_or_path", [](const std::string& given, const std::string& config, const std::string& folder) {
+          return shippedOrPath(given, config, folder.c_str());
+        }, py::arg("given"), py::arg("config"), py::arg("folder"),
+        "config/<folder>/NAME.yaml for a shipped NAME, a path as it is: flight's rule");
   m.def("controller_vehicle", &vehicleOf, py::arg("controller"),
         "The name of the vehicle a controller file's law flies (config/vehicles/NAME.yaml).");
   m.def("simulate_formation_files", &simulateFormationFiles, py::arg("formation"), py::arg("vehicle"),

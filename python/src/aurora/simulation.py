@@ -70,11 +70,11 @@ def _as_file(value, kind, tmp):
         return path
     if not isinstance(value, str):
         raise ValueError("%s: expected a name, a path or a dict, got %s" % (kind, type(value).__name__))
-    if os.path.sep in value or value.endswith(".yaml"):
+    if not _core.is_shipped_name(value):  # flight's rule (aurora_control/params/shipped_files.h)
         if not os.path.exists(value):
             raise ValueError("%s file '%s' does not exist" % (kind, value))
         return value
-    path = os.path.join(config_dir(), _FOLDERS[kind], value + ".yaml")
+    path = _core.shipped_or_path(value, config_dir(), _FOLDERS[kind])
     if not os.path.exists(path):
         shipped = sorted(n[:-5] for n in os.listdir(os.path.dirname(path)) if n.endswith(".yaml"))
         raise ValueError("%s '%s' is not a shipped one: accepted %s, a path, or a dict" % (kind, value, ", ".join(shipped)))
