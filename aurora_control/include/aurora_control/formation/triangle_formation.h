@@ -77,6 +77,7 @@ struct TriangleFormation {
     using std::cos;
     using std::sin;
     using std::sqrt;
+    using aurora_common::sinCos;  // or a SIMD batch's own, by argument-dependent lookup
     const T p = Q[3], q = Q[4];
     const T r = sqrt(p * p + q * q - T(2) * p * q * cos(Q[5]));
     const T h1 = sqrt((p * p + q * q) / T(2) - r * r / T(4));
@@ -85,9 +86,9 @@ struct TriangleFormation {
     const T a1 = acos((T(4) * (h1 * h1 + h2 * h2) - T(9) * p * p) / (T(8) * h1 * h2));
     const T a2 = acos((T(4) * (h1 * h1 + h3 * h3) - T(9) * q * q) / (T(8) * h1 * h3));
     T sf, cf, st, ct, sp, cp;
-    aurora_common::sinCos(Q[6], sf, cf);
-    aurora_common::sinCos(Q[7], st, ct);
-    aurora_common::sinCos(Q[8], sp, cp);
+    sinCos(Q[6], sf, cf);
+    sinCos(Q[7], st, ct);
+    sinCos(Q[8], sp, cp);
     const T e1[3] = {ct * cp, ct * sp, -st};
     const T e2[3] = {sf * st * cp - cf * sp, sf * st * sp + cf * cp, sf * ct};
     const T s1 = sin(a1), c1 = cos(a1), s2 = sin(a2), c2 = cos(a2);

@@ -20,8 +20,9 @@ AURORA_HD inline void carrouselReference(const T& t, T Qd[9]) {
   const T Tf = T(40), w = T(2) * pi / T(20);
   const T s = t / Tf;
   const T tp = (T(3) * s * s - T(2) * s * s * s) * Tf;
+  using aurora_common::sinCos;  // or a SIMD batch's own, by argument-dependent lookup
   T sw, cw;
-  aurora_common::sinCos(w * tp, sw, cw);
+  sinCos(w * tp, sw, cw);
   Qd[0] = T(-0.25) + T(0.25) * cw;
   Qd[1] = T(0.25) * sw;
   Qd[2] = T(1.6);

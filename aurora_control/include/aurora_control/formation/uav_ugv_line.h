@@ -65,13 +65,12 @@ struct UavUgvLine {
   // the drone also with B (the derivative of p2 by rho, alpha, beta) times
   // the shape rate, at the measured Q. Nothing is inverted: no singularity.
   AURORA_HD static void velocities(const T X[6], const T dQr[6], T dX[6]) {
-    using std::cos;
-    using std::sin;
+    using aurora_common::sinCos;  // or a SIMD batch's own, by argument-dependent lookup
     T Q[6];
     variables(X, Q);
     T sa, ca, sb, cb;
-    aurora_common::sinCos(Q[4], sa, ca);
-    aurora_common::sinCos(Q[5], sb, cb);
+    sinCos(Q[4], sa, ca);
+    sinCos(Q[5], sb, cb);
     const T rho = Q[3];
     const T B[3][3] = {{ca * cb, -rho * sa * cb, -rho * ca * sb},
                        {sa * cb, rho * ca * cb, -rho * sa * sb},
@@ -84,9 +83,10 @@ struct UavUgvLine {
 
  private:
   AURORA_HD static void direction(const T Q[6], T u[3]) {
+    using aurora_common::sinCos;  // or a SIMD batch's own, by argument-dependent lookup
     T sa, ca, sb, cb;
-    aurora_common::sinCos(Q[4], sa, ca);
-    aurora_common::sinCos(Q[5], sb, cb);
+    sinCos(Q[4], sa, ca);
+    sinCos(Q[5], sb, cb);
     u[0] = ca * cb, u[1] = sa * cb, u[2] = sb;
   }
 };
@@ -129,10 +129,11 @@ class UavUgvLineLayer {
 template <typename T>
 AURORA_HD inline void uavUgvReference(const T& t, T Qd[6], T dQd[6]) {
   const T pi = T(aurora_common::kPi);
+  using aurora_common::sinCos;  // or a SIMD batch's own, by argument-dependent lookup
   const T a = T(1.2), b = T(1), w = T(0.05);
   T s1, c1, s2, c2;
-  aurora_common::sinCos(w * t, s1, c1);
-  aurora_common::sinCos(T(2) * w * t, s2, c2);
+  sinCos(w * t, s1, c1);
+  sinCos(T(2) * w * t, s2, c2);
   const T q[6] = {a * s1, b * s2, T(0), T(2), pi / T(2), pi / T(3)};
   const T dq[6] = {a * w * c1, T(2) * b * w * c2, T(0), T(0), T(0), T(0)};
   for (int i = 0; i < 6; ++i) Qd[i] = q[i], dQd[i] = dq[i];
