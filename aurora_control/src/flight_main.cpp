@@ -18,6 +18,7 @@
 #include "aurora_control/loop/flight_setup.h"
 #include "aurora_common/ros/config_dir.h"
 #include "aurora_control/formation/formation_flight.h"
+#include "aurora_control/formation/uav_ugv_yaml.h"
 #include "aurora_control/params/shipped_files.h"
 #include "option_values.h"
 
@@ -198,7 +199,9 @@ int main(int argc, char** argv) {
     if (o.formation.empty()) {
       run(o);
     } else {
-      flyFormation(FormationFlightOptions{o.formation, o.vehicle, o.csv, o.config, o.delays});
+      const FormationFlightOptions f{o.formation, o.vehicle, o.csv, o.config, o.delays};
+      if (formationShapeOf(o.formation) == "uav_ugv_line") flyUavUgvLine(f);
+      else flyFormation(f);
     }
   } catch (const std::exception& e) {
     std::fprintf(stderr, "flight: %s\n", e.what());

@@ -1,29 +1,29 @@
 // AuRoRA's UAV-UGV line (docs/formation.md, "The UAV-UGV line"): a Pioneer
 // P3-DX leading an AR.Drone, the spherical variables and the law without
-// integration. Its first tick and the states after one step, each robot on
-// its own law and model at 1/30 s, equal the values the spec computed with
-// AuRoRA's own code (the Pioneer's acceleration over 0.1 s, its control
-// point put at (-1, 0)).
+// integration, flown from the shipped files (config/formations/
+// line_pioneer_ardrone*.yaml). Its first tick and the states after one
+// step, each robot on its own law and model at 1/30 s, equal the values the
+// spec computed with AuRoRA's own code (the Pioneer's acceleration over
+// 0.1 s, its control point put at (-1, 0)); the whole run tracks as
+// AuRoRA's; a bad file is refused naming the key.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 
-#include "aurora_control/formation/uav_ugv_line.h"
+#include "aurora_control/formation/uav_ugv_yaml.h"
 #include "aurora_control/law/control_law.h"
 #include "aurora_control/law/pioneer_laws.h"
 #include "aurora_sim/vehicle_yaml.h"
 
 namespace {
 
-using aurora_control::Reference;
-using aurora_sim::Ardrone2;
-using aurora_sim::Pioneer3dx;
 using Line = aurora_control::UavUgvLine<double>;
-using DroneLaw = aurora_control::ArdroneLaw<aurora_control::LawType::kUnderactuated>;
 
 void expectNear(const double* got, const std::vector<double>& want, double rel, const char* what) {
   for (size_t i = 0; i < want.size(); ++i) {
@@ -31,73 +31,18 @@ void expectNear(const double* got, const std::vector<double>& want, double rel, 
   }
 }
 
-Reference<double> held(const double pos[3], const double vel[3]) {
-  Reference<double> r{};
-  for (int i = 0; i < 3; ++i) r.pos[i] = pos[i], r.vel[i] = vel[i];
-  return r;
+// The standard scenario from its shipped file (the original's kinematic
+// pairing from line_pioneer_ardrone_kinematic.yaml), flown tick by tick.
+aurora_control::UavUgvLineFlight scenario(bool kinematic_pioneer) {
+  const std::string config = AURORA_CONFIG_DIR;
+  const std::string file = config + "/formations/line_pioneer_ardrone" + (kinematic_pioneer ? "_kinematic" : "") + ".yaml";
+  return aurora_control::UavUgvLineFlight(aurora_control::readUavUgvLineFile(file, config));
 }
-
-// The standard scenario (docs/formation.md, "The UAV-UGV line"): the
-// Pioneer's control point at (-1, 0) (2018's rSetPose puts it there), the
-// drone at (0, 0, 0.75) at rest, every robot and the layer at 1/30 s. Each
-// tick: the layer on the measured positions, the drone's law, the
-// Pioneer's law, the drone's step, the Pioneer's step.
-class Scenario {
- public:
-  explicit Scenario(bool kinematic_pioneer)
-      : dp_(aurora_sim::loadVehicleFile<Ardrone2>(std::string(AURORA_CONFIG_DIR) + "/vehicles/ardrone2.yaml")) {
-    pp_ = aurora_sim::referencePioneerParams();
-    pp_.Ts = 1.0 / 30.0;  // the formation script's 2018 Pioneer
-    pp_.kinematic = kinematic_pioneer ? 1.0 : 0.0;
-    pg_ = aurora_control::PioneerDynamicGains<double>::defaults();
-    pg_.accel_interval = 0.1;  // fDynamicController's literal 0.1
-    pioneer.reset();
-    pioneer.X[aurora_sim::kX] = -1.0;
-    pm_.reset();
-    drone.reset();
-    dg_ = {{0.0, 0.0}, aurora_control::UnderactuatedGains<double>::defaults()};
-    const double k1[6] = {0.5, 0.5, 5, 1, 1, 1}, k2[6] = {1, 1, 2, 15, 15, 2.5};  // the script's Cgains
-    for (int i = 0; i < 6; ++i) dg_.underactuated.k1[i] = k1[i], dg_.underactuated.k2[i] = k2[i];
-    dm_.reset();
-  }
-
-  // Tick k at t = k / 30.
-  void tick(long k) {
-    double Qd[6], dQd[6];
-    aurora_control::uavUgvReference(double(k) / 30.0, Qd, dQd);
-    const double X[6] = {pioneer.X[0], pioneer.X[1], pioneer.X[2], drone.X[0], drone.X[1], drone.X[2]};
-    layer.update(X, Qd, dQd);
-    double err[3];
-    DroneLaw::command(dp_, dg_, dm_, held(layer.position(1), layer.velocity(1)), drone.X, U_drone, err);
-    aurora_control::PioneerDynamic::command(pp_, pg_, pm_, held(layer.position(0), layer.velocity(0)), pioneer.X,
-                                            Ud, err);
-    Ardrone2::step(dp_, drone, U_drone);
-    Pioneer3dx::step(pp_, pioneer, Ud);
-  }
-
-  aurora_control::UavUgvLineLayer<double> layer{gains(0), gains(1)};
-  Pioneer3dx::State<double> pioneer;
-  Ardrone2::State<double> drone;
-  double Ud[2], U_drone[4];
-
- private:
-  static const double* gains(int which) {
-    static double k[2][6];
-    Line::defaultGains(k[0], k[1]);
-    return k[which];
-  }
-  Ardrone2::Params<double> dp_;
-  Pioneer3dx::Params<double> pp_;
-  aurora_control::PioneerDynamicGains<double> pg_;
-  aurora_control::PioneerDynamic::Memory<double> pm_;
-  aurora_control::LawGains<double> dg_;
-  DroneLaw::Memory<double> dm_;
-};
 
 }  // namespace
 
 TEST(UavUgvLine, TheFirstTickIsAuRoRAs) {
-  Scenario f(false);
+  auto f = scenario(false);
   f.tick(0);
   const double tol = 1e-9;  // the spec prints 10 digits at k = 0
   expectNear(f.layer.Q(), {-1, 0, 0, 1.25, 0, 0.6435011088}, tol, "Q");
@@ -105,7 +50,7 @@ TEST(UavUgvLine, TheFirstTickIsAuRoRAs) {
   expectNear(f.layer.velocity(0), {0.1397343957, 0.1, 0}, tol, "dXr of the Pioneer");
   expectNear(f.layer.velocity(1), {0.140987219, 0.109836913, 0.0102748155}, tol, "dXr of the drone");
   expectNear(f.layer.position(1), {6.1e-17, 1, 1.732050808}, tol, "the drone's desired position");
-  expectNear(f.Ud, {0.3736396088, 0.7097933116}, tol, "the Pioneer's Ud");
+  expectNear(f.U_pioneer, {0.3736396088, 0.7097933116}, tol, "the Pioneer's Ud");
   EXPECT_NEAR(f.U_drone[aurora_sim::kUClimb], 0.8810137624, tol);
   for (int i : {aurora_sim::kURoll, aurora_sim::kUPitch, aurora_sim::kUYawRate}) EXPECT_NEAR(f.U_drone[i], 0.0, 1e-9);
   // k = 1: the corrected dynamic Pioneer and the drone after one step each.
@@ -118,7 +63,7 @@ TEST(UavUgvLine, TheFirstTickIsAuRoRAs) {
 
 // The original script's own pairing: the kinematic Pioneer (U = Ud).
 TEST(UavUgvLine, TheKinematicPioneersFirstStepIsAuRoRAs) {
-  Scenario f(true);
+  auto f = scenario(true);
   f.tick(0);
   const double pose[3] = {f.pioneer.X[aurora_sim::kX], f.pioneer.X[aurora_sim::kY], f.pioneer.X[aurora_sim::kYaw]};
   expectNear(pose, {-0.9875453463731737, 0.0035489665580458753, 0.02365977705363917}, 1e-12, "Pioneer pose");
@@ -133,7 +78,7 @@ TEST(UavUgvLine, TheKinematicPioneersFirstStepIsAuRoRAs) {
 TEST(UavUgvLine, TheStandardScenarioTracksAsAuRoRAs) {
   for (bool kinematic : {false, true}) {
     SCOPED_TRACE(kinematic ? "kinematic Pioneer" : "dynamic Pioneer");
-    Scenario f(kinematic);
+    auto f = scenario(kinematic);
     double sq[5] = {0, 0, 0, 0, 0}, closest = 1e9;
     long n = 0;
     for (long k = 0; k < 3900; ++k) {
@@ -174,4 +119,44 @@ TEST(UavUgvLine, TheVariablesAndTheirInverse) {
   Line::variables(vertical, back);
   EXPECT_EQ(back[4], 0.0);
   EXPECT_NEAR(back[5], M_PI / 2, 1e-15);
+}
+
+namespace {
+
+// The refusal of the shipped file with `from` replaced by `to` ("" when it loads).
+std::string refusalOfEdited(const std::string& from, const std::string& to) {
+  const std::string config = AURORA_CONFIG_DIR;
+  std::ifstream in(config + "/formations/line_pioneer_ardrone.yaml");
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const size_t at = text.find(from);
+  if (at == std::string::npos) return "the test's edit '" + from + "' is not in the file";
+  text.replace(at, from.size(), to);
+  const std::string path = ::testing::TempDir() + "/uav_ugv_edited.yaml";
+  std::ofstream(path) << text;
+  try {
+    aurora_control::readUavUgvLineFile(path, config);
+  } catch (const aurora_common::ConfigError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST(UavUgvLine, ABadFileIsRefusedNamingTheKey) {
+  EXPECT_EQ(refusalOfEdited("start: [-1.0, 0.0, 0.0]", "start: [-1.0, 0.0, 0.0]"), "");
+  std::string e = refusalOfEdited("start: [-1.0, 0.0, 0.0]", "start: [-1.0, 0.0, 0.5]");
+  EXPECT_NE(e.find("'formation.robots[0].start' has z = 0.5 m: accepted z = 0"), std::string::npos) << e;
+  e = refusalOfEdited("name: pioneer_dynamic", "name: pioneer_kinematic");
+  EXPECT_NE(e.find("'formation.robots[0].controller.name' = 'pioneer_kinematic' is refused: this robot flies "
+                   "pioneer_dynamic"), std::string::npos) << e;
+  e = refusalOfEdited("kd2: [0.12, 0.035]", "kd2: [0.12, -0.035]");
+  EXPECT_NE(e.find("'formation.robots[0].controller.kd2' must be a list of 2 numbers in [0, 10]"), std::string::npos)
+      << e;
+  e = refusalOfEdited("- vehicle: vehicles/ardrone2.yaml", "- vehicle: vehicles/bebop2.yaml");
+  EXPECT_NE(e.find("is of type 'bebop2', but the UAV-UGV line's robot 2 flies type 'ardrone2'"), std::string::npos) << e;
+  e = refusalOfEdited("tick: 0.03333333333333333", "tick: 0");
+  EXPECT_NE(e.find("'formation.tick' = 0 is outside the accepted range (0, 1] s"), std::string::npos) << e;
+  e = refusalOfEdited("  duration: 130", "  duration: 130\n  period: 0.2");
+  EXPECT_NE(e.find("'formation.period' is not a known key"), std::string::npos) << e;
 }

@@ -277,6 +277,36 @@ class FormationAndLinkArgumentsTest(unittest.TestCase):
         self.refused(["--controller", "pioneer_dynamic", "--task", "pioneer_lemniscate", "--vehicle", "bebop2"],
                      "is of type 'bebop2', but the controller 'pioneer_dynamic' flies type 'pioneer3dx'")
 
+    def test_the_uav_ugv_line_flies_as_auroras(self):
+        """Issue 34: flight --formation line_pioneer_ardrone (a Pioneer leading an AR.Drone, AuRoRA's
+        LineFormation3D) writes each robot's state and commands (r1_ the Pioneer's, d2_ the drone's), Q and
+        Qd; its first tick and the states after it are AuRoRA's; its errors are printed; a delay is refused."""
+        with tempfile.TemporaryDirectory() as tmp:
+            csv = os.path.join(tmp, "line.csv")
+            rc, out = flight("--formation", "line_pioneer_ardrone", "--csv", csv)
+            self.assertEqual(rc, 0, out)
+            self.assertIn("flight: UAV-UGV line (dynamic Pioneer + AR.Drone), 3900 ticks", out)
+            self.assertIn("RMS after 20 s: xf, yf 0.0069 m, rho 0.0039 m, alpha 0.0071 rad, beta 0.0034 rad", out)
+            rows = [r.split(",") for r in open(csv).read().splitlines()]
+            header = rows[0]
+            self.assertEqual(header[:4], ["step", "t", "r1_x", "r1_y"])
+            for name in ("r1_u", "r1_omega", "r1_u1", "r1_u2", "d2_z", "d2_dpsi", "d2_u4", "Q_xf", "Q_beta",
+                         "Qd_rho", "Qd_beta"):
+                self.assertIn(name, header)
+            self.assertEqual(len(rows), 1 + 3900)
+            col = {name: i for i, name in enumerate(header)}
+            first, second = rows[1], rows[2]
+            for name, value in (("Q_rho", 1.25), ("Q_beta", 0.6435011088), ("r1_u1", 0.3736396088),
+                                ("r1_u2", 0.7097933116), ("d2_u3", 0.8810137624)):
+                self.assertAlmostEqual(float(first[col[name]]), value, places=9, msg=name)
+            for name, value in (("r1_x", -0.9992222646667399), ("r1_psi", 0.0036377270992680156),
+                                ("r1_omega", 0.10913181297804046), ("d2_z", 0.7458057587350768)):
+                self.assertAlmostEqual(float(second[col[name]]), value, places=14, msg=name)
+        rc, out = flight("--formation", "line_pioneer_ardrone_kinematic")
+        self.assertEqual(rc, 0, out)
+        self.assertIn("RMS after 20 s: xf, yf 0.0093 m, rho 0.0093 m", out)
+        self.refused(["--formation", "line_pioneer_ardrone", "--delay", "3", "3"], "--delay is refused for a UAV-UGV line")
+
     def test_two_sweeps_on_one_folder_and_an_interrupted_sweep(self):
         sweep = subprocess.run(["catkin_find", "--first-only", "--libexec", "aurora_sweep", "sweep"],
                                stdout=subprocess.PIPE).stdout.decode().strip()

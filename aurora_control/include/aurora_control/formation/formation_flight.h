@@ -40,4 +40,7 @@ FormationFlight flyFormationFiles(const FormationFlightOptions& o, const Formati
 // The tool: the flight, its CSV (o.csv) and its printed errors and checks.
 void flyFormation(const FormationFlightOptions& o);
 
+// The same for a UAV-UGV line file (shape: uav_ugv_line; uav_ugv_yaml.h).
+void flyUavUgvLine(const FormationFlightOptions& o);
+
 }  // namespace aurora_control

@@ -180,15 +180,24 @@ inline void readDrones(const YamlReader& r, const YAML::Node& n, const std::stri
   }
 }
 
+// The file's 'formation:' mapping, its keys among `accepted`.
+inline YAML::Node formationSection(const YamlReader& r, const std::string& path,
+                                   const std::vector<std::string>& accepted) {
+  const YAML::Node root = loadYamlFile("formation file", path);
+  r.onlyKeys(root, "", {"formation"});
+  std::string keys;
+  for (const std::string& k : accepted) keys += (keys.empty() ? "" : ", ") + k;
+  const YAML::Node n = r.require(root, "", "formation", keys);
+  r.onlyKeys(n, "formation", accepted);
+  return n;
+}
+
 }  // namespace formation_detail
 
 inline FormationFile readFormationFile(const std::string& path, const std::string& config_dir) {
   using namespace formation_detail;
-  const YAML::Node root = loadYamlFile("formation file", path);
   const YamlReader r("formation file '" + path + "': ");
-  r.onlyKeys(root, "", {"formation"});
-  const YAML::Node n = r.require(root, "", "formation", "shape, law, period, gains, reference, drones");
-  r.onlyKeys(n, "formation", {"shape", "law", "period", "gains", "reference", "drones"});
+  const YAML::Node n = formationSection(r, path, {"shape", "law", "period", "gains", "reference", "drones"});
   FormationFile f;
   const std::string shape = r.text(r.require(n, "formation", "shape", "line"), "formation.shape");
   if (shape != "line") r.fail("formation.shape", "= '" + shape + "' is unknown: accepted line");

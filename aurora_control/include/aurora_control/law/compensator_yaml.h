@@ -24,26 +24,24 @@ struct CompensatorFile {
 // The name under 'controller:' of a controller file ("" when it has none):
 // what chooses the vehicle a flight flies.
 inline std::string controllerFileName(const std::string& path) {
-  const YAML::Node root = loadYamlFile("controller file", path);
-  const YAML::Node name = root.IsMap() && root["controller"] && root["controller"].IsMap()
-                              ? root["controller"]["name"] : YAML::Node();
-  return name && name.IsScalar() ? name.as<std::string>() : "";
+  return aurora_common::yamlFileWord("controller file", path, "controller", "name");
 }
 
-// One gain list of a controller file: `controller.<key>`, one number per
-// axis of `axes` (e.g. "x, y, z, yaw"), each in [0, max].
+// One gain list of a controller mapping: `<at>.<key>` (at: "controller" in
+// a controller file), one number per axis of `axes` (e.g. "x, y, z, yaw"),
+// each in [0, max].
 struct GainList {
   const char* key;
   double* into;
 };
 
-inline void readGainLists(const YamlReader& r, const YAML::Node& c, std::initializer_list<GainList> lists, size_t n,
-                          const std::string& axes, double max) {
+inline void readGainLists(const YamlReader& r, const YAML::Node& c, const std::string& at,
+                          std::initializer_list<GainList> lists, size_t n, const std::string& axes, double max) {
   const std::string text = "a list of " + std::to_string(n) + " numbers in [0, " + YamlReader::fmt(max) + "] (" +
                            axes + ")";
   for (const GainList& g : lists) {
-    const std::string key = r.key("controller", g.key);
-    const std::vector<double> v = r.numbers(r.require(c, "controller", g.key, text), key, n, text);
+    const std::string key = r.key(at, g.key);
+    const std::vector<double> v = r.numbers(r.require(c, at, g.key, text), key, n, text);
     for (size_t i = 0; i < n; ++i) {
       g.into[i] = v[i];
       if (!(v[i] >= 0.0 && v[i] <= max)) r.fail(key, "must be " + text);
@@ -58,7 +56,7 @@ inline CompensatorFile readCompensatorFile(const std::string& path) {
   const YAML::Node c = root["controller"];
   r.onlyKeys(c, "controller", {"name", "ksp", "ksd", "kp", "kd", "rate"});
   CompensatorFile f;
-  readGainLists(r, c, {{"ksp", f.gains.ksp}, {"ksd", f.gains.ksd}, {"kp", f.gains.kp}, {"kd", f.gains.kd}}, 4,
+  readGainLists(r, c, "controller", {{"ksp", f.gains.ksp}, {"ksd", f.gains.ksd}, {"kp", f.gains.kp}, {"kd", f.gains.kd}}, 4,
                 "x, y, z, yaw", kCompensatorGainMax);
   f.rate = r.numberIn(r.require(c, "controller", "rate", "Hz, dividing the vehicle's rate (30 Hz: 30, 15, 10, 6, 5)"),
                       "controller.rate", 0.0, 1000.0, "Hz", false);

@@ -12,19 +12,22 @@
 
 namespace aurora_control {
 
-// The gain lists of each law, and its file's keys.
-inline void readPioneerGains(const YamlReader& r, const YAML::Node& c, PioneerKinematicGains<double>& g) {
-  r.onlyKeys(c, "controller", {"name", "k1", "k2"});
-  readGainLists(r, c, {{"k1", g.k1}, {"k2", g.k2}}, 2, "x, y", kPioneerGainMax);
+// The gain lists of each law under the mapping at key `at` ("controller"
+// in a controller file, a robot's controller in a formation file).
+inline void readPioneerGains(const YamlReader& r, const YAML::Node& c, const std::string& at,
+                             PioneerKinematicGains<double>& g) {
+  r.onlyKeys(c, at, {"name", "k1", "k2"});
+  readGainLists(r, c, at, {{"k1", g.k1}, {"k2", g.k2}}, 2, "x, y", kPioneerGainMax);
 }
 
-inline void readPioneerGains(const YamlReader& r, const YAML::Node& c, PioneerDynamicGains<double>& g) {
-  r.onlyKeys(c, "controller", {"name", "kc1", "kc2", "kd1", "kd2", "accel_interval"});
-  readGainLists(r, c, {{"kc1", g.kc1}, {"kc2", g.kc2}}, 2, "x, y", kPioneerGainMax);
-  readGainLists(r, c, {{"kd1", g.kd1}, {"kd2", g.kd2}}, 2, "u, omega", kPioneerGainMax);
+inline void readPioneerGains(const YamlReader& r, const YAML::Node& c, const std::string& at,
+                             PioneerDynamicGains<double>& g) {
+  r.onlyKeys(c, at, {"name", "kc1", "kc2", "kd1", "kd2", "accel_interval"});
+  readGainLists(r, c, at, {{"kc1", g.kc1}, {"kc2", g.kc2}}, 2, "x, y", kPioneerGainMax);
+  readGainLists(r, c, at, {{"kd1", g.kd1}, {"kd2", g.kd2}}, 2, "u, omega", kPioneerGainMax);
   g.accel_interval = 0.0;
   if (c["accel_interval"]) {
-    g.accel_interval = r.numberIn(c["accel_interval"], "controller.accel_interval", 0.0, 10.0,
+    g.accel_interval = r.numberIn(c["accel_interval"], r.key(at, "accel_interval"), 0.0, 10.0,
                                   "s (0: the vehicle's sample time)");
   }
 }
@@ -36,7 +39,7 @@ typename Law::template Gains<double> readPioneerFile(const std::string& path) {
   const YamlReader r("controller file '" + path + "': ");
   r.onlyKeys(root, "", {"controller"});
   typename Law::template Gains<double> g;
-  readPioneerGains(r, root["controller"], g);
+  readPioneerGains(r, root["controller"], "controller", g);
   return g;
 }
 

@@ -1,0 +1,102 @@
+// A UAV-UGV line formation file (config/formations/line_pioneer_ardrone*.yaml;
+// docs/formation.md, "The UAV-UGV line"), read strictly:
+//
+//   formation:
+//     shape: uav_ugv_line
+//     tick: 0.03333333333333333   # s: every robot's law and model step, and the layer
+//     duration: 130               # s
+//     gains: {k1: [6], k2: [6]}   # optional: AuRoRA's
+//     robots:                     # robot 1 the Pioneer (the reference), robot 2 the drone
+//       - {vehicle: vehicles/pioneer3dx.yaml, kinematic_model: false, controller: {...}, start: [x, y, 0]}
+//       - {vehicle: vehicles/ardrone2.yaml, controller: {...}, start: [x, y, z]}
+//
+// Unknown keys, another robot count, another vehicle or law for a robot,
+// a ground robot off the floor, a drone below it: refused naming the key.
+#pragma once
+
+#include <string>
+
+#include "aurora_control/formation/formation_yaml.h"
+#include "aurora_control/formation/uav_ugv_flight.h"
+#include "aurora_control/law/pioneer_yaml.h"
+#include "aurora_sim/vehicle_yaml.h"
+
+namespace aurora_control {
+
+// The `shape:` of a formation file ("" when it has none): which reader reads it.
+inline std::string formationShapeOf(const std::string& path) {
+  return aurora_common::yamlFileWord("formation file", path, "formation", "shape");
+}
+
+namespace uav_ugv_detail {
+
+// A robot's start [x, y, z] [m], its height within [lo, hi] (`why` says it).
+inline void readStart(const YamlReader& r, const YAML::Node& n, const std::string& key, double lo, double hi,
+                      const std::string& why, double start[3]) {
+  const std::vector<double> s =
+      formation_detail::numbers(r, r.require(n, key, "start", "[x, y, z] in m"), r.key(key, "start"), 3);
+  if (!(s[2] >= lo && s[2] <= hi)) r.fail(r.key(key, "start"), "has z = " + YamlReader::fmt(s[2]) + " m: " + why);
+  for (int i = 0; i < 3; ++i) start[i] = s[i];
+}
+
+// The robot's controller mapping, whose name must be `law`.
+inline YAML::Node controllerOf(const YamlReader& r, const YAML::Node& n, const std::string& key, const char* law) {
+  const std::string ckey = r.key(key, "controller");
+  const YAML::Node c = r.require(n, key, "controller", std::string("a mapping {name: ") + law + ", gains ...}");
+  if (!c.IsMap()) r.fail(ckey, std::string("must be a mapping {name: ") + law + ", gains ...}");
+  const std::string name = r.text(r.require(c, ckey, "name", law), r.key(ckey, "name"));
+  if (name != law) r.fail(r.key(ckey, "name"), "= '" + name + "' is refused: this robot flies " + law);
+  return c;
+}
+
+inline void readPioneer(const YamlReader& r, const YAML::Node& n, const std::string& key,
+                        const std::string& config_dir, UavUgvLineSetup& s) {
+  r.onlyKeys(n, key, {"vehicle", "kinematic_model", "controller", "start"});
+  const std::string file = formation_detail::inConfig(r.text(r.require(n, key, "vehicle", "vehicles/pioneer3dx.yaml"),
+                                                             r.key(key, "vehicle")), config_dir);
+  s.pioneer = aurora_sim::loadVehicleFile<aurora_sim::Pioneer3dx>(file, "the UAV-UGV line's robot 1");
+  if (n["kinematic_model"]) s.pioneer.kinematic = r.boolean(n["kinematic_model"], r.key(key, "kinematic_model")) ? 1 : 0;
+  readPioneerGains(r, controllerOf(r, n, key, PioneerDynamic::name()), r.key(key, "controller"), s.pioneer_gains);
+  readStart(r, n, key, 0.0, 0.0, "accepted z = 0 (a ground robot's control point lies on the floor)", s.pioneer_start);
+}
+
+inline void readDrone(const YamlReader& r, const YAML::Node& n, const std::string& key, const std::string& config_dir,
+                      UavUgvLineSetup& s) {
+  r.onlyKeys(n, key, {"vehicle", "controller", "start"});
+  const std::string file = formation_detail::inConfig(r.text(r.require(n, key, "vehicle", "vehicles/ardrone2.yaml"),
+                                                             r.key(key, "vehicle")), config_dir);
+  s.drone = aurora_sim::loadVehicleFile<LawVehicle>(file, "the UAV-UGV line's robot 2");
+  ControllerSettings set;
+  readLaw(r, controllerOf(r, n, key, lawName(LawType::kUnderactuated)), r.key(key, "controller"), set);
+  s.drone_gains.underactuated = set.underactuated;
+  readStart(r, n, key, 0.0, 100.0, "accepted heights [0, 100] m", s.drone_start);
+}
+
+}  // namespace uav_ugv_detail
+
+inline UavUgvLineSetup readUavUgvLineFile(const std::string& path, const std::string& config_dir) {
+  using namespace uav_ugv_detail;
+  const YamlReader r("formation file '" + path + "': ");
+  const YAML::Node n = formation_detail::formationSection(r, path, {"shape", "tick", "duration", "gains", "robots"});
+  UavUgvLineSetup s;
+  UavUgvLine<double>::defaultGains(s.k1, s.k2);
+  s.tick = r.numberIn(r.require(n, "formation", "tick", "s (AuRoRA's 1/30)"), "formation.tick", 0.0, 1.0, "s", false);
+  s.duration = r.numberIn(r.require(n, "formation", "duration", "s"), "formation.duration", 0.0, 3600.0, "s", false);
+  if (n["gains"]) {
+    FormationGains<double, 6> g;
+    for (int i = 0; i < 6; ++i) g.k1[i] = s.k1[i], g.k2[i] = s.k2[i];
+    formation_detail::readGains(r, n["gains"], "formation.gains", g);
+    for (int i = 0; i < 6; ++i) s.k1[i] = g.k1[i], s.k2[i] = g.k2[i];
+  }
+  const YAML::Node robots = r.require(n, "formation", "robots", "the Pioneer, then the drone");
+  if (!robots.IsSequence() || robots.size() != 2) {
+    r.fail("formation.robots", "must list 2 robots: the Pioneer (robot 1, the reference), then the drone");
+  }
+  readPioneer(r, robots[0], "formation.robots[0]", config_dir, s);
+  readDrone(r, robots[1], "formation.robots[1]", config_dir, s);
+  s.pioneer.Ts = s.tick;  // every robot steps at the formation's tick (AuRoRA's 2018 Pioneer: 1/30 s)
+  s.drone.Ts = s.tick;
+  return s;
+}
+
+}  // namespace aurora_control
