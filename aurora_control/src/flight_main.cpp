@@ -19,6 +19,7 @@
 #include "aurora_common/ros/config_dir.h"
 #include "aurora_control/formation/formation_flight.h"
 #include "aurora_control/formation/uav_ugv_yaml.h"
+#include "aurora_control/formation/triangle_yaml.h"
 #include "aurora_control/params/shipped_files.h"
 #include "option_values.h"
 
@@ -28,7 +29,7 @@ using namespace aurora_control;
 namespace {
 
 struct Options {
-  std::string controller, task, vehicle, csv, link, formation, config;
+  std::string controller, task, vehicle, csv, link, formation, config, law;
   std::vector<long> delays;  // one (a flight), or one per drone (a formation)
   long delay = 0;            // a flight's
   double rate = 0.0;         // [Hz] the compensator's, instead of its file's (0: the file's)
@@ -65,6 +66,7 @@ bool parse(int argc, char** argv, Options& o) {
       ("delay", po::value(&o.delays)->multitoken()->composing(), "feedback delay [samples of Ts], 0 to 2047 (limits.h); with --formation one per drone (default: the file's)")
       ("no-clamp", po::bool_switch(&o.no_clamp), "do not clamp the law's commands (an AR.Drone's sim still does, as its driver; a Bebop is clamped nowhere; refused for the Pioneer, whose laws saturate)")
       ("formation", po::value(&o.formation), "formation YAML or a shipped NAME (config/formations/*.yaml, docs/formation.md): fly its drones and formation layer instead of --controller and --task")
+      ("law", po::value(&o.law), "with --formation, a triangle's law instead of its file's: N, PSO, SPO, OSP, S-PO (docs/formation.md)")
       ("link", po::value(&o.link), "link YAML or a shipped NAME (config/links/*.yaml, docs/links.md): jitter, losses, a command-path delay; its uplink delay unless --delay is given")
       ("csv", po::value(&o.csv), "write one row per step k = 0..N at round-trip precision: step, t, the vehicle's state after k model steps (x, y, z, phi, theta, psi, dx, dy, dz, dphi, dtheta, dpsi; the Pioneer also u, omega), its commands u1..uN applied at step k (model order), the reference of step k and the tracking error (with --formation: each drone's state and commands, Q and Qd; docs/formation.md)");
   po::variables_map vm;
@@ -74,6 +76,10 @@ bool parse(int argc, char** argv, Options& o) {
     return false;
   }
   po::notify(vm);
+  if (o.formation.empty() && vm.count("law")) {
+    throw ConfigError("--law " + o.law + " is refused without --formation: it chooses a triangle's law; a flight's law "
+                      "is its --controller file's");
+  }
   if (o.formation.empty() && o.delays.size() > 1) {
     throw ConfigError("--delay takes one value for a flight (one per drone with --formation): got " + std::to_string(o.delays.size()));
   }
@@ -199,8 +205,14 @@ int main(int argc, char** argv) {
     if (o.formation.empty()) {
       run(o);
     } else {
-      const FormationFlightOptions f{o.formation, o.vehicle, o.csv, o.config, o.delays};
-      if (formationShapeOf(o.formation) == "uav_ugv_line") flyUavUgvLine(f);
+      const FormationFlightOptions f{o.formation, o.vehicle, o.csv, o.config, o.delays, o.law};
+      const std::string shape = formationShapeOf(o.formation);
+      if (!o.law.empty() && shape != "triangle") {
+        throw ConfigError("--law is refused for a formation of shape '" + shape + "': it chooses a triangle's law "
+                          "(N, PSO, SPO, OSP, S-PO); the line's law is its file's formation.law");
+      }
+      if (shape == "uav_ugv_line") flyUavUgvLine(f);
+      else if (shape == "triangle") flyTriangle(f);
       else flyFormation(f);
     }
   } catch (const std::exception& e) {

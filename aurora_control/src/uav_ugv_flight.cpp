@@ -62,23 +62,19 @@ struct LineErrors {
 void flyUavUgvLine(const FormationFlightOptions& o) {
   if (!o.delays.empty()) throw ConfigError("--delay is refused for a UAV-UGV line: its robots run without delay (AuRoRA's)");
   const UavUgvLineSetup setup = readUavUgvLineFile(o.formation, o.config_dir);
-  FILE* csv = o.csv.empty() ? nullptr : std::fopen(o.csv.c_str(), "w");
-  if (!o.csv.empty() && !csv) throw std::runtime_error("cannot write '" + o.csv + "'");
-  if (csv) std::fprintf(csv, "%s", uavUgvCsvHeader().c_str());
   UavUgvLineFlight run(setup);
   LineErrors errors;
-  const auto t0 = std::chrono::steady_clock::now();
+  aurora_sim::Pioneer3dx::State<double> pioneer;  // the states a tick starts from
+  aurora_sim::Ardrone2::State<double> drone;
   const long ticks = setup.ticks();
-  for (long k = 0; k < ticks; ++k) {
-    const double t = double(k) * setup.tick;
-    const aurora_sim::Pioneer3dx::State<double> pioneer = run.pioneer;  // the states this tick starts from
-    const aurora_sim::Ardrone2::State<double> drone = run.drone;
-    run.tick(k);
-    errors.add(t, run, pioneer.X, drone.X);
-    if (csv) writeRow(csv, k, t, pioneer.X, drone.X, run);
-  }
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  if (csv) std::fclose(csv);
+  const double seconds = flyWithCsv(
+      o.csv, uavUgvCsvHeader(), ticks,
+      [&](long k) {
+        pioneer = run.pioneer, drone = run.drone;
+        run.tick(k);
+        errors.add(double(k) * setup.tick, run, pioneer.X, drone.X);
+      },
+      [&](FILE* csv, long k) { writeRow(csv, k, double(k) * setup.tick, pioneer.X, drone.X, run); });
   std::printf("flight: UAV-UGV line (%s Pioneer + AR.Drone), %ld ticks of %.4f s in %.3f s\n",
               setup.pioneer.kinematic != 0.0 ? "kinematic" : "dynamic", ticks, setup.tick, seconds);
   std::printf("  RMS after 20 s: xf, yf %.4f m, rho %.4f m, alpha %.4f rad, beta %.4f rad, drone position %.4f m; "

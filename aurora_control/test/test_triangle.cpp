@@ -8,12 +8,15 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 
 #include "aurora_control/formation/formation_layer.h"
 #include "aurora_control/formation/triangle_formation.h"
 #include "aurora_control/formation/triangle_reference.h"
+#include "aurora_control/formation/triangle_yaml.h"
 #include "aurora_control/law/control_law.h"
 #include "aurora_sim/vehicle_yaml.h"
 
@@ -151,37 +154,37 @@ TEST(Triangle, TheFirstStepOfEachLawIsAuRoRAs) {
 namespace {
 
 // RMS of the errors over the periods with t >= 20 s of the kinematic
-// scenario (the robots at their references before every period; n = 0 ..
-// 999): position norm, p, q, psi; and the second period's Q and dQd.
+// scenario (config/formations/triangle_kinematic.yaml: the robots at their
+// references before every period; n = 0 .. 999): position norm, p, q, psi;
+// and the second period's Q and dQd.
 struct KinematicRun {
   double rms_position = 0, rms_p = 0, rms_q = 0, rms_psi = 0;
   double Q1[9], dQd1[9];
 };
 
+// The shipped file triangle_NAME.yaml with `law`, flown period by period.
+aurora_control::TriangleFlight shippedTriangle(const char* name, TriangleLaw law) {
+  const std::string config = AURORA_CONFIG_DIR;
+  return aurora_control::TriangleFlight(aurora_control::readTriangleFile(
+      config + "/formations/triangle_" + name + ".yaml", config, aurora_control::triangleLawName(law)));
+}
+
 KinematicRun flyKinematic(TriangleLaw law) {
-  const std::vector<double> X0 = start(0.0);
-  Layer layer = layerOf(law, 3.0, X0.data());
-  double X[9];
-  for (int k = 0; k < 9; ++k) X[k] = X0[k];
+  aurora_control::TriangleFlight run = shippedTriangle("kinematic", law);
   KinematicRun r;
   double sums[4] = {0, 0, 0, 0};
   long n_late = 0;
   for (long n = 0; n < 1000; ++n) {
     const double t = 0.05 * double(n);
-    double Qd[9];
-    aurora_control::carrouselReference(t, Qd);
-    layer.update(X, Qd);
+    run.period(n);
     if (n == 1) {
-      for (int i = 0; i < 9; ++i) r.Q1[i] = layer.Q()[i], r.dQd1[i] = layer.dQd()[i];
+      for (int i = 0; i < 9; ++i) r.Q1[i] = run.layer.Q()[i], r.dQd1[i] = run.layer.dQd()[i];
     }
     if (t >= 20.0) {
-      const double* e = layer.Qtil();
+      const double* e = run.layer.Qtil();
       sums[0] += e[0] * e[0] + e[1] * e[1] + e[2] * e[2], sums[1] += e[3] * e[3], sums[2] += e[4] * e[4];
       sums[3] += e[8] * e[8];
       ++n_late;
-    }
-    for (int d = 0; d < 3; ++d) {
-      for (int i = 0; i < 3; ++i) X[3 * d + i] = layer.position(d)[i];  // the robots are their references
     }
   }
   r.rms_position = std::sqrt(sums[0] / n_late), r.rms_p = std::sqrt(sums[1] / n_late);
@@ -212,60 +215,27 @@ TEST(Triangle, TheKinematicScenarioTracksAsAuRoRAs) {
 
 namespace {
 
-// Three AR.Drones (the spec's scenario (ii)): each flies the underactuated
-// law with its default gains at 1/30 s, the layer (K1 = 0.1 I, K2 = I)
-// runs every 0.05 s. The order on a base tick of 1/60 s (j = 0, 1, ...):
-// j = 0 the layer only; j even (>= 2) every drone's law on its state with
-// the layer's held output, then its model step; j a multiple of 3, after
-// the drones, the layer at t = j / 60 on the drones' positions. RMS over the
+// Three AR.Drones (the spec's scenario (ii), config/formations/
+// triangle_ardrones.yaml; TriangleFlight's base tick of 1/60 s): RMS over the
 // layer's periods with t >= 20 s (n = 0 .. 999).
 struct DroneRun {
   double rms_position = 0, rms_p = 0, rms_q = 0, rms_beta = 0, rms_psi = 0, closest = 1e9;
 };
 
 DroneRun flyThreeDrones(TriangleLaw law) {
-  using aurora_sim::Ardrone2;
-  using DroneLaw = aurora_control::ArdroneLaw<aurora_control::LawType::kUnderactuated>;
-  const Ardrone2::Params<double> dp =
-      aurora_sim::loadVehicleFile<Ardrone2>(std::string(AURORA_CONFIG_DIR) + "/vehicles/ardrone2.yaml");
-  const aurora_control::LawGains<double> gains{{0.0, 0.0}, aurora_control::UnderactuatedGains<double>::defaults()};
-  Ardrone2::State<double> drone[3];
-  DroneLaw::Memory<double> memory[3];
-  const std::vector<double> X0 = start(0.75);
-  for (int d = 0; d < 3; ++d) {
-    drone[d].reset();  // at rest at 0.75 m
-    drone[d].X[aurora_sim::kX] = X0[3 * d], drone[d].X[aurora_sim::kY] = X0[3 * d + 1];
-    memory[d].reset();
-  }
-  Layer layer = layerOf(law, 0.1, X0.data());
+  aurora_control::TriangleFlight run = shippedTriangle("ardrones", law);
   DroneRun r;
   double sums[5] = {0, 0, 0, 0, 0};
   long late = 0;
-  for (long j = 0; j < 3000; ++j) {
-    if (j >= 1 && j % 2 == 0) {
-      for (int d = 0; d < 3; ++d) {
-        aurora_control::Reference<double> ref{};
-        for (int i = 0; i < 3; ++i) ref.pos[i] = layer.position(d)[i], ref.vel[i] = layer.velocity(d)[i];
-        double U[4], err[3];
-        DroneLaw::command(dp, gains, memory[d], ref, drone[d].X, U, err);
-        Ardrone2::step(dp, drone[d], U);
-      }
-    }
-    if (j % 3 != 0) continue;
-    double X[9], Qd[9];
-    for (int d = 0; d < 3; ++d) {
-      for (int i = 0; i < 3; ++i) X[3 * d + i] = drone[d].X[i];
-    }
-    const double t = double(j) / 60.0;
-    aurora_control::carrouselReference(t, Qd);
-    layer.update(X, Qd);
+  for (long n = 0; n < 1000; ++n) {
+    run.period(n);
     for (int a = 0; a < 3; ++a) {
       for (int b = a + 1; b < 3; ++b) {
-        r.closest = std::min(r.closest, aurora_control::triangle_detail::distance(X + 3 * a, X + 3 * b));
+        r.closest = std::min(r.closest, aurora_control::triangle_detail::distance(run.X + 3 * a, run.X + 3 * b));
       }
     }
-    if (t < 20.0) continue;
-    const double* e = layer.Qtil();
+    if (0.05 * double(n) < 20.0) continue;
+    const double* e = run.layer.Qtil();
     sums[0] += e[0] * e[0] + e[1] * e[1] + e[2] * e[2], sums[1] += e[3] * e[3], sums[2] += e[4] * e[4];
     sums[3] += e[5] * e[5], sums[4] += e[8] * e[8];
     ++late;
@@ -294,4 +264,44 @@ TEST(Triangle, ThreeARDronesFlyAsAuRoRAs) {
     for (size_t i = 0; i < spec.size(); ++i) EXPECT_NEAR(got[i], spec[i], 0.05 * spec[i]) << i;  // the spec: 2 digits
     EXPECT_NEAR(r.closest, 1.41, 0.01);
   }
+}
+
+namespace {
+
+// The refusal of triangle_NAME.yaml with `from` replaced by `to` ("" when it loads).
+std::string refusalOfEdited(const char* name, const std::string& from, const std::string& to) {
+  const std::string config = AURORA_CONFIG_DIR;
+  std::ifstream in(config + "/formations/triangle_" + name + ".yaml");
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const size_t at = text.find(from);
+  if (at == std::string::npos) return "the test's edit '" + from + "' is not in the file";
+  text.replace(at, from.size(), to);
+  const std::string path = ::testing::TempDir() + "/triangle_edited.yaml";
+  std::ofstream(path) << text;
+  try {
+    aurora_control::readTriangleFile(path, config);
+  } catch (const aurora_common::ConfigError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST(Triangle, ABadFileIsRefusedNamingTheKey) {
+  EXPECT_EQ(refusalOfEdited("ardrones", "  law: N\n", "  law: S-PO\n"), "");
+  std::string e = refusalOfEdited("kinematic", "  law: N\n", "  law: NSB\n");
+  EXPECT_NE(e.find("'formation.law' = 'NSB' is not a triangle law: accepted N, PSO, SPO, OSP, S-PO"), std::string::npos)
+      << e;
+  e = refusalOfEdited("kinematic", "reference: carrousel", "reference: pringles");
+  EXPECT_NE(e.find("'formation.reference' = 'pringles' is unknown: accepted carrousel"), std::string::npos) << e;
+  e = refusalOfEdited("kinematic", "    starts:", "    controller: controllers/underactuated.yaml\n    starts:");
+  EXPECT_NE(e.find("'formation.robots.controller' is refused without a vehicle"), std::string::npos) << e;
+  e = refusalOfEdited("ardrones", "controller: controllers/underactuated.yaml", "controller: controllers/pd_saturated.yaml");
+  EXPECT_NE(e.find("'formation.robots.controller' is refused: the drones fly the underactuated law"), std::string::npos)
+      << e;
+  e = refusalOfEdited("ardrones", "period: 0.05", "period: 0.0123");
+  EXPECT_NE(e.find("'formation.period' = 0.0123 s and the drones' step"), std::string::npos) << e;
+  e = refusalOfEdited("kinematic", "[0.0, 1.0, 0.0]]", "[0.0, 1.0]]");
+  EXPECT_NE(e.find("formation.robots.starts[2]"), std::string::npos) << e;
 }

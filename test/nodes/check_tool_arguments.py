@@ -307,6 +307,35 @@ class FormationAndLinkArgumentsTest(unittest.TestCase):
         self.assertIn("RMS after 20 s: xf, yf 0.0093 m, rho 0.0093 m", out)
         self.refused(["--formation", "line_pioneer_ardrone", "--delay", "3", "3"], "--delay is refused for a UAV-UGV line")
 
+    def test_the_triangle_flies_as_auroras(self):
+        """Issue 34: flight --formation triangle_kinematic | triangle_ardrones [--law NAME] flies AuRoRA's triangle:
+        one row per layer period with each robot's position (r{i}_) or state and commands (d{i}_), Q and Qd by the
+        spec's names; the second period's variables and the printed errors are AuRoRA's; a wrong law is refused."""
+        with tempfile.TemporaryDirectory() as tmp:
+            csv = os.path.join(tmp, "triangle.csv")
+            rc, out = flight("--formation", "triangle_kinematic", "--csv", csv)
+            self.assertEqual(rc, 0, out)
+            self.assertIn("flight: triangle, law N, kinematic robots, 1000 periods", out)
+            rows = [r.split(",") for r in open(csv).read().splitlines()]
+            self.assertEqual(rows[0][:5], ["step", "t", "r1_x", "r1_y", "r1_z"])
+            self.assertEqual(rows[0][-9:], ["Qd_xF", "Qd_yF", "Qd_zF", "Qd_p", "Qd_q", "Qd_beta", "Qd_phi", "Qd_theta",
+                                            "Qd_psi"])
+            self.assertEqual(len(rows), 1 + 1000)
+            col = {name: i for i, name in enumerate(rows[0])}
+            for name, value in (("Q_yF", 0.2851064227), ("Q_zF", 0.1382502832), ("Q_p", 1.946429472),
+                                ("Q_q", 1.442023204), ("Q_beta", 0.8257879404), ("Q_psi", -0.2884694979)):
+                self.assertAlmostEqual(float(rows[2][col[name]]), value, places=9, msg=name)
+        rc, out = flight("--formation", "triangle_kinematic", "--law", "OSP")
+        self.assertEqual(rc, 0, out)
+        self.assertIn("RMS after 20 s: position 0.0006 m, p 0.0761 m, q 0.0721 m", out)
+        rc, out = flight("--formation", "triangle_ardrones", "--law", "PSO")
+        self.assertEqual(rc, 0, out)
+        self.assertIn("three AR.Drones", out)
+        self.assertIn("psi 1.1914 rad", out)
+        self.refused(["--formation", "triangle_kinematic", "--law", "NSB"], "--law = 'NSB' is not a triangle law")
+        self.refused(["--formation", "line_lemniscate", "--law", "N"], "--law is refused for a formation of shape 'line'")
+        self.refused(["--law", "N"], "--law N is refused without --formation")
+
     def test_two_sweeps_on_one_folder_and_an_interrupted_sweep(self):
         sweep = subprocess.run(["catkin_find", "--first-only", "--libexec", "aurora_sweep", "sweep"],
                                stdout=subprocess.PIPE).stdout.decode().strip()

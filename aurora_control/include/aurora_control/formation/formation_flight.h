@@ -3,7 +3,10 @@
 // flight from Python: aurora._core's simulate_formation_files.
 #pragma once
 
+#include <chrono>
+#include <cstdio>
 #include <functional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -15,6 +18,7 @@ namespace aurora_control {
 struct FormationFlightOptions {
   std::string formation, vehicle, csv, config_dir;
   std::vector<long> delays;  // per drone, replacing the file's (empty: the file's)
+  std::string law;           // a triangle's law instead of the file's (flight --law; empty: the file's)
 };
 
 // Each tick, with the drones' sample time Ts [s].
@@ -40,7 +44,26 @@ FormationFlight flyFormationFiles(const FormationFlightOptions& o, const Formati
 // The tool: the flight, its CSV (o.csv) and its printed errors and checks.
 void flyFormation(const FormationFlightOptions& o);
 
-// The same for a UAV-UGV line file (shape: uav_ugv_line; uav_ugv_yaml.h).
+// Flies steps k = 0 .. steps - 1 (fly(k)) and writes each one's row to the
+// CSV at `path` (row(file, k); none when path is empty) under `header`;
+// returns the wall time of the flight [s]. AuRoRA's formations' tools.
+template <class Fly, class Row>
+double flyWithCsv(const std::string& path, const std::string& header, long steps, Fly&& fly, Row&& row) {
+  FILE* csv = path.empty() ? nullptr : std::fopen(path.c_str(), "w");
+  if (!path.empty() && !csv) throw std::runtime_error("cannot write '" + path + "'");
+  if (csv) std::fprintf(csv, "%s", header.c_str());
+  const auto t0 = std::chrono::steady_clock::now();
+  for (long k = 0; k < steps; ++k) {
+    fly(k);
+    if (csv) row(csv, k);
+  }
+  if (csv) std::fclose(csv);
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// The same for a UAV-UGV line file (shape: uav_ugv_line; uav_ugv_yaml.h)
+// and for a triangle file (shape: triangle; triangle_yaml.h).
 void flyUavUgvLine(const FormationFlightOptions& o);
+void flyTriangle(const FormationFlightOptions& o);
 
 }  // namespace aurora_control

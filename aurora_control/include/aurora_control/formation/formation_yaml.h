@@ -58,14 +58,15 @@ inline std::vector<double> numbers(const YamlReader& r, const YAML::Node& n, con
   return v;
 }
 
-inline void readGains(const YamlReader& r, const YAML::Node& n, const std::string& key, FormationGains<double, 6>& g) {
+template <int N>
+void readGains(const YamlReader& r, const YAML::Node& n, const std::string& key, FormationGains<double, N>& g) {
   r.onlyKeys(n, key, {"k1", "k2"});
   const char* names[2] = {"k1", "k2"};
   double* into[2] = {g.k1, g.k2};
   for (int j = 0; j < 2; ++j) {
     if (!n[names[j]]) continue;
-    const std::vector<double> v = numbers(r, n[names[j]], r.key(key, names[j]), 6);
-    for (int i = 0; i < 6; ++i) {
+    const std::vector<double> v = numbers(r, n[names[j]], r.key(key, names[j]), N);
+    for (int i = 0; i < N; ++i) {
       // The sweep's range of a formation gain (formation_k1_x, ...): positive, as the underactuated law's.
       if (!(v[i] >= kUnderactuatedGainMin && v[i] <= kUnderactuatedGainMax)) {
         r.fail(r.key(key, names[j]), "= " + YamlReader::fmt(v[i]) + " (entry " + std::to_string(i + 1) +

@@ -1,0 +1,89 @@
+// AuRoRA's triangle flown (docs/formation.md, "The triangle"): the layer
+// (formation_layer.h with TriangleFormation) every `period`, and either
+// kinematic robots (each put at its reference before every period, the
+// original's simulations) or three AR.Drones on the underactuated law, one
+// model step per Ts. On a base tick of period / p = Ts / q (1/60 s for
+// 0.05 s and 1/30 s): tick j = 0 the layer only; j >= 1 a multiple of q
+// every drone's law and step; j a multiple of p, after the drones, the layer
+// at t = j tick on the drones' positions. ROS-free.
+#pragma once
+
+#include <cmath>
+
+#include "aurora_control/formation/formation_layer.h"
+#include "aurora_control/formation/triangle_formation.h"
+#include "aurora_control/formation/triangle_reference.h"
+#include "aurora_control/law/control_law.h"
+
+namespace aurora_control {
+
+struct TriangleSetup {
+  TriangleLaw law = TriangleLaw::kN;
+  FormationGains<double, 9> gains = FormationGains<double, 9>::of<TriangleFormation<double>>();
+  double period = 0.05;      // [s] the layer's
+  double duration = 50.0;    // [s]: the layer's periods n with t = n period < duration
+  bool kinematic = true;     // the robots are their references (no vehicles)
+  double start[9] = {1, 0, 0, -1, 0, 0, 0, 1, 0};  // [m] the robots' positions
+  LawVehicleParams drone{};  // flying: each drone's (its Ts the robots' step)
+  LawGains<double> drone_gains{{0.0, 0.0}, UnderactuatedGains<double>::defaults()};
+  long layer_ticks = 1, drone_ticks = 1;  // the base tick's divisors: period / tick, Ts / tick
+  long periods() const { return std::lround(std::ceil(duration / period - 1e-9)); }
+};
+
+class TriangleFlight {
+ public:
+  using DroneLaw = ArdroneLaw<LawType::kUnderactuated>;
+  using Layer = FormationLayer<double, TriangleFormation<double>>;
+
+  explicit TriangleFlight(const TriangleSetup& s) : layer(s.law, s.gains, s.period), s_(s) {
+    for (int d = 0; d < 3; ++d) {
+      drone[d].reset(s.start[3 * d + 2]);
+      drone[d].X[aurora_sim::kX] = s.start[3 * d], drone[d].X[aurora_sim::kY] = s.start[3 * d + 1];
+      memory_[d].reset();
+    }
+    for (int k = 0; k < 9; ++k) X[k] = s.start[k];
+    double Qd0[9];
+    carrouselReference(0.0, Qd0);
+    layer.start(X, Qd0);
+  }
+
+  // Layer period n with what comes before it: the kinematic robots put at
+  // their references, or the drones' steps on the base ticks since the last
+  // period.
+  void period(long n) {
+    if (s_.kinematic) {
+      for (int k = 0; k < 9 && n > 0; ++k) X[k] = layer.position(k / 3)[k % 3];
+    } else {
+      for (long j = (n - 1) * s_.layer_ticks + 1; n > 0 && j <= n * s_.layer_ticks; ++j) {
+        if (j % s_.drone_ticks == 0) stepDrones();
+      }
+      for (int d = 0; d < 3; ++d) {
+        for (int i = 0; i < 3; ++i) X[3 * d + i] = drone[d].X[i];
+      }
+    }
+    carrouselReference(double(n) * s_.period, Qd);
+    layer.update(X, Qd);
+  }
+
+  Layer layer;
+  aurora_sim::Ardrone2::State<double> drone[3];
+  double X[9];                  // the positions the last period saw
+  double Qd[9] = {};
+  double U[3][4] = {};          // each drone's last command
+
+ private:
+  void stepDrones() {
+    for (int d = 0; d < 3; ++d) {
+      Reference<double> ref{};
+      for (int i = 0; i < 3; ++i) ref.pos[i] = layer.position(d)[i], ref.vel[i] = layer.velocity(d)[i];
+      double err[3];
+      DroneLaw::command(s_.drone, s_.drone_gains, memory_[d], ref, drone[d].X, U[d], err);
+      aurora_sim::Ardrone2::step(s_.drone, drone[d], U[d]);
+    }
+  }
+
+  TriangleSetup s_;
+  DroneLaw::Memory<double> memory_[3];
+};
+
+}  // namespace aurora_control

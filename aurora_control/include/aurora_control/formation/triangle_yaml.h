@@ -1,0 +1,109 @@
+// A triangle formation file (config/formations/triangle_*.yaml;
+// docs/formation.md, "The triangle"), read strictly:
+//
+//   formation:
+//     shape: triangle
+//     law: N                      # N, PSO, SPO, OSP, S-PO
+//     period: 0.05                # s: the layer's
+//     duration: 50                # s
+//     gains: {k1: [9], k2: [9]}   # optional: AuRoRA's class gains (3, 1)
+//     reference: carrousel        # AuRoRA's Carrossel (the one so far)
+//     robots:
+//       starts: [[x, y, z], [x, y, z], [x, y, z]]   # m
+//       vehicle: vehicles/ardrone2.yaml             # absent: kinematic robots (at their references)
+//       controller: controllers/underactuated.yaml  # or an underactuated mapping
+//
+// Refused naming the key: an unknown law, key or reference, a period that
+// the drones' step and a base tick of at most 12 parts cannot both divide.
+#pragma once
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "aurora_control/formation/formation_yaml.h"
+#include "aurora_control/formation/triangle_flight.h"
+#include "aurora_sim/vehicle_yaml.h"
+
+namespace aurora_control {
+
+// The triangle's laws by AuRoRA's names.
+inline const char* triangleLawName(TriangleLaw law) {
+  static const char* const names[] = {"N", "PSO", "SPO", "OSP", "S-PO"};
+  return names[static_cast<int>(law)];
+}
+
+// `name` as a law, or a refusal naming `key` and the accepted names.
+inline TriangleLaw triangleLawOf(const std::string& name, const std::string& key) {
+  for (TriangleLaw l : {TriangleLaw::kN, TriangleLaw::kPSO, TriangleLaw::kSPO, TriangleLaw::kOSP, TriangleLaw::kSdashPO}) {
+    if (name == triangleLawName(l)) return l;
+  }
+  throw ConfigError(key + " = '" + name + "' is not a triangle law: accepted N, PSO, SPO, OSP, S-PO");
+}
+
+namespace triangle_yaml_detail {
+
+// The base tick: period = p tick and Ts = q tick with q <= 12.
+inline void baseTick(const YamlReader& r, double period, double Ts, TriangleSetup& s) {
+  for (long q = 1; q <= 12; ++q) {
+    const long p = std::lround(double(q) * period / Ts);
+    if (p >= 1 && std::fabs(double(p) * Ts / double(q) - period) <= 1e-9 * period) {
+      s.layer_ticks = p, s.drone_ticks = q;
+      return;
+    }
+  }
+  r.fail("formation.period", "= " + YamlReader::fmt(period) + " s and the drones' step " + YamlReader::fmt(Ts) +
+                                 " s have no common tick of Ts / 12 or longer: accepted periods of p Ts / q, q <= 12");
+}
+
+inline void readRobots(const YamlReader& r, const YAML::Node& n, const std::string& config_dir, TriangleSetup& s) {
+  const std::string key = "formation.robots";
+  r.onlyKeys(n, key, {"starts", "vehicle", "controller"});
+  const YAML::Node starts = r.require(n, key, "starts", "three [x, y, z] in m");
+  if (!starts.IsSequence() || starts.size() != 3) r.fail(r.key(key, "starts"), "must list 3 robots' [x, y, z] in m");
+  for (int d = 0; d < 3; ++d) {
+    const std::vector<double> p = formation_detail::numbers(r, starts[d], r.key(key, "starts") + "[" + std::to_string(d) + "]", 3);
+    for (int i = 0; i < 3; ++i) s.start[3 * d + i] = p[i];
+  }
+  s.kinematic = !n["vehicle"];
+  if (s.kinematic) {
+    if (n["controller"]) r.fail(r.key(key, "controller"), "is refused without a vehicle: kinematic robots have no law");
+    return;
+  }
+  s.drone = aurora_sim::loadVehicleFile<LawVehicle>(
+      formation_detail::inConfig(r.text(n["vehicle"], r.key(key, "vehicle")), config_dir), "the triangle's drones");
+  const YAML::Node c = r.require(n, key, "controller", "an underactuated mapping or controllers/underactuated.yaml");
+  ControllerSettings set;
+  if (c.IsScalar()) set = readControllerFile(formation_detail::inConfig(r.text(c, r.key(key, "controller")), config_dir)).settings;
+  else readLaw(r, c, r.key(key, "controller"), set);
+  if (set.law != LawType::kUnderactuated) r.fail(r.key(key, "controller"), "is refused: the drones fly the underactuated law");
+  s.drone_gains.underactuated = set.underactuated;
+}
+
+}  // namespace triangle_yaml_detail
+
+// The file's setup; `law` (not empty: flight's --law) replaces the file's.
+inline TriangleSetup readTriangleFile(const std::string& path, const std::string& config_dir,
+                                      const std::string& law = "") {
+  const YamlReader r("formation file '" + path + "': ");
+  const YAML::Node n = formation_detail::formationSection(
+      r, path, {"shape", "law", "period", "duration", "gains", "reference", "robots"});
+  TriangleSetup s;
+  const std::string file_law = r.text(r.require(n, "formation", "law", "N, PSO, SPO, OSP, S-PO"), "formation.law");
+  try {
+    s.law = law.empty() ? triangleLawOf(file_law, "'formation.law'") : triangleLawOf(law, "--law");
+  } catch (const ConfigError& e) {
+    r.failWith(e.what());
+  }
+  s.period = r.numberIn(r.require(n, "formation", "period", "s"), "formation.period", 0.0, 10.0, "s", false);
+  s.duration = r.numberIn(r.require(n, "formation", "duration", "s"), "formation.duration", 0.0, 3600.0, "s", false);
+  if (n["gains"]) formation_detail::readGains(r, n["gains"], "formation.gains", s.gains);
+  const std::string reference = r.text(r.require(n, "formation", "reference", "carrousel"), "formation.reference");
+  if (reference != "carrousel") r.fail("formation.reference", "= '" + reference + "' is unknown: accepted carrousel");
+  triangle_yaml_detail::readRobots(r, r.require(n, "formation", "robots", "starts (and vehicle, controller)"),
+                                   config_dir, s);
+  if (!s.kinematic) triangle_yaml_detail::baseTick(r, s.period, s.drone.Ts, s);
+  return s;
+}
+
+}  // namespace aurora_control

@@ -1,0 +1,88 @@
+// flight --formation FILE for a triangle file (shape: triangle;
+// docs/formation.md, "The triangle"): the run of TriangleFlight, one CSV
+// row per layer period and the printed errors (RMS after 20 s, as the spec
+// reports AuRoRA's).
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+#include <string>
+
+#include "aurora_control/formation/formation_flight.h"
+#include "aurora_control/formation/triangle_yaml.h"
+
+namespace aurora_control {
+
+namespace {
+
+using Triangle = TriangleFormation<double>;
+
+// step (the layer's period n), t, each robot's position (kinematic: r{i}_x,
+// y, z) or state and command (d{i}_), Q_ and Qd_ by the spec's names.
+std::string triangleCsvHeader(bool kinematic) {
+  std::string h = "step,t";
+  for (int d = 1; d <= 3; ++d) {
+    const std::string p = (kinematic ? "r" : "d") + std::to_string(d) + "_";
+    for (int i = 0; i < (kinematic ? 3 : LawVehicle::kStates); ++i) h += "," + p + LawVehicle::stateName(i);
+    for (int i = 0; !kinematic && i < LawVehicle::kInputs; ++i) h += "," + p + "u" + std::to_string(i + 1);
+  }
+  for (const char* q : {"Q_", "Qd_"}) {
+    for (int i = 0; i < 9; ++i) h += std::string(",") + q + Triangle::variableName(i);
+  }
+  return h + "\n";
+}
+
+void writeRow(FILE* f, long n, double t, bool kinematic, const TriangleFlight& run) {
+  std::fprintf(f, "%ld,%.17g", n, t);
+  for (int d = 0; d < 3; ++d) {
+    for (int i = 0; i < (kinematic ? 3 : LawVehicle::kStates); ++i) {
+      std::fprintf(f, ",%.17g", kinematic ? run.X[3 * d + i] : run.drone[d].X[i]);
+    }
+    for (int i = 0; !kinematic && i < LawVehicle::kInputs; ++i) std::fprintf(f, ",%.17g", run.U[d][i]);
+  }
+  for (int i = 0; i < 9; ++i) std::fprintf(f, ",%.17g", run.layer.Q()[i]);
+  for (int i = 0; i < 9; ++i) std::fprintf(f, ",%.17g", run.Qd[i]);
+  std::fprintf(f, "\n");
+}
+
+// Sums of squares after 20 s: the position (xF, yF, zF), p, q, beta, phi,
+// theta, psi; the closest pair of robots.
+struct TriangleErrors {
+  double sq[7] = {}, closest = 1e300;
+  long n = 0;
+  void add(double t, const TriangleFlight& run) {
+    for (int a = 0; a < 3; ++a) {
+      for (int b = a + 1; b < 3; ++b) closest = std::fmin(closest, triangle_detail::distance(run.X + 3 * a, run.X + 3 * b));
+    }
+    if (t < 20.0) return;
+    const double* e = run.layer.Qtil();
+    sq[0] += e[0] * e[0] + e[1] * e[1] + e[2] * e[2];
+    for (int i = 3; i < 9; ++i) sq[i - 2] += e[i] * e[i];
+    ++n;
+  }
+  double rms(int i) const { return n > 0 ? std::sqrt(sq[i] / double(n)) : 0.0; }
+};
+
+}  // namespace
+
+void flyTriangle(const FormationFlightOptions& o) {
+  if (!o.delays.empty()) throw ConfigError("--delay is refused for a triangle: its robots run without delay (AuRoRA's)");
+  const TriangleSetup setup = readTriangleFile(o.formation, o.config_dir, o.law);
+  TriangleFlight run(setup);
+  TriangleErrors errors;
+  const long periods = setup.periods();
+  const double seconds = flyWithCsv(
+      o.csv, triangleCsvHeader(setup.kinematic), periods,
+      [&](long n) {
+        run.period(n);
+        errors.add(double(n) * setup.period, run);
+      },
+      [&](FILE* csv, long n) { writeRow(csv, n, double(n) * setup.period, setup.kinematic, run); });
+  std::printf("flight: triangle, law %s, %s, %ld periods of %.3f s in %.3f s\n", triangleLawName(setup.law),
+              setup.kinematic ? "kinematic robots" : "three AR.Drones", periods, setup.period, seconds);
+  std::printf("  RMS after 20 s: position %.4f m, p %.4f m, q %.4f m, beta %.4f, phi %.4f, theta %.4f, psi %.4f rad; "
+              "closest pair %.3f m\n", errors.rms(0), errors.rms(1), errors.rms(2), errors.rms(3), errors.rms(4),
+              errors.rms(5), errors.rms(6), errors.closest);
+}
+
+}  // namespace aurora_control
