@@ -304,4 +304,10 @@ TEST(Triangle, ABadFileIsRefusedNamingTheKey) {
   EXPECT_NE(e.find("'formation.period' = 0.0123 s and the drones' step"), std::string::npos) << e;
   e = refusalOfEdited("kinematic", "[0.0, 1.0, 0.0]]", "[0.0, 1.0]]");
   EXPECT_NE(e.find("formation.robots.starts[2]"), std::string::npos) << e;
+  // Singular starts (eq. T3, T4): on one line; a median along x (m = (3, 0, 0): phi is 0 / 0).
+  e = refusalOfEdited("kinematic", "[0.0, 1.0, 0.0]]", "[0.0, 0.0, 0.0]]");
+  EXPECT_NE(e.find("'formation.robots.starts' puts the robots on one line"), std::string::npos) << e;
+  e = refusalOfEdited("kinematic", "[-1.0, 0.0, 0.0], [0.0, 1.0, 0.0]]", "[-1.0, 1.0, 0.0], [-1.0, -1.0, 0.0]]");
+  EXPECT_NE(e.find("'formation.robots.starts' puts robot 1's median m = 2 p1 - p2 - p3 along x: phi is 0 / 0"),
+            std::string::npos) << e;
 }

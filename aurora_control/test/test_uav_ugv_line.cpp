@@ -157,6 +157,8 @@ TEST(UavUgvLine, ABadFileIsRefusedNamingTheKey) {
   EXPECT_NE(e.find("is of type 'bebop2', but the UAV-UGV line's robot 2 flies type 'ardrone2'"), std::string::npos) << e;
   e = refusalOfEdited("tick: 0.03333333333333333", "tick: 0");
   EXPECT_NE(e.find("'formation.tick' = 0 is outside the accepted range (0, 1] s"), std::string::npos) << e;
+  e = refusalOfEdited("start: [0.0, 0.0, 0.75]", "start: [-1.0, 0.0, 0.0]");
+  EXPECT_NE(e.find("'formation.robots[1].start' is robot 1's: rho = 0"), std::string::npos) << e;
   e = refusalOfEdited("  duration: 130", "  duration: 130\n  period: 0.2");
   EXPECT_NE(e.find("'formation.period' is not a known key"), std::string::npos) << e;
 }

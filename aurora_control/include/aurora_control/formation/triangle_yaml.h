@@ -56,6 +56,33 @@ inline void baseTick(const YamlReader& r, double period, double Ts, TriangleSetu
                                  " s have no common tick of Ts / 12 or longer: accepted periods of p Ts / q, q <= 12");
 }
 
+// A start where the variables' Jacobian is singular is refused (docs/
+// formation.md, eq. T3, T4): two robots at one place or all three on a line
+// (the shape's rows), or a median m = 2 p1 - p2 - p3 with no component off
+// one axis (phi, theta or psi is 0 / 0).
+inline void refuseSingularStart(const YamlReader& r, const double X[9]) {
+  const std::string key = "formation.robots.starts";
+  double u[3], v[3], c[3], m[3];
+  for (int i = 0; i < 3; ++i) u[i] = X[3 + i] - X[i], v[i] = X[6 + i] - X[i];
+  triangle_detail::cross(u, v, c);
+  const double area = std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+  const double scale = triangle_detail::distance(X, X + 3) * triangle_detail::distance(X, X + 6);
+  if (!(area > 1e-9 * scale) || !(scale > 0.0)) {
+    r.fail(key, "puts the robots on one line (or two at one place): the triangle's angle beta and its shape rows are "
+                "singular there; accepted three robots that span a triangle");
+  }
+  triangle_detail::median(X, m);
+  const char* axis[3] = {"x", "y", "z"};
+  const char* angle[3] = {"phi", "theta", "psi"};
+  for (int i = 0; i < 3; ++i) {
+    const double a = m[(i + 1) % 3], b = m[(i + 2) % 3];
+    if (a * a + b * b == 0.0) {
+      r.fail(key, std::string("puts robot 1's median m = 2 p1 - p2 - p3 along ") + axis[i] + ": " + angle[i] +
+                      " is 0 / 0 there (its row of the Jacobian is singular); move a robot off that axis");
+    }
+  }
+}
+
 inline void readRobots(const YamlReader& r, const YAML::Node& n, const std::string& config_dir, TriangleSetup& s) {
   const std::string key = "formation.robots";
   r.onlyKeys(n, key, {"starts", "vehicle", "controller"});
@@ -65,6 +92,7 @@ inline void readRobots(const YamlReader& r, const YAML::Node& n, const std::stri
     const std::vector<double> p = formation_detail::numbers(r, starts[d], r.key(key, "starts") + "[" + std::to_string(d) + "]", 3);
     for (int i = 0; i < 3; ++i) s.start[3 * d + i] = p[i];
   }
+  refuseSingularStart(r, s.start);
   s.kinematic = !n["vehicle"];
   if (s.kinematic) {
     if (n["controller"]) r.fail(r.key(key, "controller"), "is refused without a vehicle: kinematic robots have no law");

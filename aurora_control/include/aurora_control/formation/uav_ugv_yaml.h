@@ -94,6 +94,12 @@ inline UavUgvLineSetup readUavUgvLineFile(const std::string& path, const std::st
   }
   readPioneer(r, robots[0], "formation.robots[0]", config_dir, s);
   readDrone(r, robots[1], "formation.robots[1]", config_dir, s);
+  double gap = 0.0;
+  for (int i = 0; i < 3; ++i) gap += (s.drone_start[i] - s.pioneer_start[i]) * (s.drone_start[i] - s.pioneer_start[i]);
+  if (!(gap > 0.0)) {
+    r.fail("formation.robots[1].start", "is robot 1's: rho = 0 and the line's angles are undefined; accepted a start "
+                                        "apart from the Pioneer's");
+  }
   s.pioneer.Ts = s.tick;  // every robot steps at the formation's tick (AuRoRA's 2018 Pioneer: 1/30 s)
   s.drone.Ts = s.tick;
   return s;
