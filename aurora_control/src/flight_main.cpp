@@ -33,7 +33,8 @@ struct Options {
   std::vector<long> delays;  // one (a flight), or one per drone (a formation)
   long delay = 0;            // a flight's
   double rate = 0.0;         // [Hz] the compensator's, instead of its file's (0: the file's)
-  std::string flown;         // the vehicle the controller's law flies (controllerVehicle; a flight's)
+  std::string flown_law;     // the controller file's law (its controller.name; a flight's)
+  std::string flown;         // the vehicle it flies (vehicleOfLaw)
   bool no_clamp = false;
 };
 
@@ -100,7 +101,7 @@ void resolve(const po::variables_map& vm, const std::string& config, Options& o)
   o.vehicle = shippedOrPath(o.vehicle, config, "vehicles");
   o.link = shippedOrPath(o.link, config, "links");
   o.formation = shippedOrPath(o.formation, config, "formations");
-  if (o.formation.empty()) o.flown = controllerVehicle(o.controller);
+  if (o.formation.empty()) o.flown_law = controllerFileName(o.controller), o.flown = vehicleOfLaw(o.flown_law);
   if (vm.count("rate")) {
     if (!o.formation.empty()) throw ConfigError("--rate is refused with --formation: its robots run at the vehicle's rate");
     if (!(o.rate > 0.0)) {
@@ -193,7 +194,7 @@ void flyAndReport(const Options& o, const Flight& f) {
 // Flies the options' task once with the controller file's law on its vehicle.
 void run(const Options& o) {
   const FlightFiles files{o.controller, o.task, o.vehicle, o.link, o.delay, o.no_clamp};
-  withFlight(files, o.flown, o.rate, "--rate ", "--no-clamp", [&](const auto& f) { flyAndReport(o, f); });
+  withFlight(files, o.flown_law, {o.rate, "--rate ", "--no-clamp"}, [&](const auto& f) { flyAndReport(o, f); });
 }
 
 }  // namespace

@@ -132,31 +132,44 @@ void withKernelShape(const SweepSpec& spec, F&& f) {
   }
 }
 
-// How a kernel of law Law is started (`start`) and which it is (`kernel`):
-// a single robot's takes its setup by value, a formation's from device memory.
+// Which kernel runs a sweep of law Law (`kernel`) and how it is started:
+// the constructor prepares its setup before the launch is timed (a single
+// robot's by value; a formation's, about 2 kB, uploaded to device memory,
+// held until the object goes after the launch's synchronisation), `launch`
+// starts it.
 template <class Law, typename T, int Capacity, bool Linked>
 struct SweepStart {
   static auto kernel() { return sweepKernel<Law, T, Capacity, Linked>; }
-  static void start(const SweepSpec& spec, unsigned blocks, int block, const GridView& grid, long first, long n,
-                    SimResult* out) {
-    const SimSetup<typename Law::Vehicle, T> setup = makeSetup<typename Law::Vehicle, T>(spec);
-    sweepKernel<Law, T, Capacity, Linked><<<blocks, block>>>(setup, grid, first, n, out);
+  explicit SweepStart(const SweepSpec& spec) : setup_(makeSetup<typename Law::Vehicle, T>(spec)) {}
+  void launch(unsigned blocks, int block, const GridView& grid, long first, long n, SimResult* out) const {
+    sweepKernel<Law, T, Capacity, Linked><<<blocks, block>>>(setup_, grid, first, n, out);
   }
+
+ private:
+  SimSetup<typename Law::Vehicle, T> setup_;
 };
 template <class Law, typename T, int Capacity, bool Linked>
 struct FormationStart {
   static auto kernel() { return formationKernel<Law, T, Capacity, Linked>; }
-  static void start(const SweepSpec& spec, unsigned blocks, int block, const GridView& grid, long first, long n,
-                    SimResult* out) {
-    DeviceArray<FormationSetup<T>> setup(1);
+  explicit FormationStart(const SweepSpec& spec) : setup_(1) {
     const FormationSetup<T> host = makeFormationSetup<T>(spec);
-    setup.upload(&host);
-    formationKernel<Law, T, Capacity, Linked><<<blocks, block>>>(setup.get(), grid, first, n, out);
-    check(cudaDeviceSynchronize(), "kernel");  // before the setup is freed
+    setup_.upload(&host);
   }
+  void launch(unsigned blocks, int block, const GridView& grid, long first, long n, SimResult* out) const {
+    formationKernel<Law, T, Capacity, Linked><<<blocks, block>>>(setup_.get(), grid, first, n, out);
+  }
+
+ private:
+  DeviceArray<FormationSetup<T>> setup_;
 };
 
-// Calls f(Start()) with the start of the kernel that runs `spec`.
+// A kernel's start as a type, without preparing it.
+template <class Start>
+struct StartOf {
+  using type = Start;
+};
+
+// Calls f(StartOf<Start>()) with the start of the kernel that runs `spec`.
 template <class F>
 void withKernel(const SweepSpec& spec, F&& f) {
   withKernelShape(spec, [&](auto type, auto capacity, auto linked) {
@@ -164,9 +177,9 @@ void withKernel(const SweepSpec& spec, F&& f) {
     constexpr int kCapacity = decltype(capacity)::value;
     constexpr bool kLinked = decltype(linked)::value;
     if (spec.formation()) {
-      aurora_control::withLaw(spec.law, [&](auto law) { f(FormationStart<decltype(law), T, kCapacity, kLinked>()); });
+      aurora_control::withLaw(spec.law, [&](auto law) { f(StartOf<FormationStart<decltype(law), T, kCapacity, kLinked>>()); });
     } else {
-      withSweepLaw(spec, [&](auto law) { f(SweepStart<decltype(law), T, kCapacity, kLinked>()); });
+      withSweepLaw(spec, [&](auto law) { f(StartOf<SweepStart<decltype(law), T, kCapacity, kLinked>>()); });
     }
   });
 }
@@ -175,16 +188,17 @@ void withKernel(const SweepSpec& spec, F&& f) {
 // reason where this build has no code for the device or the driver is old).
 cudaFuncAttributes kernelAttributes(const SweepSpec& spec) {
   cudaFuncAttributes attr{};
-  withKernel(spec, [&](auto start) {
-    check(cudaFuncGetAttributes(&attr, start.kernel()), "loading the sweep kernel (cudaFuncGetAttributes)");
+  withKernel(spec, [&](auto of) {
+    check(cudaFuncGetAttributes(&attr, decltype(of)::type::kernel()), "loading the sweep kernel (cudaFuncGetAttributes)");
   });
   return attr;
 }
 
 int defaultBlockSize(const SweepSpec& spec) {
   int min_grid = 0, block = 0;
-  withKernel(spec, [&](auto start) {
-    check(cudaOccupancyMaxPotentialBlockSize(&min_grid, &block, start.kernel()), "cudaOccupancyMaxPotentialBlockSize");
+  withKernel(spec, [&](auto of) {
+    check(cudaOccupancyMaxPotentialBlockSize(&min_grid, &block, decltype(of)::type::kernel()),
+          "cudaOccupancyMaxPotentialBlockSize");
   });
   return block;
 }
@@ -230,10 +244,11 @@ CudaRun launch(const SweepSpec& spec, int block_size, std::vector<SimResult>& ou
   run.block_size = block_size > 0 ? block_size : defaultBlockSize(spec);
   run.grid_size = blocksFor(n, run.block_size);
   DeviceArray<SimResult> dev_out(static_cast<size_t>(n));
+  const Start starter(spec);
   CudaEvent start, stop;
   cudaGetLastError();  // a stale error of an earlier, failed call is not this launch's
   check(cudaEventRecord(start.get()), "cudaEventRecord");
-  Start::start(spec, static_cast<unsigned>(run.grid_size), run.block_size, grid.view, first, n, dev_out.get());
+  starter.launch(static_cast<unsigned>(run.grid_size), run.block_size, grid.view, first, n, dev_out.get());
   check(cudaGetLastError(), "kernel launch");
   check(cudaEventRecord(stop.get()), "cudaEventRecord");
   check(cudaEventSynchronize(stop.get()), "kernel");
@@ -355,8 +370,8 @@ std::string cudaLaunchProblem(const SweepSpec& spec, int block_size) {
 long cudaResidentThreads(const SweepSpec& spec, int block_size) {
   int blocks = 0;
   const int block = block_size > 0 ? block_size : defaultBlockSize(spec);
-  withKernel(spec, [&](auto start) {
-    check(cudaOccupancyMaxActiveBlocksPerMultiprocessor(&blocks, start.kernel(), block, 0),
+  withKernel(spec, [&](auto of) {
+    check(cudaOccupancyMaxActiveBlocksPerMultiprocessor(&blocks, decltype(of)::type::kernel(), block, 0),
           "cudaOccupancyMaxActiveBlocksPerMultiprocessor");
   });
   return static_cast<long>(deviceAttribute(cudaDevAttrMultiProcessorCount)) * blocks * block;
@@ -366,7 +381,7 @@ CudaRun runCuda(const SweepSpec& spec, int block_size, std::vector<SimResult>& o
   const std::string delay = cudaDelayProblem(spec);
   if (!delay.empty()) throw std::runtime_error(delay);
   CudaRun run;
-  withKernel(spec, [&](auto start) { run = launch<decltype(start)>(spec, block_size, out); });
+  withKernel(spec, [&](auto of) { run = launch<typename decltype(of)::type>(spec, block_size, out); });
   return run;
 }
 

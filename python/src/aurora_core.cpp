@@ -75,10 +75,10 @@ py::dict flightArrays(const Flight& f) {
 py::dict simulateFiles(const std::string& controller, const std::string& task, const std::string& vehicle, long delay,
                        const std::string& link, bool clamp, double rate) {
   const FlightFiles files{controller, task, vehicle, link, delay, !clamp};
-  const std::string flown = controllerVehicle(controller);
-  refuseRateFor(flown, rate, "rate=" + YamlReader::fmt(rate));
+  const std::string law = controllerFileName(controller);
+  refuseRateFor(vehicleOfLaw(law), rate, "rate=" + YamlReader::fmt(rate));
   py::dict out;
-  withFlight(files, flown, rate, "rate=", "clamp=False", [&](const auto& f) { out = flightArrays(f); });
+  withFlight(files, law, {rate, "rate=", "clamp=False"}, [&](const auto& f) { out = flightArrays(f); });
   return out;
 }
 

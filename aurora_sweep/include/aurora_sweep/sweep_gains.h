@@ -12,6 +12,7 @@
 #include "aurora_common/host_device.h"
 #include "aurora_control/law/bebop2_compensator.h"
 #include "aurora_control/law/control_law.h"
+#include "aurora_control/law/other_laws.h"
 #include "aurora_control/law/pioneer_laws.h"
 #include "aurora_sweep/combination.h"
 
@@ -61,8 +62,7 @@ struct SweepGains<aurora_control::Bebop2Compensator> {
   }
   template <typename T>
   AURORA_HD static aurora_control::CompensatorGains<T> from(const Combination& c) {
-    aurora_control::CompensatorGains<T> g;
-    aurora_control::castGains(aurora_control::CompensatorGains<double>::defaults(), g);
+    aurora_control::CompensatorGains<T> g = aurora_control::CompensatorGains<T>::defaults();
     T* group[3] = {g.ksp, g.ksd, g.kp};
     for (int j = 0; j < 3; ++j) {
       const double* v = c.v + kFirst + 3 * j;
@@ -115,14 +115,7 @@ struct SweepGains<aurora_control::PioneerKinematic> {
   }
 };
 
-// Calls f(Law()) for each law of a vehicle other than the AR.Drone that a
-// sweep flies (the one list of them: the parameter table, the sweep file's
-// controller names and withSweepLaw read it). Host only.
-template <class F>
-void forEachOtherLaw(F&& f) {
-  f(aurora_control::Bebop2Compensator());
-  f(aurora_control::PioneerDynamic());
-  f(aurora_control::PioneerKinematic());
-}
+// The laws a sweep flies besides the AR.Drone's (law/other_laws.h).
+using aurora_control::forEachOtherLaw;
 
 }  // namespace aurora_sweep

@@ -40,7 +40,7 @@ struct CompensatorGains {
 };
 
 template <typename T, typename U>
-void castGains(const CompensatorGains<U>& from, CompensatorGains<T>& to) {
+AURORA_HD void castGains(const CompensatorGains<U>& from, CompensatorGains<T>& to) {
   for (int i = 0; i < aurora_sim::kBebopAxes; ++i) {
     to.ksp[i] = T(from.ksp[i]), to.ksd[i] = T(from.ksd[i]), to.kp[i] = T(from.kp[i]), to.kd[i] = T(from.kd[i]);
   }

@@ -58,11 +58,11 @@ struct PioneerDynamicGains {
 };
 
 template <typename T, typename U>
-void castGains(const PioneerKinematicGains<U>& from, PioneerKinematicGains<T>& to) {
+AURORA_HD void castGains(const PioneerKinematicGains<U>& from, PioneerKinematicGains<T>& to) {
   for (int i = 0; i < 2; ++i) to.k1[i] = T(from.k1[i]), to.k2[i] = T(from.k2[i]);
 }
 template <typename T, typename U>
-void castGains(const PioneerDynamicGains<U>& from, PioneerDynamicGains<T>& to) {
+AURORA_HD void castGains(const PioneerDynamicGains<U>& from, PioneerDynamicGains<T>& to) {
   for (int i = 0; i < 2; ++i) {
     to.kc1[i] = T(from.kc1[i]), to.kc2[i] = T(from.kc2[i]), to.kd1[i] = T(from.kd1[i]), to.kd2[i] = T(from.kd2[i]);
   }

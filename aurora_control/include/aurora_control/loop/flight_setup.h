@@ -5,11 +5,12 @@
 #pragma once
 
 #include <string>
-#include <vector>
+#include <type_traits>
 
 #include "aurora_control/loop/flight_runner.h"
 #include "aurora_control/law/compensator_yaml.h"
 #include "aurora_control/law/law_yaml.h"
+#include "aurora_control/law/other_laws.h"
 #include "aurora_control/law/pioneer_yaml.h"
 #include "aurora_control/params/limits.h"
 #include "aurora_control/link/link_yaml.h"
@@ -71,28 +72,10 @@ inline FlightSetup loadFlight(const FlightFiles& f) {
   return s;
 }
 
-// The laws of a vehicle other than the AR.Drone, by name, and the vehicle
-// each flies (a controller file's controller.name chooses its vehicle).
-struct LawOfVehicle {
-  const char* law;
-  const char* vehicle;
-};
-inline const std::vector<LawOfVehicle>& otherVehicleLaws() {
-  static const std::vector<LawOfVehicle> laws = {
-      {Bebop2Compensator::name(), Bebop2Compensator::Vehicle::name()},
-      {PioneerKinematic::name(), PioneerKinematic::Vehicle::name()},
-      {PioneerDynamic::name(), PioneerDynamic::Vehicle::name()}};
-  return laws;
-}
-
 // The vehicle a controller file's law flies, by name (its file:
-// config/vehicles/NAME.yaml): where a flight chooses its vehicle.
+// config/vehicles/NAME.yaml).
 inline std::string controllerVehicle(const std::string& controller_file) {
-  const std::string law = controllerFileName(controller_file);
-  for (const LawOfVehicle& l : otherVehicleLaws()) {
-    if (law == l.law) return l.vehicle;
-  }
-  return LawVehicle::name();
+  return vehicleOfLaw(controllerFileName(controller_file));
 }
 
 // A rate given (`given`, e.g. "--rate", non-zero `rate`) for a law that has
@@ -153,21 +136,34 @@ LawFlight<Law> loadPioneerFlight(const FlightFiles& f, const std::string& no_cla
   return lawFlight<Law>(f, readPioneerFile<Law>(f.controller));
 }
 
+// The flight of law `law` from the files: the compensator's with its rate,
+// a Pioneer law's without a clamp to leave out (withFlight's, per law).
+struct FlightOptionNames {
+  double rate;                  // [Hz] the compensator's instead of its file's (0: the file's)
+  std::string rate_option;      // how the rate was given, for a refusal ("--rate ", "rate=")
+  std::string no_clamp_option;  // how no clamp was asked for ("--no-clamp", "clamp=False")
+};
+inline LawFlight<Bebop2Compensator> loadFlightOf(Bebop2Compensator, const FlightFiles& f, const FlightOptionNames& o) {
+  return loadCompensatorFlight(f, o.rate, o.rate_option);
+}
+template <class Law>
+LawFlight<Law> loadFlightOf(Law, const FlightFiles& f, const FlightOptionNames& o) {
+  static_assert(std::is_same<typename Law::Vehicle, aurora_sim::Pioneer3dx>::value, "a Pioneer law's flight");
+  return loadPioneerFlight<Law>(f, o.no_clamp_option);
+}
+
 // Calls fly(LawFlight<Law>) with the flight of the controller file's law
-// (on `flown`, controllerVehicle's): the one place a flight's law is
-// chosen, for the flight tool and Python.
+// `law` (its controller.name): the one place a flight's law is chosen, for
+// the flight tool and Python.
 template <class Fly>
-void withFlight(const FlightFiles& f, const std::string& flown, double rate, const std::string& rate_option,
-                const std::string& no_clamp_option, Fly&& fly) {
-  if (flown == aurora_sim::Bebop2::name()) return fly(loadCompensatorFlight(f, rate, rate_option));
-  if (flown == aurora_sim::Pioneer3dx::name()) {
-    if (controllerFileName(f.controller) == PioneerKinematic::name()) {
-      return fly(loadPioneerFlight<PioneerKinematic>(f, no_clamp_option));
-    }
-    return fly(loadPioneerFlight<PioneerDynamic>(f, no_clamp_option));
-  }
+void withFlight(const FlightFiles& f, const std::string& law, const FlightOptionNames& o, Fly&& fly) {
+  bool other = false;
+  forEachOtherLaw([&](auto l) {
+    if (law == l.name()) other = true, fly(loadFlightOf(l, f, o));
+  });
+  if (other) return;
   const FlightSetup s = loadFlight(f);
-  withLaw(s.settings.law, [&](auto law) { fly(ardroneFlight<decltype(law)>(s.vehicle, s.settings, s.task, s.steps)); });
+  withLaw(s.settings.law, [&](auto l) { fly(ardroneFlight<decltype(l)>(s.vehicle, s.settings, s.task, s.steps)); });
 }
 
 }  // namespace aurora_control
