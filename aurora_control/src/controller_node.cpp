@@ -12,7 +12,8 @@
 #include "aurora_sim/command_mapping.h"
 #include "aurora_sim/ros/conversions.h"
 #include "aurora_sim/ros/vehicle_params.h"
-#include "aurora_control/law/law_yaml.h"
+#include "aurora_control/law/law_settings_yaml.h"
+#include "aurora_control/law/other_laws.h"
 #include "aurora_control/params/live_settings.h"
 #include "aurora_control/task/tracking.h"
 #include "aurora_control/ros/control_msg.h"
@@ -22,22 +23,21 @@
 
 namespace aurora_control {
 
-ControllerNode::ControllerNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
+template <class Settings>
+ControllerNodeOf<Settings>::ControllerNodeOf(ros::NodeHandle nh, ros::NodeHandle private_nh)
     : nh_(nh), pnh_(private_nh) {
   refuseDuplicatedKeysInLoadedFiles(pnh_);
-  // The vehicle, with the same range rules as the sim's: Ts for every law,
-  // the whole model for the underactuated law, which inverts it.
-  const aurora_control::LawVehicleParams vehicle = aurora_sim::loadVehicleParams(nh_, "vehicle");
-  Ts_ = vehicle.Ts;
   core_.reset(new Core());
-  ControllerSettings& set = core_->settings;
-  set.Ts = Ts_;
-  loadLaw(pnh_, vehicle, set);
+  Settings& set = core_->settings;
+  // The vehicle, with the same range rules as the sim's: Ts for every law,
+  // the whole model for a law that inverts it; then the law's gains.
+  loadLaw(nh_, pnh_, set);
+  Ts_ = set.Ts;
   const long given_delay = readDelaySamples();
   loadLink(pnh_, given_delay, set);
   set.clamp_commands = aurora_common::boolParam(pnh_, "clamp_commands", true);
   const std::string mode = readLoopMode();
-  task_ = loadTask(pnh_);
+  task_ = loadTask(pnh_, TaskHeights::of<Vehicle>());
   task_iterations_ = taskStepCount(task_.duration(), Ts_);  // steps 0..N (docs/controllers.md)
   refuseDelayBeyondTheTask(set.delay);
   refuseUnknownTopLevelKeys();
@@ -54,12 +54,12 @@ ControllerNode::ControllerNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
   advertiseLiveSettings();
 
   if (!lockstep_) {
-    timer_ = nh_.createTimer(ros::Duration(Ts_), &ControllerNode::onTimer, this);
-    rate_timer_ = nh_.createWallTimer(ros::WallDuration(1.0), &ControllerNode::onRateCheck, this);
+    timer_ = nh_.createTimer(ros::Duration(Ts_), &ControllerNodeOf::onTimer, this);
+    rate_timer_ = nh_.createWallTimer(ros::WallDuration(1.0), &ControllerNodeOf::onRateCheck, this);
   }
   publishTaskMarkers();
   ROS_INFO("controller: %s (%s), delay %s (%.4f s), link %s, %s commands, %s mode, %s task over "
-           "%.1f s%s%s", lawName(set.law), gainsText(set).c_str(), delayOriginText(given_delay, set.link).c_str(),
+           "%.1f s%s%s", lawNameOf(set), gainsText(set).c_str(), delayOriginText(given_delay, set.link).c_str(),
            set.delay * Ts_, linkName().c_str(),
            set.clamp_commands ? "clamped" : "unclamped", mode.c_str(), taskTypeName(task_.type),
            task_.duration(), safety.flight_sequence ? ", flight sequence (take-off, task, landing)" : "",
@@ -67,7 +67,8 @@ ControllerNode::ControllerNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
 }
 
 // mode (realtime or lockstep), trigger and the lockstep subscriber counts.
-std::string ControllerNode::readLoopMode() {
+template <class Settings>
+std::string ControllerNodeOf<Settings>::readLoopMode() {
   const std::string mode = wordParam(pnh_, kParameterTable[kRowMode]);
   lockstep_ = mode == "lockstep";
   // Realtime: by default the law runs as soon as a state arrives (lowest
@@ -85,7 +86,8 @@ std::string ControllerNode::readLoopMode() {
 }
 
 // Publishers, the driver channels and subscribers.
-void ControllerNode::connectTopics(const SafetyConfig& safety) {
+template <class Settings>
+void ControllerNodeOf<Settings>::connectTopics(const SafetyConfig& safety) {
   cmd_pub_ = nh_.advertise<geometry_msgs::Twist>("cmd_vel", 1000);
   control_pub_ = nh_.advertise<aurora_msgs::Control>("control", 1000);
   markers_pub_ = nh_.advertise<visualization_msgs::MarkerArray>("waypoints", 1, true);
@@ -95,14 +97,15 @@ void ControllerNode::connectTopics(const SafetyConfig& safety) {
   takeoff_land_ = TakeoffLand(nh_, "takeoff", "land", "", safety);
   reset_ = DriverCommandChannel(nh_, "reset", "reset", DeliveryPolicy());  // once: a toggle
   if (joystick_enabled_) {
-    joy_sub_ = nh_.subscribe("joy", 10, &ControllerNode::onJoy, this,
+    joy_sub_ = nh_.subscribe("joy", 10, &ControllerNodeOf::onJoy, this,
                              ros::TransportHints().tcpNoDelay());
   }
-  state_sub_ = nh_.subscribe("state", 100, &ControllerNode::onState, this,
+  state_sub_ = nh_.subscribe("state", 100, &ControllerNodeOf::onState, this,
                              ros::TransportHints().tcpNoDelay());
 }
 
-void ControllerNode::refuseDelayBeyondTheTask(long delay) const {
+template <class Settings>
+void ControllerNodeOf<Settings>::refuseDelayBeyondTheTask(long delay) const {
   const std::string key = pnh_.hasParam("delay/seconds") ? "delay/seconds" : "delay/samples";
   if (!delayShorterThanRun(delay, task_iterations_)) {
     throw ConfigError("parameter '" + fullKey(pnh_, key) + "' = " + delayRunText(delay, task_iterations_, Ts_));
@@ -113,13 +116,15 @@ void ControllerNode::refuseDelayBeyondTheTask(long delay) const {
 
 // The link for the start-up line: its name (~link_name, the launch's
 // link:=) and, unless ideal, every value that defines it.
-std::string ControllerNode::linkName() const {
+template <class Settings>
+std::string ControllerNodeOf<Settings>::linkName() const {
   const LinkParams& l = core_->settings.link;
   const std::string name = aurora_common::paramOr<std::string>(pnh_, "link_name", pnh_.hasParam("link") ? "~link" : "ideal");
   return l.ideal() && l.uplink.delay == 0 ? name : name + " (" + linkText(l) + ")";
 }
 
-void ControllerNode::refuseUnknownTopLevelKeys() {
+template <class Settings>
+void ControllerNodeOf<Settings>::refuseUnknownTopLevelKeys() {
   // The node's own keys and those the reconfigure server writes beside them.
   std::vector<std::string> accepted{"controller", "task", "safety", "joystick", "mode", "trigger",
                                     "delay", "clamp_commands", "lockstep_subscribers", "kp", "kd",
@@ -130,7 +135,8 @@ void ControllerNode::refuseUnknownTopLevelKeys() {
   refuseUnknownParams(pnh_, "delay", {"samples", "seconds"}, "");
 }
 
-long ControllerNode::readDelaySamples() {
+template <class Settings>
+long ControllerNodeOf<Settings>::readDelaySamples() {
   static_assert(Core::kMaxDelay == kHistoryCapacity - 1, "delay range follows the history");
   const bool has_seconds = pnh_.hasParam("delay/seconds");
   if (pnh_.hasParam("delay/samples") && has_seconds) {
@@ -155,13 +161,15 @@ long ControllerNode::readDelaySamples() {
   return samples;
 }
 
-ControllerConfig ControllerNode::liveConfig() const {
-  const ControllerSettings& set = core_->settings;
+template <class Settings>
+ControllerConfig ControllerNodeOf<Settings>::liveConfig() const {
+  const Settings& set = core_->settings;
   ControllerConfig config = ControllerConfig::__getDefault__();
-  config.kp = set.gains.kp;
-  config.kd = set.gains.kd;
+  const ControllerSettings& gains = ardroneGainsShown(set);
+  config.kp = gains.gains.kp;
+  config.kd = gains.gains.kd;
   config.delay_samples = static_cast<double>(set.delay);
-  writeUnderactuatedGains(set.underactuated, config);
+  writeUnderactuatedGains(gains.underactuated, config);
   config.uplink_jitter = static_cast<double>(set.link.uplink.jitter_max);
   config.uplink_loss = set.link.uplink.loss;
   config.uplink_burst = set.link.uplink.burst;
@@ -172,17 +180,19 @@ ControllerConfig ControllerNode::liveConfig() const {
   return config;
 }
 
-void ControllerNode::advertiseLiveSettings() {
+template <class Settings>
+void ControllerNodeOf<Settings>::advertiseLiveSettings() {
   descriptions_pub_ = pnh_.advertise<dynamic_reconfigure::ConfigDescription>("parameter_descriptions", 1, true);
   descriptions_pub_.publish(ControllerConfig::__getDescriptionMessage__());
   updates_pub_ = pnh_.advertise<dynamic_reconfigure::Config>("parameter_updates", 1, true);
   dynamic_reconfigure::Config update;
   liveConfig().__toMessage__(update);
   updates_pub_.publish(update);
-  set_parameters_ = pnh_.advertiseService("set_parameters", &ControllerNode::onSetParameters, this);
+  set_parameters_ = pnh_.advertiseService("set_parameters", &ControllerNodeOf::onSetParameters, this);
 }
 
-bool ControllerNode::onSetParameters(dynamic_reconfigure::Reconfigure::Request& req,
+template <class Settings>
+bool ControllerNodeOf<Settings>::onSetParameters(dynamic_reconfigure::Reconfigure::Request& req,
                                      dynamic_reconfigure::Reconfigure::Response& rsp) {
   boost::recursive_mutex::scoped_lock lock(config_mutex_);
   std::vector<LiveChange> changes;
@@ -190,8 +200,8 @@ bool ControllerNode::onSetParameters(dynamic_reconfigure::Reconfigure::Request& 
   for (const auto& i : req.config.ints) changes.push_back({i.name, static_cast<double>(i.value)});
   for (const auto& b : req.config.bools) changes.push_back({b.name, std::nan("")});  // no boolean setting
   for (const auto& t : req.config.strs) changes.push_back({t.name, std::nan("")});
-  ControllerSettings& set = core_->settings;
-  ControllerSettings next = set;
+  Settings& set = core_->settings;
+  Settings next = set;
   for (const LiveChange& c : changes) {
     const std::string problem = checkLiveChange(next, c, task_iterations_);
     if (!problem.empty()) {
@@ -221,7 +231,8 @@ bool ControllerNode::onSetParameters(dynamic_reconfigure::Reconfigure::Request& 
   return true;
 }
 
-void ControllerNode::announceDelayChange(long delay) {
+template <class Settings>
+void ControllerNodeOf<Settings>::announceDelayChange(long delay) {
   // The delay rule (docs/delay-and-study.md) sends the current state while
   // fewer than delay + 1 states are kept: a live raise beyond the history
   // means no delay at all for a while. Say so now, and again when it holds.
@@ -236,7 +247,8 @@ void ControllerNode::announceDelayChange(long delay) {
   }
 }
 
-void ControllerNode::onState(const aurora_msgs::DroneState::ConstPtr& msg) {
+template <class Settings>
+void ControllerNodeOf<Settings>::onState(const aurora_msgs::DroneState::ConstPtr& msg) {
   if (msg->stale) {
     // The estimator says its source stopped: not a fresh state; the
     // watchdogs see the age grow.
@@ -268,7 +280,8 @@ void ControllerNode::onState(const aurora_msgs::DroneState::ConstPtr& msg) {
   }
 }
 
-bool ControllerNode::lockstepListenersReady() const {
+template <class Settings>
+bool ControllerNodeOf<Settings>::lockstepListenersReady() const {
   const int cmd = static_cast<int>(cmd_pub_.getNumSubscribers());
   const int control = static_cast<int>(control_pub_.getNumSubscribers());
   if (cmd >= lockstep_cmd_subscribers_ && control >= lockstep_control_subscribers_) return true;
@@ -279,12 +292,14 @@ bool ControllerNode::lockstepListenersReady() const {
   return false;
 }
 
-double ControllerNode::stateAge() const {
+template <class Settings>
+double ControllerNodeOf<Settings>::stateAge() const {
   if (core_->empty()) return std::numeric_limits<double>::infinity();
   return lockstep_ ? 0.0 : (ros::Time::now() - last_state_time_).toSec();
 }
 
-void ControllerNode::onTimer(const ros::TimerEvent& event) {
+template <class Settings>
+void ControllerNodeOf<Settings>::onTimer(const ros::TimerEvent& event) {
   // The watchdogs run here when no state arrives; with trigger=timer the law
   // too. (With trigger=state a fresh state already ran the cycle: running it
   // here as well would double the command rate.)
@@ -292,7 +307,8 @@ void ControllerNode::onTimer(const ros::TimerEvent& event) {
   if (timer_triggered_ || !fresh) cycle(event.current_real);
 }
 
-void ControllerNode::onRateCheck(const ros::WallTimerEvent&) {
+template <class Settings>
+void ControllerNodeOf<Settings>::onRateCheck(const ros::WallTimerEvent&) {
   const double rate = static_cast<double>(sent_in_window_);  // per 1 s window
   sent_in_window_ = 0;
   const bool flying = supervisor_.phase() == FlightPhase::kFly;
@@ -305,7 +321,8 @@ void ControllerNode::onRateCheck(const ros::WallTimerEvent&) {
   low_rate_ = low;
 }
 
-void ControllerNode::onJoy(const sensor_msgs::Joy::ConstPtr& msg) {
+template <class Settings>
+void ControllerNodeOf<Settings>::onJoy(const sensor_msgs::Joy::ConstPtr& msg) {
   const bool was_held = joy_.deadman;
   joy_ = joystick_.map(msg->axes, msg->buttons);
   const double now = ros::Time::now().toSec();
@@ -326,8 +343,8 @@ void ControllerNode::onJoy(const sensor_msgs::Joy::ConstPtr& msg) {
   if (joy_.deadman) {
     if (!was_held) ROS_WARN("controller: joystick override (deadman held)");
     // The joystick wins at once, not at the next cycle.
-    double U[4];
-    aurora_control::LawVehicle::fromDriver(joy_.sticks, U);
+    double U[kMaxInputs] = {0, 0, 0, 0};
+    Vehicle::fromDriver(joy_.sticks, U);
     sendCommand(U);
   } else if (was_held) {
     ROS_INFO("controller: joystick released: back to the controller");
@@ -335,21 +352,24 @@ void ControllerNode::onJoy(const sensor_msgs::Joy::ConstPtr& msg) {
   }
 }
 
-void ControllerNode::serviceDriverCommands(double now, const double* fresh_X) {
+template <class Settings>
+void ControllerNodeOf<Settings>::serviceDriverCommands(double now, const double* fresh_X) {
   takeoff_land_.service(now, fresh_X);
   reset_.service(now, false);
 }
 
-void ControllerNode::sendCommand(const double U[4]) {
-  cmd_pub_.publish(aurora_sim::twistMsgFromModelCommand(U));
-  for (int i = 0; i < 4; ++i) last_sent_[i] = U[i];
+template <class Settings>
+void ControllerNodeOf<Settings>::sendCommand(const double U[kMaxInputs]) {
+  cmd_pub_.publish(aurora_sim::twistMsgFromModelCommand<Vehicle>(U));
+  for (int i = 0; i < kMaxInputs; ++i) last_sent_[i] = U[i];
   ++sent_in_window_;
 }
 
-void ControllerNode::cycle(const ros::Time& now) {
+template <class Settings>
+void ControllerNodeOf<Settings>::cycle(const ros::Time& now) {
   boost::recursive_mutex::scoped_lock lock(config_mutex_);
   const double age = stateAge();
-  static const double kNoState[aurora_sim::kStateSize] = {};
+  static const double kNoState[aurora_sim::kMaxStates] = {};
   const bool have_state = !core_->empty();
   const StateSample* newest = have_state ? &core_->newest() : nullptr;
   const long task_step = have_state ? newest->step - supervisor_.flyStartStep() : 0;
@@ -361,7 +381,7 @@ void ControllerNode::cycle(const ros::Time& now) {
   takeoff_land_.apply(decision, now.toSec(), have_state ? newest->X[aurora_sim::kZ] : 0.0);
   serviceDriverCommands(now.toSec(), have_state && age <= safety_.hover_after ? newest->X : nullptr);
   if (!have_state) {
-    const double hover[4] = {0, 0, 0, 0};
+    const double hover[kMaxInputs] = {0, 0, 0, 0};
     if (!lockstep_) sendCommand(hover);  // drivers expect a steady command stream
     return;
   }
@@ -375,7 +395,7 @@ void ControllerNode::cycle(const ros::Time& now) {
   ControlOutput out = decision.run_law ? core_->compute(ref) : core_->hover();
   std::string mode = decision.mode;
   if (joy_.deadman) {
-    aurora_control::LawVehicle::fromDriver(joy_.sticks, out.U);
+    Vehicle::fromDriver(joy_.sticks, out.U);
     mode = "joystick";
   } else if (resume_.active()) {
     resume_.apply(out.U);
@@ -403,7 +423,8 @@ void ControllerNode::cycle(const ros::Time& now) {
   reportProgress(out, ref, decision, task_time);
 }
 
-void ControllerNode::logEvent(const std::string& event) const {
+template <class Settings>
+void ControllerNodeOf<Settings>::logEvent(const std::string& event) const {
   if (event.empty()) return;
   const bool safety = event.rfind("hover", 0) == 0 || event.rfind("land (", 0) == 0;
   if (safety) {
@@ -413,8 +434,9 @@ void ControllerNode::logEvent(const std::string& event) const {
   }
 }
 
-void ControllerNode::fillOutput(const ControlOutput& out, aurora_msgs::Control& control) const {
-  const ControllerSettings& set = core_->settings;
+template <class Settings>
+void ControllerNodeOf<Settings>::fillOutput(const ControlOutput& out, aurora_msgs::Control& control) const {
+  const Settings& set = core_->settings;
   control.delay_samples = set.delay;
   control.delay_in_force = static_cast<uint32_t>(out.delay_in_force);
   control.delay_pending = static_cast<uint32_t>(out.delay_pending);
@@ -424,11 +446,11 @@ void ControllerNode::fillOutput(const ControlOutput& out, aurora_msgs::Control& 
   control.state_used.header.stamp.fromNSec(static_cast<uint64_t>(out.used->stamp_ns));
   control.state_used.header.frame_id = state_frame_;
   control.state_used.step = out.used->step;
-  aurora_sim::stateToMsg(out.used->X, control.state_used);
+  aurora_sim::stateToMsg(out.used->X, Vehicle::kStates, control.state_used);
   control.position_error.x = out.position_error[0];
   control.position_error.y = out.position_error[1];
   control.position_error.z = out.position_error[2];
-  for (int i = 0; i < 4; ++i) {
+  for (int i = 0; i < kMaxInputs; ++i) {
     control.command[i] = out.U[i];
     control.command_sent[i] = out.U_sent[i];
     control.command_unclamped[i] = out.U_unclamped[i];
@@ -443,7 +465,8 @@ void ControllerNode::fillOutput(const ControlOutput& out, aurora_msgs::Control& 
   control.iasc = out.iasc;
 }
 
-void ControllerNode::reportProgress(const ControlOutput& out, const Reference<double>& ref,
+template <class Settings>
+void ControllerNodeOf<Settings>::reportProgress(const ControlOutput& out, const Reference<double>& ref,
                                     const FlightDecision& decision, double task_time) {
   if (delay_pending_announced_ && out.delay_pending == 0 && decision.run_law) {
     ROS_INFO("controller: the delay of %ld samples is in force again", out.delay_in_force);
@@ -462,20 +485,43 @@ void ControllerNode::reportProgress(const ControlOutput& out, const Reference<do
            trackingError(ref, core_->newest().X));
 }
 
-void ControllerNode::fillLaw(aurora_msgs::Control& control) const {
-  const ControllerSettings& set = core_->settings;
-  control.controller = lawName(set.law);
-  control.gain_names = lawGainNames(set.law);
+template <class Settings>
+void ControllerNodeOf<Settings>::fillLaw(aurora_msgs::Control& control) const {
+  const Settings& set = core_->settings;
+  control.controller = lawNameOf(set);
+  control.gain_names.clear();
   control.gains.clear();
-  for (size_t i = 0; i < control.gain_names.size(); ++i) control.gains.push_back(lawGain(set, int(i)));
-  const bool pd = set.law == LawType::kPdSaturated;
-  control.kp = pd ? set.gains.kp : 0.0;
-  control.kd = pd ? set.gains.kd : 0.0;
+  for (const auto& gain : gainsInForce(set)) control.gain_names.push_back(gain.first), control.gains.push_back(gain.second);
+  const ControllerSettings& shown = ardroneGainsShown(set);
+  const bool pd = lawNameOf(set) == std::string(lawName(LawType::kPdSaturated));
+  control.kp = pd ? shown.gains.kp : 0.0;
+  control.kd = pd ? shown.gains.kd : 0.0;
 }
 
-void ControllerNode::publishTaskMarkers() {
+template <class Settings>
+void ControllerNodeOf<Settings>::publishTaskMarkers() {
   markers_pub_.publish(waypointMarkers(task_));
   desired_path_pub_.publish(desiredPath(task_));
+}
+
+namespace {
+
+// The node of the law `name` (a controller file's controller.name).
+std::shared_ptr<void> nodeOfLaw(const std::string& name, ros::NodeHandle nh, ros::NodeHandle pnh) {
+  std::shared_ptr<void> node;
+  forEachOtherLaw([&](auto law) {
+    if (name == law.name()) node = std::make_shared<ControllerNodeOf<LawSettings<decltype(law)>>>(nh, pnh);
+  });
+  if (!node) node = std::make_shared<ControllerNodeOf<ControllerSettings>>(nh, pnh);  // refuses an unknown name
+  return node;
+}
+
+}  // namespace
+
+ControllerNode::ControllerNode(ros::NodeHandle nh, ros::NodeHandle private_nh) {
+  std::string name;
+  private_nh.getParam("controller/name", name);
+  node_ = nodeOfLaw(name, nh, private_nh);
 }
 
 }  // namespace aurora_control

@@ -24,15 +24,20 @@
 
 namespace aurora_control {
 
-class ControllerNode {
+// The node for one kind of law: Settings is ControllerSettings (the
+// AR.Drone's two laws) or LawSettings<Law> (another vehicle's law,
+// other_laws.h); its vehicle's commands go out as its driver's cmd_vel.
+template <class Settings>
+class ControllerNodeOf {
  public:
   static constexpr int kHistoryCapacity = kDelayHistory;  // limits.h: delays up to 2047 samples (68 s)
 
   // Throws aurora_common::ConfigError on a missing or invalid parameter.
-  ControllerNode(ros::NodeHandle nh, ros::NodeHandle private_nh);
+  ControllerNodeOf(ros::NodeHandle nh, ros::NodeHandle private_nh);
 
  private:
-  using Core = DelayedController<kHistoryCapacity>;
+  using Core = DelayedController<kHistoryCapacity, Settings>;
+  using Vehicle = typename Core::Vehicle;
 
   void onState(const aurora_msgs::DroneState::ConstPtr& msg);
   void onJoy(const sensor_msgs::Joy::ConstPtr& msg);
@@ -53,7 +58,7 @@ class ControllerNode {
   void reportProgress(const ControlOutput& out, const Reference<double>& ref,
                       const FlightDecision& decision, double task_time);
   void announceDelayChange(long delay);
-  void sendCommand(const double U[4]);
+  void sendCommand(const double U[kMaxInputs]);
   void serviceDriverCommands(double now, const double* fresh_X);
   void publishTaskMarkers();
   void fillLaw(aurora_msgs::Control& control) const;
@@ -87,7 +92,7 @@ class ControllerNode {
   JoystickMapper joystick_;
   JoystickInput joy_;              // newest joystick input
   ResumeSlew resume_;
-  double last_sent_[4] = {0, 0, 0, 0};  // the newest command sent (re-sent on a repeated state)
+  double last_sent_[kMaxInputs] = {0, 0, 0, 0};  // the newest command sent (re-sent on a repeated state)
 
   long sent_in_window_ = 0;        // cmd_vel messages since the last rate check
   bool low_rate_ = false;
@@ -104,6 +109,16 @@ class ControllerNode {
   ros::Subscriber state_sub_, joy_sub_;
   ros::Timer timer_;
   ros::WallTimer rate_timer_;
+};
+
+// The controller node: the law ~controller/name names (its controller file,
+// loaded there), on that law's vehicle (~vehicle: its vehicle file).
+class ControllerNode {
+ public:
+  ControllerNode(ros::NodeHandle nh, ros::NodeHandle private_nh);
+
+ private:
+  std::shared_ptr<void> node_;  // the ControllerNodeOf of the law's settings
 };
 
 }  // namespace aurora_control

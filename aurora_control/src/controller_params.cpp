@@ -12,39 +12,27 @@
 
 namespace aurora_control {
 
-void loadLaw(const ros::NodeHandle& pnh, const aurora_control::LawVehicleParams& vehicle,
-             ControllerSettings& set) {
-  readLaw(YamlReader("parameter ", "/"), paramAsYaml(pnh, "controller"), fullKey(pnh, "controller"), set);
-  set.vehicle = vehicle;
-}
-
-std::string gainsText(const ControllerSettings& set) {
-  std::string out;
-  const std::vector<std::string> names = lawGainNames(set.law);
-  for (size_t i = 0; i < names.size(); ++i) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%s%s=%g", i ? " " : "", names[i].c_str(), lawGain(set, int(i)));
-    out += buf;
-  }
-  return out;
+std::string controllerName(const ros::NodeHandle& pnh) {
+  std::string name;
+  return pnh.getParam("controller/name", name) ? name : "";
 }
 
 const char* taskTypeName(TaskType type) {
   return type == TaskType::kCircle ? "circle" : (type == TaskType::kLemniscate ? "lemniscate" : "waypoint");
 }
 
-void loadLink(const ros::NodeHandle& pnh, long given_delay, ControllerSettings& set) {
+void loadLink(const ros::NodeHandle& pnh, long given_delay, LoopSettings& set) {
   if (pnh.hasParam("link")) set.link = readLink(YamlReader("parameter ", "/"), paramAsYaml(pnh, "link"), fullKey(pnh, "link"));
   set.delay = delayInForce(given_delay, set.link);  // docs/links.md, "A delay beside a link"
 }
 
-Task<double> loadTask(const ros::NodeHandle& pnh) {
+Task<double> loadTask(const ros::NodeHandle& pnh, const TaskHeights& heights) {
   const YAML::Node task = paramAsYaml(pnh, "task");
   if (!task) {
     throw ConfigError("missing parameter '" + fullKey(pnh, "task") +
                          "': load a task file such as config/tasks/mission4.yaml (launch arg 'task')");
   }
-  return readTask(YamlReader("parameter ", "/"), task, fullKey(pnh, "task"));
+  return readTask(YamlReader("parameter ", "/"), task, fullKey(pnh, "task"), heights);
 }
 
 namespace {

@@ -30,18 +30,23 @@ inline std::map<unsigned long, aurora_msgs::DroneState> collectStates(ros::NodeH
 }
 
 // Number of state values of steps 0..steps that differ in any bit from
-// `offline[k]` (12 values per step); the first few are reported.
+// `offline[k]` (`states` values per step: a vehicle's kStates, its extra
+// states from the message's `extra`); the first few are reported.
 inline long bitMismatches(std::map<unsigned long, aurora_msgs::DroneState>& flown,
-                          const std::vector<std::vector<double>>& offline, int steps) {
+                          const std::vector<std::vector<double>>& offline, int steps, int states = 12) {
   long mismatches = 0;
   for (int k = 0; k <= steps; ++k) {
     if (!flown.count(k) || k >= static_cast<int>(offline.size())) {
       ADD_FAILURE() << "state of step " << k << " missing";
       return -1;
     }
-    double X[12];
-    aurora_sim::stateFromMsg(flown[k], X);
-    for (int i = 0; i < 12; ++i) {
+    if (static_cast<int>(flown[k].extra.size()) != states - 12) {
+      ADD_FAILURE() << "step " << k << ": " << flown[k].extra.size() << " extra states, expected " << states - 12;
+      return -1;
+    }
+    double X[aurora_sim::kMaxStates];
+    aurora_sim::stateFromMsg(flown[k], X, states);
+    for (int i = 0; i < states; ++i) {
       if (std::memcmp(&X[i], &offline[k][i], sizeof(double)) == 0) continue;
       if (mismatches++ < 5) {
         ADD_FAILURE() << "step " << k << " state " << i << ": ROS " << X[i] << " offline " << offline[k][i];

@@ -5,8 +5,8 @@
 #pragma once
 
 #include <cmath>
-#include <initializer_list>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "aurora_control/law/bebop2_compensator.h"
@@ -28,18 +28,32 @@ inline std::string controllerFileName(const std::string& path) {
 }
 
 // One gain list of a controller mapping: `<at>.<key>` (at: "controller" in
-// a controller file), one number per axis of `axes` (e.g. "x, y, z, yaw"),
-// each in [0, max].
+// a controller file), one number per axis of its group.
 struct GainList {
   const char* key;
   double* into;
 };
 
-inline void readGainLists(const YamlReader& r, const YAML::Node& c, const std::string& at,
-                          std::initializer_list<GainList> lists, size_t n, const std::string& axes, double max) {
+// Gain lists over the same axes (e.g. x, y, z, yaw): a law's gains as its
+// controller file gives them, written once per law (gainGroups) for the
+// reader and for the names the node publishes (namedGains).
+struct GainGroup {
+  std::vector<GainList> lists;
+  std::vector<std::string> axes;
+};
+
+inline std::string axesText(const std::vector<std::string>& axes) {
+  std::string text;
+  for (size_t i = 0; i < axes.size(); ++i) text += (i ? ", " : "") + axes[i];
+  return text;
+}
+
+inline void readGainLists(const YamlReader& r, const YAML::Node& c, const std::string& at, const GainGroup& group,
+                          double max) {
+  const size_t n = group.axes.size();
   const std::string text = "a list of " + std::to_string(n) + " numbers in [0, " + YamlReader::fmt(max) + "] (" +
-                           axes + ")";
-  for (const GainList& g : lists) {
+                           axesText(group.axes) + ")";
+  for (const GainList& g : group.lists) {
     const std::string key = r.key(at, g.key);
     const std::vector<double> v = r.numbers(r.require(c, at, g.key, text), key, n, text);
     for (size_t i = 0; i < n; ++i) {
@@ -49,17 +63,39 @@ inline void readGainLists(const YamlReader& r, const YAML::Node& c, const std::s
   }
 }
 
+// The compensator's 16 gains (docs/bebop2.md, eq. B2).
+inline std::vector<GainGroup> gainGroups(CompensatorGains<double>& g) {
+  return {{{{"ksp", g.ksp}, {"ksd", g.ksd}, {"kp", g.kp}, {"kd", g.kd}}, {"x", "y", "z", "yaw"}}};
+}
+
+// Every gain of a law by name, `<key>_<axis>` (ksp_x ... kd_yaw), in its
+// file's order: the controller node's Control.gain_names and its log.
+template <class Gains>
+std::vector<std::pair<std::string, double>> namedGains(Gains g) {
+  std::vector<std::pair<std::string, double>> out;
+  for (const GainGroup& group : gainGroups(g)) {
+    for (const GainList& list : group.lists) {
+      for (size_t i = 0; i < group.axes.size(); ++i) out.emplace_back(std::string(list.key) + "_" + group.axes[i], list.into[i]);
+    }
+  }
+  return out;
+}
+
+// A compensator mapping (a controller file's 'controller:', or the node's
+// ~controller): its gains and its rate; only its keys.
+inline void readCompensator(const YamlReader& r, const YAML::Node& c, const std::string& at, CompensatorFile& f) {
+  r.onlyKeys(c, at, {"name", "ksp", "ksd", "kp", "kd", "rate"});
+  for (const GainGroup& group : gainGroups(f.gains)) readGainLists(r, c, at, group, kCompensatorGainMax);
+  f.rate = r.numberIn(r.require(c, at, "rate", "Hz, dividing the vehicle's rate (30 Hz: 30, 15, 10, 6, 5)"),
+                      r.key(at, "rate"), 0.0, 1000.0, "Hz", false);
+}
+
 inline CompensatorFile readCompensatorFile(const std::string& path) {
   const YAML::Node root = loadYamlFile("controller file", path);
   const YamlReader r("controller file '" + path + "': ");
   r.onlyKeys(root, "", {"controller", "clamp_commands"});
-  const YAML::Node c = root["controller"];
-  r.onlyKeys(c, "controller", {"name", "ksp", "ksd", "kp", "kd", "rate"});
   CompensatorFile f;
-  readGainLists(r, c, "controller", {{"ksp", f.gains.ksp}, {"ksd", f.gains.ksd}, {"kp", f.gains.kp}, {"kd", f.gains.kd}}, 4,
-                "x, y, z, yaw", kCompensatorGainMax);
-  f.rate = r.numberIn(r.require(c, "controller", "rate", "Hz, dividing the vehicle's rate (30 Hz: 30, 15, 10, 6, 5)"),
-                      "controller.rate", 0.0, 1000.0, "Hz", false);
+  readCompensator(r, root["controller"], "controller", f);
   if (root["clamp_commands"]) f.has_clamp = true, f.clamp = r.boolean(root["clamp_commands"], "clamp_commands");
   return f;
 }

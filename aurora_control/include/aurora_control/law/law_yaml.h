@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "aurora_control/law/other_laws.h"
 #include "aurora_control/loop/delayed_controller.h"
 #include "aurora_control/params/limits.h"
 #include "aurora_control/params/yaml_reader.h"
@@ -39,7 +40,9 @@ inline void readLaw(const YamlReader& r, const YAML::Node& node, const std::stri
   const std::string name =
       r.text(r.require(node, key, "name", "'pd_saturated' or 'underactuated'"), r.key(key, "name"));
   if (!lawFromName(name, set.law)) {
-    r.fail(r.key(key, "name"), "= '" + name + "' is unknown: accepted controllers: 'pd_saturated', 'underactuated'");
+    std::string others;
+    forEachOtherLaw([&](auto law) { others += std::string(", '") + law.name() + "' (" + decltype(law)::Vehicle::name() + ")"; });
+    r.fail(r.key(key, "name"), "= '" + name + "' is unknown: accepted controllers: 'pd_saturated', 'underactuated' (ardrone2)" + others);
   }
   std::vector<std::string> accepted{"name"};
   const std::vector<std::string> gains = lawGainNames(set.law);

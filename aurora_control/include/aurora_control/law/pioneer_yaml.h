@@ -12,19 +12,27 @@
 
 namespace aurora_control {
 
+// Each law's gain lists: on x, y for the kinematic part, on u, omega for
+// the dynamic compensation.
+inline std::vector<GainGroup> gainGroups(PioneerKinematicGains<double>& g) {
+  return {{{{"k1", g.k1}, {"k2", g.k2}}, {"x", "y"}}};
+}
+inline std::vector<GainGroup> gainGroups(PioneerDynamicGains<double>& g) {
+  return {{{{"kc1", g.kc1}, {"kc2", g.kc2}}, {"x", "y"}}, {{{"kd1", g.kd1}, {"kd2", g.kd2}}, {"u", "omega"}}};
+}
+
 // The gain lists of each law under the mapping at key `at` ("controller"
 // in a controller file, a robot's controller in a formation file).
 inline void readPioneerGains(const YamlReader& r, const YAML::Node& c, const std::string& at,
                              PioneerKinematicGains<double>& g) {
   r.onlyKeys(c, at, {"name", "k1", "k2"});
-  readGainLists(r, c, at, {{"k1", g.k1}, {"k2", g.k2}}, 2, "x, y", kPioneerGainMax);
+  for (const GainGroup& group : gainGroups(g)) readGainLists(r, c, at, group, kPioneerGainMax);
 }
 
 inline void readPioneerGains(const YamlReader& r, const YAML::Node& c, const std::string& at,
                              PioneerDynamicGains<double>& g) {
   r.onlyKeys(c, at, {"name", "kc1", "kc2", "kd1", "kd2", "accel_interval"});
-  readGainLists(r, c, at, {{"kc1", g.kc1}, {"kc2", g.kc2}}, 2, "x, y", kPioneerGainMax);
-  readGainLists(r, c, at, {{"kd1", g.kd1}, {"kd2", g.kd2}}, 2, "u, omega", kPioneerGainMax);
+  for (const GainGroup& group : gainGroups(g)) readGainLists(r, c, at, group, kPioneerGainMax);
   g.accel_interval = 0.0;
   if (c["accel_interval"]) {
     g.accel_interval = r.numberIn(c["accel_interval"], r.key(at, "accel_interval"), 0.0, 10.0,

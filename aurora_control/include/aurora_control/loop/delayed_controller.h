@@ -29,24 +29,61 @@ namespace aurora_control {
 struct StateSample {
   long step = 0;           // the source's sample index (DroneState.step)
   int64_t stamp_ns = 0;    // header stamp [ns]
-  double X[aurora_sim::kStateSize] = {};
+  double X[aurora_sim::kMaxStates] = {};  // the vehicle's state (its kStates first; the rest 0)
 };
 
-struct ControllerSettings {
-  LawType law = LawType::kPdSaturated;
-  PdGains<double> gains{0.0, 0.0};
-  UnderactuatedGains<double> underactuated = UnderactuatedGains<double>::defaults();
-  LawVehicleParams vehicle{};  // the model the underactuated law inverts
+// What the controller core is given for any law: the uplink's base delay,
+// the rest of the link, the clamp and the vehicle's sample time.
+struct LoopSettings {
   long delay = 0;          // [samples] the uplink's base delay
   LinkParams link;         // the rest of the link (link.h, docs/links.md); apply with configureLink()
   bool clamp_commands = true;
   double Ts = 1.0 / 30.0;  // [s], the vehicle's sample time (the loop clock's step)
 };
 
+// The AR.Drone's settings: its two laws (chosen at run time, and live),
+// the gains of both and the model the underactuated law inverts.
+struct ControllerSettings : LoopSettings {
+  using Data = ArdroneLawData;
+  LawType law = LawType::kPdSaturated;
+  PdGains<double> gains{0.0, 0.0};
+  UnderactuatedGains<double> underactuated = UnderactuatedGains<double>::defaults();
+  LawVehicleParams vehicle{};  // the model the underactuated law inverts
+
+  LoopParams<Data, double> loopParams(const FeasibilityCriteria<double>& criteria) const {
+    return LoopParams<Data, double>{vehicle, vehicle, LawGains<double>{gains, underactuated}, criteria};
+  }
+  // Calls f(the law in force as a type).
+  template <class F>
+  void withLawType(F&& f) const {
+    withLaw(law, f);
+  }
+};
+
+// Another vehicle's law (other_laws.h): its gains and the model it inverts
+// (its vehicle file), fixed for a run.
+template <class Law>
+struct LawSettings : LoopSettings {
+  using Data = typename Law::Data;
+  typename Data::template Gains<double> gains;
+  typename Law::Vehicle::template Params<double> vehicle;
+
+  LoopParams<Data, double> loopParams(const FeasibilityCriteria<double>& criteria) const {
+    return LoopParams<Data, double>{vehicle, vehicle, gains, criteria};
+  }
+  template <class F>
+  void withLawType(F&& f) const {
+    f(Law());
+  }
+};
+
+// The commands of any vehicle: its kInputs first (at most 4), the rest 0.
+constexpr int kMaxInputs = aurora_sim::kCommandSize;
+
 struct ControlOutput {
-  double U[4] = {0, 0, 0, 0};            // as the drone applies it (over an ideal link: as sent)
-  double U_sent[4] = {0, 0, 0, 0};       // as the controller sent it (clamped when configured)
-  double U_unclamped[4] = {0, 0, 0, 0};  // as the law computed it
+  double U[kMaxInputs] = {0, 0, 0, 0};            // as the vehicle applies it (over an ideal link: as sent)
+  double U_sent[kMaxInputs] = {0, 0, 0, 0};       // as the controller sent it (clamped when configured)
+  double U_unclamped[kMaxInputs] = {0, 0, 0, 0};  // as the law computed it
   double position_error[3] = {0, 0, 0};  // desired - used position [m]
   const StateSample* used = nullptr;     // the (delayed) state the law used
   long delay_in_force = 0;               // samples between the newest state and `used`
@@ -65,12 +102,17 @@ struct GivenReference {
   Reference<double> at(double) const { return ref; }
 };
 
-template <int Capacity>
+// Settings: ControllerSettings (the AR.Drone's laws) or LawSettings<Law>.
+template <int Capacity, class Settings = ControllerSettings>
 class DelayedController {
  public:
   static constexpr long kMaxDelay = Capacity - 1;
+  using Data = typename Settings::Data;
+  using Vehicle = typename Data::Vehicle;
+  static_assert(Vehicle::kStates <= aurora_sim::kMaxStates, "a state sample holds the vehicle's state");
+  static_assert(Vehicle::kInputs <= kMaxInputs, "a control output holds the vehicle's command");
 
-  ControllerSettings settings;
+  Settings settings;
 
   DelayedController() { reset(); }
 
@@ -152,7 +194,7 @@ class DelayedController {
     out.used = &newest();
     const long step = newest().step;
     if (step != metrics_step_) {
-      side_.metrics.template accumulate<LawVehicle::kInputs>(criteria_, out.position_error, out.U,
+      side_.metrics.template accumulate<Vehicle::kInputs>(criteria_, out.position_error, out.U,
                                                              clock_.at(step, settings.Ts));
       metrics_step_ = step;
     }
@@ -172,7 +214,7 @@ class DelayedController {
   // The drone's side of the command over the link (after the metrics, which
   // are the controller's: its error, its sent command).
   void overLink(ControlOutput& out) {
-    for (int i = 0; i < 4; ++i) out.U_sent[i] = out.U[i];
+    for (int i = 0; i < kMaxInputs; ++i) out.U_sent[i] = out.U[i];
     if (!link_.active()) return;
     const long k = newest().step;
     link_.commandSent(k, out.U_sent, out.U);
@@ -193,11 +235,9 @@ class DelayedController {
     const bool counted = step == metrics_step_;
     const PositioningMetrics<double, bool> before = side_.metrics;
     side_.t = clock_.at(step, settings.Ts);
-    const LoopParams<ArdroneLawData, double> params{settings.vehicle, settings.vehicle,
-                                                    LawGains<double>{settings.gains, settings.underactuated},
-                                                    criteria_};
+    const LoopParams<Data, double> params = settings.loopParams(criteria_);
     const ClampPolicy clamp{settings.clamp_commands, false};
-    withLaw(settings.law, [&](auto law) {
+    settings.withLawType([&](auto law) {
       controllerHalf<decltype(law)>(params, GivenReference{ref}, clamp, double(step), used.X, side_,
                                     out.U_unclamped, out.U, out.position_error);
     });
@@ -214,7 +254,7 @@ class DelayedController {
   DelayBuffer<StateSample, Capacity> history_;
   // What the controller's half changes: the metrics, the underactuated
   // law's memory, the clock's time (set from clock_ each cycle).
-  ControllerState<ArdroneLawData, double, bool> side_;
+  ControllerState<Data, double, bool> side_;
   FeasibilityCriteria<double> criteria_ = FeasibilityCriteria<double>::study();
   long metrics_step_ = -1;
   LoopClock clock_;

@@ -71,7 +71,7 @@ inline LinkParams withLinkChange(LinkParams l, const LiveChange& c) {
 
 // A link value: the table's range, whole samples where it counts samples,
 // the burst's bound on the loss, the latency within the history.
-inline std::string linkProblem(const ControllerSettings& now, const LiveChange& c) {
+inline std::string linkProblem(const LoopSettings& now, const LiveChange& c) {
   const ParameterSpec& row = *rowOfLiveSetting(c.name);
   const std::string range = rangeProblem(c, row.min, row.max, row.unit[0] ? row.unit : std::string("a value"));
   if (!range.empty()) return range;
@@ -118,18 +118,49 @@ inline std::string checkLiveChange(const ControllerSettings& now, const LiveChan
             : rangeProblem(c, kUnderactuatedGainMin, kUnderactuatedGainMax, "a gain");
 }
 
-// Applies a change checkLiveChange() accepted.
-inline void applyLiveChange(ControllerSettings& set, const LiveChange& c) {
+// Applies a delay or link change checkLiveChange() accepted; false for a gain.
+inline bool applyLoopChange(LoopSettings& set, const LiveChange& c) {
   if (c.name == "delay_samples") {
     set.delay = static_cast<long>(c.value);
-    return;
+    return true;
   }
   if (live_detail::isLinkSetting(c.name)) {
     set.link = live_detail::withLinkChange(set.link, c);
-    return;
+    return true;
   }
+  return false;
+}
+
+// Applies a change checkLiveChange() accepted.
+inline void applyLiveChange(ControllerSettings& set, const LiveChange& c) {
+  if (applyLoopChange(set, c)) return;
   const int i = live_detail::gainIndex(set.law, c.name);
   if (i >= 0) lawGain(set, i) = c.value;  // the other law's unchanged gain: nothing to do
+}
+
+// Another vehicle's law (other_laws.h): its delay and link change live; its
+// gains come from its controller file. The AR.Drone's gains the server shows
+// (their defaults: ardroneGainsShown) load back unchanged.
+template <class Law>
+std::string checkLiveChange(const LawSettings<Law>& now, const LiveChange& c, long task_steps) {
+  using namespace live_detail;
+  if (c.name == "delay_samples") return delayProblem(c, task_steps, now.Ts);
+  if (isLinkSetting(c.name)) return linkProblem(now, c);
+  const ControllerSettings shown;
+  for (LawType law : {LawType::kPdSaturated, LawType::kUnderactuated}) {
+    ControllerSettings as = shown;
+    as.law = law;
+    const int i = gainIndex(law, c.name);
+    if (i >= 0 && c.value == lawGain(as, i)) return "";  // a dump of the whole server loaded back
+  }
+  return "'" + c.name + "' = " + YamlReader::fmt(c.value) + " is refused: this node flies the " + Law::name() +
+         " law, whose gains come from its controller file (restart with another); live: delay_samples, the link's " +
+         linkSettingNames();
+}
+
+template <class Law>
+void applyLiveChange(LawSettings<Law>& set, const LiveChange& c) {
+  applyLoopChange(set, c);
 }
 
 }  // namespace aurora_control

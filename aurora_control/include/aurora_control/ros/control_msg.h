@@ -15,7 +15,7 @@ inline StateSample sampleFromMsg(const aurora_msgs::DroneState& msg) {
   StateSample sample;
   sample.step = static_cast<long>(msg.step);
   sample.stamp_ns = static_cast<int64_t>(msg.header.stamp.toNSec());
-  aurora_sim::stateFromMsg(msg, sample.X);
+  aurora_sim::stateFromMsg(msg, sample.X, aurora_sim::kMaxStates);  // a vehicle's further states from extra
   return sample;
 }
 

@@ -27,12 +27,30 @@ inline void stateFromMsg(const aurora_msgs::DroneState& msg, double X[kStateSize
   X[kYawRate] = msg.attitude_rate.z;
 }
 
+// A state of `states` entries (a vehicle's kStates, >= 12): the 12 in
+// their fields, the rest in `extra`; and back (missing extras read 0: a
+// source that does not know them, such as motion capture).
+inline void stateToMsg(const double* X, int states, aurora_msgs::DroneState& msg) {
+  stateToMsg(X, msg);
+  msg.extra.assign(X + kStateSize, X + states);
+}
+
+inline void stateFromMsg(const aurora_msgs::DroneState& msg, double* X, int states) {
+  stateFromMsg(msg, X);
+  for (int i = kStateSize; i < states; ++i) {
+    const size_t j = static_cast<size_t>(i - kStateSize);
+    X[i] = j < msg.extra.size() ? msg.extra[j] : 0.0;
+  }
+}
+
 inline TwistCommand twistCommandFromMsg(const geometry_msgs::Twist& t) {
   return TwistCommand{t.linear.x, t.linear.y, t.linear.z, t.angular.z};
 }
 
-inline geometry_msgs::Twist twistMsgFromModelCommand(const double U[4]) {
-  const TwistCommand c = Ardrone2::toDriver(U);
+// Vehicle's command U as its driver's cmd_vel (Vehicle::toDriver).
+template <class Vehicle = Ardrone2>
+geometry_msgs::Twist twistMsgFromModelCommand(const double U[Vehicle::kInputs]) {
+  const TwistCommand c = Vehicle::toDriver(U);
   geometry_msgs::Twist t;
   t.linear.x = c.linear_x; t.linear.y = c.linear_y; t.linear.z = c.linear_z;
   t.angular.z = c.angular_z;

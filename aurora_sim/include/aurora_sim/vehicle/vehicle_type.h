@@ -12,13 +12,25 @@
 
 namespace aurora_sim {
 
+// Calls f(Vehicle()) for each vehicle this build knows: the one list.
+template <class F>
+void forEachVehicle(F&& f) {
+  f(Ardrone2());
+  f(Bebop2());
+  f(Pioneer3dx());
+}
+
 // The names a vehicle file's `type:` accepts, comma separated.
 inline std::string knownVehicleTypes() {
-  return std::string(Ardrone2::name()) + ", " + Bebop2::name() + ", " + Pioneer3dx::name();
+  std::string names;
+  forEachVehicle([&](auto v) { names += (names.empty() ? "" : ", ") + std::string(v.name()); });
+  return names;
 }
 
 inline bool isKnownVehicleType(const std::string& type) {
-  return type == Ardrone2::name() || type == Bebop2::name() || type == Pioneer3dx::name();
+  bool known = false;
+  forEachVehicle([&](auto v) { known = known || type == v.name(); });
+  return known;
 }
 
 // Empty when a vehicle file of type `type` is one `flown_by` (which flies a

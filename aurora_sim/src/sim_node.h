@@ -1,5 +1,6 @@
-// ROS wrapper of the AR.Drone model: the simulated drone a controller or a
-// user flies through the driver topics (cmd_vel, takeoff, land, reset).
+// ROS wrapper of a vehicle's model: the simulated robot a controller or a
+// user flies through its driver's topics (cmd_vel; a drone's takeoff, land,
+// reset; its odometry topic), with the project's state message.
 #pragma once
 
 #include <aurora_msgs/DroneState.h>
@@ -11,18 +12,25 @@
 
 #include <string>
 
-#include "aurora_sim/vehicle/ardrone2.h"
+#include <memory>
+
 #include "aurora_sim/rejection_burst.h"
+#include "aurora_sim/vehicle/sim_profile.h"
 
 namespace aurora_sim {
 
-class ArdroneSimNode {
+// The simulator of one vehicle type (aurora_sim/vehicle/*.h; what it does
+// beyond the model: sim_profile.h).
+template <class Vehicle>
+class SimNode {
  public:
   enum class Mode { kRealtime, kLockstep };
   enum class Flight { kLanded, kTakingOff, kFlying, kLanding };
+  using Profile = SimProfile<Vehicle>;
+  static_assert(Vehicle::kStates <= kMaxStates, "the state message holds the vehicle's state");
 
   // Throws ConfigError on a missing or invalid parameter.
-  ArdroneSimNode(ros::NodeHandle nh, ros::NodeHandle private_nh);
+  SimNode(ros::NodeHandle nh, ros::NodeHandle private_nh);
 
  private:
   void onCmdVel(const geometry_msgs::Twist::ConstPtr& msg);
@@ -43,13 +51,13 @@ class ArdroneSimNode {
   ros::Time lockstepTime() const;
 
   ros::NodeHandle nh_, pnh_;
-  Ardrone2::Params<double> params_;
-  Ardrone2::State<double> model_;
+  typename Vehicle::template Params<double> params_;
+  typename Vehicle::template State<double> model_;
   Mode mode_;
   Flight flight_;
   double cmd_timeout_;
   double takeoff_altitude_;
-  double start_[3] = {0.0, 0.0, 0.75};  // [m] where the drone starts in the air
+  double start_[3] = {0.0, 0.0, Profile::kFlies ? 0.75 : 0.0};  // [m] a drone starts in the air
   bool publish_clock_ = true;
   std::string frame_id_, child_frame_id_;
   unsigned long step_ = 0;
@@ -60,7 +68,7 @@ class ArdroneSimNode {
   ros::WallTime last_step_wall_, lockstep_start_wall_;
   ros::Time start_time_;
 
-  double command_[4] = {0, 0, 0, 0};  // last valid user command, model order, clamped
+  double command_[Vehicle::kInputs] = {};  // last valid user command, model order, clamped
   ros::Time command_time_;
   bool have_command_ = false;
   RejectionBurst nan_burst_;   // NaN/Inf cmd_vel: one warning per burst, summaries
@@ -74,6 +82,15 @@ class ArdroneSimNode {
   ros::WallTime last_publish_wall_;
   nav_msgs::Path path_;
   int path_decimation_;
+};
+
+// The simulator of the vehicle file loaded under `vehicle` (its `type`).
+class VehicleSimNode {
+ public:
+  VehicleSimNode(ros::NodeHandle nh, ros::NodeHandle private_nh);
+
+ private:
+  std::shared_ptr<void> node_;  // the SimNode of the file's vehicle
 };
 
 }  // namespace aurora_sim

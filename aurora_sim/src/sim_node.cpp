@@ -1,4 +1,4 @@
-#include "ardrone_sim_node.h"
+#include "sim_node.h"
 
 #include "aurora_common/ros/node_main.h"
 
@@ -12,10 +12,9 @@
 
 #include "aurora_sim/command_mapping.h"
 #include "aurora_sim/ros/conversions.h"
-#include "aurora_common/rotation.h"
 #include "aurora_sim/ros/vehicle_params.h"
 #include "aurora_sim/sim_parameters.h"
-#include "aurora_sim/vehicle/ardrone2.h"
+#include "aurora_sim/vehicle/vehicle_type.h"
 
 namespace aurora_sim {
 
@@ -33,9 +32,10 @@ constexpr double kTakeoffClimb = 0.5;     // climb command during take-off (frac
 constexpr double kLandingClimb = -0.5;    // climb command during landing (fraction)
 }  // namespace
 
-ArdroneSimNode::ArdroneSimNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
+template <class Vehicle>
+SimNode<Vehicle>::SimNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
     : nh_(nh), pnh_(private_nh) {
-  params_ = loadVehicleParams(nh_, "vehicle");
+  params_ = loadVehicleParams<Vehicle>(nh_, "vehicle", "this simulator");
 
   readParameters();
 
@@ -45,33 +45,36 @@ ArdroneSimNode::ArdroneSimNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
   const bool lockstep = mode_ == Mode::kLockstep;
   // Deep queues: in lockstep a recorder must not lose a step when it lags.
   state_pub_ = nh_.advertise<aurora_msgs::DroneState>("state", 1000);
-  odom_pub_ = nh_.advertise<nav_msgs::Odometry>("odom", 1000);
+  odom_pub_ = nh_.advertise<nav_msgs::Odometry>(Profile::odomTopic(), 1000);
   path_pub_ = nh_.advertise<nav_msgs::Path>("path", 1);
   const ros::TransportHints hints = ros::TransportHints().tcpNoDelay();
-  cmd_sub_ = nh_.subscribe("cmd_vel", 10, &ArdroneSimNode::onCmdVel, this, hints);
-  takeoff_sub_ = nh_.subscribe("takeoff", 1, &ArdroneSimNode::onTakeoff, this);
-  land_sub_ = nh_.subscribe("land", 1, &ArdroneSimNode::onLand, this);
-  reset_sub_ = nh_.subscribe("reset", 1, &ArdroneSimNode::onReset, this);
+  cmd_sub_ = nh_.subscribe("cmd_vel", 10, &SimNode::onCmdVel, this, hints);
+  if (Profile::kFlies) {  // a ground robot's driver has no take-off or landing
+    takeoff_sub_ = nh_.subscribe("takeoff", 1, &SimNode::onTakeoff, this);
+    land_sub_ = nh_.subscribe("land", 1, &SimNode::onLand, this);
+  }
+  reset_sub_ = nh_.subscribe("reset", 1, &SimNode::onReset, this);
 
   if (lockstep) {
     // The sim owns the clock: one step per received command, as fast as the
     // controller answers. Until the first command arrives the initial state
     // is re-sent, so a controller that connects late still starts the loop.
     if (publish_clock_) clock_pub_ = nh_.advertise<rosgraph_msgs::Clock>("/clock", 1000);
-    retry_timer_ = nh_.createWallTimer(ros::WallDuration(0.2), &ArdroneSimNode::onLockstepRetry,
+    retry_timer_ = nh_.createWallTimer(ros::WallDuration(0.2), &SimNode::onLockstepRetry,
                                        this);
-    ROS_INFO("ardrone_sim: lockstep mode, Ts = %.6f s; starts once %s has %d subscriber(s)",
+    ROS_INFO("sim: %s, lockstep mode, Ts = %.6f s; starts once %s has %d subscriber(s)", Vehicle::name(),
              params_.Ts, state_pub_.getTopic().c_str(), lockstep_subscribers_);
   } else {
     start_time_ = ros::Time::now();
-    timer_ = nh_.createTimer(ros::Duration(params_.Ts), &ArdroneSimNode::onRealtimeTimer, this);
-    ROS_INFO("ardrone_sim: realtime mode at %.3f Hz, cmd_timeout %.3f s", 1.0 / params_.Ts,
+    timer_ = nh_.createTimer(ros::Duration(params_.Ts), &SimNode::onRealtimeTimer, this);
+    ROS_INFO("sim: %s, realtime mode at %.3f Hz, cmd_timeout %.3f s", Vehicle::name(), 1.0 / params_.Ts,
              cmd_timeout_);
   }
 }
 
 // Every row of the simulator's parameter table (sim_parameters.h).
-void ArdroneSimNode::readParameters() {
+template <class Vehicle>
+void SimNode<Vehicle>::readParameters() {
   const auto& rows = kSimParameterTable;
   mode_ = wordParam(pnh_, rows[kSimRowMode]) == "lockstep" ? Mode::kLockstep : Mode::kRealtime;
   cmd_timeout_ = tableParam(pnh_, rows[kSimRowCmdTimeout]);
@@ -87,7 +90,8 @@ void ArdroneSimNode::readParameters() {
   lockstep_subscribers_ = static_cast<int>(wholeParam(pnh_, rows[kSimRowLockstepSubscribers]));
   max_real_time_factor_ = tableParam(pnh_, rows[kSimRowMaxRealTimeFactor]);
   // The study's initial state (z = 0.75 m, in the air); false starts landed.
-  flight_ = flagParam(pnh_, rows[kSimRowStartFlying]) ? Flight::kFlying : Flight::kLanded;
+  // A ground robot drives from the first state.
+  flight_ = !Profile::kFlies || flagParam(pnh_, rows[kSimRowStartFlying]) ? Flight::kFlying : Flight::kLanded;
   readStart();
   // Several sims in lockstep (formation.launch): one of them owns /clock.
   publish_clock_ = flagParam(pnh_, rows[kSimRowPublishClock]);
@@ -106,7 +110,8 @@ double xmlNumber(XmlRpc::XmlRpcValue& v, const std::string& key) {
 // Where the drone starts in the air: ~start [x, y, z] [m], or the start of
 // drone ~formation_drone (0-based) of the formation file loaded under
 // ~formation (formation.launch: the file's drones[i].start); else (0, 0, 0.75).
-void ArdroneSimNode::readStart() {
+template <class Vehicle>
+void SimNode<Vehicle>::readStart() {
   const char* start = kSimParameterTable[kSimRowStart].name;
   const aurora_common::ParameterSpec& robot = kSimParameterTable[kSimRowFormationDrone];
   XmlRpc::XmlRpcValue list;
@@ -129,41 +134,47 @@ void ArdroneSimNode::readStart() {
     throw ConfigError("parameter '" + key + "' is invalid: accepted [x, y, z] in m");
   }
   for (int j = 0; j < 3; ++j) start_[j] = xmlNumber(list[j], key);
+  if (!Profile::kFlies && start_[2] != 0.0) {
+    throw ConfigError("parameter '" + key + "' is invalid: a " + Vehicle::name() +
+                      " is a ground robot: accepted [x, y, 0] in m (its centre on the floor)");
+  }
 }
 
-void ArdroneSimNode::resetModel() {
+template <class Vehicle>
+void SimNode<Vehicle>::resetModel() {
   // In the air at the start (the study's initial state unless ~start), or on
-  // the ground below it when landed.
-  model_.reset(flight_ == Flight::kLanded ? 0.0 : start_[2]);
-  model_.X[kX] = start_[0];
-  model_.X[kY] = start_[1];
+  // the ground below it when landed (sim_profile.h).
+  const double at[3] = {start_[0], start_[1], flight_ == Flight::kLanded ? 0.0 : start_[2]};
+  Profile::place(params_, model_, at);
   step_ = 0;
   have_command_ = false;
   for (double& u : command_) u = 0.0;
   path_.poses.clear();
 }
 
-ros::Time ArdroneSimNode::lockstepTime() const {
+template <class Vehicle>
+ros::Time SimNode<Vehicle>::lockstepTime() const {
   // Integer nanoseconds of step * Ts, so stamps never drift by accumulation.
   return ros::Time().fromNSec(static_cast<uint64_t>(std::llround(double(step_) * params_.Ts * 1e9)));
 }
 
-void ArdroneSimNode::onCmdVel(const geometry_msgs::Twist::ConstPtr& msg) {
-  double U[4];
-  Ardrone2::fromDriver(twistCommandFromMsg(*msg), U);
+template <class Vehicle>
+void SimNode<Vehicle>::onCmdVel(const geometry_msgs::Twist::ConstPtr& msg) {
+  double U[Vehicle::kInputs];
+  Vehicle::fromDriver(twistCommandFromMsg(*msg), U);
   const double t = ros::WallTime::now().toSec();
   logBurst(nan_burst_.poll(t));
-  if (!allFinite(U, 4)) {
+  if (!allFinite(U, Vehicle::kInputs)) {
     const BurstReport started = nan_burst_.rejected(t);
     if (started.kind == BurstReport::kStarted) {
-      ROS_WARN("ardrone_sim: rejected cmd_vel with NaN/Inf (linear %g %g %g, angular.z %g): the "
+      ROS_WARN("sim: rejected cmd_vel with NaN/Inf (linear %g %g %g, angular.z %g): the "
                "drone hovers on each such command; further ones are counted until none for %.1f s",
                msg->linear.x, msg->linear.y, msg->linear.z, msg->angular.z, nan_quiet_period_);
     }
     for (double& u : command_) u = 0.0;
   } else {
     nan_burst_.accepted();
-    for (int i = 0; i < Ardrone2::kInputs; ++i) command_[i] = Ardrone2::limitInput(params_, i, U[i]);  // as the driver
+    for (int i = 0; i < Vehicle::kInputs; ++i) command_[i] = Vehicle::limitInput(params_, i, U[i]);  // as the driver
   }
   have_command_ = true;
   command_time_ = ros::Time::now();
@@ -181,50 +192,56 @@ void ArdroneSimNode::onCmdVel(const geometry_msgs::Twist::ConstPtr& msg) {
   }
 }
 
-void ArdroneSimNode::logBurst(const BurstReport& r) const {
+template <class Vehicle>
+void SimNode<Vehicle>::logBurst(const BurstReport& r) const {
   if (r.kind == BurstReport::kSummary) {
-    ROS_WARN("ardrone_sim: still rejecting NaN/Inf cmd_vel: %lu rejected (and %lu finite accepted) "
+    ROS_WARN("sim: still rejecting NaN/Inf cmd_vel: %lu rejected (and %lu finite accepted) "
              "in the last %.1f s", r.rejected, r.accepted, r.span);
   } else if (r.kind == BurstReport::kEnded) {
-    ROS_INFO("ardrone_sim: no NaN/Inf cmd_vel for %.1f s: the burst ended after %lu rejected (and "
+    ROS_INFO("sim: no NaN/Inf cmd_vel for %.1f s: the burst ended after %lu rejected (and "
              "%lu finite accepted) over %.1f s", nan_quiet_period_, r.rejected, r.accepted, r.span);
   }
 }
 
-void ArdroneSimNode::onTakeoff(const std_msgs::Empty::ConstPtr&) {
+template <class Vehicle>
+void SimNode<Vehicle>::onTakeoff(const std_msgs::Empty::ConstPtr&) {
   if (flight_ == Flight::kLanded) {
-    ROS_INFO("ardrone_sim: taking off to %.2f m", takeoff_altitude_);
+    ROS_INFO("sim: taking off to %.2f m", takeoff_altitude_);
     flight_ = Flight::kTakingOff;
   }
 }
 
-void ArdroneSimNode::onLand(const std_msgs::Empty::ConstPtr&) {
+template <class Vehicle>
+void SimNode<Vehicle>::onLand(const std_msgs::Empty::ConstPtr&) {
   if (flight_ == Flight::kFlying || flight_ == Flight::kTakingOff) {
-    ROS_INFO("ardrone_sim: landing");
+    ROS_INFO("sim: landing");
     flight_ = Flight::kLanding;
   }
 }
 
-void ArdroneSimNode::onReset(const std_msgs::Empty::ConstPtr&) {
-  ROS_INFO("ardrone_sim: reset to the initial state");
-  flight_ = aurora_common::boolParam(pnh_, "start_flying", true) ? Flight::kFlying : Flight::kLanded;
+template <class Vehicle>
+void SimNode<Vehicle>::onReset(const std_msgs::Empty::ConstPtr&) {
+  ROS_INFO("sim: reset to the initial state");
+  flight_ = !Profile::kFlies || aurora_common::boolParam(pnh_, "start_flying", true) ? Flight::kFlying : Flight::kLanded;
   resetModel();
 }
 
-void ArdroneSimNode::onRealtimeTimer(const ros::TimerEvent& event) {
+template <class Vehicle>
+void SimNode<Vehicle>::onRealtimeTimer(const ros::TimerEvent& event) {
   logBurst(nan_burst_.poll(ros::WallTime::now().toSec()));
   const ros::Time now = event.current_real;
   const bool fresh = have_command_ && (now - command_time_).toSec() <= cmd_timeout_;
   stepAndPublish(now, fresh);
 }
 
-void ArdroneSimNode::onLockstepRetry(const ros::WallTimerEvent&) {
+template <class Vehicle>
+void SimNode<Vehicle>::onLockstepRetry(const ros::WallTimerEvent&) {
   if (!lockstep_started_) {
     // Wait for the controller (and a recorder) so the first states are not
     // published into the void; then give their other subscriptions (cmd_vel,
     // control, /clock) one more retry period to connect.
     if (static_cast<int>(state_pub_.getNumSubscribers()) < lockstep_subscribers_) {
-      ROS_INFO_THROTTLE(5.0, "ardrone_sim: lockstep waiting for %d subscriber(s) of %s (%u now)",
+      ROS_INFO_THROTTLE(5.0, "sim: lockstep waiting for %d subscriber(s) of %s (%u now)",
                         lockstep_subscribers_, state_pub_.getTopic().c_str(),
                         state_pub_.getNumSubscribers());
       return;
@@ -235,7 +252,7 @@ void ArdroneSimNode::onLockstepRetry(const ros::WallTimerEvent&) {
     }
     lockstep_started_ = true;
     lockstep_start_wall_ = ros::WallTime::now();
-    ROS_INFO("ardrone_sim: lockstep started");
+    ROS_INFO("sim: lockstep started");
     publishState(lockstepTime());
     return;
   }
@@ -246,8 +263,9 @@ void ArdroneSimNode::onLockstepRetry(const ros::WallTimerEvent&) {
   }
 }
 
-void ArdroneSimNode::stepAndPublish(const ros::Time& now, bool command_fresh) {
-  double U[4] = {0.0, 0.0, 0.0, 0.0};  // hover
+template <class Vehicle>
+void SimNode<Vehicle>::stepAndPublish(const ros::Time& now, bool command_fresh) {
+  double U[Vehicle::kInputs] = {};  // hover (a ground robot: stop)
   // Landed, the drone rests (no model step) but time goes on: each state is
   // a new sample (a new step), so a listener sees a live source, not
   // re-sends, and a lockstep run still reaches stop_after.
@@ -256,19 +274,19 @@ void ArdroneSimNode::stepAndPublish(const ros::Time& now, bool command_fresh) {
     case Flight::kLanded:
       break;
     case Flight::kTakingOff:
-      U[kUClimb] = kTakeoffClimb;
+      U[Profile::kClimbInput] = kTakeoffClimb;
       if (model_.X[kZ] >= takeoff_altitude_) flight_ = Flight::kFlying;
       break;
     case Flight::kLanding:
-      U[kUClimb] = kLandingClimb;
+      U[Profile::kClimbInput] = kLandingClimb;
       break;
     case Flight::kFlying:
       if (command_fresh) {
-        for (int i = 0; i < 4; ++i) U[i] = command_[i];
+        for (int i = 0; i < Vehicle::kInputs; ++i) U[i] = command_[i];
       }
       break;
   }
-  if (!resting) Ardrone2::step(params_, model_, U);  // the vehicle's step, as every offline loop's
+  if (!resting) Vehicle::step(params_, model_, U);  // the vehicle's step, as every offline loop's
   ++step_;
   // The ground holds the drone while its rotors spin up or it touches down.
   // (In flight there is no ground, as in the study's model, so a flight
@@ -278,12 +296,10 @@ void ArdroneSimNode::stepAndPublish(const ros::Time& now, bool command_fresh) {
     if (model_.X[kVz] < 0.0) model_.X[kVz] = 0.0;
   }
   if (flight_ == Flight::kLanding && model_.X[kZ] <= kLandedAltitude) {
-    ROS_INFO("ardrone_sim: landed");
+    ROS_INFO("sim: landed");
     flight_ = Flight::kLanded;
-    const double x = model_.X[kX], y = model_.X[kY], yaw = model_.X[kYaw];
-    model_.reset(0.0);
-    model_.X[kX] = x;
-    model_.X[kY] = y;
+    const double at[3] = {model_.X[kX], model_.X[kY], 0.0}, yaw = model_.X[kYaw];
+    Profile::place(params_, model_, at);
     model_.X[kYaw] = yaw;
   }
   publishState(mode_ == Mode::kLockstep ? lockstepTime() : now);
@@ -292,11 +308,11 @@ void ArdroneSimNode::stepAndPublish(const ros::Time& now, bool command_fresh) {
   if (stop_after_ > 0.0 && elapsed >= stop_after_ - 1e-9) {
     if (mode_ == Mode::kLockstep) {
       const double wall = (ros::WallTime::now() - lockstep_start_wall_).toSec();
-      ROS_INFO("ardrone_sim: stop_after %.3f s reached after %lu steps in %.3f s wall "
+      ROS_INFO("sim: stop_after %.3f s reached after %lu steps in %.3f s wall "
                "(sim time / wall time = %.1f): shutting down",
                stop_after_, step_, wall, elapsed / wall);
     } else {
-      ROS_INFO("ardrone_sim: stop_after %.3f s reached after %lu steps: shutting down",
+      ROS_INFO("sim: stop_after %.3f s reached after %lu steps: shutting down",
                stop_after_, step_);
     }
     timer_.stop();
@@ -308,7 +324,8 @@ void ArdroneSimNode::stepAndPublish(const ros::Time& now, bool command_fresh) {
   }
 }
 
-void ArdroneSimNode::publishState(const ros::Time& stamp) {
+template <class Vehicle>
+void SimNode<Vehicle>::publishState(const ros::Time& stamp) {
   if (mode_ == Mode::kLockstep && publish_clock_) {
     rosgraph_msgs::Clock clock;
     clock.clock = stamp;
@@ -321,7 +338,7 @@ void ArdroneSimNode::publishState(const ros::Time& stamp) {
   state.header.stamp = stamp;
   state.header.frame_id = frame_id_;
   state.step = step_;
-  stateToMsg(X, state);
+  stateToMsg(X, Vehicle::kStates, state);
   state.stale = false;
   state_pub_.publish(state);
 
@@ -331,9 +348,11 @@ void ArdroneSimNode::publishState(const ros::Time& stamp) {
   tf.header.stamp = stamp;
   tf.header.frame_id = frame_id_;
   tf.child_frame_id = child_frame_id_;
-  tf.transform.translation.x = X[kX];
-  tf.transform.translation.y = X[kY];
-  tf.transform.translation.z = X[kZ];
+  double body[3];  // the body's origin (a Pioneer's centre, behind its control point)
+  Profile::bodyPosition(params_, X, body);
+  tf.transform.translation.x = body[0];
+  tf.transform.translation.y = body[1];
+  tf.transform.translation.z = body[2];
   tf.transform.rotation.x = q.x();
   tf.transform.rotation.y = q.y();
   tf.transform.rotation.z = q.z();
@@ -341,26 +360,20 @@ void ArdroneSimNode::publishState(const ros::Time& stamp) {
   tf_.sendTransform(tf);
 
   if (odom_pub_.getNumSubscribers() > 0) {
-    // nav_msgs/Odometry convention: pose in frame_id, twist in child frame
-    // (body axes): v_body = R^T v_world; body rates from Euler-angle rates.
-    const double sphi = std::sin(X[kRoll]), cphi = std::cos(X[kRoll]);
-    const double sth = std::sin(X[kPitch]), cth = std::cos(X[kPitch]);
-    const double spsi = std::sin(X[kYaw]), cpsi = std::cos(X[kYaw]);
-    double R[3][3];
-    aurora_common::rotationMatrix(sphi, cphi, sth, cth, spsi, cpsi, R);  // the model's own (rotation.h)
+    // nav_msgs/Odometry convention (the real driver's topic): the body's
+    // pose in frame_id, its twist in the child frame (body axes).
     nav_msgs::Odometry odom;
     odom.header = tf.header;
     odom.child_frame_id = child_frame_id_;
-    odom.pose.pose.position.x = X[kX];
-    odom.pose.pose.position.y = X[kY];
-    odom.pose.pose.position.z = X[kZ];
+    odom.pose.pose.position.x = body[0];
+    odom.pose.pose.position.y = body[1];
+    odom.pose.pose.position.z = body[2];
     odom.pose.pose.orientation = tf.transform.rotation;
-    odom.twist.twist.linear.x = R[0][0] * X[kVx] + R[1][0] * X[kVy] + R[2][0] * X[kVz];
-    odom.twist.twist.linear.y = R[0][1] * X[kVx] + R[1][1] * X[kVy] + R[2][1] * X[kVz];
-    odom.twist.twist.linear.z = R[0][2] * X[kVx] + R[1][2] * X[kVy] + R[2][2] * X[kVz];
-    odom.twist.twist.angular.x = X[kRollRate] - sth * X[kYawRate];
-    odom.twist.twist.angular.y = cphi * X[kPitchRate] + sphi * cth * X[kYawRate];
-    odom.twist.twist.angular.z = -sphi * X[kPitchRate] + cphi * cth * X[kYawRate];
+    double linear[3], angular[3];
+    Profile::bodyTwist(params_, X, linear, angular);
+    odom.twist.twist.linear.x = linear[0], odom.twist.twist.linear.y = linear[1], odom.twist.twist.linear.z = linear[2];
+    odom.twist.twist.angular.x = angular[0], odom.twist.twist.angular.y = angular[1];
+    odom.twist.twist.angular.z = angular[2];
     odom_pub_.publish(odom);
   }
 
@@ -376,6 +389,16 @@ void ArdroneSimNode::publishState(const ros::Time& stamp) {
     if (path_.poses.size() > 20000) path_.poses.erase(path_.poses.begin());
     if (path_pub_.getNumSubscribers() > 0) path_pub_.publish(path_);
   }
+}
+
+VehicleSimNode::VehicleSimNode(ros::NodeHandle nh, ros::NodeHandle private_nh) {
+  std::string type;
+  nh.getParam("vehicle/type", type);
+  forEachVehicle([&](auto vehicle) {
+    if (type == vehicle.name()) node_ = std::make_shared<SimNode<decltype(vehicle)>>(nh, private_nh);
+  });
+  // An unknown or missing type: the AR.Drone's loader refuses it naming it.
+  if (!node_) node_ = std::make_shared<SimNode<Ardrone2>>(nh, private_nh);
 }
 
 }  // namespace aurora_sim
