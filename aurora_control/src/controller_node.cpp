@@ -489,6 +489,11 @@ template <class Settings>
 void ControllerNodeOf<Settings>::fillLaw(aurora_msgs::Control& control) const {
   const Settings& set = core_->settings;
   control.controller = lawNameOf(set);
+  control.vehicle = Vehicle::name();
+  control.command_names.clear();
+  for (int i = 0; i < Vehicle::kInputs; ++i) control.command_names.push_back(Vehicle::inputName(i));
+  control.extra_state_names.clear();
+  for (int i = aurora_sim::kStateSize; i < Vehicle::kStates; ++i) control.extra_state_names.push_back(Vehicle::stateName(i));
   control.gain_names.clear();
   control.gains.clear();
   for (const auto& gain : gainsInForce(set)) control.gain_names.push_back(gain.first), control.gains.push_back(gain.second);

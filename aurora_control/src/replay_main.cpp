@@ -26,7 +26,8 @@
 
 #include "aurora_control/loop/delayed_controller.h"
 #include "option_values.h"
-#include "aurora_control/law/law_yaml.h"
+#include "aurora_control/law/law_settings_yaml.h"
+#include "aurora_control/law/other_laws.h"
 #include "aurora_control/link/link_yaml.h"
 #include "aurora_control/params/limits.h"
 #include "aurora_control/task/tracking.h"
@@ -84,16 +85,30 @@ struct Overrides {
   double kp_value = 0, kd_value = 0, delay_seconds_value = 0;
   long delay_value = 0;
   bool clamp_value = true;
-  ControllerSettings law_settings;  // --controller FILE: the law and all its gains
+  // --controller FILE: its law's name and mapping; an AR.Drone law's gains read.
+  std::string controller_path, controller_name;
+  YAML::Node controller_mapping;
+  ControllerSettings law_settings;
   bool any() const { return kp || kd || delay || delay_seconds || clamp || law; }
 };
 
 void loadControllerFile(const std::string& path, Overrides& o) {
   try {
-    const ControllerFile f = readControllerFile(path);
-    o.law_settings = f.settings;
+    o.controller_path = path;
+    o.controller_name = controllerFileName(path);
     o.law = true;
-    if (f.has_clamp) o.clamp = true, o.clamp_value = f.clamp;
+    if (vehicleOfLaw(o.controller_name) == LawVehicle::name()) {
+      const ControllerFile f = readControllerFile(path);
+      o.law_settings = f.settings;
+      if (f.has_clamp) o.clamp = true, o.clamp_value = f.clamp;
+      return;
+    }
+    // Another vehicle's law: read with its vehicle's sample time (cycleLaw).
+    const YAML::Node root = loadYamlFile("controller file", path);
+    const YamlReader r("controller file '" + path + "': ");
+    r.onlyKeys(root, "", {"controller", "clamp_commands"});
+    o.controller_mapping = root["controller"];
+    if (root["clamp_commands"]) o.clamp = true, o.clamp_value = r.boolean(root["clamp_commands"], "clamp_commands");
   } catch (const ConfigError& e) {
     fail(e.what());
   }
@@ -134,7 +149,8 @@ po::options_description describe(Arguments& args, Given& g) {
       ("kp", po::value(&g.kp)->value_name("X"), "gain of the PD law")
       ("kd", po::value(&g.kd)->value_name("X"), "gain of the PD law")
       ("vehicle", po::value(&args.vehicle_path)->value_name("FILE"),
-       "vehicle YAML the underactuated law inverts (default: vehicles/ardrone2.yaml of the aurora_config package)")
+       "vehicle YAML the law flies and inverts (default: vehicles/NAME.yaml of the aurora_config package, NAME the "
+       "law's vehicle: ardrone2, bebop2, pioneer3dx)")
       ("delay", po::value(&g.delay)->value_name("N"), "delay in samples")
       ("link", po::value(&args.link_path)->value_name("FILE"),
        "link YAML (config/links/*.yaml, docs/links.md): replay over that link (the delay stays the recorded or given one)")
@@ -252,11 +268,9 @@ std::string droneNamespace(rosbag::Bag& bag, std::string ns) {
   return ns;
 }
 
-// The settings of the cycle of `c`: the recorded law, gains, delay and
-// clamping, with the command line's overrides; refused as the node refuses.
-void cycleSettings(const aurora_msgs::Control& c, const Overrides& o, long iterations, double task_duration,
-                   ControllerSettings& set) {
-  set.Ts = c.sample_time;
+// The AR.Drone's law and gains of the cycle of `c`: recorded, or the
+// --controller file's, with --kp, --kd.
+void cycleLaw(const aurora_msgs::Control& c, const Overrides& o, ControllerSettings& set) {
   if (o.law) {
     set.law = o.law_settings.law, set.gains = o.law_settings.gains;
     set.underactuated = o.law_settings.underactuated;
@@ -271,6 +285,40 @@ void cycleSettings(const aurora_msgs::Control& c, const Overrides& o, long itera
   }
   if (o.kp) set.gains.kp = o.kp_value;
   if (o.kd) set.gains.kd = o.kd_value;
+}
+
+// Another vehicle's law: its gains as recorded (Control.gain_names), or the
+// --controller file's; --kp, --kd are the AR.Drone's.
+template <class Law>
+void cycleLaw(const aurora_msgs::Control& c, const Overrides& o, LawSettings<Law>& set) {
+  if (o.kp || o.kd) {
+    fail(std::string(o.kp ? "--kp" : "--kd") + " is a gain of the pd_saturated law, but the " +
+         (o.law ? "--controller file's" : "bag's") + " controller is " + Law::name() + ": give its gains in a "
+         "controller file with --controller FILE (e.g. config/controllers/" + Law::name() + ".yaml)");
+  }
+  if (o.law) {
+    try {
+      readLawMapping(YamlReader("controller file '" + o.controller_path + "': "), o.controller_mapping, "controller", set);
+    } catch (const ConfigError& e) {
+      fail(e.what());
+    }
+    return;
+  }
+  if (c.controller != Law::name()) {
+    fail("control message of step " + std::to_string(c.step) + ": controller '" + c.controller + "' where '" +
+         Law::name() + "' was recorded before: one law per bag");
+  }
+  const std::string missing = setNamedGains(set.gains, c.gain_names, c.gains);
+  if (!missing.empty()) fail("control message of step " + std::to_string(c.step) + ": gain '" + missing + "' missing");
+}
+
+// The settings of the cycle of `c`: the recorded law, gains, delay and
+// clamping, with the command line's overrides; refused as the node refuses.
+template <class Settings>
+void cycleSettings(const aurora_msgs::Control& c, const Overrides& o, long iterations, double task_duration,
+                   Settings& set) {
+  set.Ts = c.sample_time;
+  cycleLaw(c, o, set);
   set.delay = o.delay ? o.delay_value : static_cast<long>(c.delay_samples);
   if (o.delay_seconds) {
     const std::string refusal = delayRefusal(o.delay_seconds_value, true, c.sample_time, set.delay);
@@ -303,10 +351,12 @@ void readDrone(rosbag::Bag& bag, const std::string& bag_path, const std::string&
   }
 }
 
-// The vehicle the underactuated law inverts (--vehicle, else ardrone2).
-aurora_control::LawVehicleParams vehicleFor(const std::string& path) {
+// The vehicle the law flies and inverts (--vehicle, else its shipped file).
+template <class Vehicle>
+typename Vehicle::template Params<double> vehicleFor(const std::string& path, const std::string& law) {
   try {
-    return aurora_sim::loadVehicleYaml(path.empty() ? aurora_common::configDir() + "/vehicles/ardrone2.yaml" : path);
+    const std::string file = path.empty() ? aurora_common::configDir() + "/vehicles/" + Vehicle::name() + ".yaml" : path;
+    return aurora_sim::loadVehicleFile<Vehicle>(file, "the controller '" + law + "'");
   } catch (const std::runtime_error& e) {
     fail(std::string("--vehicle: ") + e.what());
   }
@@ -321,15 +371,23 @@ FILE* openCommandsCsv(const std::string& path) {
   return csv;
 }
 
-// The controller core: the vehicle the underactuated law inverts, and the
-// link with the first cycle's delay as its uplink delay (`first`: that
-// cycle's settings), configured as the node configures it: after the delay
+// The controller core: the vehicle its law flies and inverts, the first
+// cycle's settings (of `recorded`), and the link with that cycle's delay as
+// its uplink delay, configured as the node configures it: after the delay
 // is known and before the first state (a link configured with another delay
 // receives other states from step 0 on).
-std::unique_ptr<DelayedController<kCapacity>> makeCore(const Arguments& args, const ControllerSettings& first) {
-  std::unique_ptr<DelayedController<kCapacity>> core(new DelayedController<kCapacity>());
-  core->settings = first;
-  core->settings.vehicle = vehicleFor(args.vehicle_path);
+template <class Settings>
+std::unique_ptr<DelayedController<kCapacity, Settings>> makeCore(const Arguments& args,
+                                                                 const aurora_msgs::Control& recorded,
+                                                                 long iterations) {
+  using Vehicle = typename Settings::Data::Vehicle;
+  std::unique_ptr<DelayedController<kCapacity, Settings>> core(new DelayedController<kCapacity, Settings>());
+  core->settings.vehicle = vehicleFor<Vehicle>(args.vehicle_path, args.o.law ? args.o.controller_name : recorded.controller);
+  if (core->settings.vehicle.Ts != recorded.sample_time) {
+    fail("the vehicle's sample time " + YamlReader::fmt(core->settings.vehicle.Ts) + " s differs from the recorded " +
+         YamlReader::fmt(recorded.sample_time) + " s: give the flight's vehicle file with --vehicle FILE");
+  }
+  cycleSettings(recorded, args.o, iterations, recorded.task_duration, core->settings);
   if (!args.link_path.empty()) {
     try {
       core->settings.link = readLinkFile(args.link_path);
@@ -379,27 +437,18 @@ const char* configurationText(const Arguments& args, const std::vector<aurora_ms
   return " (recorded configuration)";
 }
 
-// Replays the bag of `args` and compares the commands; the exit status.
-int run(const Arguments& args) {
-  const std::string &bag_path = args.bag_path, &out_path = args.out_path;
+// Replays the recorded cycles with the law of Settings; the exit status.
+template <class Settings>
+int replayCycles(const Arguments& args, const std::string& ns, const std::map<long, StateSample>& states,
+                 const std::vector<aurora_msgs::Control>& controls) {
+  const std::string& out_path = args.out_path;
   const bool expect_identical = args.expect_identical;
   const Overrides& o = args.o;
-  rosbag::Bag bag;
-  openBag(bag_path, bag);
-  const std::string ns = droneNamespace(bag, args.ns);
-
-  std::map<long, StateSample> states;
-  std::vector<aurora_msgs::Control> controls;
-  readDrone(bag, bag_path, ns, states, controls);
-  if (controls.empty() || states.empty()) fail("no " + ns + "/control or " + ns + "/state messages");
-
   // The recorded task's length (Control.task_duration; one task per bag, as
   // the report assumes) bounds the delay as in the node and the sweep.
   const aurora_msgs::Control& recorded = controls.front();
   const long iterations = taskStepCount(recorded.task_duration, recorded.sample_time);
-  ControllerSettings first;
-  cycleSettings(recorded, o, iterations, recorded.task_duration, first);
-  const std::unique_ptr<DelayedController<kCapacity>> core = makeCore(args, first);
+  const std::unique_ptr<DelayedController<kCapacity, Settings>> core = makeCore<Settings>(args, recorded, iterations);
   FILE* csv = out_path.empty() ? nullptr : openCommandsCsv(out_path);
   long identical = 0, cycles = 0, missing = 0;
   double max_diff = 0.0;
@@ -447,6 +496,24 @@ int run(const Arguments& args) {
     std::printf("replay: write the commands side by side with --out FILE.csv\n");
   }
   return expect_identical && identical != cycles ? 1 : 0;
+}
+
+// Replays the bag of `args` and compares the commands; the exit status.
+int run(const Arguments& args) {
+  rosbag::Bag bag;
+  openBag(args.bag_path, bag);
+  const std::string ns = droneNamespace(bag, args.ns);
+  std::map<long, StateSample> states;
+  std::vector<aurora_msgs::Control> controls;
+  readDrone(bag, args.bag_path, ns, states, controls);
+  if (controls.empty() || states.empty()) fail("no " + ns + "/control or " + ns + "/state messages");
+  // The law: the --controller file's, else the recorded one (its vehicle's core).
+  const std::string law = args.o.law ? args.o.controller_name : controls.front().controller;
+  int status = -1;
+  forEachOtherLaw([&](auto l) {
+    if (law == l.name()) status = replayCycles<LawSettings<decltype(l)>>(args, ns, states, controls);
+  });
+  return status >= 0 ? status : replayCycles<ControllerSettings>(args, ns, states, controls);
 }
 
 }  // namespace

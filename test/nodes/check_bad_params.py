@@ -113,10 +113,44 @@ class BadParamsTest(unittest.TestCase):
         self.assert_refused(rc, out, "'/half_subs/controller/lockstep_subscribers/cmd_vel' = ",
                             "accepted a whole number from 0 to 100")
 
-    def sim_case(self, ns, edit):
-        load_yaml(os.path.join(self.config, "vehicles/ardrone2.yaml"), ns + "/vehicle")
+    def sim_case(self, ns, edit, vehicle="ardrone2"):
+        load_yaml(os.path.join(self.config, "vehicles/%s.yaml" % vehicle), ns + "/vehicle")
         edit(ns + "/")
         return self.run_node("aurora_sim", "ardrone_sim", ns)
+
+    def other_controller_case(self, ns, vehicle, controller, task, edit=lambda p: None):
+        """The controller node with another vehicle's files (sim.launch vehicle:=...)."""
+        rospy.set_param(ns, {})
+        load_yaml(os.path.join(self.config, "vehicles/%s.yaml" % vehicle), ns + "/vehicle")
+        load_yaml(os.path.join(self.config, "controllers/%s.yaml" % controller), ns + "/controller")
+        load_yaml(os.path.join(self.config, "tasks/%s.yaml" % task), ns + "/controller")
+        edit(ns + "/controller/")
+        return self.run_node("aurora_control", "controller", ns)
+
+    def test_pioneer_given_a_drones_task(self):
+        rc, out = self.other_controller_case("/pioneer_up", "pioneer3dx", "pioneer_dynamic", "mission4")
+        self.assert_refused(rc, out, "/pioneer_up/controller/task", "a ground robot's task lies on the floor")
+
+    def test_a_law_given_another_vehicles_file(self):
+        rc, out = self.other_controller_case("/bebop_law", "ardrone2", "bebop2_compensator", "bebop2_waypoints")
+        self.assert_refused(rc, out, "is of type 'ardrone2', but the controller 'bebop2_compensator' flies type "
+                            "'bebop2'", "give a vehicle file of type 'bebop2'")
+
+    def test_compensator_rate_that_does_not_divide(self):
+        rc, out = self.other_controller_case("/bebop_rate", "bebop2", "bebop2_compensator", "bebop2_waypoints",
+                                             lambda p: rospy.set_param(p + "controller/rate", 7))
+        self.assert_refused(rc, out, "'/bebop_rate/controller/controller/rate' = 7 Hz does not divide",
+                            "accepted 30, 15, 10, 7.5, 6, 5")
+
+    def test_pioneer_gain_out_of_range(self):
+        rc, out = self.other_controller_case("/pioneer_gain", "pioneer3dx", "pioneer_dynamic", "pioneer_lemniscate",
+                                             lambda p: rospy.set_param(p + "controller/kc1", [0.35, -1.0]))
+        self.assert_refused(rc, out, "/pioneer_gain/controller/controller/kc1", "a list of 2 numbers in [0, 10]")
+
+    def test_pioneer_sim_started_off_the_floor(self):
+        rc, out = self.sim_case("/pioneer_air", lambda p: rospy.set_param(p + "ardrone_sim/start", [0.0, 0.0, 1.0]),
+                                vehicle="pioneer3dx")
+        self.assert_refused(rc, out, "/pioneer_air/ardrone_sim/start", "a ground robot: accepted [x, y, 0] in m")
 
     def test_sim_missing_vehicle_constant(self):
         rc, out = self.sim_case("/no_mass", lambda p: rospy.delete_param(p + "vehicle/mass"))

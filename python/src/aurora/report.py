@@ -177,6 +177,9 @@ def study_metrics(controls, ts):
 
 # A DroneState's 12-state in the report's names (the model's order).
 STATE_NAMES = ("x", "y", "z", "roll", "pitch", "yaw", "vx", "vy", "vz", "p", "q", "r")
+# The AR.Drone's commands, for a bag recorded before Control.command_names.
+ARDRONE_COMMANDS = ("u_phi (roll) [-1, 1]", "u_theta (pitch, + = negative theta) [-1, 1]", "u_zdot (climb) [-1, 1]",
+                    "u_psidot (yaw rate, + = negative) [-1, 1]")
 
 
 def state_values(s):
@@ -221,12 +224,16 @@ def analyse(ns, d):
     iae, itae, iasc = study_metrics(controls, ts)
     t0 = states[min(states)].header.stamp.to_sec()
     series = flight_series(ns, states, controls, ts, t0)
-    cmd = {"t": [], "u": [[], [], [], []]}
+    # The vehicle's own commands (a bag from before Control named them: the AR.Drone's).
+    names = list(getattr(last, "command_names", ())) or list(ARDRONE_COMMANDS)
+    cmd = {"t": [], "u": [[] for _ in names], "names": names}
     for step in sorted(controls):
         if step in states:
             cmd["t"].append(states[step].header.stamp.to_sec() - t0)
-            for i in range(4):
+            for i in range(len(names)):
                 cmd["u"][i].append(controls[step].command[i])
+    series["extra_names"] = list(getattr(last, "extra_state_names", ()))
+    series["extra"] = [[tuple(getattr(states[k], "extra", ())) for k in sorted(states) if k in controls]]
     # A moving reference (circle, lemniscate) has a desired velocity; the
     # segments are then laps (the node writes the lap into waypoint_index).
     trajectory = any(c.desired_velocity.x or c.desired_velocity.y or c.desired_velocity.z
@@ -234,7 +241,8 @@ def analyse(ns, d):
     series["trajectory"] = trajectory
     # Every figure title says which flight it shows: law, gains, delay.
     law = last.controller or "pd_saturated"
-    gains = ("Kp %g, Kd %g" % (last.kp, last.kd)) if law == "pd_saturated" else "12 gains in metrics.json"
+    gains = ("Kp %g, Kd %g" % (last.kp, last.kd)) if law == "pd_saturated" else \
+        "%d gains in metrics.json" % len(last.gain_names)
     series["label"] = "%s (%s, %s; delay %d samples = %.3f s)" % (ns, law, gains, last.delay_samples,
                                                                     last.delay_seconds)
     segments = segment_metrics(series)
@@ -252,6 +260,8 @@ def analyse(ns, d):
         "sample_time_s": ts,
         "kp": last.kp, "kd": last.kd, "commands_clamped": last.clamped,
         "controller": last.controller or "pd_saturated",
+        "vehicle": getattr(last, "vehicle", "") or "ardrone2",
+        "command_names": names,
         "gains": dict(zip(last.gain_names, last.gains)),
         "task_kind": "trajectory" if trajectory else "waypoints",
         "rms_tracking_error_m": math.sqrt(sum(e * e for e in series["err"]) / len(series["err"])),
@@ -498,7 +508,13 @@ def figures(ns, series, cmd, out_dir, pdf):
         ax.grid(True, alpha=0.3)
     finish(fig, axes, "attitude", "attitude")
 
-    fig, axes = plt.subplots(2, 1, figsize=(8, 6), sharex=True)
+    extra = series["extra_names"]
+    fig, axes = plt.subplots(3 if extra else 2, 1, figsize=(8, 8 if extra else 6), sharex=True)
+    if extra:  # the vehicle's own states (a Pioneer's u [m/s], omega [rad/s])
+        values = series["extra"][0]
+        for i, name in enumerate(extra):
+            axes[2].plot(t, [v[i] if i < len(v) else float("nan") for v in values], label=name)
+        axes[2].set_ylabel("the vehicle's\nown states")
     for k in ("vx", "vy", "vz"):
         axes[0].plot(t, series[k], label=k)
     axes[0].set_ylabel("velocity [m/s]")
@@ -511,14 +527,14 @@ def figures(ns, series, cmd, out_dir, pdf):
         ax.legend(loc="best")
     finish(fig, axes, "linear and angular velocities", "velocities")
 
-    fig, axes = plt.subplots(4, 1, figsize=(8, 8), sharex=True)
-    for ax, i, name in zip(axes, range(4), (r"$u_\phi$ (roll)", r"$u_\theta$ (pitch)" "\n" r"+ = negative $\theta$",
-                                            r"$u_{\dot z}$ (climb)",
-                                            r"$u_{\dot\psi}$ (yaw rate)" "\n" r"+ = negative $\dot\psi$")):
+    names = cmd["names"]
+    fig, axes = plt.subplots(len(names), 1, figsize=(8, 2 * len(names)), sharex=True, squeeze=False)
+    axes = axes[:, 0]
+    for ax, i, name in zip(axes, range(len(names)), names):
         ax.plot(cmd["t"], cmd["u"][i])
-        ax.set_ylabel(name)
+        ax.set_ylabel(name.replace(" [", "\n["))  # the unit under the name
         ax.grid(True, alpha=0.3)
-    finish(fig, axes, "commands (model order, fraction of full scale)", "commands")
+    finish(fig, axes, "commands as sent to the driver (the vehicle's order)", "commands")
     if "state_age" in series:
         link_figure(plt, series, save)
     return files

@@ -68,17 +68,45 @@ inline std::vector<GainGroup> gainGroups(CompensatorGains<double>& g) {
   return {{{{"ksp", g.ksp}, {"ksd", g.ksd}, {"kp", g.kp}, {"kd", g.kd}}, {"x", "y", "z", "yaw"}}};
 }
 
-// Every gain of a law by name, `<key>_<axis>` (ksp_x ... kd_yaw), in its
-// file's order: the controller node's Control.gain_names and its log.
+// What a law's gains hold beyond its lists, by name: the compensator's
+// period in model steps (from its rate).
+inline std::vector<std::pair<const char*, double*>> gainExtras(CompensatorGains<double>& g) {
+  return {{"period_steps", &g.period_steps}};
+}
+
+// Every gain of a law by name, `<key>_<axis>` (ksp_x ... kd_yaw) in its
+// file's order, then its extras: the controller node's Control.gain_names
+// and its log; replay reads them back (setNamedGains).
+template <class Gains>
+std::vector<std::pair<std::string, double*>> gainSlots(Gains& g) {
+  std::vector<std::pair<std::string, double*>> out;
+  for (const GainGroup& group : gainGroups(g)) {
+    for (const GainList& list : group.lists) {
+      for (size_t i = 0; i < group.axes.size(); ++i) out.emplace_back(std::string(list.key) + "_" + group.axes[i], list.into + i);
+    }
+  }
+  for (const auto& extra : gainExtras(g)) out.emplace_back(extra.first, extra.second);
+  return out;
+}
+
 template <class Gains>
 std::vector<std::pair<std::string, double>> namedGains(Gains g) {
   std::vector<std::pair<std::string, double>> out;
-  for (const GainGroup& group : gainGroups(g)) {
-    for (const GainList& list : group.lists) {
-      for (size_t i = 0; i < group.axes.size(); ++i) out.emplace_back(std::string(list.key) + "_" + group.axes[i], list.into[i]);
-    }
-  }
+  for (const auto& slot : gainSlots(g)) out.emplace_back(slot.first, *slot.second);
   return out;
+}
+
+// Sets every gain of g from names and values (Control.gain_names, gains);
+// "" when all were there, else the first missing name.
+template <class Gains>
+std::string setNamedGains(Gains& g, const std::vector<std::string>& names, const std::vector<double>& values) {
+  for (const auto& slot : gainSlots(g)) {
+    size_t i = 0;
+    while (i < names.size() && names[i] != slot.first) ++i;
+    if (i >= names.size() || i >= values.size()) return slot.first;
+    *slot.second = values[i];
+  }
+  return "";
 }
 
 // A compensator mapping (a controller file's 'controller:', or the node's

@@ -21,6 +21,11 @@ inline std::vector<GainGroup> gainGroups(PioneerDynamicGains<double>& g) {
   return {{{{"kc1", g.kc1}, {"kc2", g.kc2}}, {"x", "y"}}, {{{"kd1", g.kd1}, {"kd2", g.kd2}}, {"u", "omega"}}};
 }
 
+inline std::vector<std::pair<const char*, double*>> gainExtras(PioneerKinematicGains<double>&) { return {}; }
+inline std::vector<std::pair<const char*, double*>> gainExtras(PioneerDynamicGains<double>& g) {
+  return {{"accel_interval", &g.accel_interval}};
+}
+
 // The gain lists of each law under the mapping at key `at` ("controller"
 // in a controller file, a robot's controller in a formation file).
 inline void readPioneerGains(const YamlReader& r, const YAML::Node& c, const std::string& at,

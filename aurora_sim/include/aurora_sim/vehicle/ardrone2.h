@@ -6,6 +6,7 @@
 //   start), templated on the scalar (double, float, SIMD batches, CUDA);
 // - kStates, kInputs, kPosition: the state's size, the command's size, and
 //   where x y z [m, world frame] sit in X; stateName(i): X's names;
+//   inputName(i): U's, with units;
 // - kOnGround: a ground robot (its tasks lie on the floor, z = 0);
 // - start(p, s): a new robot at rest with its centre at the world origin,
 //   heading 0 (every loop's first state);
@@ -45,6 +46,12 @@ struct Ardrone2 {
   static constexpr bool kOnGround = false;
 
   static const char* stateName(int i) { return stateName12(i); }
+  // Its commands with their units (Control.command_names, a report's labels).
+  static const char* inputName(int i) {
+    static const char* const names[kInputs] = {"u_phi (roll) [-1, 1]", "u_theta (pitch, + = negative theta) [-1, 1]",
+                                               "u_zdot (climb) [-1, 1]", "u_psidot (yaw rate, + = negative) [-1, 1]"};
+    return names[i];
+  }
 
   template <typename T>
   AURORA_HD static void start(const Params<T>&, State<T>& s) {

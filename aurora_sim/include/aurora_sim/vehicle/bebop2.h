@@ -32,6 +32,11 @@ struct Bebop2 {
   static constexpr bool kOnGround = false;
 
   static const char* stateName(int i) { return stateName12(i); }
+  static const char* inputName(int i) {  // bebop_autonomy's cmd_vel components
+    static const char* const names[kInputs] = {"cmd_vel x (forward) [-1, 1]", "cmd_vel y (left) [-1, 1]",
+                                               "cmd_vel z (up) [-1, 1]", "cmd_vel yaw (left turn) [-1, 1]"};
+    return names[i];
+  }
 
   template <typename T>
   AURORA_HD static void start(const Params<T>&, State<T>& s) {

@@ -31,6 +31,7 @@ struct Pioneer3dx {
   static constexpr bool kOnGround = true;
 
   static const char* stateName(int i) { return i < kStateSize ? stateName12(i) : i == kPioneerU ? "u" : "omega"; }
+  static const char* inputName(int i) { return i == kPioneerURef ? "u_ref [m/s]" : "omega_ref [rad/s]"; }  // RosAria's cmd_vel
 
   // AuRoRA's rSetPose([0 0 0 0]) on a new robot: the control point a ahead
   // of the centre (docs/pioneer3dx.md, "Standard scenario").

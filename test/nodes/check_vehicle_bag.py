@@ -1,0 +1,61 @@
+#!/usr/bin/python3
+"""A recorded flight of another vehicle than the AR.Drone (a Bebop 2, a
+Pioneer P3-DX): the bag holds its driver's odometry topic and its states
+(a Pioneer's u, omega in DroneState.extra, named by Control); replay gives
+every command again (over the flight's link file where it had one); the
+report names the vehicle and labels its own commands."""
+import json
+import os
+import sys
+import tempfile
+import unittest
+
+import rosbag
+import rospy
+import rostest
+
+sys.path.insert(0, os.path.dirname(os.path.realpath(__file__)))
+from bag_helpers import record_until, run_tool as run  # noqa: E402
+
+
+class VehicleBagTest(unittest.TestCase):
+    def test_record_replay_report(self):
+        p = lambda key: rospy.get_param("~" + key)  # noqa: E731
+        bag = record_until(p("steps"), p("bag_dir"), p("prefix"))
+        ns = rospy.get_namespace().rstrip("/")
+        extra = p("extra_state_names")
+        with rosbag.Bag(bag) as b:
+            topics = b.get_type_and_topic_info().topics
+            self.assertIn(ns + "/" + p("odometry"), topics)
+            states = [m for _, m, _ in b.read_messages(topics=[ns + "/state"])]
+            controls = [m for _, m, _ in b.read_messages(topics=[ns + "/control"])]
+        self.assertGreater(len(states), p("steps"))
+        self.assertTrue(all(len(s.extra) == len(extra) for s in states))
+        last = controls[-1]
+        self.assertEqual(last.vehicle, p("vehicle"))
+        self.assertEqual(list(last.command_names), p("command_names"))
+        self.assertEqual(list(last.extra_state_names), extra)
+        if extra:  # the robot moved: its own states are not left at 0
+            self.assertGreater(max(abs(v) for s in states for v in s.extra), 0.05)
+        replay = ["rosrun", "aurora_control", "replay", bag, "--expect-identical"]
+        if rospy.has_param("~link_file"):
+            replay += ["--link", p("link_file")]
+        rc, log = run(replay)
+        rospy.loginfo(log)
+        self.assertEqual(rc, 0, log)
+        self.assertIn(" 0 differ, max |dU| = 0 ", log)
+        out = tempfile.mkdtemp(prefix="vehicle_report_")
+        rc, log = run(["rosrun", "aurora", "report", bag, "--out", out, "--no-video"])
+        self.assertEqual(rc, 0, log)
+        with open(os.path.join(out, "metrics.json")) as f:
+            metrics = json.load(f)
+        drone = metrics["drones"][0] if "drones" in metrics else metrics
+        self.assertEqual(drone["vehicle"], p("vehicle"))
+        self.assertEqual(drone["command_names"], p("command_names"))
+        self.assertTrue(drone["metrics_match_controller"])
+        os.remove(bag)
+
+
+if __name__ == "__main__":
+    rospy.init_node("check_vehicle_bag")
+    rostest.rosrun("aurora_tests", "vehicle_bag", VehicleBagTest)
