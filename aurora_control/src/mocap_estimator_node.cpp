@@ -29,7 +29,7 @@ std::vector<double> triple(const ros::NodeHandle& pnh, const std::string& key) {
 
 MocapEstimatorNode::MocapEstimatorNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
     : nh_(nh), pnh_(private_nh) {
-  const double Ts = aurora_sim::loadVehicleParams(nh_, "vehicle").Ts;
+  const double Ts = aurora_sim::loadVehicleSampleTime(nh_, "vehicle");
   MocapFilterConfig filter;
   using aurora_common::rangedParam;
   filter.velocity_cutoff_hz =

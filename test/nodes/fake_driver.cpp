@@ -11,6 +11,8 @@
 // ~takeoff_subscribe_after [s] subscribes to take-off only after that long;
 // ~ignore_takeoffs, ~ignore_lands [count] drop the first ones received.
 // ~start [x, y] (m, world frame): where it stands on the ground at first.
+// The vehicle is the one of the file loaded under ~vehicle (its type: an
+// AR.Drone 2.0 or a Bebop 2, each with its own model and cmd_vel mapping).
 #include <aurora_msgs/DroneState.h>
 #include <geometry_msgs/PoseStamped.h>
 #include <geometry_msgs/Twist.h>
@@ -26,7 +28,7 @@
 #include <string>
 #include <vector>
 
-#include "aurora_sim/ardrone_model.h"
+#include "aurora_sim/vehicle/sim_profile.h"
 #include "aurora_sim/command_mapping.h"
 #include "aurora_sim/ros/conversions.h"
 #include "aurora_sim/ros/vehicle_params.h"
@@ -36,10 +38,14 @@ namespace {
 using namespace aurora_sim;
 using namespace aurora_common;
 
+template <class Vehicle>
 class FakeDriver {
  public:
+  using Profile = SimProfile<Vehicle>;
+  static_assert(Profile::kFlies, "a drone's driver");
+
   FakeDriver(ros::NodeHandle nh, ros::NodeHandle pnh) : rng_(pnh.param("seed", 1)) {
-    params_ = loadVehicleParams(pnh, "vehicle");
+    params_ = loadVehicleParams<Vehicle>(pnh, "vehicle", "the fake driver");
     const std::string driver = pnh.param<std::string>("driver", "ardrone");
     if (driver != "ardrone" && driver != "bebop") throw ConfigError("~driver: ardrone or bebop");
     const std::string prefix = driver == "ardrone" ? "ardrone/" : "bebop/";
@@ -56,11 +62,11 @@ class FakeDriver {
     q.setRPY(rpy[0], rpy[1], rpy[2]);
     world_to_mocap_ = tf2::Transform(q, tf2::Vector3(xyz[0], xyz[1], xyz[2])).inverse();
 
-    model_.reset(0.0);  // on the ground, rotors stopped
     std::vector<double> start{0, 0};
     pnh.getParam("start", start);
     if (start.size() != 2) throw ConfigError("~start: [x, y] in metres");
-    model_.X[kX] = start[0], model_.X[kY] = start[1];
+    const double at[3] = {start[0], start[1], 0.0};
+    Profile::place(params_, model_, at);  // on the ground, rotors stopped
     const ros::TransportHints hints = ros::TransportHints().tcpNoDelay();
     subs_.push_back(nh.subscribe(cmd, 10, &FakeDriver::onCmd, this, hints));
     ignore_takeoffs_ = pnh.param("ignore_takeoffs", 0);
@@ -98,10 +104,10 @@ class FakeDriver {
     status_pub_.publish(m);
   }
   void onCmd(const geometry_msgs::Twist::ConstPtr& msg) {
-    double U[4];
-    modelCommandFromTwist(twistCommandFromMsg(*msg), U);
-    if (!allFinite(U, 4)) return;
-    for (int i = 0; i < 4; ++i) cmd_[i] = clampUnit(U[i]);
+    double U[Vehicle::kInputs];
+    Vehicle::fromDriver(twistCommandFromMsg(*msg), U);
+    if (!allFinite(U, Vehicle::kInputs)) return;
+    for (int i = 0; i < Vehicle::kInputs; ++i) cmd_[i] = Vehicle::limitInput(params_, i, U[i]);
     cmd_time_ = ros::Time::now();
   }
   void countReceived(int takeoff, int land, int reset) {
@@ -132,33 +138,33 @@ class FakeDriver {
     paused_until_ = ros::Time::now() + ros::Duration(msg->data);
   }
   void touchDown() {
-    const double x = model_.X[kX], y = model_.X[kY], yaw = model_.X[kYaw];
-    model_.reset(0.0);
-    model_.X[kX] = x, model_.X[kY] = y, model_.X[kYaw] = yaw;
+    const double at[3] = {model_.X[kX], model_.X[kY], 0.0}, yaw = model_.X[kYaw];
+    Profile::place(params_, model_, at);
+    model_.X[kYaw] = yaw;
   }
 
   // The model steps on its own clock (time passes at the real rate whatever
   // the command rate); the newest command applies at each step.
   void onStep(const ros::TimerEvent&) {
-    double U[4] = {0, 0, 0, 0};
+    double U[Vehicle::kInputs] = {};
     switch (phase_) {
       case Phase::kLanded:
         break;
       case Phase::kTakingOff:  // the drivers' automatic take-off: climb, then hover
-        U[kUClimb] = 0.5;
+        U[Profile::kClimbInput] = 0.5;
         if (model_.X[kZ] >= 0.75) phase_ = Phase::kFlying, status("flying");
         break;
       case Phase::kFlying:  // cmd_vel, or hover when it stops (bebop: 0.2 s)
         if ((ros::Time::now() - cmd_time_).toSec() <= 0.2) {
-          for (int i = 0; i < 4; ++i) U[i] = cmd_[i];
+          for (int i = 0; i < Vehicle::kInputs; ++i) U[i] = cmd_[i];
         }
         break;
       case Phase::kLanding:
-        U[kUClimb] = -0.5;
+        U[Profile::kClimbInput] = -0.5;
         break;
     }
     if (phase_ != Phase::kLanded) {
-      ardroneStep(params_, model_, U, Disturbance<double>::zero());
+      Vehicle::step(params_, model_, U);
       if (model_.X[kZ] < 0.0) {  // the ground
         model_.X[kZ] = 0.0;
         if (model_.X[kVz] < 0.0) model_.X[kVz] = 0.0;
@@ -217,10 +223,10 @@ class FakeDriver {
     }
   }
 
-  ArdroneParams<double> params_;
-  ArdroneState<double> model_;
+  typename Vehicle::template Params<double> params_;
+  typename Vehicle::template State<double> model_;
   Phase phase_ = Phase::kLanded;
-  double cmd_[4] = {0, 0, 0, 0};
+  double cmd_[Vehicle::kInputs] = {};
   ros::Time cmd_time_, paused_until_, last_step_time_;
   unsigned long step_ = 0;
   std::mt19937 rng_;
@@ -243,8 +249,15 @@ int main(int argc, char** argv) {
   ros::init(argc, argv, "fake_driver");
   ros::NodeHandle nh, pnh("~");
   try {
-    FakeDriver fake(nh, pnh);
-    ros::spin();
+    std::string type;
+    pnh.getParam("vehicle/type", type);
+    if (type == Bebop2::name()) {
+      FakeDriver<Bebop2> fake(nh, pnh);
+      ros::spin();
+    } else {
+      FakeDriver<Ardrone2> fake(nh, pnh);  // refuses another type naming it
+      ros::spin();
+    }
   } catch (const ConfigError& e) {
     ROS_FATAL("fake_driver: %s", e.what());
     return 2;

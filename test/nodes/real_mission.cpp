@@ -12,18 +12,26 @@
 
 #include <yaml-cpp/yaml.h>
 
-#include "aurora_control/loop/flight_runner.h"
-#include "aurora_control/law/law_yaml.h"
-#include "aurora_control/loop/closed_loop.h"
-#include "aurora_control/task/task_yaml.h"
-#include "aurora_sim/ros/conversions.h"
-#include "aurora_sim/ros/vehicle_params.h"
+#include <string>
+#include <type_traits>
+
+#include "aurora_control/loop/flight_setup.h"
 #include "truth_track.h"
 
 using namespace aurora_control;
 
 using aurora_tests::positionAt;
 using Sample = aurora_tests::TruthSample;
+
+namespace {
+
+std::string param(const ros::NodeHandle& pnh, const std::string& key) {
+  std::string value;
+  pnh.getParam(key, value);
+  return value;
+}
+
+}  // namespace
 
 TEST(RealLaunch, MissionCompletesCloseToTheSimulatedRun) {
   ros::NodeHandle nh, pnh("~");
@@ -60,24 +68,24 @@ TEST(RealLaunch, MissionCompletesCloseToTheSimulatedRun) {
   EXPECT_TRUE(saw_complete);
   ASSERT_GE(s0, 0) << "never flew";
 
-  // The simulated run: the offline flight runner with the same controller
-  // and task files as the launch (either law), delay and clamping.
-  const auto params = aurora_sim::loadVehicleParams(nh, "vehicle");
-  std::string controller_file, task_file;
-  ASSERT_TRUE(pnh.getParam("controller_file", controller_file));
-  ASSERT_TRUE(pnh.getParam("task_file", task_file));
-  ControllerSettings set = readControllerFile(controller_file).settings;
-  set.vehicle = params;
-  set.Ts = params.Ts;
-  set.delay = pnh.param("delay", 0);
-  set.clamp_commands = true;
-  const Task<double> task = readTask(YamlReader(), YAML::LoadFile(task_file)["task"], "task");
-  std::vector<std::vector<double>> sim(1, std::vector<double>{0.0, 0.0, 0.75});
-  runFlight(params, set, task, studyIterationCount(task.duration(), params.Ts),
-            [&](const FlightObservation& o, double) {
-              const double* X = o.after.model.X;
-              sim.push_back({X[0], X[1], X[2]});
-            });
+  // The simulated run: the offline flight of the launch's vehicle,
+  // controller and task files (any law, through the flight tool's chooser),
+  // delay and clamping.
+  FlightFiles files{param(pnh, "controller_file"), param(pnh, "task_file"), param(pnh, "vehicle_file"), "",
+                    pnh.param("delay", 0), false};
+  std::vector<std::vector<double>> sim;
+  double Ts = 0.0;
+  std::string law;
+  withFlight(files, controllerFileName(files.controller), {0.0, "", ""}, [&](const auto& f) {
+    using Law = typename std::remove_reference<decltype(f)>::type::Law;
+    typename Law::Vehicle::template State<double> s0;
+    Law::Vehicle::start(f.run.plant, s0);
+    sim.assign(1, std::vector<double>(s0.X, s0.X + 3));
+    Ts = f.run.plant.Ts, law = f.law;
+    flyLaw<Law>(f.run, f.cfg, studyIterationCount(f.cfg.task.duration(), Ts), [&](const auto& o, double) {
+      sim.push_back(std::vector<double>(o.after.model.X, o.after.model.X + 3));
+    });
+  });
 
   double worst = 0.0, worst_t = 0.0;
   long compared = 0;
@@ -92,11 +100,11 @@ TEST(RealLaunch, MissionCompletesCloseToTheSimulatedRun) {
     double e = 0.0;
     for (int i = 0; i < 3; ++i) e += (real[i] - sim[k][i]) * (real[i] - sim[k][i]);
     e = std::sqrt(e);
-    if (e > worst) worst = e, worst_t = k * params.Ts;
+    if (e > worst) worst = e, worst_t = k * Ts;
     ++compared;
   }
   std::printf("real.launch (%s) vs simulated run: %ld cycles compared, largest position difference "
-              "%.3f m at task time %.2f s\n", lawName(set.law), compared, worst, worst_t);
+              "%.3f m at task time %.2f s\n", law.c_str(), compared, worst, worst_t);
   EXPECT_GT(compared, static_cast<long>(0.95 * double(sim.size() - 1)));  // nearly every step of the task
   EXPECT_LE(worst, tolerance);
 }

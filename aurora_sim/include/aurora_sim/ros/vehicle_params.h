@@ -38,4 +38,18 @@ typename Vehicle::template Params<double> loadVehicleParams(const ros::NodeHandl
   });
 }
 
+// The sample time [s] of the vehicle file under `ns`, of whichever vehicle
+// its `type` names (the whole file checked as that vehicle's): for a node
+// that only needs the robot's rate (the mocap estimator).
+inline double loadVehicleSampleTime(const ros::NodeHandle& nh, const std::string& ns,
+                                    const std::string& flown_by = "this node") {
+  std::string type;
+  nh.getParam(ns + "/type", type);
+  double Ts = 0.0;
+  forEachVehicle([&](auto vehicle) {
+    if (type == vehicle.name()) Ts = loadVehicleParams<decltype(vehicle)>(nh, ns, flown_by).Ts;
+  });
+  return Ts > 0.0 ? Ts : loadVehicleParams<Ardrone2>(nh, ns, flown_by).Ts;  // refuses an unknown type naming it
+}
+
 }  // namespace aurora_sim
