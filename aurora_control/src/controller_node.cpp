@@ -12,6 +12,7 @@
 #include "aurora_sim/command_mapping.h"
 #include "aurora_sim/ros/conversions.h"
 #include "aurora_sim/ros/vehicle_params.h"
+#include "aurora_sim/vehicle/sim_profile.h"
 #include "aurora_control/law/law_settings_yaml.h"
 #include "aurora_control/law/other_laws.h"
 #include "aurora_control/params/live_settings.h"
@@ -43,6 +44,12 @@ ControllerNodeOf<Settings>::ControllerNodeOf(ros::NodeHandle nh, ros::NodeHandle
   refuseUnknownTopLevelKeys();
   core_->configureLink();
   safety_ = loadSafetyConfig(pnh_);
+  safety_.ground_robot = Vehicle::kOnGround;  // no take-off; it stops where a drone lands
+  if (!Vehicle::kOnGround && (safety_.max_speed > 0.0 || safety_.max_turn_rate > 0.0)) {
+    throw ConfigError("parameter '" + fullKey(pnh_, safety_.max_speed > 0.0 ? "safety/max_speed" : "safety/max_turn_rate") +
+                      "' is a ground robot's speed limit, but this node flies a " + Vehicle::name() +
+                      ": leave it out (0) for a drone");
+  }
   const SafetyConfig& safety = safety_;
   supervisor_.configure(safety);
   JoystickConfig joystick;
@@ -402,6 +409,7 @@ void ControllerNodeOf<Settings>::cycle(const ros::Time& now) {
     mode += " (resuming from joystick)";
   }
   if (low_rate_) mode += " [low command rate]";
+  aurora_sim::SimProfile<Vehicle>::limitSpeed(out.U, safety_.max_speed, safety_.max_turn_rate);
 
   aurora_msgs::Control control;
   control.header.stamp = now;

@@ -81,6 +81,9 @@ SafetyConfig loadSafetyConfig(const ros::NodeHandle& pnh) {
       rangedParam(pnh, "safety/land_resend_timeout", d.land_resend_timeout, 1.0, 120.0, "s");
   c.takeoff_rise = rangedParam(pnh, "safety/takeoff_rise", d.takeoff_rise, 0.02, 1.0, "m");
   c.descent_speed = rangedParam(pnh, "safety/descent_speed", d.descent_speed, 0.02, 1.0, "m/s");
+  c.max_speed = rangedParam(pnh, "safety/max_speed", d.max_speed, 0.0, 2.0, "m/s (a ground robot's; 0: none)");
+  c.max_turn_rate = rangedParam(pnh, "safety/max_turn_rate", d.max_turn_rate, 0.0, 5.0,
+                                "rad/s (a ground robot's; 0: none)");
   if (c.land_after > 0.0 && c.land_after <= c.hover_after) {
     throw ConfigError("parameter '" + fullKey(pnh, "safety/land_after") +
                          "' must be 0 (never) or longer than safety/hover_after");

@@ -29,7 +29,8 @@ std::vector<double> triple(const ros::NodeHandle& pnh, const std::string& key) {
 
 MocapEstimatorNode::MocapEstimatorNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
     : nh_(nh), pnh_(private_nh) {
-  const double Ts = aurora_sim::loadVehicleSampleTime(nh_, "vehicle");
+  vehicle_ = aurora_sim::loadVehicleOfFile(nh_, "vehicle");
+  const double Ts = vehicle_.Ts;
   MocapFilterConfig filter;
   using aurora_common::rangedParam;
   filter.velocity_cutoff_hz =
@@ -122,9 +123,10 @@ void MocapEstimatorNode::publish(bool stale) {
   state.header.stamp = ros::Time(estimator_.stamp());
   state.header.frame_id = world_frame_;
   state.step = step_++;
-  double X[aurora_sim::kStateSize];
-  estimator_.state(X);
-  aurora_sim::stateToMsg(X, state);
+  double body[aurora_sim::kStateSize], X[aurora_sim::kMaxStates];
+  estimator_.state(body);
+  vehicle_.state(body, X);  // the vehicle's state from its body's (a Pioneer's control point, u, omega)
+  aurora_sim::stateToMsg(X, vehicle_.states, state);
   state.stale = stale;
   state_pub_.publish(state);
 }

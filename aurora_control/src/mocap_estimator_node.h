@@ -11,6 +11,7 @@
 #include <string>
 
 #include "aurora_control/robot/mocap_estimator.h"
+#include "aurora_sim/ros/vehicle_params.h"
 
 namespace aurora_control {
 
@@ -30,6 +31,7 @@ class MocapEstimatorNode {
   tf2::Transform input_to_world_;
   double stale_timeout_;
   double Ts_;
+  aurora_sim::VehicleOfFile vehicle_;  // the robot's rate and its state from its body's
   ros::Time next_due_;  // when the next state is due
 
   ros::Time last_pose_arrival_;

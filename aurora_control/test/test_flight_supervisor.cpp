@@ -93,6 +93,38 @@ TEST(FlightSupervisor, LeavingTheBoxLands) {
   EXPECT_EQ(d.mode.rfind("land (left the safety box", 0), 0u) << d.mode;
 }
 
+TEST(FlightSupervisor, AGroundRobotDrivesAtOnceAndStopsWhereADroneLands) {
+  SafetyConfig c = realFlight();
+  c.ground_robot = true;
+  c.box_min[2] = -0.5;
+  FlightSupervisor s(c);
+  const double inf = std::numeric_limits<double>::infinity();
+  EXPECT_EQ(s.update(0.0, inf, X0, 0, 0, 25).mode, "wait for state");
+  FlightDecision d = s.update(0.1, 0.0, X0, 3, 0, 25);  // no take-off: it drives from the first fresh state
+  EXPECT_FALSE(d.send_takeoff);
+  EXPECT_TRUE(d.run_law);
+  EXPECT_EQ(d.event, "fly");
+  EXPECT_EQ(s.flyStartStep(), 3);
+  d = s.update(30.0, 0.0, X0, 260, 25.7, 25);  // the task is over: it stops, it does not land
+  EXPECT_FALSE(d.send_land);
+  EXPECT_FALSE(d.run_law);
+  EXPECT_EQ(d.mode, "stop (task complete)");
+  EXPECT_EQ(s.update(30.1, 0.0, X0, 261, 25.8, 25).mode, "stopped");
+  EXPECT_FALSE(s.update(30.2, 0.0, X0, 262, 25.9, 25).run_law);  // for good
+
+  FlightSupervisor stale(c), outside(c);
+  stale.update(0.0, 0.0, X0, 1, 0, 25);
+  d = stale.update(1.0, 1.2, X0, 1, 0.1, 25);
+  EXPECT_EQ(d.mode, "stop (no fresh state for 1 s)");
+  EXPECT_FALSE(d.send_land);
+  double X[12] = {};
+  X[1] = -3.2;
+  outside.update(0.0, 0.0, X0, 1, 0, 25);
+  d = outside.update(0.1, 0.0, X, 2, 0.1, 25);
+  EXPECT_EQ(d.mode.rfind("stop (left the safety box", 0), 0u) << d.mode;
+  EXPECT_EQ(outside.phase(), FlightPhase::kLanded);
+}
+
 TEST(FlightSupervisor, SimulationDefaultsFlyAtOnceAndNeverLand) {
   FlightSupervisor s;  // flight_sequence false, land_after 0
   const FlightDecision d = s.update(0, 0.0, X0, 0, 100, 60);

@@ -10,6 +10,7 @@
 
 #include "aurora_control/law/pioneer_laws.h"
 #include "aurora_control/loop/flight_setup.h"
+#include "aurora_sim/vehicle/sim_profile.h"
 #include "aurora_sim/vehicle_yaml.h"
 
 namespace {
@@ -115,6 +116,47 @@ TEST(Pioneer3dx, TracksTheLemniscate) {
     Pioneer3dx::step(p, s, U);
   }
   EXPECT_LT(worst, 0.05);
+}
+
+// A real Pioneer located by motion capture at its centre: the state the
+// laws read is its control point's (eq. P3: a ahead, moving with
+// K(psi) [u; omega]) with u, omega; the sim's body is that centre again.
+TEST(Pioneer3dx, TheStateFromItsCentresPoseIsTheControlPoints) {
+  using Profile = aurora_sim::SimProfile<Pioneer3dx>;
+  const Pioneer3dx::Params<double> p = aurora_sim::referencePioneerParams();
+  const double psi = 2.5, u = 0.3, omega = -0.4, c[2] = {1.2, -0.7};
+  double body[aurora_sim::kStateSize] = {};
+  body[aurora_sim::kX] = c[0], body[aurora_sim::kY] = c[1], body[aurora_sim::kYaw] = psi;
+  body[aurora_sim::kVx] = u * std::cos(psi), body[aurora_sim::kVy] = u * std::sin(psi);
+  body[aurora_sim::kYawRate] = omega;
+  body[aurora_sim::kZ] = 0.21, body[aurora_sim::kRoll] = 0.01;  // the markers' height and a tilt: not the state's
+  double X[Pioneer3dx::kStates], v[3];
+  Profile::stateFromBody(p, body, X);
+  aurora_sim::pioneerPointVelocity(p.a, psi, u, omega, v);
+  EXPECT_NEAR(X[aurora_sim::kX], c[0] + p.a * std::cos(psi), 1e-15);
+  EXPECT_NEAR(X[aurora_sim::kY], c[1] + p.a * std::sin(psi), 1e-15);
+  EXPECT_EQ(X[aurora_sim::kZ], 0.0);
+  EXPECT_EQ(X[aurora_sim::kRoll], 0.0);
+  EXPECT_NEAR(X[aurora_sim::kVx], v[0], 1e-15);
+  EXPECT_NEAR(X[aurora_sim::kVy], v[1], 1e-15);
+  EXPECT_EQ(X[aurora_sim::kYawRate], omega);
+  EXPECT_NEAR(X[aurora_sim::kPioneerU], u, 1e-15);
+  EXPECT_EQ(X[aurora_sim::kPioneerOmega], omega);
+  double back[3];
+  Profile::bodyPosition(p, X, back);
+  EXPECT_NEAR(back[0], c[0], 1e-15);
+  EXPECT_NEAR(back[1], c[1], 1e-15);
+}
+
+TEST(Pioneer3dx, TheSafetyLayersSpeedLimitsBoundWhatIsSent) {
+  double U[2] = {0.8, -1.5};
+  aurora_sim::SimProfile<Pioneer3dx>::limitSpeed(U, 0.5, 1.0);
+  EXPECT_EQ(U[0], 0.5);
+  EXPECT_EQ(U[1], -1.0);
+  double V[2] = {0.8, -1.5};
+  aurora_sim::SimProfile<Pioneer3dx>::limitSpeed(V, 0.0, 0.0);  // 0: no limit
+  EXPECT_EQ(V[0], 0.8);
+  EXPECT_EQ(V[1], -1.5);
 }
 
 TEST(Pioneer3dx, TheVehicleFileIsTheReference) {

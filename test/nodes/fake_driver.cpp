@@ -12,7 +12,9 @@
 // ~ignore_takeoffs, ~ignore_lands [count] drop the first ones received.
 // ~start [x, y] (m, world frame): where it stands on the ground at first.
 // The vehicle is the one of the file loaded under ~vehicle (its type: an
-// AR.Drone 2.0 or a Bebop 2, each with its own model and cmd_vel mapping).
+// AR.Drone 2.0 or a Bebop 2, each with its own model and cmd_vel mapping;
+// or a Pioneer P3-DX behind RosAria: RosAria/cmd_vel, no take-off or
+// landing, driving from the start, the mocap pose of its centre).
 #include <aurora_msgs/DroneState.h>
 #include <geometry_msgs/PoseStamped.h>
 #include <geometry_msgs/Twist.h>
@@ -42,14 +44,15 @@ template <class Vehicle>
 class FakeDriver {
  public:
   using Profile = SimProfile<Vehicle>;
-  static_assert(Profile::kFlies, "a drone's driver");
 
   FakeDriver(ros::NodeHandle nh, ros::NodeHandle pnh) : rng_(pnh.param("seed", 1)) {
     params_ = loadVehicleParams<Vehicle>(pnh, "vehicle", "the fake driver");
     const std::string driver = pnh.param<std::string>("driver", "ardrone");
-    if (driver != "ardrone" && driver != "bebop") throw ConfigError("~driver: ardrone or bebop");
-    const std::string prefix = driver == "ardrone" ? "ardrone/" : "bebop/";
-    const std::string cmd = driver == "ardrone" ? "cmd_vel" : "bebop/cmd_vel";
+    if (driver != "ardrone" && driver != "bebop" && driver != "rosaria") {
+      throw ConfigError("~driver: ardrone, bebop or rosaria");
+    }
+    const std::string prefix = driver == "ardrone" ? "ardrone/" : driver == "bebop" ? "bebop/" : "RosAria/";
+    const std::string cmd = driver == "ardrone" ? "cmd_vel" : prefix + "cmd_vel";
     noise_pos_ = pnh.param("noise_position", 0.0005);
     noise_ang_ = pnh.param("noise_angle", 0.05 * kPi / 180.0);
     dropout_ = pnh.param("dropout_probability", 0.03);
@@ -73,7 +76,9 @@ class FakeDriver {
     ignore_lands_ = pnh.param("ignore_lands", 0);
     const double late = pnh.param("takeoff_subscribe_after", 0.0);
     const std::string takeoff = prefix + "takeoff";
-    if (late > 0.0) {
+    if (!Profile::kFlies) {  // RosAria: no take-off or landing; it drives from the start
+      phase_ = Phase::kFlying;
+    } else if (late > 0.0) {
       late_timer_ = nh.createWallTimer(ros::WallDuration(late), [this, nh, takeoff](const ros::WallTimerEvent&) {
         ros::NodeHandle n(nh);
         subs_.push_back(n.subscribe(takeoff, 1, &FakeDriver::onTakeoff, this));
@@ -82,8 +87,10 @@ class FakeDriver {
     } else {
       subs_.push_back(nh.subscribe(takeoff, 1, &FakeDriver::onTakeoff, this));
     }
-    subs_.push_back(nh.subscribe(prefix + "land", 1, &FakeDriver::onLand, this));
-    subs_.push_back(nh.subscribe(prefix + "reset", 1, &FakeDriver::onReset, this));
+    if (Profile::kFlies) {
+      subs_.push_back(nh.subscribe(prefix + "land", 1, &FakeDriver::onLand, this));
+      subs_.push_back(nh.subscribe(prefix + "reset", 1, &FakeDriver::onReset, this));
+    }
     subs_.push_back(pnh.subscribe("pause_mocap", 1, &FakeDriver::onPause, this));
     pose_pub_ = nh.advertise<geometry_msgs::PoseStamped>(pnh.param<std::string>("pose_topic", "/mocap/pose"), 50);
     true_pub_ = pnh.advertise<aurora_msgs::DroneState>("true_state", 100);
@@ -92,7 +99,7 @@ class FakeDriver {
     countReceived(0, 0, 0);
     step_timer_ = nh.createTimer(ros::Duration(params_.Ts), &FakeDriver::onStep, this);
     mocap_timer_ = nh.createTimer(ros::Duration(1.0 / pnh.param("mocap_rate", 120.0)), &FakeDriver::onMocap, this);
-    status("landed");
+    status(Profile::kFlies ? "landed" : "driving");
   }
 
  private:
@@ -197,9 +204,11 @@ class FakeDriver {
     double X[kStateSize];
     for (int i = 0; i < kStateSize; ++i) X[i] = model_.X[i];
     for (int i = 0; i < 6; ++i) X[i] += X[i + 6] * dt;
+    double body[3];  // where the markers are: a Pioneer's centre, behind its control point
+    Profile::bodyPosition(params_, X, body);
     tf2::Quaternion q;
     q.setRPY(X[kRoll] + na(rng_), X[kPitch] + na(rng_), X[kYaw] + na(rng_));
-    const tf2::Transform world(q, tf2::Vector3(X[kX] + np(rng_), X[kY] + np(rng_), X[kZ] + np(rng_)));
+    const tf2::Transform world(q, tf2::Vector3(body[0] + np(rng_), body[1] + np(rng_), body[2] + np(rng_)));
     const tf2::Transform in_mocap = world_to_mocap_ * world;
     geometry_msgs::PoseStamped p;
     p.header.stamp = now;
@@ -253,6 +262,9 @@ int main(int argc, char** argv) {
     pnh.getParam("vehicle/type", type);
     if (type == Bebop2::name()) {
       FakeDriver<Bebop2> fake(nh, pnh);
+      ros::spin();
+    } else if (type == Pioneer3dx::name()) {
+      FakeDriver<Pioneer3dx> fake(nh, pnh);
       ros::spin();
     } else {
       FakeDriver<Ardrone2> fake(nh, pnh);  // refuses another type naming it

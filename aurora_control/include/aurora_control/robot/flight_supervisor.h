@@ -3,6 +3,9 @@
 // the task, land at the end; hover when the state goes stale, land when it
 // stays stale or the drone leaves the safety box. Each safety action is
 // reported once (`event`) and named in `mode` for the control message.
+// A ground robot (SafetyConfig::ground_robot) neither takes off nor lands:
+// it drives from the first fresh state, and where a drone would land it
+// stops (zero commands) for good: "stop (...)", then "stopped".
 #pragma once
 
 #include <cmath>
@@ -28,6 +31,9 @@ struct SafetyConfig {
   double land_resend_timeout = 10.0;   // [s] after the first land: stop re-sending, warn
   double takeoff_rise = 0.1;           // [m] climb above the request altitude that shows a take-off
   double descent_speed = 0.1;          // [m/s] sinking faster shows a landing (above mocap noise)
+  bool ground_robot = false;      // the vehicle's (kOnGround), not a file's: no take-off, stop instead of landing
+  double max_speed = 0.0;         // [m/s] a ground robot's forward speed limit on what is sent (0: none)
+  double max_turn_rate = 0.0;     // [rad/s] its turn-rate limit (0: none)
   bool box_enabled = false;       // land when the drone leaves [box_min, box_max]
   double box_min[3] = {0, 0, 0};  // [m] world frame
   double box_max[3] = {0, 0, 0};
@@ -85,6 +91,12 @@ class FlightSupervisor {
     const bool have_state = std::isfinite(state_age);
     switch (phase_) {
       case FlightPhase::kWaitState:
+        if (have_state && state_age <= cfg_.hover_after && cfg_.ground_robot) {  // it drives from here
+          phase_ = FlightPhase::kFly;
+          fly_start_step_ = step;
+          d.run_law = true;
+          return finish(d, "fly");
+        }
         if (have_state && state_age <= cfg_.hover_after) {
           d.send_takeoff = true;
           phase_ = FlightPhase::kTakeoff;
@@ -138,7 +150,7 @@ class FlightSupervisor {
         }
         return finish(d, last_mode_);
       case FlightPhase::kLanded:
-        return finish(d, "landed");
+        return finish(d, cfg_.ground_robot ? "stopped" : "landed");
     }
     return d;
   }
@@ -175,7 +187,12 @@ class FlightSupervisor {
     return false;
   }
 
+  // A drone lands; a ground robot stops at once ("land (why)" becomes "stop (why)").
   FlightDecision& land(FlightDecision& d, const std::string& mode) {
+    if (cfg_.ground_robot) {
+      phase_ = FlightPhase::kLanded;
+      return finish(d, "stop" + mode.substr(mode.rfind("land", 0) == 0 ? 4 : 0));
+    }
     phase_ = FlightPhase::kLand;
     d.send_land = true;
     return finish(d, mode);

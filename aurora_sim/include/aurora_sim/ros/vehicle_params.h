@@ -6,10 +6,12 @@
 
 #include <ros/ros.h>
 
+#include <functional>
 #include <string>
 
 #include "aurora_common/ros/params.h"
 #include "aurora_sim/vehicle/ardrone2.h"
+#include "aurora_sim/vehicle/sim_profile.h"
 #include "aurora_sim/vehicle/vehicle_type.h"
 
 namespace aurora_sim {
@@ -38,18 +40,33 @@ typename Vehicle::template Params<double> loadVehicleParams(const ros::NodeHandl
   });
 }
 
-// The sample time [s] of the vehicle file under `ns`, of whichever vehicle
-// its `type` names (the whole file checked as that vehicle's): for a node
-// that only needs the robot's rate (the mocap estimator).
-inline double loadVehicleSampleTime(const ros::NodeHandle& nh, const std::string& ns,
-                                    const std::string& flown_by = "this node") {
+// What a node that estimates a robot's state needs of the vehicle file
+// under `ns`, of whichever vehicle its `type` names (the whole file checked
+// as that vehicle's): its sample time, its state size, and its state from
+// an estimate of its body's 12-state (sim_profile.h's stateFromBody: a
+// Pioneer's control point, u and omega).
+struct VehicleOfFile {
+  double Ts = 0.0;
+  int states = kStateSize;
+  std::function<void(const double* body, double* X)> state;
+};
+
+inline VehicleOfFile loadVehicleOfFile(const ros::NodeHandle& nh, const std::string& ns,
+                                       const std::string& flown_by = "this node") {
   std::string type;
   nh.getParam(ns + "/type", type);
-  double Ts = 0.0;
+  VehicleOfFile v;
+  auto take = [&](auto vehicle) {
+    using Vehicle = decltype(vehicle);
+    const typename Vehicle::template Params<double> p = loadVehicleParams<Vehicle>(nh, ns, flown_by);
+    v.Ts = p.Ts, v.states = Vehicle::kStates;
+    v.state = [p](const double* body, double* X) { SimProfile<Vehicle>::stateFromBody(p, body, X); };
+  };
   forEachVehicle([&](auto vehicle) {
-    if (type == vehicle.name()) Ts = loadVehicleParams<decltype(vehicle)>(nh, ns, flown_by).Ts;
+    if (type == vehicle.name()) take(vehicle);
   });
-  return Ts > 0.0 ? Ts : loadVehicleParams<Ardrone2>(nh, ns, flown_by).Ts;  // refuses an unknown type naming it
+  if (!v.state) take(Ardrone2());  // refuses an unknown type naming it
+  return v;
 }
 
 }  // namespace aurora_sim

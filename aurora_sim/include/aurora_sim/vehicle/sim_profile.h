@@ -5,6 +5,7 @@
 // centre lies a behind the control point its state gives). ROS-free.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 
 #include "aurora_common/rotation.h"
@@ -23,6 +24,7 @@ struct DroneSimProfile {
   static constexpr int kClimbInput = ClimbInput;
   static constexpr bool kFlies = true;
   static const char* odomTopic() { return "odom"; }  // ardrone_autonomy's ardrone/odometry remapped, bebop_autonomy's odom
+  static void limitSpeed(double*, double, double) {}  // a ground robot's limits (a drone's are its clamp)
 
   // At rest at (x, y, z) [m], heading 0 (z = 0: landed).
   static void place(const typename Vehicle::template Params<double>& p, typename Vehicle::template State<double>& s,
@@ -32,6 +34,11 @@ struct DroneSimProfile {
   }
   static void bodyPosition(const typename Vehicle::template Params<double>&, const double* X, double out[3]) {
     for (int i = 0; i < 3; ++i) out[i] = X[kX + i];
+  }
+  // The state from a motion-capture estimate of the body: the same 12.
+  static void stateFromBody(const typename Vehicle::template Params<double>&, const double body[kStateSize],
+                            double* X) {
+    for (int i = 0; i < kStateSize; ++i) X[i] = body[i];
   }
   // nav_msgs/Odometry's twist, in the body frame: v_body = R^T v_world;
   // body rates from the Euler-angle rates.
@@ -65,6 +72,27 @@ struct SimProfile<Pioneer3dx> {
   static constexpr int kClimbInput = -1;
   static constexpr bool kFlies = false;
   static const char* odomTopic() { return "pose"; }
+
+  // The safety layer's limits on what is sent (0: none): |u_ref| <= max_speed
+  // [m/s], |omega_ref| <= max_turn_rate [rad/s].
+  static void limitSpeed(double U[Pioneer3dx::kInputs], double max_speed, double max_turn_rate) {
+    if (max_speed > 0.0) U[kPioneerURef] = std::max(-max_speed, std::min(max_speed, U[kPioneerURef]));
+    if (max_turn_rate > 0.0) U[kPioneerOmegaRef] = std::max(-max_turn_rate, std::min(max_turn_rate, U[kPioneerOmegaRef]));
+  }
+
+  // The state the laws read from a motion-capture estimate of the body
+  // (`body`: its 12-state, the centre's position and velocity, attitude and
+  // Euler rates): the control point a ahead (eq. P3's velocity), on the
+  // floor, then u and omega (the forward speed of the centre, the yaw rate).
+  static void stateFromBody(const Pioneer3dx::Params<double>& p, const double body[kStateSize],
+                            double X[Pioneer3dx::kStates]) {
+    for (int i = 0; i < Pioneer3dx::kStates; ++i) X[i] = 0.0;
+    const double psi = body[kYaw], c = std::cos(psi), s = std::sin(psi), w = body[kYawRate];
+    X[kX] = body[kX] + p.a * c, X[kY] = body[kY] + p.a * s, X[kYaw] = psi;
+    X[kVx] = body[kVx] - p.a * s * w, X[kVy] = body[kVy] + p.a * c * w, X[kYawRate] = w;
+    X[kPioneerU] = body[kVx] * c + body[kVy] * s;
+    X[kPioneerOmega] = w;
+  }
 
   // At rest with its centre at (x, y) (at[2] must be 0), heading 0.
   static void place(const Pioneer3dx::Params<double>& p, Pioneer3dx::State<double>& s, const double at[3]) {
