@@ -45,11 +45,7 @@ ControllerNodeOf<Settings>::ControllerNodeOf(ros::NodeHandle nh, ros::NodeHandle
   core_->configureLink();
   safety_ = loadSafetyConfig(pnh_);
   safety_.ground_robot = Vehicle::kOnGround;  // no take-off; it stops where a drone lands
-  if (!Vehicle::kOnGround && (safety_.max_speed > 0.0 || safety_.max_turn_rate > 0.0)) {
-    throw ConfigError("parameter '" + fullKey(pnh_, safety_.max_speed > 0.0 ? "safety/max_speed" : "safety/max_turn_rate") +
-                      "' is a ground robot's speed limit, but this node flies a " + Vehicle::name() +
-                      ": leave it out (0) for a drone");
-  }
+  refuseDroneOnlySafetyKeys();
   const SafetyConfig& safety = safety_;
   supervisor_.configure(safety);
   JoystickConfig joystick;
@@ -109,6 +105,25 @@ void ControllerNodeOf<Settings>::connectTopics(const SafetyConfig& safety) {
   }
   state_sub_ = nh_.subscribe("state", 100, &ControllerNodeOf::onState, this,
                              ros::TransportHints().tcpNoDelay());
+}
+
+template <class Settings>
+void ControllerNodeOf<Settings>::refuseDroneOnlySafetyKeys() const {
+  if (!Vehicle::kOnGround) {
+    if (safety_.max_speed > 0.0 || safety_.max_turn_rate > 0.0) {
+      throw ConfigError("parameter '" + fullKey(pnh_, safety_.max_speed > 0.0 ? "safety/max_speed" : "safety/max_turn_rate") +
+                        "' is a ground robot's speed limit, but this node flies a " + Vehicle::name() +
+                        ": leave it out (0) for a drone");
+    }
+    return;
+  }
+  for (const char* key : {"takeoff_altitude", "takeoff_timeout", "takeoff_rise", "descent_speed", "land_resend_timeout"}) {
+    if (pnh_.hasParam(std::string("safety/") + key)) {
+      throw ConfigError("parameter '" + fullKey(pnh_, std::string("safety/") + key) + "' sets a take-off or landing, but a " +
+                        Vehicle::name() + " is a ground robot: it drives from the first state and stops instead of "
+                        "landing (use config/safety/real_ground.yaml)");
+    }
+  }
 }
 
 template <class Settings>

@@ -66,7 +66,9 @@ class ControllerNodeOf {
   std::string linkName() const;
   std::string readLoopMode();  // sets lockstep_, timer_triggered_, the lockstep subscriber counts
   void connectTopics(const SafetyConfig& safety);
-  void refuseDelayBeyondTheTask(long delay) const;  // limits.h: shorter than the run
+  void refuseDelayBeyondTheTask(long delay) const;
+  // A ground robot's node refuses a drone's take-off and landing keys, a drone's a ground robot's speed limits.
+  void refuseDroneOnlySafetyKeys() const;  // limits.h: shorter than the run
   void refuseUnknownTopLevelKeys();
   double stateAge() const;
   bool lockstepListenersReady() const;

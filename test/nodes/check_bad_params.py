@@ -147,6 +147,16 @@ class BadParamsTest(unittest.TestCase):
                                              lambda p: rospy.set_param(p + "controller/kc1", [0.35, -1.0]))
         self.assert_refused(rc, out, "/pioneer_gain/controller/controller/kc1", "a list of 2 numbers in [0, 10]")
 
+    def test_pioneer_given_a_take_off(self):
+        rc, out = self.other_controller_case("/pioneer_takeoff", "pioneer3dx", "pioneer_dynamic", "pioneer_lemniscate",
+                                             lambda p: rospy.set_param(p + "safety/takeoff_altitude", 0.75))
+        self.assert_refused(rc, out, "/pioneer_takeoff/controller/safety/takeoff_altitude",
+                            "a pioneer3dx is a ground robot")
+
+    def test_drone_given_a_ground_robots_speed_limit(self):
+        rc, out = self.controller_case("/drone_speed", lambda p: rospy.set_param(p + "safety/max_speed", 0.5))
+        self.assert_refused(rc, out, "/drone_speed/controller/safety/max_speed", "leave it out (0) for a drone")
+
     def test_pioneer_sim_started_off_the_floor(self):
         rc, out = self.sim_case("/pioneer_air", lambda p: rospy.set_param(p + "ardrone_sim/start", [0.0, 0.0, 1.0]),
                                 vehicle="pioneer3dx")
