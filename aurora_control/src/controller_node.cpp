@@ -532,24 +532,15 @@ void ControllerNodeOf<Settings>::publishTaskMarkers() {
   desired_path_pub_.publish(desiredPath(task_));
 }
 
-namespace {
-
-// The node of the law `name` (a controller file's controller.name).
-std::shared_ptr<void> nodeOfLaw(const std::string& name, ros::NodeHandle nh, ros::NodeHandle pnh) {
-  std::shared_ptr<void> node;
-  forEachOtherLaw([&](auto law) {
-    if (name == law.name()) node = std::make_shared<ControllerNodeOf<LawSettings<decltype(law)>>>(nh, pnh);
-  });
-  if (!node) node = std::make_shared<ControllerNodeOf<ControllerSettings>>(nh, pnh);  // refuses an unknown name
-  return node;
-}
-
-}  // namespace
-
-ControllerNode::ControllerNode(ros::NodeHandle nh, ros::NodeHandle private_nh) {
+std::shared_ptr<void> ControllerOfLaw::make(ros::NodeHandle nh, ros::NodeHandle private_nh) {
   std::string name;
   private_nh.getParam("controller/name", name);
-  node_ = nodeOfLaw(name, nh, private_nh);
+  std::shared_ptr<void> node;
+  forEachOtherLaw([&](auto law) {
+    if (name == law.name()) node = std::make_shared<ControllerNodeOf<LawSettings<decltype(law)>>>(nh, private_nh);
+  });
+  if (!node) node = std::make_shared<ControllerNodeOf<ControllerSettings>>(nh, private_nh);  // refuses an unknown name
+  return node;
 }
 
 }  // namespace aurora_control

@@ -15,6 +15,7 @@
 #include <memory>
 #include <string>
 
+#include "aurora_common/ros/node_main.h"
 #include "aurora_control/loop/delayed_controller.h"
 #include "aurora_control/robot/flight_supervisor.h"
 #include "aurora_control/robot/joystick.h"
@@ -115,12 +116,9 @@ class ControllerNodeOf {
 
 // The controller node: the law ~controller/name names (its controller file,
 // loaded there), on that law's vehicle (~vehicle: its vehicle file).
-class ControllerNode {
- public:
-  ControllerNode(ros::NodeHandle nh, ros::NodeHandle private_nh);
-
- private:
-  std::shared_ptr<void> node_;  // the ControllerNodeOf of the law's settings
+struct ControllerOfLaw {
+  static std::shared_ptr<void> make(ros::NodeHandle nh, ros::NodeHandle private_nh);
 };
+using ControllerNode = aurora_common::ChosenNode<ControllerOfLaw>;
 
 }  // namespace aurora_control

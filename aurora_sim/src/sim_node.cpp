@@ -391,14 +391,15 @@ void SimNode<Vehicle>::publishState(const ros::Time& stamp) {
   }
 }
 
-VehicleSimNode::VehicleSimNode(ros::NodeHandle nh, ros::NodeHandle private_nh) {
+std::shared_ptr<void> SimOfVehicle::make(ros::NodeHandle nh, ros::NodeHandle private_nh) {
   std::string type;
   nh.getParam("vehicle/type", type);
+  std::shared_ptr<void> node;
   forEachVehicle([&](auto vehicle) {
-    if (type == vehicle.name()) node_ = std::make_shared<SimNode<decltype(vehicle)>>(nh, private_nh);
+    if (type == vehicle.name()) node = std::make_shared<SimNode<decltype(vehicle)>>(nh, private_nh);
   });
   // An unknown or missing type: the AR.Drone's loader refuses it naming it.
-  if (!node_) node_ = std::make_shared<SimNode<Ardrone2>>(nh, private_nh);
+  return node ? node : std::make_shared<SimNode<Ardrone2>>(nh, private_nh);
 }
 
 }  // namespace aurora_sim

@@ -14,6 +14,7 @@
 
 #include <memory>
 
+#include "aurora_common/ros/node_main.h"
 #include "aurora_sim/rejection_burst.h"
 #include "aurora_sim/vehicle/sim_profile.h"
 
@@ -85,12 +86,9 @@ class SimNode {
 };
 
 // The simulator of the vehicle file loaded under `vehicle` (its `type`).
-class VehicleSimNode {
- public:
-  VehicleSimNode(ros::NodeHandle nh, ros::NodeHandle private_nh);
-
- private:
-  std::shared_ptr<void> node_;  // the SimNode of the file's vehicle
+struct SimOfVehicle {
+  static std::shared_ptr<void> make(ros::NodeHandle nh, ros::NodeHandle private_nh);
 };
+using VehicleSimNode = aurora_common::ChosenNode<SimOfVehicle>;
 
 }  // namespace aurora_sim

@@ -11,6 +11,7 @@
 
 #include <csignal>
 #include <cstdio>
+#include <memory>
 
 #include "aurora_common/ros/params.h"
 
@@ -39,6 +40,17 @@ inline void endAsPlanned() {
   node_main_detail::planned() = true;
   ros::requestShutdown();
 }
+
+// A node whose class its parameters choose (a vehicle's simulator, a law's
+// controller): Choose::make(nh, private_nh) builds it; this keeps it alive.
+template <class Choose>
+class ChosenNode {
+ public:
+  ChosenNode(ros::NodeHandle nh, ros::NodeHandle private_nh) : node_(Choose::make(nh, private_nh)) {}
+
+ private:
+  std::shared_ptr<void> node_;
+};
 
 template <class Node>
 int runNode(int argc, char** argv, const char* name) {
