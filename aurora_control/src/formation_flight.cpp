@@ -84,22 +84,36 @@ class FormationCsv {
 
 // The file's run with --delay's per-drone delays, checked.
 FormationRun<double, Line> loadRun(const FormationFlightOptions& o, const LawVehicleParams& p,
-                                   const FormationFile& f) {
+                                   const FormationFile& f, long ticks) {
   FormationRun<double, Line> run = formationRun(f, p);
-  if (!o.delays.empty() && o.delays.size() != 2) {
-    throw ConfigError("--delay: give one delay per drone (2 for the line), or none: got " + std::to_string(o.delays.size()));
-  }
+  const std::vector<long> delays = robotDelays(o.delays, 2, "the line", p.Ts, ticks, {0, 0}, "drone");
   for (size_t d = 0; d < o.delays.size(); ++d) {
-    long samples = 0;
-    const std::string refusal = delayRefusal(double(o.delays[d]), false, p.Ts, samples);
-    if (!refusal.empty()) throw ConfigError("--delay " + std::to_string(o.delays[d]) + " (drone " + std::to_string(d + 1) + ") " + refusal);
-    run.drone[d].delay = samples;  // replaces the file's, and its link's uplink delay (docs/links.md)
+    run.drone[d].delay = delays[d];  // replaces the file's, and its link's uplink delay (docs/links.md)
   }
   if (!o.delays.empty()) refuseFormationDelays(run, p.Ts, {"--delay (drone 1)", "--delay (drone 2)"});
   return run;
 }
 
 }  // namespace
+
+std::vector<long> robotDelays(const std::vector<long>& given, size_t robots, const std::string& shape, double Ts,
+                              long ticks, const std::vector<long>& none, const std::string& robot) {
+  if (given.empty()) return none;
+  if (given.size() != robots) {
+    throw ConfigError("--delay: give one delay per " + robot + " (" + std::to_string(robots) + " for " + shape +
+                      "), or none: got " + std::to_string(given.size()));
+  }
+  std::vector<long> delays(robots);
+  for (size_t r = 0; r < robots; ++r) {
+    const std::string which = "(" + robot + " " + std::to_string(r + 1) + ")";
+    const std::string refusal = delayRefusal(double(given[r]), false, Ts, delays[r]);
+    if (!refusal.empty()) throw ConfigError("--delay " + std::to_string(given[r]) + " " + which + " " + refusal);
+    if (!delayShorterThanRun(delays[r], ticks)) {
+      throw ConfigError("--delay " + which + " = " + delayRunText(delays[r], ticks, Ts));
+    }
+  }
+  return delays;
+}
 
 // The formation checks (docs/formation.md, "Formation checks"), as a sweep judges them.
 void printChecks(const FormationJudge<double>& judge) {
@@ -117,8 +131,8 @@ FormationFlight flyFormationFiles(const FormationFlightOptions& o, const Formati
   const auto p = aurora_sim::loadVehicleFile<ArdroneLawData::Vehicle>(o.vehicle, "the formation's drones' laws");
   FormationFlight r{readFormationFile(o.formation, o.config_dir), {}, p.Ts, 0, 0.0, {},
                     FormationJudge<double>{FormationCriteria<double>::study(), false, p.Ts, {}, {}}};
-  r.run = loadRun(o, p, r.file);
   r.ticks = formationTicks(r.file.reference.duration, p.Ts);
+  r.run = loadRun(o, p, r.file, r.ticks);
   r.judge.metrics.reset();
   const long history = formationHistory(r.run);
   if (history > kMaxDelaySamples) {

@@ -60,8 +60,9 @@ struct LineErrors {
 }  // namespace
 
 void flyUavUgvLine(const FormationFlightOptions& o) {
-  if (!o.delays.empty()) throw ConfigError("--delay is refused for a UAV-UGV line: its robots run without delay (AuRoRA's)");
-  const UavUgvLineSetup setup = readUavUgvLineFile(o.formation, o.config_dir);
+  UavUgvLineSetup setup = readUavUgvLineFile(o.formation, o.config_dir);
+  const std::vector<long> delays = robotDelays(o.delays, 2, "the UAV-UGV line", setup.tick, setup.ticks(), {0, 0});
+  for (int r = 0; r < 2; ++r) setup.delay[r] = delays[r];
   UavUgvLineFlight run(setup);
   LineErrors errors;
   aurora_sim::Pioneer3dx::State<double> pioneer;  // the states a tick starts from
@@ -75,8 +76,9 @@ void flyUavUgvLine(const FormationFlightOptions& o) {
         errors.add(double(k) * setup.tick, run, pioneer.X, drone.X);
       },
       [&](FILE* csv, long k) { writeRow(csv, k, double(k) * setup.tick, pioneer.X, drone.X, run); });
-  std::printf("flight: UAV-UGV line (%s Pioneer + AR.Drone), %ld ticks of %.4f s in %.3f s\n",
-              setup.pioneer.kinematic != 0.0 ? "kinematic" : "dynamic", ticks, setup.tick, seconds);
+  std::printf("flight: UAV-UGV line (%s Pioneer + AR.Drone), %ld ticks of %.4f s, delays %ld and %ld ticks, in %.3f s\n",
+              setup.pioneer.kinematic != 0.0 ? "kinematic" : "dynamic", ticks, setup.tick, setup.delay[0],
+              setup.delay[1], seconds);
   std::printf("  RMS after 20 s: xf, yf %.4f m, rho %.4f m, alpha %.4f rad, beta %.4f rad, drone position %.4f m; "
               "closest approach %.3f m\n", errors.rms(0), errors.rms(1), errors.rms(2), errors.rms(3), errors.rms(4),
               errors.closest);

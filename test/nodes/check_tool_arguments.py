@@ -280,7 +280,8 @@ class FormationAndLinkArgumentsTest(unittest.TestCase):
     def test_the_uav_ugv_line_flies_as_auroras(self):
         """Issue 34: flight --formation line_pioneer_ardrone (a Pioneer leading an AR.Drone, AuRoRA's
         LineFormation3D) writes each robot's state and commands (r1_ the Pioneer's, d2_ the drone's), Q and
-        Qd; its first tick and the states after it are AuRoRA's; its errors are printed; a delay is refused."""
+        Qd; its first tick and the states after it are AuRoRA's; its errors are printed; each robot flies its own
+        feedback delay (--delay D1 D2), a wrong count or range refused."""
         with tempfile.TemporaryDirectory() as tmp:
             csv = os.path.join(tmp, "line.csv")
             rc, out = flight("--formation", "line_pioneer_ardrone", "--csv", csv)
@@ -302,10 +303,25 @@ class FormationAndLinkArgumentsTest(unittest.TestCase):
             for name, value in (("r1_x", -0.9992222646667399), ("r1_psi", 0.0036377270992680156),
                                 ("r1_omega", 0.10913181297804046), ("d2_z", 0.7458057587350768)):
                 self.assertAlmostEqual(float(second[col[name]]), value, places=14, msg=name)
+            # Each robot its own feedback delay: 0 0 is the same flight to the bit; the drone's delay shakes
+            # the line's shape (rho, beta) and the drone, the Pioneer's its position (xf, yf); 1 s each loses it.
+            zero = os.path.join(tmp, "zero.csv")
+            rc, out = flight("--formation", "line_pioneer_ardrone", "--delay", "0", "0", "--csv", zero)
+            self.assertEqual(rc, 0, out)
+            self.assertEqual(open(zero).read(), open(csv).read())
+        rc, out = flight("--formation", "line_pioneer_ardrone", "--delay", "0", "10")
+        self.assertIn("delays 0 and 10 ticks", out)
+        self.assertIn("RMS after 20 s: xf, yf 0.0069 m, rho 0.0143 m, alpha 0.0079 rad, beta 0.0124 rad, "
+                      "drone position 0.0405 m", out)
+        rc, out = flight("--formation", "line_pioneer_ardrone", "--delay", "10", "0")
+        self.assertIn("RMS after 20 s: xf, yf 0.0118 m, rho 0.0029 m", out)
         rc, out = flight("--formation", "line_pioneer_ardrone_kinematic")
         self.assertEqual(rc, 0, out)
         self.assertIn("RMS after 20 s: xf, yf 0.0093 m, rho 0.0093 m", out)
-        self.refused(["--formation", "line_pioneer_ardrone", "--delay", "3", "3"], "--delay is refused for a UAV-UGV line")
+        self.refused(["--formation", "line_pioneer_ardrone", "--delay", "3"],
+                     "--delay: give one delay per robot (2 for the UAV-UGV line), or none: got 1")
+        self.refused(["--formation", "line_pioneer_ardrone", "--delay", "3", "3900"],
+                     "--delay 3900 (robot 2) is refused: accepted integer samples in [0, 2047]")
 
     def test_the_triangle_flies_as_auroras(self):
         """Issue 34: flight --formation triangle_kinematic | triangle_ardrones [--law NAME] flies AuRoRA's triangle:

@@ -21,6 +21,13 @@ struct FormationFlightOptions {
   std::string law;           // a triangle's law instead of the file's (flight --law; empty: the file's)
 };
 
+// --delay's per-robot delays [samples of Ts] for a formation of `robots`
+// (none given: `none`), each in the delay rule's range and shorter than the
+// run's `ticks`; refused naming the `robot` ("drone", "robot") by its number
+// and `shape` ("the line", ...).
+std::vector<long> robotDelays(const std::vector<long>& given, size_t robots, const std::string& shape, double Ts,
+                              long ticks, const std::vector<long>& none, const std::string& robot = "robot");
+
 // Each tick, with the drones' sample time Ts [s].
 using FormationObserver = std::function<void(const FormationObservation<double, LineFormation<double>>&, double Ts)>;
 

@@ -3,12 +3,17 @@
 // its own law and model at the formation's tick, under the layer without
 // integration (uav_ugv_line.h). Each tick k (t = k tick): the layer on the
 // measured positions, the drone's law, the Pioneer's law, the drone's
-// step, the Pioneer's step (AuRoRA's script's order). ROS-free.
+// step, the Pioneer's step (AuRoRA's script's order). Each robot's state
+// reaches the layer and its law through its own feedback delay (the delay
+// rule, delay_buffer.h; 0: AuRoRA's). ROS-free.
 #pragma once
 
 #include <cmath>
 
 #include "aurora_control/formation/uav_ugv_line.h"
+#include "aurora_control/link/loop_link.h"
+#include "aurora_control/loop/closed_loop.h"
+#include "aurora_control/params/limits.h"
 #include "aurora_control/law/control_law.h"
 #include "aurora_control/law/pioneer_laws.h"
 
@@ -23,6 +28,7 @@ struct UavUgvLineSetup {
   double drone_start[3] = {0, 0, 0.75};  // [m], at rest
   double k1[6], k2[6];                   // the layer's gains (UavUgvLine::defaultGains: AuRoRA's)
   double tick = 1.0 / 30.0;              // [s]
+  long delay[2] = {0, 0};                // [ticks] each robot's feedback delay (Pioneer, drone)
   double duration = 130.0;               // [s]: ticks k = 0 .. round(duration / tick) - 1
   long ticks() const { return std::lround(duration / tick); }
 };
@@ -40,14 +46,19 @@ class UavUgvLineFlight {
     drone_memory_.reset();
   }
 
-  // Tick k: the layer, both laws, both steps.
+  // Tick k: the states received (each robot's delay), the layer, both
+  // laws, both steps.
   void tick(long k) {
+    pioneer_history_.push(pioneer.X), drone_history_.push(drone.X);
+    double Xp[aurora_sim::Pioneer3dx::kStates], Xd[aurora_sim::Ardrone2::kStates];
+    pioneer_history_.read(IdealLink{s_.delay[0]}.uplinkIndex(k), Xp);
+    drone_history_.read(IdealLink{s_.delay[1]}.uplinkIndex(k), Xd);
     uavUgvReference(double(k) * s_.tick, Qd, dQd);
-    const double X[6] = {pioneer.X[0], pioneer.X[1], pioneer.X[2], drone.X[0], drone.X[1], drone.X[2]};
+    const double X[6] = {Xp[0], Xp[1], Xp[2], Xd[0], Xd[1], Xd[2]};
     layer.update(X, Qd, dQd);
     double err[3];
-    DroneLaw::command(s_.drone, s_.drone_gains, drone_memory_, held(1), drone.X, U_drone, err);
-    PioneerDynamic::command(s_.pioneer, s_.pioneer_gains, pioneer_memory_, held(0), pioneer.X, U_pioneer, err);
+    DroneLaw::command(s_.drone, s_.drone_gains, drone_memory_, held(1), Xd, U_drone, err);
+    PioneerDynamic::command(s_.pioneer, s_.pioneer_gains, pioneer_memory_, held(0), Xp, U_pioneer, err);
     aurora_sim::Ardrone2::step(s_.drone, drone, U_drone);
     aurora_sim::Pioneer3dx::step(s_.pioneer, pioneer, U_pioneer);
   }
@@ -69,6 +80,9 @@ class UavUgvLineFlight {
   UavUgvLineSetup s_;
   PioneerDynamic::Memory<double> pioneer_memory_;
   DroneLaw::Memory<double> drone_memory_;
+  // What each law reads of its robot's states (a Pioneer's z is 0: not kept).
+  StateHistory<PioneerDynamic, double, kDelayHistory> pioneer_history_;
+  StateHistory<DroneLaw, double, kDelayHistory> drone_history_;
 };
 
 }  // namespace aurora_control
