@@ -36,7 +36,7 @@ void writeRow(FILE* f, long n, double t, bool kinematic, const TriangleFlight& r
   std::fprintf(f, "%ld,%.17g", n, t);
   for (int d = 0; d < 3; ++d) {
     for (int i = 0; i < (kinematic ? 3 : LawVehicle::kStates); ++i) {
-      std::fprintf(f, ",%.17g", kinematic ? run.X[3 * d + i] : run.drone[d].X[i]);
+      std::fprintf(f, ",%.17g", kinematic ? run.truth[3 * d + i] : run.drone[d].X[i]);
     }
     for (int i = 0; !kinematic && i < LawVehicle::kInputs; ++i) std::fprintf(f, ",%.17g", run.U[d][i]);
   }
@@ -52,7 +52,9 @@ struct TriangleErrors {
   long n = 0;
   void add(double t, const TriangleFlight& run) {
     for (int a = 0; a < 3; ++a) {
-      for (int b = a + 1; b < 3; ++b) closest = std::fmin(closest, triangle_detail::distance(run.X + 3 * a, run.X + 3 * b));
+      for (int b = a + 1; b < 3; ++b) {
+        closest = std::fmin(closest, triangle_detail::distance(run.truth + 3 * a, run.truth + 3 * b));
+      }
     }
     if (t < 20.0) return;
     const double* e = run.layer.Qtil();
@@ -66,8 +68,12 @@ struct TriangleErrors {
 }  // namespace
 
 void flyTriangle(const FormationFlightOptions& o) {
-  if (!o.delays.empty()) throw ConfigError("--delay is refused for a triangle: its robots run without delay (AuRoRA's)");
-  const TriangleSetup setup = readTriangleFile(o.formation, o.config_dir, o.law);
+  TriangleSetup setup = readTriangleFile(o.formation, o.config_dir, o.law);
+  // Delays in drone steps (kinematic robots: in layer periods), shorter than the run.
+  const double unit = setup.kinematic ? setup.period : setup.drone.Ts;
+  const long samples = setup.kinematic ? setup.periods() : setup.periods() * setup.layer_ticks / setup.drone_ticks;
+  const std::vector<long> delays = robotDelays(o.delays, 3, "the triangle", unit, samples, {0, 0, 0});
+  for (int r = 0; r < 3; ++r) setup.delay[r] = delays[r];
   TriangleFlight run(setup);
   TriangleErrors errors;
   const long periods = setup.periods();
@@ -78,8 +84,10 @@ void flyTriangle(const FormationFlightOptions& o) {
         errors.add(double(n) * setup.period, run);
       },
       [&](FILE* csv, long n) { writeRow(csv, n, double(n) * setup.period, setup.kinematic, run); });
-  std::printf("flight: triangle, law %s, %s, %ld periods of %.3f s in %.3f s\n", triangleLawName(setup.law),
-              setup.kinematic ? "kinematic robots" : "three AR.Drones", periods, setup.period, seconds);
+  std::printf("flight: triangle, law %s, %s, %ld periods of %.3f s, delays %ld, %ld, %ld %s, in %.3f s\n",
+              triangleLawName(setup.law), setup.kinematic ? "kinematic robots" : "three AR.Drones", periods,
+              setup.period, setup.delay[0], setup.delay[1], setup.delay[2], setup.kinematic ? "periods" : "steps",
+              seconds);
   std::printf("  RMS after 20 s: position %.4f m, p %.4f m, q %.4f m, beta %.4f, phi %.4f, theta %.4f, psi %.4f rad; "
               "closest pair %.3f m\n", errors.rms(0), errors.rms(1), errors.rms(2), errors.rms(3), errors.rms(4),
               errors.rms(5), errors.rms(6), errors.closest);

@@ -231,7 +231,7 @@ DroneRun flyThreeDrones(TriangleLaw law) {
     run.period(n);
     for (int a = 0; a < 3; ++a) {
       for (int b = a + 1; b < 3; ++b) {
-        r.closest = std::min(r.closest, aurora_control::triangle_detail::distance(run.X + 3 * a, run.X + 3 * b));
+        r.closest = std::min(r.closest, aurora_control::triangle_detail::distance(run.truth + 3 * a, run.truth + 3 * b));
       }
     }
     if (0.05 * double(n) < 20.0) continue;

@@ -326,7 +326,8 @@ class FormationAndLinkArgumentsTest(unittest.TestCase):
     def test_the_triangle_flies_as_auroras(self):
         """Issue 34: flight --formation triangle_kinematic | triangle_ardrones [--law NAME] flies AuRoRA's triangle:
         one row per layer period with each robot's position (r{i}_) or state and commands (d{i}_), Q and Qd by the
-        spec's names; the second period's variables and the printed errors are AuRoRA's; a wrong law is refused."""
+        spec's names; the second period's variables and the printed errors are AuRoRA's; each robot flies its own
+        feedback delay (--delay D1 D2 D3); a wrong law or delay count is refused."""
         with tempfile.TemporaryDirectory() as tmp:
             csv = os.path.join(tmp, "triangle.csv")
             rc, out = flight("--formation", "triangle_kinematic", "--csv", csv)
@@ -341,6 +342,18 @@ class FormationAndLinkArgumentsTest(unittest.TestCase):
             for name, value in (("Q_yF", 0.2851064227), ("Q_zF", 0.1382502832), ("Q_p", 1.946429472),
                                 ("Q_q", 1.442023204), ("Q_beta", 0.8257879404), ("Q_psi", -0.2884694979)):
                 self.assertAlmostEqual(float(rows[2][col[name]]), value, places=9, msg=name)
+            zero = os.path.join(tmp, "zero.csv")  # each robot's delay 0: AuRoRA's flight to the bit
+            rc, out = flight("--formation", "triangle_kinematic", "--delay", "0", "0", "0", "--csv", zero)
+            self.assertEqual(open(zero).read(), open(csv).read())
+        # Each robot its own feedback delay (kinematic: layer periods; drones: their steps).
+        rc, out = flight("--formation", "triangle_kinematic", "--delay", "3", "0", "0")
+        self.assertIn("delays 3, 0, 0 periods", out)
+        self.assertIn("RMS after 20 s: position 0.0013 m, p 0.0016 m, q 0.0023 m, beta 0.0011", out)
+        rc, out = flight("--formation", "triangle_ardrones", "--delay", "6", "6", "6")
+        self.assertIn("delays 6, 6, 6 steps", out)
+        self.assertIn("RMS after 20 s: position 0.0743 m, p 0.0595 m, q 0.0388 m, beta 0.0179", out)
+        self.refused(["--formation", "triangle_ardrones", "--delay", "1", "2"],
+                     "--delay: give one delay per robot (3 for the triangle), or none: got 2")
         rc, out = flight("--formation", "triangle_kinematic", "--law", "OSP")
         self.assertEqual(rc, 0, out)
         self.assertIn("RMS after 20 s: position 0.0006 m, p 0.0761 m, q 0.0721 m", out)
