@@ -96,6 +96,30 @@ FormationRun<double, Line> loadRun(const FormationFlightOptions& o, const LawVeh
 
 }  // namespace
 
+namespace {
+
+// The tool's form of a shaped flight: its CSV (o.csv) and its printed line.
+void flyShapedToCsv(const FormationFlightOptions& o,
+                    ShapedFlight (*fly)(const FormationFlightOptions&, FlightTable&)) {
+  FILE* csv = o.csv.empty() ? nullptr : std::fopen(o.csv.c_str(), "w");
+  if (!o.csv.empty() && !csv) throw std::runtime_error("cannot write '" + o.csv + "'");
+  FlightTable table = csvTable(csv);
+  ShapedFlight f;
+  try {
+    f = fly(o, table);
+  } catch (...) {
+    if (csv) std::fclose(csv), std::remove(o.csv.c_str());  // nothing half-written
+    throw;
+  }
+  if (csv) std::fclose(csv);
+  std::printf("%s", f.summary.c_str());
+}
+
+}  // namespace
+
+void flyUavUgvLine(const FormationFlightOptions& o) { flyShapedToCsv(o, &flyUavUgvLine); }
+void flyTriangle(const FormationFlightOptions& o) { flyShapedToCsv(o, &flyTriangle); }
+
 std::vector<long> robotDelays(const std::vector<long>& given, size_t robots, const std::string& shape, double Ts,
                               long ticks, const std::vector<long>& none, const std::string& robot) {
   if (given.empty()) return none;

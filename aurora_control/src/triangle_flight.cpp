@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "aurora_control/formation/formation_flight.h"
 #include "aurora_control/formation/triangle_yaml.h"
@@ -19,30 +20,29 @@ using Triangle = TriangleFormation<double>;
 
 // step (the layer's period n), t, each robot's position (kinematic: r{i}_x,
 // y, z) or state and command (d{i}_), Q_ and Qd_ by the spec's names.
-std::string triangleCsvHeader(bool kinematic) {
-  std::string h = "step,t";
+std::vector<std::string> triangleColumns(bool kinematic) {
+  std::vector<std::string> c{"step", "t"};
   for (int d = 1; d <= 3; ++d) {
     const std::string p = (kinematic ? "r" : "d") + std::to_string(d) + "_";
-    for (int i = 0; i < (kinematic ? 3 : LawVehicle::kStates); ++i) h += "," + p + LawVehicle::stateName(i);
-    for (int i = 0; !kinematic && i < LawVehicle::kInputs; ++i) h += "," + p + "u" + std::to_string(i + 1);
+    for (int i = 0; i < (kinematic ? 3 : LawVehicle::kStates); ++i) c.push_back(p + LawVehicle::stateName(i));
+    for (int i = 0; !kinematic && i < LawVehicle::kInputs; ++i) c.push_back(p + "u" + std::to_string(i + 1));
   }
   for (const char* q : {"Q_", "Qd_"}) {
-    for (int i = 0; i < 9; ++i) h += std::string(",") + q + Triangle::variableName(i);
+    for (int i = 0; i < 9; ++i) c.push_back(q + std::string(Triangle::variableName(i)));
   }
-  return h + "\n";
+  return c;
 }
 
-void writeRow(FILE* f, long n, double t, bool kinematic, const TriangleFlight& run) {
-  std::fprintf(f, "%ld,%.17g", n, t);
+std::vector<double> triangleRow(long n, double t, bool kinematic, const TriangleFlight& run) {
+  std::vector<double> v{double(n), t};
   for (int d = 0; d < 3; ++d) {
-    for (int i = 0; i < (kinematic ? 3 : LawVehicle::kStates); ++i) {
-      std::fprintf(f, ",%.17g", kinematic ? run.truth[3 * d + i] : run.drone[d].X[i]);
-    }
-    for (int i = 0; !kinematic && i < LawVehicle::kInputs; ++i) std::fprintf(f, ",%.17g", run.U[d][i]);
+    if (kinematic) v.insert(v.end(), run.truth + 3 * d, run.truth + 3 * d + 3);
+    else v.insert(v.end(), run.drone[d].X, run.drone[d].X + LawVehicle::kStates);
+    if (!kinematic) v.insert(v.end(), run.U[d], run.U[d] + LawVehicle::kInputs);
   }
-  for (int i = 0; i < 9; ++i) std::fprintf(f, ",%.17g", run.layer.Q()[i]);
-  for (int i = 0; i < 9; ++i) std::fprintf(f, ",%.17g", run.Qd[i]);
-  std::fprintf(f, "\n");
+  v.insert(v.end(), run.layer.Q(), run.layer.Q() + 9);
+  v.insert(v.end(), run.Qd, run.Qd + 9);
+  return v;
 }
 
 // Sums of squares after 20 s: the position (xF, yF, zF), p, q, beta, phi,
@@ -67,7 +67,7 @@ struct TriangleErrors {
 
 }  // namespace
 
-void flyTriangle(const FormationFlightOptions& o) {
+ShapedFlight flyTriangle(const FormationFlightOptions& o, FlightTable& table) {
   TriangleSetup setup = readTriangleFile(o.formation, o.config_dir, o.law);
   // Delays in drone steps (kinematic robots: in layer periods), shorter than the run.
   const double unit = setup.kinematic ? setup.period : setup.drone.Ts;
@@ -77,20 +77,31 @@ void flyTriangle(const FormationFlightOptions& o) {
   TriangleFlight run(setup);
   TriangleErrors errors;
   const long periods = setup.periods();
-  const double seconds = flyWithCsv(
-      o.csv, triangleCsvHeader(setup.kinematic), periods,
+  if (table.columns) table.columns(triangleColumns(setup.kinematic));
+  ShapedFlight f;
+  f.seconds = flyTable(
+      table, periods,
       [&](long n) {
         run.period(n);
         errors.add(double(n) * setup.period, run);
       },
-      [&](FILE* csv, long n) { writeRow(csv, n, double(n) * setup.period, setup.kinematic, run); });
-  std::printf("flight: triangle, law %s, %s, %ld periods of %.3f s, delays %ld, %ld, %ld %s, in %.3f s\n",
-              triangleLawName(setup.law), setup.kinematic ? "kinematic robots" : "three AR.Drones", periods,
-              setup.period, setup.delay[0], setup.delay[1], setup.delay[2], setup.kinematic ? "periods" : "steps",
-              seconds);
-  std::printf("  RMS after 20 s: position %.4f m, p %.4f m, q %.4f m, beta %.4f, phi %.4f, theta %.4f, psi %.4f rad; "
-              "closest pair %.3f m\n", errors.rms(0), errors.rms(1), errors.rms(2), errors.rms(3), errors.rms(4),
-              errors.rms(5), errors.rms(6), errors.closest);
+      [&](long n) { return triangleRow(n, double(n) * setup.period, setup.kinematic, run); });
+  char line[400];
+  std::snprintf(line, sizeof line,
+                "flight: triangle, law %s, %s, %ld periods of %.3f s, delays %ld, %ld, %ld %s, in %.3f s\n"
+                "  RMS after 20 s: position %.4f m, p %.4f m, q %.4f m, beta %.4f, phi %.4f, theta %.4f, psi %.4f rad; "
+                "closest pair %.3f m\n",
+                triangleLawName(setup.law), setup.kinematic ? "kinematic robots" : "three AR.Drones", periods,
+                setup.period, setup.delay[0], setup.delay[1], setup.delay[2], setup.kinematic ? "periods" : "steps",
+                f.seconds, errors.rms(0), errors.rms(1), errors.rms(2), errors.rms(3), errors.rms(4), errors.rms(5),
+                errors.rms(6), errors.closest);
+  f.summary = line;
+  const char* names[7] = {"rms_position", "rms_p", "rms_q", "rms_beta", "rms_phi", "rms_theta", "rms_psi"};
+  for (int i = 0; i < 7; ++i) f.errors.emplace_back(names[i], errors.rms(i));
+  f.errors.emplace_back("closest", errors.closest);
+  f.errors.emplace_back("periods", double(periods));
+  for (int r = 0; r < 3; ++r) f.errors.emplace_back("delay_" + std::to_string(r + 1), double(setup.delay[r]));
+  return f;
 }
 
 }  // namespace aurora_control

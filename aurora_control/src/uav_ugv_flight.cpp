@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "aurora_control/formation/formation_flight.h"
 #include "aurora_control/formation/uav_ugv_yaml.h"
@@ -16,27 +17,27 @@ namespace {
 
 // step, t, the Pioneer's state and commands (r1_), the drone's (d2_), Q_ and
 // Qd_ by the variables' names.
-std::string uavUgvCsvHeader() {
-  std::string h = "step,t";
-  for (int i = 0; i < aurora_sim::Pioneer3dx::kStates; ++i) h += std::string(",r1_") + aurora_sim::Pioneer3dx::stateName(i);
-  for (int i = 0; i < aurora_sim::Pioneer3dx::kInputs; ++i) h += ",r1_u" + std::to_string(i + 1);
-  for (int i = 0; i < LawVehicle::kStates; ++i) h += std::string(",d2_") + LawVehicle::stateName(i);
-  for (int i = 0; i < LawVehicle::kInputs; ++i) h += ",d2_u" + std::to_string(i + 1);
+std::vector<std::string> uavUgvColumns() {
+  std::vector<std::string> c{"step", "t"};
+  for (int i = 0; i < aurora_sim::Pioneer3dx::kStates; ++i) c.push_back(std::string("r1_") + aurora_sim::Pioneer3dx::stateName(i));
+  for (int i = 0; i < aurora_sim::Pioneer3dx::kInputs; ++i) c.push_back("r1_u" + std::to_string(i + 1));
+  for (int i = 0; i < LawVehicle::kStates; ++i) c.push_back(std::string("d2_") + LawVehicle::stateName(i));
+  for (int i = 0; i < LawVehicle::kInputs; ++i) c.push_back("d2_u" + std::to_string(i + 1));
   for (const char* q : {"Q_", "Qd_"}) {
-    for (int i = 0; i < 6; ++i) h += std::string(",") + q + UavUgvLine<double>::variableName(i);
+    for (int i = 0; i < 6; ++i) c.push_back(q + std::string(UavUgvLine<double>::variableName(i)));
   }
-  return h + "\n";
+  return c;
 }
 
-void writeRow(FILE* f, long k, double t, const double* pioneer, const double* drone, const UavUgvLineFlight& run) {
-  std::fprintf(f, "%ld,%.17g", k, t);
-  for (int i = 0; i < aurora_sim::Pioneer3dx::kStates; ++i) std::fprintf(f, ",%.17g", pioneer[i]);
-  for (int i = 0; i < 2; ++i) std::fprintf(f, ",%.17g", run.U_pioneer[i]);
-  for (int i = 0; i < LawVehicle::kStates; ++i) std::fprintf(f, ",%.17g", drone[i]);
-  for (int i = 0; i < 4; ++i) std::fprintf(f, ",%.17g", run.U_drone[i]);
-  for (int i = 0; i < 6; ++i) std::fprintf(f, ",%.17g", run.layer.Q()[i]);
-  for (int i = 0; i < 6; ++i) std::fprintf(f, ",%.17g", run.Qd[i]);
-  std::fprintf(f, "\n");
+std::vector<double> uavUgvRow(long k, double t, const double* pioneer, const double* drone, const UavUgvLineFlight& run) {
+  std::vector<double> v{double(k), t};
+  v.insert(v.end(), pioneer, pioneer + aurora_sim::Pioneer3dx::kStates);
+  v.insert(v.end(), run.U_pioneer, run.U_pioneer + 2);
+  v.insert(v.end(), drone, drone + LawVehicle::kStates);
+  v.insert(v.end(), run.U_drone, run.U_drone + 4);
+  v.insert(v.end(), run.layer.Q(), run.layer.Q() + 6);
+  v.insert(v.end(), run.Qd, run.Qd + 6);
+  return v;
 }
 
 // Sums of squares after 20 s: the formation position (xf, yf), rho, alpha,
@@ -59,7 +60,7 @@ struct LineErrors {
 
 }  // namespace
 
-void flyUavUgvLine(const FormationFlightOptions& o) {
+ShapedFlight flyUavUgvLine(const FormationFlightOptions& o, FlightTable& table) {
   UavUgvLineSetup setup = readUavUgvLineFile(o.formation, o.config_dir);
   const std::vector<long> delays = robotDelays(o.delays, 2, "the UAV-UGV line", setup.tick, setup.ticks(), {0, 0});
   for (int r = 0; r < 2; ++r) setup.delay[r] = delays[r];
@@ -68,20 +69,29 @@ void flyUavUgvLine(const FormationFlightOptions& o) {
   aurora_sim::Pioneer3dx::State<double> pioneer;  // the states a tick starts from
   aurora_sim::Ardrone2::State<double> drone;
   const long ticks = setup.ticks();
-  const double seconds = flyWithCsv(
-      o.csv, uavUgvCsvHeader(), ticks,
+  if (table.columns) table.columns(uavUgvColumns());
+  ShapedFlight f;
+  f.seconds = flyTable(
+      table, ticks,
       [&](long k) {
         pioneer = run.pioneer, drone = run.drone;
         run.tick(k);
         errors.add(double(k) * setup.tick, run, pioneer.X, drone.X);
       },
-      [&](FILE* csv, long k) { writeRow(csv, k, double(k) * setup.tick, pioneer.X, drone.X, run); });
-  std::printf("flight: UAV-UGV line (%s Pioneer + AR.Drone), %ld ticks of %.4f s, delays %ld and %ld ticks, in %.3f s\n",
-              setup.pioneer.kinematic != 0.0 ? "kinematic" : "dynamic", ticks, setup.tick, setup.delay[0],
-              setup.delay[1], seconds);
-  std::printf("  RMS after 20 s: xf, yf %.4f m, rho %.4f m, alpha %.4f rad, beta %.4f rad, drone position %.4f m; "
-              "closest approach %.3f m\n", errors.rms(0), errors.rms(1), errors.rms(2), errors.rms(3), errors.rms(4),
-              errors.closest);
+      [&](long k) { return uavUgvRow(k, double(k) * setup.tick, pioneer.X, drone.X, run); });
+  char line[400];
+  std::snprintf(line, sizeof line,
+                "flight: UAV-UGV line (%s Pioneer + AR.Drone), %ld ticks of %.4f s, delays %ld and %ld ticks, in %.3f s\n"
+                "  RMS after 20 s: xf, yf %.4f m, rho %.4f m, alpha %.4f rad, beta %.4f rad, drone position %.4f m; "
+                "closest approach %.3f m\n",
+                setup.pioneer.kinematic != 0.0 ? "kinematic" : "dynamic", ticks, setup.tick, setup.delay[0],
+                setup.delay[1], f.seconds, errors.rms(0), errors.rms(1), errors.rms(2), errors.rms(3), errors.rms(4),
+                errors.closest);
+  f.summary = line;
+  f.errors = {{"rms_xf_yf", errors.rms(0)}, {"rms_rho", errors.rms(1)}, {"rms_alpha", errors.rms(2)},
+              {"rms_beta", errors.rms(3)}, {"rms_drone_position", errors.rms(4)}, {"closest", errors.closest},
+              {"ticks", double(ticks)}, {"delay_1", double(setup.delay[0])}, {"delay_2", double(setup.delay[1])}};
+  return f;
 }
 
 }  // namespace aurora_control

@@ -12,6 +12,7 @@
 
 #include "aurora_control/loop/flight_setup.h"
 #include "aurora_control/formation/formation_flight.h"
+#include "aurora_control/formation/uav_ugv_yaml.h"
 #include "aurora_control/params/shipped_files.h"
 
 namespace py = pybind11;
@@ -143,6 +144,38 @@ py::dict simulateFormationFiles(const std::string& formation, const std::string&
   return out;
 }
 
+// A UAV-UGV line or triangle file flown as flight --formation flies it (the
+// options' delays and the triangle's law; "" keeps the file's): its CSV's
+// columns and rows as one array, its printed summary and errors by name.
+py::dict simulateShapedFormationFiles(const std::string& formation, const std::vector<long>& delays,
+                                      const std::string& law, const std::string& config_dir) {
+  FormationFlightOptions o;
+  o.formation = formation, o.delays = delays, o.law = law, o.config_dir = config_dir;
+  const std::string shape = formationShapeOf(formation);
+  std::vector<std::string> columns;
+  std::vector<double> values;
+  FlightTable table;
+  table.columns = [&](const std::vector<std::string>& c) { columns = c; };
+  table.row = [&](const std::vector<double>& v) { values.insert(values.end(), v.begin(), v.end()); };
+  ShapedFlight f;
+  {
+    py::gil_scoped_release unlocked;
+    f = shape == "triangle" ? flyTriangle(o, table) : flyUavUgvLine(o, table);
+  }
+  const py::ssize_t m = static_cast<py::ssize_t>(columns.size()), n = m > 0 ? py::ssize_t(values.size()) / m : 0;
+  py::array_t<double> rows({n, m});
+  std::copy(values.begin(), values.end(), rows.mutable_data());
+  py::dict errors;
+  for (const auto& e : f.errors) errors[py::str(e.first)] = e.second;
+  py::dict out;
+  out["shape"] = shape, out["columns"] = columns, out["rows"] = rows, out["errors"] = errors;
+  out["summary"] = f.summary;
+  return out;
+}
+
+// The shape of a formation file ("line", "uav_ugv_line", "triangle").
+std::string shapeOf(const std::string& formation) { return formationShapeOf(formation); }
+
 }  // namespace
 
 PYBIND11_MODULE(_core, m) {
@@ -165,4 +198,8 @@ PYBIND11_MODULE(_core, m) {
   m.def("simulate_formation_files", &simulateFormationFiles, py::arg("formation"), py::arg("vehicle"),
         py::arg("delays"), py::arg("config_dir"),
         "One formation flight from YAML files, as flight --formation flies it: a dict of numpy arrays and metrics.");
+  m.def("simulate_shaped_formation_files", &simulateShapedFormationFiles, py::arg("formation"), py::arg("delays"),
+        py::arg("law"), py::arg("config_dir"),
+        "A UAV-UGV line or triangle file flown as flight --formation flies it: its CSV's columns and rows.");
+  m.def("formation_shape", &shapeOf, py::arg("formation"), "The shape of a formation file.");
 }

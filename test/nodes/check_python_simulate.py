@@ -195,6 +195,40 @@ class SimulateFormationTest(unittest.TestCase):
         expect_refusals(self, cases)
 
 
+class ShapedFormationTest(unittest.TestCase):
+    """Issue 34: AuRoRA's UAV-UGV line and triangle from Python: flight --formation's CSV as an array, to the
+    bit, with each robot's delay and the triangle's law; bad input refused naming it."""
+
+    def test_the_uav_ugv_line_and_the_triangle_equal_flight_formation(self):
+        for name, args, kwargs in (("line_pioneer_ardrone", ["--delay", "0", "10"], {"delays": (0, 10)}),
+                                   ("triangle_ardrones", ["--law", "PSO", "--delay", "6", "0", "3"],
+                                    {"law": "PSO", "delays": np.array([6, 0, 3])})):
+            g = aurora.simulate_formation(name, **kwargs)
+            rows = flight_csv("--formation", name, *args)
+            self.assertEqual(g.columns, list(rows[0].keys()))
+            self.assertEqual(g.table.shape, (len(rows), len(g.columns)))
+            for c in g.columns:
+                self.assertTrue(np.array_equal(g.column(c), column(rows, c)), (name, c))
+        self.assertEqual(g.shape, "triangle")
+        self.assertEqual((g.errors["delay_1"], g.errors["delay_2"], g.errors["delay_3"]), (6, 0, 3))
+        h = aurora.simulate_formation("line_pioneer_ardrone")
+        self.assertAlmostEqual(h.errors["rms_rho"], 0.0039, places=4)  # AuRoRA's, as flight prints it
+        self.assertEqual(h.column("r1_omega").shape, (3900,))
+
+    def test_bad_input_is_refused_naming_it(self):
+        expect_refusals(self, [
+            (lambda: aurora.simulate_formation("triangle_kinematic", delays=(1, 2)), "one delay per robot (3)"),
+            (lambda: aurora.simulate_formation("line_pioneer_ardrone", delays=(1, 5000)), "(robot 2)"),
+            (lambda: aurora.simulate_formation("triangle_kinematic", law="NSB"), "'NSB' is not a triangle law"),
+            (lambda: aurora.simulate_formation("triangle_kinematic", law=3), "law: expected a triangle law"),
+            (lambda: aurora.simulate_formation("line_lemniscate", law="N"), "law= is refused for the line"),
+            (lambda: aurora.simulate_formation("line_pioneer_ardrone", vehicle="ardrone2"), "vehicle= is refused"),
+        ])
+        with self.assertRaises(KeyError) as e:
+            aurora.simulate_formation("triangle_kinematic").column("r1_u")
+        self.assertIn("'r1_u' is not a column", str(e.exception))
+
+
 class FormationFiguresTest(unittest.TestCase):
     def test_the_figures_show_what_docs_say(self):
         from aurora import formation_figures
@@ -213,7 +247,7 @@ class FormationFiguresTest(unittest.TestCase):
         self.assertGreater(p.metrics["rms_rho"], 10 * ik.metrics["rms_rho"])
 
 
-class PythonSimulateTests(SimulateTest, SimulateFormationTest, FormationFiguresTest):
+class PythonSimulateTests(SimulateTest, SimulateFormationTest, ShapedFormationTest, FormationFiguresTest):
     """Both, for rostest (which runs one TestCase class)."""
 
 

@@ -13,12 +13,12 @@ Modules:
 
 See docs/architecture.md, "Packages and data flow".
 """
-from aurora.simulation import Flight, FormationFlight, simulate, simulate_formation  # noqa: F401
+from aurora.simulation import Flight, FormationFlight, ShapedFormationFlight, simulate, simulate_formation  # noqa: F401
 from aurora.sweep_runner import SweepInterrupted, read_results, read_summary, sweep, sweep_program  # noqa: F401,E402
 from aurora.bags import BagFlight, read_bag, read_formation_bag  # noqa: F401,E402
 from aurora import widgets_compat  # noqa: E402
 
 widgets_compat.apply()  # sliders execute under plain `jupyter nbconvert --execute` (aurora/widgets_compat.py)
 
-__all__ = ["Flight", "FormationFlight", "simulate", "simulate_formation", "SweepInterrupted", "read_results",
+__all__ = ["Flight", "FormationFlight", "ShapedFormationFlight", "simulate", "simulate_formation", "SweepInterrupted", "read_results",
            "read_summary", "sweep", "sweep_program", "BagFlight", "read_bag", "read_formation_bag"]

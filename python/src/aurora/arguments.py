@@ -66,15 +66,15 @@ def boolean(value, name):
     raise ValueError("%s: expected True or False, got %r" % (name, value))
 
 
-def per_drone(values, name, drones=2):
-    """One whole number of samples per drone, in the drones' order: a list,
-    a tuple or a 1-D numpy array (a dict or a set has no order of drones)."""
+def per_drone(values, name, drones=2, robot="drone"):
+    """One whole number of samples per drone (or `robot`), in their order: a
+    list, a tuple or a 1-D numpy array (a dict or a set has no order)."""
     np = _numpy()
     if np is not None and isinstance(values, np.ndarray):
         values = values.tolist()
     if not isinstance(values, (list, tuple)):
-        raise ValueError("%s: expected a list of one delay per drone in the formation's order, e.g. %s=(3, 9), "
-                         "got %r" % (name, name, values))
+        raise ValueError("%s: expected a list of one delay per %s in the formation's order, e.g. %s=(3, 9), "
+                         "got %r" % (name, robot, name, values))
     if len(values) != drones:
-        raise ValueError("%s: expected one delay per drone (%d), got %d: %r" % (name, drones, len(values), values))
-    return [whole(v, "%s[%d] (drone %d)" % (name, i, i + 1)) for i, v in enumerate(values)]
+        raise ValueError("%s: expected one delay per %s (%d), got %d: %r" % (name, robot, drones, len(values), values))
+    return [whole(v, "%s[%d] (%s %d)" % (name, i, robot, i + 1)) for i, v in enumerate(values)]

@@ -127,13 +127,51 @@ class FormationFlight:
             "feasible" if m["feasible"] else "not feasible")
 
 
-def simulate_formation(formation, vehicle=None, delays=None):
+class ShapedFormationFlight:
+    """A flight of AuRoRA's UAV-UGV line or triangle (docs/formation.md):
+    `table` (n x m: flight --formation's CSV rows, its values to the bit),
+    `columns` (its header: step, t, each robot's r{i}_ / d{i}_ states and
+    commands, Q_ and Qd_ by the spec's variables), `errors` (dict: the RMS
+    after 20 s, the closest approach, the delays), `shape`, `summary` (the
+    lines flight prints). `column(name)` gives one column."""
+
+    def __init__(self, d):
+        for k in ("shape", "columns", "errors", "summary"):
+            setattr(self, k, d[k])
+        self.table = d["rows"]
+
+    def column(self, name):
+        if name not in self.columns:
+            raise KeyError("%r is not a column: %s" % (name, ", ".join(self.columns)))
+        return self.table[:, self.columns.index(name)]
+
+    def __repr__(self):
+        return "ShapedFormationFlight(%s, %d rows, %s)" % (self.shape, len(self.table), self.summary.splitlines()[0])
+
+
+def simulate_formation(formation, vehicle=None, delays=None, law=None):
     """One formation flight of `formation` (a shipped name, a path or a dict
-    of config/formations/NAME.yaml's schema), each drone over its own delay
-    (`delays`: one per drone in samples, in the file's order; None keeps
-    the file's)."""
-    delays = [] if delays is None else per_drone(delays, "delays")
+    of config/formations/NAME.yaml's schema), each robot over its own delay
+    (`delays`: one per robot in samples, in the file's order; None keeps
+    the file's). The two-drone line gives a FormationFlight; AuRoRA's
+    UAV-UGV line and triangle (their files' `shape`) a ShapedFormationFlight
+    with flight --formation's CSV as an array; `law` is a triangle's
+    (N, PSO, SPO, OSP, S-PO; None: the file's)."""
     with tempfile.TemporaryDirectory() as tmp:
         formation_file = _as_file(formation, "formation", tmp)
+        shape = _core.formation_shape(formation_file)
+        if shape != "line":
+            if vehicle is not None:
+                raise ValueError("vehicle= is refused for a formation of shape %r: its robots' vehicle files are "
+                                 "in the formation file" % shape)
+            robots = 3 if shape == "triangle" else 2
+            given = [] if delays is None else per_drone(delays, "delays", robots, "robot")
+            if law is not None and not isinstance(law, str):
+                raise ValueError("law: expected a triangle law's name (N, PSO, SPO, OSP, S-PO), got %r" % (law,))
+            return ShapedFormationFlight(_core.simulate_shaped_formation_files(
+                formation_file, given, "" if law is None else law, config_dir()))
+        if law is not None:
+            raise ValueError("law= is refused for the line: its law is its file's formation.law")
+        delays = [] if delays is None else per_drone(delays, "delays")
         vehicle_file = _as_file("ardrone2" if vehicle is None else vehicle, "vehicle", tmp)
         return FormationFlight(_core.simulate_formation_files(formation_file, vehicle_file, delays, config_dir()))

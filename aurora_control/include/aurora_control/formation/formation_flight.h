@@ -8,6 +8,7 @@
 #include <functional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "aurora_control/formation/formation_judge.h"
@@ -51,26 +52,60 @@ FormationFlight flyFormationFiles(const FormationFlightOptions& o, const Formati
 // The tool: the flight, its CSV (o.csv) and its printed errors and checks.
 void flyFormation(const FormationFlightOptions& o);
 
-// Flies steps k = 0 .. steps - 1 (fly(k)) and writes each one's row to the
-// CSV at `path` (row(file, k); none when path is empty) under `header`;
-// returns the wall time of the flight [s]. AuRoRA's formations' tools.
+// AuRoRA's formations' flights (the UAV-UGV line, the triangle) as a table:
+// its columns (the CSV's header: `step, t`, each robot's, Q_, Qd_), then one
+// row of values per step, the step first. The flight tool writes it as CSV
+// (csvTable), Python keeps it as an array: the same numbers. Either part
+// may be empty (not wanted).
+struct FlightTable {
+  std::function<void(const std::vector<std::string>&)> columns;
+  std::function<void(const std::vector<double>&)> row;
+};
+
+// The table as the CSV file `f` (none when null): the step as an integer,
+// every other value at 17 significant digits.
+inline FlightTable csvTable(FILE* f) {
+  FlightTable t;
+  if (!f) return t;
+  t.columns = [f](const std::vector<std::string>& c) {
+    for (size_t i = 0; i < c.size(); ++i) std::fprintf(f, "%s%s", i ? "," : "", c[i].c_str());
+    std::fprintf(f, "\n");
+  };
+  t.row = [f](const std::vector<double>& v) {
+    std::fprintf(f, "%ld", long(v[0]));
+    for (size_t i = 1; i < v.size(); ++i) std::fprintf(f, ",%.17g", v[i]);
+    std::fprintf(f, "\n");
+  };
+  return t;
+}
+
+// What a flight of AuRoRA's formations reports besides its rows: the line
+// the tool prints and its errors by name (RMS after 20 s, closest approach).
+struct ShapedFlight {
+  std::string summary;
+  std::vector<std::pair<std::string, double>> errors;
+  double seconds = 0.0;  // wall time of the run
+};
+
+// Flies a UAV-UGV line file (shape: uav_ugv_line; uav_ugv_yaml.h) or a
+// triangle file (shape: triangle; triangle_yaml.h) with the options' delays
+// (and the triangle's law), filling `table` (its columns first, then a row
+// per step). The tool's forms write o.csv and print the summary.
+ShapedFlight flyUavUgvLine(const FormationFlightOptions& o, FlightTable& table);
+ShapedFlight flyTriangle(const FormationFlightOptions& o, FlightTable& table);
+void flyUavUgvLine(const FormationFlightOptions& o);
+void flyTriangle(const FormationFlightOptions& o);
+
+// Flies steps k = 0 .. steps - 1 (fly(k)), adding row(k) to the table when
+// it wants rows; returns the wall time [s].
 template <class Fly, class Row>
-double flyWithCsv(const std::string& path, const std::string& header, long steps, Fly&& fly, Row&& row) {
-  FILE* csv = path.empty() ? nullptr : std::fopen(path.c_str(), "w");
-  if (!path.empty() && !csv) throw std::runtime_error("cannot write '" + path + "'");
-  if (csv) std::fprintf(csv, "%s", header.c_str());
+double flyTable(FlightTable& table, long steps, Fly&& fly, Row&& row) {
   const auto t0 = std::chrono::steady_clock::now();
   for (long k = 0; k < steps; ++k) {
     fly(k);
-    if (csv) row(csv, k);
+    if (table.row) table.row(row(k));
   }
-  if (csv) std::fclose(csv);
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
-
-// The same for a UAV-UGV line file (shape: uav_ugv_line; uav_ugv_yaml.h)
-// and for a triangle file (shape: triangle; triangle_yaml.h).
-void flyUavUgvLine(const FormationFlightOptions& o);
-void flyTriangle(const FormationFlightOptions& o);
 
 }  // namespace aurora_control
