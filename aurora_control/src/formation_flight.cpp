@@ -120,6 +120,17 @@ void flyShapedToCsv(const FormationFlightOptions& o,
 void flyUavUgvLine(const FormationFlightOptions& o) { flyShapedToCsv(o, &flyUavUgvLine); }
 void flyTriangle(const FormationFlightOptions& o) { flyShapedToCsv(o, &flyTriangle); }
 
+void refuseRobotLink(const LinkParams& link, long delay, int r, long ticks, double Ts) {
+  const std::string robot = "robot " + std::to_string(r + 1) + "'s link";
+  const std::string late = latestPacketRefusal(link, delay, ticks, Ts);
+  if (!late.empty()) throw ConfigError(robot + ": " + late);
+  if (link.historyNeeded(delay) > kMaxDelaySamples) {
+    throw ConfigError(robot + " with its delay of " + std::to_string(delay) + " needs " +
+                      std::to_string(link.historyNeeded(delay)) + " samples of history: accepted up to " +
+                      std::to_string(kMaxDelaySamples));
+  }
+}
+
 std::vector<long> robotDelays(const std::vector<long>& given, size_t robots, const std::string& shape, double Ts,
                               long ticks, const std::vector<long>& none, const std::string& robot) {
   if (given.empty()) return none;

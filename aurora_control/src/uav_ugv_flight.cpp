@@ -62,8 +62,13 @@ struct LineErrors {
 
 ShapedFlight flyUavUgvLine(const FormationFlightOptions& o, FlightTable& table) {
   UavUgvLineSetup setup = readUavUgvLineFile(o.formation, o.config_dir);
-  const std::vector<long> delays = robotDelays(o.delays, 2, "the UAV-UGV line", setup.tick, setup.ticks(), {0, 0});
-  for (int r = 0; r < 2; ++r) setup.delay[r] = delays[r];
+  // --delay replaces the file's delays (its links' uplink delays, else 0).
+  const std::vector<long> delays =
+      robotDelays(o.delays, 2, "the UAV-UGV line", setup.tick, setup.ticks(), {setup.delay[0], setup.delay[1]});
+  for (int r = 0; r < 2; ++r) {
+    setup.delay[r] = delays[r];
+    refuseRobotLink(setup.link[r], setup.delay[r], r, setup.ticks(), setup.tick);
+  }
   UavUgvLineFlight run(setup);
   LineErrors errors;
   aurora_sim::Pioneer3dx::State<double> pioneer;  // the states a tick starts from

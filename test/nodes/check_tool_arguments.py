@@ -22,9 +22,9 @@ def flight(*args):
     return p.returncode, p.stdout.decode(errors="replace")
 
 
-def formation_file(folder, edit):
-    """config/formations/line_lemniscate.yaml with `edit` (old, new) applied."""
-    text = open(os.path.join(config_dir(), "formations", "line_lemniscate.yaml")).read()
+def formation_file(folder, edit, name="line_lemniscate"):
+    """config/formations/NAME.yaml with `edit` (old, new) applied."""
+    text = open(os.path.join(config_dir(), "formations", name + ".yaml")).read()
     assert edit[0] in text, edit
     path = os.path.join(folder, "formation.yaml")
     with open(path, "w") as f:
@@ -322,6 +322,29 @@ class FormationAndLinkArgumentsTest(unittest.TestCase):
                      "--delay: give one delay per robot (2 for the UAV-UGV line), or none: got 1")
         self.refused(["--formation", "line_pioneer_ardrone", "--delay", "3", "3900"],
                      "--delay 3900 (robot 2) is refused: accepted integer samples in [0, 2047]")
+        # Each robot its own link (a link file in its entry): the congested link on the drone changes the
+        # flight, the same draws every run; --delay replaces the link's uplink delay.
+        with tempfile.TemporaryDirectory() as tmp:
+            linked = formation_file(tmp, ("      start: [0.0, 0.0, 0.75]", "      start: [0.0, 0.0, 0.75]\n"
+                                          "      link: links/wifi_congested.yaml"), "line_pioneer_ardrone")
+            runs = []
+            for args in ([], [], ["--delay", "0", "0"]):
+                csv = os.path.join(tmp, "run%d.csv" % len(runs))
+                rc, out = flight("--formation", linked, "--csv", csv, *args)
+                self.assertEqual(rc, 0, out)
+                runs.append((out, open(csv).read()))
+            self.assertIn("delays 0 and 2 ticks", runs[0][0])  # wifi_congested's uplink delay
+            self.assertEqual(runs[0][1], runs[1][1])
+            ideal = os.path.join(tmp, "ideal.csv")
+            flight("--formation", "line_pioneer_ardrone", "--delay", "0", "2", "--csv", ideal)
+            self.assertNotEqual(runs[0][1], open(ideal).read())  # losses and jitter, not only the delay
+            self.assertIn("delays 0 and 0 ticks", runs[2][0])
+            self.assertNotEqual(runs[2][1], open(ideal).read())
+            bad = formation_file(tmp, ("      start: [0.0, 0.0, 0.75]", "      start: [0.0, 0.0, 0.75]\n"
+                                       "      link: links/wifi_nowhere.yaml"), "line_pioneer_ardrone")
+            rc, out = flight("--formation", bad)
+            self.assertNotEqual(rc, 0, out)
+            self.assertIn("wifi_nowhere.yaml", out)
 
     def test_the_triangle_flies_as_auroras(self):
         """Issue 34: flight --formation triangle_kinematic | triangle_ardrones [--law NAME] flies AuRoRA's triangle:

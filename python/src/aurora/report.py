@@ -508,7 +508,7 @@ def figures(ns, series, cmd, out_dir, pdf):
         ax.grid(True, alpha=0.3)
     finish(fig, axes, "attitude", "attitude")
 
-    extra = series["extra_names"]
+    extra = series.get("extra_names", [])  # a series built without them (a caller's own): none
     fig, axes = plt.subplots(3 if extra else 2, 1, figsize=(8, 8 if extra else 6), sharex=True)
     if extra:  # the vehicle's own states (a Pioneer's u [m/s], omega [rad/s])
         values = series["extra"][0]
@@ -527,7 +527,7 @@ def figures(ns, series, cmd, out_dir, pdf):
         ax.legend(loc="best")
     finish(fig, axes, "linear and angular velocities", "velocities")
 
-    names = cmd["names"]
+    names = cmd.get("names", ARDRONE_COMMANDS)  # a caller's own cmd: the AR.Drone's four
     fig, axes = plt.subplots(len(names), 1, figsize=(8, 2 * len(names)), sharex=True, squeeze=False)
     axes = axes[:, 0]
     for ax, i, name in zip(axes, range(len(names)), names):

@@ -29,6 +29,10 @@ struct FormationFlightOptions {
 std::vector<long> robotDelays(const std::vector<long>& given, size_t robots, const std::string& shape, double Ts,
                               long ticks, const std::vector<long>& none, const std::string& robot = "robot");
 
+// Robot r's (0-based) link with its delay: its latest packet inside the
+// run's `ticks`, its history within the delay history; refused naming it.
+void refuseRobotLink(const LinkParams& link, long delay, int r, long ticks, double Ts);
+
 // Each tick, with the drones' sample time Ts [s].
 using FormationObserver = std::function<void(const FormationObservation<double, LineFormation<double>>&, double Ts)>;
 

@@ -9,6 +9,7 @@
 #pragma once
 
 #include <cmath>
+#include <memory>
 
 #include "aurora_control/formation/uav_ugv_line.h"
 #include "aurora_control/link/loop_link.h"
@@ -18,6 +19,25 @@
 #include "aurora_control/law/pioneer_laws.h"
 
 namespace aurora_control {
+
+// One robot's link in a formation's own loop: the delay rule over an ideal
+// link (AuRoRA's, bit for bit), or its link model (docs/links.md) with the
+// draws keyed by the robot's index, as the two-drone line's robots.
+template <int Inputs>
+class RobotLink {
+ public:
+  RobotLink(const LinkParams& link, long delay, uint64_t robot, double Ts) : ideal_{delay} {
+    if (!link.ideal()) model_.reset(new ModelLink<kDelayHistory, double, Inputs>(link, delay, robot, Ts));
+  }
+  long uplinkIndex(long k) { return model_ ? model_->uplinkIndex(k) : ideal_.uplinkIndex(k); }
+  void downlink(long k, const double sent[Inputs], double received[Inputs]) {
+    if (model_) model_->downlink(k, sent, received);
+  }
+
+ private:
+  IdealLink ideal_;
+  std::unique_ptr<ModelLink<kDelayHistory, double, Inputs>> model_;  // on the heap: Capacity-sized rings
+};
 
 struct UavUgvLineSetup {
   aurora_sim::Pioneer3dx::Params<double> pioneer{};  // its sample time is the tick's
@@ -29,6 +49,7 @@ struct UavUgvLineSetup {
   double k1[6], k2[6];                   // the layer's gains (UavUgvLine::defaultGains: AuRoRA's)
   double tick = 1.0 / 30.0;              // [s]
   long delay[2] = {0, 0};                // [ticks] each robot's feedback delay (Pioneer, drone)
+  LinkParams link[2];                    // each robot's link (docs/links.md; ideal unless its file gives one)
   double duration = 130.0;               // [s]: ticks k = 0 .. round(duration / tick) - 1
   long ticks() const { return std::lround(duration / tick); }
 };
@@ -37,7 +58,8 @@ class UavUgvLineFlight {
  public:
   using DroneLaw = ArdroneLaw<LawType::kUnderactuated>;
 
-  explicit UavUgvLineFlight(const UavUgvLineSetup& s) : layer(s.k1, s.k2), s_(s) {
+  explicit UavUgvLineFlight(const UavUgvLineSetup& s)
+      : layer(s.k1, s.k2), s_(s), pioneer_link_(s.link[0], s.delay[0], 0, s.tick), drone_link_(s.link[1], s.delay[1], 1, s.tick) {
     pioneer.reset();
     for (int i = 0; i < 3; ++i) pioneer.X[aurora_sim::kX + i] = s.pioneer_start[i];
     pioneer_memory_.reset();
@@ -46,19 +68,21 @@ class UavUgvLineFlight {
     drone_memory_.reset();
   }
 
-  // Tick k: the states received (each robot's delay), the layer, both
-  // laws, both steps.
+  // Tick k: the states received (each robot's link), the layer, both
+  // laws, the commands over the links, both steps.
   void tick(long k) {
     pioneer_history_.push(pioneer.X), drone_history_.push(drone.X);
     double Xp[aurora_sim::Pioneer3dx::kStates], Xd[aurora_sim::Ardrone2::kStates];
-    pioneer_history_.read(IdealLink{s_.delay[0]}.uplinkIndex(k), Xp);
-    drone_history_.read(IdealLink{s_.delay[1]}.uplinkIndex(k), Xd);
+    pioneer_history_.read(pioneer_link_.uplinkIndex(k), Xp);
+    drone_history_.read(drone_link_.uplinkIndex(k), Xd);
     uavUgvReference(double(k) * s_.tick, Qd, dQd);
     const double X[6] = {Xp[0], Xp[1], Xp[2], Xd[0], Xd[1], Xd[2]};
     layer.update(X, Qd, dQd);
     double err[3];
     DroneLaw::command(s_.drone, s_.drone_gains, drone_memory_, held(1), Xd, U_drone, err);
     PioneerDynamic::command(s_.pioneer, s_.pioneer_gains, pioneer_memory_, held(0), Xp, U_pioneer, err);
+    drone_link_.downlink(k, U_drone, U_drone);  // what each robot applies (as sent over an ideal link)
+    pioneer_link_.downlink(k, U_pioneer, U_pioneer);
     aurora_sim::Ardrone2::step(s_.drone, drone, U_drone);
     aurora_sim::Pioneer3dx::step(s_.pioneer, pioneer, U_pioneer);
   }
@@ -66,7 +90,7 @@ class UavUgvLineFlight {
   UavUgvLineLayer<double> layer;
   aurora_sim::Pioneer3dx::State<double> pioneer;
   aurora_sim::Ardrone2::State<double> drone;
-  double U_pioneer[2] = {0, 0}, U_drone[4] = {0, 0, 0, 0};  // the last tick's commands
+  double U_pioneer[2] = {0, 0}, U_drone[4] = {0, 0, 0, 0};  // the last tick's commands, as applied
   double Qd[6] = {}, dQd[6] = {};                            // the last tick's desired formation
 
  private:
@@ -83,6 +107,8 @@ class UavUgvLineFlight {
   // What each law reads of its robot's states (a Pioneer's z is 0: not kept).
   StateHistory<PioneerDynamic, double, kDelayHistory> pioneer_history_;
   StateHistory<DroneLaw, double, kDelayHistory> drone_history_;
+  RobotLink<aurora_sim::Pioneer3dx::kInputs> pioneer_link_;
+  RobotLink<aurora_sim::Ardrone2::kInputs> drone_link_;
 };
 
 }  // namespace aurora_control

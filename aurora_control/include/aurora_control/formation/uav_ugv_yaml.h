@@ -49,20 +49,30 @@ inline YAML::Node controllerOf(const YamlReader& r, const YAML::Node& n, const s
   return c;
 }
 
+// Robot `index`'s optional `link` (a link file, docs/links.md): its uplink
+// delay is the robot's delay unless --delay gives one.
+inline void readRobotLink(const YamlReader& r, const YAML::Node& n, const std::string& key,
+                          const std::string& config_dir, int index, UavUgvLineSetup& s) {
+  if (!n["link"]) return;
+  s.link[index] = readLinkFile(formation_detail::inConfig(r.text(n["link"], r.key(key, "link")), config_dir));
+  s.delay[index] = delayInForce(kDelayNotGiven, s.link[index]);
+}
+
 inline void readPioneer(const YamlReader& r, const YAML::Node& n, const std::string& key,
                         const std::string& config_dir, UavUgvLineSetup& s) {
-  r.onlyKeys(n, key, {"vehicle", "kinematic_model", "controller", "start"});
+  r.onlyKeys(n, key, {"vehicle", "kinematic_model", "controller", "start", "link"});
   const std::string file = formation_detail::inConfig(r.text(r.require(n, key, "vehicle", "vehicles/pioneer3dx.yaml"),
                                                              r.key(key, "vehicle")), config_dir);
   s.pioneer = aurora_sim::loadVehicleFile<aurora_sim::Pioneer3dx>(file, "the UAV-UGV line's robot 1");
   if (n["kinematic_model"]) s.pioneer.kinematic = r.boolean(n["kinematic_model"], r.key(key, "kinematic_model")) ? 1 : 0;
   readPioneerGains(r, controllerOf(r, n, key, PioneerDynamic::name()), r.key(key, "controller"), s.pioneer_gains);
   readStart(r, n, key, 0.0, 0.0, "accepted z = 0 (a ground robot's control point lies on the floor)", s.pioneer_start);
+  readRobotLink(r, n, key, config_dir, 0, s);
 }
 
 inline void readDrone(const YamlReader& r, const YAML::Node& n, const std::string& key, const std::string& config_dir,
                       UavUgvLineSetup& s) {
-  r.onlyKeys(n, key, {"vehicle", "controller", "start"});
+  r.onlyKeys(n, key, {"vehicle", "controller", "start", "link"});
   const std::string file = formation_detail::inConfig(r.text(r.require(n, key, "vehicle", "vehicles/ardrone2.yaml"),
                                                              r.key(key, "vehicle")), config_dir);
   s.drone = aurora_sim::loadVehicleFile<LawVehicle>(file, "the UAV-UGV line's robot 2");
@@ -70,6 +80,7 @@ inline void readDrone(const YamlReader& r, const YAML::Node& n, const std::strin
   readLaw(r, controllerOf(r, n, key, lawName(LawType::kUnderactuated)), r.key(key, "controller"), set);
   s.drone_gains.underactuated = set.underactuated;
   readStart(r, n, key, 0.0, 100.0, "accepted heights [0, 100] m", s.drone_start);
+  readRobotLink(r, n, key, config_dir, 1, s);
 }
 
 }  // namespace uav_ugv_detail
