@@ -377,6 +377,21 @@ class FormationAndLinkArgumentsTest(unittest.TestCase):
         self.assertIn("RMS after 20 s: position 0.0743 m, p 0.0595 m, q 0.0388 m, beta 0.0179", out)
         self.refused(["--formation", "triangle_ardrones", "--delay", "1", "2"],
                      "--delay: give one delay per robot (3 for the triangle), or none: got 2")
+        # Each drone over its own link (robots.links: one link file per drone).
+        with tempfile.TemporaryDirectory() as tmp:
+            starts = "    starts: [[1.0, 0.0, 0.75], [-1.0, 0.0, 0.75], [0.0, 1.0, 0.75]]"
+            linked = formation_file(tmp, (starts, starts + "\n    links: [links/wifi_congested.yaml, links/ideal.yaml, "
+                                                   "links/ideal.yaml]"), "triangle_ardrones")
+            outs = [flight("--formation", linked)[1] for _ in range(2)]
+            self.assertIn("delays 2, 0, 0 steps", outs[0])  # wifi_congested's uplink delay
+            self.assertEqual(outs[0].split(" in ")[-1], outs[1].split(" in ")[-1])  # the same draws: the same errors
+            rc, delayed = flight("--formation", "triangle_ardrones", "--delay", "2", "0", "0")
+            self.assertNotEqual(delayed.split("RMS")[1], outs[0].split("RMS")[1])  # losses and jitter beyond the delay
+            kinematic = formation_file(tmp, ("    starts:", "    links: [links/ideal.yaml, links/ideal.yaml, "
+                                             "links/ideal.yaml]\n    starts:"), "triangle_kinematic")
+            rc, out = flight("--formation", kinematic)
+            self.assertNotEqual(rc, 0, out)
+            self.assertIn("'formation.robots.links' is refused without a vehicle", out)
         rc, out = flight("--formation", "triangle_kinematic", "--law", "OSP")
         self.assertEqual(rc, 0, out)
         self.assertIn("RMS after 20 s: position 0.0006 m, p 0.0761 m, q 0.0721 m", out)

@@ -16,6 +16,7 @@
 #include "aurora_control/formation/formation_layer.h"
 #include "aurora_control/formation/triangle_formation.h"
 #include "aurora_control/formation/triangle_reference.h"
+#include "aurora_control/formation/robot_link.h"
 #include "aurora_control/law/control_law.h"
 #include "aurora_control/link/loop_link.h"
 #include "aurora_control/loop/closed_loop.h"
@@ -34,6 +35,7 @@ struct TriangleSetup {
   LawGains<double> drone_gains{{0.0, 0.0}, UnderactuatedGains<double>::defaults()};
   long layer_ticks = 1, drone_ticks = 1;  // the base tick's divisors: period / tick, Ts / tick
   long delay[3] = {0, 0, 0};  // each robot's feedback delay [drone steps; kinematic robots: layer periods]
+  LinkParams link[3];         // each drone's link (docs/links.md; ideal unless the file gives one)
   long periods() const { return std::lround(std::ceil(duration / period - 1e-9)); }
 };
 
@@ -42,7 +44,11 @@ class TriangleFlight {
   using DroneLaw = ArdroneLaw<LawType::kUnderactuated>;
   using Layer = FormationLayer<double, TriangleFormation<double>>;
 
-  explicit TriangleFlight(const TriangleSetup& s) : layer(s.law, s.gains, s.period), s_(s) {
+  explicit TriangleFlight(const TriangleSetup& s)
+      : layer(s.law, s.gains, s.period),
+        s_(s),
+        links_{{s.link[0], s.delay[0], 0, s.drone.Ts}, {s.link[1], s.delay[1], 1, s.drone.Ts},
+               {s.link[2], s.delay[2], 2, s.drone.Ts}} {
     for (int d = 0; d < 3; ++d) {
       drone[d].reset(s.start[3 * d + 2]);
       drone[d].X[aurora_sim::kX] = s.start[3 * d], drone[d].X[aurora_sim::kY] = s.start[3 * d + 1];
@@ -82,7 +88,7 @@ class TriangleFlight {
   double X[9];                  // the positions the last period saw (each robot's delay)
   double truth[9];              // the robots' positions at the last period
   double Qd[9] = {};
-  double U[3][4] = {};          // each drone's last command
+  double U[3][4] = {};          // each drone's last command, as applied
 
  private:
   // Drone step `steps_`: each law on its drone's received state, each step;
@@ -92,8 +98,9 @@ class TriangleFlight {
       Reference<double> ref{};
       for (int i = 0; i < 3; ++i) ref.pos[i] = layer.position(d)[i], ref.vel[i] = layer.velocity(d)[i];
       double xc[aurora_sim::Ardrone2::kStates], err[3];
-      history_[d].read(IdealLink{s_.delay[d]}.uplinkIndex(steps_), xc);
+      history_[d].read(links_[d].uplinkIndex(steps_), xc);
       DroneLaw::command(s_.drone, s_.drone_gains, memory_[d], ref, xc, U[d], err);
+      links_[d].downlink(steps_, U[d], U[d]);  // what it applies
       aurora_sim::Ardrone2::step(s_.drone, drone[d], U[d]);
       history_[d].push(drone[d].X);
     }
@@ -109,15 +116,16 @@ class TriangleFlight {
 
   // Robot d's position as received when its newest state is `newest`
   // (its index since the start), through its delay.
-  void receivedPosition(int d, long newest, double p[3]) const {
+  void receivedPosition(int d, long newest, double p[3]) {
     double S[aurora_sim::Ardrone2::kStates];
-    history_[d].read(IdealLink{s_.delay[d]}.uplinkIndex(newest), S);
+    history_[d].read(links_[d].uplinkIndex(newest), S);
     for (int i = 0; i < 3; ++i) p[i] = S[aurora_sim::kX + i];
   }
 
   TriangleSetup s_;
   DroneLaw::Memory<double> memory_[3];
   StateHistory<DroneLaw, double, kDelayHistory> history_[3];  // each robot's states since the start
+  RobotLink<aurora_sim::Ardrone2::kInputs> links_[3];
   long steps_ = 0;  // drone steps taken
 };
 

@@ -83,9 +83,24 @@ inline void refuseSingularStart(const YamlReader& r, const double X[9]) {
   }
 }
 
+// The drones' optional `links`: three link files (links/ideal.yaml for
+// none), each drone's uplink delay its delay unless --delay gives one.
+inline void readLinks(const YamlReader& r, const YAML::Node& n, const std::string& key, const std::string& config_dir,
+                      TriangleSetup& s) {
+  if (!n["links"]) return;
+  if (!n["links"].IsSequence() || n["links"].size() != 3) {
+    r.fail(r.key(key, "links"), "must list 3 link files, one per drone (links/ideal.yaml for none)");
+  }
+  for (int d = 0; d < 3; ++d) {
+    const std::string at = r.key(key, "links") + "[" + std::to_string(d) + "]";
+    s.link[d] = readLinkFile(formation_detail::inConfig(r.text(n["links"][d], at), config_dir));
+    s.delay[d] = delayInForce(kDelayNotGiven, s.link[d]);
+  }
+}
+
 inline void readRobots(const YamlReader& r, const YAML::Node& n, const std::string& config_dir, TriangleSetup& s) {
   const std::string key = "formation.robots";
-  r.onlyKeys(n, key, {"starts", "vehicle", "controller"});
+  r.onlyKeys(n, key, {"starts", "vehicle", "controller", "links"});
   const YAML::Node starts = r.require(n, key, "starts", "three [x, y, z] in m");
   if (!starts.IsSequence() || starts.size() != 3) r.fail(r.key(key, "starts"), "must list 3 robots' [x, y, z] in m");
   for (int d = 0; d < 3; ++d) {
@@ -96,8 +111,10 @@ inline void readRobots(const YamlReader& r, const YAML::Node& n, const std::stri
   s.kinematic = !n["vehicle"];
   if (s.kinematic) {
     if (n["controller"]) r.fail(r.key(key, "controller"), "is refused without a vehicle: kinematic robots have no law");
+    if (n["links"]) r.fail(r.key(key, "links"), "is refused without a vehicle: kinematic robots send no commands");
     return;
   }
+  readLinks(r, n, key, config_dir, s);
   s.drone = aurora_sim::loadVehicleFile<LawVehicle>(
       formation_detail::inConfig(r.text(n["vehicle"], r.key(key, "vehicle")), config_dir), "the triangle's drones");
   const YAML::Node c = r.require(n, key, "controller", "an underactuated mapping or controllers/underactuated.yaml");

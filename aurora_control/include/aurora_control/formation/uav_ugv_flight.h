@@ -9,8 +9,8 @@
 #pragma once
 
 #include <cmath>
-#include <memory>
 
+#include "aurora_control/formation/robot_link.h"
 #include "aurora_control/formation/uav_ugv_line.h"
 #include "aurora_control/link/loop_link.h"
 #include "aurora_control/loop/closed_loop.h"
@@ -19,25 +19,6 @@
 #include "aurora_control/law/pioneer_laws.h"
 
 namespace aurora_control {
-
-// One robot's link in a formation's own loop: the delay rule over an ideal
-// link (AuRoRA's, bit for bit), or its link model (docs/links.md) with the
-// draws keyed by the robot's index, as the two-drone line's robots.
-template <int Inputs>
-class RobotLink {
- public:
-  RobotLink(const LinkParams& link, long delay, uint64_t robot, double Ts) : ideal_{delay} {
-    if (!link.ideal()) model_.reset(new ModelLink<kDelayHistory, double, Inputs>(link, delay, robot, Ts));
-  }
-  long uplinkIndex(long k) { return model_ ? model_->uplinkIndex(k) : ideal_.uplinkIndex(k); }
-  void downlink(long k, const double sent[Inputs], double received[Inputs]) {
-    if (model_) model_->downlink(k, sent, received);
-  }
-
- private:
-  IdealLink ideal_;
-  std::unique_ptr<ModelLink<kDelayHistory, double, Inputs>> model_;  // on the heap: Capacity-sized rings
-};
 
 struct UavUgvLineSetup {
   aurora_sim::Pioneer3dx::Params<double> pioneer{};  // its sample time is the tick's
