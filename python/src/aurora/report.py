@@ -532,8 +532,11 @@ def figures(ns, series, cmd, out_dir, pdf):
     axes = axes[:, 0]
     for ax, i, name in zip(axes, range(len(names)), names):
         ax.plot(cmd["t"], cmd["u"][i])
-        ax.set_ylabel(name.replace(" [", "\n["))  # the unit under the name
+        # the name, what it does and its unit on lines of their own
+        what, _, unit = name.partition(" [")
+        ax.set_ylabel(what.replace(" (", "\n(").replace(", ", ",\n") + ("\n[" + unit if unit else ""), fontsize=8)
         ax.grid(True, alpha=0.3)
+    fig.subplots_adjust(left=0.17)
     finish(fig, axes, "commands as sent to the driver (the vehicle's order)", "commands")
     if "state_age" in series:
         link_figure(plt, series, save)
