@@ -520,8 +520,8 @@ void ControllerNodeOf<Settings>::fillLaw(aurora_msgs::Control& control) const {
   control.gain_names.clear();
   control.gains.clear();
   for (const auto& gain : gainsInForce(set)) control.gain_names.push_back(gain.first), control.gains.push_back(gain.second);
-  const ControllerSettings& shown = ardroneGainsShown(set);
-  const bool pd = lawNameOf(set) == std::string(lawName(LawType::kPdSaturated));
+  const ControllerSettings& shown = ardroneGainsShown(set);  // another law's: kp = kd = 0
+  const bool pd = shown.law == LawType::kPdSaturated;
   control.kp = pd ? shown.gains.kp : 0.0;
   control.kd = pd ? shown.gains.kd : 0.0;
 }
@@ -536,11 +536,10 @@ std::shared_ptr<void> ControllerOfLaw::make(ros::NodeHandle nh, ros::NodeHandle 
   std::string name;
   private_nh.getParam("controller/name", name);
   std::shared_ptr<void> node;
-  forEachOtherLaw([&](auto law) {
-    if (name == law.name()) node = std::make_shared<ControllerNodeOf<LawSettings<decltype(law)>>>(nh, private_nh);
+  const bool other = withOtherLaw(name, [&](auto law) {
+    node = std::make_shared<ControllerNodeOf<LawSettings<decltype(law)>>>(nh, private_nh);
   });
-  if (!node) node = std::make_shared<ControllerNodeOf<ControllerSettings>>(nh, private_nh);  // refuses an unknown name
-  return node;
+  return other ? node : std::make_shared<ControllerNodeOf<ControllerSettings>>(nh, private_nh);  // refuses an unknown name
 }
 
 }  // namespace aurora_control

@@ -287,8 +287,22 @@ void cycleLaw(const aurora_msgs::Control& c, const Overrides& o, ControllerSetti
   if (o.kd) set.gains.kd = o.kd_value;
 }
 
+// The --controller file's gains of another vehicle's law, read once with
+// its vehicle's sample time (the compensator's rate must divide it); the
+// AR.Drone's were read with the file (cycleLaw copies them).
+void fileLaw(const Overrides&, ControllerSettings&) {}
+template <class Law>
+void fileLaw(const Overrides& o, LawSettings<Law>& set) {
+  if (!o.law) return;
+  try {
+    readLawMapping(YamlReader("controller file '" + o.controller_path + "': "), o.controller_mapping, "controller", set);
+  } catch (const ConfigError& e) {
+    fail(e.what());
+  }
+}
+
 // Another vehicle's law: its gains as recorded (Control.gain_names), or the
-// --controller file's; --kp, --kd are the AR.Drone's.
+// --controller file's (fileLaw's, kept); --kp, --kd are the AR.Drone's.
 template <class Law>
 void cycleLaw(const aurora_msgs::Control& c, const Overrides& o, LawSettings<Law>& set) {
   if (o.kp || o.kd) {
@@ -296,14 +310,7 @@ void cycleLaw(const aurora_msgs::Control& c, const Overrides& o, LawSettings<Law
          (o.law ? "--controller file's" : "bag's") + " controller is " + Law::name() + ": give its gains in a "
          "controller file with --controller FILE (e.g. config/controllers/" + Law::name() + ".yaml)");
   }
-  if (o.law) {
-    try {
-      readLawMapping(YamlReader("controller file '" + o.controller_path + "': "), o.controller_mapping, "controller", set);
-    } catch (const ConfigError& e) {
-      fail(e.what());
-    }
-    return;
-  }
+  if (o.law) return;
   if (c.controller != Law::name()) {
     fail("control message of step " + std::to_string(c.step) + ": controller '" + c.controller + "' where '" +
          Law::name() + "' was recorded before: one law per bag");
@@ -387,6 +394,8 @@ std::unique_ptr<DelayedController<kCapacity, Settings>> makeCore(const Arguments
     fail("the vehicle's sample time " + YamlReader::fmt(core->settings.vehicle.Ts) + " s differs from the recorded " +
          YamlReader::fmt(recorded.sample_time) + " s: give the flight's vehicle file with --vehicle FILE");
   }
+  core->settings.Ts = recorded.sample_time;
+  fileLaw(args.o, core->settings);
   cycleSettings(recorded, args.o, iterations, recorded.task_duration, core->settings);
   if (!args.link_path.empty()) {
     try {
@@ -509,11 +518,11 @@ int run(const Arguments& args) {
   if (controls.empty() || states.empty()) fail("no " + ns + "/control or " + ns + "/state messages");
   // The law: the --controller file's, else the recorded one (its vehicle's core).
   const std::string law = args.o.law ? args.o.controller_name : controls.front().controller;
-  int status = -1;
-  forEachOtherLaw([&](auto l) {
-    if (law == l.name()) status = replayCycles<LawSettings<decltype(l)>>(args, ns, states, controls);
+  int status = 0;
+  const bool other = withOtherLaw(law, [&](auto l) {
+    status = replayCycles<LawSettings<decltype(l)>>(args, ns, states, controls);
   });
-  return status >= 0 ? status : replayCycles<ControllerSettings>(args, ns, states, controls);
+  return other ? status : replayCycles<ControllerSettings>(args, ns, states, controls);
 }
 
 }  // namespace

@@ -395,11 +395,8 @@ std::shared_ptr<void> SimOfVehicle::make(ros::NodeHandle nh, ros::NodeHandle pri
   std::string type;
   nh.getParam("vehicle/type", type);
   std::shared_ptr<void> node;
-  forEachVehicle([&](auto vehicle) {
-    if (type == vehicle.name()) node = std::make_shared<SimNode<decltype(vehicle)>>(nh, private_nh);
-  });
-  // An unknown or missing type: the AR.Drone's loader refuses it naming it.
-  return node ? node : std::make_shared<SimNode<Ardrone2>>(nh, private_nh);
+  withVehicleOfType(type, [&](auto vehicle) { node = std::make_shared<SimNode<decltype(vehicle)>>(nh, private_nh); });
+  return node;
 }
 
 }  // namespace aurora_sim

@@ -31,6 +31,7 @@
 #include <vector>
 
 #include "aurora_sim/vehicle/sim_profile.h"
+#include "aurora_sim/vehicle/vehicle_type.h"
 #include "aurora_sim/command_mapping.h"
 #include "aurora_sim/ros/conversions.h"
 #include "aurora_sim/ros/vehicle_params.h"
@@ -260,16 +261,10 @@ int main(int argc, char** argv) {
   try {
     std::string type;
     pnh.getParam("vehicle/type", type);
-    if (type == Bebop2::name()) {
-      FakeDriver<Bebop2> fake(nh, pnh);
+    withVehicleOfType(type, [&](auto vehicle) {
+      FakeDriver<decltype(vehicle)> fake(nh, pnh);
       ros::spin();
-    } else if (type == Pioneer3dx::name()) {
-      FakeDriver<Pioneer3dx> fake(nh, pnh);
-      ros::spin();
-    } else {
-      FakeDriver<Ardrone2> fake(nh, pnh);  // refuses another type naming it
-      ros::spin();
-    }
+    });
   } catch (const ConfigError& e) {
     ROS_FATAL("fake_driver: %s", e.what());
     return 2;

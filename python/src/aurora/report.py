@@ -233,7 +233,7 @@ def analyse(ns, d):
             for i in range(len(names)):
                 cmd["u"][i].append(controls[step].command[i])
     series["extra_names"] = list(getattr(last, "extra_state_names", ()))
-    series["extra"] = [[tuple(getattr(states[k], "extra", ())) for k in sorted(states) if k in controls]]
+    series["extra"] = [tuple(getattr(states[k], "extra", ())) for k in sorted(states) if k in controls]
     # A moving reference (circle, lemniscate) has a desired velocity; the
     # segments are then laps (the node writes the lap into waypoint_index).
     trajectory = any(c.desired_velocity.x or c.desired_velocity.y or c.desired_velocity.z
@@ -511,7 +511,7 @@ def figures(ns, series, cmd, out_dir, pdf):
     extra = series.get("extra_names", [])  # a series built without them (a caller's own): none
     fig, axes = plt.subplots(3 if extra else 2, 1, figsize=(8, 8 if extra else 6), sharex=True)
     if extra:  # the vehicle's own states (a Pioneer's u [m/s], omega [rad/s])
-        values = series["extra"][0]
+        values = series["extra"]
         for i, name in enumerate(extra):
             axes[2].plot(t, [v[i] if i < len(v) else float("nan") for v in values], label=name)
         axes[2].set_ylabel("the vehicle's\nown states")

@@ -109,6 +109,22 @@ inline void readReference(const YamlReader& r, const YAML::Node& n, const std::s
   for (int i = 0; i < 6; ++i) ref.Q[i] = Q[i];
 }
 
+// A robot's controller at `key`: a mapping {name, gains ...} or a
+// controller file (controllers/NAME.yaml, in the config folder).
+inline ControllerSettings controllerAt(const YamlReader& r, const YAML::Node& c, const std::string& key,
+                                       const std::string& config_dir) {
+  if (c.IsScalar()) return readControllerFile(inConfig(r.text(c, key), config_dir)).settings;
+  ControllerSettings set;
+  readLaw(r, c, key, set);
+  return set;
+}
+
+// A robot's link file at `key` (links/NAME.yaml, in the config folder).
+inline LinkParams linkFileAt(const YamlReader& r, const YAML::Node& n, const std::string& key,
+                             const std::string& config_dir) {
+  return readLinkFile(inConfig(r.text(n, key), config_dir));
+}
+
 // drones[i]: {namespace, start: [x, y, z], controller: {name, gains...} or a
 // controller file, delay, link: a link file}.
 inline FormationDroneFile readDrone(const YamlReader& r, const YAML::Node& n, const std::string& key,
@@ -119,19 +135,14 @@ inline FormationDroneFile readDrone(const YamlReader& r, const YAML::Node& n, co
   const std::vector<double> s = numbers(r, r.require(n, key, "start", "[x, y, z] in m"), r.key(key, "start"), 3);
   for (int i = 0; i < 3; ++i) d.start[i] = s[i];
   const YAML::Node c = r.require(n, key, "controller", "a controller mapping {name, gains} or file (controllers/NAME.yaml)");
-  if (c.IsScalar()) {
-    const std::string file = r.text(c, r.key(key, "controller"));
-    d.controller = readControllerFile(inConfig(file, config_dir)).settings;
-  } else {
-    readLaw(r, c, r.key(key, "controller"), d.controller);
-  }
+  d.controller = controllerAt(r, c, r.key(key, "controller"), config_dir);
   long given = kDelayNotGiven;
   if (n["delay"]) {
     const double value = r.number(n["delay"], r.key(key, "delay"));
     const std::string refusal = delayRefusal(value, false, 0.0, given);
     if (!refusal.empty()) r.fail(r.key(key, "delay"), "= " + YamlReader::fmt(value) + " " + refusal);
   }
-  if (n["link"]) d.link = readLinkFile(inConfig(r.text(n["link"], r.key(key, "link")), config_dir));
+  if (n["link"]) d.link = linkFileAt(r, n["link"], r.key(key, "link"), config_dir);
   d.delay = delayInForce(given, d.link);  // a delay given replaces the link's uplink delay (docs/links.md)
   return d;
 }

@@ -8,7 +8,8 @@
 // at t = j tick on the drones' positions. Each robot's state reaches its law
 // and the layer through its own feedback delay (the delay rule,
 // delay_buffer.h: in drone steps for drones, in layer periods for kinematic
-// robots; 0: AuRoRA's). ROS-free.
+// robots; 0: AuRoRA's), a drone's over its own link (robot_link.h).
+// ROS-free.
 #pragma once
 
 #include <cmath>

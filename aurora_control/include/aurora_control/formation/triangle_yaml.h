@@ -12,6 +12,7 @@
 //       starts: [[x, y, z], [x, y, z], [x, y, z]]   # m
 //       vehicle: vehicles/ardrone2.yaml             # absent: kinematic robots (at their references)
 //       controller: controllers/underactuated.yaml  # or an underactuated mapping
+//       links: [links/A.yaml, links/B.yaml, links/C.yaml]   # optional, flying robots: one per drone
 //
 // Refused naming the key: an unknown law, key or reference, a period that
 // the drones' step and a base tick of at most 12 parts cannot both divide.
@@ -93,7 +94,7 @@ inline void readLinks(const YamlReader& r, const YAML::Node& n, const std::strin
   }
   for (int d = 0; d < 3; ++d) {
     const std::string at = r.key(key, "links") + "[" + std::to_string(d) + "]";
-    s.link[d] = readLinkFile(formation_detail::inConfig(r.text(n["links"][d], at), config_dir));
+    s.link[d] = formation_detail::linkFileAt(r, n["links"][d], at, config_dir);
     s.delay[d] = delayInForce(kDelayNotGiven, s.link[d]);
   }
 }
@@ -118,9 +119,7 @@ inline void readRobots(const YamlReader& r, const YAML::Node& n, const std::stri
   s.drone = aurora_sim::loadVehicleFile<LawVehicle>(
       formation_detail::inConfig(r.text(n["vehicle"], r.key(key, "vehicle")), config_dir), "the triangle's drones");
   const YAML::Node c = r.require(n, key, "controller", "an underactuated mapping or controllers/underactuated.yaml");
-  ControllerSettings set;
-  if (c.IsScalar()) set = readControllerFile(formation_detail::inConfig(r.text(c, r.key(key, "controller")), config_dir)).settings;
-  else readLaw(r, c, r.key(key, "controller"), set);
+  const ControllerSettings set = formation_detail::controllerAt(r, c, r.key(key, "controller"), config_dir);
   if (set.law != LawType::kUnderactuated) r.fail(r.key(key, "controller"), "is refused: the drones fly the underactuated law");
   s.drone_gains.underactuated = set.underactuated;
 }

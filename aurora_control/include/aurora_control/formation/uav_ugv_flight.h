@@ -4,8 +4,9 @@
 // integration (uav_ugv_line.h). Each tick k (t = k tick): the layer on the
 // measured positions, the drone's law, the Pioneer's law, the drone's
 // step, the Pioneer's step (AuRoRA's script's order). Each robot's state
-// reaches the layer and its law through its own feedback delay (the delay
-// rule, delay_buffer.h; 0: AuRoRA's). ROS-free.
+// reaches the layer and its law, and its command the robot, over its own
+// link (robot_link.h: the delay rule with its delay over an ideal link, 0
+// AuRoRA's; or its link model). ROS-free.
 #pragma once
 
 #include <cmath>

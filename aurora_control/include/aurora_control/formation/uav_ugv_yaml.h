@@ -9,6 +9,7 @@
 //     robots:                     # robot 1 the Pioneer (the reference), robot 2 the drone
 //       - {vehicle: vehicles/pioneer3dx.yaml, kinematic_model: false, controller: {...}, start: [x, y, 0]}
 //       - {vehicle: vehicles/ardrone2.yaml, controller: {...}, start: [x, y, z]}
+//     (each robot may add `link: links/NAME.yaml`, its link: docs/links.md)
 //
 // Unknown keys, another robot count, another vehicle or law for a robot,
 // a ground robot off the floor, a drone below it: refused naming the key.
@@ -54,7 +55,7 @@ inline YAML::Node controllerOf(const YamlReader& r, const YAML::Node& n, const s
 inline void readRobotLink(const YamlReader& r, const YAML::Node& n, const std::string& key,
                           const std::string& config_dir, int index, UavUgvLineSetup& s) {
   if (!n["link"]) return;
-  s.link[index] = readLinkFile(formation_detail::inConfig(r.text(n["link"], r.key(key, "link")), config_dir));
+  s.link[index] = formation_detail::linkFileAt(r, n["link"], r.key(key, "link"), config_dir);
   s.delay[index] = delayInForce(kDelayNotGiven, s.link[index]);
 }
 

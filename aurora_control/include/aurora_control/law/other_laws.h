@@ -21,13 +21,23 @@ void forEachOtherLaw(F&& f) {
   f(PioneerKinematic());
 }
 
+// Calls f(Law()) for the law of the list named `name`; false when none is
+// (an AR.Drone law's name, or one its reader refuses): the one choice of a
+// law by name, for a flight, the controller node and replay.
+template <class F>
+bool withOtherLaw(const std::string& name, F&& f) {
+  bool found = false;
+  forEachOtherLaw([&](auto law) {
+    if (!found && name == law.name()) found = true, f(law);
+  });
+  return found;
+}
+
 // The vehicle law `name` flies, by name (the AR.Drone's for a name not in
 // the list: its two laws, or a name the law's reader refuses).
 inline std::string vehicleOfLaw(const std::string& name) {
   std::string vehicle = LawVehicle::name();
-  forEachOtherLaw([&](auto law) {
-    if (name == law.name()) vehicle = decltype(law)::Vehicle::name();
-  });
+  withOtherLaw(name, [&](auto law) { vehicle = decltype(law)::Vehicle::name(); });
   return vehicle;
 }
 

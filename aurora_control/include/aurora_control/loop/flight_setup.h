@@ -157,11 +157,7 @@ LawFlight<Law> loadFlightOf(Law, const FlightFiles& f, const FlightOptionNames& 
 // the flight tool and Python.
 template <class Fly>
 void withFlight(const FlightFiles& f, const std::string& law, const FlightOptionNames& o, Fly&& fly) {
-  bool other = false;
-  forEachOtherLaw([&](auto l) {
-    if (law == l.name()) other = true, fly(loadFlightOf(l, f, o));
-  });
-  if (other) return;
+  if (withOtherLaw(law, [&](auto l) { fly(loadFlightOf(l, f, o)); })) return;
   const FlightSetup s = loadFlight(f);
   withLaw(s.settings.law, [&](auto l) { fly(ardroneFlight<decltype(l)>(s.vehicle, s.settings, s.task, s.steps)); });
 }

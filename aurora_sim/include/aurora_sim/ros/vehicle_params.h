@@ -56,16 +56,12 @@ inline VehicleOfFile loadVehicleOfFile(const ros::NodeHandle& nh, const std::str
   std::string type;
   nh.getParam(ns + "/type", type);
   VehicleOfFile v;
-  auto take = [&](auto vehicle) {
+  withVehicleOfType(type, [&](auto vehicle) {
     using Vehicle = decltype(vehicle);
     const typename Vehicle::template Params<double> p = loadVehicleParams<Vehicle>(nh, ns, flown_by);
     v.Ts = p.Ts, v.states = Vehicle::kStates;
     v.state = [p](const double* body, double* X) { SimProfile<Vehicle>::stateFromBody(p, body, X); };
-  };
-  forEachVehicle([&](auto vehicle) {
-    if (type == vehicle.name()) take(vehicle);
   });
-  if (!v.state) take(Ardrone2());  // refuses an unknown type naming it
   return v;
 }
 

@@ -27,6 +27,19 @@ inline std::string knownVehicleTypes() {
   return names;
 }
 
+// Calls f(Vehicle()) for the vehicle of `type` (a vehicle file's), else
+// f(Ardrone2()), whose loader then refuses the type naming it: the one
+// choice of a vehicle by its file, for the simulator, the mocap estimator
+// and the fake driver.
+template <class F>
+void withVehicleOfType(const std::string& type, F&& f) {
+  bool found = false;
+  forEachVehicle([&](auto vehicle) {
+    if (!found && type == vehicle.name()) found = true, f(vehicle);
+  });
+  if (!found) f(Ardrone2());
+}
+
 inline bool isKnownVehicleType(const std::string& type) {
   bool known = false;
   forEachVehicle([&](auto v) { known = known || type == v.name(); });
