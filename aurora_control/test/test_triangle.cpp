@@ -19,6 +19,7 @@
 #include "aurora_control/formation/triangle_yaml.h"
 #include "aurora_control/law/control_law.h"
 #include "aurora_sim/vehicle_yaml.h"
+#include "edited_file.h"
 
 namespace {
 
@@ -270,20 +271,10 @@ namespace {
 
 // The refusal of triangle_NAME.yaml with `from` replaced by `to` ("" when it loads).
 std::string refusalOfEdited(const char* name, const std::string& from, const std::string& to) {
-  const std::string config = AURORA_CONFIG_DIR;
-  std::ifstream in(config + "/formations/triangle_" + name + ".yaml");
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const size_t at = text.find(from);
-  if (at == std::string::npos) return "the test's edit '" + from + "' is not in the file";
-  text.replace(at, from.size(), to);
-  const std::string path = ::testing::TempDir() + "/triangle_edited.yaml";
-  std::ofstream(path) << text;
-  try {
-    aurora_control::readTriangleFile(path, config);
-  } catch (const aurora_common::ConfigError& e) {
-    return e.what();
-  }
-  return "";
+  return aurora_tests::refusalOfEditedFile(std::string("formations/triangle_") + name + ".yaml", from, to,
+                                           [](const std::string& path, const std::string& config) {
+                                             aurora_control::readTriangleFile(path, config);
+                                           });
 }
 
 }  // namespace

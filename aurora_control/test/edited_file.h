@@ -1,0 +1,34 @@
+// Tests of a file reader's refusals: a shipped config file with one edit,
+// read by the reader under test; what it refuses, or "" when it loads.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <iterator>
+#include <string>
+
+#include "aurora_common/refusal_text.h"
+
+namespace aurora_tests {
+
+// config/`file` with `from` replaced by `to`, read by read(path, config dir).
+template <class Read>
+std::string refusalOfEditedFile(const std::string& file, const std::string& from, const std::string& to, Read&& read) {
+  const std::string config = AURORA_CONFIG_DIR;
+  std::ifstream in(config + "/" + file);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const size_t at = text.find(from);
+  if (at == std::string::npos) return "the test's edit '" + from + "' is not in the file";
+  text.replace(at, from.size(), to);
+  const std::string path = ::testing::TempDir() + "/edited.yaml";
+  std::ofstream(path) << text;
+  try {
+    read(path, config);
+  } catch (const aurora_common::ConfigError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace aurora_tests
