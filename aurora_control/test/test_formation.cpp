@@ -13,6 +13,7 @@
 #include <fstream>
 #include <iterator>
 
+#include "edited_file.h"
 #include "aurora_control/formation/formation_controller.h"
 #include "aurora_control/formation/formation_runner.h"
 #include "aurora_control/formation/formation_yaml.h"
@@ -253,19 +254,11 @@ TEST(FormationFile, MistakesAreRefusedNamingTheKey) {
   const std::string config = AURORA_CONFIG_DIR;
   std::ifstream in(config + "/formations/line_lemniscate.yaml");
   const std::string good((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const auto refusal = [&](const std::string& from, const std::string& to) {
-    std::string text = good;
-    const size_t at = text.find(from);
-    EXPECT_NE(at, std::string::npos) << from;
-    text.replace(at, from.size(), to);
-    const std::string path = ::testing::TempDir() + "/bad_formation.yaml";
-    std::ofstream(path) << text;
-    try {
-      readFormationFile(path, config);
-    } catch (const aurora_common::ConfigError& e) {
-      return std::string(e.what());
-    }
-    return std::string();
+  const auto refusal = [](const std::string& from, const std::string& to) {
+    return aurora_tests::refusalOfEditedFile("formations/line_lemniscate.yaml", from, to,
+                                             [](const std::string& path, const std::string& config) {
+                                               readFormationFile(path, config);
+                                             });
   };
   const auto says = [&](const std::string& from, const std::string& to, const std::string& text) {
     const std::string why = refusal(from, to);
