@@ -1,15 +1,21 @@
 #!/usr/bin/env bash
-# Runs every gtest and rostest of the workspace (built in $1) one after
-# another (each rostest starts its own roscore) and fails on any failure.
+# Runs every gtest and rostest of the workspace (built in $1), TEST_JOBS at
+# a time (2 by default; each rostest starts its own roscore on a free port) and
+# fails on any failure.
 set -o pipefail
 BUILD=${1:-build}
 export PATH=/usr/bin:/bin:$PATH
 [ -f /opt/ros/noetic/setup.bash ] && source /opt/ros/noetic/setup.bash
 source "$BUILD/devel/setup.bash"
 export ROS_LOG_DIR=${ROS_LOG_DIR:-$PWD/$BUILD/ros_log}
+jobs=${TEST_JOBS:-2}
+if ! [[ "$jobs" =~ ^[1-9][0-9]*$ ]]; then
+  echo "TEST_JOBS=$jobs is not a number of tests at a time: use TEST_JOBS=1, 2, ..." >&2
+  exit 2
+fi
 rm -rf "$BUILD/test_results"
 start=$(date +%s)
-make -C "$BUILD" run_tests -j1 2>&1 | grep -vE "^make\[|^\[ *[0-9]+%\]|Built target"
+make -C "$BUILD" run_tests -j"$jobs" 2>&1 | grep -vE "^make\[|^\[ *[0-9]+%\]|Built target"
 summary=$(catkin_test_results "$BUILD/test_results" --all 2>&1)
 rc=$?
 echo "$summary" | grep -vE "^Skipping" | tail -40
