@@ -175,7 +175,7 @@ void flyAndReport(const Options& o, const Flight& f) {
   if (csv) std::fprintf(csv, "%s", csvHeader<typename Law::Vehicle>().c_str());
   SegmentErrors segments(task);
   const auto t0 = std::chrono::steady_clock::now();
-  const FlightResult r = flyLaw<Law>(f.run, f.cfg, f.steps, [&](const auto& ob, double e) {
+  const FlightResult r = flyLaw(f, [&](const auto& ob, double e) {
     segments.add(ob.k, Ts, e);
     if (csv) writeCsvRow(csv, ob, taskTime(ob.k, Ts), e);
   });

@@ -42,7 +42,7 @@ py::dict flightArrays(const Flight& f) {
   FlightResult r;
   {
     py::gil_scoped_release unlocked;  // the flight touches no Python object
-    r = flyLaw<Law>(f.run, f.cfg, f.steps, [&](const LoopObservation<Vehicle, double>& o, double e) {
+    r = flyLaw(f, [&](const LoopObservation<Vehicle, double>& o, double e) {
       const long k = o.k;
       pt[k] = taskTime(k, Ts);
       for (int i = 0; i < kStates; ++i) px[kStates * k + i] = o.X_before[i];

@@ -31,7 +31,7 @@ Trajectory fly(Flight f, long steps, bool ideal_link) {
   typename Vehicle::template State<double> s0;
   Vehicle::start(f.run.plant, s0);
   Trajectory out(1, std::vector<double>(s0.X, s0.X + Vehicle::kStates));
-  const FlightResult r = flyLaw<Law>(f.run, f.cfg, steps, [&](const auto& o, double) {
+  const FlightResult r = flyLaw(f, steps, [&](const auto& o, double) {
     out.emplace_back(o.after.model.X, o.after.model.X + Vehicle::kStates);
   });
   std::printf("flight: %s on %s, %ld steps, delay %ld: RMS tracking error %.4f m, max %.4f m\n", f.law.c_str(),

@@ -85,7 +85,7 @@ TEST(RealLaunch, MissionCompletesCloseToTheSimulatedRun) {
     Law::Vehicle::start(f.run.plant, s0);
     sim.assign(1, std::vector<double>(s0.X, s0.X + 3));
     Ts = f.run.plant.Ts, law = f.law;
-    flyLaw<Law>(f.run, f.cfg, studyIterationCount(f.cfg.task.duration(), Ts), [&](const auto& o, double) {
+    flyLaw(f, studyIterationCount(f.cfg.task.duration(), Ts), [&](const auto& o, double) {
       sim.push_back(std::vector<double>(o.after.model.X, o.after.model.X + 3));
     });
   });

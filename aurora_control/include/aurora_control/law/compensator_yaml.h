@@ -121,7 +121,7 @@ inline void readCompensator(const YamlReader& r, const YAML::Node& c, const std:
 inline CompensatorFile readCompensatorFile(const std::string& path) {
   const YAML::Node root = loadYamlFile("controller file", path);
   const YamlReader r("controller file '" + path + "': ");
-  r.onlyKeys(root, "", {"controller", "clamp_commands"});
+  r.onlyKeys(root, "", {"controller", "clamp_commands", "predictor"});  // predictor: predictor_yaml.h
   CompensatorFile f;
   readCompensator(r, root["controller"], "controller", f);
   if (root["clamp_commands"]) f.has_clamp = true, f.clamp = r.boolean(root["clamp_commands"], "clamp_commands");

@@ -68,7 +68,7 @@ struct ControllerFile {
 inline ControllerFile readControllerFile(const std::string& path) {
   const YAML::Node root = loadYamlFile("controller file", path);
   const YamlReader r("controller file '" + path + "': ");
-  r.onlyKeys(root, "", {"controller", "clamp_commands"});
+  r.onlyKeys(root, "", {"controller", "clamp_commands", "predictor"});  // predictor: predictor_yaml.h
   ControllerFile f;
   readLaw(r, root["controller"], "controller", f.settings);
   if (root["clamp_commands"]) f.has_clamp = true, f.clamp = r.boolean(root["clamp_commands"], "clamp_commands");

@@ -50,7 +50,7 @@ template <class Law>
 typename Law::template Gains<double> readPioneerFile(const std::string& path) {
   const YAML::Node root = loadYamlFile("controller file", path);
   const YamlReader r("controller file '" + path + "': ");
-  r.onlyKeys(root, "", {"controller"});
+  r.onlyKeys(root, "", {"controller", "predictor"});  // predictor: predictor_yaml.h
   typename Law::template Gains<double> g;
   readPioneerGains(r, root["controller"], "controller", g);
   return g;

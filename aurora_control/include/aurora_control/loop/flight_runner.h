@@ -11,7 +11,7 @@
 #include <string>
 
 #include "aurora_control/loop/delayed_controller.h"
-#include "aurora_control/loop/positioning_runner.h"
+#include "aurora_control/predictor/predicted_loop.h"
 #include "aurora_control/task/tracking.h"
 
 namespace aurora_control {
@@ -25,17 +25,19 @@ struct FlightResult {
 };
 
 // A flight of law `Law` (on its vehicle): `iterations` iterations of the
-// runner, observe(LoopObservation, tracking error of step k [m]) after
-// each. Iteration k hands state k (the state at task time k Ts) to the
-// controller with the reference of that time: `iterations` =
-// taskStepCount() flies a task's steps 0..N.
+// runner, with the predictor `predictor` when it is on, observe(
+// LoopObservation, tracking error of step k [m]) after each. Iteration k
+// hands state k (the state at task time k Ts) to the controller with the
+// reference of that time: `iterations` = taskStepCount() flies a task's
+// steps 0..N.
 template <class Law, typename Observer>
-FlightResult flyLaw(const StudyRun<typename Law::Data, double>& run, const RunnerConfig<double>& cfg, long iterations,
+FlightResult flyLaw(const StudyRun<typename Law::Data, double>& run, const RunnerConfig<double>& cfg,
+                    const PredictorRun<typename Law::Vehicle, double>& predictor, long iterations,
                     Observer&& observe) {
   FlightResult r;
   double sum_sq = 0.0;
   const RunnerResult done =
-      runLoop<Law>(run, cfg, iterations, [&](const LoopObservation<typename Law::Vehicle, double>& o) {
+      runLoop<Law>(run, cfg, predictor, iterations, [&](const LoopObservation<typename Law::Vehicle, double>& o) {
         const double e = trackingError(o.step.ref, o.X_before);  // state k against reference k
         sum_sq += e * e;
         r.max_tracking_error = std::max(r.max_tracking_error, e);
@@ -48,18 +50,37 @@ FlightResult flyLaw(const StudyRun<typename Law::Data, double>& run, const Runne
   return r;
 }
 
+// The same without a predictor.
+template <class Law, typename Observer>
+FlightResult flyLaw(const StudyRun<typename Law::Data, double>& run, const RunnerConfig<double>& cfg, long iterations,
+                    Observer&& observe) {
+  return flyLaw<Law>(run, cfg, PredictorRun<typename Law::Vehicle, double>{}, iterations, observe);
+}
+
 // A flight of law `Law` on its vehicle, ready to fly (flyLaw): its run,
-// the runner's settings, its steps 0..N, the law's name and its rate [Hz]
-// where it has one of its own (0: the vehicle's).
+// the runner's settings, its predictor (off unless its controller file
+// has one), its steps 0..N, the law's name and its rate [Hz] where it has
+// one of its own (0: the vehicle's).
 template <class L>
 struct LawFlight {
   using Law = L;
   StudyRun<typename Law::Data, double> run;
   RunnerConfig<double> cfg;
+  PredictorRun<typename Law::Vehicle, double> predictor;
   long steps = 0;
   std::string law = Law::name();
   double rate = 0.0;
 };
+
+// The flight f, its `iterations` iterations (its steps by default).
+template <class L, typename Observer>
+FlightResult flyLaw(const LawFlight<L>& f, long iterations, Observer&& observe) {
+  return flyLaw<L>(f.run, f.cfg, f.predictor, iterations, observe);
+}
+template <class L, typename Observer>
+FlightResult flyLaw(const LawFlight<L>& f, Observer&& observe) {
+  return flyLaw(f, f.steps, observe);
+}
 
 // An AR.Drone flight of `Law` with the node's settings on drone `p`.
 template <class Law>
@@ -84,7 +105,7 @@ FlightResult runFlight(const LawVehicleParams& p, const ControllerSettings& sett
   withLaw(settings.law, [&](auto law) {
     using Law = decltype(law);
     const LawFlight<Law> f = ardroneFlight<Law>(p, settings, task, iterations);
-    r = flyLaw<Law>(f.run, f.cfg, f.steps, observe);
+    r = flyLaw(f, observe);
   });
   return r;
 }

@@ -13,6 +13,7 @@
 #include "aurora_control/law/other_laws.h"
 #include "aurora_control/law/pioneer_yaml.h"
 #include "aurora_control/params/limits.h"
+#include "aurora_control/predictor/predictor_yaml.h"
 #include "aurora_control/link/link_yaml.h"
 #include "aurora_control/task/task_yaml.h"
 #include "aurora_sim/vehicle_yaml.h"
@@ -155,11 +156,25 @@ LawFlight<Law> loadFlightOf(Law, const FlightFiles& f, const FlightOptionNames& 
 // Calls fly(LawFlight<Law>) with the flight of the controller file's law
 // `law` (its controller.name): the one place a flight's law is chosen, for
 // the flight tool and Python.
+// The controller file's predictor (predictor_yaml.h) put into flight `s`:
+// its command delay the link's downlink base delay, the vehicle's clamp
+// its (docs/predictor.md, "The commands applied").
+template <class Law>
+LawFlight<Law> withPredictor(LawFlight<Law> s, const std::string& controller_file) {
+  const LinkParams& link = s.cfg.link;
+  const long history = link.ideal() ? s.run.delay : link.historyNeeded(s.run.delay);
+  s.predictor = predictorRun<Law>(readControllerPredictor(controller_file), s.run.plant.Ts, link.downlink.delay,
+                                  history, s.cfg.clamp_at_drone);
+  return s;
+}
+
 template <class Fly>
 void withFlight(const FlightFiles& f, const std::string& law, const FlightOptionNames& o, Fly&& fly) {
-  if (withOtherLaw(law, [&](auto l) { fly(loadFlightOf(l, f, o)); })) return;
+  if (withOtherLaw(law, [&](auto l) { fly(withPredictor(loadFlightOf(l, f, o), f.controller)); })) return;
   const FlightSetup s = loadFlight(f);
-  withLaw(s.settings.law, [&](auto l) { fly(ardroneFlight<decltype(l)>(s.vehicle, s.settings, s.task, s.steps)); });
+  withLaw(s.settings.law, [&](auto l) {
+    fly(withPredictor(ardroneFlight<decltype(l)>(s.vehicle, s.settings, s.task, s.steps), f.controller));
+  });
 }
 
 }  // namespace aurora_control

@@ -119,19 +119,18 @@ struct ObserverAt<Law, T, NoObserver> {
   }
 };
 
-// One whole run of law `Law` with a history of `Capacity` samples (delay <
-// Capacity, checked by the caller). No exceptions, no allocation: this is
+// One whole run of law `Law` with `history` (its read(j) gives the state
+// the law flies on; delay < its capacity, checked by the caller). No exceptions, no allocation: this is
 // also the CUDA kernel's per-thread body. `iterations`: studyIterationCount()
 // for the study, taskStepCount() for a flight. Iteration k (0-based) is
 // loopIteration (closed_loop.h) over `link`.
-template <class Law, typename T, int Capacity, typename Observer, typename Link>
-AURORA_HD RunnerResult runClosedLoopOver(const StudyRun<typename Law::Data, T>& run, const RunnerConfig<T>& cfg,
-                                         long iterations, Observer& observe, Link& link) {
+template <class Law, typename T, typename Observer, typename History, typename Link>
+AURORA_HD RunnerResult runClosedLoopWith(const StudyRun<typename Law::Data, T>& run, const RunnerConfig<T>& cfg,
+                                         long iterations, Observer& observe, History& history, Link& link) {
   const LoopParams<typename Law::Data, T> params{run.plant, run.model, run.gains, cfg.criteria};
   const ClampPolicy clamp{cfg.clamp_commands, cfg.clamp_at_drone};
   LoopState<typename Law::Data, T, bool> s;
   s.reset(run.plant, cfg.task.at(T(0)).pos);
-  StateHistory<Law, T, Capacity> history;
   long k = 0;
   while (k < iterations) {
     const bool stop = loopIteration<Law>(params, cfg.task, clamp, cfg.early_stop, k, history, link, s,
@@ -140,6 +139,14 @@ AURORA_HD RunnerResult runClosedLoopOver(const StudyRun<typename Law::Data, T>& 
     if (stop) break;
   }
   return runnerResult(s, k);
+}
+
+// The same with the law's own history of `Capacity` samples.
+template <class Law, typename T, int Capacity, typename Observer, typename Link>
+AURORA_HD RunnerResult runClosedLoopOver(const StudyRun<typename Law::Data, T>& run, const RunnerConfig<T>& cfg,
+                                         long iterations, Observer& observe, Link& link) {
+  StateHistory<Law, T, Capacity> history;
+  return runClosedLoopWith<Law>(run, cfg, iterations, observe, history, link);
 }
 
 // The run over an ideal link (today's loop: the delay rule, no command
@@ -170,19 +177,35 @@ inline void checkRunnerDelay(long delay) {
   }
 }
 
+// Calls run(capacity, link) with the history capacity (an
+// std::integral_constant) and the link of a run of law `Law` with cfg's
+// link: the delay rule over an ideal one, else its model (combination 0, as
+// a single flight's and the node's). Refuses a delay the history cannot hold.
+template <class Law, typename T, typename Run>
+void withLoopLink(const StudyRun<typename Law::Data, T>& run, const RunnerConfig<T>& cfg, Run&& fly) {
+  checkRunnerDelay(run.delay);
+  const long history = cfg.link.ideal() ? run.delay : cfg.link.historyNeeded(run.delay);
+  checkRunnerDelay(history);
+  withHistoryCapacity(history, [&](auto capacity) {
+    constexpr int kCapacity = decltype(capacity)::value;
+    if (cfg.link.ideal()) {
+      IdealLink link{run.delay};
+      return fly(capacity, link);
+    }
+    using Link = ModelLink<kCapacity, T, Law::Vehicle::kInputs>;
+    std::unique_ptr<Link> link(new Link(cfg.link, run.delay, 0, double(run.plant.Ts)));
+    fly(capacity, *link);
+  });
+}
+
 // Runs `iterations` iterations of law `Law`; `observe(LoopObservation)` is
 // called after each (for callers that record the trajectory).
 template <class Law, typename T, typename Observer = NoObserver>
 RunnerResult runLoop(const StudyRun<typename Law::Data, T>& run, const RunnerConfig<T>& cfg, long iterations,
                      Observer observe = Observer()) {
-  checkRunnerDelay(run.delay);
-  const long history = cfg.link.ideal() ? run.delay : cfg.link.historyNeeded(run.delay);
-  checkRunnerDelay(history);
   RunnerResult result;
-  withHistoryCapacity(history, [&](auto capacity) {
-    constexpr int kCapacity = decltype(capacity)::value;
-    result = cfg.link.ideal() ? runClosedLoop<Law, T, kCapacity>(run, cfg, iterations, observe)
-                              : runOverModelLink<Law, T, kCapacity>(run, cfg, iterations, observe, 0);
+  withLoopLink<Law>(run, cfg, [&](auto capacity, auto& link) {
+    result = runClosedLoopOver<Law, T, decltype(capacity)::value>(run, cfg, iterations, observe, link);
   });
   return result;
 }

@@ -1,0 +1,87 @@
+// A controller file's `predictor:` block (docs/predictor.md,
+// "Configuration"), the same for every law's file:
+//   predictor:
+//     form: resimulate          # resimulate | smith | off
+//     model: ../vehicles/ardrone2.yaml   # relative to the controller file's folder
+//     horizon: 0.0              # [s] further latency the loop cannot see (real robots)
+// Refused naming the key: an unknown form, a model of another vehicle than
+// the law flies, a horizon below 0 or beyond the history.
+#pragma once
+
+#include <cmath>
+#include <string>
+
+#include "aurora_control/params/limits.h"
+#include "aurora_control/params/yaml_reader.h"
+#include "aurora_control/predictor/predicted_loop.h"
+#include "aurora_common/yaml_file.h"
+#include "aurora_sim/vehicle_yaml.h"
+
+namespace aurora_control {
+
+struct PredictorFile {
+  PredictorForm form = PredictorForm::kOff;
+  std::string model;     // the model's vehicle file (a path)
+  double horizon = 0.0;  // [s]
+  std::string file;      // the controller file it came from (for refusals)
+};
+
+// The folder of a file's path ("." for a bare name), for paths relative to it.
+inline std::string folderOf(const std::string& path) {
+  const size_t slash = path.rfind('/');
+  return slash == std::string::npos ? "." : path.substr(0, slash);
+}
+
+inline PredictorForm predictorFormNamed(const YamlReader& r, const YAML::Node& n, const std::string& key) {
+  const std::string form = r.text(n, key);
+  for (PredictorForm f : {PredictorForm::kResimulate, PredictorForm::kSmith, PredictorForm::kOff}) {
+    if (form == predictorFormName(f)) return f;
+  }
+  r.fail(key, "= '" + form + "' is unknown: accepted 'resimulate', 'smith', 'off'");
+  return PredictorForm::kOff;
+}
+
+// The block of the controller file at `path` (off when it has none).
+inline PredictorFile readControllerPredictor(const std::string& path) {
+  const YAML::Node root = loadYamlFile("controller file", path);
+  const YamlReader r("controller file '" + path + "': ");
+  PredictorFile p;
+  p.file = path;
+  const YAML::Node n = root["predictor"];
+  if (!n) return p;
+  r.onlyKeys(n, "predictor", {"form", "model", "horizon"});
+  p.form = predictorFormNamed(r, r.require(n, "predictor", "form", "resimulate, smith, off"), "predictor.form");
+  if (p.form == PredictorForm::kOff) return p;
+  const std::string model = r.text(r.require(n, "predictor", "model", "a vehicle file, e.g. ../vehicles/ardrone2.yaml"),
+                                   "predictor.model");
+  p.model = model.empty() || model[0] == '/' ? model : folderOf(path) + "/" + model;
+  if (n["horizon"]) p.horizon = r.numberIn(n["horizon"], "predictor.horizon", 0.0, 1e9, "s");
+  return p;
+}
+
+// The predictor of a run of law `Law` with sample time Ts, a command
+// delay `command_delay` [samples] and a history of `history` samples:
+// its model loaded as the law's vehicle, its horizon in samples.
+template <class Law>
+PredictorRun<typename Law::Vehicle, double> predictorRun(const PredictorFile& f, double Ts, long command_delay,
+                                                         long history, bool clamp) {
+  PredictorRun<typename Law::Vehicle, double> p;
+  p.form = f.form;
+  if (!p.on()) return p;
+  p.model = aurora_sim::loadVehicleFile<typename Law::Vehicle>(
+      f.model, "the predictor of controller file '" + f.file + "' (its 'predictor.model'), beside the law '" +
+                   std::string(Law::name()) + "'");
+  const long horizon = std::lround(f.horizon / Ts);
+  if (history + command_delay + horizon > kMaxDelaySamples) {
+    throw ConfigError("controller file '" + f.file + "': 'predictor.horizon' = " + YamlReader::fmt(f.horizon) +
+                      " s (" + std::to_string(horizon) + " samples) is refused: with the history of " +
+                      std::to_string(history) + " and the command delay of " + std::to_string(command_delay) +
+                      " samples it reaches beyond the " + std::to_string(kMaxDelaySamples) +
+                      " samples the predictor keeps; give at most " +
+                      YamlReader::fmt(double(kMaxDelaySamples - history - command_delay) * Ts) + " s");
+  }
+  p.path = CommandPath{command_delay, horizon, clamp};
+  return p;
+}
+
+}  // namespace aurora_control
