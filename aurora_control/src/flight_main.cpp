@@ -169,7 +169,10 @@ void flyAndReport(const Options& o, const Flight& f) {
   const Task<double>& task = f.cfg.task;
   const LinkParams& link = f.cfg.link;
   const double Ts = f.run.plant.Ts;
-  const std::string law = f.law + (f.rate != 0.0 ? " at " + YamlReader::fmt(f.rate) + " Hz" : "");
+  const std::string law = f.law + (f.rate != 0.0 ? " at " + YamlReader::fmt(f.rate) + " Hz" : "") +
+                          (f.predictor.on() ? std::string(" with the ") + predictorFormName(f.predictor.form) +
+                                                  " predictor (docs/predictor.md)"
+                                            : "");
   FILE* csv = o.csv.empty() ? nullptr : std::fopen(o.csv.c_str(), "w");
   if (!o.csv.empty() && !csv) throw std::runtime_error("cannot write '" + o.csv + "'");
   if (csv) std::fprintf(csv, "%s", csvHeader<typename Law::Vehicle>().c_str());

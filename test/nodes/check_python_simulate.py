@@ -98,6 +98,17 @@ class SimulateTest(unittest.TestCase):
             (lambda: aurora.simulate("pioneer_dynamic", "pioneer_lemniscate", rate=10), "is refused here"),
         ])
 
+    def test_the_predictor_flies_the_delayed_loop_as_the_undelayed_one(self):
+        """Issue 35: a controller file's predictor block, as flight flies it; with the nominal model as plant
+        the delayed loop flies as the undelayed one, bit for bit (resimulate)."""
+        f = aurora.simulate("pd_saturated_predictor", "mission4", delay=10)
+        self.assertSameFlight(f, flight_csv("--controller", "pd_saturated_predictor", "--delay", "10"))
+        plain = aurora.simulate("pd_saturated", "mission4", delay=0)
+        self.assertTrue(np.array_equal(f.states, plain.states))
+        self.assertTrue(np.array_equal(f.delay_in_force[10:], np.full(len(f.t) - 10, 10)))
+        self.assertGreater(np.abs(aurora.simulate("pd_saturated", "mission4", delay=10).states - plain.states).max(),
+                           0.1)
+
     def test_a_dict_is_its_file(self):
         cfg = aurora.simulation.config_dir()
         with open(cfg + "/controllers/pd_saturated.yaml") as fh:
