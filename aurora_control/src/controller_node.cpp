@@ -16,6 +16,7 @@
 #include "aurora_control/law/law_settings_yaml.h"
 #include "aurora_control/law/other_laws.h"
 #include "aurora_control/params/live_settings.h"
+#include "aurora_control/predictor/predictor_yaml.h"
 #include "aurora_control/task/tracking.h"
 #include "aurora_control/ros/control_msg.h"
 #include "controller_params.h"
@@ -43,6 +44,7 @@ ControllerNodeOf<Settings>::ControllerNodeOf(ros::NodeHandle nh, ros::NodeHandle
   refuseDelayBeyondTheTask(set.delay);
   refuseUnknownTopLevelKeys();
   core_->configureLink();
+  loadPredictor();
   safety_ = loadSafetyConfig(pnh_);
   safety_.ground_robot = Vehicle::kOnGround;  // no take-off; it stops where a drone lands
   refuseDroneOnlySafetyKeys();
@@ -145,12 +147,50 @@ std::string ControllerNodeOf<Settings>::linkName() const {
   return l.ideal() && l.uplink.delay == 0 ? name : name + " (" + linkText(l) + ")";
 }
 
+// The controller file's predictor block as loaded under ~predictor; a
+// relative model is taken from ~controller_file's folder (the launch files
+// give it), as offline (predictor_yaml.h). The sim and the drivers clamp
+// what they receive (a Pioneer's limit passes it on).
+template <class Settings>
+void ControllerNodeOf<Settings>::loadPredictor() {
+  if (!pnh_.hasParam("predictor")) return;
+  refuseUnknownParams(pnh_, "predictor", {"form", "model", "horizon"}, "");
+  PredictorFile f;
+  const std::string controller_file = aurora_common::paramOr<std::string>(pnh_, "controller_file", "");
+  f.file = controller_file.empty() ? aurora_common::fullKey(pnh_, "predictor") : controller_file;
+  const std::string form = aurora_common::requireParam<std::string>(pnh_, "predictor/form", "resimulate, smith, off");
+  if (!predictorFormOf(form, f.form)) {
+    throw aurora_common::ConfigError("parameter '" + aurora_common::fullKey(pnh_, "predictor/form") + "' = '" + form +
+                                     "' is unknown: accepted 'resimulate', 'smith', 'off'");
+  }
+  if (f.form == PredictorForm::kOff) return;
+  f.model = aurora_common::requireParam<std::string>(pnh_, "predictor/model", "a vehicle file");
+  if (!f.model.empty() && f.model[0] != '/') {
+    if (controller_file.empty()) {
+      throw aurora_common::ConfigError("parameter '" + aurora_common::fullKey(pnh_, "predictor/model") + "' = '" +
+                                       f.model + "' is relative, but no ~controller_file says to what: give an "
+                                       "absolute path, or ~controller_file");
+    }
+    f.model = folderOf(controller_file) + "/" + f.model;
+  }
+  f.horizon = aurora_common::rangedParam(pnh_, "predictor/horizon", 0.0, 0.0, 1e9, "s");
+  const LinkParams& link = core_->settings.link;
+  const long delay = core_->settings.delay;
+  const long history = link.ideal() ? delay : link.historyNeeded(delay);
+  core_->settings.withLawType([&](auto law) {
+    core_->configurePredictor(predictorRun<decltype(law)>(f, Ts_, link.downlink.delay, history, true));
+  });
+  ROS_INFO("controller: the %s predictor on (docs/predictor.md), model '%s', horizon %ld samples",
+           predictorFormName(f.form), f.model.c_str(), core_->predictor().path.horizon);
+}
+
 template <class Settings>
 void ControllerNodeOf<Settings>::refuseUnknownTopLevelKeys() {
   // The node's own keys and those the reconfigure server writes beside them.
   std::vector<std::string> accepted{"controller", "task", "safety", "joystick", "mode", "trigger",
                                     "delay", "clamp_commands", "lockstep_subscribers", "kp", "kd",
-                                    "delay_samples", "link", "link_name", "yaml_files"};
+                                    "delay_samples", "link", "link_name", "yaml_files", "predictor",
+                                    "controller_file"};
   const std::vector<std::string> gains = lawGainNames(LawType::kUnderactuated);
   accepted.insert(accepted.end(), gains.begin(), gains.end());
   refuseUnknownParams(pnh_, "", accepted, "a typo, or a key of another file");

@@ -71,6 +71,7 @@ class ControllerNodeOf {
   // A ground robot's node refuses a drone's take-off and landing keys, a drone's a ground robot's speed limits.
   void refuseDroneOnlySafetyKeys() const;  // limits.h: shorter than the run
   void refuseUnknownTopLevelKeys();
+  void loadPredictor();  // ~predictor (docs/predictor.md, "Configuration")
   double stateAge() const;
   bool lockstepListenersReady() const;
 

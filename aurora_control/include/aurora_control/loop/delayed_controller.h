@@ -11,6 +11,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 
 #include "aurora_control/loop/closed_loop.h"
 #include "aurora_control/loop/delay_buffer.h"
@@ -20,6 +21,7 @@
 #include "aurora_control/law/pd_controller.h"
 #include "aurora_control/task/trajectory_task.h"
 #include "aurora_control/law/underactuated_law.h"
+#include "aurora_control/predictor/predicted_loop.h"
 #include "aurora_sim/ardrone_params.h"
 #include "aurora_common/scalar_math.h"
 #include "aurora_sim/state_index.h"
@@ -121,7 +123,16 @@ class DelayedController {
     side_.memory.reset();
     link_.reset();
     resetMetrics();
+    startPredictor();
   }
+
+  // The state predictor (docs/predictor.md; off by default): the law flies
+  // on its prediction of the state its command acts on.
+  void configurePredictor(const PredictorRun<Vehicle, double>& p) {
+    predictor_run_ = p;
+    startPredictor();
+  }
+  const PredictorRun<Vehicle, double>& predictor() const { return predictor_run_; }
 
   // Applies settings.link (and settings.delay as its uplink delay); the
   // channels start afresh. An ideal link keeps the delay rule.
@@ -174,9 +185,11 @@ class DelayedController {
     out.used = &used;
     out.delay_in_force = link_.active() ? newest().step - used.step : history_.delayInForce(settings.delay);
     out.delay_pending = link_.active() ? 0 : history_.pendingUntilInForce(settings.delay);
-    controllerSide(ref, used, out);
+    StateSample predicted;
+    controllerSide(ref, predictedFrom(used, predicted), out);
     metricsOut(out);
     overLink(out);
+    if (predictor_) predictor_->sent(newest().step, out.U_sent);
     return out;
   }
 
@@ -199,10 +212,27 @@ class DelayedController {
       metrics_step_ = step;
     }
     metricsOut(out);
+    if (predictor_) predictor_->sent(step, out.U_sent);
     return out;
   }
 
  private:
+  void startPredictor() {
+    predictor_.reset();
+    if (!predictor_run_.on()) return;
+    predictor_.reset(new StatePredictor<Vehicle, double>(predictor_run_.form, predictor_run_.model,
+                                                         predictor_run_.path,
+                                                         predictorWindow(Capacity, predictor_run_.path)));
+  }
+
+  // The state the law flies on: the predictor's from `used`, or `used`.
+  const StateSample& predictedFrom(const StateSample& used, StateSample& predicted) {
+    if (!predictor_) return used;
+    predicted = used;
+    predictor_->predict(newest().step, used.step, used.X, predicted.X);
+    return predicted;
+  }
+
   // The stored state of step `step` (the link's choice), newest first.
   const StateSample& stateOfStep(long step) const {
     for (long i = 0; i < history_.size() && i < Capacity; ++i) {
@@ -260,6 +290,8 @@ class DelayedController {
   LoopClock clock_;
   NodeLink<Capacity> link_;
   long used_step_ = -1;  // over a link: the step of the state the law uses
+  PredictorRun<Vehicle, double> predictor_run_;
+  std::unique_ptr<StatePredictor<Vehicle, double>> predictor_;
 };
 
 }  // namespace aurora_control

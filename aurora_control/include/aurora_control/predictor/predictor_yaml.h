@@ -32,13 +32,19 @@ inline std::string folderOf(const std::string& path) {
   return slash == std::string::npos ? "." : path.substr(0, slash);
 }
 
+// The form of a name; false for an unknown one.
+inline bool predictorFormOf(const std::string& name, PredictorForm& form) {
+  for (PredictorForm f : {PredictorForm::kResimulate, PredictorForm::kSmith, PredictorForm::kOff}) {
+    if (name == predictorFormName(f)) return form = f, true;
+  }
+  return false;
+}
+
 inline PredictorForm predictorFormNamed(const YamlReader& r, const YAML::Node& n, const std::string& key) {
   const std::string form = r.text(n, key);
-  for (PredictorForm f : {PredictorForm::kResimulate, PredictorForm::kSmith, PredictorForm::kOff}) {
-    if (form == predictorFormName(f)) return f;
-  }
-  r.fail(key, "= '" + form + "' is unknown: accepted 'resimulate', 'smith', 'off'");
-  return PredictorForm::kOff;
+  PredictorForm f = PredictorForm::kOff;
+  if (!predictorFormOf(form, f)) r.fail(key, "= '" + form + "' is unknown: accepted 'resimulate', 'smith', 'off'");
+  return f;
 }
 
 // The block of the controller file at `path` (off when it has none).

@@ -59,9 +59,14 @@ class StatePredictor {
   }
 
   // The command the controller sent at iteration k (after its clamp).
+  // A step the controller sent nothing at (the node's cycles need not
+  // meet every state step) holds the command before it, as the vehicle does.
   void sent(long k, const T U[kInputs]) {
+    for (long j = std::max(last_sent_ + 1, k - window_ + 1); j < k && last_sent_ >= 0; ++j) {
+      sent_[index(j)] = sent_[index(j - 1)];
+    }
     std::copy(U, U + kInputs, sent_[index(k)].u);
-    last_sent_ = k;
+    last_sent_ = std::max(last_sent_, k);
   }
 
   long target() const { return k_ + path_.delay + path_.horizon; }
@@ -86,7 +91,13 @@ class StatePredictor {
   }
 
   // The model's whole state of step j, stepped on from the newest kept.
+  // A step more than a window ahead (the node's first state of a source
+  // that ran before) starts from the newest state kept.
   void extendTo(long j) {
+    if (j - newest_ >= window_) {
+      states_[index(j)] = states_[index(newest_)];
+      newest_ = j;
+    }
     for (; newest_ < j; ++newest_) {
       State s = states_[index(newest_)];
       stepModel(s, newest_);
