@@ -153,6 +153,20 @@ class BadParamsTest(unittest.TestCase):
         self.assert_refused(rc, out, "/pioneer_takeoff/controller/safety/takeoff_altitude",
                             "a pioneer3dx is a ground robot")
 
+    def test_predictor_of_an_unknown_form_or_another_vehicle(self):
+        """Issue 35, item 6: the node refuses a bad ~predictor block naming the key."""
+        rc, out = self.controller_case("/pred_form", lambda p: rospy.set_param(p + "predictor", {
+            "form": "kalman", "model": self.config + "/vehicles/ardrone2.yaml"}))
+        self.assert_refused(rc, out, "'/pred_form/controller/predictor/form' = 'kalman' is unknown",
+                            "accepted 'resimulate', 'smith', 'off'")
+        rc, out = self.controller_case("/pred_model", lambda p: rospy.set_param(p + "predictor", {
+            "form": "smith", "model": self.config + "/vehicles/pioneer3dx.yaml"}))
+        self.assert_refused(rc, out, "predictor.model", "give a vehicle file of type 'ardrone2'")
+        rc, out = self.controller_case("/pred_rel", lambda p: rospy.set_param(p + "predictor", {
+            "form": "resimulate", "model": "../vehicles/ardrone2.yaml"}))
+        self.assert_refused(rc, out, "'/pred_rel/controller/predictor/model' = '../vehicles/ardrone2.yaml' is "
+                            "relative", "give an absolute path, or ~controller_file")
+
     def test_drone_given_a_ground_robots_speed_limit(self):
         rc, out = self.controller_case("/drone_speed", lambda p: rospy.set_param(p + "safety/max_speed", 0.5))
         self.assert_refused(rc, out, "/drone_speed/controller/safety/max_speed", "leave it out (0) for a drone")
