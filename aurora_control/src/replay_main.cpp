@@ -24,6 +24,7 @@
 #include <string>
 #include <vector>
 
+#include "aurora_control/predictor/predictor_yaml.h"
 #include "aurora_control/loop/delayed_controller.h"
 #include "option_values.h"
 #include "aurora_control/law/law_settings_yaml.h"
@@ -95,6 +96,10 @@ struct Overrides {
 void loadControllerFile(const std::string& path, Overrides& o) {
   try {
     o.controller_path = path;
+    if (readControllerPredictor(path).form != PredictorForm::kOff) {
+      throw ConfigError("--controller " + path + ": its 'predictor' block is refused here: replay does not run the "
+                        "state predictor yet (docs/predictor.md, \"Not yet\"); give the file without it");
+    }
     o.controller_name = controllerFileName(path);
     o.law = true;
     if (vehicleOfLaw(o.controller_name) == LawVehicle::name()) {

@@ -57,6 +57,13 @@ class ToolArgumentsTest(unittest.TestCase):
     def test_two_clamp_choices(self):
         self.assert_refused(["--clamp", "--no-clamp"], "--clamp and --no-clamp exclude each other")
 
+    def test_a_predictor_it_cannot_replay(self):
+        # Issue 35: replay does not run the predictor yet; it refuses rather than replay another law.
+        cfg = subprocess.run(["rospack", "find", "aurora_config"], stdout=subprocess.PIPE,
+                             universal_newlines=True, check=True).stdout.strip()
+        self.assert_refused(["--controller", cfg + "/controllers/pd_saturated_predictor.yaml"],
+                            "its 'predictor' block is refused here: replay does not run the state predictor yet")
+
     def test_delay_beyond_the_node_limit(self):
         self.assert_refused(["--delay", "2048"], "--delay 2048 is refused: accepted integer samples in [0, 2047]")
 
