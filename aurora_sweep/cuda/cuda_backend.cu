@@ -329,6 +329,10 @@ CudaDevice probeCudaDevice() {
 long cudaMaxDelay() { return aurora_control::kMediumHistory - 1; }
 
 std::string cudaDelayProblem(const SweepSpec& spec) {
+  if (spec.predicting()) {
+    return "the state predictor (sweep.predictor) has no CUDA kernel yet (its per-thread entry runs on the host "
+           "only): use --backend cpu";
+  }
   if (spec.historyNeeded() <= cudaMaxDelay()) return "";
   return "the cuda backend holds delays (with a link's jitter) up to " + std::to_string(cudaMaxDelay()) +
          " samples (each GPU thread keeps its history in local memory); this sweep reaches " +

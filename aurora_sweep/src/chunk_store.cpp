@@ -142,6 +142,17 @@ void addOtherVehicle(Crc& crc, const SweepSpec& spec) {
 
 }  // namespace
 
+namespace {
+
+// The predictor's form and its model's file as it is (its values).
+void addPredictor(Crc& crc, const SweepSpec& spec) {
+  crc.add(std::string(aurora_control::predictorFormName(spec.predictor)));
+  std::ifstream f(spec.predictor_model_file);
+  crc.add(std::string(std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>()));
+}
+
+}  // namespace
+
 uint32_t definitionHash(const SweepSpec& spec) {
   static_assert(sizeof(spec.vehicle) % sizeof(double) == 0, "vehicle constants are doubles");
   Crc crc;
@@ -175,6 +186,7 @@ uint32_t definitionHash(const SweepSpec& spec) {
     }
   }
   if (spec.vehicle_type != aurora_sim::Ardrone2::name()) addOtherVehicle(crc, spec);
+  if (spec.predicting()) addPredictor(crc, spec);  // only with one: the hashes of sweeps without stay
   return crc.value();
 }
 

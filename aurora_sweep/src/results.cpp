@@ -237,6 +237,9 @@ void writeSummaryJson(const std::string& path, const SweepSpec& spec, const RunI
       {"vehicle_file", spec.vehicle_file},
       {"vehicle_type", spec.vehicle_type},
       {"controller", spec.controller},
+      {"predictor", spec.predicting() ? json({{"form", aurora_control::predictorFormName(spec.predictor)},
+                                              {"model", spec.predictor_model_file}})
+                                      : json("off")},
       {"parameters", parameters},
       {"result_columns", resultColumnsJson(spec.formation())},
       {"link", spec.linkIdeal() ? json("ideal") : spec.link_file.empty() ? json("the link parameters") : json(spec.link_file)},

@@ -11,6 +11,7 @@
 
 #include "aurora_control/link/link_yaml.h"
 #include "aurora_control/loop/positioning_runner.h"
+#include "aurora_control/predictor/predictor_yaml.h"
 #include "aurora_control/task/task_yaml.h"
 #include "aurora_sweep/backends.h"
 #include "aurora_sweep/design.h"
@@ -502,6 +503,28 @@ void readSweepVehicle(const Reader& r, const YAML::Node& s, const std::string& s
   });
 }
 
+// sweep.predictor (docs/predictor.md, "In a sweep"): {form, model}, the
+// model a vehicle file of the law's vehicle (default: the sweep's).
+void readSweepPredictor(const Reader& r, const YAML::Node& n, const std::string& sweep_dir,
+                        const std::string& config_dir, SweepSpec& spec) {
+  r.onlyKeys(n, "sweep.predictor", {"form", "model"});
+  const std::string form = r.text(r.require(n, "sweep.predictor", "form", "resimulate, smith, off"),
+                                  "sweep.predictor.form");
+  if (!aurora_control::predictorFormOf(form, spec.predictor)) {
+    r.fail("sweep.predictor.form", "= '" + form + "' is unknown: accepted 'resimulate', 'smith', 'off'");
+  }
+  if (spec.predicting() && spec.formation()) {
+    r.fail("sweep.predictor", "is refused for a formation sweep: its drones have no predictor yet");
+  }
+  spec.predictor_model_file =
+      n["model"] ? resolve(r.text(n["model"], "sweep.predictor.model"), sweep_dir, config_dir) : spec.vehicle_file;
+  withSweepLaw(spec, [&](auto law) {
+    aurora_sim::loadVehicleFile<typename decltype(law)::Vehicle>(
+        spec.predictor_model_file, "the predictor (sweep.predictor.model) of the sweep's controller '" +
+                                       spec.controller + "'");
+  });
+}
+
 SweepSpec parseSweepFile(const std::string& path, const std::string& config_dir) {
   Reader r(path);
   const YAML::Node root = aurora_common::loadYamlFile("sweep file", path);
@@ -510,7 +533,7 @@ SweepSpec parseSweepFile(const std::string& path, const std::string& config_dir)
   if (!s) r.fail("sweep", "is missing: the file's top level must be 'sweep:'");
   r.onlyKeys(s, "sweep", {"name", "controller", "vehicle", "task", "formation", "parameters", "order", "points",
                           "criteria", "early_stop", "clamp_commands", "precision", "design", "samples",
-                          "seed", "link", "repeats"});
+                          "seed", "link", "repeats", "predictor"});
   SweepSpec spec;
   spec.file = path;
   const std::string sweep_dir = dirOf(path);
@@ -522,6 +545,7 @@ SweepSpec parseSweepFile(const std::string& path, const std::string& config_dir)
     const std::string file = resolve(r.text(s["formation"], "sweep.formation"), sweep_dir, config_dir);
     readSweepFormation(r, s, file, config_dir, spec);
   }
+  if (s["predictor"]) readSweepPredictor(r, s["predictor"], sweep_dir, config_dir, spec);
   if (s["task"]) readSweepTask(r, s["task"], sweep_dir, config_dir, spec);
   if (!s["task"] && !spec.formation() && !taskHeightsOf(spec).accepts(spec.task.at(0.0).pos[2])) {
     r.fail("sweep.task", "is missing: the default task (the thesis's positioning, at " +

@@ -347,3 +347,12 @@ TEST(CudaBackend, TheSweepProgramOnTheCudaBackend) {
   EXPECT_EQ(rows, 65536);
   EXPECT_EQ(differ, 0);
 }
+
+// Issue 35: the predictor has no kernel yet; the backend says so before
+// any device is asked (so on every machine with the CUDA build).
+TEST(CudaBackend, RefusesThePredictorBeforeTheRun) {
+  const std::string c = AURORA_CONFIG_DIR;
+  const SweepSpec spec = loadSweepFile(c + "/sweeps/positioning_delay_predictor.yaml", c);
+  EXPECT_NE(cudaDelayProblem(spec).find("the state predictor (sweep.predictor) has no CUDA kernel yet"),
+            std::string::npos);
+}

@@ -11,6 +11,7 @@
 #include "aurora_sweep/formation_simulation.h"
 #include "aurora_sweep/simulation.h"
 #include "aurora_sweep/sweep_spec.h"
+#include "aurora_sim/vehicle_yaml.h"
 
 namespace aurora_sweep {
 
@@ -36,6 +37,10 @@ SimSetup<Vehicle, T> makeSetup(const SweepSpec& spec) {
   s.iterations = spec.iterations();
   s.varies_model = spec.variesModel();
   s.ideal_link = spec.linkIdeal();
+  s.predictor = spec.predictor;
+  if (spec.predicting()) {
+    s.predictor_model = aurora_sim::loadVehicleFile<Vehicle>(spec.predictor_model_file).template cast<T>();
+  }
   return s;
 }
 
@@ -116,9 +121,15 @@ void runEachCombination(const SweepSpec& spec, std::vector<SimResult>& out, Prog
     using Law = decltype(law);
     constexpr int kCapacity = decltype(capacity)::value;
     const auto setup = makeSetup<typename Law::Vehicle, T>(spec);
+    const bool predicted = spec.predicting();
     loop(spec.rangeSize(), [&](long i) {
-      out[i] = setup.ideal_link ? simulateCombination<Law, T, kCapacity, false>(setup, grid, first + i)
-                                : simulateCombination<Law, T, kCapacity, true>(setup, grid, first + i);
+      if (predicted) {
+        out[i] = setup.ideal_link ? simulateCombination<Law, T, kCapacity, false, true>(setup, grid, first + i)
+                                  : simulateCombination<Law, T, kCapacity, true, true>(setup, grid, first + i);
+      } else {
+        out[i] = setup.ideal_link ? simulateCombination<Law, T, kCapacity, false>(setup, grid, first + i)
+                                  : simulateCombination<Law, T, kCapacity, true>(setup, grid, first + i);
+      }
       progress.fetch_add(1, std::memory_order_relaxed);
     });
   });

@@ -17,11 +17,11 @@ AURORA_HD inline long threadIndex(unsigned block, unsigned block_dim, unsigned t
   return static_cast<long>(block) * static_cast<long>(block_dim) + static_cast<long>(thread);
 }
 
-template <class Law, typename T, int Capacity, bool Linked = false>
+template <class Law, typename T, int Capacity, bool Linked = false, bool Predicted = false>
 AURORA_HD inline void sweepThread(const SimSetup<typename Law::Vehicle, T>& setup, const GridView& grid, long first, long n,
                                   SimResult* out, unsigned block, unsigned block_dim, unsigned thread) {
   const long i = threadIndex(block, block_dim, thread);
-  if (i < n) out[i] = simulateCombination<Law, T, Capacity, Linked>(setup, grid, first + i);
+  if (i < n) out[i] = simulateCombination<Law, T, Capacity, Linked, Predicted>(setup, grid, first + i);
 }
 
 // The same for a formation sweep (of any shape): one formation per thread.

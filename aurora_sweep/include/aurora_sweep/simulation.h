@@ -7,6 +7,7 @@
 #include <type_traits>
 
 #include "aurora_control/loop/positioning_runner.h"
+#include "aurora_control/predictor/predicted_loop.h"
 #include "aurora_sweep/combination.h"
 #include "aurora_sweep/sweep_gains.h"
 
@@ -22,6 +23,9 @@ struct SimSetup {
   long iterations;    // loop iterations of the task (1801 for 60 s)
   bool varies_model;  // some model factor is not 1: each run scales its own vehicle
   bool ideal_link;    // every run is today's loop (SweepSpec::linkIdeal)
+  // The state predictor (off: the law on the received state) and its model.
+  aurora_control::PredictorForm predictor = aurora_control::PredictorForm::kOff;
+  typename Vehicle::template Params<T> predictor_model;
 };
 
 static_assert(kLinkParamCount == aurora_control::kLinkValueCount, "one sweep parameter per link value");
@@ -118,14 +122,48 @@ AURORA_HD inline aurora_control::RunnerResult runCombination(const Setup& setup,
   return aurora_control::runClosedLoopOver<Law, T, Capacity>(run, setup.config, setup.iterations, none, link);
 }
 
-// Combination `index`'s run of law `Law` (over its link when `Linked`): the
-// CUDA thread's and the scalar loop's body.
-template <class Law, typename T, int Capacity, bool Linked = false>
+// The run with the state predictor (docs/predictor.md, "In a sweep"): its
+// rings in this frame (twice the history: the delay and the command delay
+// fit), its command delay the combination's downlink base delay; the study
+// clamps nowhere, so neither does its model of the vehicle.
+template <class Law, typename T, int Capacity, class Setup, class Link>
+AURORA_HD inline aurora_control::RunnerResult runPredicted(const Setup& setup,
+                                                           const aurora_control::StudyRun<typename Law::Data, T>& run,
+                                                           long command_delay, Link& link) {
+  aurora_control::NoObserver none;
+  const aurora_control::CommandPath path{command_delay, 0, setup.config.clamp_at_drone};
+  aurora_control::StatePredictor<typename Law::Vehicle, T, 2 * Capacity> predictor(setup.predictor,
+                                                                                  setup.predictor_model, path);
+  return aurora_control::runPredictedOver<Law, T, Capacity>(run, setup.config, setup.iterations, none, predictor,
+                                                            link);
+}
+template <class Law, typename T, int Capacity, class Setup>
+AURORA_HD inline aurora_control::RunnerResult runPredictedCombination(
+    const Setup& setup, const Combination&, const aurora_control::StudyRun<typename Law::Data, T>& run,
+    std::false_type /*linked*/) {
+  aurora_control::IdealLink link{run.delay};
+  return runPredicted<Law, T, Capacity>(setup, run, 0, link);
+}
+template <class Law, typename T, int Capacity, class Setup>
+AURORA_HD inline aurora_control::RunnerResult runPredictedCombination(
+    const Setup& setup, const Combination& c, const aurora_control::StudyRun<typename Law::Data, T>& run,
+    std::true_type /*linked*/) {
+  const aurora_control::LinkParams l = combinationLink(setup.config.link, run.delay, c);
+  aurora_control::ModelLink<Capacity, T, Law::Vehicle::kInputs> link(l, run.delay, static_cast<uint64_t>(c.key),
+                                                                     double(run.plant.Ts));
+  return runPredicted<Law, T, Capacity>(setup, run, l.downlink.delay, link);
+}
+
+// Combination `index`'s run of law `Law` (over its link when `Linked`, with
+// the predictor when `Predicted`): the CUDA thread's and the scalar loop's
+// body.
+template <class Law, typename T, int Capacity, bool Linked = false, bool Predicted = false>
 AURORA_HD inline SimResult simulateCombination(const SimSetup<typename Law::Vehicle, T>& setup, const GridView& grid,
                                                long index) {
   const Combination c = grid.decode(index);
-  return compactResult(runCombination<Law, T, Capacity>(setup, c, studyRun<Law>(setup, c),
-                                                        std::integral_constant<bool, Linked>()));
+  const std::integral_constant<bool, Linked> linked;
+  if (Predicted) return compactResult(runPredictedCombination<Law, T, Capacity>(setup, c, studyRun<Law>(setup, c), linked));
+  return compactResult(runCombination<Law, T, Capacity>(setup, c, studyRun<Law>(setup, c), linked));
 }
 
 }  // namespace aurora_sweep

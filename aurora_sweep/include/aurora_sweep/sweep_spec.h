@@ -9,6 +9,7 @@
 #include "aurora_control/formation/formation_checks.h"
 #include "aurora_control/formation/formation_runner.h"
 #include "aurora_control/link/link.h"
+#include "aurora_control/predictor/state_predictor.h"
 #include "aurora_control/task/task.h"
 #include "aurora_sim/vehicle/vehicle_type.h"
 #include "aurora_sweep/combination.h"
@@ -55,6 +56,12 @@ struct SweepSpec {
            : vehicle_type == aurora_sim::Pioneer3dx::name() ? pioneer3dx.Ts
                                                             : vehicle.Ts;
   }
+  // The state predictor (sweep file 'predictor:', docs/predictor.md,
+  // "In a sweep"): its form and its model's vehicle file (the sweep's
+  // vehicle file by default: the plant's model factors leave it nominal).
+  aurora_control::PredictorForm predictor = aurora_control::PredictorForm::kOff;
+  std::string predictor_model_file;
+  bool predicting() const { return predictor != aurora_control::PredictorForm::kOff; }
   // The task (one schema with the node: positioning point, waypoints,
   // circle, lemniscate); the study's by default.
   aurora_control::Task<double> task = aurora_control::positioningTask(2.0, 1.0, 2.0, 60.0);

@@ -220,9 +220,8 @@ class DelayedController {
   void startPredictor() {
     predictor_.reset();
     if (!predictor_run_.on()) return;
-    predictor_.reset(new StatePredictor<Vehicle, double>(predictor_run_.form, predictor_run_.model,
-                                                         predictor_run_.path,
-                                                         predictorWindow(Capacity, predictor_run_.path)));
+    predictor_.reset(new HostPredictor<Vehicle, double>(predictor_run_.form, predictor_run_.model,
+                                                        predictor_run_.path));
   }
 
   // The state the law flies on: the predictor's from `used`, or `used`.
@@ -291,7 +290,7 @@ class DelayedController {
   NodeLink<Capacity> link_;
   long used_step_ = -1;  // over a link: the step of the state the law uses
   PredictorRun<Vehicle, double> predictor_run_;
-  std::unique_ptr<StatePredictor<Vehicle, double>> predictor_;
+  std::unique_ptr<HostPredictor<Vehicle, double>> predictor_;
 };
 
 }  // namespace aurora_control

@@ -11,6 +11,7 @@
 #include <memory>
 
 #include "aurora_control/loop/positioning_runner.h"
+#include "aurora_control/params/limits.h"
 #include "aurora_control/predictor/state_predictor.h"
 
 namespace aurora_control {
@@ -27,34 +28,40 @@ struct WholeStateReader {
   };
 };
 
-template <class Vehicle, typename T, int Capacity>
+// The predictor of the host's loops (the offline runner, the node): rings
+// for any history the node's limit allows (predictor_yaml.h refuses more).
+template <class Vehicle, typename T>
+using HostPredictor = StatePredictor<Vehicle, T, 2 * kDelayHistory>;
+
+template <class Vehicle, typename T, int Capacity, class Predictor>
 class PredictedHistory {
  public:
-  explicit PredictedHistory(StatePredictor<Vehicle, T>& predictor) : predictor_(predictor) {}
-  void push(const T X[Vehicle::kStates]) {
+  AURORA_HD explicit PredictedHistory(Predictor& predictor) : predictor_(predictor) {}
+  AURORA_HD void push(const T X[Vehicle::kStates]) {
     states_.push(X);
     ++k_;
   }
   // The state the controller flies on at this iteration, the state of
   // step `received` having arrived.
-  void read(long received, T X[Vehicle::kStates]) {
+  AURORA_HD void read(long received, T X[Vehicle::kStates]) {
     T xc[Vehicle::kStates];
     states_.read(received, xc);
     predictor_.predict(k_, received, xc, X);
   }
 
  private:
-  StatePredictor<Vehicle, T>& predictor_;
+  Predictor& predictor_;
   StateHistory<WholeStateReader<Vehicle>, T, Capacity> states_;
   long k_ = -1;  // the iteration: one push each
 };
 
-template <class Vehicle, typename T, class Link>
+template <class Predictor, class Link>
 struct PredictedLink {
-  StatePredictor<Vehicle, T>& predictor;
+  Predictor& predictor;
   Link& link;
-  long uplinkIndex(long k) { return link.uplinkIndex(k); }
-  void downlink(long k, const T* sent, T* received) {
+  AURORA_HD long uplinkIndex(long k) { return link.uplinkIndex(k); }
+  template <typename T>
+  AURORA_HD void downlink(long k, const T* sent, T* received) {
     predictor.sent(k, sent);
     link.downlink(k, sent, received);
   }
@@ -71,22 +78,14 @@ struct PredictorRun {
   bool on() const { return form != PredictorForm::kOff; }
 };
 
-// The predictor's rings: the history, the command delay and horizon, and
-// one to spare.
-inline long predictorWindow(long history, const CommandPath& path) { return history + path.delay + path.horizon + 2; }
-
-// Runs loopIteration with the predictor over `link` (host: the rings on the
-// heap).
-template <class Law, typename T, int Capacity, typename Observer, typename Link>
-RunnerResult runPredictedOver(const StudyRun<typename Law::Data, T>& run, const RunnerConfig<T>& cfg,
-                              const PredictorRun<typename Law::Vehicle, T>& p, long iterations, Observer& observe,
-                              Link& link) {
-  using Vehicle = typename Law::Vehicle;
-  StatePredictor<Vehicle, T> predictor(p.form, p.model, p.path, predictorWindow(Capacity, p.path));
-  std::unique_ptr<PredictedHistory<Vehicle, T, Capacity>> history(
-      new PredictedHistory<Vehicle, T, Capacity>(predictor));
-  PredictedLink<Vehicle, T, Link> predicted{predictor, link};
-  return runClosedLoopWith<Law>(run, cfg, iterations, observe, *history, predicted);
+// Runs loopIteration with `predictor` over `link` (host, scalar loop and
+// CUDA thread alike: nothing allocated here).
+template <class Law, typename T, int Capacity, typename Observer, class Predictor, typename Link>
+AURORA_HD RunnerResult runPredictedOver(const StudyRun<typename Law::Data, T>& run, const RunnerConfig<T>& cfg,
+                                        long iterations, Observer& observe, Predictor& predictor, Link& link) {
+  PredictedHistory<typename Law::Vehicle, T, Capacity, Predictor> history(predictor);
+  PredictedLink<Predictor, Link> predicted{predictor, link};
+  return runClosedLoopWith<Law>(run, cfg, iterations, observe, history, predicted);
 }
 
 // runLoop (positioning_runner.h) with the predictor `p` when it is on.
@@ -95,8 +94,10 @@ RunnerResult runLoop(const StudyRun<typename Law::Data, T>& run, const RunnerCon
                      const PredictorRun<typename Law::Vehicle, T>& p, long iterations, Observer observe = Observer()) {
   if (!p.on()) return runLoop<Law>(run, cfg, iterations, observe);
   RunnerResult result;
+  std::unique_ptr<HostPredictor<typename Law::Vehicle, T>> predictor(
+      new HostPredictor<typename Law::Vehicle, T>(p.form, p.model, p.path));
   withLoopLink<Law>(run, cfg, [&](auto capacity, auto& link) {
-    result = runPredictedOver<Law, T, decltype(capacity)::value>(run, cfg, p, iterations, observe, link);
+    result = runPredictedOver<Law, T, decltype(capacity)::value>(run, cfg, iterations, observe, *predictor, link);
   });
   return result;
 }

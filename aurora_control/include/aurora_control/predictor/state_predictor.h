@@ -1,20 +1,21 @@
-// The state predictor (docs/predictor.md): from the state the controller
-// received (step r, age k - r) and the commands it sent since, a model of
-// the vehicle predicts the state at the step its new command will act on,
-// k + command delay (+ a fixed horizon on real robots), and the law flies
-// on that prediction. Two forms (docs/predictor.md, eqs. P1 and P2):
-// - resimulate: the model run forward from the received state over the
-//   commands applied since (cost: the age in model steps);
-// - smith: the received state plus the open-loop model's change since r
+// The state predictor (docs/predictor.md): from the newest state the
+// controller received (its step a, the "anchor") and the commands it sent
+// since, a model of the vehicle predicts the state at the step its new
+// command will act on, k + command delay (+ a fixed horizon on real
+// robots), and the law flies on that prediction. Two forms
+// (docs/predictor.md, eqs. P1 and P2):
+// - resimulate: the model's whole state kept at the anchor (its published
+//   states the received ones) and run forward over the commands applied
+//   (cost: the anchor's age in model steps);
+// - smith: the anchor's state plus the open-loop model's change since
 //   (one model step per iteration, whatever the age).
-// Generic in the vehicle (its State, step, limitInput); ROS-free, no clock:
-// the caller passes the step numbers. One run at a time (host): the rings
-// live on the heap with the predictor (a run of 2048 samples of history
-// keeps 4096 whole states).
+// Generic in the vehicle (its State, step, limitInput); ROS-free, no clock
+// (the caller passes the step numbers), no allocation: fixed rings of
+// `Window` steps, so it runs in the offline runner, the node, the sweep's
+// scalar loop and each CUDA thread alike.
 #pragma once
 
-#include <algorithm>
-#include <vector>
+#include "aurora_common/host_device.h"
 
 namespace aurora_control {
 
@@ -26,128 +27,124 @@ inline const char* predictorFormName(PredictorForm f) {
 
 // How the command path looks from the controller (docs/predictor.md, "The
 // commands applied"): the command sent at step j acts at step j + delay
-// (the link's downlink delay, 0 over an ideal link); `horizon` further
-// steps the loop cannot see (a real robot's latency), over which the last
-// command sent is held; `clamp`: the vehicle clamps what it receives.
+// (the link's downlink base delay, 0 over an ideal link); `horizon`
+// further steps the loop cannot see (a real robot's latency), over which
+// the last command sent is held; `clamp`: the vehicle clamps what it
+// receives.
 struct CommandPath {
   long delay = 0;    // [samples]
   long horizon = 0;  // [samples]
   bool clamp = false;
 };
 
-template <class Vehicle, typename T>
+// The rings' size for a history of `history` samples (the oldest state a
+// link may deliver) and the command path.
+AURORA_HD inline long predictorSpan(long history, const CommandPath& path) {
+  return history + path.delay + path.horizon + 2;
+}
+
+template <class Vehicle, typename T, int Window>
 class StatePredictor {
  public:
   using Params = typename Vehicle::template Params<T>;
   using State = typename Vehicle::template State<T>;
   static constexpr int kStates = Vehicle::kStates, kInputs = Vehicle::kInputs;
 
-  // `window`: more than the largest age a received state may have plus the
-  // command delay (the caller's history plus the delay; checked by the
-  // caller). The model starts as the vehicle does (Vehicle::start).
-  StatePredictor(PredictorForm form, const Params& model, const CommandPath& path, long window)
-      : form_(form), model_(model), path_(path), window_(window), sent_(window), states_(window) {
-    Vehicle::start(model_, states_[0]);
+  // The model starts as the vehicle does (Vehicle::start). The caller
+  // checks predictorSpan(history, path) <= Window.
+  AURORA_HD StatePredictor(PredictorForm form, const Params& model, const CommandPath& path)
+      : form_(form), model_(model), path_(path) {
+    Vehicle::start(model_, anchor_);
+    open_ = anchor_;
+    for (int i = 0; i < kStates; ++i) open_X_[0][i] = open_.X[i], anchor_X_[i] = anchor_.X[i];
   }
 
   // Iteration k: the state xc of step `received` (<= k) arrived; xp: the
-  // state predicted for step k + delay + horizon.
-  void predict(long k, long received, const T xc[kStates], T xp[kStates]) {
+  // state predicted for step target() from the newest state received.
+  AURORA_HD void predict(long k, long received, const T xc[kStates], T xp[kStates]) {
     k_ = k;
-    if (form_ == PredictorForm::kSmith) return smith(received, xc, xp);
-    resimulate(received, xc, xp);
+    receive(received, xc);
+    if (form_ == PredictorForm::kSmith) return smith(xp);
+    State s = anchor_;
+    for (long j = anchor_step_; j < target(); ++j) stepModel(s, j);  // eq. P1
+    for (int i = 0; i < kStates; ++i) xp[i] = s.X[i];
   }
 
-  // The command the controller sent at iteration k (after its clamp).
-  // A step the controller sent nothing at (the node's cycles need not
-  // meet every state step) holds the command before it, as the vehicle does.
-  void sent(long k, const T U[kInputs]) {
-    for (long j = std::max(last_sent_ + 1, k - window_ + 1); j < k && last_sent_ >= 0; ++j) {
-      sent_[index(j)] = sent_[index(j - 1)];
+  // The command the controller sent at iteration k (after its clamp). A
+  // step it sent nothing at (the node's cycles need not meet every state
+  // step) holds the command before it, as the vehicle does.
+  AURORA_HD void sent(long k, const T U[kInputs]) {
+    for (long j = last_sent_ + 1; j < k && last_sent_ >= 0 && j > k - Window; ++j) {
+      for (int i = 0; i < kInputs; ++i) sent_[index(j)][i] = sent_[index(j - 1)][i];
     }
-    std::copy(U, U + kInputs, sent_[index(k)].u);
-    last_sent_ = std::max(last_sent_, k);
+    for (int i = 0; i < kInputs; ++i) sent_[index(k)][i] = U[i];
+    if (k > last_sent_) last_sent_ = k;
   }
 
-  long target() const { return k_ + path_.delay + path_.horizon; }
+  AURORA_HD long target() const { return k_ + path_.delay + path_.horizon; }
+  // The step of the newest state received (the prediction's start).
+  AURORA_HD long anchor() const { return anchor_step_; }
 
  private:
-  struct Command {
-    T u[kInputs];
-  };
-
-  long index(long step) const { return step % window_; }
+  AURORA_HD static long index(long step) { return step % Window; }
 
   // The command the vehicle applies at step j as the controller sees it:
   // the one sent at j - delay (none yet: zero, the link's hover), the last
   // sent for a step it has not sent yet (the horizon), clamped if the
   // vehicle clamps.
-  void applied(long j, T U[kInputs]) const {
-    const long s = std::min(j - path_.delay, last_sent_);
+  AURORA_HD void applied(long j, T U[kInputs]) const {
+    const long s = j - path_.delay < last_sent_ ? j - path_.delay : last_sent_;
     for (int i = 0; i < kInputs; ++i) {
-      const T u = s < 0 ? T(0) : sent_[index(s)].u[i];
+      const T u = s < 0 ? T(0) : sent_[index(s)][i];
       U[i] = path_.clamp ? Vehicle::limitInput(model_, i, u) : u;
     }
   }
 
-  // The model's whole state of step j, stepped on from the newest kept.
-  // A step more than a window ahead (the node's first state of a source
-  // that ran before) starts from the newest state kept.
-  void extendTo(long j) {
-    if (j - newest_ >= window_) {
-      states_[index(j)] = states_[index(newest_)];
-      newest_ = j;
-    }
-    for (; newest_ < j; ++newest_) {
-      State s = states_[index(newest_)];
-      stepModel(s, newest_);
-      states_[index(newest_ + 1)] = s;
-    }
-  }
-
-  void stepModel(State& s, long j) const {
+  AURORA_HD void stepModel(State& s, long j) const {
     T U[kInputs];
     applied(j, U);
     Vehicle::step(model_, s, U);
   }
 
-  // Eq. P1: the received state in the model's state of its step (the
-  // vehicle's other channels, e.g. the AR.Drone's motors, the model's),
-  // stepped to the target; the steps whose commands are all sent are kept
-  // (a later state received from them starts from there).
-  void resimulate(long r, const T xc[kStates], T xp[kStates]) {
-    extendTo(r);
-    State s = states_[index(r)];
-    std::copy(xc, xc + kStates, s.X);
-    states_[index(r)] = s;
-    const long kept = k_ + path_.delay;  // the commands of steps below it are all sent
-    for (long j = r; j < target(); ++j) {
-      stepModel(s, j);
-      if (j + 1 <= kept) states_[index(j + 1)] = s;
-    }
-    newest_ = kept;  // >= r: r <= k
-    std::copy(s.X, s.X + kStates, xp);
+  // A newer state moves the anchor: the model's whole state stepped to its
+  // step (the vehicle's unpublished channels, e.g. the AR.Drone's motors,
+  // stay the model's), its published states the received ones. An older
+  // one (the delay rule's start, a late packet) leaves the newer anchor.
+  // A step more than a window ahead (the node's first state of a source
+  // that ran before) keeps the model's channels as they are.
+  AURORA_HD void receive(long r, const T xc[kStates]) {
+    if (r < anchor_step_) return;
+    if (r - anchor_step_ >= Window) anchor_step_ = r;
+    for (; anchor_step_ < r; ++anchor_step_) stepModel(anchor_, anchor_step_);
+    for (int i = 0; i < kStates; ++i) anchor_.X[i] = anchor_X_[i] = xc[i];
   }
 
-  // Eq. P2: xp = xc + (model at the target - model at r), the model open
-  // loop on the commands applied (states_ keep its states, newest_ its step
-  // up to the commands sent).
-  void smith(long r, const T xc[kStates], T xp[kStates]) {
-    extendTo(k_ + path_.delay);
-    State ahead = states_[index(newest_)];
-    for (long j = newest_; j < target(); ++j) stepModel(ahead, j);
-    const State& then = states_[index(r)];
-    for (int i = 0; i < kStates; ++i) xp[i] = xc[i] + (ahead.X[i] - then.X[i]);
+  // Eq. P2: xp = x_a + (m_N - m_a), m the model open loop on the commands
+  // applied (its states kept by step up to those all sent, k + delay).
+  AURORA_HD void smith(T xp[kStates]) {
+    const long sent_through = k_ + path_.delay;
+    if (sent_through - open_step_ >= Window) open_step_ = sent_through - 1;
+    for (; open_step_ < sent_through; ++open_step_) {
+      stepModel(open_, open_step_);
+      for (int i = 0; i < kStates; ++i) open_X_[index(open_step_ + 1)][i] = open_.X[i];
+    }
+    State ahead = open_;
+    for (long j = open_step_; j < target(); ++j) stepModel(ahead, j);
+    const T* then = open_X_[index(anchor_step_)];
+    for (int i = 0; i < kStates; ++i) xp[i] = anchor_X_[i] + (ahead.X[i] - then[i]);
   }
 
   PredictorForm form_;
   Params model_;
   CommandPath path_;
-  long window_;
-  std::vector<Command> sent_;  // the commands sent, by step
-  std::vector<State> states_;  // the model's whole states, by step
-  long newest_ = 0;      // the newest step in states_
-  long last_sent_ = -1;  // the newest step sent
+  T sent_[Window][kInputs] = {};  // the commands sent, by step
+  long last_sent_ = -1;           // the newest step sent
+  State anchor_;                  // resimulate: the model's whole state at the anchor
+  T anchor_X_[kStates];           // the newest state received
+  long anchor_step_ = 0;
+  State open_;                    // smith: the model open loop, at open_step_
+  T open_X_[Window][kStates];     // its states by step
+  long open_step_ = 0;
   long k_ = 0;
 };
 

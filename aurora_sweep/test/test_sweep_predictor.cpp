@@ -1,0 +1,116 @@
+// Sweeps with the state predictor (issue 35, docs/predictor.md, "In a
+// sweep"): with the nominal model as plant every delay of a grid flies as
+// no delay (the same record to the byte); the scalar loop, the cpu backend
+// and the kernel's per-thread entry (on the host) agree, over an ideal link
+// and a congested one, for both forms; the shipped studies load; bad input
+// is refused naming the key (the cuda backend's refusal: test_sweep_cuda).
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "aurora_sweep/backends.h"
+#include "aurora_sweep/chunk_store.h"
+#include "aurora_sweep/kernel_entry.h"
+#include "aurora_sweep/sweep_file.h"
+#include "sweep_test_support.h"
+
+using namespace aurora_sweep;
+
+namespace {
+
+using PdLaw = aurora_control::ArdroneLaw<aurora_control::LawType::kPdSaturated>;
+
+// A small grid of the thesis's study (4 Kp x 3 Kd x `delays`), with
+// `extra` lines in the sweep block.
+SweepSpec grid(const std::string& extra, const std::string& delays = "{from: 0, to: 30, count: 4}") {
+  static int n = 0;
+  const std::string text = "sweep:\n  name: p\n  controller: pd_saturated\n  task: tasks/positioning.yaml\n"
+                           "  parameters:\n    kp: {from: 0.1, to: 0.75, count: 4}\n"
+                           "    kd: {from: 0.2, to: 1.0, count: 3}\n    delay: " + delays + "\n"
+                           "  order: [kp, kd, delay]\n" + extra;
+  return loadSweepFile(test::writeTemp("predictor_" + std::to_string(n++) + ".yaml", text), test::configDir());
+}
+
+void expectSameRecord(const SimResult& a, const SimResult& b, const std::string& what) {
+  EXPECT_EQ(std::memcmp(&a, &b, sizeof(SimResult)), 0) << what;
+}
+
+std::vector<SimResult> onKernelThreads(const SweepSpec& spec, bool linked) {
+  const auto setup = makeSetup<aurora_sim::Ardrone2, double>(spec);
+  const GridView view = spec.view();
+  const long n = spec.size();
+  return test::launchOnHost(n, 32, [&](unsigned b, unsigned block, unsigned t, SimResult* out) {
+    if (linked) {
+      sweepThread<PdLaw, double, aurora_control::kShortHistory, true, true>(setup, view, 0, n, out, b, block, t);
+    } else {
+      sweepThread<PdLaw, double, aurora_control::kShortHistory, false, true>(setup, view, 0, n, out, b, block, t);
+    }
+  });
+}
+
+}  // namespace
+
+TEST(SweepPredictor, APerfectModelFliesEveryDelayAsNone) {
+  for (const char* form : {"resimulate", "smith"}) {
+    const SweepSpec spec = grid(std::string("  predictor: {form: ") + form + "}\n");
+    ASSERT_TRUE(spec.predicting());
+    const std::vector<SimResult> r = test::runOn("scalar", spec);
+    const std::vector<SimResult> plain = test::runOn("scalar", grid(""));
+    const long gains = 12;
+    long differ = 0;
+    for (long i = 0; i < spec.size(); ++i) {
+      const long at_zero = i % gains;  // the same gains, delay 0
+      if (std::string(form) == "resimulate") expectSameRecord(r[i], r[at_zero], std::string(form) + " " + std::to_string(i));
+      EXPECT_NEAR(r[i].iae, r[at_zero].iae, 1e-9) << form << " " << i;
+      EXPECT_EQ(feasible(r[i]), feasible(r[at_zero])) << form << " " << i;
+      differ += std::memcmp(&plain[i], &plain[at_zero], sizeof(SimResult)) != 0;
+    }
+    EXPECT_GT(differ, 30) << "without the predictor the delays change the runs";
+    for (long i = 0; i < gains; ++i) EXPECT_NEAR(r[i].iae, plain[i].iae, 1e-9) << "delay 0 is the plain run";
+  }
+}
+
+TEST(SweepPredictor, EveryBackendAgrees) {
+  for (const char* form : {"resimulate", "smith"}) {
+    for (const char* link : {"", "  link: links/wifi_congested.yaml\n"}) {
+      const SweepSpec spec = grid(std::string("  predictor: {form: ") + form + "}\n" + link);
+      const std::vector<SimResult> scalar = test::runOn("scalar", spec);
+      test::expectRunsAgree(scalar, test::runOn("cpu", spec), 0.0);
+      const std::vector<SimResult> threads = onKernelThreads(spec, *link != '\0');
+      for (long i = 0; i < spec.size(); ++i) expectSameRecord(scalar[i], threads[i], std::string(form) + " " + link);
+    }
+  }
+}
+
+TEST(SweepPredictor, TheShippedStudiesLoadAndNameIt) {
+  const std::string c = test::configDir() + "/sweeps/";
+  for (const char* name : {"positioning_delay_predictor", "positioning_delay_wifi_congested_predictor",
+                           "predictor_robustness"}) {
+    const SweepSpec s = loadSweepFile(c + name + ".yaml", test::configDir());
+    EXPECT_EQ(s.predictor, aurora_control::PredictorForm::kResimulate) << name;
+    EXPECT_EQ(s.predictor_model_file, test::configDir() + "/vehicles/ardrone2.yaml") << name;
+  }
+  const SweepSpec with = loadSweepFile(c + "positioning_delay_predictor.yaml", test::configDir());
+  const SweepSpec without = loadSweepFile(c + "positioning_delay.yaml", test::configDir());
+  EXPECT_EQ(with.size(), without.size());
+  EXPECT_NE(definitionHash(with), definitionHash(without)) << "their chunks must not be mixed";
+}
+
+TEST(SweepPredictor, BadInputIsRefusedNamingTheKey) {
+  const std::string head = "sweep:\n  controller: pd_saturated\n  task: tasks/positioning.yaml\n"
+                           "  parameters:\n    kp: 0.5\n    kd: 0.85\n    delay: {from: 0, to: 3, count: 4}\n";
+  EXPECT_NE(test::refusal(head + "  predictor: {form: kalman}\n")
+                .find("'sweep.predictor.form' = 'kalman' is unknown: accepted 'resimulate', 'smith', 'off'"),
+            std::string::npos);
+  const std::string other = test::refusal(head + "  predictor: {form: smith, model: vehicles/pioneer3dx.yaml}\n");
+  EXPECT_NE(other.find("sweep.predictor.model"), std::string::npos) << other;
+  EXPECT_NE(other.find("give a vehicle file of type 'ardrone2'"), std::string::npos) << other;
+  EXPECT_NE(test::refusal(head + "  predictor: {form: smith, horizon: 1}\n").find("horizon"), std::string::npos);
+  const std::string formation = test::refusal(
+      "sweep:\n  formation: formations/line_lemniscate.yaml\n  parameters:\n    delay_1: 0\n    delay_2: 0\n"
+      "  predictor: {form: resimulate}\n");
+  EXPECT_NE(formation.find("'sweep.predictor' is refused for a formation sweep"), std::string::npos) << formation;
+  EXPECT_EQ(test::refusal(head + "  predictor: {form: 'off'}\n"), "");
+}
