@@ -510,6 +510,12 @@ void ControllerNodeOf<Settings>::fillOutput(const ControlOutput& out, aurora_msg
   control.state_used.header.frame_id = state_frame_;
   control.state_used.step = out.used->step;
   aurora_sim::stateToMsg(out.used->X, Vehicle::kStates, control.state_used);
+  control.predictor = predictorFormName(core_->predictor().form);
+  if (out.predicted) {
+    control.prediction_step = static_cast<uint64_t>(out.prediction_step);
+    control.prediction_horizon = static_cast<uint32_t>(out.prediction_horizon);
+    control.predicted_state.assign(out.X_predicted, out.X_predicted + Vehicle::kStates);
+  }
   control.position_error.x = out.position_error[0];
   control.position_error.y = out.position_error[1];
   control.position_error.z = out.position_error[2];

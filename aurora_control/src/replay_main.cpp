@@ -521,6 +521,11 @@ int run(const Arguments& args) {
   std::vector<aurora_msgs::Control> controls;
   readDrone(bag, args.bag_path, ns, states, controls);
   if (controls.empty() || states.empty()) fail("no " + ns + "/control or " + ns + "/state messages");
+  const std::string predictor = controls.back().predictor;
+  if (!predictor.empty() && predictor != "off") {
+    fail("the bag's controller flew with the " + predictor + " state predictor (Control.predictor): replay does "
+         "not run the predictor yet (docs/predictor.md, \"Not yet\"); its commands cannot be compared");
+  }
   // The law: the --controller file's, else the recorded one (its vehicle's core).
   const std::string law = args.o.law ? args.o.controller_name : controls.front().controller;
   int status = 0;

@@ -243,8 +243,10 @@ def analyse(ns, d):
     law = last.controller or "pd_saturated"
     gains = ("Kp %g, Kd %g" % (last.kp, last.kd)) if law == "pd_saturated" else \
         "%d gains in metrics.json" % len(last.gain_names)
-    series["label"] = "%s (%s, %s; delay %d samples = %.3f s)" % (ns, law, gains, last.delay_samples,
-                                                                    last.delay_seconds)
+    predictor = getattr(last, "predictor", "off") or "off"
+    series["label"] = "%s (%s%s, %s; delay %d samples = %.3f s)" % (
+        ns, law, "" if predictor == "off" else " with the %s predictor" % predictor, gains, last.delay_samples,
+        last.delay_seconds)
     segments = segment_metrics(series)
     metrics = {
         "namespace": ns,
@@ -273,12 +275,54 @@ def analyse(ns, d):
         "modes": sorted({c.mode for c in controls.values()}),
     }
     metrics.update(task_coverage(first, last, ts))
+    prediction = prediction_metrics(states, controls, t0)
+    if prediction is not None:
+        series["prediction_t"], series["prediction_err"] = prediction.pop("t"), prediction.pop("err")
+        metrics["predictor"] = prediction
     link = link_metrics(controls)
     if link is not None:
         series["state_age"] = link.pop("state_age_samples")
         series["command_age"] = link.pop("command_age_samples")
         metrics["link"] = link
     return metrics, series, cmd
+
+
+def prediction_metrics(states, controls, t0):
+    """The state predictor's error (docs/predictor.md): each predicted
+    position against the state that later arrived for the step it
+    predicted, [m]. None when the node ran without one (or the bag predates
+    the predictor's fields)."""
+    cs = [controls[k] for k in sorted(controls)]
+    if not cs or getattr(cs[-1], "predictor", "off") in ("", "off"):
+        return None
+    t, err, horizons = [], [], []
+    for c in cs:
+        if not c.law_ran or not c.predicted_state or c.prediction_step not in states:
+            continue
+        s = states[c.prediction_step]
+        p = c.predicted_state
+        t.append(s.header.stamp.to_sec() - t0)
+        err.append(norm((p[0] - s.position.x, p[1] - s.position.y, p[2] - s.position.z)))
+        horizons.append(int(c.prediction_horizon))
+    if not err:
+        raise ReportError("the controller predicted (%s) but no predicted step has its state in the bag" %
+                          cs[-1].predictor)
+    return {"form": cs[-1].predictor, "t": t, "err": err, "predictions_checked": len(err),
+            "rms_prediction_error_m": math.sqrt(sum(e * e for e in err) / len(err)),
+            "max_prediction_error_m": max(err), "max_prediction_horizon_samples": max(horizons)}
+
+
+def prediction_figure(plt, series, save):
+    """The predicted position's error against the state that arrived for
+    the step it predicted."""
+    fig, ax = plt.subplots(figsize=(10, 4))
+    ax.plot(series["prediction_t"], series["prediction_err"], color="tab:purple", lw=1)
+    ax.set_xlabel("time of the predicted step [s]")
+    ax.set_ylabel("|predicted - arrived| position [m]")
+    ax.grid(True, alpha=0.3)
+    ax.set_title("%s\nstate predictor: prediction error" % series["label"])
+    fig.tight_layout()
+    save(fig, "prediction")
 
 
 def longest_run(flags):
@@ -540,6 +584,8 @@ def figures(ns, series, cmd, out_dir, pdf):
     finish(fig, axes, "commands as sent to the driver (the vehicle's order)", "commands")
     if "state_age" in series:
         link_figure(plt, series, save)
+    if "prediction_err" in series:
+        prediction_figure(plt, series, save)
     return files
 
 

@@ -95,6 +95,11 @@ struct ControlOutput {
   bool drone_hovers = false;             // the drone hovers: no command arrived yet, or none for cmd_timeout
   long uplink_losses = 0, downlink_losses = 0;  // packets lost so far
   double iae = 0, itae = 0, iasc = 0;    // running metrics after this cycle
+  // The state predictor (docs/predictor.md): whether the law flew on its
+  // prediction, the step predicted, how many steps it stepped, the state.
+  bool predicted = false;
+  long prediction_step = 0, prediction_horizon = 0;
+  double X_predicted[aurora_sim::kMaxStates] = {};
 };
 
 // The node's reference as controllerHalf's task: the node computes it from
@@ -186,7 +191,7 @@ class DelayedController {
     out.delay_in_force = link_.active() ? newest().step - used.step : history_.delayInForce(settings.delay);
     out.delay_pending = link_.active() ? 0 : history_.pendingUntilInForce(settings.delay);
     StateSample predicted;
-    controllerSide(ref, predictedFrom(used, predicted), out);
+    controllerSide(ref, predictedFrom(used, predicted, out), out);
     metricsOut(out);
     overLink(out);
     if (predictor_) predictor_->sent(newest().step, out.U_sent);
@@ -225,10 +230,14 @@ class DelayedController {
   }
 
   // The state the law flies on: the predictor's from `used`, or `used`.
-  const StateSample& predictedFrom(const StateSample& used, StateSample& predicted) {
+  const StateSample& predictedFrom(const StateSample& used, StateSample& predicted, ControlOutput& out) {
     if (!predictor_) return used;
     predicted = used;
     predictor_->predict(newest().step, used.step, used.X, predicted.X);
+    out.predicted = true;
+    out.prediction_step = predictor_->target();
+    out.prediction_horizon = predictor_->target() - predictor_->anchor();
+    for (int i = 0; i < Vehicle::kStates; ++i) out.X_predicted[i] = predicted.X[i];
     return predicted;
   }
 
