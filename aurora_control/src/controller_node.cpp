@@ -153,6 +153,9 @@ std::string ControllerNodeOf<Settings>::linkName() const {
 // what they receive (a Pioneer's limit passes it on).
 template <class Settings>
 void ControllerNodeOf<Settings>::loadPredictor() {
+  // Live (dynparam predictor) without a block: the node's own vehicle file as the model.
+  predictor_base_.model = core_->settings.vehicle;
+  predictor_base_.path = CommandPath{0, 0, true};
   if (!pnh_.hasParam("predictor")) return;
   refuseUnknownParams(pnh_, "predictor", {"form", "model", "horizon"}, "");
   PredictorFile f;
@@ -178,10 +181,20 @@ void ControllerNodeOf<Settings>::loadPredictor() {
   const long delay = core_->settings.delay;
   const long history = link.ideal() ? delay : link.historyNeeded(delay);
   core_->settings.withLawType([&](auto law) {
-    core_->configurePredictor(predictorRun<decltype(law)>(f, Ts_, link.downlink.delay, history, true));
+    predictor_base_ = predictorRun<decltype(law)>(f, Ts_, link.downlink.delay, history, true);
   });
+  core_->settings.predictor = f.form;
+  applyPredictor();
   ROS_INFO("controller: the %s predictor on (docs/predictor.md), model '%s', horizon %ld samples",
            predictorFormName(f.form), f.model.c_str(), core_->predictor().path.horizon);
+}
+
+template <class Settings>
+void ControllerNodeOf<Settings>::applyPredictor() {
+  PredictorRun<Vehicle, double> p = predictor_base_;
+  p.form = core_->settings.predictor;
+  p.path.delay = core_->settings.link.downlink.delay;
+  core_->configurePredictor(p);
 }
 
 template <class Settings>
@@ -239,6 +252,7 @@ ControllerConfig ControllerNodeOf<Settings>::liveConfig() const {
   config.downlink_jitter = static_cast<double>(set.link.downlink.jitter_max);
   config.downlink_loss = set.link.downlink.loss;
   config.downlink_burst = set.link.downlink.burst;
+  config.predictor = predictorFormName(set.predictor);
   return config;
 }
 
@@ -261,7 +275,7 @@ bool ControllerNodeOf<Settings>::onSetParameters(dynamic_reconfigure::Reconfigur
   for (const auto& d : req.config.doubles) changes.push_back({d.name, d.value});
   for (const auto& i : req.config.ints) changes.push_back({i.name, static_cast<double>(i.value)});
   for (const auto& b : req.config.bools) changes.push_back({b.name, std::nan("")});  // no boolean setting
-  for (const auto& t : req.config.strs) changes.push_back({t.name, std::nan("")});
+  for (const auto& t : req.config.strs) changes.push_back({t.name, std::nan(""), t.value});
   Settings& set = core_->settings;
   Settings next = set;
   for (const LiveChange& c : changes) {
@@ -280,7 +294,12 @@ bool ControllerNodeOf<Settings>::onSetParameters(dynamic_reconfigure::Reconfigur
   }
   if (next.delay != set.delay) announceDelayChange(next.delay);
   const bool link_changed = next.link != set.link;
+  const bool predictor_changed = next.predictor != set.predictor || (link_changed && next.predictor != PredictorForm::kOff);
   set = next;
+  if (predictor_changed) {  // it starts afresh from the next state received
+    applyPredictor();
+    ROS_INFO("controller: state predictor %s live (docs/predictor.md)", predictorFormName(set.predictor));
+  }
   if (link_changed) {  // the channels start afresh with the new values
     core_->configureLink();
     LinkParams shown = set.link;

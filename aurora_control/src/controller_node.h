@@ -71,7 +71,8 @@ class ControllerNodeOf {
   // A ground robot's node refuses a drone's take-off and landing keys, a drone's a ground robot's speed limits.
   void refuseDroneOnlySafetyKeys() const;  // limits.h: shorter than the run
   void refuseUnknownTopLevelKeys();
-  void loadPredictor();  // ~predictor (docs/predictor.md, "Configuration")
+  void loadPredictor();   // ~predictor (docs/predictor.md, "Configuration")
+  void applyPredictor();  // the settings' form with predictor_base_'s model, over the link's command delay
   double stateAge() const;
   bool lockstepListenersReady() const;
 
@@ -85,6 +86,7 @@ class ControllerNodeOf {
   long task_iterations_ = 0;  // the task's iteration count: a delay must be shorter
 
   std::unique_ptr<Core> core_;     // delay buffer, law, clamp, metrics (ROS-free)
+  PredictorRun<Vehicle, double> predictor_base_;  // the predictor's model and horizon (form: settings.predictor)
   FlightSupervisor supervisor_;    // flight sequence and watchdogs (ROS-free)
   std::string state_frame_ = "world";
   ros::Time last_state_time_;      // ROS time the newest fresh state arrived

@@ -49,7 +49,19 @@ TEST(LiveSettings, RefusesWithTheValueGiven) {
   EXPECT_NE(check(s, "delay_samples", 1801).find("accepted delays up to 1800 samples"), std::string::npos);
   EXPECT_EQ(check(s, "kpp", 0.6), "'kpp' is not a live setting: accepted delay_samples, kp, kd (the pd_saturated "
                                    "law's gains), the link's uplink_jitter, uplink_loss, uplink_burst, "
-                                   "downlink_delay, downlink_jitter, downlink_loss, downlink_burst");
+                                   "downlink_delay, downlink_jitter, downlink_loss, downlink_burst, predictor");
+}
+
+// Issue 35: the predictor switches live by its form's word.
+TEST(LiveSettings, ThePredictorSwitchesByItsWord) {
+  ControllerSettings s = pd();
+  const LiveChange on{"predictor", std::nan(""), "smith"}, bad{"predictor", std::nan(""), "kalman"};
+  EXPECT_EQ(checkLiveChange(s, on, 1801), "");
+  EXPECT_EQ(checkLiveChange(s, bad, 1801), "predictor = 'kalman' is refused: accepted 'off', 'resimulate', 'smith'");
+  applyLiveChange(s, on);
+  EXPECT_EQ(s.predictor, PredictorForm::kSmith);
+  applyLiveChange(s, LiveChange{"predictor", std::nan(""), "off"});
+  EXPECT_EQ(s.predictor, PredictorForm::kOff);
 }
 
 TEST(LiveSettings, AGainOfTheOtherLawIsRefusedUnlessUnchanged) {

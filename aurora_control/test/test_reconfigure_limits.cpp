@@ -29,9 +29,21 @@ TEST(ReconfigureLimits, ControllerCfgEqualsTheParameterTable) {
   std::vector<std::string> described;
   for (const auto& p : ControllerConfig::__getDescriptionMessage__().groups[0].parameters) described.push_back(p.name);
   std::vector<std::string> live{"kp", "kd", "delay_samples", "uplink_jitter", "uplink_loss", "uplink_burst",
-                                "downlink_delay", "downlink_jitter", "downlink_loss", "downlink_burst"};
+                                "downlink_delay", "downlink_jitter", "downlink_loss", "downlink_burst", "predictor"};
   for (const std::string& g : lawGainNames(LawType::kUnderactuated)) live.push_back(g);
   std::sort(described.begin(), described.end());
   std::sort(live.begin(), live.end());
   EXPECT_EQ(described, live);
+}
+
+// The predictor's form is the table's word row: a string setting, its
+// default the row's, its choices named in its description.
+TEST(ReconfigureLimits, ThePredictorIsAWordOfTheTable) {
+  const dynamic_reconfigure::ConfigDescription d = ControllerConfig::__getDescriptionMessage__();
+  ASSERT_EQ(d.dflt.strs.size(), 1u);
+  EXPECT_EQ(d.dflt.strs[0].name, "predictor");
+  EXPECT_EQ(d.dflt.strs[0].value, "off");
+  for (const auto& p : d.groups[0].parameters) {
+    if (p.name == "predictor") EXPECT_NE(p.description.find("(off, resimulate, smith)"), std::string::npos);
+  }
 }

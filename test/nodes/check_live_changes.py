@@ -1,6 +1,7 @@
 #!/usr/bin/python3
 """Live delay raise beyond the history; live values refused by the start-up
-rules; the link changed live; the controller after a landing."""
+rules; the link and the predictor changed live; the controller after a
+landing."""
 import math
 import os
 import sys
@@ -132,6 +133,23 @@ class LiveChangesTest(unittest.TestCase):
         start = len(self.controls)
         self.assertTrue(self.wait_for(lambda: len(self.controls) >= start + 30, 5))
         self.assertEqual(self.controls[-1].command_age, 0)
+
+    def test_1e_the_predictor_switches_live(self):
+        # Issue 35 (docs/predictor.md): dynparam predictor resimulate | smith | off; the node's vehicle file is
+        # its model; Control says it at once; an unknown form is refused.
+        self.refused({"predictor": "kalman"}, "predictor = 'kalman' is refused: accepted 'off', 'resimulate', 'smith'")
+        self.assertEqual(self.controls[-1].predictor, "off")
+        self.reconfigure.update_configuration({"predictor": "resimulate"})
+        start = len(self.controls)
+        self.assertTrue(self.wait_for(lambda: len(self.controls) >= start + 30, 5))
+        later = [c for c in self.controls[start + 5:] if c.law_ran]
+        self.assertTrue(later and all(c.predictor == "resimulate" for c in later))
+        self.assertTrue(all(len(c.predicted_state) == 12 and c.prediction_step == c.step for c in later))
+        self.assertEqual(self.reconfigure.get_configuration(timeout=5)["predictor"], "resimulate")
+        self.reconfigure.update_configuration({"predictor": "off"})
+        start = len(self.controls)
+        self.assertTrue(self.wait_for(lambda: len(self.controls) >= start + 10, 5))
+        self.assertEqual((self.controls[-1].predictor, len(self.controls[-1].predicted_state)), ("off", 0))
 
     def test_2_a_landed_drone_is_still_a_fresh_source(self):
         self.land.publish(Empty())

@@ -41,6 +41,7 @@ struct LoopSettings {
   LinkParams link;         // the rest of the link (link.h, docs/links.md); apply with configureLink()
   bool clamp_commands = true;
   double Ts = 1.0 / 30.0;  // [s], the vehicle's sample time (the loop clock's step)
+  PredictorForm predictor = PredictorForm::kOff;  // the state predictor's form (apply with configurePredictor)
 };
 
 // The AR.Drone's settings: its two laws (chosen at run time, and live),

@@ -13,12 +13,14 @@
 #include "aurora_control/link/link_yaml.h"
 #include "aurora_control/params/parameter_table.h"
 #include "aurora_control/params/yaml_reader.h"
+#include "aurora_control/predictor/predictor_yaml.h"
 
 namespace aurora_control {
 
 struct LiveChange {
-  std::string name;  // kp, kd, delay_samples, k1_x ... k2_psi, the link's (parameter_table.h)
+  std::string name;  // kp, kd, delay_samples, k1_x ... k2_psi, the link's, predictor (parameter_table.h)
   double value;
+  std::string word;  // a word setting's value (predictor: off, resimulate, smith)
 };
 
 namespace live_detail {
@@ -94,15 +96,29 @@ inline std::string linkProblem(const LoopSettings& now, const LiveChange& c) {
 
 // "" when `c` may be applied to `now`, else the refusal. `task_steps`: the
 // task's steps (taskStepCount), which a delay must be shorter than.
+// A change of what every law's loop has: the delay, the link, the
+// predictor. False for another setting (a law's gain).
+inline bool loopSettingProblem(const LoopSettings& now, const LiveChange& c, long task_steps, std::string& problem) {
+  using namespace live_detail;
+  if (c.name == "delay_samples") return problem = delayProblem(c, task_steps, now.Ts), true;
+  if (isLinkSetting(c.name)) return problem = linkProblem(now, c), true;
+  if (c.name != kParameterTable[kRowPredictorForm].live) return false;
+  PredictorForm form;
+  problem = predictorFormOf(c.word, form) ? "" : c.name + " = '" + c.word + "' is refused: accepted 'off', "
+                                                 "'resimulate', 'smith'";
+  return true;
+}
+
 inline std::string checkLiveChange(const ControllerSettings& now, const LiveChange& c, long task_steps) {
   using namespace live_detail;
-  if (c.name == "delay_samples") return delayProblem(c, task_steps, now.Ts);
-  if (isLinkSetting(c.name)) return linkProblem(now, c);
+  std::string problem;
+  if (loopSettingProblem(now, c, task_steps, problem)) return problem;
   const bool pd = gainIndex(LawType::kPdSaturated, c.name) >= 0;
   const bool ua = gainIndex(LawType::kUnderactuated, c.name) >= 0;
   if (!pd && !ua) {
     return "'" + c.name + "' is not a live setting: accepted delay_samples, " +
-           joinKeys(lawGainNames(now.law)) + " (the " + lawName(now.law) + " law's gains), the link's " + linkSettingNames();
+           joinKeys(lawGainNames(now.law)) + " (the " + lawName(now.law) + " law's gains), the link's " +
+           linkSettingNames() + ", predictor";
   }
   const LawType law = pd ? LawType::kPdSaturated : LawType::kUnderactuated;
   if (law != now.law) {
@@ -118,7 +134,8 @@ inline std::string checkLiveChange(const ControllerSettings& now, const LiveChan
             : rangeProblem(c, kUnderactuatedGainMin, kUnderactuatedGainMax, "a gain");
 }
 
-// Applies a delay or link change checkLiveChange() accepted; false for a gain.
+// Applies a delay, link or predictor change checkLiveChange() accepted;
+// false for a gain.
 inline bool applyLoopChange(LoopSettings& set, const LiveChange& c) {
   if (c.name == "delay_samples") {
     set.delay = static_cast<long>(c.value);
@@ -128,6 +145,7 @@ inline bool applyLoopChange(LoopSettings& set, const LiveChange& c) {
     set.link = live_detail::withLinkChange(set.link, c);
     return true;
   }
+  if (c.name == kParameterTable[kRowPredictorForm].live) return predictorFormOf(c.word, set.predictor), true;
   return false;
 }
 
@@ -144,8 +162,8 @@ inline void applyLiveChange(ControllerSettings& set, const LiveChange& c) {
 template <class Law>
 std::string checkLiveChange(const LawSettings<Law>& now, const LiveChange& c, long task_steps) {
   using namespace live_detail;
-  if (c.name == "delay_samples") return delayProblem(c, task_steps, now.Ts);
-  if (isLinkSetting(c.name)) return linkProblem(now, c);
+  std::string problem;
+  if (loopSettingProblem(now, c, task_steps, problem)) return problem;
   const ControllerSettings shown;
   for (LawType law : {LawType::kPdSaturated, LawType::kUnderactuated}) {
     ControllerSettings as = shown;
@@ -155,7 +173,7 @@ std::string checkLiveChange(const LawSettings<Law>& now, const LiveChange& c, lo
   }
   return "'" + c.name + "' = " + YamlReader::fmt(c.value) + " is refused: this node flies the " + Law::name() +
          " law, whose gains come from its controller file (restart with another); live: delay_samples, the link's " +
-         linkSettingNames();
+         linkSettingNames() + ", predictor";
 }
 
 template <class Law>

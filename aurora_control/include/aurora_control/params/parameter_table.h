@@ -36,6 +36,7 @@ enum ParameterRow : int {
   kRowDownlinkJitter,
   kRowDownlinkLoss,
   kRowDownlinkBurst,
+  kRowPredictorForm,
   kParameterRows,
 };
 
@@ -88,6 +89,10 @@ constexpr ParameterSpec kParameterTable[kParameterRows] = {
      nullptr, "downlink_loss"},
     {"link/downlink/burst", ParamKind::kReal, 1, 1, 1000, "samples",
      "link: mean run of lost command packets (1: independent losses)", nullptr, "downlink_burst"},
+    {"predictor/form", ParamKind::kWord, 0, 0, 2, "",
+     "state predictor (docs/predictor.md): the law flies on the state of the step its command acts on, predicted by "
+     "a model (predictor/model; live: the node's vehicle file when none was given)",
+     "off|resimulate|smith", "predictor"},
 };
 
 // The row of a live setting's name, or nullptr.
