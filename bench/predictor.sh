@@ -3,11 +3,12 @@
 # docs/predictor.md, "What it costs"), interleaved in one run: 16 x 16 gains
 # of the thesis grid's range at each delay d in {0, 8, 16, 32, 63}, the plain
 # law, resimulate and smith, on the scalar backend (one simulation at a
-# time: the predictor has no SIMD lanes yet), no early stop so that every
-# run has the study's 1801 steps; 3 rounds, medians. Prints the time per
-# control step of each, the ratios to the plain law at the same delay, and
-# resimulate's extra cost per unit of delay (the slope over d, in plain
-# control steps per sample of delay).
+# time), no early stop so that every run has the study's 1801 steps; 3
+# rounds, medians. Prints the time per control step of each, the ratios to
+# the plain law at the same delay, and resimulate's extra cost per unit of
+# delay (the slope over d). Then the thesis grid (65,536 runs, delay 0..63)
+# on the cpu backend's SIMD lanes, plain, resimulate and smith, one round:
+# control steps per second and the ratios.
 set -eo pipefail
 BUILD=${1:-build}
 source "$(dirname "$0")/workspace.sh"
@@ -57,5 +58,21 @@ slope = sum((x - mx) * (y - my) for x, y in zip(ds, ys)) / sum((x - mx) ** 2 for
 plain = statistics.mean(us[("off", d)] for d in ds)
 print("resimulate costs %.3f us per control step more per sample of delay (least squares over d = %s): "
       "%.2f plain control steps (%.3f us, their mean)" % (slope, ", ".join(map(str, ds)), slope / plain, plain))
+PY
+for form in off resimulate smith; do
+  sed -E "s/^  name: .*/  name: bench_grid_$form/; s|vehicles/ardrone2.yaml|$CONFIG/vehicles/ardrone2.yaml|; \
+          s|tasks/positioning.yaml|$CONFIG/tasks/positioning.yaml|; s/^    form: resimulate/    form: '$form'/" \
+    config/sweeps/positioning_delay_predictor.yaml > "$DIR/grid-$form.yaml"
+  line=$("$BUILD/devel/lib/aurora_sweep/sweep" --config "$DIR/grid-$form.yaml" --out "$DIR/out" --backend cpu \
+         --output none --overwrite --quiet 2>&1 | grep -E "control steps/s")
+  echo "$form $(echo "$line" | sed -nE 's/.*; ([0-9.]+) s, .* ([0-9.e+]+) control steps\/s.*/\1 \2/p')" >> "$DIR/grid"
+done
+python3 - "$DIR/grid" <<'PY'
+import sys
+runs = {f: (float(s), float(r)) for f, s, r in (line.split() for line in open(sys.argv[1]))}
+plain = runs["off"][1]
+for form, (s, r) in runs.items():
+    print("thesis grid on the SIMD lanes, %-10s %7.2f s, %.3g control steps/s (%.2fx the plain law's time per step)" % (
+        form + ":", s, r, plain / r))
 PY
 echo "sweep files and times: $DIR"

@@ -41,6 +41,7 @@ inline void iterationNumber(const batch<as_integer_t<T>, A>& k, batch<T, A>& out
 
 #include "aurora_sweep/backends.h"
 #include "lane_history.h"
+#include "lane_predictor.h"
 
 namespace aurora_sweep {
 
@@ -54,8 +55,9 @@ constexpr long kChunk = 64;
 // Runs the combinations [first, total) of `grid` on the lanes of batches of
 // instruction set Arch, law `Law` on its vehicle (setup), histories of
 // Capacity samples; each lane's iteration is loopIteration (closed_loop.h)
-// over lane policies (lane_history.h).
-template <typename T, class Arch, int Capacity, class Law>
+// over lane policies (lane_history.h), with the state predictor when
+// `Predicted` (lane_predictor.h: the history then keeps whole states).
+template <typename T, class Arch, int Capacity, class Law, bool Predicted = false>
 class BatchWorker {
  public:
   using LaneOps = Lanes<T, Arch>;
@@ -64,7 +66,9 @@ class BatchWorker {
   static constexpr int L = LaneOps::L;
   using Vehicle = typename Law::Vehicle;
   using Data = typename Law::Data;
-  using History = LaneHistory<Law, T, Arch, Capacity>;
+  using Reader = typename std::conditional<Predicted, aurora_control::WholeStateReader<Vehicle>, Law>::type;
+  using History = LaneHistory<Reader, T, Arch, Capacity>;
+  using Predictor = LanePredictor<Vehicle, T, Arch, 2 * Capacity>;
   using Int = typename History::Int;
   using I = typename History::I;
 
@@ -72,7 +76,7 @@ class BatchWorker {
               std::vector<SimResult>& out, std::atomic<long>& next, Progress& progress)
       : grid_(grid), first_(first), total_(total), out_(out), next_(next), progress_(progress), setup_(setup) {
     if (!setup_.ideal_link) {
-      links_.reset(new LaneModelLinks<Law, T, Arch, Capacity>(setup_.config.link, double(setup_.model.Ts), history_));
+      links_.reset(new LaneModelLinks<Reader, T, Arch, Capacity>(setup_.config.link, double(setup_.model.Ts), history_));
     }
     loop_.model = setup_.model.template cast<B>();
     loop_.plant = loop_.model;  // per lane when the model varies (startLane)
@@ -133,10 +137,9 @@ class BatchWorker {
     const bool have = takeIndex(index);
     const Combination c = grid_.decode(have ? index : first_);
     const aurora_control::StudyRun<Data, T> run = studyRun<Law>(setup_, c);
-    if (links_) {
-      links_->startLane(l, combinationLink(setup_.config.link, run.delay, c), run.delay, static_cast<uint64_t>(c.key),
-                        double(setup_.model.Ts));
-    }
+    const aurora_control::LinkParams link = combinationLink(setup_.config.link, run.delay, c);
+    if (links_) links_->startLane(l, link, run.delay, static_cast<uint64_t>(c.key), double(setup_.model.Ts));
+    predictor_.startLane(l, links_ ? link.downlink.delay : 0);
     active_[l] = have;
     index_[l] = index;
     LaneOps::set(ideal_.delay, l, static_cast<Int>(run.delay));
@@ -167,15 +170,29 @@ class BatchWorker {
     progress_.fetch_add(1, std::memory_order_relaxed);
   }
 
-  // Each lane's iteration k (loopIteration), over the delay rule or its link.
+  // Each lane's iteration k (loopIteration), over the delay rule or its
+  // link, with the predictor or without.
   M iterate() {
-    const I k = history_.size();
+    const std::integral_constant<bool, Predicted> predicted;
+    if (links_) return iterateOver(*links_, predicted);
+    return iterateOver(ideal_, predicted);
+  }
+  template <class H, class Link>
+  M iterationOver(H& history, Link& link) {
+    const I k = history_.size();  // a copy: the iteration's push moves the count
     const aurora_control::NoObserver none;
-    const bool early = setup_.config.early_stop;
-    if (links_) return aurora_control::loopIteration<Law>(loop_, setup_.config.task, clamp_, early, k, history_,
-                                                          *links_, sim_, none);
-    return aurora_control::loopIteration<Law>(loop_, setup_.config.task, clamp_, early, k, history_, ideal_, sim_,
-                                              none);
+    return aurora_control::loopIteration<Law>(loop_, setup_.config.task, clamp_, setup_.config.early_stop, k,
+                                              history, link, sim_, none);
+  }
+  template <class Link>
+  M iterateOver(Link& link, std::false_type) {
+    return iterationOver(history_, link);
+  }
+  template <class Link>
+  M iterateOver(Link& link, std::true_type) {
+    PredictedLaneHistory<History, Predictor> history{history_, predictor_};
+    PredictedLaneLink<Link, Predictor> predicted{link, predictor_};
+    return iterationOver(history, predicted);
   }
 
   // One iteration on every lane; a lane whose run ended (its last
@@ -210,7 +227,11 @@ class BatchWorker {
   aurora_control::LoopState<Data, B, M> sim_;
   History history_;
   aurora_control::IdealLinkOf<I> ideal_{I(Int(0))};        // each lane's delay [samples], over the delay rule
-  std::unique_ptr<LaneModelLinks<Law, T, Arch, Capacity>> links_;  // or each lane's link model
+  std::unique_ptr<LaneModelLinks<Reader, T, Arch, Capacity>> links_;  // or each lane's link model
+  // With Predicted, in this object (its batches need the alignment the
+  // engine's C++14 `new` does not give; its rings are on the heap).
+  typename std::conditional<Predicted, Predictor, NoLanePredictor>::type predictor_{
+      setup_.predictor, setup_.predictor_model, vehicleStart<Vehicle, T>(setup_.model), setup_.config.clamp_at_drone};
   bool active_[L];
   long index_[L];
 };
@@ -247,7 +268,11 @@ template <typename T, class Arch, int Capacity, class Law>
 void runBatchWith(const SweepSpec& spec, int threads, std::vector<SimResult>& out, Progress& progress) {
   const auto setup = makeSetup<typename Law::Vehicle, T>(spec);
   onRange(spec, threads, out, [&](const GridView& grid, long first, long total, std::atomic<long>& next) {
-    BatchWorker<T, Arch, Capacity, Law>(setup, grid, first, total, out, next, progress).run();
+    if (spec.predicting()) {
+      BatchWorker<T, Arch, Capacity, Law, true>(setup, grid, first, total, out, next, progress).run();
+    } else {
+      BatchWorker<T, Arch, Capacity, Law>(setup, grid, first, total, out, next, progress).run();
+    }
   });
 }
 

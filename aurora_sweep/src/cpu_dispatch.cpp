@@ -101,11 +101,8 @@ void runOn(const Isa& isa, const SweepSpec& spec, int threads, std::vector<SimRe
 
 }  // namespace
 
-// The predictor has no SIMD lanes yet: its runs take one thread each
-// (the same body as the scalar backend's, so the same results).
 void runCpuBatch(const SweepSpec& spec, int threads, std::vector<SimResult>& out,
                  Progress& progress) {
-  if (spec.predicting()) return runThreadedScalar(spec, threads, out, progress);
   runOn(chosen(), spec, threads, out, progress);
 }
 

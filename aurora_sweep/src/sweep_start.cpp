@@ -85,10 +85,7 @@ StartCheck chooseBackend(const Options& opt, const SweepSpec& spec, RunInfo& inf
       info.device = cpuBatchArch(spec.precision);
       info.lanes = cpuBatchLanes(spec.precision);
     }
-    if (info.backend == "cpu" && spec.predicting()) {
-      info.device = "threads, one simulation each (the state predictor has no SIMD lanes yet)";
-      info.lanes = 1;
-    }
+
   } catch (const std::exception& e) {
     return {2, e.what()};
   }

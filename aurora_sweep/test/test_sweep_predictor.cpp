@@ -1,6 +1,6 @@
 // Sweeps with the state predictor (issue 35, docs/predictor.md, "In a
 // sweep"): with the nominal model as plant every delay of a grid flies as
-// no delay (the same record to the byte); the scalar loop, the cpu backend
+// no delay (the same record to the byte); the scalar loop, the SIMD lanes
 // and the kernel's per-thread entry (on the host) agree, over an ideal link
 // and a congested one, for both forms; the shipped studies load; bad input
 // is refused naming the key (the cuda backend's refusal: test_sweep_cuda).
