@@ -157,13 +157,25 @@ AURORA_HD inline aurora_control::RunnerResult runPredictedCombination(
 // Combination `index`'s run of law `Law` (over its link when `Linked`, with
 // the predictor when `Predicted`): the CUDA thread's and the scalar loop's
 // body.
+// (Without the predictor its code is not instantiated at all: the kernels'
+// registers stay those of the loop without it.)
+template <class Law, typename T, int Capacity, bool Linked, class Setup>
+AURORA_HD inline aurora_control::RunnerResult runCombinationOf(const Setup& setup, const Combination& c,
+                                                               std::false_type /*predicted*/) {
+  return runCombination<Law, T, Capacity>(setup, c, studyRun<Law>(setup, c), std::integral_constant<bool, Linked>());
+}
+template <class Law, typename T, int Capacity, bool Linked, class Setup>
+AURORA_HD inline aurora_control::RunnerResult runCombinationOf(const Setup& setup, const Combination& c,
+                                                               std::true_type /*predicted*/) {
+  return runPredictedCombination<Law, T, Capacity>(setup, c, studyRun<Law>(setup, c),
+                                                   std::integral_constant<bool, Linked>());
+}
 template <class Law, typename T, int Capacity, bool Linked = false, bool Predicted = false>
 AURORA_HD inline SimResult simulateCombination(const SimSetup<typename Law::Vehicle, T>& setup, const GridView& grid,
                                                long index) {
   const Combination c = grid.decode(index);
-  const std::integral_constant<bool, Linked> linked;
-  if (Predicted) return compactResult(runPredictedCombination<Law, T, Capacity>(setup, c, studyRun<Law>(setup, c), linked));
-  return compactResult(runCombination<Law, T, Capacity>(setup, c, studyRun<Law>(setup, c), linked));
+  return compactResult(
+      runCombinationOf<Law, T, Capacity, Linked>(setup, c, std::integral_constant<bool, Predicted>()));
 }
 
 }  // namespace aurora_sweep
