@@ -109,6 +109,28 @@ class PythonSweepTest(unittest.TestCase):
             self.assertEqual(len(results), 4096)
             self.assertTrue(np.array_equal(results["index"].to_numpy(), np.arange(4096)))
 
+    def test_a_study_with_and_without_the_predictor(self):
+        """Issue 35: aurora.sweep runs a sweep file's predictor (with the nominal model every delay flies as
+        none), and plot_sweep --compare draws the two side by side."""
+        with_predictor = thesis_cut()
+        with_predictor["sweep"]["predictor"] = {"form": "smith"}
+        with tempfile.TemporaryDirectory() as tmp:
+            plain, _ = aurora.sweep(thesis_cut(), out=tmp + "/plain", backend="cpu", progress=False)
+            predicted, summary = aurora.sweep(with_predictor, out=tmp + "/predicted", backend="cpu", progress=False)
+            self.assertEqual(summary["predictor"]["form"], "smith")
+            at_zero = predicted[predicted.delay == 0].feasible.sum()
+            self.assertEqual(predicted.feasible.sum(), 8 * at_zero)  # every delay as delay 0
+            self.assertGreater(predicted.feasible.sum(), 2 * plain.feasible.sum())
+            rc = subprocess.run(["rosrun", "aurora_sweep", "plot_sweep", "--compare", tmp + "/plain",
+                                 tmp + "/predicted", tmp + "/cmp"]).returncode
+            self.assertEqual(rc, 0)
+            self.assertEqual(sorted(os.listdir(tmp + "/cmp")),
+                             ["compare_feasible_share.png", "compare_max_tolerable_delay.png"])
+            bad = subprocess.run(["rosrun", "aurora_sweep", "plot_sweep", "--compare", tmp + "/plain"],
+                                 stderr=subprocess.PIPE, text=True)
+            self.assertEqual(bad.returncode, 2)
+            self.assertIn("give two sweeps' output folders and a folder for the figures", bad.stderr)
+
     def test_share_contours_draw_only_the_levels_crossed(self):
         """Issue 31: a grid all feasible printed matplotlib's "No contour
         levels were found" warning with its source line."""

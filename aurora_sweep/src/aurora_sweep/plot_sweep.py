@@ -8,6 +8,13 @@ stay fast: the projections aggregate every row, the 3D scatter shows a fixed
 random subsample (seed 0) of at most MAX_SCATTER points and says so.
 
     plot_sweep DIR
+    plot_sweep --compare DIR_A DIR_B OUT
+
+--compare draws two sweeps side by side (e.g. a study with and without the
+state predictor, docs/predictor.md): their max tolerable delay maps on one
+colour scale (compare_max_tolerable_delay.png) and their feasible shares
+against the delay and, where the plant's model factors vary, against the
+largest factor error (compare_feasible_share.png).
 """
 import csv
 import json
@@ -213,18 +220,28 @@ def formation_delays(np, plt, cols, ok, summary, out):
     plt.close(fig)
 
 
-def max_tolerable_delay(np, plt, gains, kp, kd, delay, feasible, summary, out):
-    """For each pair of the two gains (Kp, Kd for the PD law): the largest d
-    such that every delay up to d is feasible (-1 when delay 0 already
-    fails): the thesis's question."""
+def tolerable_delays(np, kp, kd, delay, feasible):
+    """For each pair of the two gains: the largest d such that every delay
+    up to d is feasible (NaN when delay 0 already fails); None unless the
+    rows are a whole gains x delay grid."""
     ukp, ukd, ud = np.unique(kp), np.unique(kd), np.unique(delay)
     if len(ukp) < 2 or len(ukd) < 2 or len(ud) < 2 or len(kp) != len(ukp) * len(ukd) * len(ud):
-        return
+        return None
     grid = np.zeros((len(ukd), len(ukp), len(ud)), dtype=bool)
     grid[np.searchsorted(ukd, kd), np.searchsorted(ukp, kp), np.searchsorted(ud, delay)] = feasible
     first_fail = np.where(grid.all(axis=2), len(ud), np.argmin(grid, axis=2))
     tolerable = np.where(first_fail > 0, ud[np.maximum(first_fail - 1, 0)], -1).astype(float)
     tolerable[tolerable < 0] = np.nan
+    return ukp, ukd, tolerable
+
+
+def max_tolerable_delay(np, plt, gains, kp, kd, delay, feasible, summary, out):
+    """The thesis's question for each pair of the two gains (Kp, Kd for the
+    PD law): the largest delay up to which every delay is feasible."""
+    found = tolerable_delays(np, kp, kd, delay, feasible)
+    if found is None:
+        return
+    ukp, ukd, tolerable = found
     fig, ax = plt.subplots(figsize=(7, 5.5))
     im = ax.pcolormesh(cell_edges(np, ukp), cell_edges(np, ukd), tolerable, cmap="viridis")
     fig.colorbar(im, ax=ax, label="max tolerable delay [samples]")
@@ -312,7 +329,90 @@ def read_sweep(np, out):
     return summary, names, flags, read_results(np, out, names, flags)
 
 
+def sweep_label(summary, fallback):
+    """A sweep by its name and its predictor (docs/predictor.md)."""
+    predictor = summary.get("predictor", "off")
+    form = predictor.get("form", "off") if isinstance(predictor, dict) else predictor
+    return "%s (predictor %s)" % (summary.get("name", fallback), form)
+
+
+def compare_tolerable(np, plt, runs, out):
+    """Two sweeps' max tolerable delay maps side by side, one colour scale."""
+    maps = []
+    for summary, names, cols, ok in runs:
+        gains = summary.get("delay_monotony", {}).get("gains", ["kp", "kd"])
+        if not set(gains + ["delay"]) <= set(names):
+            return
+        found = tolerable_delays(np, cols[gains[0]], cols[gains[1]], cols["delay"], ok)
+        if found is None:
+            return
+        maps.append((gains, found))
+    top = max(np.nanmax(t) if np.isfinite(t).any() else 0 for _, (_, _, t) in maps)
+    fig, axes = plt.subplots(1, 2, figsize=(13, 5.5))
+    for ax, (summary, _, _, _), (gains, (ukp, ukd, tolerable)) in zip(axes, runs, maps):
+        im = ax.pcolormesh(cell_edges(np, ukp), cell_edges(np, ukd), tolerable, cmap="viridis", vmin=0, vmax=top)
+        ax.set_xlabel(gain_label(gains[0]))
+        ax.set_ylabel(gain_label(gains[1]))
+        ax.set_title("%s\n%d gain pairs tolerate some delay" % (sweep_label(summary, "?"), np.isfinite(tolerable).sum()))
+    fig.colorbar(im, ax=axes, label="max tolerable delay [samples] (blank: none)")
+    fig.savefig(os.path.join(out, "compare_max_tolerable_delay.png"), dpi=100)
+    plt.close(fig)
+
+
+def compare_shares(np, plt, runs, out):
+    """The feasible share of each sweep against the delay and, where the
+    plant's model factors vary, against the largest factor error max |f - 1|
+    (what model error leaves of a remedy)."""
+    axes_of = [("delay", "delay [samples]", lambda cols: cols["delay"])]
+    factors = [f for f in MODEL_FACTORS if all(f in names for _, names, _, _ in runs)]
+    if factors:
+        axes_of.append(("model error", "largest model factor error max |f - 1| over " + ", ".join(factors),
+                        lambda cols: np.max(np.abs(np.stack([cols[f] for f in factors]) - 1.0), axis=0)))
+    axes_of = [a for a in axes_of if all(a[0] != "delay" or "delay" in names for _, names, _, _ in runs)]
+    if not axes_of:
+        return
+    fig, axes = plt.subplots(1, len(axes_of), figsize=(6.5 * len(axes_of), 4.5), squeeze=False)
+    for ax, (_, label, values) in zip(axes[0], axes_of):
+        for summary, _, cols, ok in runs:
+            idx, centres = binned(np, values(cols), bins=16)
+            ax.plot(centres, share(np, idx, ok, len(centres)), "o-", label=sweep_label(summary, "?"))
+        ax.set_xlabel(label)
+        ax.set_ylabel("feasible share")
+        ax.set_ylim(-0.02, 1.02)
+        ax.grid(True, alpha=0.3)
+        ax.legend(loc="best", fontsize=8)
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "compare_feasible_share.png"), dpi=100)
+    plt.close(fig)
+
+
+def compare(argv):
+    """plot_sweep --compare DIR_A DIR_B OUT: two sweeps' results side by side."""
+    if len(argv) != 3:
+        print("plot_sweep --compare: give two sweeps' output folders and a folder for the figures "
+              "(plot_sweep --compare DIR_A DIR_B OUT)", file=sys.stderr)
+        return 2
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    import numpy as np
+    runs = []
+    for d in argv[:2]:
+        try:
+            summary, names, flags, cols = read_sweep(np, d)
+        except (OSError, KeyError) as e:
+            print("plot_sweep: cannot read the results in %s: %s" % (d, e), file=sys.stderr)
+            return 2
+        runs.append((summary, names, cols, cols["feasible"] == 1))
+    os.makedirs(argv[2], exist_ok=True)
+    compare_tolerable(np, plt, runs, argv[2])
+    compare_shares(np, plt, runs, argv[2])
+    return 0
+
+
 def main(argv):
+    if argv and argv[0] == "--compare":
+        return compare(argv[1:])
     if len(argv) != 1 or argv[0] in ("-h", "--help"):
         print(__doc__)
         return 0 if argv and argv[0] in ("-h", "--help") else 2
