@@ -97,8 +97,9 @@ void loadControllerFile(const std::string& path, Overrides& o) {
   try {
     o.controller_path = path;
     if (readControllerPredictor(path).form != PredictorForm::kOff) {
-      throw ConfigError("--controller " + path + ": its 'predictor' block is refused here: replay does not run the "
-                        "state predictor yet (docs/predictor.md, \"Not yet\"); give the file without it");
+      throw ConfigError("--controller " + path + ": its 'predictor' block is refused here: replay follows the "
+                        "predictor the bag's Control messages say the node ran (docs/predictor.md, \"In the ROS "
+                        "loop\"); give the file without it, and --predictor-model FILE for its model");
     }
     o.controller_name = controllerFileName(path);
     o.law = true;
@@ -135,6 +136,7 @@ struct Arguments {
   std::string bag_path, ns, out_path;
   std::string vehicle_path;  // default: configDir()/vehicles/ardrone2.yaml
   std::string link_path;     // default: the ideal link
+  std::string predictor_model_path;  // default: the vehicle file (docs/predictor.md, "In the ROS loop")
   bool expect_identical = false;
   Overrides o;
 };
@@ -160,6 +162,9 @@ po::options_description describe(Arguments& args, Given& g) {
       ("link", po::value(&args.link_path)->value_name("FILE"),
        "link YAML (config/links/*.yaml, docs/links.md): replay over that link (the delay stays the recorded or given one)")
       ("delay-seconds", po::value(&g.delay_seconds)->value_name("S"), "delay in seconds (rounded to whole samples)")
+      ("predictor-model", po::value(&args.predictor_model_path)->value_name("FILE"),
+       "vehicle YAML the node's state predictor used as its model, where the bag's Control.predictor is on "
+       "(default: the vehicle file, as the node's live switch takes)")
       ("clamp", "clamp commands to [-1, 1]")
       ("no-clamp", "do not clamp commands")
       ("out", po::value(&args.out_path)->value_name("FILE"), "CSV: step, recorded and replayed commands per cycle")
@@ -451,6 +456,40 @@ const char* configurationText(const Arguments& args, const std::vector<aurora_ms
   return " (recorded configuration)";
 }
 
+// The state predictor as the node ran it at cycle c (Control.predictor,
+// docs/predictor.md): set up again where the recorded form changes, as the
+// node's live switch does; its model the --predictor-model file or the
+// vehicle file; its command delay the link's; its horizon what the recorded
+// step it predicted says (prediction_step = step + command delay + horizon).
+template <class Core>
+void followPredictor(const Arguments& args, const aurora_msgs::Control& c, Core& core) {
+  using Vehicle = typename Core::Vehicle;
+  PredictorForm form = PredictorForm::kOff;
+  if (!c.predictor.empty() && !predictorFormOf(c.predictor, form)) {
+    fail("control message of step " + std::to_string(c.step) + ": predictor '" + c.predictor + "' is unknown");
+  }
+  if (form == core.settings.predictor) return;
+  core.settings.predictor = form;
+  PredictorRun<Vehicle, double> p;
+  p.form = form;
+  try {
+    p.model = args.predictor_model_path.empty()
+                  ? core.settings.vehicle
+                  : aurora_sim::loadVehicleFile<Vehicle>(args.predictor_model_path, "replay --predictor-model");
+  } catch (const ConfigError& e) {
+    fail(e.what());
+  }
+  const long delay = core.settings.link.downlink.delay;
+  const long horizon = form == PredictorForm::kOff ? 0 : static_cast<long>(c.prediction_step - c.step) - delay;
+  if (horizon < 0) {
+    fail("control message of step " + std::to_string(c.step) + ": it predicted step " +
+         std::to_string(c.prediction_step) + ", before the command delay of " + std::to_string(delay) +
+         " samples: give the flight's link with --link FILE");
+  }
+  p.path = CommandPath{delay, horizon, true};
+  core.configurePredictor(p);
+}
+
 // Replays the recorded cycles with the law of Settings; the exit status.
 template <class Settings>
 int replayCycles(const Arguments& args, const std::string& ns, const std::map<long, StateSample>& states,
@@ -481,6 +520,7 @@ int replayCycles(const Arguments& args, const std::string& ns, const std::map<lo
     }
     if (core->empty()) continue;
     cycleSettings(c, o, iterations, recorded.task_duration, core->settings);
+    if (c.law_ran) followPredictor(args, c, *core);
     // The law ran when the node says it did.
     const ControlOutput out = c.law_ran ? core->compute(referenceFromMsg(c)) : core->hover();
     bool same = true;
@@ -521,11 +561,6 @@ int run(const Arguments& args) {
   std::vector<aurora_msgs::Control> controls;
   readDrone(bag, args.bag_path, ns, states, controls);
   if (controls.empty() || states.empty()) fail("no " + ns + "/control or " + ns + "/state messages");
-  const std::string predictor = controls.back().predictor;
-  if (!predictor.empty() && predictor != "off") {
-    fail("the bag's controller flew with the " + predictor + " state predictor (Control.predictor): replay does "
-         "not run the predictor yet (docs/predictor.md, \"Not yet\"); its commands cannot be compared");
-  }
   // The law: the --controller file's, else the recorded one (its vehicle's core).
   const std::string law = args.o.law ? args.o.controller_name : controls.front().controller;
   int status = 0;

@@ -3,8 +3,8 @@
 Control says the predictor and the step it predicted, and with the nominal
 model as the simulated vehicle each predicted state is the state that
 later arrives for that step, exactly; the report measures that error (0)
-and draws it; replay refuses the bag naming the predictor rather than
-compare another law's commands."""
+and draws it; replay follows the predictor the bag says the node ran and
+gives every command again (and not with another model)."""
 import json
 import os
 import sys
@@ -59,8 +59,16 @@ class PredictorBagTest(unittest.TestCase):
         self.assertGreater(drone["predictor"]["predictions_checked"], p("steps") - 5)
         self.assertTrue(os.path.exists(os.path.join(out, ns.strip("/") + "_prediction.png")))
         rc, log = run(["rosrun", "aurora_control", "replay", bag, "--expect-identical"])
-        self.assertEqual(rc, 2, log)
-        self.assertIn("flew with the resimulate state predictor", log)
+        self.assertEqual(rc, 0, log)
+        self.assertIn(" 0 differ, max |dU| = 0 ", log)
+        # Not vacuous: with another model the predictions, and so the commands, differ.
+        heavy = os.path.join(out, "heavy.yaml")
+        with open(os.path.join(p("config_dir"), "vehicles", "ardrone2.yaml")) as f:
+            text = f.read()
+        with open(heavy, "w") as f:
+            f.write(text.replace("mass: 0.429 ", "mass: 0.5 "))
+        rc, log = run(["rosrun", "aurora_control", "replay", bag, "--predictor-model", heavy, "--expect-identical"])
+        self.assertEqual(rc, 1, log)
         os.remove(bag)
 
 

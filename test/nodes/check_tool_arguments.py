@@ -57,12 +57,12 @@ class ToolArgumentsTest(unittest.TestCase):
     def test_two_clamp_choices(self):
         self.assert_refused(["--clamp", "--no-clamp"], "--clamp and --no-clamp exclude each other")
 
-    def test_a_predictor_it_cannot_replay(self):
-        # Issue 35: replay does not run the predictor yet; it refuses rather than replay another law.
+    def test_a_predictor_block_for_replay(self):
+        # Issue 35: replay follows the predictor the bag records; a file's block would be a second source.
         cfg = subprocess.run(["rospack", "find", "aurora_config"], stdout=subprocess.PIPE,
                              universal_newlines=True, check=True).stdout.strip()
         self.assert_refused(["--controller", cfg + "/controllers/pd_saturated_predictor.yaml"],
-                            "its 'predictor' block is refused here: replay does not run the state predictor yet")
+                            "its 'predictor' block is refused here: replay follows the predictor the bag's Control")
 
     def test_delay_beyond_the_node_limit(self):
         self.assert_refused(["--delay", "2048"], "--delay 2048 is refused: accepted integer samples in [0, 2047]")
