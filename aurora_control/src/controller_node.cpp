@@ -164,7 +164,7 @@ void ControllerNodeOf<Settings>::loadPredictor() {
   const std::string form = aurora_common::requireParam<std::string>(pnh_, "predictor/form", "resimulate, smith, off");
   if (!predictorFormOf(form, f.form)) {
     throw aurora_common::ConfigError("parameter '" + aurora_common::fullKey(pnh_, "predictor/form") + "' = '" + form +
-                                     "' is unknown: accepted 'resimulate', 'smith', 'off'");
+                                     "' is unknown: " + acceptedPredictorForms());
   }
   if (f.form == PredictorForm::kOff) return;
   f.model = aurora_common::requireParam<std::string>(pnh_, "predictor/model", "a vehicle file");
@@ -174,7 +174,7 @@ void ControllerNodeOf<Settings>::loadPredictor() {
                                        f.model + "' is relative, but no ~controller_file says to what: give an "
                                        "absolute path, or ~controller_file");
     }
-    f.model = folderOf(controller_file) + "/" + f.model;
+    f.model = aurora_common::folderOf(controller_file) + "/" + f.model;
   }
   f.horizon = aurora_common::rangedParam(pnh_, "predictor/horizon", 0.0, 0.0, 1e9, "s");
   const LinkParams& link = core_->settings.link;

@@ -57,7 +57,7 @@ TEST(LiveSettings, ThePredictorSwitchesByItsWord) {
   ControllerSettings s = pd();
   const LiveChange on{"predictor", std::nan(""), "smith"}, bad{"predictor", std::nan(""), "kalman"};
   EXPECT_EQ(checkLiveChange(s, on, 1801), "");
-  EXPECT_EQ(checkLiveChange(s, bad, 1801), "predictor = 'kalman' is refused: accepted 'off', 'resimulate', 'smith'");
+  EXPECT_EQ(checkLiveChange(s, bad, 1801), "predictor = 'kalman' is refused: accepted 'resimulate', 'smith', 'off'");
   applyLiveChange(s, on);
   EXPECT_EQ(s.predictor, PredictorForm::kSmith);
   applyLiveChange(s, LiveChange{"predictor", std::nan(""), "off"});

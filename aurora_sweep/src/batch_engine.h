@@ -137,9 +137,13 @@ class BatchWorker {
     const bool have = takeIndex(index);
     const Combination c = grid_.decode(have ? index : first_);
     const aurora_control::StudyRun<Data, T> run = studyRun<Law>(setup_, c);
-    const aurora_control::LinkParams link = combinationLink(setup_.config.link, run.delay, c);
-    if (links_) links_->startLane(l, link, run.delay, static_cast<uint64_t>(c.key), double(setup_.model.Ts));
-    predictor_.startLane(l, links_ ? link.downlink.delay : 0);
+    long command_delay = 0;  // over the ideal link none
+    if (links_) {
+      const aurora_control::LinkParams link = combinationLink(setup_.config.link, run.delay, c);
+      links_->startLane(l, link, run.delay, static_cast<uint64_t>(c.key), double(setup_.model.Ts));
+      command_delay = link.downlink.delay;
+    }
+    predictor_.startLane(l, command_delay);
     active_[l] = have;
     index_[l] = index;
     LaneOps::set(ideal_.delay, l, static_cast<Int>(run.delay));

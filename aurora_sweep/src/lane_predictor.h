@@ -54,7 +54,6 @@ class LanePredictor {
     Lanes<T, Arch>::set(open_step_, l, Int(0));
     setLane(anchor_, l, start_);
     setLane(open_, l, start_);
-    for (int i = 0; i < kStates; ++i) Lanes<T, Arch>::set(anchor_X_[i], l, start_.X[i]);
     storeLane(l, pushed_ + 1, start_.X);  // the open loop's step 0
   }
 
@@ -107,15 +106,14 @@ class LanePredictor {
     }
   }
 
-  // Eq. P1's anchor: moved to each lane's newer state (not to an older one).
+  // The anchor moved to each lane's newer state (not to an older one); for
+  // resimulate the model's whole state stepped to it first (smith keeps
+  // only the received states), as StatePredictor::receive.
   void receive(const I& r, const B xc[kStates]) {
-    steppedTo(anchor_, anchor_step_, r, nullptr);
+    if (form_ != aurora_control::PredictorForm::kSmith) steppedTo(anchor_, anchor_step_, r, nullptr);
     const M newer = xsimd::bool_cast(r >= anchor_step_);
     anchor_step_ = xsimd::max(anchor_step_, r);
-    for (int i = 0; i < kStates; ++i) {
-      anchor_.X[i] = xsimd::select(newer, xc[i], anchor_.X[i]);
-      anchor_X_[i] = xsimd::select(newer, xc[i], anchor_X_[i]);
-    }
+    for (int i = 0; i < kStates; ++i) anchor_.X[i] = xsimd::select(newer, xc[i], anchor_.X[i]);
   }
 
   // Eq. P2 on every lane.
@@ -125,7 +123,7 @@ class LanePredictor {
     State ahead = open_;
     const I at = slotOf(anchor_step_) * I(Int(kStates * L)) + lane_;
     for (int i = 0; i < kStates; ++i) {
-      xp[i] = anchor_X_[i] + (ahead.X[i] - gatherLanes<B>(open_X_.data(), at + I(Int(i * L))));
+      xp[i] = anchor_.X[i] + (ahead.X[i] - gatherLanes<B>(open_X_.data(), at + I(Int(i * L))));
     }
   }
 
@@ -168,8 +166,7 @@ class LanePredictor {
   std::vector<T> open_X_;                                 // [slot][state][lane]
   I lane_, base_ = I(Int(0)), delay_ = I(Int(0));
   I k_ = I(Int(0)), anchor_step_ = I(Int(0)), open_step_ = I(Int(0));
-  State anchor_, open_;
-  B anchor_X_[kStates];
+  State anchor_, open_;  // the newest state received (resimulate: the model's whole state there); the open loop
   long pushed_ = 0;
 };
 

@@ -34,11 +34,6 @@ class Reader : public aurora_control::YamlReader {
   std::string file_;
 };
 
-std::string dirOf(const std::string& path) {
-  const auto slash = path.find_last_of('/');
-  return slash == std::string::npos ? "." : path.substr(0, slash);
-}
-
 bool fileExists(const std::string& path) { return std::ifstream(path).good(); }
 
 std::string resolve(const std::string& name, const std::string& sweep_dir,
@@ -508,11 +503,8 @@ void readSweepVehicle(const Reader& r, const YAML::Node& s, const std::string& s
 void readSweepPredictor(const Reader& r, const YAML::Node& n, const std::string& sweep_dir,
                         const std::string& config_dir, SweepSpec& spec) {
   r.onlyKeys(n, "sweep.predictor", {"form", "model"});
-  const std::string form = r.text(r.require(n, "sweep.predictor", "form", "resimulate, smith, off"),
-                                  "sweep.predictor.form");
-  if (!aurora_control::predictorFormOf(form, spec.predictor)) {
-    r.fail("sweep.predictor.form", "= '" + form + "' is unknown: accepted 'resimulate', 'smith', 'off'");
-  }
+  spec.predictor = aurora_control::predictorFormNamed(
+      r, r.require(n, "sweep.predictor", "form", "resimulate, smith, off"), "sweep.predictor.form");
   if (spec.predicting() && spec.formation()) {
     r.fail("sweep.predictor", "is refused for a formation sweep: its drones have no predictor yet");
   }
@@ -536,7 +528,7 @@ SweepSpec parseSweepFile(const std::string& path, const std::string& config_dir)
                           "seed", "link", "repeats", "predictor"});
   SweepSpec spec;
   spec.file = path;
-  const std::string sweep_dir = dirOf(path);
+  const std::string sweep_dir = aurora_common::folderOf(path);
   spec.name = s["name"] ? r.text(s["name"], "sweep.name") : "sweep";
 
   readSweepVehicle(r, s, sweep_dir, config_dir, spec);

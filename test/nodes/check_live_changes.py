@@ -137,7 +137,7 @@ class LiveChangesTest(unittest.TestCase):
     def test_1e_the_predictor_switches_live(self):
         # Issue 35 (docs/predictor.md): dynparam predictor resimulate | smith | off; the node's vehicle file is
         # its model; Control says it at once; an unknown form is refused.
-        self.refused({"predictor": "kalman"}, "predictor = 'kalman' is refused: accepted 'off', 'resimulate', 'smith'")
+        self.refused({"predictor": "kalman"}, "predictor = 'kalman' is refused: accepted 'resimulate', 'smith', 'off'")
         self.assertEqual(self.controls[-1].predictor, "off")
         self.reconfigure.update_configuration({"predictor": "resimulate"})
         start = len(self.controls)

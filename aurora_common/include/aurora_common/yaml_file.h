@@ -45,6 +45,13 @@ inline void refuseDuplicates(const YAML::Node& n, const std::string& where, cons
 
 }  // namespace yaml_detail
 
+// The folder of a file's path ("." for a bare name): where the files it
+// names by relative paths are looked for first.
+inline std::string folderOf(const std::string& path) {
+  const size_t slash = path.rfind('/');
+  return slash == std::string::npos ? "." : path.substr(0, slash);
+}
+
 // The root of the YAML file at `path`; `what` names the file's kind in the
 // refusal ("link file 'x.yaml' cannot be read: ...").
 inline YAML::Node loadYamlFile(const std::string& what, const std::string& path) {

@@ -153,9 +153,6 @@ LawFlight<Law> loadFlightOf(Law, const FlightFiles& f, const FlightOptionNames& 
   return loadPioneerFlight<Law>(f, o.no_clamp_option);
 }
 
-// Calls fly(LawFlight<Law>) with the flight of the controller file's law
-// `law` (its controller.name): the one place a flight's law is chosen, for
-// the flight tool and Python.
 // The controller file's predictor (predictor_yaml.h) put into flight `s`:
 // its command delay the link's downlink base delay, the vehicle's clamp
 // its (docs/predictor.md, "The commands applied").
@@ -168,6 +165,9 @@ LawFlight<Law> withPredictor(LawFlight<Law> s, const std::string& controller_fil
   return s;
 }
 
+// Calls fly(LawFlight<Law>) with the flight of the controller file's law
+// `law` (its controller.name): the one place a flight's law is chosen, for
+// the flight tool and Python.
 template <class Fly>
 void withFlight(const FlightFiles& f, const std::string& law, const FlightOptionNames& o, Fly&& fly) {
   if (withOtherLaw(law, [&](auto l) { fly(withPredictor(loadFlightOf(l, f, o), f.controller)); })) return;

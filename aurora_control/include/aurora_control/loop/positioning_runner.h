@@ -120,10 +120,11 @@ struct ObserverAt<Law, T, NoObserver> {
 };
 
 // One whole run of law `Law` with `history` (its read(j) gives the state
-// the law flies on; delay < its capacity, checked by the caller). No exceptions, no allocation: this is
-// also the CUDA kernel's per-thread body. `iterations`: studyIterationCount()
-// for the study, taskStepCount() for a flight. Iteration k (0-based) is
-// loopIteration (closed_loop.h) over `link`.
+// the law flies on; delay < its capacity, checked by the caller). No
+// exceptions, no allocation: this is also the CUDA kernel's per-thread
+// body. `iterations`: studyIterationCount() for the study, taskStepCount()
+// for a flight. Iteration k (0-based) is loopIteration (closed_loop.h)
+// over `link`.
 template <class Law, typename T, typename Observer, typename History, typename Link>
 AURORA_HD RunnerResult runClosedLoopWith(const StudyRun<typename Law::Data, T>& run, const RunnerConfig<T>& cfg,
                                          long iterations, Observer& observe, History& history, Link& link) {

@@ -104,8 +104,7 @@ inline bool loopSettingProblem(const LoopSettings& now, const LiveChange& c, lon
   if (isLinkSetting(c.name)) return problem = linkProblem(now, c), true;
   if (c.name != kParameterTable[kRowPredictorForm].live) return false;
   PredictorForm form;
-  problem = predictorFormOf(c.word, form) ? "" : c.name + " = '" + c.word + "' is refused: accepted 'off', "
-                                                 "'resimulate', 'smith'";
+  problem = predictorFormOf(c.word, form) ? "" : c.name + " = '" + c.word + "' is refused: " + acceptedPredictorForms();
   return true;
 }
 
@@ -145,8 +144,9 @@ inline bool applyLoopChange(LoopSettings& set, const LiveChange& c) {
     set.link = live_detail::withLinkChange(set.link, c);
     return true;
   }
-  if (c.name == kParameterTable[kRowPredictorForm].live) return predictorFormOf(c.word, set.predictor), true;
-  return false;
+  if (c.name != kParameterTable[kRowPredictorForm].live) return false;
+  predictorFormOf(c.word, set.predictor);  // checked by checkLiveChange
+  return true;
 }
 
 // Applies a change checkLiveChange() accepted.

@@ -26,11 +26,8 @@ struct PredictorFile {
   std::string file;      // the controller file it came from (for refusals)
 };
 
-// The folder of a file's path ("." for a bare name), for paths relative to it.
-inline std::string folderOf(const std::string& path) {
-  const size_t slash = path.rfind('/');
-  return slash == std::string::npos ? "." : path.substr(0, slash);
-}
+// The forms' names, as a refusal lists them.
+inline std::string acceptedPredictorForms() { return "accepted 'resimulate', 'smith', 'off'"; }
 
 // The form of a name; false for an unknown one.
 inline bool predictorFormOf(const std::string& name, PredictorForm& form) {
@@ -43,7 +40,7 @@ inline bool predictorFormOf(const std::string& name, PredictorForm& form) {
 inline PredictorForm predictorFormNamed(const YamlReader& r, const YAML::Node& n, const std::string& key) {
   const std::string form = r.text(n, key);
   PredictorForm f = PredictorForm::kOff;
-  if (!predictorFormOf(form, f)) r.fail(key, "= '" + form + "' is unknown: accepted 'resimulate', 'smith', 'off'");
+  if (!predictorFormOf(form, f)) r.fail(key, "= '" + form + "' is unknown: " + acceptedPredictorForms());
   return f;
 }
 
@@ -60,7 +57,7 @@ inline PredictorFile readControllerPredictor(const std::string& path) {
   if (p.form == PredictorForm::kOff) return p;
   const std::string model = r.text(r.require(n, "predictor", "model", "a vehicle file, e.g. ../vehicles/ardrone2.yaml"),
                                    "predictor.model");
-  p.model = model.empty() || model[0] == '/' ? model : folderOf(path) + "/" + model;
+  p.model = model.empty() || model[0] == '/' ? model : aurora_common::folderOf(path) + "/" + model;
   if (n["horizon"]) p.horizon = r.numberIn(n["horizon"], "predictor.horizon", 0.0, 1e9, "s");
   return p;
 }

@@ -37,12 +37,6 @@ struct CommandPath {
   bool clamp = false;
 };
 
-// The rings' size for a history of `history` samples (the oldest state a
-// link may deliver) and the command path.
-AURORA_HD inline long predictorSpan(long history, const CommandPath& path) {
-  return history + path.delay + path.horizon + 2;
-}
-
 template <class Vehicle, typename T, int Window>
 class StatePredictor {
  public:
@@ -51,12 +45,14 @@ class StatePredictor {
   static constexpr int kStates = Vehicle::kStates, kInputs = Vehicle::kInputs;
 
   // The model starts as the vehicle does (Vehicle::start). The caller
-  // checks predictorSpan(history, path) <= Window.
+  // keeps a received state's age plus the command delay below Window
+  // (predictor_yaml.h refuses a horizon beyond the history; a sweep's
+  // window is twice its history).
   AURORA_HD StatePredictor(PredictorForm form, const Params& model, const CommandPath& path)
       : form_(form), model_(model), path_(path) {
     Vehicle::start(model_, anchor_);
     open_ = anchor_;
-    for (int i = 0; i < kStates; ++i) open_X_[0][i] = open_.X[i], anchor_X_[i] = anchor_.X[i];
+    for (int i = 0; i < kStates; ++i) open_X_[0][i] = open_.X[i];
   }
 
   // Iteration k: the state xc of step `received` (<= k) arrived; xp: the
@@ -106,17 +102,18 @@ class StatePredictor {
     Vehicle::step(model_, s, U);
   }
 
-  // A newer state moves the anchor: the model's whole state stepped to its
-  // step (the vehicle's unpublished channels, e.g. the AR.Drone's motors,
-  // stay the model's), its published states the received ones. An older
-  // one (the delay rule's start, a late packet) leaves the newer anchor.
-  // A step more than a window ahead (the node's first state of a source
-  // that ran before) keeps the model's channels as they are.
+  // A newer state moves the anchor, its published states the received ones;
+  // for resimulate the model's whole state is stepped to it first (the
+  // vehicle's unpublished channels, e.g. the AR.Drone's motors, stay the
+  // model's; smith keeps only the received states). An older one (the delay
+  // rule's start, a late packet) leaves the newer anchor. A step more than
+  // a window ahead (the node's first state of a source that ran before)
+  // keeps the model's channels as they are.
   AURORA_HD void receive(long r, const T xc[kStates]) {
     if (r < anchor_step_) return;
-    if (r - anchor_step_ >= Window) anchor_step_ = r;
+    if (r - anchor_step_ >= Window || form_ == PredictorForm::kSmith) anchor_step_ = r;
     for (; anchor_step_ < r; ++anchor_step_) stepModel(anchor_, anchor_step_);
-    for (int i = 0; i < kStates; ++i) anchor_.X[i] = anchor_X_[i] = xc[i];
+    for (int i = 0; i < kStates; ++i) anchor_.X[i] = xc[i];
   }
 
   // Eq. P2: xp = x_a + (m_N - m_a), m the model open loop on the commands
@@ -131,7 +128,7 @@ class StatePredictor {
     State ahead = open_;
     for (long j = open_step_; j < target(); ++j) stepModel(ahead, j);
     const T* then = open_X_[index(anchor_step_)];
-    for (int i = 0; i < kStates; ++i) xp[i] = anchor_X_[i] + (ahead.X[i] - then[i]);
+    for (int i = 0; i < kStates; ++i) xp[i] = anchor_.X[i] + (ahead.X[i] - then[i]);
   }
 
   PredictorForm form_;
@@ -139,8 +136,7 @@ class StatePredictor {
   CommandPath path_;
   T sent_[Window][kInputs] = {};  // the commands sent, by step
   long last_sent_ = -1;           // the newest step sent
-  State anchor_;                  // resimulate: the model's whole state at the anchor
-  T anchor_X_[kStates];           // the newest state received
+  State anchor_;                  // the newest state received (resimulate: the model's whole state there)
   long anchor_step_ = 0;
   State open_;                    // smith: the model open loop, at open_step_
   T open_X_[Window][kStates];     // its states by step
