@@ -157,26 +157,12 @@ void ControllerNodeOf<Settings>::loadPredictor() {
   predictor_base_.model = core_->settings.vehicle;
   predictor_base_.path = CommandPath{0, 0, true};
   if (!pnh_.hasParam("predictor")) return;
-  refuseUnknownParams(pnh_, "predictor", {"form", "model", "horizon"}, "");
-  PredictorFile f;
   const std::string controller_file = aurora_common::paramOr<std::string>(pnh_, "controller_file", "");
-  f.file = controller_file.empty() ? aurora_common::fullKey(pnh_, "predictor") : controller_file;
-  const std::string form = aurora_common::requireParam<std::string>(pnh_, "predictor/form", "resimulate, smith, off");
-  if (!predictorFormOf(form, f.form)) {
-    throw aurora_common::ConfigError("parameter '" + aurora_common::fullKey(pnh_, "predictor/form") + "' = '" + form +
-                                     "' is unknown: " + acceptedPredictorForms());
-  }
+  const PredictorFile f = readPredictorBlock(
+      YamlReader("parameter ", "/"), paramAsYaml(pnh_, "predictor"), aurora_common::fullKey(pnh_, "predictor"),
+      controller_file.empty() ? "" : aurora_common::folderOf(controller_file),
+      controller_file.empty() ? aurora_common::fullKey(pnh_, "predictor") : controller_file);
   if (f.form == PredictorForm::kOff) return;
-  f.model = aurora_common::requireParam<std::string>(pnh_, "predictor/model", "a vehicle file");
-  if (!f.model.empty() && f.model[0] != '/') {
-    if (controller_file.empty()) {
-      throw aurora_common::ConfigError("parameter '" + aurora_common::fullKey(pnh_, "predictor/model") + "' = '" +
-                                       f.model + "' is relative, but no ~controller_file says to what: give an "
-                                       "absolute path, or ~controller_file");
-    }
-    f.model = aurora_common::folderOf(controller_file) + "/" + f.model;
-  }
-  f.horizon = aurora_common::rangedParam(pnh_, "predictor/horizon", 0.0, 0.0, 1e9, "s");
   const LinkParams& link = core_->settings.link;
   const long delay = core_->settings.delay;
   const long history = link.ideal() ? delay : link.historyNeeded(delay);

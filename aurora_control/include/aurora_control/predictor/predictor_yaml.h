@@ -44,22 +44,36 @@ inline PredictorForm predictorFormNamed(const YamlReader& r, const YAML::Node& n
   return f;
 }
 
+// A predictor block `n` (at `key`, read by `r`: a file's or the node's
+// parameters), a relative model taken from `folder` (none: refused, the
+// node was not told its controller file); `file` names it in later
+// refusals.
+inline PredictorFile readPredictorBlock(const YamlReader& r, const YAML::Node& n, const std::string& key,
+                                        const std::string& folder, const std::string& file) {
+  PredictorFile p;
+  p.file = file;
+  r.onlyKeys(n, key, {"form", "model", "horizon"});
+  p.form = predictorFormNamed(r, r.require(n, key, "form", "resimulate, smith, off"), r.key(key, "form"));
+  if (p.form == PredictorForm::kOff) return p;
+  const std::string model_key = r.key(key, "model");
+  p.model = r.text(r.require(n, key, "model", "a vehicle file, e.g. ../vehicles/ardrone2.yaml"), model_key);
+  if (!p.model.empty() && p.model[0] != '/') {
+    if (folder.empty()) {
+      r.fail(model_key, "= '" + p.model + "' is relative, but no ~controller_file says to what: give an absolute "
+                        "path, or ~controller_file");
+    }
+    p.model = folder + "/" + p.model;
+  }
+  if (n["horizon"]) p.horizon = r.numberIn(n["horizon"], r.key(key, "horizon"), 0.0, 1e9, "s");
+  return p;
+}
+
 // The block of the controller file at `path` (off when it has none).
 inline PredictorFile readControllerPredictor(const std::string& path) {
   const YAML::Node root = loadYamlFile("controller file", path);
-  const YamlReader r("controller file '" + path + "': ");
-  PredictorFile p;
-  p.file = path;
-  const YAML::Node n = root["predictor"];
-  if (!n) return p;
-  r.onlyKeys(n, "predictor", {"form", "model", "horizon"});
-  p.form = predictorFormNamed(r, r.require(n, "predictor", "form", "resimulate, smith, off"), "predictor.form");
-  if (p.form == PredictorForm::kOff) return p;
-  const std::string model = r.text(r.require(n, "predictor", "model", "a vehicle file, e.g. ../vehicles/ardrone2.yaml"),
-                                   "predictor.model");
-  p.model = model.empty() || model[0] == '/' ? model : aurora_common::folderOf(path) + "/" + model;
-  if (n["horizon"]) p.horizon = r.numberIn(n["horizon"], "predictor.horizon", 0.0, 1e9, "s");
-  return p;
+  if (!root["predictor"]) return PredictorFile{PredictorForm::kOff, "", 0.0, path};
+  return readPredictorBlock(YamlReader("controller file '" + path + "': "), root["predictor"], "predictor",
+                            aurora_common::folderOf(path), path);
 }
 
 // The predictor of a run of law `Law` with sample time Ts, a command
