@@ -35,7 +35,7 @@ FormationNode::FormationNode(ros::NodeHandle nh, ros::NodeHandle private_nh) : n
   connect();
   ROS_INFO("formation_controller: %s, drones %s and %s, delays %ld and %ld samples, %s law, layer every %ld steps",
            mode.c_str(), drones_[0].c_str(), drones_[1].c_str(), run.drone[0].delay, run.drone[1].delay,
-           lawName(law), run.period_steps);
+           lawName(law), run.schedule.period_ticks);
 }
 
 // The formation file (~formation_file) with the drones' vehicle (~vehicle)

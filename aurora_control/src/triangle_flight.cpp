@@ -1,7 +1,8 @@
 // flight --formation FILE for a triangle file (shape: triangle;
-// docs/formation.md, "The triangle"): the run of TriangleFlight, one CSV
+// docs/formation.md, "The triangle"): the one formation loop (triangle_run.h), one CSV
 // row per layer period and the printed errors (RMS after 20 s, as the spec
 // reports AuRoRA's).
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -15,8 +16,6 @@
 namespace aurora_control {
 
 namespace {
-
-using Triangle = TriangleFormation<double>;
 
 // step (the layer's period n), t, each robot's position (kinematic: r{i}_x,
 // y, z) or state and command (d{i}_), Q_ and Qd_ by the spec's names.
@@ -33,15 +32,14 @@ std::vector<std::string> triangleColumns(bool kinematic) {
   return c;
 }
 
-std::vector<double> triangleRow(long n, double t, bool kinematic, const TriangleFlight& run) {
-  std::vector<double> v{double(n), t};
+std::vector<double> triangleRow(double t, bool kinematic, const TrianglePeriod& p) {
+  std::vector<double> v{double(p.n), t};
   for (int d = 0; d < 3; ++d) {
-    if (kinematic) v.insert(v.end(), run.truth + 3 * d, run.truth + 3 * d + 3);
-    else v.insert(v.end(), run.drone[d].X, run.drone[d].X + LawVehicle::kStates);
-    if (!kinematic) v.insert(v.end(), run.U[d], run.U[d] + LawVehicle::kInputs);
+    v.insert(v.end(), p.X[d], p.X[d] + (kinematic ? 3 : LawVehicle::kStates));
+    if (!kinematic) v.insert(v.end(), p.U[d], p.U[d] + LawVehicle::kInputs);
   }
-  v.insert(v.end(), run.layer.Q(), run.layer.Q() + 9);
-  v.insert(v.end(), run.Qd, run.Qd + 9);
+  v.insert(v.end(), p.layer.Q(), p.layer.Q() + 9);
+  v.insert(v.end(), p.layer.Qd(), p.layer.Qd() + 9);
   return v;
 }
 
@@ -50,14 +48,14 @@ std::vector<double> triangleRow(long n, double t, bool kinematic, const Triangle
 struct TriangleErrors {
   double sq[7] = {}, closest = 1e300;
   long n = 0;
-  void add(double t, const TriangleFlight& run) {
+  void add(double t, const TrianglePeriod& p) {
+    double X[9];
+    for (int i = 0; i < 9; ++i) X[i] = p.position(i / 3, i % 3);
     for (int a = 0; a < 3; ++a) {
-      for (int b = a + 1; b < 3; ++b) {
-        closest = std::fmin(closest, triangle_detail::distance(run.truth + 3 * a, run.truth + 3 * b));
-      }
+      for (int b = a + 1; b < 3; ++b) closest = std::fmin(closest, triangle_detail::distance(X + 3 * a, X + 3 * b));
     }
     if (t < 20.0) return;
-    const double* e = run.layer.Qtil();
+    const double* e = p.layer.Qtil();
     sq[0] += e[0] * e[0] + e[1] * e[1] + e[2] * e[2];
     for (int i = 3; i < 9; ++i) sq[i - 2] += e[i] * e[i];
     ++n;
@@ -79,18 +77,19 @@ ShapedFlight flyTriangle(const FormationFlightOptions& o, FlightTable& table) {
     setup.delay[r] = delays[r];
     refuseRobotLink(setup.link[r], setup.delay[r], r, samples, unit);
   }
-  TriangleFlight run(setup);
   TriangleErrors errors;
   const long periods = setup.periods();
   if (table.columns) table.columns(triangleColumns(setup.kinematic));
   ShapedFlight f;
-  f.seconds = flyTable(
-      table, periods,
-      [&](long n) {
-        run.period(n);
-        errors.add(double(n) * setup.period, run);
-      },
-      [&](long n) { return triangleRow(n, double(n) * setup.period, setup.kinematic, run); });
+  const auto t0 = std::chrono::steady_clock::now();
+  withTriangleLaw(setup, [&](auto law) {
+    flyTrianglePeriods<decltype(law)>(setup, [&](const TrianglePeriod& p) {
+      const double t = double(p.n) * setup.period;
+      errors.add(t, p);
+      if (table.row) table.row(triangleRow(t, setup.kinematic, p));
+    });
+  });
+  f.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   char line[400];
   std::snprintf(line, sizeof line,
                 "flight: triangle, law %s, %s, %ld periods of %.3f s, delays %ld, %ld, %ld %s, in %.3f s\n"

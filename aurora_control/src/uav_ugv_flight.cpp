@@ -1,5 +1,5 @@
 // flight --formation FILE for a UAV-UGV line file (shape: uav_ugv_line;
-// docs/formation.md, "The UAV-UGV line"): the run of UavUgvLineFlight, its
+// docs/formation.md, "The UAV-UGV line"): the one formation loop (uav_ugv_run.h), its
 // CSV and its printed errors (RMS after 20 s, as the spec reports AuRoRA's).
 #include <chrono>
 #include <cmath>
@@ -29,14 +29,18 @@ std::vector<std::string> uavUgvColumns() {
   return c;
 }
 
-std::vector<double> uavUgvRow(long k, double t, const double* pioneer, const double* drone, const UavUgvLineFlight& run) {
-  std::vector<double> v{double(k), t};
-  v.insert(v.end(), pioneer, pioneer + aurora_sim::Pioneer3dx::kStates);
-  v.insert(v.end(), run.U_pioneer, run.U_pioneer + 2);
-  v.insert(v.end(), drone, drone + LawVehicle::kStates);
-  v.insert(v.end(), run.U_drone, run.U_drone + 4);
-  v.insert(v.end(), run.layer.Q(), run.layer.Q() + 6);
-  v.insert(v.end(), run.Qd, run.Qd + 6);
+using Tick = FormationObservation<double, UavUgvShape, UavUgvRobots::Data>;
+
+// Tick k's row: the robots' states at its start, the commands they
+// applied, the layer's Q and Qd.
+std::vector<double> uavUgvRow(double t, const Tick& o) {
+  std::vector<double> v{double(o.k), t};
+  v.insert(v.end(), o.X_before[0], o.X_before[0] + aurora_sim::Pioneer3dx::kStates);
+  v.insert(v.end(), o.steps[0].U, o.steps[0].U + aurora_sim::Pioneer3dx::kInputs);
+  v.insert(v.end(), o.X_before[1], o.X_before[1] + LawVehicle::kStates);
+  v.insert(v.end(), o.steps[1].U, o.steps[1].U + LawVehicle::kInputs);
+  v.insert(v.end(), o.layer.Q(), o.layer.Q() + 6);
+  v.insert(v.end(), o.layer.Qd(), o.layer.Qd() + 6);
   return v;
 }
 
@@ -45,12 +49,13 @@ std::vector<double> uavUgvRow(long k, double t, const double* pioneer, const dou
 struct LineErrors {
   double sq[5] = {0, 0, 0, 0, 0}, closest = 1e300;
   long n = 0;
-  void add(double t, const UavUgvLineFlight& run, const double* pioneer, const double* drone) {
+  void add(double t, const Tick& o) {
+    const double *pioneer = o.X_before[0], *drone = o.X_before[1];
     double d[3], de[3];
-    for (int i = 0; i < 3; ++i) d[i] = drone[i] - pioneer[i], de[i] = run.layer.position(1)[i] - drone[i];
+    for (int i = 0; i < 3; ++i) d[i] = drone[i] - pioneer[i], de[i] = o.layer.position(1)[i] - drone[i];
     closest = std::fmin(closest, std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]));
     if (t < 20.0) return;
-    const double* e = run.layer.Qtil();
+    const double* e = o.layer.Qtil();
     sq[0] += e[0] * e[0] + e[1] * e[1], sq[1] += e[3] * e[3], sq[2] += e[4] * e[4], sq[3] += e[5] * e[5];
     sq[4] += de[0] * de[0] + de[1] * de[1] + de[2] * de[2];
     ++n;
@@ -69,21 +74,18 @@ ShapedFlight flyUavUgvLine(const FormationFlightOptions& o, FlightTable& table) 
     setup.delay[r] = delays[r];
     refuseRobotLink(setup.link[r], setup.delay[r], r, setup.ticks(), setup.tick);
   }
-  UavUgvLineFlight run(setup);
   LineErrors errors;
-  aurora_sim::Pioneer3dx::State<double> pioneer;  // the states a tick starts from
-  aurora_sim::Ardrone2::State<double> drone;
   const long ticks = setup.ticks();
   if (table.columns) table.columns(uavUgvColumns());
   ShapedFlight f;
-  f.seconds = flyTable(
-      table, ticks,
-      [&](long k) {
-        pioneer = run.pioneer, drone = run.drone;
-        run.tick(k);
-        errors.add(double(k) * setup.tick, run, pioneer.X, drone.X);
-      },
-      [&](long k) { return uavUgvRow(k, double(k) * setup.tick, pioneer.X, drone.X, run); });
+  const auto t0 = std::chrono::steady_clock::now();
+  auto observe = [&](const Tick& o) {
+    const double t = double(o.k) * setup.tick;
+    errors.add(t, o);
+    if (table.row) table.row(uavUgvRow(t, o));
+  };
+  runFormation<UavUgvRobots, double, UavUgvShape, kDelayHistory>(uavUgvRun(setup), ticks, observe);
+  f.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   char line[400];
   std::snprintf(line, sizeof line,
                 "flight: UAV-UGV line (%s Pioneer + AR.Drone), %ld ticks of %.4f s, delays %ld and %ld ticks, in %.3f s\n"

@@ -236,7 +236,8 @@ TEST(FormationFile, ShippedFilesAreTheLabScenario) {
   for (const auto& f : files) {
     const FormationFile file = readFormationFile(config + "/formations/" + f.first + ".yaml", config);
     const FormationRun<double, Line> shipped = formationRun(file, vehicle);
-    EXPECT_EQ(shipped.period_steps, 6);
+    EXPECT_EQ(shipped.schedule.period_ticks, 6);
+    EXPECT_EQ(shipped.schedule.step_ticks, 1);
     std::vector<double> a, b;
     auto record = [](std::vector<double>& into) {
       return [&into](const FormationObservation<double, Line>& o) {

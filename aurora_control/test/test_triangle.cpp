@@ -163,31 +163,36 @@ struct KinematicRun {
   double Q1[9], dQd1[9];
 };
 
-// The shipped file triangle_NAME.yaml with `law`, flown period by period.
-aurora_control::TriangleFlight shippedTriangle(const char* name, TriangleLaw law) {
+// The shipped file triangle_NAME.yaml with `law`, flown through the one
+// formation loop: at(p) at each of its 1000 periods (50 s of 0.05 s).
+template <class At>
+void flyShipped(const char* name, TriangleLaw law, At&& at) {
   const std::string config = AURORA_CONFIG_DIR;
-  return aurora_control::TriangleFlight(aurora_control::readTriangleFile(
-      config + "/formations/triangle_" + name + ".yaml", config, aurora_control::triangleLawName(law)));
+  const aurora_control::TriangleSetup setup = aurora_control::readTriangleFile(
+      config + "/formations/triangle_" + name + ".yaml", config, aurora_control::triangleLawName(law));
+  EXPECT_EQ(setup.periods(), 1000);
+  aurora_control::withTriangleLaw(setup, [&](auto robots) {
+    aurora_control::flyTrianglePeriods<decltype(robots)>(setup, at);
+  });
 }
 
 KinematicRun flyKinematic(TriangleLaw law) {
-  aurora_control::TriangleFlight run = shippedTriangle("kinematic", law);
   KinematicRun r;
   double sums[4] = {0, 0, 0, 0};
   long n_late = 0;
-  for (long n = 0; n < 1000; ++n) {
+  flyShipped("kinematic", law, [&](const aurora_control::TrianglePeriod& p) {
+    const long n = p.n;
     const double t = 0.05 * double(n);
-    run.period(n);
     if (n == 1) {
-      for (int i = 0; i < 9; ++i) r.Q1[i] = run.layer.Q()[i], r.dQd1[i] = run.layer.dQd()[i];
+      for (int i = 0; i < 9; ++i) r.Q1[i] = p.layer.Q()[i], r.dQd1[i] = p.layer.dQd()[i];
     }
     if (t >= 20.0) {
-      const double* e = run.layer.Qtil();
+      const double* e = p.layer.Qtil();
       sums[0] += e[0] * e[0] + e[1] * e[1] + e[2] * e[2], sums[1] += e[3] * e[3], sums[2] += e[4] * e[4];
       sums[3] += e[8] * e[8];
       ++n_late;
     }
-  }
+  });
   r.rms_position = std::sqrt(sums[0] / n_late), r.rms_p = std::sqrt(sums[1] / n_late);
   r.rms_q = std::sqrt(sums[2] / n_late), r.rms_psi = std::sqrt(sums[3] / n_late);
   return r;
@@ -217,30 +222,26 @@ TEST(Triangle, TheKinematicScenarioTracksAsAuRoRAs) {
 namespace {
 
 // Three AR.Drones (the spec's scenario (ii), config/formations/
-// triangle_ardrones.yaml; TriangleFlight's base tick of 1/60 s): RMS over the
+// triangle_ardrones.yaml; the layer on a base tick of 1/60 s): RMS over the
 // layer's periods with t >= 20 s (n = 0 .. 999).
 struct DroneRun {
   double rms_position = 0, rms_p = 0, rms_q = 0, rms_beta = 0, rms_psi = 0, closest = 1e9;
 };
 
 DroneRun flyThreeDrones(TriangleLaw law) {
-  aurora_control::TriangleFlight run = shippedTriangle("ardrones", law);
   DroneRun r;
   double sums[5] = {0, 0, 0, 0, 0};
   long late = 0;
-  for (long n = 0; n < 1000; ++n) {
-    run.period(n);
+  flyShipped("ardrones", law, [&](const aurora_control::TrianglePeriod& p) {
     for (int a = 0; a < 3; ++a) {
-      for (int b = a + 1; b < 3; ++b) {
-        r.closest = std::min(r.closest, aurora_control::triangle_detail::distance(run.truth + 3 * a, run.truth + 3 * b));
-      }
+      for (int b = a + 1; b < 3; ++b) r.closest = std::min(r.closest, aurora_control::triangle_detail::distance(p.X[a], p.X[b]));
     }
-    if (0.05 * double(n) < 20.0) continue;
-    const double* e = run.layer.Qtil();
+    if (0.05 * double(p.n) < 20.0) return;
+    const double* e = p.layer.Qtil();
     sums[0] += e[0] * e[0] + e[1] * e[1] + e[2] * e[2], sums[1] += e[3] * e[3], sums[2] += e[4] * e[4];
     sums[3] += e[5] * e[5], sums[4] += e[8] * e[8];
     ++late;
-  }
+  });
   r.rms_position = std::sqrt(sums[0] / late), r.rms_p = std::sqrt(sums[1] / late);
   r.rms_q = std::sqrt(sums[2] / late), r.rms_beta = std::sqrt(sums[3] / late), r.rms_psi = std::sqrt(sums[4] / late);
   return r;
@@ -291,8 +292,11 @@ TEST(Triangle, ABadFileIsRefusedNamingTheKey) {
   e = refusalOfEdited("ardrones", "controller: controllers/underactuated.yaml", "controller: controllers/pd_saturated.yaml");
   EXPECT_NE(e.find("'formation.robots.controller' is refused: the drones fly the underactuated law"), std::string::npos)
       << e;
-  e = refusalOfEdited("ardrones", "period: 0.05", "period: 0.0123");
-  EXPECT_NE(e.find("'formation.period' = 0.0123 s and the drones' step"), std::string::npos) << e;
+  e = refusalOfEdited("ardrones", "period: 0.05", "period: 0.0523");
+  EXPECT_NE(e.find("'formation.period' = 0.0523 s and the drones' step"), std::string::npos) << e;
+  // A layer faster than the drones' step: one layer runs before a step at most (LayerSchedule).
+  e = refusalOfEdited("ardrones", "period: 0.05", "period: 0.02");
+  EXPECT_NE(e.find("'formation.period' = 0.02 s is refused: below the drones' step"), std::string::npos) << e;
   e = refusalOfEdited("kinematic", "[0.0, 1.0, 0.0]]", "[0.0, 1.0]]");
   EXPECT_NE(e.find("formation.robots.starts[2]"), std::string::npos) << e;
   // Singular starts (eq. T3, T4): on one line; a median along x (m = (3, 0, 0): phi is 0 / 0).

@@ -32,43 +32,56 @@ void expectNear(const double* got, const std::vector<double>& want, double rel, 
   }
 }
 
+using Tick = aurora_control::FormationObservation<double, aurora_control::UavUgvShape,
+                                                  aurora_control::UavUgvRobots::Data>;
+
 // The standard scenario from its shipped file (the original's kinematic
-// pairing from line_pioneer_ardrone_kinematic.yaml), flown tick by tick.
-aurora_control::UavUgvLineFlight scenario(bool kinematic_pioneer) {
+// pairing from line_pioneer_ardrone_kinematic.yaml), flown `ticks` ticks
+// through the one formation loop, `at(o)` after each: o.X_before the
+// robots' states at its start, o.drones[r].model.X after their steps.
+template <class At>
+void flyScenario(bool kinematic_pioneer, long ticks, At&& at) {
   const std::string config = AURORA_CONFIG_DIR;
   const std::string file = config + "/formations/line_pioneer_ardrone" + (kinematic_pioneer ? "_kinematic" : "") + ".yaml";
-  return aurora_control::UavUgvLineFlight(aurora_control::readUavUgvLineFile(file, config));
+  const aurora_control::UavUgvRun run = aurora_control::uavUgvRun(aurora_control::readUavUgvLineFile(file, config));
+  const long ran = aurora_control::runFormation<aurora_control::UavUgvRobots, double, aurora_control::UavUgvShape,
+                                                aurora_control::kDelayHistory>(run, ticks, at);
+  EXPECT_EQ(ran, ticks);
 }
 
 }  // namespace
 
 TEST(UavUgvLine, TheFirstTickIsAuRoRAs) {
-  auto f = scenario(false);
-  f.tick(0);
-  const double tol = 1e-9;  // the spec prints 10 digits at k = 0
-  expectNear(f.layer.Q(), {-1, 0, 0, 1.25, 0, 0.6435011088}, tol, "Q");
-  expectNear(f.layer.Qtil(), {1, 0, 0, 0.75, 1.570796327, 0.4036964424}, tol, "Q~");
-  expectNear(f.layer.velocity(0), {0.1397343957, 0.1, 0}, tol, "dXr of the Pioneer");
-  expectNear(f.layer.velocity(1), {0.140987219, 0.109836913, 0.0102748155}, tol, "dXr of the drone");
-  expectNear(f.layer.position(1), {6.1e-17, 1, 1.732050808}, tol, "the drone's desired position");
-  expectNear(f.U_pioneer, {0.3736396088, 0.7097933116}, tol, "the Pioneer's Ud");
-  EXPECT_NEAR(f.U_drone[aurora_sim::kUClimb], 0.8810137624, tol);
-  for (int i : {aurora_sim::kURoll, aurora_sim::kUPitch, aurora_sim::kUYawRate}) EXPECT_NEAR(f.U_drone[i], 0.0, 1e-9);
-  // k = 1: the corrected dynamic Pioneer and the drone after one step each.
-  const double rel = 1e-12;
-  expectNear(f.pioneer.X + aurora_sim::kPioneerU, {0.02333205999780124, 0.10913181297804046}, rel, "Pioneer U");
-  const double pose[3] = {f.pioneer.X[aurora_sim::kX], f.pioneer.X[aurora_sim::kY], f.pioneer.X[aurora_sim::kYaw]};
-  expectNear(pose, {-0.9992222646667399, 0.0005456590648902024, 0.0036377270992680156}, rel, "Pioneer pose");
-  EXPECT_NEAR(f.drone.X[aurora_sim::kZ], 0.7458057587350768, rel);
+  flyScenario(false, 1, [](const Tick& f) {
+    EXPECT_TRUE(f.layer_ran);
+    const double tol = 1e-9;  // the spec prints 10 digits at k = 0
+    expectNear(f.layer.Q(), {-1, 0, 0, 1.25, 0, 0.6435011088}, tol, "Q");
+    expectNear(f.layer.Qtil(), {1, 0, 0, 0.75, 1.570796327, 0.4036964424}, tol, "Q~");
+    expectNear(f.layer.velocity(0), {0.1397343957, 0.1, 0}, tol, "dXr of the Pioneer");
+    expectNear(f.layer.velocity(1), {0.140987219, 0.109836913, 0.0102748155}, tol, "dXr of the drone");
+    expectNear(f.layer.position(1), {6.1e-17, 1, 1.732050808}, tol, "the drone's desired position");
+    expectNear(f.steps[0].U, {0.3736396088, 0.7097933116}, tol, "the Pioneer's Ud");
+    const double* U_drone = f.steps[1].U;
+    EXPECT_NEAR(U_drone[aurora_sim::kUClimb], 0.8810137624, tol);
+    for (int i : {aurora_sim::kURoll, aurora_sim::kUPitch, aurora_sim::kUYawRate}) EXPECT_NEAR(U_drone[i], 0.0, 1e-9);
+    // k = 1: the corrected dynamic Pioneer and the drone after one step each.
+    const double rel = 1e-12;
+    const double *pioneer = f.drones[0].model.X, *drone = f.drones[1].model.X;
+    expectNear(pioneer + aurora_sim::kPioneerU, {0.02333205999780124, 0.10913181297804046}, rel, "Pioneer U");
+    const double pose[3] = {pioneer[aurora_sim::kX], pioneer[aurora_sim::kY], pioneer[aurora_sim::kYaw]};
+    expectNear(pose, {-0.9992222646667399, 0.0005456590648902024, 0.0036377270992680156}, rel, "Pioneer pose");
+    EXPECT_NEAR(drone[aurora_sim::kZ], 0.7458057587350768, rel);
+  });
 }
 
 // The original script's own pairing: the kinematic Pioneer (U = Ud).
 TEST(UavUgvLine, TheKinematicPioneersFirstStepIsAuRoRAs) {
-  auto f = scenario(true);
-  f.tick(0);
-  const double pose[3] = {f.pioneer.X[aurora_sim::kX], f.pioneer.X[aurora_sim::kY], f.pioneer.X[aurora_sim::kYaw]};
-  expectNear(pose, {-0.9875453463731737, 0.0035489665580458753, 0.02365977705363917}, 1e-12, "Pioneer pose");
-  EXPECT_NEAR(f.drone.X[aurora_sim::kZ], 0.7458057587350768, 1e-12);
+  flyScenario(true, 1, [](const Tick& f) {
+    const double *pioneer = f.drones[0].model.X, *drone = f.drones[1].model.X;
+    const double pose[3] = {pioneer[aurora_sim::kX], pioneer[aurora_sim::kY], pioneer[aurora_sim::kYaw]};
+    expectNear(pose, {-0.9875453463731737, 0.0035489665580458753, 0.02365977705363917}, 1e-12, "Pioneer pose");
+    EXPECT_NEAR(drone[aurora_sim::kZ], 0.7458057587350768, 1e-12);
+  });
 }
 
 // The whole run (k = 0 .. 3899, t < 130 s), RMS after 20 s, as the spec
@@ -79,23 +92,22 @@ TEST(UavUgvLine, TheKinematicPioneersFirstStepIsAuRoRAs) {
 TEST(UavUgvLine, TheStandardScenarioTracksAsAuRoRAs) {
   for (bool kinematic : {false, true}) {
     SCOPED_TRACE(kinematic ? "kinematic Pioneer" : "dynamic Pioneer");
-    auto f = scenario(kinematic);
     double sq[5] = {0, 0, 0, 0, 0}, closest = 1e9;
     long n = 0;
-    for (long k = 0; k < 3900; ++k) {
-      f.tick(k);
+    flyScenario(kinematic, 3900, [&](const Tick& f) {
+      const double *pioneer = f.drones[0].model.X, *drone = f.drones[1].model.X;  // after the tick's steps
       const double* e = f.layer.Qtil();
       double d[3];
-      for (int i = 0; i < 3; ++i) d[i] = f.drone.X[i] - f.pioneer.X[i];
+      for (int i = 0; i < 3; ++i) d[i] = drone[i] - pioneer[i];
       closest = std::min(closest, std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]));
-      if (double(k) / 30.0 < 20.0) continue;
+      if (double(f.k) / 30.0 < 20.0) return;
       const double* Xd = f.layer.position(1);  // the drone's desired position of this tick
       double de[3];
-      for (int i = 0; i < 3; ++i) de[i] = Xd[i] - f.drone.X[i];
+      for (int i = 0; i < 3; ++i) de[i] = Xd[i] - drone[i];
       sq[0] += e[0] * e[0] + e[1] * e[1], sq[1] += e[3] * e[3], sq[2] += e[4] * e[4], sq[3] += e[5] * e[5];
       sq[4] += de[0] * de[0] + de[1] * de[1] + de[2] * de[2];
       ++n;
-    }
+    });
     double rms[5];
     for (int i = 0; i < 5; ++i) rms[i] = std::sqrt(sq[i] / double(n));
     const std::vector<double> spec = kinematic ? std::vector<double>{0.0093, 0.0093, 0.0080, 0.0080, 0.014}

@@ -152,7 +152,7 @@ template <class Law, typename T, int Capacity, bool Linked>
 struct FormationStart {
   static auto kernel() { return formationKernel<Law, T, Capacity, Linked>; }
   explicit FormationStart(const SweepSpec& spec) : setup_(1) {
-    const FormationSetup<T> host = makeFormationSetup<T>(spec);
+    const FormationSetup<T> host = makeFormationSetup<T>(spec, spec.formation_run);
     setup_.upload(&host);
   }
   void launch(unsigned blocks, int block, const GridView& grid, long first, long n, SimResult* out) const {
@@ -332,6 +332,10 @@ std::string cudaDelayProblem(const SweepSpec& spec) {
   if (spec.predicting()) {
     return "the state predictor (sweep.predictor) has no CUDA kernel yet (its per-thread entry runs on the host "
            "only): use --backend cpu";
+  }
+  if (spec.formation() && spec.shape != SweepShape::kLine) {
+    return std::string("the ") + sweepShapeName(spec.shape) + " has no CUDA kernel yet (its per-thread entry runs on "
+           "the host only): use --backend cpu";
   }
   if (spec.historyNeeded() <= cudaMaxDelay()) return "";
   return "the cuda backend holds delays (with a link's jitter) up to " + std::to_string(cudaMaxDelay()) +

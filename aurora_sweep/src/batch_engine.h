@@ -280,11 +280,12 @@ void runBatchWith(const SweepSpec& spec, int threads, std::vector<SimResult>& ou
   });
 }
 
-template <typename T, class Arch, int Capacity, class Law>
-void runFormationBatchWith(const SweepSpec& spec, int threads, std::vector<SimResult>& out, Progress& progress) {
-  const FormationSetup<T> setup = makeFormationSetup<T>(spec);
+template <typename T, class Arch, int Capacity, class Law, template <typename> class Shape>
+void runFormationBatchWith(const SweepSpec& spec, const ShapeRun<double, Shape, typename Law::Data>& run, int threads,
+                           std::vector<SimResult>& out, Progress& progress) {
+  const FormationSetup<T, Shape, typename Law::Data> setup = makeFormationSetup<T>(spec, run);
   onRange(spec, threads, out, [&](const GridView& grid, long first, long total, std::atomic<long>& next) {
-    FormationBatch<T, Arch, Capacity, Law>(setup, grid, first, total, out, next, progress).run();
+    FormationBatch<T, Arch, Capacity, Law, Shape>(setup, grid, first, total, out, next, progress).run();
   });
 }
 
@@ -295,8 +296,8 @@ template <class Arch>
 void runBatchArch(const SweepSpec& spec, int threads, std::vector<SimResult>& out,
                   Progress& progress) {
   if (spec.formation()) {
-    return withFormationTypes(spec, [&](auto type, auto capacity, auto law) {
-      runFormationBatchWith<decltype(type), Arch, decltype(capacity)::value, decltype(law)>(spec, threads, out,
+    return withFormationTypes(spec, [&](auto type, auto capacity, auto law, const auto& run) {
+      runFormationBatchWith<decltype(type), Arch, decltype(capacity)::value, decltype(law)>(spec, run, threads, out,
                                                                                             progress);
     });
   }

@@ -180,10 +180,12 @@ uint32_t definitionHash(const SweepSpec& spec) {
     std::ifstream f(spec.formation_file);
     crc.add(std::string(std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>()));
     crc.add(spec.formation_criteria);
-    for (int id = kLineLayout.delay(0); id < kParamCountBeforeDroneLinks; ++id) crc.add(spec.fixed[id]);
-    for (int id = kLineLayout.linkValue(0, 0); id < kLineLayout.count(); ++id) {  // only those given: older hashes stay
+    const ShapeLayout at = spec.layout();  // the line's: 31 .. 45, then its robots' links (older hashes stay)
+    for (int id = at.delay(0); id < at.linkValue(0, 0); ++id) crc.add(spec.fixed[id]);
+    for (int id = at.linkValue(0, 0); id < at.count(); ++id) {  // only those given: older hashes stay
       if (spec.given(id)) crc.add(id), crc.add(spec.fixed[id]);
     }
+    if (spec.shape == SweepShape::kTriangle) crc.add(spec.fixed[kParamFormationLaw]);
   }
   if (spec.vehicle_type != aurora_sim::Ardrone2::name()) addOtherVehicle(crc, spec);
   if (spec.predicting()) addPredictor(crc, spec);  // only with one: the hashes of sweeps without stay

@@ -104,10 +104,23 @@ class FormationBatch {
     if (links_[d]) links_[d]->downlink(I(static_cast<Int>(k)), U, U);
   }
 
+  // The lanes of a batch share their layer's law (a triangle sweep's
+  // formation_law: the layer branches on it): runs of consecutive
+  // combinations of one law (the whole batch unless formation_law varies
+  // fastest).
   void runBatch(long first, int count) {
+    for (int start = 0, end = 0; start < count; start = end) {
+      const auto law = lawOf(first + start);
+      for (end = start + 1; end < count && lawOf(first + end) == law;) ++end;
+      runLanes(first + start, end - start);
+    }
+  }
+  typename OneLane::Law lawOf(long index) const { return formationCombination(setup_, grid_.decode(index)).law; }
+
+  void runLanes(long first, int count) {
     aurora_control::FormationRun<B, LaneShape, Data> run;
     startLanes(first, count, run);
-    aurora_control::FormationLayer<B, LaneShape> layer(run.law, run.gains, B(T(run.period_steps) * setup_.run.drone[0].plant.Ts));
+    aurora_control::LayerOf<B, LaneShape> layer(run.law, run.gains, B(setup_.run.schedule.period(setup_.run.drone[0].plant.Ts)));
     aurora_control::DroneParams<B, Data> params[D];
     aurora_control::DroneState<B, M, Data> state[D];
     aurora_control::startFormation(run, params, state, layer);
@@ -125,7 +138,7 @@ class FormationBatch {
   }
 
   // Tick k on every lane; true when every lane has ended.
-  bool tick(long k, const aurora_control::FormationRun<B, LaneShape, Data>& run, aurora_control::FormationLayer<B, LaneShape>& layer,
+  bool tick(long k, const aurora_control::FormationRun<B, LaneShape, Data>& run, aurora_control::LayerOf<B, LaneShape>& layer,
             const aurora_control::DroneParams<B, Data>* params, aurora_control::DroneState<B, M, Data>* state,
             aurora_control::FormationMetrics<B, M, LaneShape>& metrics, const aurora_control::FormationCriteria<B>& criteria,
             long first, bool* ended) {
@@ -133,18 +146,20 @@ class FormationBatch {
     B xc[D][S], X[N];
     receiveStates(k, state, xc);
     aurora_control::modelPositions<LaneShape, Vehicle>(state, X);
-    const bool due = aurora_control::layerDue(k, run.period_steps);
-    T qd[N];
+    const long n = setup_.run.schedule.periodBefore(k);
+    const bool due = n >= 0;
+    T qd[N], t = T(0);
     B Qd[N];
     if (due) {
       // Every lane's Qd and its positions (the scalar judge's, in T).
-      setup_.run.reference.at(aurora_control::taskTime(T(k), Ts), qd);
+      t = setup_.run.schedule.time(n, Ts);
+      setup_.run.reference.at(t, qd);
       T xd[N];
       OneLane::positions(qd, xd);
       for (int i = 0; i < N; ++i) Qd[i] = B(qd[i]), Xd_[i] = B(xd[i]);
     }
     aurora_control::DroneStep<B, Data> step[D];
-    aurora_control::formationTick<Law>(params, setup_.run.clamp, layer, due ? Qd : nullptr, B(T(k)), xc, state, step,
+    aurora_control::formationTick<Law>(params, setup_.run.clamp, layer, due ? Qd : nullptr, B(t), B(T(k)), xc, state, step,
                                        [&](int d, B U[Vehicle::kInputs]) { downlink(d, k, U); });
     metrics.add(criteria, X, Xd_, B(aurora_control::taskTime(T(k), Ts)), B(Ts));
     return endLanes(k, first, metrics, state, ended);

@@ -3,6 +3,7 @@
 #include <limits>
 
 #include "aurora_control/formation/formation_layer.h"
+#include "aurora_control/formation/triangle_formation.h"
 #include "aurora_control/params/limits.h"
 #include "aurora_control/link/link.h"
 #include "aurora_control/params/parameter_table.h"
@@ -59,7 +60,15 @@ void addLawGains(std::vector<ParamInfo>& t) {
   }
 }
 
-std::vector<ParamInfo> makeTable() {
+// The shape whose parameters a sweep of `shape` names (single-robot
+// sweeps: the line's, which none of them accepts).
+template <class F>
+void withShapeParams(SweepShape shape, F&& f) {
+  if (shape == SweepShape::kTriangle) return f(aurora_control::TriangleFormation<double>());
+  f(aurora_control::LineFormation<double>());
+}
+
+std::vector<ParamInfo> makeTable(SweepShape shape) {
   using namespace aurora_control;
   // Room no shape of the sweep uses: no name, applies to no sweep.
   std::vector<ParamInfo> t(kParamCount, ParamInfo{"", ParamGroup::kUnused, 0.0, 0.0, "", false});
@@ -88,33 +97,44 @@ std::vector<ParamInfo> makeTable() {
                                    row.kind == ParamKind::kWholeSamples};
   }
   t[kParamRepeat] = {"repeat", ParamGroup::kRepeat, 0.0, 1e9, "which link seed (sweep.repeats)", true};
-  addShapeParams<LineFormation<double>>(t);
+  withShapeParams(shape, [&](auto s) { addShapeParams<decltype(s)>(t); });
   forEachOtherLaw([&](auto law) { addLawGains<decltype(law)>(t); });
+  if (shape == SweepShape::kTriangle) {
+    t[kParamFormationLaw] = {"formation_law", ParamGroup::kFormationLaw, 0.0, 4.0,
+                             "the triangle's law by name (N, PSO, SPO, OSP, S-PO) or its index 0 .. 4", true};
+  }
   return t;
 }
 
 }  // namespace
 
-const ParamInfo& paramInfo(int id) {
-  static const std::vector<ParamInfo> table = makeTable();
-  return table[static_cast<size_t>(id)];
+const char* sweepShapeName(SweepShape shape) {
+  static const char* const names[kSweepShapeCount] = {"none", "line", "uav_ugv_line", "triangle"};
+  return names[static_cast<int>(shape)];
 }
 
-int paramIdOf(const std::string& name) {
+const ParamInfo& paramInfo(int id, SweepShape shape) {
+  static const std::vector<ParamInfo> tables[kSweepShapeCount] = {
+      makeTable(SweepShape::kNone), makeTable(SweepShape::kLine), makeTable(SweepShape::kUavUgvLine),
+      makeTable(SweepShape::kTriangle)};
+  return tables[static_cast<int>(shape)][static_cast<size_t>(id)];
+}
+
+int paramIdOf(const std::string& name, SweepShape shape) {
   if (name.empty()) return -1;
   for (int id = 0; id < kParamCount; ++id) {
-    if (paramInfo(id).name == name) return id;
+    if (paramInfo(id, shape).name == name) return id;
   }
   return -1;
 }
 
-bool paramApplies(int id, const std::string& controller, bool formation) {
-  const ParamInfo& info = paramInfo(id);
+bool paramApplies(int id, const std::string& controller, SweepShape shape) {
+  const ParamInfo& info = paramInfo(id, shape);
   const ParamGroup group = info.group;
   aurora_control::LawType ardrone_law;
-  if (formation) {
+  if (shape != SweepShape::kNone) {
     return group == ParamGroup::kDroneDelay || group == ParamGroup::kFormationGain || group == ParamGroup::kLink ||
-           group == ParamGroup::kDroneLink;
+           group == ParamGroup::kDroneLink || group == ParamGroup::kFormationLaw;
   }
   switch (group) {
     case ParamGroup::kPdGain:
@@ -124,16 +144,17 @@ bool paramApplies(int id, const std::string& controller, bool formation) {
     case ParamGroup::kRepeat: return false;  // sweep.repeats, not a parameter
     case ParamGroup::kDroneDelay:
     case ParamGroup::kFormationGain:
-    case ParamGroup::kDroneLink: return false;  // a formation sweep's
+    case ParamGroup::kDroneLink:
+    case ParamGroup::kFormationLaw: return false;  // a formation sweep's
     case ParamGroup::kUnused: return false;
     default: return true;
   }
 }
 
-std::string acceptedParamNames(const std::string& controller, bool formation) {
+std::string acceptedParamNames(const std::string& controller, SweepShape shape) {
   std::string names;
   for (int id = 0; id < kParamCount; ++id) {
-    if (paramApplies(id, controller, formation)) names += (names.empty() ? "" : ", ") + paramInfo(id).name;
+    if (paramApplies(id, controller, shape)) names += (names.empty() ? "" : ", ") + paramInfo(id, shape).name;
   }
   return names;
 }
@@ -147,21 +168,29 @@ std::string sweepControllerNames() {
   return names;
 }
 
-double paramDefault(int id) {
-  switch (paramInfo(id).group) {
+double paramDefault(int id, SweepShape shape) {
+  const ParamInfo& info = paramInfo(id, shape);
+  switch (info.group) {
     case ParamGroup::kUnderactuatedGain: {
       const auto g = aurora_control::UnderactuatedGains<double>::defaults();
       return aurora_control::underactuatedGain(g, id - kParamFirstUnderactuatedGain);
     }
     case ParamGroup::kModelFactor: return 1.0;
-    case ParamGroup::kLawGain: return paramInfo(id).preset;
+    case ParamGroup::kLawGain: return info.preset;
     case ParamGroup::kLink: return aurora_control::linkValueOf(aurora_control::LinkParams(), id - kParamFirstLinkValue);
     case ParamGroup::kRepeat: return 0.0;
     case ParamGroup::kFormationGain: {
-      const auto g = aurora_control::FormationGains<double, kLineLayout.variables>::of<aurora_control::LineFormation<double>>();
-      const int i = id - kLineLayout.k1(0);
-      return i < kLineLayout.variables ? g.k1[i] : g.k2[i - kLineLayout.variables];
+      double value = 0.0;
+      withShapeParams(shape, [&](auto s) {
+        using Shape = decltype(s);
+        constexpr ShapeLayout at = shapeLayout<Shape>();
+        const auto g = aurora_control::FormationGains<double, at.variables>::template of<Shape>();
+        const int i = id - at.k1(0);
+        value = i < at.variables ? g.k1[i] : g.k2[i - at.variables];
+      });
+      return value;
     }
+    case ParamGroup::kFormationLaw: return 0.0;  // N
     default: return std::numeric_limits<double>::quiet_NaN();
   }
 }

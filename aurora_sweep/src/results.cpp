@@ -28,7 +28,7 @@ class CsvWriter : public ResultsWriter {
     f_ = std::fopen(path.c_str(), "w");
     if (!f_) throw std::runtime_error("cannot write '" + path + "'");
     std::fprintf(f_, "index");
-    for (int id : params_) std::fprintf(f_, ",%s", paramName(id));
+    for (int id : params_) std::fprintf(f_, ",%s", spec.paramNameOf(id));
     const ResultColumn* columns = resultColumns(spec.formation());
     for (int k = 0; k < kResultColumnCount; ++k) std::fprintf(f_, ",%s", columns[k].name);
     std::fprintf(f_, "\n");
@@ -85,7 +85,7 @@ DelayMonotony::DelayMonotony(const SweepSpec& spec) : grid_(spec.view()) {
   if (!spec.points.empty() || spec.axes.size() != 3 || spec.repeats > 1) return;
   int gains = 0;
   for (const Axis& a : spec.axes) {
-    const ParamGroup g = paramInfo(a.param).group;
+    const ParamGroup g = spec.param(a.param).group;
     const bool gain = g == ParamGroup::kPdGain || g == ParamGroup::kUnderactuatedGain || g == ParamGroup::kLawGain;
     if (a.param != kParamDelay && !gain) return;
     std::vector<double>& v = a.param == kParamDelay ? delays_ : values_[gains];
@@ -152,7 +152,7 @@ void FeasibleShare::writeCsv(const std::string& path, const SweepSpec& spec) con
   std::vector<int> params = spec.columns();
   params.erase(std::remove(params.begin(), params.end(), int(kParamRepeat)), params.end());
   std::fprintf(f, "combination");
-  for (int id : params) std::fprintf(f, ",%s", paramName(id));
+  for (int id : params) std::fprintf(f, ",%s", spec.paramNameOf(id));
   std::fprintf(f, ",repeats,feasible_runs,feasible_share\n");
   const GridView grid = spec.view();
   for (size_t k = 0; k < feasible_runs_.size(); ++k) {
@@ -221,12 +221,12 @@ void writeSummaryJson(const std::string& path, const SweepSpec& spec, const RunI
   const double sims_per_s = info.wall_time_s > 0 ? sims / info.wall_time_s : 0;
   const double steps_per_s = info.wall_time_s > 0 ? steps / info.wall_time_s : 0;
   json order = json::array();
-  for (const Axis& a : spec.axes) order.push_back(paramName(a.param));
+  for (const Axis& a : spec.axes) order.push_back(spec.paramNameOf(a.param));
   // The result rows' parameter columns, and the values of those not varied.
   json parameters = json::array(), fixed = json::object();
   for (int id : spec.columns()) {
-    parameters.push_back(paramName(id));
-    if (!spec.varies(id)) fixed[paramName(id)] = spec.fixed[id];
+    parameters.push_back(spec.paramNameOf(id));
+    if (!spec.varies(id)) fixed[spec.paramNameOf(id)] = spec.fixed[id];
   }
   const auto list = [](const long v[4]) { return json::array({v[0], v[1], v[2], v[3]}); };
   json j = {

@@ -51,8 +51,8 @@ class Hdf5Writer : public ResultsWriter {
     // index, the parameters (results.h: the delay whole), the results.
     columns_ = {{"index", H5T_NATIVE_INT64, 8}};
     for (int id : params_) {
-      columns_.push_back(id == kParamDelay ? Column{paramName(id), H5T_NATIVE_INT64, 8}
-                                           : Column{paramName(id), H5T_NATIVE_DOUBLE, 8});
+      columns_.push_back(id == kParamDelay ? Column{spec.paramNameOf(id), H5T_NATIVE_INT64, 8}
+                                           : Column{spec.paramNameOf(id), H5T_NATIVE_DOUBLE, 8});
     }
     for (int k = 0; k < kResultColumnCount; ++k) columns_.push_back(columnOf(resultColumns(spec.formation())[k]));
     const hsize_t zero = 0, unlimited = H5S_UNLIMITED, chunk = kRowsPerChunk;

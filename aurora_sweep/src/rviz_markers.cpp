@@ -72,7 +72,7 @@ int publishFeasibleMarkers(int, char**, const SweepSpec& spec, const std::vector
     points.colors.push_back(color);
   }
   array.markers.push_back(points);
-  const std::string labels[] = {paramName(xy[0]), paramName(xy[1]), "delay [s]"};
+  const std::string labels[] = {spec.paramNameOf(xy[0]), spec.paramNameOf(xy[1]), "delay [s]"};
   for (int a = 0; a < 3; ++a) {
     visualization_msgs::Marker text;
     text.header = points.header;
@@ -91,8 +91,8 @@ int publishFeasibleMarkers(int, char**, const SweepSpec& spec, const std::vector
   }
   pub.publish(array);
   std::fprintf(stderr, "sweep: published %zu feasible combinations on /sweep/feasible "
-               "(x = %s, y = %s, z = delay [s]); Ctrl-C to quit\n", points.points.size(), paramName(xy[0]),
-               paramName(xy[1]));
+               "(x = %s, y = %s, z = delay [s]); Ctrl-C to quit\n", points.points.size(), spec.paramNameOf(xy[0]),
+               spec.paramNameOf(xy[1]));
   ros::spin();
   return 0;
 }

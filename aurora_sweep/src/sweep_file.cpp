@@ -12,6 +12,7 @@
 #include "aurora_control/link/link_yaml.h"
 #include "aurora_control/loop/positioning_runner.h"
 #include "aurora_control/predictor/predictor_yaml.h"
+#include "aurora_control/formation/triangle_yaml.h"
 #include "aurora_control/task/task_yaml.h"
 #include "aurora_sweep/backends.h"
 #include "aurora_sweep/design.h"
@@ -53,16 +54,16 @@ std::string sweepKind(const SweepSpec& spec) {
 // A parameter named in the file, for the sweep's controller: its ParamId,
 // or a refusal listing the names that controller accepts.
 int paramOf(const Reader& r, const SweepSpec& spec, const std::string& name, const std::string& key) {
-  const int id = paramIdOf(name);
+  const int id = paramIdOf(name, spec.shape);
   if (id < 0 || !spec.accepts(id)) {
-    r.fail(key, "is not a parameter of " + sweepKind(spec) + ": accepted " + acceptedParamNames(spec.controller, spec.formation()));
+    r.fail(key, "is not a parameter of " + sweepKind(spec) + ": accepted " + acceptedParamNames(spec.controller, spec.shape));
   }
   return id;
 }
 
 // A value inside the parameter's accepted range (parameters.h), naming it.
-void checkValue(const Reader& r, int id, double v, const std::string& key) {
-  const ParamInfo& p = paramInfo(id);
+void checkValue(const Reader& r, const SweepSpec& spec, int id, double v, const std::string& key) {
+  const ParamInfo& p = spec.param(id);
   long samples = 0;
   if (p.group == ParamGroup::kDelay) {
     const std::string refusal = aurora_control::delayRefusal(v, false, 0.0, samples);
@@ -136,7 +137,7 @@ void readPoints(const Reader& r, const std::string& path, const std::string& key
       char* end = nullptr;
       const double v = std::strtod(cell.c_str(), &end);
       if (cell.empty() || *end != '\0' || !std::isfinite(v)) r.fail(at, "'" + cell + "' is not a number");
-      checkValue(r, spec.point_params[col], v, at + " " + paramName(spec.point_params[col]));
+      checkValue(r, spec, spec.point_params[col], v, at + " " + spec.paramNameOf(spec.point_params[col]));
       spec.points.push_back(v);
     }
   }
@@ -180,22 +181,22 @@ namespace {
 
 // {from, to[, scale]} of one parameter: a non-empty range inside the
 // parameter's accepted values; scale linear (default) or log (from > 0).
-SampledRange readRange(const Reader& r, const YAML::Node& v, const std::string& key, int id) {
+SampledRange readRange(const Reader& r, const SweepSpec& spec, const YAML::Node& v, const std::string& key, int id) {
   SampledRange range;
   range.from = r.number(v["from"], key + ".from");
   range.to = r.number(v["to"], key + ".to");
-  range.integer = paramInfo(id).whole;
+  range.integer = spec.param(id).whole;
   if (range.to < range.from) {
     r.fail(key, "is an empty range: 'to' (" + Reader::fmt(range.to) + ") is below 'from' (" +
                     Reader::fmt(range.from) + ")");
   }
-  checkValue(r, id, range.from, key + ".from");
-  checkValue(r, id, range.to, key + ".to");
+  checkValue(r, spec, id, range.from, key + ".from");
+  checkValue(r, spec, id, range.to, key + ".to");
   if (v["scale"]) {
     const std::string scale = r.text(v["scale"], key + ".scale");
     if (scale != "linear" && scale != "log") r.fail(key + ".scale", "= '" + scale + "': accepted linear, log");
     range.log = scale == "log";
-    if (range.log && range.integer) r.fail(key + ".scale", std::string("= log: ") + paramName(id) + " takes whole samples, scale linear");
+    if (range.log && range.integer) r.fail(key + ".scale", std::string("= log: ") + spec.paramNameOf(id) + " takes whole samples, scale linear");
     if (range.log && !(range.from > 0)) r.fail(key + ".scale", "= log needs 'from' > 0");
   }
   return range;
@@ -225,19 +226,33 @@ bool readDesign(const Reader& r, const YAML::Node& s, SweepSpec& spec) {
   return true;
 }
 
+// A value of parameter `id`: a number, or a triangle's law by its name
+// (formation_law: N, PSO, SPO, OSP, S-PO; its index as its value).
+double valueOf(const Reader& r, const SweepSpec& spec, int id, const YAML::Node& v, const std::string& key) {
+  if (spec.param(id).group != ParamGroup::kFormationLaw) return r.number(v, key);
+  double index = 0.0;
+  if (v.IsScalar() && YAML::convert<double>::decode(v, index)) return index;
+  try {
+    return double(static_cast<int>(aurora_control::triangleLawOf(r.text(v, key), key)));
+  } catch (const aurora_control::ConfigError& e) {
+    r.failWith(e.what());
+  }
+  return 0.0;
+}
+
 // Values of one grid axis: {values: [...]} or {from, to, count[, scale]}.
-std::vector<double> readAxisValues(const Reader& r, const YAML::Node& v, const std::string& key, int id) {
+std::vector<double> readAxisValues(const Reader& r, const SweepSpec& spec, const YAML::Node& v, const std::string& key, int id) {
   std::vector<double> values;
   if (v["values"]) {
     r.onlyKeys(v, key, {"values"});
     if (!v["values"].IsSequence() || v["values"].size() == 0) r.fail(key + ".values", "is empty: give at least one value");
-    for (const auto& x : v["values"]) values.push_back(r.number(x, key + ".values"));
-    for (double x : values) checkValue(r, id, x, key);
+    for (const auto& x : v["values"]) values.push_back(valueOf(r, spec, id, x, key + ".values"));
+    for (double x : values) checkValue(r, spec, id, x, key);
     return values;
   }
   r.onlyKeys(v, key, {"from", "to", "count", "scale"});
   if (!v["from"] || !v["to"] || !v["count"]) r.fail(key, "needs from, to and count (or values: [...])");
-  const SampledRange range = readRange(r, v, key, id);
+  const SampledRange range = readRange(r, spec, v, key, id);
   const long count = r.integer(v["count"], key + ".count");
   if (count < 1) r.fail(key + ".count", "= " + std::to_string(count) + " is below 1: accepted counts >= 1");
   if (count == 1 && range.from != range.to) r.fail(key, "has count 1 but from != to: an empty range");
@@ -249,7 +264,7 @@ std::vector<double> readAxisValues(const Reader& r, const YAML::Node& v, const s
                      : range.log ? range.at(t)
                                  : range.from + (double(i) * (range.to - range.from)) / double(count - 1));
   }
-  for (double x : values) checkValue(r, id, x, key);
+  for (double x : values) checkValue(r, spec, id, x, key);
   return values;
 }
 
@@ -265,7 +280,7 @@ struct Varied {
 
 Varied readParameters(const Reader& r, const YAML::Node& params, bool design, bool points, SweepSpec& spec) {
   if (!params.IsMap()) r.fail("sweep.parameters", "must be a mapping of parameter names: accepted " +
-                                                      acceptedParamNames(spec.controller, spec.formation()));
+                                                      acceptedParamNames(spec.controller, spec.shape));
   std::map<int, YAML::Node> entries;
   for (const auto& kv : params) {
     const std::string name = kv.first.as<std::string>();
@@ -274,11 +289,11 @@ Varied readParameters(const Reader& r, const YAML::Node& params, bool design, bo
   Varied varied;
   for (const auto& e : entries) {
     const int id = e.first;
-    const std::string key = std::string("sweep.parameters.") + paramName(id);
+    const std::string key = std::string("sweep.parameters.") + spec.paramNameOf(id);
     const YAML::Node& v = e.second;
     if (v.IsScalar()) {
-      spec.fixed[id] = r.number(v, key);
-      checkValue(r, id, spec.fixed[id], key);
+      spec.fixed[id] = valueOf(r, spec, id, v, key);
+      checkValue(r, spec, id, spec.fixed[id], key);
     } else if (points) {
       r.fail(key, "is a range, but 'points' lists the combinations: with points, parameters only fix values");
     } else if (!v.IsMap()) {
@@ -288,9 +303,9 @@ Varied readParameters(const Reader& r, const YAML::Node& params, bool design, bo
       r.onlyKeys(v, key, {"from", "to", "scale"});
       if (!v["from"] || !v["to"]) r.fail(key, "needs from and to");
       varied.sampled.push_back(id);
-      varied.ranges.push_back(readRange(r, v, key, id));
+      varied.ranges.push_back(readRange(r, spec, v, key, id));
     } else {
-      varied.axes.push_back(Axis{static_cast<ParamId>(id), readAxisValues(r, v, key, id)});
+      varied.axes.push_back(Axis{static_cast<ParamId>(id), readAxisValues(r, spec, v, key, id)});
     }
   }
   return varied;
@@ -318,13 +333,13 @@ void orderAxes(const Reader& r, const YAML::Node& s, std::vector<Axis> axes, Swe
   std::vector<int> order;
   for (const auto& o : s["order"]) {
     const int id = paramOf(r, spec, r.text(o, "sweep.order"), "sweep.order");
-    if (std::find(order.begin(), order.end(), id) != order.end()) r.fail("sweep.order", std::string("names '") + paramName(id) + "' twice");
+    if (std::find(order.begin(), order.end(), id) != order.end()) r.fail("sweep.order", std::string("names '") + spec.paramNameOf(id) + "' twice");
     order.push_back(id);
   }
   // A fixed parameter in the order is accepted: it does not vary, so its
   // place does not matter (e.g. 'delay: 600' with the usual order).
   std::vector<std::string> names;
-  for (const Axis& a : axes) names.push_back(paramName(a.param));
+  for (const Axis& a : axes) names.push_back(spec.paramNameOf(a.param));
   for (int id : order) {
     for (const Axis& a : axes) {
       if (a.param == id) spec.axes.push_back(a);
@@ -338,10 +353,10 @@ void orderAxes(const Reader& r, const YAML::Node& s, std::vector<Axis> axes, Swe
 // Every parameter the law needs has a value: given, varied or a default.
 void requireAll(const Reader& r, const SweepSpec& spec) {
   for (int id = 0; id < kParamCount; ++id) {
-    const ParamGroup group = paramInfo(id).group;  // a formation's link values: NaN keeps each drone's own
+    const ParamGroup group = spec.param(id).group;  // a formation's link values: NaN keeps each drone's own
     const bool own_link = spec.formation() && (group == ParamGroup::kLink || group == ParamGroup::kDroneLink);
     if (spec.accepts(id) && !own_link && std::isnan(spec.fixed[id]) && !spec.varies(id)) {
-      r.fail(std::string("sweep.parameters.") + paramName(id), "is missing: the " + spec.controller +
+      r.fail(std::string("sweep.parameters.") + spec.paramNameOf(id), "is missing: the " + spec.controller +
                  " controller has no default for it; give a value or a range (or a points column)");
     }
   }
@@ -385,15 +400,15 @@ void readCombinations(const Reader& r, const YAML::Node& s, const std::string& s
   const YAML::Node params = s["parameters"];
   if (!params && !has_points) {
     r.fail("sweep.parameters", "is missing: give each parameter a value or a range (accepted " +
-                                   acceptedParamNames(spec.controller, spec.formation()) + "), or 'points'");
+                                   acceptedParamNames(spec.controller, spec.shape) + "), or 'points'");
   }
   const Varied varied = params ? readParameters(r, params, design, has_points, spec) : Varied();
   if (has_points) {
     spec.points_file = resolve(r.text(s["points"], "sweep.points"), sweep_dir, config_dir);
     readPoints(r, spec.points_file, "sweep.points", spec);
     for (int id : spec.point_params) {
-      if (params && params[paramName(id)]) {
-        r.fail(std::string("sweep.parameters.") + paramName(id), "is also a column of the points file: give it once");
+      if (params && params[spec.paramNameOf(id)]) {
+        r.fail(std::string("sweep.parameters.") + spec.paramNameOf(id), "is also a column of the points file: give it once");
       }
     }
   } else if (design) {
@@ -405,7 +420,7 @@ void readCombinations(const Reader& r, const YAML::Node& s, const std::string& s
   std::vector<int> delays{kParamDelay};
   if (spec.formation()) {
     delays.clear();
-    for (int d = 0; d < kLineLayout.robots; ++d) delays.push_back(kLineLayout.delay(d));
+    for (int d = 0; d < spec.layout().robots; ++d) delays.push_back(spec.layout().delay(d));
   }
   spec.max_delay = 0;
   for (int id : delays) {
@@ -454,8 +469,8 @@ void checkSweepLink(const Reader& r, SweepSpec& spec) {
     spec.forEachValue(burst, [&](double b) { worst.burst = b > 1.0 && b < worst.burst ? b : worst.burst; });
     const std::string refusal = aurora_control::burstLossRefusal(worst);
     if (worst.burst < 1e300 && !refusal.empty()) {
-      r.fail(std::string("sweep.parameters.") + paramName(loss), "= " + Reader::fmt(worst.loss) + " (its largest) " +
-                 refusal + " (" + paramName(burst) + "'s smallest above 1)");
+      r.fail(std::string("sweep.parameters.") + spec.paramNameOf(loss), "= " + Reader::fmt(worst.loss) + " (its largest) " +
+                 refusal + " (" + spec.paramNameOf(burst) + "'s smallest above 1)");
     }
   }
   if (spec.historyNeeded() > aurora_control::kMaxDelaySamples) {

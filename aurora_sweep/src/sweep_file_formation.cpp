@@ -3,8 +3,51 @@
 #include <limits>
 
 #include "aurora_control/formation/formation_yaml.h"
+#include "aurora_control/formation/triangle_yaml.h"
+#include "aurora_control/formation/uav_ugv_yaml.h"
 
 namespace aurora_sweep {
+
+namespace {
+
+// The two-drone line's file (shape: line) with the sweep's vehicle.
+void readLine(const std::string& file, const std::string& config_dir, SweepSpec& spec) {
+  const aurora_control::FormationFile f = aurora_control::readFormationFile(file, config_dir);
+  spec.shape = SweepShape::kLine;
+  spec.formation_run = aurora_control::formationRun(f, spec.vehicle);
+  spec.formation_duration = spec.formation_run.reference.duration;
+  spec.formation_Ts = spec.vehicle.Ts;
+  spec.law = f.drones[0].controller.law;
+  spec.controller = aurora_sweep::lawName(spec.law);
+}
+
+// AuRoRA's UAV-UGV line (shape: uav_ugv_line): a Pioneer and an AR.Drone.
+void readUavUgvLine(const std::string& file, const std::string& config_dir, SweepSpec& spec) {
+  const aurora_control::UavUgvLineSetup s = aurora_control::readUavUgvLineFile(file, config_dir);
+  spec.shape = SweepShape::kUavUgvLine;
+  spec.uav_ugv_run = aurora_control::uavUgvRun(s);
+  spec.formation_duration = s.duration;
+  spec.formation_Ts = s.tick;
+  spec.controller = "pioneer_dynamic + underactuated";
+}
+
+// AuRoRA's triangle (shape: triangle) of three flying AR.Drones.
+void readTriangle(const aurora_control::YamlReader& r, const std::string& file, const std::string& config_dir,
+                  SweepSpec& spec) {
+  const aurora_control::TriangleSetup s = aurora_control::readTriangleFile(file, config_dir);
+  if (s.kinematic) {
+    r.fail("sweep.formation", "= '" + file + "' has kinematic robots (no formation.robots.vehicle): a sweep flies "
+                              "robots with a law; give its robots a vehicle (config/formations/triangle_ardrones.yaml)");
+  }
+  spec.shape = SweepShape::kTriangle;
+  spec.triangle_run = aurora_control::triangleRun<aurora_control::TriangleDroneLaw>(s);
+  spec.formation_duration = s.duration;
+  spec.formation_Ts = s.drone.Ts;
+  spec.law = aurora_control::LawType::kUnderactuated;
+  spec.controller = aurora_sweep::lawName(spec.law);
+}
+
+}  // namespace
 
 void readSweepFormation(const aurora_control::YamlReader& r, const YAML::Node& sweep, const std::string& file,
                         const std::string& config_dir, SweepSpec& spec) {
@@ -14,16 +57,21 @@ void readSweepFormation(const aurora_control::YamlReader& r, const YAML::Node& s
                                               "' gives it (per drone; docs/formation.md, \"Formation sweeps\")");
     }
   }
-  const aurora_control::FormationFile f = aurora_control::readFormationFile(file, config_dir);
+  const std::string shape = aurora_control::formationShapeOf(file);
+  if (shape == "triangle") readTriangle(r, file, config_dir, spec);
+  else if (shape == "uav_ugv_line") readUavUgvLine(file, config_dir, spec);
+  else readLine(file, config_dir, spec);
   spec.formation_file = file;
-  spec.formation_run = aurora_control::formationRun(f, spec.vehicle);
-  spec.law = f.drones[0].controller.law;
-  spec.controller = aurora_sweep::lawName(spec.law);
-  for (int d = 0; d < kLineLayout.robots; ++d) spec.fixed[kLineLayout.delay(d)] = double(f.drones[d].delay);
-  for (int i = 0; i < kLineLayout.variables; ++i) {
-    spec.fixed[kLineLayout.k1(i)] = f.gains.k1[i];
-    spec.fixed[kLineLayout.k2(i)] = f.gains.k2[i];
-  }
+  // The shape's room: its defaults, then the file's delays, gains and law;
+  // the link values NaN (each robot keeps its own link unless the sweep
+  // gives one).
+  for (int id = kParamFirstRobotParam; id < kParamCount; ++id) spec.fixed[id] = paramDefault(id, spec.shape);
+  const ShapeLayout at = spec.layout();
+  spec.withFormation([&](const auto& run, auto) {
+    for (int d = 0; d < at.robots; ++d) spec.fixed[at.delay(d)] = double(run.drone[d].delay);
+    for (int i = 0; i < at.variables; ++i) spec.fixed[at.k1(i)] = double(run.gains.k1[i]), spec.fixed[at.k2(i)] = double(run.gains.k2[i]);
+  });
+  if (spec.shape == SweepShape::kTriangle) spec.fixed[kParamFormationLaw] = double(static_cast<int>(spec.triangle_run.law));
   for (int i = 0; i < kLinkParamCount; ++i) spec.fixed[kParamFirstLinkValue + i] = std::numeric_limits<double>::quiet_NaN();
 }
 
@@ -57,7 +105,7 @@ double smallestBurst(const SweepSpec& spec, int d, int burst_value, double own) 
 
 void checkFormationLinks(const aurora_control::YamlReader& r, const SweepSpec& spec) {
   bool draws = false;
-  for (int d = 0; d < kLineLayout.robots; ++d) {
+  for (int d = 0; d < spec.layout().robots; ++d) {
     const aurora_control::LinkParams worst = spec.formationWorstLink(d);
     const aurora_control::LinkDirection* dirs[2] = {&worst.uplink, &worst.downlink};
     const int bursts[2] = {aurora_control::kLinkUplinkBurst, aurora_control::kLinkDownlinkBurst};
@@ -66,7 +114,7 @@ void checkFormationLinks(const aurora_control::YamlReader& r, const SweepSpec& s
       dir.burst = smallestBurst(spec, d, bursts[j], dir.burst);
       const std::string refusal = aurora_control::burstLossRefusal(dir);
       if (dir.burst < 1e300 && !refusal.empty()) {
-        r.fail(std::string("sweep.parameters.") + paramName(spec.droneLinkParam(d, bursts[j] - 1)),
+        r.fail(std::string("sweep.parameters.") + spec.paramNameOf(spec.droneLinkParam(d, bursts[j] - 1)),
                "= " + aurora_control::YamlReader::fmt(dir.loss) + " (its largest, on drone " + std::to_string(d + 1) +
                    "'s link) " + refusal);
       }

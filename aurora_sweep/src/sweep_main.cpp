@@ -194,7 +194,7 @@ int finish(const Options& opt, const SweepSpec& spec, const ChunkStore& store, R
       // Gain pairs whose feasibility comes back at a longer delay after failing.
       facts["delay_monotony"] = {{"gain_pairs", monotony.pairs()},
                                  {"not_monotone", monotony.nonMonotonePairs()},
-                                 {"gains", {paramName(monotony.gains()[0]), paramName(monotony.gains()[1])}}};
+                                 {"gains", {spec.paramNameOf(monotony.gains()[0]), spec.paramNameOf(monotony.gains()[1])}}};
     }
     if (share.applies()) {
       facts["feasible_share"] = share.summary();

@@ -59,7 +59,7 @@ Run3<double, Data> threeRobots(const typename Data::Vehicle::template Params<dou
   for (int i = 0; i < 9; ++i) run.gains.k1[i] = i < 2 ? 0.1 : 0.5, run.gains.k2[i] = 0.5;
   const double Q[9] = {0.5, 0.5, 1.5, 1.5, 0, 0, 0, 1.5, 0};
   for (int i = 0; i < 9; ++i) run.reference.Q[i] = Q[i];
-  run.period_steps = 6;
+  run.schedule.period_ticks = 6;
   return run;
 }
 

@@ -94,7 +94,7 @@ TEST(Study13, TheShippedStudyVariesTwelveGainsAndTheDelay) {
   const auto defaults = aurora_control::UnderactuatedGains<double>::defaults();
   for (int i = 0; i < kUnderactuatedGainCount; ++i) {
     EXPECT_NEAR(c.v[kParamFirstUnderactuatedGain + i], aurora_control::underactuatedGain(defaults, i), 1e-12)
-        << paramName(kParamFirstUnderactuatedGain + i);
+        << paramName(kParamFirstUnderactuatedGain + i, SweepShape::kNone);
   }
 }
 

@@ -127,7 +127,7 @@ TEST(FormationSweep, TheKernelsPerThreadEntryIsTheScalarLoop) {
     std::vector<SimResult> scalar;
     Progress progress{0};
     runScalar(spec, scalar, progress);
-    const FormationSetup<double> setup = makeFormationSetup<double>(spec);
+    const FormationSetup<double> setup = makeFormationSetup<double>(spec, spec.formation_run);
     const GridView grid = spec.view();
     const long n = spec.rangeSize();
     std::vector<SimResult> out(static_cast<size_t>(n));
@@ -156,12 +156,12 @@ TEST(FormationSweep, EachDroneFliesItsOwnLinkValues) {
                                   "  order: [delay_2, uplink_loss_2]\n");
   ASSERT_EQ(spec.size(), 8);
   std::vector<std::string> names;
-  for (int id : spec.columns()) names.push_back(paramName(id));
+  for (int id : spec.columns()) names.push_back(spec.paramNameOf(id));
   for (const char* want : {"delay_1", "delay_2", "uplink_loss", "uplink_loss_2", "downlink_jitter_1"}) {
     EXPECT_NE(std::find(names.begin(), names.end(), want), names.end()) << want;
   }
   EXPECT_EQ(std::find(names.begin(), names.end(), "uplink_loss_1"), names.end());
-  const FormationSetup<double> setup = makeFormationSetup<double>(spec);
+  const FormationSetup<double> setup = makeFormationSetup<double>(spec, spec.formation_run);
   EXPECT_FALSE(setup.ideal_link);
   const GridView grid = spec.view();
   for (long i = 0; i < spec.size(); ++i) {

@@ -39,7 +39,7 @@ struct PointGrid {
   PointGrid() {
     const int params[4] = {kParamKp, kParamKd, kParamDelay, kParamFirstModelFactor};
     for (int i = 0; i < kParamCount; ++i) view.fixed[i] = 0.0;
-    for (int i = kParamFirstLawGain; i < kParamLawGainEnd; ++i) view.fixed[i] = paramDefault(i);  // the laws' own
+    for (int i = kParamFirstLawGain; i < kParamLawGainEnd; ++i) view.fixed[i] = paramDefault(i, SweepShape::kNone);  // the laws' own
     for (int i = 0; i < kModelFactorCount; ++i) view.fixed[kParamFirstModelFactor + i] = 1.0;
     for (int i = 0; i < kLinkParamCount; ++i) view.fixed[kParamFirstLinkValue + i] = std::nan("");
     test::setAxes(view, params, axes);
@@ -195,7 +195,7 @@ TEST(VehicleConcept, ATestVehicleFliesEveryBackend) {
 TEST(VehicleConcept, TheBebop2FliesEveryBackend) {
   PointGrid grid;
   grid.axes = {{1.0, 2.0}, {1.0, 2.0}, {0, 3, 9}, {1.0, 0.8}};
-  const int params[4] = {paramIdOf("ksp_xy"), paramIdOf("ksd_xy"), kParamDelay, kParamFirstModelFactor};
+  const int params[4] = {paramIdOf("ksp_xy", SweepShape::kNone), paramIdOf("ksd_xy", SweepShape::kNone), kParamDelay, kParamFirstModelFactor};
   test::setAxes(grid.view, params, grid.axes);
   const SimSetup<aurora_sim::Bebop2, double> ideal = bebopSetup<double>(aurora_control::LinkParams());
   const std::vector<SimResult> flown = scalarLoop<double, false, BebopLaw>(ideal, grid.view);
@@ -220,7 +220,7 @@ TEST(VehicleConcept, ThePioneerFliesEveryBackend) {
   using PioneerLaw = aurora_control::PioneerDynamic;
   PointGrid grid;
   grid.axes = {{0.2, 0.35}, {0.5, 0.75}, {0, 2, 5}, {1.0, 1.2}};
-  const int params[4] = {paramIdOf("kc1"), paramIdOf("kd1_u"), kParamDelay, kParamFirstModelFactor};
+  const int params[4] = {paramIdOf("kc1", SweepShape::kNone), paramIdOf("kd1_u", SweepShape::kNone), kParamDelay, kParamFirstModelFactor};
   test::setAxes(grid.view, params, grid.axes);
   auto setup = [](const aurora_control::LinkParams& link, auto precision) {
     using T = decltype(precision);

@@ -70,7 +70,7 @@ TEST(FormationEquivalence, RosLoopEqualsTheFormationRunnerBitForBit) {
     }
   }
   EXPECT_EQ(layer_mismatches, 0);
-  EXPECT_EQ(ran, (steps + run.period_steps - 1) / run.period_steps);
+  EXPECT_EQ(ran, (steps + run.schedule.period_ticks - 1) / run.schedule.period_ticks);
   // Not a vacuous pass: drone 2 moved, and the two delays differ.
   double far = 0.0;
   for (const auto& kv : flown2) far = std::max(far, std::hypot(kv.second.position.x - flown2[0].position.x,

@@ -44,10 +44,11 @@ SimSetup<Vehicle, T> makeSetup(const SweepSpec& spec) {
   return s;
 }
 
-template <typename T>
-FormationSetup<T> makeFormationSetup(const SweepSpec& spec) {
-  FormationSetup<T> s;
-  s.run = castFormationRun<T>(spec.formation_run);
+// A formation sweep's setup of the formation `run` (spec.withFormation's).
+template <typename T, template <typename> class Shape, class Data>
+FormationSetup<T, Shape, Data> makeFormationSetup(const SweepSpec& spec, const ShapeRun<double, Shape, Data>& run) {
+  FormationSetup<T, Shape, Data> s;
+  s.run = castFormationRun<T>(run);
   s.criteria = spec.formation_criteria.cast<T>();
   s.iterations = spec.iterations();
   s.early_stop = spec.early_stop;
@@ -89,10 +90,20 @@ void withSweepTypes(const SweepSpec& spec, F&& f) {
   withTypesOf(spec, [](const SweepSpec& s, auto&& g) { withSweepLaw(s, g); }, f);
 }
 
-// A formation sweep's (its drones fly an AR.Drone law).
+// A formation sweep's: f(T(), capacity, law, run) with its shape's run
+// (spec.withFormation: the line's drones' AR.Drone law, the UAV-UGV line's
+// crew, the triangle's AR.Drones).
 template <class F>
 void withFormationTypes(const SweepSpec& spec, F&& f) {
-  withTypesOf(spec, [](const SweepSpec& s, auto&& g) { aurora_control::withLaw(s.law, g); }, f);
+  aurora_control::withHistoryCapacity(spec.historyNeeded(), [&](auto capacity) {
+    spec.withFormation([&](const auto& run, auto law) {
+      if (spec.precision == Precision::kDouble) {
+        f(double(), capacity, law, run);
+      } else {
+        f(float(), capacity, law, run);
+      }
+    });
+  });
 }
 
 // The scalar loops' body (scalar and threaded backends): `loop(n, simulate)`
@@ -104,11 +115,11 @@ void runEachCombination(const SweepSpec& spec, std::vector<SimResult>& out, Prog
   const long first = spec.rangeBegin();
   out.resize(spec.rangeSize());
   if (spec.formation()) {
-    return withFormationTypes(spec, [&](auto type, auto capacity, auto law) {
+    return withFormationTypes(spec, [&](auto type, auto capacity, auto law, const auto& run) {
       using T = decltype(type);
       using Law = decltype(law);
       constexpr int kCapacity = decltype(capacity)::value;
-      const FormationSetup<T> setup = makeFormationSetup<T>(spec);
+      const auto setup = makeFormationSetup<T>(spec, run);
       loop(spec.rangeSize(), [&](long i) {
         out[i] = setup.ideal_link ? simulateFormation<Law, T, kCapacity, false>(setup, grid, first + i)
                                   : simulateFormation<Law, T, kCapacity, true>(setup, grid, first + i);

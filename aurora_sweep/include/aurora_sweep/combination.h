@@ -70,8 +70,12 @@ enum LawGainId : int {
   kParamFirstPioneerDynamicGain,                     // kc1, kc2, kd1_u, kd1_omega, kd2_u, kd2_omega
   kParamFirstPioneerKinematicGain = kParamFirstPioneerDynamicGain + 6,  // k1, k2
   kParamLawGainEnd = kParamFirstPioneerKinematicGain + 2,
+  // A triangle sweep's law (its index: N, PSO, SPO, OSP, S-PO;
+  // aurora_control::TriangleLaw), after the laws' gains: older records and
+  // hashes keep theirs.
+  kParamFormationLaw = kParamLawGainEnd,
 };
-constexpr int kParamCount = kParamLawGainEnd;
+constexpr int kParamCount = kParamFormationLaw + 1;
 
 // The line of two drones (the shape a sweep file flies today).
 constexpr ShapeLayout kLineLayout{2, 6};

@@ -15,6 +15,7 @@
 
 #include "aurora_control/formation/formation_judge.h"
 #include "aurora_control/formation/formation_runner.h"
+#include "aurora_control/formation/triangle_formation.h"
 #include "aurora_sweep/simulation.h"
 
 namespace aurora_sweep {
@@ -58,7 +59,7 @@ void castFormationLayer(const aurora_control::FormationRun<U, FromShape, Data>& 
   constexpr int N = FromShape::kVariables;
   run.law = r.law;
   for (int i = 0; i < N; ++i) run.gains.k1[i] = T(r.gains.k1[i]), run.gains.k2[i] = T(r.gains.k2[i]);
-  run.period_steps = r.period_steps;
+  run.schedule = r.schedule.template cast<T>();
   run.reference.path = r.reference.path;
   run.reference.duration = T(r.reference.duration);
   for (int i = 0; i < 2; ++i) run.reference.amplitude[i] = T(r.reference.amplitude[i]);
@@ -74,6 +75,14 @@ ShapeRun<T, Shape, Data> castFormationRun(const ShapeRun<double, Shape, Data>& r
   castFormationLayer(r, run);
   return run;
 }
+
+// A triangle sweep's law (formation_law: its index); the lines fly their
+// file's (their laws are no sweep parameter).
+AURORA_HD inline void setSweptLaw(aurora_control::TriangleLaw& law, double v) {
+  law = static_cast<aurora_control::TriangleLaw>(static_cast<int>(v));
+}
+template <class Law>
+AURORA_HD inline void setSweptLaw(Law&, double) {}
 
 // A combination's formation: each drone's delay, the formation's gains, and
 // each drone's link with the link values the sweep gives, the drones'
@@ -93,6 +102,7 @@ AURORA_HD inline ShapeRun<T, Shape, Data> formationCombination(const FormationSe
     run.gains.k1[i] = T(c.v[at.k1(i)]);
     run.gains.k2[i] = T(c.v[at.k2(i)]);
   }
+  setSweptLaw(run.law, c.v[kParamFormationLaw]);
   return run;
 }
 

@@ -14,8 +14,17 @@ namespace aurora_sweep {
 
 enum class ParamGroup {
   kPdGain, kDelay, kUnderactuatedGain, kModelFactor, kLink, kRepeat, kDroneDelay, kFormationGain, kDroneLink, kUnused,
-  kLawGain,  // another vehicle's law's (sweep_gains.h)
+  kLawGain,       // another vehicle's law's (sweep_gains.h)
+  kFormationLaw,  // a triangle's law (kParamFormationLaw)
 };
+
+// A sweep's shape (sweep file `formation:`; single-robot sweeps: kNone).
+// The shapes' parameters share one room (combination.h, ShapeLayout), so
+// a parameter's name is its shape's: the line's and the UAV-UGV line's are
+// the same (2 robots, 6 variables), the triangle's its own.
+enum class SweepShape : int { kNone = 0, kLine, kUavUgvLine, kTriangle };
+constexpr int kSweepShapeCount = 4;
+const char* sweepShapeName(SweepShape shape);
 
 struct ParamInfo {
   std::string name;
@@ -27,19 +36,20 @@ struct ParamInfo {
   double preset = 0;  // a kLawGain's default (the law's defaults())
 };
 
-const ParamInfo& paramInfo(int id);
+const ParamInfo& paramInfo(int id, SweepShape shape);
 // -1 for a name no controller accepts.
-int paramIdOf(const std::string& name);
+int paramIdOf(const std::string& name, SweepShape shape);
 // A short name; "kp", "k1_theta", "m", ...
-inline const char* paramName(int id) { return paramInfo(id).name.c_str(); }
+inline const char* paramName(int id, SweepShape shape) { return paramInfo(id, shape).name.c_str(); }
 
 // Whether a sweep of controller `controller` (a law's name) accepts
 // parameter `id` (its gains, the delay, the model factors of the AR.Drone,
-// the link); a formation sweep (`formation`) accepts its drones' delays, the
-// formation's gains and the link's values instead.
-bool paramApplies(int id, const std::string& controller, bool formation = false);
+// the link); a formation sweep (shape not kNone) accepts its robots'
+// delays, the formation's gains (a triangle's law) and the link's values
+// instead.
+bool paramApplies(int id, const std::string& controller, SweepShape shape);
 // The accepted names, in ParamId order, comma separated.
-std::string acceptedParamNames(const std::string& controller, bool formation = false);
+std::string acceptedParamNames(const std::string& controller, SweepShape shape);
 // The controllers a sweep flies, comma separated, quoted: the AR.Drone's
 // two, the Bebop 2 compensator, the Pioneer's two.
 std::string sweepControllerNames();
@@ -52,8 +62,8 @@ using aurora_control::lawName;
 // vehicles' laws' gains to their defaults (sweep_gains.h), model factors
 // to 1, the link's values to an ideal link's (a sweep's link file replaces
 // them), the repeat to 0, the formation's gains to AuRoRA's (a formation
-// file's replace them). The PD gains and the delays have none (NaN: the file
+// file's replace them), a triangle's law to N (its file's replaces it). The PD gains and the delays have none (NaN: the file
 // must give them).
-double paramDefault(int id);
+double paramDefault(int id, SweepShape shape);
 
 }  // namespace aurora_sweep

@@ -8,6 +8,8 @@
 #include "aurora_control/loop/feasibility.h"
 #include "aurora_control/formation/formation_checks.h"
 #include "aurora_control/formation/formation_runner.h"
+#include "aurora_control/formation/triangle_run.h"
+#include "aurora_control/formation/uav_ugv_run.h"
 #include "aurora_control/link/link.h"
 #include "aurora_control/predictor/state_predictor.h"
 #include "aurora_control/task/task.h"
@@ -65,24 +67,50 @@ struct SweepSpec {
   // The task (one schema with the node: positioning point, waypoints,
   // circle, lemniscate); the study's by default.
   aurora_control::Task<double> task = aurora_control::positioningTask(2.0, 1.0, 2.0, 60.0);
-  double duration() const { return formation() ? formation_run.reference.duration : task.duration(); }
+  double duration() const { return formation() ? formation_duration : task.duration(); }
   // A formation sweep (sweep file 'formation:', docs/formation.md,
   // "Formation sweeps"): the formation file's run is every combination's,
-  // with its drones' delays (delay_1, ...), the formation's gains and the
-  // link values the sweep gives; judged by the formation's checks. `law` is
-  // its drones'.
+  // with its robots' delays (delay_1, ...), the formation's gains (a
+  // triangle's law) and the link values the sweep gives; judged by the
+  // formation's checks. Its shape's run: the two-drone line's
+  // (formation_run; `law` is its drones'), the UAV-UGV line's or the
+  // triangle's (three AR.Drones on the underactuated law).
   std::string formation_file;
+  SweepShape shape = SweepShape::kNone;
   aurora_control::FormationRun<double, aurora_control::LineFormation<double>> formation_run;
+  aurora_control::UavUgvRun uav_ugv_run;
+  aurora_control::TriangleRun<aurora_control::TriangleDroneLaw> triangle_run;
+  double formation_duration = 0.0;  // [s] its flights'
+  double formation_Ts = 0.0;        // [s] its robots' step
   aurora_control::FormationCriteria<double> formation_criteria =
       aurora_control::FormationCriteria<double>::study();
-  bool formation() const { return !formation_file.empty(); }
+  bool formation() const { return shape != SweepShape::kNone; }
+  // f(run, law) with the formation's run and its robots' law type (a
+  // default value); the one place a formation sweep's types are chosen.
+  template <class F>
+  void withFormation(F&& f) const {
+    if (shape == SweepShape::kTriangle) return f(triangle_run, aurora_control::TriangleDroneLaw());
+    if (shape == SweepShape::kUavUgvLine) return f(uav_ugv_run, aurora_control::UavUgvRobots());
+    aurora_control::withLaw(law, [&](auto l) { f(formation_run, l); });
+  }
+  // Where its parameters sit (combination.h).
+  ShapeLayout layout() const { return shape == SweepShape::kTriangle ? shapeLayout<aurora_control::Triangle>() : kLineLayout; }
+  // Robot d's own link (its formation file's).
+  aurora_control::LinkParams robotLink(int d) const {
+    aurora_control::LinkParams l;
+    withFormation([&](const auto& run, auto) { l = run.drone[d].link; });
+    return l;
+  }
   // The loop iterations (ticks) of every run: 1801 for the 60 s study.
   long iterations() const {
-    return formation() ? aurora_control::formationTicks(duration(), vehicle.Ts)
+    return formation() ? aurora_control::formationTicks(duration(), formation_Ts)
                        : aurora_control::studyIterationCount(duration(), Ts());
   }
   // Whether this sweep accepts parameter `id` (parameters.h).
-  bool accepts(int id) const { return paramApplies(id, controller, formation()); }
+  bool accepts(int id) const { return paramApplies(id, controller, shape); }
+  // Parameter id's name and rules in this sweep (its shape's).
+  const ParamInfo& param(int id) const { return paramInfo(id, shape); }
+  const char* paramNameOf(int id) const { return paramName(id, shape); }
   aurora_control::FeasibilityCriteria<double> criteria =
       aurora_control::FeasibilityCriteria<double>::study();
   std::vector<Axis> axes;           // in variation order: axes[0] varies fastest
@@ -117,7 +145,7 @@ struct SweepSpec {
   // A formation drone's link with the sweep's largest value of each link
   // value it gives that drone (the drone's own for the others).
   aurora_control::LinkParams formationWorstLink(int d) const {
-    aurora_control::LinkParams worst = formation_run.drone[d].link;
+    aurora_control::LinkParams worst = robotLink(d);
     for (int i = 0; i < kLinkParamCount; ++i) {
       if (droneLinkValueGiven(d, i)) aurora_control::setLinkValue(worst, i, maxValue(droneLinkParam(d, i)));
     }
@@ -127,8 +155,8 @@ struct SweepSpec {
   // plus its worst link's jitter.
   long formationHistoryNeeded() const {
     long longest = 0;
-    for (int d = 0; d < kLineLayout.robots; ++d) {
-      const long h = formationWorstLink(d).historyNeeded(static_cast<long>(maxValue(kLineLayout.delay(d))));
+    for (int d = 0; d < layout().robots; ++d) {
+      const long h = formationWorstLink(d).historyNeeded(static_cast<long>(maxValue(layout().delay(d))));
       longest = h > longest ? h : longest;
     }
     return longest;
@@ -140,7 +168,7 @@ struct SweepSpec {
   // (uplink_loss_2) when the sweep gives it, else the drones' common one
   // (formationCombination applies them in that order).
   int droneLinkParam(int d, int i) const {
-    const int own = kLineLayout.linkValue(d, i);
+    const int own = layout().linkValue(d, i);
     return given(own) ? own : kParamFirstLinkValue + i;
   }
   bool droneLinkValueGiven(int d, int i) const { return given(droneLinkParam(d, i)); }
@@ -158,8 +186,8 @@ struct SweepSpec {
       if (varies(kParamFirstLinkValue + i)) return false;
     }
     if (!formation()) return link.ideal();
-    for (int d = 0; d < kLineLayout.robots; ++d) {
-      aurora_control::LinkParams l = formation_run.drone[d].link;
+    for (int d = 0; d < layout().robots; ++d) {
+      aurora_control::LinkParams l = robotLink(d);
       for (int i = 0; i < kLinkParamCount; ++i) {
         if (varies(droneLinkParam(d, i))) return false;
         if (droneLinkValueGiven(d, i)) aurora_control::setLinkValue(l, i, fixed[droneLinkParam(d, i)]);
@@ -215,7 +243,7 @@ struct SweepSpec {
   }
 
   SweepSpec() {
-    for (int id = 0; id < kParamCount; ++id) fixed[id] = paramDefault(id);
+    for (int id = 0; id < kParamCount; ++id) fixed[id] = paramDefault(id, shape);
   }
 
   // Whether a parameter varies (on an axis or a points column; the repeat
@@ -248,11 +276,12 @@ struct SweepSpec {
   std::vector<int> columns() const {
     std::vector<int> c;
     for (int id = 0; id < kParamCount; ++id) {
-      const ParamGroup group = paramInfo(id).group;
+      const ParamGroup group = param(id).group;
       const bool shown = group == ParamGroup::kModelFactor ? varies(id) || fixed[id] != 1.0
                          : group == ParamGroup::kLink   ? !linkIdeal() && (!formation() || linkValueGiven(id - kParamFirstLinkValue))
                          : group == ParamGroup::kRepeat ? repeats > 1
                          : group == ParamGroup::kFormationGain ? varies(id)
+                         : group == ParamGroup::kFormationLaw ? formation() && accepts(id)
                          : group == ParamGroup::kDroneLink ? formation() && given(id)
                                                         : accepts(id);
       if (shown) c.push_back(id);

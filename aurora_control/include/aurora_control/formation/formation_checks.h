@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cmath>
+#include <type_traits>
 
 #include "aurora_control/loop/feasibility.h"
 #include "aurora_common/scalar_math.h"
@@ -33,20 +34,10 @@ struct FormationCriteria {
   }
 };
 
-// The two errors of positions X against the desired positions Xd (eq. F9;
-// Xd = Shape::positions(Qd), which changes only when the layer runs): the
-// formation's position error |p_Fd - p_F| and the shape error, the distance
-// between the drones' offsets from drone 1 and the desired offsets (for the
-// line: where drone 2 is against where it should be, seen from drone 1) [m].
+// The distance between the drones' offsets from drone 1 in X and in Xd [m].
 template <class Shape, typename T>
-AURORA_HD inline void formationErrors(const T X[Shape::kVariables], const T Xd[Shape::kVariables], T& position,
-                                      T& shape) {
+AURORA_HD inline T offsetError(const T X[Shape::kVariables], const T Xd[Shape::kVariables]) {
   using std::sqrt;
-  T p[3], pd[3];
-  Shape::formationPosition(X, p);
-  Shape::formationPosition(Xd, pd);
-  const T ep[3] = {pd[0] - p[0], pd[1] - p[1], pd[2] - p[2]};
-  position = norm3(ep);
   T sum = T(0);
   for (int d = 1; d < Shape::kDrones; ++d) {
     for (int i = 0; i < 3; ++i) {
@@ -54,7 +45,44 @@ AURORA_HD inline void formationErrors(const T X[Shape::kVariables], const T Xd[S
       sum = sum + e * e;
     }
   }
-  shape = sqrt(sum);
+  return sqrt(sum);
+}
+
+// A shape whose variables cannot tell a formation from its mirror image
+// (Shape::mirror: the triangle's) is judged against the nearer of the two.
+template <class Shape, class = void>
+struct HasMirror : std::false_type {};
+template <class Shape>
+struct HasMirror<Shape, decltype(void(&Shape::mirror))> : std::true_type {};
+
+template <class Shape, typename T>
+AURORA_HD inline void nearerMirror(const T*, const T*, T&, std::false_type) {}
+template <class Shape, typename T>
+AURORA_HD inline void nearerMirror(const T X[Shape::kVariables], const T Xd[Shape::kVariables], T& shape,
+                                   std::true_type) {
+  using aurora_common::select;
+  T M[Shape::kVariables];
+  Shape::mirror(Xd, M);
+  const T other = offsetError<Shape>(X, M);
+  shape = select(other < shape, other, shape);  // a NaN shape error stays NaN
+}
+
+// The two errors of positions X against the desired positions Xd (eq. F9;
+// Xd = Shape::positions(Qd), which changes only when the layer runs): the
+// formation's position error |p_Fd - p_F| and the shape error, the distance
+// between the drones' offsets from drone 1 and the desired offsets (for the
+// line: where drone 2 is against where it should be, seen from drone 1;
+// for the triangle: against the nearer of Xd and its mirror image) [m].
+template <class Shape, typename T>
+AURORA_HD inline void formationErrors(const T X[Shape::kVariables], const T Xd[Shape::kVariables], T& position,
+                                      T& shape) {
+  T p[3], pd[3];
+  Shape::formationPosition(X, p);
+  Shape::formationPosition(Xd, pd);
+  const T ep[3] = {pd[0] - p[0], pd[1] - p[1], pd[2] - p[2]};
+  position = norm3(ep);
+  shape = offsetError<Shape>(X, Xd);
+  nearerMirror<Shape>(X, Xd, shape, HasMirror<Shape>());
 }
 
 // The smallest distance between any two drones of positions X [m]; NaN

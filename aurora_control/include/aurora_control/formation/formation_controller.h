@@ -35,7 +35,7 @@ class FormationController {
   // delays and links; `law`: the drones' law. Commands are not clamped here
   // (the formation script clamps nowhere; drivers and the sim clamp).
   FormationController(const FormationRun<double, Line>& run, LawType law)
-      : run_(run), layer_(run.law, run.gains, double(run.period_steps) * run.drone[0].plant.Ts) {
+      : run_(run), layer_(run.law, run.gains, run.schedule.period(run.drone[0].plant.Ts)) {
     for (int d = 0; d < kDrones; ++d) {
       ControllerSettings& s = core_[d].settings;
       s.law = law;
@@ -81,13 +81,14 @@ class FormationController {
     last_k_ = k;
     Tick t;
     t.k = k;
-    t.layer_ran = layerDue(k, run_.period_steps);
+    const long n = run_.schedule.periodBefore(k);
+    t.layer_ran = n >= 0;
     if (t.layer_ran) {
       double seen[Line::kVariables], Qd[Line::kVariables];
       const double* delivered[kDrones];
       for (int d = 0; d < kDrones; ++d) delivered[d] = core_[d].delivered().X;
       dronePositions<Line>(delivered, seen);
-      run_.reference.at(taskTime(double(k), run_.drone[0].plant.Ts), Qd);
+      run_.reference.at(run_.schedule.time(n, run_.drone[0].plant.Ts), Qd);
       layer_.update(seen, Qd);
     }
     for (int d = 0; d < kDrones; ++d) {

@@ -27,14 +27,43 @@ struct FormationGains {
   }
 };
 
-// Whether the layer runs at tick k: every `period_steps` robot steps from
-// tick 0 (T_F = period_steps Ts; docs/formation.md, "One tick"). The
-// runner, the SIMD engine and the formation node all ask this.
-AURORA_HD inline bool layerDue(long k, long period_steps) { return k % period_steps == 0; }
+// When the layer runs, and the time it reads Qd at (docs/formation.md,
+// "One tick"). Robot steps and layer periods fall on a common base tick: a
+// period is `period_ticks` of them, a robot step `step_ticks` (at most the
+// period: one layer before a step at most). The line's layer runs on the
+// robots' clock (every period_ticks steps from step 0, T_F = period_ticks
+// Ts, AuRoRA's formation script's t = k Ts); the triangle's on its own
+// (TriangularFormation3D's t = n T_F; its AR.Drones' 0.05 s beside 1/30 s
+// on a base tick of 1/60 s: period 3, step 2). The runner, the SIMD
+// engine, the kernel's threads and the formation node all ask it.
+template <typename T>
+struct LayerSchedule {
+  long period_ticks = 6;   // p [base ticks]
+  long step_ticks = 1;     // q [base ticks], q <= p
+  bool own_clock = false;  // the layer's own clock (own_period), not the robots' steps
+  T own_period = T(0);     // [s] T_F on its own clock
 
-template <typename T, class Shape>
+  // The period n whose layer runs before robot step k (-1: none): by its
+  // base tick n p the robots took floor(n p / q) steps, so it falls before
+  // step k when k q <= n p < (k + 1) q.
+  AURORA_HD long periodBefore(long k) const {
+    const long n = (k * step_ticks + period_ticks - 1) / period_ticks;
+    return n * period_ticks < (k + 1) * step_ticks ? n : -1;
+  }
+  // T_F [s] for robots of step Ts.
+  AURORA_HD T period(const T& Ts) const { return own_clock ? own_period : T(period_ticks) * Ts; }
+  // The time of period n [s]: on the robots' clock its step's, k Ts.
+  AURORA_HD T time(long n, const T& Ts) const { return own_clock ? T(n) * own_period : T(n * period_ticks) * Ts; }
+  template <typename U>
+  AURORA_HD LayerSchedule<U> cast() const {
+    return LayerSchedule<U>{period_ticks, step_ticks, own_clock, U(own_period)};
+  }
+};
+
+template <typename T, class S>
 class FormationLayer {
  public:
+  using Shape = S;
   static constexpr int kN = Shape::kVariables;  // Q's size; also the drones' stacked positions (3 per drone)
   static_assert(kN == 3 * Shape::kDrones, "a shape of d drones has 3 d variables here");
 
@@ -67,6 +96,9 @@ class FormationLayer {
     Shape::velocities(law_, X, v, dXr_);
     for (int i = 0; i < kN; ++i) Xr_[i] += dXr_[i] * period_;
   }
+  // As the one formation loop calls a layer, with its period's time
+  // (formation_runner.h; this layer's rate is its backward difference).
+  AURORA_HD void update(const T X[kN], const T Qd[kN], const T&) { update(X, Qd); }
 
   // Drone d's reference (0-based): its position and velocity [m, m/s].
   AURORA_HD const T* position(int d) const { return Xr_ + 3 * d; }

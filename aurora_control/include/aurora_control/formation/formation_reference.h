@@ -6,12 +6,19 @@
 #pragma once
 
 #include <cmath>
+#include <limits>
+#include <type_traits>
 
 #include "aurora_common/host_device.h"
+#include "aurora_control/formation/triangle_reference.h"
+#include "aurora_control/formation/uav_ugv_line.h"
 
 namespace aurora_control {
 
-enum class FormationPath : int { kFixed = 0, kLemniscate = 1 };
+// kCarrousel: the triangle's moving reference (triangle_reference.h, eq. T6;
+// nine variables only); kUavUgv: the UAV-UGV line's (uav_ugv_line.h, eq.
+// L4; six).
+enum class FormationPath : int { kFixed = 0, kLemniscate = 1, kCarrousel = 2, kUavUgv = 3 };
 
 template <typename T, int N>
 struct FormationReference {
@@ -24,6 +31,8 @@ struct FormationReference {
   // xF = x + rX sin(w tp), yF = y + rY sin(2 w tp); the rest fixed.
   AURORA_HD void at(const T& t, T Qd[N]) const {
     using std::sin;
+    if (path == FormationPath::kCarrousel) return carrousel(t, Qd, std::integral_constant<bool, N == 9>());
+    if (path == FormationPath::kUavUgv) return uavUgv(t, Qd, std::integral_constant<bool, N == 6>());
     for (int i = 0; i < N; ++i) Qd[i] = Q[i];
     if (path != FormationPath::kLemniscate) return;
     const T s = t / duration;
@@ -31,6 +40,20 @@ struct FormationReference {
     const T w = T(2) * T(3.14159265358979323846) / duration;
     Qd[0] += amplitude[0] * sin(w * tp);
     Qd[1] += amplitude[1] * sin(T(2) * w * tp);
+  }
+
+ private:
+  AURORA_HD static void carrousel(const T& t, T* Qd, std::true_type) { carrouselReference(t, Qd); }
+  AURORA_HD static void uavUgv(const T& t, T* Qd, std::true_type) {
+    T dQd[6];
+    uavUgvReference(t, Qd, dQd);
+  }
+  // Another shape's Qd is not these shapes': NaN, which no check passes
+  // (its files refuse the path).
+  AURORA_HD static void carrousel(const T&, T* Qd, std::false_type) { notThisShape(Qd); }
+  AURORA_HD static void uavUgv(const T&, T* Qd, std::false_type) { notThisShape(Qd); }
+  AURORA_HD static void notThisShape(T* Qd) {
+    for (int i = 0; i < N; ++i) Qd[i] = T(std::numeric_limits<double>::quiet_NaN());
   }
 };
 

@@ -13,6 +13,7 @@
 #include "aurora_control/loop/delay_buffer.h"
 #include "aurora_control/formation/formation_layer.h"
 #include "aurora_control/formation/formation_reference.h"
+#include "aurora_control/formation/uav_ugv_line.h"
 #include "aurora_control/link/loop_link.h"
 
 namespace aurora_control {
@@ -38,13 +39,28 @@ using DroneState = LoopState<Data, T, Mask>;
 template <typename T, class Data = ArdroneLawData>
 using DroneStep = LoopStep<T, Data::Vehicle::kInputs>;
 
+// A shape's layer and desired formation: the integrating layer
+// (formation_layer.h: the line's, the triangle's) and FormationReference;
+// a shape with a layer of its own says so here (the UAV-UGV line's runs
+// every tick without integration, uav_ugv_line.h).
+template <typename T, class Shape>
+struct FormationParts {
+  using Layer = FormationLayer<T, Shape>;
+};
+template <typename T, typename U>
+struct FormationParts<T, UavUgvLine<U>> {
+  using Layer = UavUgvLayer<T>;
+};
+template <typename T, class Shape>
+using LayerOf = typename FormationParts<T, Shape>::Layer;
+
 template <typename T, class Shape, class Data = ArdroneLawData>
 struct FormationRun {
   static constexpr int kDrones = Shape::kDrones, kN = Shape::kVariables;
   FormationDrone<T, Data> drone[kDrones];
   typename Shape::Law law = Shape::kDefaultLaw;
   FormationGains<T, kN> gains = FormationGains<T, kN>::template of<Shape>();
-  long period_steps = 6;  // the layer's period in drone steps (0.2 s at 1/30 s)
+  LayerSchedule<T> schedule;  // when the layer runs (the line's default: every 6 steps, 0.2 s at 1/30 s)
   FormationReference<T, kN> reference;
   ClampPolicy clamp;      // none: AuRoRA's formation script does not clamp
 };
@@ -71,7 +87,7 @@ struct FormationObservation {
   const T (*X_before)[Vehicle::kStates];           // each drone's state at the tick's start (X_k)
   const DroneState<T, bool, Data>* drones;          // after the model step, per drone (X_(k+1))
   const DroneStep<T, Data>* steps;                  // each drone's reference and applied command
-  const FormationLayer<T, Shape>& layer;
+  const LayerOf<T, Shape>& layer;
 };
 
 // The robots' stacked positions (3 per robot, the shape's X) of their
@@ -94,7 +110,7 @@ AURORA_HD inline void modelPositions(const Loops& state, T positions[Shape::kVar
 // when the formation begins (docs/formation.md, "Real drones").
 template <typename T, class Shape, class Data>
 AURORA_HD inline void startLayerAt(const FormationRun<T, Shape, Data>& run, const T X0[Shape::kVariables],
-                                   FormationLayer<T, Shape>& layer) {
+                                   LayerOf<T, Shape>& layer) {
   T Qd[Shape::kVariables];
   run.reference.at(T(0), Qd);
   layer.start(X0, Qd);
@@ -111,16 +127,16 @@ AURORA_HD inline void startPositions(const FormationRun<T, Shape, Data>& run, T 
 // The layer before its first period: the references at the drones' starts,
 // the previous Qd = Qd(0) (formation_layer.h).
 template <typename T, class Shape, class Data>
-AURORA_HD inline void startLayer(const FormationRun<T, Shape, Data>& run, FormationLayer<T, Shape>& layer) {
+AURORA_HD inline void startLayer(const FormationRun<T, Shape, Data>& run, LayerOf<T, Shape>& layer) {
   T X0[Shape::kVariables];
   startPositions(run, X0);
   startLayerAt(run, X0, layer);
 }
 
 // Drone d's reference as the layer holds it (position, velocity).
-template <typename T, class Shape>
-AURORA_HD inline Reference<T> heldReference(const FormationLayer<T, Shape>& layer, int d) {
-  HeldReference<T> held;
+template <class Layer>
+AURORA_HD inline auto heldReference(const Layer& layer, int d) -> Reference<typename std::decay<decltype(*layer.position(d))>::type> {
+  HeldReference<typename std::decay<decltype(*layer.position(d))>::type> held;
   held.hold(layer.position(d), layer.velocity(d));
   return held.ref;
 }
@@ -130,7 +146,7 @@ AURORA_HD inline Reference<T> heldReference(const FormationLayer<T, Shape>& laye
 // rest at its start; the layer started (startLayer).
 template <typename T, class Shape, class Data, typename Mask>
 AURORA_HD inline void startFormation(const FormationRun<T, Shape, Data>& run, DroneParams<T, Data>* params,
-                                     DroneState<T, Mask, Data>* state, FormationLayer<T, Shape>& layer) {
+                                     DroneState<T, Mask, Data>* state, LayerOf<T, Shape>& layer) {
   using Vehicle = typename Data::Vehicle;
   for (int d = 0; d < Shape::kDrones; ++d) {
     params[d] = DroneParams<T, Data>{run.drone[d].plant, run.drone[d].model, run.drone[d].gains,
@@ -157,16 +173,17 @@ struct DroneDownlink {
 // due), then each drone's law towards its held reference, its command
 // through downlink(d, U) and one model step. Scalars or SIMD batches (one
 // formation per lane, every lane at the same tick).
-template <class Law, typename T, typename Mask, class Shape, class Downlink>
+template <class Law, typename T, typename Mask, class Layer, class Downlink>
 AURORA_HD inline void formationTick(const DroneParams<T, typename Law::Data>* params, const ClampPolicy& clamp,
-                                    FormationLayer<T, Shape>& layer, const T* Qd, const T& k,
+                                    Layer& layer, const T* Qd, const T& t, const T& k,
                                     const T (*xc)[Law::Vehicle::kStates], DroneState<T, Mask, typename Law::Data>* state,
                                     DroneStep<T, typename Law::Data>* step, Downlink&& downlink) {
+  using Shape = typename Layer::Shape;
   constexpr int D = Shape::kDrones;
   if (Qd) {
     T seen[Shape::kVariables];
     dronePositions<Shape, typename Law::Vehicle>(xc, seen);
-    layer.update(seen, Qd);
+    layer.update(seen, Qd, t);
   }
   for (int d = 0; d < D; ++d) {
     HeldReference<T> held;
@@ -199,21 +216,23 @@ AURORA_HD long runFormationOver(const FormationRun<T, Shape, typename Law::Data>
                                 Observer& observe, Link* links) {
   using Data = typename Law::Data;
   constexpr int D = Shape::kDrones, N = Shape::kVariables, S = Law::Vehicle::kStates;
-  FormationLayer<T, Shape> layer(run.law, run.gains, T(run.period_steps) * run.drone[0].plant.Ts);
+  const T Ts = run.drone[0].plant.Ts;
+  LayerOf<T, Shape> layer(run.law, run.gains, run.schedule.period(Ts));
   DroneParams<T, Data> params[D];
   DroneState<T, bool, Data> state[D];
   StateHistory<Law, T, Capacity> history[D];
   startFormation(run, params, state, layer);
   for (long k = 0; k < iterations; ++k) {
-    T xc[D][S], before[D][S], Qd[N];
+    T xc[D][S], before[D][S], Qd[N], t = T(0);
     for (int d = 0; d < D; ++d) {
       for (int i = 0; i < S; ++i) before[d][i] = state[d].model.X[i];
       receiveState(k, history[d], links[d], state[d], xc[d]);
     }
-    const bool due = layerDue(k, run.period_steps);
-    if (due) run.reference.at(taskTime(T(k), run.drone[0].plant.Ts), Qd);
+    const long n = run.schedule.periodBefore(k);
+    const bool due = n >= 0;
+    if (due) t = run.schedule.time(n, Ts), run.reference.at(t, Qd);
     DroneStep<T, Data> step[D];
-    formationTick<Law>(params, run.clamp, layer, due ? Qd : nullptr, T(k), xc, state, step,
+    formationTick<Law>(params, run.clamp, layer, due ? Qd : nullptr, t, T(k), xc, state, step,
                        [&](int d, T U[Law::Vehicle::kInputs]) { links[d].downlink(k, U, U); });
     if (!observeTick(observe, FormationObservation<T, Shape, Data>{k, due, before, state, step, layer})) return k + 1;
   }

@@ -261,8 +261,8 @@ inline FormationRun<double, LineFormation<double>> formationRun(const FormationF
   run.gains = f.gains;
   run.reference = f.reference;
   const double steps = f.period / vehicle.Ts;
-  run.period_steps = std::lround(steps);
-  if (run.period_steps < 1 || std::fabs(steps - double(run.period_steps)) > 1e-9 * steps) {
+  run.schedule.period_ticks = std::lround(steps);  // on the drones' steps (step_ticks 1)
+  if (run.schedule.period_ticks < 1 || std::fabs(steps - double(run.schedule.period_ticks)) > 1e-9 * steps) {
     throw ConfigError("formation.period = " + YamlReader::fmt(f.period) + " s is refused: accepted a whole number of drone steps of " +
                       YamlReader::fmt(vehicle.Ts) + " s (0.2 s = 6 steps at 30 Hz)");
   }

@@ -23,7 +23,7 @@
 #include <vector>
 
 #include "aurora_control/formation/formation_yaml.h"
-#include "aurora_control/formation/triangle_flight.h"
+#include "aurora_control/formation/triangle_run.h"
 #include "aurora_sim/vehicle_yaml.h"
 
 namespace aurora_control {
@@ -44,8 +44,13 @@ inline TriangleLaw triangleLawOf(const std::string& name, const std::string& key
 
 namespace triangle_yaml_detail {
 
-// The base tick: period = p tick and Ts = q tick with q <= 12.
+// The base tick: period = p tick and Ts = q tick with q <= 12, and q <= p
+// (one layer before a drone step at most: LayerSchedule).
 inline void baseTick(const YamlReader& r, double period, double Ts, TriangleSetup& s) {
+  if (period < Ts * (1.0 - 1e-9)) {
+    r.fail("formation.period", "= " + YamlReader::fmt(period) + " s is refused: below the drones' step " +
+                                   YamlReader::fmt(Ts) + " s (the layer runs at most once per step)");
+  }
   for (long q = 1; q <= 12; ++q) {
     const long p = std::lround(double(q) * period / Ts);
     if (p >= 1 && std::fabs(double(p) * Ts / double(q) - period) <= 1e-9 * period) {

@@ -16,6 +16,8 @@ namespace aurora_control {
 
 template <typename T>
 struct UavUgvLine {
+  using Law = int;  // one law (eq. L3)
+  static constexpr Law kDefaultLaw = 0;
   static constexpr int kDrones = 2;
   static constexpr int kVariables = 6;
 
@@ -43,6 +45,11 @@ struct UavUgvLine {
     Q[3] = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
     Q[4] = atan2(d[1], d[0]);
     Q[5] = atan2(d[2], horizontal);
+  }
+
+  // The formation's position: robot 1's, the reference (xf, yf, zf).
+  AURORA_HD static void formationPosition(const T X[6], T c[3]) {
+    for (int i = 0; i < 3; ++i) c[i] = X[i];
   }
 
   // p1 = (xf, yf, zf), p2 = p1 + rho (c_alpha c_beta, s_alpha c_beta, s_beta).
@@ -138,5 +145,37 @@ AURORA_HD inline void uavUgvReference(const T& t, T Qd[6], T dQd[6]) {
   const T dq[6] = {a * w * c1, T(2) * b * w * c2, T(0), T(0), T(0), T(0)};
   for (int i = 0; i < 6; ++i) Qd[i] = q[i], dQd[i] = dq[i];
 }
+
+// The layer as the one formation loop runs a shape's (formation_runner.h,
+// FormationParts): every tick (its period the robots' step), towards the
+// Qd the run's reference gives (eq. L4, FormationPath::kUavUgv), with that
+// trajectory's analytic rate at the period's time t (the one trajectory a
+// UAV-UGV line file flies).
+template <typename T>
+class UavUgvLayer {
+ public:
+  using Shape = UavUgvLine<T>;
+  static constexpr int kN = 6;
+  template <class Gains>
+  AURORA_HD UavUgvLayer(int, const Gains& gains, const T&) : layer_(gains.k1, gains.k2) {}
+
+  // Before the first tick: nothing held (the layer runs before every law).
+  AURORA_HD void start(const T[6], const T[6]) {}
+  AURORA_HD void update(const T X[6], const T Qd[6], const T& t) {
+    T reference[6], dQd[6];
+    uavUgvReference(t, reference, dQd);
+    layer_.update(X, Qd, dQd);
+    for (int i = 0; i < 6; ++i) Qd_[i] = Qd[i];
+  }
+  AURORA_HD const T* position(int robot) const { return layer_.position(robot); }
+  AURORA_HD const T* velocity(int robot) const { return layer_.velocity(robot); }
+  AURORA_HD const T* Q() const { return layer_.Q(); }
+  AURORA_HD const T* Qd() const { return Qd_; }
+  AURORA_HD const T* Qtil() const { return layer_.Qtil(); }
+
+ private:
+  UavUgvLineLayer<T> layer_;
+  T Qd_[6] = {};
+};
 
 }  // namespace aurora_control

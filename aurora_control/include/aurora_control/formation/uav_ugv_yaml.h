@@ -18,7 +18,7 @@
 #include <string>
 
 #include "aurora_control/formation/formation_yaml.h"
-#include "aurora_control/formation/uav_ugv_flight.h"
+#include "aurora_control/formation/uav_ugv_run.h"
 #include "aurora_control/law/pioneer_yaml.h"
 #include "aurora_sim/vehicle_yaml.h"
 

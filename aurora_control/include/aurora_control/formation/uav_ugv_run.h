@@ -1,0 +1,64 @@
+// The UAV-UGV line (docs/formation.md, "The UAV-UGV line") as the one
+// formation loop flies it (formation_runner.h): a Pioneer P3-DX (robot 1,
+// the reference) and an AR.Drone (robot 2), each on its own law and model
+// (a crew of EitherLaw robots), at the formation's tick, under the layer
+// without integration (uav_ugv_line.h: every tick, before the laws, on the
+// states the robots' links delivered). Each robot's state reaches the layer
+// and its law, and its command the robot, over its own link (the delay
+// rule with its delay over an ideal link, 0 AuRoRA's; or its link model,
+// its draws keyed by its index). ROS-free.
+#pragma once
+
+#include <cmath>
+
+#include "aurora_control/formation/formation_runner.h"
+#include "aurora_control/formation/uav_ugv_line.h"
+#include "aurora_control/law/control_law.h"
+#include "aurora_control/law/either_law.h"
+#include "aurora_control/law/pioneer_laws.h"
+#include "aurora_control/link/link.h"
+
+namespace aurora_control {
+
+struct UavUgvLineSetup {
+  aurora_sim::Pioneer3dx::Params<double> pioneer{};  // its sample time is the tick's
+  PioneerDynamicGains<double> pioneer_gains = PioneerDynamicGains<double>::defaults();
+  double pioneer_start[3] = {-1, 0, 0};  // [m] its control point (AuRoRA's 2018 rSetPose), heading 0
+  LawVehicleParams drone{};
+  LawGains<double> drone_gains{{0.0, 0.0}, UnderactuatedGains<double>::defaults()};  // the underactuated law's
+  double drone_start[3] = {0, 0, 0.75};  // [m], at rest
+  double k1[6], k2[6];                   // the layer's gains (UavUgvLine::defaultGains: AuRoRA's)
+  double tick = 1.0 / 30.0;              // [s]
+  long delay[2] = {0, 0};                // [ticks] each robot's feedback delay (Pioneer, drone)
+  LinkParams link[2];                    // each robot's link (docs/links.md; ideal unless its file gives one)
+  double duration = 130.0;               // [s]: ticks k = 0 .. round(duration / tick) - 1
+  long ticks() const { return std::lround(duration / tick); }
+};
+
+// Robot 1 the Pioneer on its dynamic law, robot 2 the AR.Drone on the
+// underactuated law.
+using UavUgvRobots = EitherLaw<PioneerDynamic, ArdroneLaw<LawType::kUnderactuated>>;
+using UavUgvShape = UavUgvLine<double>;
+using UavUgvRun = FormationRun<double, UavUgvShape, UavUgvRobots::Data>;
+
+inline UavUgvRun uavUgvRun(const UavUgvLineSetup& s) {
+  using Params = UavUgvRobots::Vehicle::Params<double>;
+  UavUgvRun run;
+  for (int i = 0; i < 6; ++i) run.gains.k1[i] = s.k1[i], run.gains.k2[i] = s.k2[i];
+  run.reference.path = FormationPath::kUavUgv;
+  run.schedule.period_ticks = 1;  // every tick, on the robots' clock: t = k tick
+  run.drone[0].plant = run.drone[0].model = Params::ofFirst(s.pioneer);
+  run.drone[1].plant = run.drone[1].model = Params::ofSecond(s.drone);
+  const double* starts[2] = {s.pioneer_start, s.drone_start};
+  for (int r = 0; r < 2; ++r) {
+    auto& robot = run.drone[r];
+    robot.gains.first = s.pioneer_gains;
+    robot.gains.second = s.drone_gains;
+    robot.delay = s.delay[r];
+    robot.link = s.link[r];
+    for (int i = 0; i < 3; ++i) robot.start[i] = starts[r][i];
+  }
+  return run;
+}
+
+}  // namespace aurora_control
