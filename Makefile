@@ -53,6 +53,7 @@ bench: build
 	./bench/laws.sh $(BUILD)
 	./bench/links.sh $(BUILD)
 	./bench/formation.sh $(BUILD)
+	./bench/formation_robots.sh $(BUILD)
 	./bench/predictor.sh $(BUILD)
 	./bench/python.sh $(BUILD)
 

@@ -23,8 +23,9 @@ const char* kAbout =
     "usage: sweep --config FILE --out DIR [options]\n"
     "\n"
     "Runs every combination of a sweep file (a law's gains x delay x model factors x\n"
-    "link values, on any task; or a formation's drones' delays x formation gains x link\n"
-    "values with `formation:`; a grid, a sampling design or a points file) and writes\n"
+    "link values, on any task; or a formation's robots' delays x formation gains x link\n"
+    "values (a triangle's law) with `formation:` (the two-drone line, AuRoRA's UAV-UGV\n"
+    "line, its triangle); a grid, a sampling design or a points file) and writes\n"
     "DIR/results.csv (one row per combination), DIR/summary.json and DIR/*.png.\n"
     "\n"
     "options";

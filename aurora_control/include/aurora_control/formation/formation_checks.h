@@ -48,23 +48,20 @@ AURORA_HD inline T offsetError(const T X[Shape::kVariables], const T Xd[Shape::k
   return sqrt(sum);
 }
 
-// A shape whose variables cannot tell a formation from its mirror image
-// (Shape::mirror: the triangle's) is judged against the nearer of the two.
+// A shape with its own shape error (Shape::shapeError: the triangle's
+// sides); the others the offsets' (offsetError).
 template <class Shape, class = void>
-struct HasMirror : std::false_type {};
+struct HasShapeError : std::false_type {};
 template <class Shape>
-struct HasMirror<Shape, decltype(void(&Shape::mirror))> : std::true_type {};
+struct HasShapeError<Shape, decltype(void(&Shape::shapeError))> : std::true_type {};
 
 template <class Shape, typename T>
-AURORA_HD inline void nearerMirror(const T*, const T*, T&, std::false_type) {}
+AURORA_HD inline T shapeErrorOf(const T* X, const T* Xd, std::false_type) {
+  return offsetError<Shape>(X, Xd);
+}
 template <class Shape, typename T>
-AURORA_HD inline void nearerMirror(const T X[Shape::kVariables], const T Xd[Shape::kVariables], T& shape,
-                                   std::true_type) {
-  using aurora_common::select;
-  T M[Shape::kVariables];
-  Shape::mirror(Xd, M);
-  const T other = offsetError<Shape>(X, M);
-  shape = select(other < shape, other, shape);  // a NaN shape error stays NaN
+AURORA_HD inline T shapeErrorOf(const T* X, const T* Xd, std::true_type) {
+  return Shape::shapeError(X, Xd);
 }
 
 // The two errors of positions X against the desired positions Xd (eq. F9;
@@ -72,7 +69,7 @@ AURORA_HD inline void nearerMirror(const T X[Shape::kVariables], const T Xd[Shap
 // formation's position error |p_Fd - p_F| and the shape error, the distance
 // between the drones' offsets from drone 1 and the desired offsets (for the
 // line: where drone 2 is against where it should be, seen from drone 1;
-// for the triangle: against the nearer of Xd and its mirror image) [m].
+// the triangle's: its sides against the desired ones) [m].
 template <class Shape, typename T>
 AURORA_HD inline void formationErrors(const T X[Shape::kVariables], const T Xd[Shape::kVariables], T& position,
                                       T& shape) {
@@ -81,8 +78,7 @@ AURORA_HD inline void formationErrors(const T X[Shape::kVariables], const T Xd[S
   Shape::formationPosition(Xd, pd);
   const T ep[3] = {pd[0] - p[0], pd[1] - p[1], pd[2] - p[2]};
   position = norm3(ep);
-  shape = offsetError<Shape>(X, Xd);
-  nearerMirror<Shape>(X, Xd, shape, HasMirror<Shape>());
+  shape = shapeErrorOf<Shape>(X, Xd, HasShapeError<Shape>());
 }
 
 // The smallest distance between any two drones of positions X [m]; NaN

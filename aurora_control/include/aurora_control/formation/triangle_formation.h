@@ -99,26 +99,19 @@ struct TriangleFormation {
     }
   }
 
-  // The other triangle of the same Q: Q cannot tell a triangle from its
-  // mirror image across the plane through robot 1 and the median,
-  // perpendicular to the triangle (beta is unsigned; docs/formation.md,
-  // "What the triangle cannot express"). Robots 2 and 3 of X reflected
-  // there: x' = x - 2 ((x - p1) . w) w, w the unit in-plane normal of the
-  // median (m x n x m, n the triangle's normal). The formation checks
-  // judge the shape against the nearer of the two (formation_checks.h).
-  AURORA_HD static void mirror(const T X[9], T M[9]) {
+  // The shape error the formation checks judge (formation_checks.h) [m]:
+  // how far the triangle's sides are from the desired ones (p, q and the
+  // third side r: its shape variables, as the line's judge its rho, alpha,
+  // beta). Q cannot tell a triangle from its mirror image (beta is
+  // unsigned), and its orientation (phi, theta, psi) is a task of its own
+  // that the PSO-family laws let lag by design (docs/formation.md): the
+  // sides judge neither.
+  AURORA_HD static T shapeError(const T X[9], const T Xd[9]) {
     using std::sqrt;
-    T m[3], a[3], b[3], n[3], w[3];
-    triangle_detail::median(X, m);
-    for (int i = 0; i < 3; ++i) a[i] = X[3 + i] - X[i], b[i] = X[6 + i] - X[i];
-    triangle_detail::cross(a, b, n);
-    triangle_detail::cross(n, m, w);  // in the plane, across the median
-    const T norm = sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
-    for (int i = 0; i < 3; ++i) w[i] = w[i] / norm, M[i] = X[i];
-    for (int r = 1; r < 3; ++r) {
-      const T along = (X[3 * r] - X[0]) * w[0] + (X[3 * r + 1] - X[1]) * w[1] + (X[3 * r + 2] - X[2]) * w[2];
-      for (int i = 0; i < 3; ++i) M[3 * r + i] = X[3 * r + i] - T(2) * along * w[i];
-    }
+    using triangle_detail::distance;
+    const T e[3] = {distance(X, X + 3) - distance(Xd, Xd + 3), distance(X, X + 6) - distance(Xd, Xd + 6),
+                    distance(X + 3, X + 6) - distance(Xd + 3, Xd + 6)};
+    return sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
   }
 
   // Q~ = Qd - Q with the original's wraps (eq. T3): beta once into

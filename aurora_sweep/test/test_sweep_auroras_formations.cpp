@@ -1,0 +1,198 @@
+// Sweeps of AuRoRA's two formations (docs/formation.md, "Sweeps of
+// AuRoRA's formations"): the triangle of three AR.Drones with
+// its law as a parameter, and the UAV-UGV line of a Pioneer and an
+// AR.Drone, each robot its own delay and link values. A combination is the
+// flight tool's run of the one formation loop, bit for bit; the kernel's
+// per-thread entry is the scalar loop; the SIMD lanes agree; each
+// combination's law, delays and link values reach its run; mistakes are
+// refused naming the key.
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "aurora_control/formation/formation_judge.h"
+#include "aurora_control/formation/triangle_yaml.h"
+#include "aurora_control/formation/uav_ugv_yaml.h"
+#include "aurora_sweep/kernel_entry.h"
+#include "sweep_test_support.h"
+
+using namespace aurora_sweep;
+using namespace aurora_sweep::test;
+
+namespace {
+
+SweepSpec sweepOf(const std::string& name, const std::string& formation, const std::string& body) {
+  return loadSweepFile(writeTemp(name + ".yaml", "sweep:\n  name: " + name + "\n  formation: formations/" + formation +
+                                                     ".yaml\n" + body),
+                       configDir());
+}
+
+// The law varies fastest (a SIMD batch holds runs of several laws), then
+// each drone's delay; drone 3 over a lossy link in `lossy`.
+const char* kTriangleGrid =
+    "  early_stop: false\n"
+    "  order: [formation_law, delay_1, delay_3]\n"
+    "  parameters:\n"
+    "    formation_law: {values: [N, PSO, OSP, 4]}\n"
+    "    delay_1: {values: [0, 6]}\n"
+    "    delay_3: {values: [0, 9]}\n";
+const char* kTriangleLossy =
+    "  early_stop: false\n"
+    "  repeats: 2\n"
+    "  parameters:\n"
+    "    delay_2: {values: [0, 4]}\n"
+    "    uplink_loss_3: 0.2\n"
+    "    downlink_jitter_3: 2\n";
+const char* kLineGrid =
+    "  early_stop: false\n"
+    "  parameters:\n"
+    "    delay_1: {values: [0, 10, 20]}\n"
+    "    delay_2: {values: [0, 12]}\n"
+    "    formation_k1_rho: {values: [0.02, 0.2]}\n";
+const char* kLineLossy =
+    "  early_stop: false\n"
+    "  repeats: 2\n"
+    "  parameters:\n"
+    "    delay_1: {values: [0, 6]}\n"
+    "    uplink_loss_2: 0.2\n"
+    "    uplink_jitter_2: 2\n";
+
+// The flight tool's run of combination i (the one formation loop on the
+// file's run with the combination's values), judged as a sweep judges it.
+template <class Law, template <typename> class Shape>
+SimResult flightRecord(const SweepSpec& spec, const ShapeRun<double, Shape, typename Law::Data>& file, long i) {
+  using Data = typename Law::Data;
+  FormationSetup<double, Shape, Data> setup = makeFormationSetup<double>(spec, file);
+  const Combination c = spec.view().decode(i);
+  const ShapeRun<double, Shape, Data> run = formationCombination(setup, c);
+  aurora_control::FormationJudge<double, Shape<double>, Data> judge{setup.criteria, setup.early_stop,
+                                                                    run.drone[0].plant.Ts, {}, {}};
+  judge.metrics.reset();
+  EndDistance<double, Shape<double>, decltype(judge), Data> observe{judge};
+  long ticks = 0;
+  if (setup.ideal_link) {
+    ticks = aurora_control::runFormation<Law, double, Shape<double>, aurora_control::kShortHistory>(run, setup.iterations,
+                                                                                                    observe);
+  } else {  // keyed as the sweep keys combination c's draws
+    ticks = flyFormation<Law, double, aurora_control::kShortHistory>(run, c, setup.iterations, observe, std::true_type());
+  }
+  return formationResult(judge.metrics, ticks, observe.distance);
+}
+
+// Every (block, thread) of a launch of the kernel's per-thread entry.
+template <class Law, template <typename> class Shape>
+std::vector<SimResult> kernelThreads(const SweepSpec& spec, const ShapeRun<double, Shape, typename Law::Data>& file) {
+  const auto setup = makeFormationSetup<double>(spec, file);
+  const GridView grid = spec.view();
+  return launchOnHost(grid.size(), 4, [&](unsigned b, unsigned block, unsigned t, SimResult* out) {
+    if (setup.ideal_link) {
+      formationThread<Law, double, aurora_control::kShortHistory, false>(setup, grid, 0, grid.size(), out, b, block, t);
+    } else {
+      formationThread<Law, double, aurora_control::kShortHistory, true>(setup, grid, 0, grid.size(), out, b, block, t);
+    }
+  });
+}
+
+int differing(const std::vector<SimResult>& a, const std::vector<SimResult>& b) {
+  int n = static_cast<int>(a.size() != b.size());
+  for (size_t i = 0; i < a.size() && i < b.size(); ++i) n += std::memcmp(&a[i], &b[i], sizeof(SimResult)) != 0;
+  return n;
+}
+
+// The scalar loop is the flight tool's run and the kernel's threads, bit
+// for bit; the threads and every SIMD build agree: in double the metrics
+// to 1e-9, in float the flags and ticks, the metrics to `float_rel` (the
+// triangle's: its laws' pseudo-inverses grow the last bits of xsimd's
+// float acos and atan against libm's into a few per cent over 50 s where
+// a law lags or the robots pass close).
+template <class Law, template <typename> class Shape>
+void expectEveryBackendAgrees(SweepSpec spec, const ShapeRun<double, Shape, typename Law::Data>& file, int min_compared,
+                              double float_rel) {
+  const std::vector<SimResult> scalar = runOn("scalar", spec);
+  for (long i = 0; i < spec.size(); ++i) {
+    const SimResult want = flightRecord<Law>(spec, file, i);
+    EXPECT_EQ(std::memcmp(&want, &scalar[i], sizeof want), 0) << spec.name << " combination " << i;
+  }
+  EXPECT_EQ(differing(scalar, kernelThreads<Law>(spec, file)), 0) << spec.name << ": kernel threads";
+  EXPECT_EQ(differing(scalar, runOn("none", spec)), 0) << spec.name << ": threads";
+  for (const CpuIsa& isa : cpuBatchIsas()) {
+    if (!isa.supported || isa.key == "none") continue;
+    expectAgreement(isa.key, spec, 1e-9, min_compared);
+    spec.precision = Precision::kFloat;
+    expectAgreement(isa.key, spec, float_rel, min_compared);
+    spec.precision = Precision::kDouble;
+  }
+}
+
+}  // namespace
+
+TEST(AuRoRAsFormationSweep, TheTriangleFliesEveryBackend) {
+  const SweepSpec grid = sweepOf("triangle_grid", "triangle_ardrones", kTriangleGrid);
+  ASSERT_EQ(grid.shape, SweepShape::kTriangle);
+  ASSERT_EQ(grid.size(), 16);
+  EXPECT_EQ(grid.iterations(), 1500);  // 50 s of 1/30 s
+  expectEveryBackendAgrees<aurora_control::TriangleDroneLaw>(grid, grid.triangle_run, 8, 5e-2);
+  const SweepSpec lossy = sweepOf("triangle_lossy", "triangle_ardrones", kTriangleLossy);
+  EXPECT_FALSE(lossy.linkIdeal());
+  expectEveryBackendAgrees<aurora_control::TriangleDroneLaw>(lossy, lossy.triangle_run, 2, 5e-2);
+}
+
+TEST(AuRoRAsFormationSweep, TheUavUgvLineFliesEveryBackend) {
+  const SweepSpec grid = sweepOf("uav_ugv_grid", "line_pioneer_ardrone", kLineGrid);
+  ASSERT_EQ(grid.shape, SweepShape::kUavUgvLine);
+  EXPECT_EQ(grid.iterations(), 3900);  // 130 s of 1/30 s
+  expectEveryBackendAgrees<aurora_control::UavUgvRobots>(grid, grid.uav_ugv_run, 8, 2e-3);
+  const SweepSpec lossy = sweepOf("uav_ugv_lossy", "line_pioneer_ardrone_kinematic", kLineLossy);
+  EXPECT_FALSE(lossy.linkIdeal());
+  expectEveryBackendAgrees<aurora_control::UavUgvRobots>(lossy, lossy.uav_ugv_run, 2, 2e-3);
+}
+
+// Each combination's law, delays and robot 3's link values reach its run;
+// the results name them; the delays differ the flights.
+TEST(AuRoRAsFormationSweep, EachCombinationsValuesReachItsRun) {
+  const SweepSpec spec = sweepOf("triangle_values", "triangle_ardrones", kTriangleGrid);
+  const auto setup = makeFormationSetup<double>(spec, spec.triangle_run);
+  const aurora_control::TriangleLaw laws[4] = {aurora_control::TriangleLaw::kN, aurora_control::TriangleLaw::kPSO,
+                                               aurora_control::TriangleLaw::kOSP, aurora_control::TriangleLaw::kSdashPO};
+  for (long i = 0; i < spec.size(); ++i) {
+    const auto run = formationCombination(setup, spec.view().decode(i));
+    EXPECT_EQ(run.law, laws[i % 4]) << i;
+    EXPECT_EQ(run.drone[0].delay, i / 4 % 2 ? 6 : 0) << i;
+    EXPECT_EQ(run.drone[1].delay, 0);
+    EXPECT_EQ(run.drone[2].delay, i / 8 ? 9 : 0) << i;
+  }
+  std::vector<std::string> names;
+  for (int id : spec.columns()) names.push_back(spec.paramNameOf(id));
+  EXPECT_EQ(names, (std::vector<std::string>{"delay_1", "delay_2", "delay_3", "formation_law"}));
+  const SweepSpec lossy = sweepOf("triangle_values_lossy", "triangle_ardrones", kTriangleLossy);
+  const auto run = formationCombination(makeFormationSetup<double>(lossy, lossy.triangle_run), lossy.view().decode(1));
+  EXPECT_EQ(run.drone[2].link.uplink.loss, 0.2);
+  EXPECT_EQ(run.drone[0].link.uplink.loss, 0.0);
+  // The laws fly differently (N against PSO, no delay).
+  const std::vector<SimResult> out = runOn("scalar", spec);
+  EXPECT_NE(std::memcmp(&out[0], &out[1], sizeof(SimResult)), 0);
+  EXPECT_NE(std::memcmp(&out[0], &out[4], sizeof(SimResult)), 0);  // delay_1 6
+}
+
+TEST(AuRoRAsFormationSweep, MistakesAreRefusedNamingTheKey) {
+  auto refusedFor = [](const std::string& formation, const std::string& body) {
+    return refusal("sweep:\n  name: bad\n  formation: formations/" + formation + ".yaml\n" + body);
+  };
+  std::string e = refusedFor("triangle_ardrones", "  parameters:\n    formation_law: {values: [N, QQ]}\n");
+  EXPECT_NE(e.find("sweep.parameters.formation_law.values = 'QQ' is not a triangle law: accepted N, PSO, SPO, OSP, S-PO"),
+            std::string::npos) << e;
+  e = refusedFor("triangle_ardrones", "  parameters:\n    formation_law: 5\n");
+  EXPECT_NE(e.find("'sweep.parameters.formation_law' = 5 is outside the accepted range [0, 4]"), std::string::npos) << e;
+  e = refusedFor("triangle_ardrones", "  parameters:\n    delay_4: 1\n");
+  EXPECT_NE(e.find("'sweep.parameters.delay_4' is not a parameter of a formation sweep"), std::string::npos) << e;
+  EXPECT_NE(e.find("delay_1, delay_2, delay_3, formation_k1_x"), std::string::npos) << e;
+  e = refusedFor("triangle_kinematic", "  parameters:\n    delay_1: 1\n");
+  EXPECT_NE(e.find("'sweep.formation' = '" + configDir() + "/formations/triangle_kinematic.yaml' has kinematic robots"),
+            std::string::npos) << e;
+  e = refusedFor("line_lemniscate", "  parameters:\n    formation_law: N\n");
+  EXPECT_NE(e.find("'sweep.parameters.formation_law' is not a parameter of a formation sweep"), std::string::npos) << e;
+  e = refusedFor("line_pioneer_ardrone", "  parameters:\n    delay_3: 1\n");
+  EXPECT_NE(e.find("'sweep.parameters.delay_3' is not a parameter"), std::string::npos) << e;
+}
