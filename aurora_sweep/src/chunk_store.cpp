@@ -202,7 +202,7 @@ const std::vector<std::string>& sweepOutputFiles() {
   static const std::vector<std::string> files{
       "results.csv", "results.h5", "summary.json", "feasible_volume.png", "feasible_marginals.png",
       "feasible_pairs.png", "max_tolerable_delay.png", "check1_region.png",
-      "check2_region.png", "check3_region.png", "check4_region.png", "feasible_share.csv", "feasible_share.png", "formation_delays.png"};
+      "check2_region.png", "check3_region.png", "check4_region.png", "feasible_share.csv", "feasible_share.png", "formation_delays.png", "formation_law_delays.png"};
   return files;
 }
 

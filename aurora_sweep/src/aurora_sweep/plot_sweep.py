@@ -211,8 +211,8 @@ def formation_delays(np, plt, cols, ok, summary, out):
         grid = share(np, cells, ok[key], len(u1) * len(u2)).reshape(len(u2), len(u1))
         im = ax.pcolormesh(cell_edges(np, u1), cell_edges(np, u2), grid, cmap="viridis", vmin=0, vmax=1)
         share_contours(ax, u1, u2, grid)
-        ax.set_xlabel("drone 1's delay [samples]")
-        ax.set_ylabel("drone 2's delay [samples]")
+        ax.set_xlabel("robot 1's delay [samples]")
+        ax.set_ylabel("robot 2's delay [samples]")
         ax.set_title(title, fontsize=10)
     fig.colorbar(im, ax=axes, label="share of the runs (%d link seeds each)" % summary.get("repeats", 1))
     fig.suptitle("%s: %s" % (summary.get("name", "sweep"), os.path.basename(summary["formation_file"])), fontsize=10)
@@ -410,6 +410,41 @@ def compare(argv):
     return 0
 
 
+TRIANGLE_LAWS = ["N", "PSO", "SPO", "OSP", "S-PO"]  # formation_law's index (docs/formation.md)
+
+
+def formation_laws(np, plt, cols, ok, summary, out):
+    """A triangle sweep varying its law and its robots' delays: for each law,
+    the share of its runs that were feasible against the largest of the
+    robots' delays, and the delay up to which every combination was
+    feasible. docs/formation.md, "Sweeps of AuRoRA's formations"."""
+    delays = sorted(k for k in cols if k.startswith("delay_"))
+    if "formation_law" not in cols or len(np.unique(cols["formation_law"])) < 2 or not delays:
+        return
+    largest = np.max(np.stack([cols[k] for k in delays]), axis=0)
+    levels = np.unique(largest)
+    fig, ax = plt.subplots(figsize=(6.4, 4.4))
+    for law in np.unique(cols["formation_law"]):
+        mine = cols["formation_law"] == law
+        feasible = ok["feasible"][mine]
+        at = largest[mine]
+        shares = [feasible[at == d].mean() if np.any(at == d) else np.nan for d in levels]
+        every = [d for d in levels if np.all(feasible[at <= d])]
+        label = TRIANGLE_LAWS[int(law)] if 0 <= int(law) < len(TRIANGLE_LAWS) else str(law)
+        ax.plot(levels, shares, marker="o", ms=3,
+                label="%s (all feasible up to %s)" % (label, "%d" % every[-1] if every else "none"))
+    ax.set_xlabel("the largest of %s [samples]" % ", ".join(delays))
+    ax.set_ylabel("share of the runs feasible")
+    ax.set_ylim(-0.02, 1.02)
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8)
+    ax.set_title("%s: %s" % (summary.get("name", "sweep"), os.path.basename(summary.get("formation_file", ""))),
+                 fontsize=10)
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "formation_law_delays.png"), dpi=90)
+    plt.close(fig)
+
+
 def main(argv):
     if argv and argv[0] == "--compare":
         return compare(argv[1:])
@@ -441,6 +476,7 @@ def main(argv):
     pairs(np, plt, params, ok["feasible"], summary, out)
     link_margins(np, plt, cols, ok["feasible"], summary, out)
     formation_delays(np, plt, cols, ok, summary, out)
+    formation_laws(np, plt, cols, ok, summary, out)
     # The (Kp, Kd, delay) figures of the thesis: the PD law's grids, or
     # another law's grid of two gains and the delay (summary's delay_monotony).
     gains = summary.get("delay_monotony", {}).get("gains", ["kp", "kd"])
