@@ -356,3 +356,16 @@ TEST(CudaBackend, RefusesThePredictorBeforeTheRun) {
   EXPECT_NE(cudaDelayProblem(spec).find("the state predictor (sweep.predictor) has no CUDA kernel yet"),
             std::string::npos);
 }
+
+// AuRoRA's triangle and UAV-UGV line have no kernel yet (their per-thread
+// entry is tested on the host: AuRoRAsFormationSweep.*): refused before the
+// run, naming the shape; the two-drone line keeps its kernel.
+TEST(CudaBackend, RefusesAuRoRAsFormationsBeforeTheRun) {
+  const std::string c = AURORA_CONFIG_DIR;
+  for (const char* study : {"triangle_delay", "line_pioneer_delay"}) {
+    const SweepSpec spec = loadSweepFile(c + "/sweeps/" + study + ".yaml", c);
+    const std::string shape = spec.shape == SweepShape::kTriangle ? "the triangle" : "the uav_ugv_line";
+    EXPECT_NE(cudaDelayProblem(spec).find(shape + " has no CUDA kernel yet"), std::string::npos) << study;
+  }
+  EXPECT_EQ(cudaDelayProblem(loadSweepFile(c + "/sweeps/formation_delay.yaml", c)), "");
+}
