@@ -105,6 +105,7 @@ struct TrianglePeriod {
 template <class Law, class At>
 void flyTrianglePeriods(const TriangleSetup& setup, At&& at) {
   using Vehicle = typename Law::Vehicle;
+  static_assert(Vehicle::kPosition == 0, "TrianglePeriod reads a robot's x y z first in its state");
   const TriangleRun<Law> run = triangleRun<Law>(setup);
   double U[3][Vehicle::kInputs] = {};
   long n = 0;
