@@ -265,7 +265,16 @@ TEST(FormationFile, MistakesAreRefusedNamingTheKey) {
     const std::string why = refusal(from, to);
     EXPECT_NE(why.find(text), std::string::npos) << to << " -> " << why;
   };
-  says("shape: line", "shape: triangle", "'formation.shape' = 'triangle' is unknown: accepted line");
+  says("shape: line", "shape: hexagon", "'formation.shape' = 'hexagon' is unknown: accepted line");
+  // AuRoRA's shapes have readers of their own; this one (the node's) says where they fly.
+  for (const char* name : {"triangle_ardrones", "line_pioneer_ardrone"}) {
+    try {
+      readFormationFile(config + "/formations/" + name + ".yaml", config);
+      ADD_FAILURE() << name << " read as a two-drone line";
+    } catch (const aurora_common::ConfigError& e) {
+      EXPECT_NE(std::string(e.what()).find("flies offline only for now (flight --formation"), std::string::npos) << e.what();
+    }
+  }
   says("law: position_priority", "law: P", "'formation.law' = 'P' is unknown: accepted inverse_kinematics, position_priority");
   says("{rho: 1.5,", "{rho: 0,", "'formation.reference.shape.rho' = 0 is refused: accepted a distance > 0 m");
   says("beta: 0.0}", "beta: 1.0}", "sin^2 alpha + sin^2 beta = 1.458");

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "aurora_common/yaml_file.h"
 #include "aurora_control/formation/formation_checks.h"
 #include "aurora_control/formation/formation_runner.h"
 #include "aurora_control/law/law_yaml.h"
@@ -206,13 +207,27 @@ inline YAML::Node formationSection(const YamlReader& r, const std::string& path,
 
 }  // namespace formation_detail
 
+// The `shape:` of a formation file ("" when it has none): which reader reads it.
+inline std::string formationShapeOf(const std::string& path) {
+  return aurora_common::yamlFileWord("formation file", path, "formation", "shape");
+}
+
+// The two-drone line's file (shape: line): what the formation node and
+// formation.launch fly. AuRoRA's triangle and UAV-UGV line have readers of
+// their own (triangle_yaml.h, uav_ugv_yaml.h) and fly offline for now.
 inline FormationFile readFormationFile(const std::string& path, const std::string& config_dir) {
   using namespace formation_detail;
   const YamlReader r("formation file '" + path + "': ");
+  const std::string named = formationShapeOf(path);
+  if (named == "triangle" || named == "uav_ugv_line") {
+    r.fail("formation.shape", "= '" + named + "' flies offline only for now (flight --formation, "
+                              "aurora.simulate_formation, sweeps; docs/formation.md): the formation node and "
+                              "formation.launch fly shape line (config/formations/line_lemniscate.yaml)");
+  }
   const YAML::Node n = formationSection(r, path, {"shape", "law", "period", "gains", "reference", "drones"});
   FormationFile f;
   const std::string shape = r.text(r.require(n, "formation", "shape", "line"), "formation.shape");
-  if (shape != "line") r.fail("formation.shape", "= '" + shape + "' is unknown: accepted line");
+  if (shape != "line") r.fail("formation.shape", "= '" + shape + "' is unknown: accepted line (and, offline, triangle and uav_ugv_line)");
   const std::string law = r.text(r.require(n, "formation", "law", "inverse_kinematics, position_priority, shape_priority"), "formation.law");
   bool known = false;
   for (FormationLaw l : {FormationLaw::kInverseKinematics, FormationLaw::kPositionPriority, FormationLaw::kShapePriority}) {

@@ -24,11 +24,6 @@
 
 namespace aurora_control {
 
-// The `shape:` of a formation file ("" when it has none): which reader reads it.
-inline std::string formationShapeOf(const std::string& path) {
-  return aurora_common::yamlFileWord("formation file", path, "formation", "shape");
-}
-
 namespace uav_ugv_detail {
 
 // A robot's start [x, y, z] [m], its height within [lo, hi] (`why` says it).
