@@ -146,14 +146,11 @@ class FormationBatch {
     B xc[D][S], X[N];
     receiveStates(k, state, xc);
     aurora_control::modelPositions<LaneShape, Vehicle>(state, X);
-    const long n = setup_.run.schedule.periodBefore(k);
-    const bool due = n >= 0;
     T qd[N], t = T(0);
     B Qd[N];
+    const bool due = aurora_control::desiredBefore(setup_.run, k, t, qd);  // every lane's, in T
     if (due) {
       // Every lane's Qd and its positions (the scalar judge's, in T).
-      t = setup_.run.schedule.time(n, Ts);
-      setup_.run.reference.at(t, qd);
       T xd[N];
       OneLane::positions(qd, xd);
       for (int i = 0; i < N; ++i) Qd[i] = B(qd[i]), Xd_[i] = B(xd[i]);

@@ -16,7 +16,6 @@ void readLine(const std::string& file, const std::string& config_dir, SweepSpec&
   spec.shape = SweepShape::kLine;
   spec.formation_run = aurora_control::formationRun(f, spec.vehicle);
   spec.formation_duration = spec.formation_run.reference.duration;
-  spec.formation_Ts = spec.vehicle.Ts;
   spec.law = f.drones[0].controller.law;
   spec.controller = aurora_sweep::lawName(spec.law);
 }
@@ -27,7 +26,6 @@ void readUavUgvLine(const std::string& file, const std::string& config_dir, Swee
   spec.shape = SweepShape::kUavUgvLine;
   spec.uav_ugv_run = aurora_control::uavUgvRun(s);
   spec.formation_duration = s.duration;
-  spec.formation_Ts = s.tick;
   spec.controller = "pioneer_dynamic + underactuated";
 }
 
@@ -42,7 +40,6 @@ void readTriangle(const aurora_control::YamlReader& r, const std::string& file, 
   spec.shape = SweepShape::kTriangle;
   spec.triangle_run = aurora_control::triangleRun<aurora_control::TriangleDroneLaw>(s);
   spec.formation_duration = s.duration;
-  spec.formation_Ts = s.drone.Ts;
   spec.law = aurora_control::LawType::kUnderactuated;
   spec.controller = aurora_sweep::lawName(spec.law);
 }

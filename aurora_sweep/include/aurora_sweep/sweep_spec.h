@@ -81,7 +81,6 @@ struct SweepSpec {
   aurora_control::UavUgvRun uav_ugv_run;
   aurora_control::TriangleRun<aurora_control::TriangleDroneLaw> triangle_run;
   double formation_duration = 0.0;  // [s] its flights'
-  double formation_Ts = 0.0;        // [s] its robots' step
   aurora_control::FormationCriteria<double> formation_criteria =
       aurora_control::FormationCriteria<double>::study();
   bool formation() const { return shape != SweepShape::kNone; }
@@ -95,6 +94,12 @@ struct SweepSpec {
   }
   // Where its parameters sit (combination.h).
   ShapeLayout layout() const { return shape == SweepShape::kTriangle ? shapeLayout<aurora_control::Triangle>() : kLineLayout; }
+  // Its robots' step [s] (every robot's: the files make them one).
+  double formationTs() const {
+    double Ts = 0.0;
+    withFormation([&](const auto& run, auto) { Ts = double(run.drone[0].plant.Ts); });
+    return Ts;
+  }
   // Robot d's own link (its formation file's).
   aurora_control::LinkParams robotLink(int d) const {
     aurora_control::LinkParams l;
@@ -103,7 +108,7 @@ struct SweepSpec {
   }
   // The loop iterations (ticks) of every run: 1801 for the 60 s study.
   long iterations() const {
-    return formation() ? aurora_control::formationTicks(duration(), formation_Ts)
+    return formation() ? aurora_control::formationTicks(duration(), formationTs())
                        : aurora_control::studyIterationCount(duration(), Ts());
   }
   // Whether this sweep accepts parameter `id` (parameters.h).

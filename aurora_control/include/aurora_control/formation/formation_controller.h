@@ -81,14 +81,13 @@ class FormationController {
     last_k_ = k;
     Tick t;
     t.k = k;
-    const long n = run_.schedule.periodBefore(k);
-    t.layer_ran = n >= 0;
+    double time = 0.0, Qd[Line::kVariables];
+    t.layer_ran = desiredBefore(run_, k, time, Qd);
     if (t.layer_ran) {
-      double seen[Line::kVariables], Qd[Line::kVariables];
+      double seen[Line::kVariables];
       const double* delivered[kDrones];
       for (int d = 0; d < kDrones; ++d) delivered[d] = core_[d].delivered().X;
       dronePositions<Line>(delivered, seen);
-      run_.reference.at(run_.schedule.time(n, run_.drone[0].plant.Ts), Qd);
       layer_.update(seen, Qd);
     }
     for (int d = 0; d < kDrones; ++d) {

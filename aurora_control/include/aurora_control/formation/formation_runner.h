@@ -133,6 +133,18 @@ AURORA_HD inline void startLayer(const FormationRun<T, Shape, Data>& run, LayerO
   startLayerAt(run, X0, layer);
 }
 
+// What the layer runs on before robot step k (the schedule's rule, for the
+// runner, the SIMD engine and the formation node alike): whether a period
+// is due and, when it is, its time t [s] and Qd(t).
+template <typename T, class Shape, class Data>
+AURORA_HD inline bool desiredBefore(const FormationRun<T, Shape, Data>& run, long k, T& t, T Qd[Shape::kVariables]) {
+  const long n = run.schedule.periodBefore(k);
+  if (n < 0) return false;
+  t = run.schedule.time(n, run.drone[0].plant.Ts);
+  run.reference.at(t, Qd);
+  return true;
+}
+
 // Drone d's reference as the layer holds it (position, velocity).
 template <class Layer>
 AURORA_HD inline auto heldReference(const Layer& layer, int d) -> Reference<typename std::decay<decltype(*layer.position(d))>::type> {
@@ -228,9 +240,7 @@ AURORA_HD long runFormationOver(const FormationRun<T, Shape, typename Law::Data>
       for (int i = 0; i < S; ++i) before[d][i] = state[d].model.X[i];
       receiveState(k, history[d], links[d], state[d], xc[d]);
     }
-    const long n = run.schedule.periodBefore(k);
-    const bool due = n >= 0;
-    if (due) t = run.schedule.time(n, Ts), run.reference.at(t, Qd);
+    const bool due = desiredBefore(run, k, t, Qd);
     DroneStep<T, Data> step[D];
     formationTick<Law>(params, run.clamp, layer, due ? Qd : nullptr, t, T(k), xc, state, step,
                        [&](int d, T U[Law::Vehicle::kInputs]) { links[d].downlink(k, U, U); });
