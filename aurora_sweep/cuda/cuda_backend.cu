@@ -91,9 +91,12 @@ class CudaEvent {
 };
 
 // A single-robot sweep's kernel, law `Law` on its vehicle.
+// Its arguments stay within the 4 KB kernel arguments older CUDA versions
+// (before 12.1) allow.
 template <class Law, typename T, int Capacity, bool Linked>
 __global__ void sweepKernel(SimSetup<typename Law::Vehicle, T> setup, GridView grid, long first, long n,
                             SimResult* out) {
+  static_assert(sizeof(setup) + sizeof(grid) + 3 * sizeof(long) <= 4096, "a kernel's arguments within 4 KB");
   sweepThread<Law, T, Capacity, Linked>(setup, grid, first, n, out, blockIdx.x, blockDim.x, threadIdx.x);
 }
 

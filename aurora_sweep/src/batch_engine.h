@@ -117,19 +117,6 @@ class BatchWorker {
     return false;
   }
 
-  // Lane `lane` of every field of a struct of batches set from the struct of
-  // scalars (gains, model parameters, the law's memory: structs of T only,
-  // or empty).
-  template <template <class> class S>
-  static void setLane(S<B>& batches, int lane, const S<T>& scalars) {
-    constexpr bool kEmpty = std::is_empty<S<T>>::value;
-    constexpr size_t n = kEmpty ? 0 : sizeof(S<T>) / sizeof(T);
-    static_assert(kEmpty || (sizeof(S<T>) == n * sizeof(T) && sizeof(S<B>) == n * sizeof(B)), "a struct of T only");
-    B* to = reinterpret_cast<B*>(&batches);
-    const T* from = reinterpret_cast<const T*>(&scalars);
-    for (size_t i = 0; i < n; ++i) LaneOps::set(to[i], lane, from[i]);
-  }
-
   // Puts the next combination into lane l (or leaves it idle, rerunning the
   // range's first combination, when the work is done).
   void startLane(int l) {
@@ -148,10 +135,10 @@ class BatchWorker {
     index_[l] = index;
     LaneOps::set(ideal_.delay, l, static_cast<Int>(run.delay));
     history_.startLane(l);
-    setLane(loop_.gains, l, run.gains);
-    if (setup_.varies_model) setLane(loop_.plant, l, run.plant);
-    setLane(sim_.model, l, fresh_.model);
-    setLane(sim_.memory, l, fresh_.memory);
+    LaneOps::setFields(loop_.gains, l, run.gains);
+    if (setup_.varies_model) LaneOps::setFields(loop_.plant, l, run.plant);
+    LaneOps::setFields(sim_.model, l, fresh_.model);
+    LaneOps::setFields(sim_.memory, l, fresh_.memory);
     for (int i = 0; i < 4; ++i) LaneOps::set(sim_.metrics.ok[i], l, true);
     LaneOps::set(sim_.metrics.iae, l, T(0));
     LaneOps::set(sim_.metrics.itae, l, T(0));

@@ -186,6 +186,9 @@ uint32_t definitionHash(const SweepSpec& spec) {
       if (spec.given(id)) crc.add(id), crc.add(spec.fixed[id]);
     }
     if (spec.shape == SweepShape::kTriangle) crc.add(spec.fixed[kParamFormationLaw]);
+    for (int id = kParamFirstRobotGain; id < kParamCount; ++id) {  // the robots' gains it gives (older hashes stay)
+      if (spec.given(id)) crc.add(id), crc.add(spec.fixed[id]);
+    }
   }
   if (spec.vehicle_type != aurora_sim::Ardrone2::name()) addOtherVehicle(crc, spec);
   if (spec.predicting()) addPredictor(crc, spec);  // only with one: the hashes of sweeps without stay

@@ -67,10 +67,11 @@ class FormationBatch {
   void startLanes(long first, int count, aurora_control::FormationRun<B, LaneShape, Data>& run) {
     for (int l = 0; l < L; ++l) {
       const Combination c = grid_.decode(first + (l < count ? l : 0));
-      const ShapeRun<T, Shape, Data> lane = formationCombination(setup_, c);
+      const ShapeRun<T, Shape, Data> lane = formationCombination<Law>(setup_, c);
       if (l == 0) broadcast(lane, run);
       for (int i = 0; i < N; ++i) LaneOps::set(run.gains.k1[i], l, lane.gains.k1[i]), LaneOps::set(run.gains.k2[i], l, lane.gains.k2[i]);
       for (int d = 0; d < D; ++d) {
+        LaneOps::setFields(run.drone[d].gains, l, lane.drone[d].gains);  // the robot gains the sweep gives
         LaneOps::set(ideal_[d].delay, l, static_cast<Int>(lane.drone[d].delay));
         history_[d].startLane(l);
         if (links_[d]) {
@@ -81,8 +82,9 @@ class FormationBatch {
     }
   }
 
-  // What every lane shares: the drones' models, gains and starts, the law,
-  // the period (the file's; the sweep varies none of them).
+  // What every lane shares: the drones' models and starts, the law, the
+  // period (the file's; the sweep varies none of them); their gains until
+  // each lane's are set.
   static void broadcast(const ShapeRun<T, Shape, Data>& s, aurora_control::FormationRun<B, LaneShape, Data>& run) {
     for (int d = 0; d < D; ++d) castFormationDrone(s.drone[d], run.drone[d]);
     castFormationLayer(s, run);
@@ -115,7 +117,7 @@ class FormationBatch {
       runLanes(first + start, end - start);
     }
   }
-  typename OneLane::Law lawOf(long index) const { return formationCombination(setup_, grid_.decode(index)).law; }
+  typename OneLane::Law lawOf(long index) const { return formationCombination<Law>(setup_, grid_.decode(index)).law; }
 
   void runLanes(long first, int count) {
     aurora_control::FormationRun<B, LaneShape, Data> run;

@@ -5,6 +5,8 @@
 // batch_engine.h only.
 #pragma once
 
+#include <type_traits>
+
 #include <xsimd/xsimd.hpp>
 
 #include <vector>
@@ -48,6 +50,19 @@ struct Lanes {
     alignas(64) bool tmp[L];
     m.store_aligned(tmp);
     return tmp[lane];
+  }
+  // Lane `lane` of every field of a struct of batches set from the same
+  // struct of scalars (gains, model parameters, a law's memory, a state:
+  // structs of T only, or empty).
+  template <class Batches, class Scalars>
+  static void setFields(Batches& batches, int lane, const Scalars& scalars) {
+    constexpr bool kEmpty = std::is_empty<Scalars>::value;
+    constexpr size_t n = kEmpty ? 0 : sizeof(Scalars) / sizeof(T);
+    static_assert(kEmpty || (sizeof(Scalars) == n * sizeof(T) && sizeof(Batches) == n * sizeof(B)),
+                  "a struct of T only");
+    B* to = reinterpret_cast<B*>(&batches);
+    const T* from = reinterpret_cast<const T*>(&scalars);
+    for (size_t i = 0; i < n; ++i) set(to[i], lane, from[i]);
   }
 };
 

@@ -52,8 +52,8 @@ class LanePredictor {
     Lanes<T, Arch>::set(delay_, l, static_cast<Int>(delay));
     Lanes<T, Arch>::set(anchor_step_, l, Int(0));
     Lanes<T, Arch>::set(open_step_, l, Int(0));
-    setLane(anchor_, l, start_);
-    setLane(open_, l, start_);
+    Lanes<T, Arch>::setFields(anchor_, l, start_);
+    Lanes<T, Arch>::setFields(open_, l, start_);
     storeLane(l, pushed_ + 1, start_.X);  // the open loop's step 0
   }
 
@@ -151,11 +151,6 @@ class LanePredictor {
     const B* from = reinterpret_cast<const B*>(&next);
     B* to = reinterpret_cast<B*>(&s);
     for (int i = 0; i < kStateBatches; ++i) to[i] = xsimd::select(go, from[i], to[i]);
-  }
-  static void setLane(State& s, int l, const typename Vehicle::template State<T>& from) {
-    B* to = reinterpret_cast<B*>(&s);
-    const T* v = reinterpret_cast<const T*>(&from);
-    for (int i = 0; i < kStateBatches; ++i) Lanes<T, Arch>::set(to[i], l, v[i]);
   }
 
   aurora_control::PredictorForm form_;

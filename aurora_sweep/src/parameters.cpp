@@ -129,12 +129,15 @@ int paramIdOf(const std::string& name, SweepShape shape) {
 }
 
 bool paramApplies(int id, const std::string& controller, SweepShape shape) {
-  const ParamInfo& info = paramInfo(id, shape);
+  return paramApplies(paramInfo(id, shape), controller, shape);
+}
+
+bool paramApplies(const ParamInfo& info, const std::string& controller, SweepShape shape) {
   const ParamGroup group = info.group;
   aurora_control::LawType ardrone_law;
   if (shape != SweepShape::kNone) {
     return group == ParamGroup::kDroneDelay || group == ParamGroup::kFormationGain || group == ParamGroup::kLink ||
-           group == ParamGroup::kDroneLink || group == ParamGroup::kFormationLaw;
+           group == ParamGroup::kDroneLink || group == ParamGroup::kFormationLaw || group == ParamGroup::kRobotGain;
   }
   switch (group) {
     case ParamGroup::kPdGain:
@@ -145,7 +148,8 @@ bool paramApplies(int id, const std::string& controller, SweepShape shape) {
     case ParamGroup::kDroneDelay:
     case ParamGroup::kFormationGain:
     case ParamGroup::kDroneLink:
-    case ParamGroup::kFormationLaw: return false;  // a formation sweep's
+    case ParamGroup::kFormationLaw:
+    case ParamGroup::kRobotGain: return false;  // a formation sweep's
     case ParamGroup::kUnused: return false;
     default: return true;
   }

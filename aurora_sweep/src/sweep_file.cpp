@@ -47,16 +47,17 @@ std::string resolve(const std::string& name, const std::string& sweep_dir,
 
 // What the accepted names are for: "the pd_saturated controller", "a formation sweep".
 std::string sweepKind(const SweepSpec& spec) {
-  return spec.formation() ? std::string("a formation sweep (its drones' delays, the formation's gains, the link's values)")
+  return spec.formation() ? std::string("a formation sweep (its robots' delays, the formation's gains, the link's "
+                                        "values, each robot's own law's gains)")
                           : "the " + spec.controller + " controller";
 }
 
 // A parameter named in the file, for the sweep's controller: its ParamId,
 // or a refusal listing the names that controller accepts.
 int paramOf(const Reader& r, const SweepSpec& spec, const std::string& name, const std::string& key) {
-  const int id = paramIdOf(name, spec.shape);
+  const int id = spec.paramId(name);
   if (id < 0 || !spec.accepts(id)) {
-    r.fail(key, "is not a parameter of " + sweepKind(spec) + ": accepted " + acceptedParamNames(spec.controller, spec.shape));
+    r.fail(key, "is not a parameter of " + sweepKind(spec) + ": accepted " + spec.acceptedNames());
   }
   return id;
 }
@@ -280,7 +281,7 @@ struct Varied {
 
 Varied readParameters(const Reader& r, const YAML::Node& params, bool design, bool points, SweepSpec& spec) {
   if (!params.IsMap()) r.fail("sweep.parameters", "must be a mapping of parameter names: accepted " +
-                                                      acceptedParamNames(spec.controller, spec.shape));
+                                                      spec.acceptedNames());
   std::map<int, YAML::Node> entries;
   for (const auto& kv : params) {
     const std::string name = kv.first.as<std::string>();
@@ -353,9 +354,11 @@ void orderAxes(const Reader& r, const YAML::Node& s, std::vector<Axis> axes, Swe
 // Every parameter the law needs has a value: given, varied or a default.
 void requireAll(const Reader& r, const SweepSpec& spec) {
   for (int id = 0; id < kParamCount; ++id) {
-    const ParamGroup group = spec.param(id).group;  // a formation's link values: NaN keeps each drone's own
-    const bool own_link = spec.formation() && (group == ParamGroup::kLink || group == ParamGroup::kDroneLink);
-    if (spec.accepts(id) && !own_link && std::isnan(spec.fixed[id]) && !spec.varies(id)) {
+    // A formation's link values and robot gains: NaN keeps each robot's own.
+    const ParamGroup group = spec.param(id).group;
+    const bool own = spec.formation() && (group == ParamGroup::kLink || group == ParamGroup::kDroneLink ||
+                                          group == ParamGroup::kRobotGain);
+    if (spec.accepts(id) && !own && std::isnan(spec.fixed[id]) && !spec.varies(id)) {
       r.fail(std::string("sweep.parameters.") + spec.paramNameOf(id), "is missing: the " + spec.controller +
                  " controller has no default for it; give a value or a range (or a points column)");
     }
@@ -400,7 +403,7 @@ void readCombinations(const Reader& r, const YAML::Node& s, const std::string& s
   const YAML::Node params = s["parameters"];
   if (!params && !has_points) {
     r.fail("sweep.parameters", "is missing: give each parameter a value or a range (accepted " +
-                                   acceptedParamNames(spec.controller, spec.shape) + "), or 'points'");
+                                   spec.acceptedNames() + "), or 'points'");
   }
   const Varied varied = params ? readParameters(r, params, design, has_points, spec) : Varied();
   if (has_points) {
@@ -415,6 +418,12 @@ void readCombinations(const Reader& r, const YAML::Node& s, const std::string& s
     sampleDesign(r, varied, spec);
   } else {
     orderAxes(r, s, varied.axes, spec);
+  }
+  const size_t varying = spec.axes.size() + spec.point_params.size();
+  if (varying > static_cast<size_t>(kMaxVaried)) {
+    r.fail(has_points ? "sweep.points" : "sweep.parameters",
+           "varies " + std::to_string(varying) + " parameters: at most " + std::to_string(kMaxVaried) +
+               " vary in one sweep; fix the others to one value");
   }
   requireAll(r, spec);
   std::vector<int> delays{kParamDelay};

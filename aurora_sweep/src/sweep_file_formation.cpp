@@ -1,10 +1,12 @@
 #include "sweep_file_formation.h"
 
 #include <limits>
+#include <stdexcept>
 
 #include "aurora_control/formation/formation_yaml.h"
 #include "aurora_control/formation/triangle_yaml.h"
 #include "aurora_control/formation/uav_ugv_yaml.h"
+#include "aurora_sweep/robot_gains.h"
 
 namespace aurora_sweep {
 
@@ -44,6 +46,26 @@ void readTriangle(const aurora_control::YamlReader& r, const std::string& file, 
   spec.controller = aurora_sweep::lawName(spec.law);
 }
 
+// Each robot's own law's gains (robot_gains.h), named with its number
+// (k1_x_2); their values NaN: each robot keeps its file's gains unless the
+// sweep gives one.
+void nameRobotGains(SweepSpec& spec) {
+  spec.robot_gains.assign(kParamCount - kParamFirstRobotGain, ParamInfo{"", ParamGroup::kUnused, 0.0, 0.0, "", false});
+  spec.withFormation([&](const auto& run, auto law) {
+    using Gains = RobotGains<decltype(law)>;
+    for (int d = 0; d < spec.layout().robots; ++d) {
+      const std::vector<LawGainRow> rows = Gains::rows(run.drone[d].plant);
+      if (rows.size() > static_cast<size_t>(kRobotGainRoom)) throw std::logic_error("a law with more gains than a robot's room");
+      const std::string robot = std::to_string(d + 1), law_name = Gains::law(run.drone[d].plant);
+      for (size_t i = 0; i < rows.size(); ++i) {
+        spec.robot_gains[static_cast<size_t>(robotGainParam(d, int(i)) - kParamFirstRobotGain)] =
+            ParamInfo{rows[i].name + ("_" + robot), ParamGroup::kRobotGain, rows[i].min, rows[i].max,
+                      "robot " + robot + "'s " + law_name + " law's gain range", rows[i].whole, law_name};
+      }
+    }
+  });
+}
+
 }  // namespace
 
 void readSweepFormation(const aurora_control::YamlReader& r, const YAML::Node& sweep, const std::string& file,
@@ -59,6 +81,7 @@ void readSweepFormation(const aurora_control::YamlReader& r, const YAML::Node& s
   else if (shape == "uav_ugv_line") readUavUgvLine(file, config_dir, spec);
   else readLine(file, config_dir, spec);
   spec.formation_file = file;
+  nameRobotGains(spec);
   // The shape's room: its defaults, then the file's delays, gains and law;
   // the link values NaN (each robot keeps its own link unless the sweep
   // gives one).

@@ -8,6 +8,7 @@
 #include "aurora_control/loop/closed_loop.h"
 #include "aurora_common/host_device.h"
 #include "aurora_common/scalar_math.h"
+#include "aurora_sweep/robot_gains.h"
 #include "aurora_sweep/simulation.h"
 
 namespace point_mass {
@@ -113,6 +114,24 @@ struct SweepGains<point_mass::PointPd> {
   template <typename T>
   AURORA_HD static point_mass::Gains<T> from(const Combination& c) {
     return point_mass::Gains<T>{T(c.v[kParamKp]), T(c.v[kParamKd])};
+  }
+};
+
+// Its gains as a formation robot's (robot_gains.h): kp, kd.
+template <>
+struct RobotGains<point_mass::PointPd> {
+  template <class Params>
+  static const char* law(const Params&) {
+    return "point_pd";
+  }
+  template <class Params>
+  static std::vector<LawGainRow> rows(const Params&) {
+    return {{"kp", 0.0, 0.0, 100.0, false}, {"kd", 0.0, 0.0, 100.0, false}};
+  }
+  template <typename T, class Params>
+  AURORA_HD static void set(point_mass::Gains<T>& g, const Params&, const double* v) {
+    giveGain(g.kp, v[0]);
+    giveGain(g.kd, v[1]);
   }
 };
 

@@ -163,7 +163,7 @@ std::vector<SimResult> simdLanes(const Setup3<T, Law>& setup, const GridView& gr
 template <class Law, typename T>
 SimResult runner(const Setup3<T, Law>& setup, const GridView& grid, long i, T end[9] = nullptr) {
   using Data = typename Law::Data;
-  const Run3<T, Data> run = formationCombination(setup, grid.decode(i));
+  const Run3<T, Data> run = formationCombination<Law>(setup, grid.decode(i));
   using Judge = aurora_control::FormationJudge<T, ThreeAbreast<T>, Data>;
   Judge judge{setup.criteria, setup.early_stop, run.drone[0].plant.Ts, {}, {}};
   judge.metrics.reset();
@@ -254,13 +254,13 @@ TEST(ShapeConcept, AThreeRobotShapeFliesEveryBackend) {
   const Setup3<double, DroneLaw> setup = setupOf<double>(ideal);
   for (long i = 0; i < grid.view.size(); ++i) {  // each robot's delay and the gain reach its run
     const Combination c = grid.view.decode(i);
-    const Run3<double> run = formationCombination(setup, c);
+    const Run3<double> run = formationCombination<DroneLaw>(setup, c);
     for (int d = 0; d < 3; ++d) EXPECT_EQ(run.drone[d].delay, long(c.v[kAt.delay(d)])) << i;
     EXPECT_EQ(run.gains.k1[3], c.v[kAt.k1(3)]);
   }
   // Robot 3's own uplink_loss_3 applies to robot 3 only.
   const Run3<double> lossy = threeDrones(lossyLink());
-  const Run3<double> own = formationCombination(setupOf<double>(lossy), ThreeGrid(0.3).view.decode(5));
+  const Run3<double> own = formationCombination<DroneLaw>(setupOf<double>(lossy), ThreeGrid(0.3).view.decode(5));
   EXPECT_EQ(own.drone[2].link.uplink.loss, 0.3);
   EXPECT_EQ(own.drone[0].link.uplink.loss, 0.1);
   EXPECT_EQ(own.drone[1].link.uplink.loss, 0.1);
@@ -294,7 +294,19 @@ TEST(ShapeConcept, RobotsOfDifferentVehiclesFlyOneFormation) {
   const Run3<double, MixedLaw> mixed = mixedCrew(middle, {});
   const Setup3<double, MixedLaw> setup = setupOf<double>(mixed);
   const aurora_control::FormationRun<double, ThreeAbreast<double>, MixedLaw> run =
-      formationCombination(setup, grid.view.decode(0));
+      formationCombination<MixedLaw>(setup, grid.view.decode(0));
+  // Each robot's own law's gains a sweep gives (robot_gains.h), named by
+  // its law: the point mass's kp (robot 2), an AR.Drone's k1_x (robot 3).
+  EXPECT_STREQ(RobotGains<MixedLaw>::rows(mixed.drone[1].plant)[0].name, "kp");
+  EXPECT_STREQ(RobotGains<MixedLaw>::rows(mixed.drone[2].plant)[0].name, "k1_x");
+  Combination c = grid.view.decode(0);
+  c.v[robotGainParam(1, 0)] = 7.0, c.v[robotGainParam(2, 0)] = 0.25;
+  const auto given = formationCombination<MixedLaw>(setup, c);
+  EXPECT_EQ(given.drone[1].gains.second.kp, 7.0);
+  EXPECT_EQ(given.drone[1].gains.second.kd, run.drone[1].gains.second.kd);
+  EXPECT_EQ(given.drone[2].gains.first.underactuated.k1[0], 0.25);
+  EXPECT_EQ(given.drone[0].gains.first.underactuated.k1[0], run.drone[0].gains.first.underactuated.k1[0]);
+  EXPECT_EQ(given.drone[2].gains.second.kp, run.drone[2].gains.second.kp);  // a drone's unread point-mass gains
   long ticks = 0;
   auto pointOnly = [&](const aurora_control::FormationObservation<double, ThreeAbreast<double>, MixedLaw>& o) {
     for (int i = point_mass::PointMass::kStates; i < MixedLaw::Vehicle::kStates; ++i) {

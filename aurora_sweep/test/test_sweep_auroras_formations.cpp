@@ -15,6 +15,7 @@
 #include "aurora_control/formation/formation_judge.h"
 #include "aurora_control/formation/triangle_yaml.h"
 #include "aurora_control/formation/uav_ugv_yaml.h"
+#include "aurora_sweep/chunk_store.h"
 #include "aurora_sweep/kernel_entry.h"
 #include "sweep_test_support.h"
 
@@ -66,7 +67,7 @@ SimResult flightRecord(const SweepSpec& spec, const ShapeRun<double, Shape, type
   using Data = typename Law::Data;
   FormationSetup<double, Shape, Data> setup = makeFormationSetup<double>(spec, file);
   const Combination c = spec.view().decode(i);
-  const ShapeRun<double, Shape, Data> run = formationCombination(setup, c);
+  const ShapeRun<double, Shape, Data> run = formationCombination<Law>(setup, c);
   aurora_control::FormationJudge<double, Shape<double>, Data> judge{setup.criteria, setup.early_stop,
                                                                     run.drone[0].plant.Ts, {}, {}};
   judge.metrics.reset();
@@ -157,7 +158,7 @@ TEST(AuRoRAsFormationSweep, EachCombinationsValuesReachItsRun) {
   const aurora_control::TriangleLaw laws[4] = {aurora_control::TriangleLaw::kN, aurora_control::TriangleLaw::kPSO,
                                                aurora_control::TriangleLaw::kOSP, aurora_control::TriangleLaw::kSdashPO};
   for (long i = 0; i < spec.size(); ++i) {
-    const auto run = formationCombination(setup, spec.view().decode(i));
+    const auto run = formationCombination<aurora_control::TriangleDroneLaw>(setup, spec.view().decode(i));
     EXPECT_EQ(run.law, laws[i % 4]) << i;
     EXPECT_EQ(run.drone[0].delay, i / 4 % 2 ? 6 : 0) << i;
     EXPECT_EQ(run.drone[1].delay, 0);
@@ -167,13 +168,61 @@ TEST(AuRoRAsFormationSweep, EachCombinationsValuesReachItsRun) {
   for (int id : spec.columns()) names.push_back(spec.paramNameOf(id));
   EXPECT_EQ(names, (std::vector<std::string>{"delay_1", "delay_2", "delay_3", "formation_law"}));
   const SweepSpec lossy = sweepOf("triangle_values_lossy", "triangle_ardrones", kTriangleLossy);
-  const auto run = formationCombination(makeFormationSetup<double>(lossy, lossy.triangle_run), lossy.view().decode(1));
+  const auto run = formationCombination<aurora_control::TriangleDroneLaw>(makeFormationSetup<double>(lossy, lossy.triangle_run), lossy.view().decode(1));
   EXPECT_EQ(run.drone[2].link.uplink.loss, 0.2);
   EXPECT_EQ(run.drone[0].link.uplink.loss, 0.0);
   // The laws fly differently (N against PSO, no delay).
   const std::vector<SimResult> out = runOn("scalar", spec);
   EXPECT_NE(std::memcmp(&out[0], &out[1], sizeof(SimResult)), 0);
   EXPECT_NE(std::memcmp(&out[0], &out[4], sizeof(SimResult)), 0);  // delay_1 6
+}
+
+// Each robot's own law's gains are parameters named by its law and its
+// number: the Pioneer's kc1_1, the AR.Drone's k1_z_2. A combination's
+// reach that robot only (the file's other gains stay, x and y apart where
+// the file has them apart); the flights differ; every backend agrees.
+TEST(AuRoRAsFormationSweep, EachRobotsOwnGainsAreParameters) {
+  const SweepSpec spec = sweepOf("uav_ugv_gains", "line_pioneer_ardrone",
+                                 "  early_stop: false\n  parameters:\n    kc1_1: {values: [0.2, 0.6]}\n"
+                                 "    k1_z_2: {values: [1.0, 4.0]}\n");
+  auto accepted = [&](const char* name) { return spec.paramId(name) >= 0 && spec.accepts(spec.paramId(name)); };
+  for (const char* name : {"kc1_1", "kd2_omega_1", "k1_x_2", "k2_psi_2"}) EXPECT_TRUE(accepted(name)) << name;
+  for (const char* name : {"kc1_2", "k1_x_1", "kp_1", "k1_x_3", "kc1"}) EXPECT_FALSE(accepted(name)) << name;
+  const aurora_control::UavUgvRun& file = spec.uav_ugv_run;
+  const auto setup = makeFormationSetup<double>(spec, file);
+  constexpr int kK1z = 4, kK1x = 0;  // underactuatedGainName order
+  for (long i = 0; i < spec.size(); ++i) {
+    const auto run = formationCombination<aurora_control::UavUgvRobots>(setup, spec.view().decode(i));
+    const auto& pioneer = run.drone[0].gains.first;
+    const auto& drone = run.drone[1].gains.second.underactuated;
+    EXPECT_EQ(pioneer.kc1[0], i % 2 ? 0.6 : 0.2) << i;
+    EXPECT_EQ(pioneer.kc1[1], pioneer.kc1[0]) << i;
+    EXPECT_EQ(aurora_control::underactuatedGain(drone, kK1z), i / 2 ? 4.0 : 1.0) << i;
+    EXPECT_EQ(pioneer.kc2[1], file.drone[0].gains.first.kc2[1]) << i;
+    EXPECT_EQ(pioneer.kd2[1], file.drone[0].gains.first.kd2[1]) << i;
+    EXPECT_EQ(aurora_control::underactuatedGain(drone, kK1x), aurora_control::underactuatedGain(file.drone[1].gains.second.underactuated, kK1x));
+    EXPECT_EQ(run.drone[1].gains.first.kc1[0], file.drone[1].gains.first.kc1[0]) << i;  // the drone flies no Pioneer law
+    EXPECT_EQ(aurora_control::underactuatedGain(run.drone[0].gains.second.underactuated, kK1z),
+              aurora_control::underactuatedGain(file.drone[0].gains.second.underactuated, kK1z)) << i;
+  }
+  std::vector<std::string> names;
+  for (int id : spec.columns()) names.push_back(spec.paramNameOf(id));
+  EXPECT_EQ(names, (std::vector<std::string>{"delay_1", "delay_2", "kc1_1", "k1_z_2"}));
+  const std::vector<SimResult> out = runOn("scalar", spec);
+  EXPECT_NE(std::memcmp(&out[0], &out[1], sizeof(SimResult)), 0);  // kc1_1
+  EXPECT_NE(std::memcmp(&out[0], &out[2], sizeof(SimResult)), 0);  // k1_z_2
+  expectEveryBackendAgrees<aurora_control::UavUgvRobots>(spec, file, 2, 2e-3);
+  // A gain given as one value is part of the definition; not given, the hash is the file's sweep's.
+  const std::string plain = "  parameters:\n    delay_1: 0\n";
+  EXPECT_NE(definitionHash(sweepOf("g1", "line_pioneer_ardrone", plain + "    k2_x_2: 0.5\n")),
+            definitionHash(sweepOf("g2", "line_pioneer_ardrone", plain)));
+  // Robot 3 of the triangle: its own, robots 1 and 2 keep theirs.
+  const SweepSpec triangle = sweepOf("triangle_gains", "triangle_ardrones", "  parameters:\n    k1_x_3: 0.3\n");
+  const auto t = formationCombination<aurora_control::TriangleDroneLaw>(
+      makeFormationSetup<double>(triangle, triangle.triangle_run), triangle.view().decode(0));
+  EXPECT_EQ(t.drone[2].gains.underactuated.k1[0], 0.3);
+  EXPECT_EQ(t.drone[1].gains.underactuated.k1[0], triangle.triangle_run.drone[1].gains.underactuated.k1[0]);
+  EXPECT_NE(t.drone[1].gains.underactuated.k1[0], 0.3);
 }
 
 TEST(AuRoRAsFormationSweep, MistakesAreRefusedNamingTheKey) {
@@ -195,4 +244,18 @@ TEST(AuRoRAsFormationSweep, MistakesAreRefusedNamingTheKey) {
   EXPECT_NE(e.find("'sweep.parameters.formation_law' is not a parameter of a formation sweep"), std::string::npos) << e;
   e = refusedFor("line_pioneer_ardrone", "  parameters:\n    delay_3: 1\n");
   EXPECT_NE(e.find("'sweep.parameters.delay_3' is not a parameter"), std::string::npos) << e;
+  // Robot 2 of the UAV-UGV line is a drone: no Pioneer gains.
+  e = refusedFor("line_pioneer_ardrone", "  parameters:\n    kc1_2: 1\n");
+  EXPECT_NE(e.find("'sweep.parameters.kc1_2' is not a parameter of a formation sweep"), std::string::npos) << e;
+  EXPECT_NE(e.find("kc1_1, kc2_1, kd1_u_1, kd1_omega_1, kd2_u_1, kd2_omega_1, k1_x_2, k2_x_2"), std::string::npos) << e;
+  e = refusedFor("triangle_ardrones", "  parameters:\n    k1_x_2: {values: [0.5, -1]}\n");
+  EXPECT_NE(e.find("'sweep.parameters.k1_x_2' = -1 is outside the accepted range"), std::string::npos) << e;
+  EXPECT_NE(e.find("robot 2's underactuated law's gain range"), std::string::npos) << e;
+  // Every drone's 12 gains varied at once: more than one sweep varies.
+  std::string all = "  parameters:\n";
+  for (int d = 1; d <= 3; ++d) {
+    for (int i = 0; i < 12; ++i) all += "    " + std::string(aurora_control::underactuatedGainName(i)) + "_" + std::to_string(d) + ": {values: [1.0]}\n";
+  }
+  e = refusedFor("triangle_ardrones", all);
+  EXPECT_NE(e.find("'sweep.parameters' varies 36 parameters: at most 32 vary in one sweep"), std::string::npos) << e;
 }

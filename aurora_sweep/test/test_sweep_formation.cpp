@@ -166,7 +166,7 @@ TEST(FormationSweep, EachDroneFliesItsOwnLinkValues) {
   const GridView grid = spec.view();
   for (long i = 0; i < spec.size(); ++i) {
     const Combination c = grid.decode(i);
-    const auto run = formationCombination(setup, c);
+    const auto run = formationCombination<aurora_control::ArdroneLaw<aurora_control::LawType::kUnderactuated>>(setup, c);
     EXPECT_EQ(run.drone[0].link.uplink.loss, 0.05);
     EXPECT_EQ(run.drone[0].link.downlink.jitter_max, 2);
     EXPECT_EQ(run.drone[1].link.uplink.loss, i / 4 % 2 == 0 ? 0.0 : 0.3) << i;  // its own, over the common 0.05

@@ -54,7 +54,8 @@ AURORA_HD constexpr ShapeLayout layoutOf() {
 // The room of the formation parameters: the largest shape a sweep flies
 // (three robots, nine variables: AuRoRA's triangle); a shape that needs more
 // is refused where it is laid out (static_assert in shapeLayout).
-constexpr int kParamFirstLawGain = ShapeLayout{3, 9}.count();
+constexpr ShapeLayout kLargestShape{3, 9};
+constexpr int kParamFirstLawGain = kLargestShape.count();
 template <class Shape>
 AURORA_HD constexpr ShapeLayout shapeLayout() {
   static_assert(layoutOf<Shape>().count() <= kParamFirstLawGain, "a shape whose parameters exceed its room");
@@ -74,8 +75,16 @@ enum LawGainId : int {
   // aurora_control::TriangleLaw), after the laws' gains: older records and
   // hashes keep theirs.
   kParamFormationLaw = kParamLawGainEnd,
+  // Each formation robot's own law's gains (robot_gains.h names them by
+  // the robot's law): a block of kRobotGainRoom per robot, the most any law
+  // has (the underactuated law's 12), for the largest shape's robots; after
+  // everything older (its records and hashes keep theirs).
+  kParamFirstRobotGain,
 };
-constexpr int kParamCount = kParamFormationLaw + 1;
+constexpr int kRobotGainRoom = 12;
+constexpr int kRobotGainRobots = kLargestShape.robots;
+AURORA_HD constexpr int robotGainParam(int robot, int i) { return kParamFirstRobotGain + robot * kRobotGainRoom + i; }
+constexpr int kParamCount = robotGainParam(kRobotGainRobots, 0);
 
 // The line of two drones (the shape a sweep file flies today).
 constexpr ShapeLayout kLineLayout{2, 6};
@@ -102,17 +111,22 @@ struct Combination {
 // Parameters on no axis and in no column take `fixed`. With `repeats` N > 1
 // each combination runs N times, its repeats consecutive: index i is repeat
 // i % N of combination i / N.
+// The most parameters one sweep varies (axes or points columns): the
+// view is a CUDA kernel's argument, which stays within the 4 KB older
+// CUDA versions allow.
+constexpr int kMaxVaried = 32;
+
 struct GridView {
   int n_axes;
-  int param[kParamCount];          // ParamId of each axis
-  long count[kParamCount];         // values on each axis
-  const double* values[kParamCount];
+  int param[kMaxVaried];           // ParamId of each axis
+  long count[kMaxVaried];          // values on each axis
+  const double* values[kMaxVaried];
   double fixed[kParamCount];       // value of each parameter not varied
   const double* points;
   long n_points;                   // rows of the whole design (size())
   long points_first;               // the design row points[0] holds: a device copy holds one chunk's rows
   int point_cols;
-  int point_param[kParamCount];
+  int point_param[kMaxVaried];
   long repeats;                    // runs of each combination (1: one)
 
   AURORA_HD long combinations() const {

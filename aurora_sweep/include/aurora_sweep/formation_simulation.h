@@ -16,6 +16,7 @@
 #include "aurora_control/formation/formation_judge.h"
 #include "aurora_control/formation/formation_runner.h"
 #include "aurora_control/formation/triangle_formation.h"
+#include "aurora_sweep/robot_gains.h"
 #include "aurora_sweep/simulation.h"
 
 namespace aurora_sweep {
@@ -84,19 +85,23 @@ AURORA_HD inline void setSweptLaw(aurora_control::TriangleLaw& law, double v) {
 template <class Law>
 AURORA_HD inline void setSweptLaw(Law&, double) {}
 
-// A combination's formation: each drone's delay, the formation's gains, and
-// each drone's link with the link values the sweep gives, the drones'
-// common ones (combinationLink) then the drone's own (uplink_loss_2); a
-// value it does not give keeps the drone's file's.
-template <typename T, template <typename> class Shape, class Data>
+// A combination's formation, its robots flying law `Law`: each robot's
+// delay, its law's gains the sweep gives (robot_gains.h), the formation's
+// gains, and each robot's link with the link values the sweep gives, the
+// robots' common ones (combinationLink) then the robot's own
+// (uplink_loss_2); a value it does not give keeps the robot's file's.
+template <class Law, typename T, template <typename> class Shape, class Data>
 AURORA_HD inline ShapeRun<T, Shape, Data> formationCombination(const FormationSetup<T, Shape, Data>& s,
                                                                const Combination& c) {
+  static_assert(std::is_same<Data, typename Law::Data>::value, "the law flies the setup's robots");
   constexpr ShapeLayout at = shapeLayout<Shape<T>>();
+  static_assert(at.robots <= kRobotGainRobots, "a robot gain room for every robot");
   ShapeRun<T, Shape, Data> run = s.run;
   for (int d = 0; d < at.robots; ++d) {
     run.drone[d].delay = static_cast<long>(c.v[at.delay(d)]);
     run.drone[d].link = combinationLink(run.drone[d].link, run.drone[d].delay, c);
     applyLinkValues(run.drone[d].link, c.v + at.linkValue(d, 0));  // its own last
+    RobotGains<Law>::set(run.drone[d].gains, run.drone[d].model, c.v + robotGainParam(d, 0));
   }
   for (int i = 0; i < at.variables; ++i) {
     run.gains.k1[i] = T(c.v[at.k1(i)]);
@@ -200,7 +205,7 @@ AURORA_HD inline SimResult simulateFormation(const FormationSetup<T, Shape, type
                                              const GridView& grid, long index) {
   using Data = typename Law::Data;
   const Combination c = grid.decode(index);
-  const ShapeRun<T, Shape, Data> run = formationCombination(setup, c);
+  const ShapeRun<T, Shape, Data> run = formationCombination<Law>(setup, c);
   using Judge = aurora_control::FormationJudge<T, Shape<T>, Data>;
   Judge judge{setup.criteria, setup.early_stop, run.drone[0].plant.Ts, {}, {}};
   judge.metrics.reset();

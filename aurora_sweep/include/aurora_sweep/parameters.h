@@ -16,6 +16,7 @@ enum class ParamGroup {
   kPdGain, kDelay, kUnderactuatedGain, kModelFactor, kLink, kRepeat, kDroneDelay, kFormationGain, kDroneLink, kUnused,
   kLawGain,       // another vehicle's law's (sweep_gains.h)
   kFormationLaw,  // a triangle's law (kParamFormationLaw)
+  kRobotGain,     // a formation robot's own law's gain (robot_gains.h)
 };
 
 // A sweep's shape (sweep file `formation:`; single-robot sweeps: kNone).
@@ -48,6 +49,9 @@ inline const char* paramName(int id, SweepShape shape) { return paramInfo(id, sh
 // delays, the formation's gains (a triangle's law) and the link's values
 // instead.
 bool paramApplies(int id, const std::string& controller, SweepShape shape);
+// The same for a parameter's row (a formation's robot gains: the sweep's
+// own rows, SweepSpec::robot_gains).
+bool paramApplies(const ParamInfo& info, const std::string& controller, SweepShape shape);
 // The accepted names, in ParamId order, comma separated.
 std::string acceptedParamNames(const std::string& controller, SweepShape shape);
 // The controllers a sweep flies, comma separated, quoted: the AR.Drone's

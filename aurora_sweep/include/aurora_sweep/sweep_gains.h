@@ -45,6 +45,13 @@ struct LawGainRow {
   bool whole;
 };
 
+// A swept value into a gain; NaN (a formation sweep's robot gain it does
+// not give, robot_gains.h) keeps the gain's value.
+template <typename T>
+AURORA_HD inline void giveGain(T& gain, double v) {
+  if (v == v) gain = T(v);
+}
+
 // The Bebop 2 compensator (docs/bebop2.md): ksp, ksd, kp on xy, z, yaw,
 // then period_steps (the law runs every period_steps model steps: 1 is
 // 30 Hz, 6 is 5 Hz). Its unread kd group keeps AuRoRA's values.
@@ -60,15 +67,19 @@ struct SweepGains<aurora_control::Bebop2Compensator> {
     return LawGainRow{names[i], group[i / 3][i % 3 == 0 ? 0 : i % 3 + 1], 0.0,
                       aurora_control::kCompensatorGainMax, false};
   }
+  // The block v (kCount values, row order) into g.
+  template <typename T>
+  AURORA_HD static void set(aurora_control::CompensatorGains<T>& g, const double* v) {
+    T* group[3] = {g.ksp, g.ksd, g.kp};
+    for (int j = 0; j < 3; ++j) {
+      for (int axis = 0; axis < 4; ++axis) giveGain(group[j][axis], v[3 * j + (axis < 2 ? 0 : axis - 1)]);
+    }
+    giveGain(g.period_steps, v[9]);
+  }
   template <typename T>
   AURORA_HD static aurora_control::CompensatorGains<T> from(const Combination& c) {
     aurora_control::CompensatorGains<T> g = aurora_control::CompensatorGains<T>::defaults();
-    T* group[3] = {g.ksp, g.ksd, g.kp};
-    for (int j = 0; j < 3; ++j) {
-      const double* v = c.v + kFirst + 3 * j;
-      group[j][0] = group[j][1] = T(v[0]), group[j][2] = T(v[1]), group[j][3] = T(v[2]);
-    }
-    g.period_steps = T(c.v[kParamCompensatorPeriod]);
+    set(g, c.v + kFirst);
     return g;
   }
 };
@@ -85,13 +96,16 @@ struct SweepGains<aurora_control::PioneerDynamic> {
     return LawGainRow{names[i], preset[i], 0.0, aurora_control::kPioneerGainMax, false};
   }
   template <typename T>
+  AURORA_HD static void set(aurora_control::PioneerDynamicGains<T>& g, const double* v) {
+    giveGain(g.kc1[0], v[0]), giveGain(g.kc1[1], v[0]);
+    giveGain(g.kc2[0], v[1]), giveGain(g.kc2[1], v[1]);
+    giveGain(g.kd1[0], v[2]), giveGain(g.kd1[1], v[3]);
+    giveGain(g.kd2[0], v[4]), giveGain(g.kd2[1], v[5]);
+  }
+  template <typename T>
   AURORA_HD static aurora_control::PioneerDynamicGains<T> from(const Combination& c) {
-    const double* v = c.v + kFirst;
-    aurora_control::PioneerDynamicGains<T> g;
-    g.kc1[0] = g.kc1[1] = T(v[0]);
-    g.kc2[0] = g.kc2[1] = T(v[1]);
-    g.kd1[0] = T(v[2]), g.kd1[1] = T(v[3]);
-    g.kd2[0] = T(v[4]), g.kd2[1] = T(v[5]);
+    aurora_control::PioneerDynamicGains<T> g = aurora_control::PioneerDynamicGains<T>::defaults();
+    set(g, c.v + kFirst);
     g.accel_interval = T(0);  // the model's Ts
     return g;
   }
@@ -107,10 +121,14 @@ struct SweepGains<aurora_control::PioneerKinematic> {
                       false};
   }
   template <typename T>
+  AURORA_HD static void set(aurora_control::PioneerKinematicGains<T>& g, const double* v) {
+    giveGain(g.k1[0], v[0]), giveGain(g.k1[1], v[0]);
+    giveGain(g.k2[0], v[1]), giveGain(g.k2[1], v[1]);
+  }
+  template <typename T>
   AURORA_HD static aurora_control::PioneerKinematicGains<T> from(const Combination& c) {
-    aurora_control::PioneerKinematicGains<T> g;
-    g.k1[0] = g.k1[1] = T(c.v[kFirst]);
-    g.k2[0] = g.k2[1] = T(c.v[kFirst + 1]);
+    aurora_control::PioneerKinematicGains<T> g = aurora_control::PioneerKinematicGains<T>::defaults();
+    set(g, c.v + kFirst);
     return g;
   }
 };

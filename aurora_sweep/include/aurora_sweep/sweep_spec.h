@@ -111,11 +111,35 @@ struct SweepSpec {
     return formation() ? aurora_control::formationTicks(duration(), formationTs())
                        : aurora_control::studyIterationCount(duration(), Ts());
   }
+  // A formation sweep's robots' own law's gains (robot_gains.h): the rows
+  // of robotGainParam(0, 0) on, named by each robot's law (k1_x_2, kc1_1);
+  // a robot's room its law does not use has no name. Set with the
+  // formation (readSweepFormation).
+  std::vector<ParamInfo> robot_gains;
+  // Parameter id's name and rules in this sweep (its shape's, its robots').
+  const ParamInfo& param(int id) const {
+    const int row = id - kParamFirstRobotGain;
+    return row >= 0 && row < static_cast<int>(robot_gains.size()) ? robot_gains[static_cast<size_t>(row)]
+                                                                  : paramInfo(id, shape);
+  }
+  const char* paramNameOf(int id) const { return param(id).name.c_str(); }
   // Whether this sweep accepts parameter `id` (parameters.h).
-  bool accepts(int id) const { return paramApplies(id, controller, shape); }
-  // Parameter id's name and rules in this sweep (its shape's).
-  const ParamInfo& param(int id) const { return paramInfo(id, shape); }
-  const char* paramNameOf(int id) const { return paramName(id, shape); }
+  bool accepts(int id) const { return paramApplies(param(id), controller, shape); }
+  // The parameter a sweep file names `name` (-1: none of this sweep's).
+  int paramId(const std::string& name) const {
+    for (int id = 0; id < kParamCount && !name.empty(); ++id) {
+      if (param(id).name == name) return id;
+    }
+    return -1;
+  }
+  // The names it accepts, in ParamId order, comma separated.
+  std::string acceptedNames() const {
+    std::string names;
+    for (int id = 0; id < kParamCount; ++id) {
+      if (accepts(id)) names += (names.empty() ? "" : ", ") + param(id).name;
+    }
+    return names;
+  }
   aurora_control::FeasibilityCriteria<double> criteria =
       aurora_control::FeasibilityCriteria<double>::study();
   std::vector<Axis> axes;           // in variation order: axes[0] varies fastest
@@ -276,8 +300,8 @@ struct SweepSpec {
   // The parameters of each result row: the law's gains, the delay, the
   // model factors that vary or are not 1, the link's values when the link is
   // not ideal, the repeat when there are repeats; a formation's: its drones'
-  // delays, the formation gains it varies, the link values it gives (ParamId
-  // order).
+  // delays, the formation gains it varies, the link values and the robots'
+  // gains it gives (ParamId order).
   std::vector<int> columns() const {
     std::vector<int> c;
     for (int id = 0; id < kParamCount; ++id) {
@@ -287,7 +311,7 @@ struct SweepSpec {
                          : group == ParamGroup::kRepeat ? repeats > 1
                          : group == ParamGroup::kFormationGain ? varies(id)
                          : group == ParamGroup::kFormationLaw ? formation() && accepts(id)
-                         : group == ParamGroup::kDroneLink ? formation() && given(id)
+                         : group == ParamGroup::kDroneLink || group == ParamGroup::kRobotGain ? formation() && given(id)
                                                         : accepts(id);
       if (shown) c.push_back(id);
     }

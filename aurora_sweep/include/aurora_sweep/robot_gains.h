@@ -1,0 +1,102 @@
+// A formation robot's own law's gains as sweep parameters (docs/formation.md,
+// "Formation sweeps"): robot r's block of kRobotGainRoom values from
+// robotGainParam(r, 0) (combination.h), named by its law's gains with the
+// robot's number (k1_x_2, kc1_1, kp_1). RobotGains<Law> says, for a law
+// type, which gains a block holds for a robot of given parameters (its
+// rows, host) and puts a combination's block into the robot's gains (host
+// and device: the scalar loop, the SIMD lanes and the CUDA thread all build
+// a combination's run with formationCombination). A value the sweep does
+// not give is NaN and leaves the formation file's gain as it is.
+#pragma once
+
+#include <vector>
+
+#include "aurora_common/host_device.h"
+#include "aurora_control/law/control_law.h"
+#include "aurora_control/law/either_law.h"
+#include "aurora_control/params/limits.h"
+#include "aurora_sweep/sweep_gains.h"
+
+namespace aurora_sweep {
+
+template <class Law>
+struct RobotGains;
+
+// The AR.Drone's PD law: kp, kd.
+template <>
+struct RobotGains<aurora_control::ArdroneLaw<aurora_control::LawType::kPdSaturated>> {
+  static const char* law(const aurora_sim::Ardrone2::Params<double>&) { return "pd_saturated"; }
+  static std::vector<LawGainRow> rows(const aurora_sim::Ardrone2::Params<double>&) {
+    using namespace aurora_control;
+    return {{"kp", 0.0, kPdGainMin, kPdGainMax, false}, {"kd", 0.0, kPdGainMin, kPdGainMax, false}};
+  }
+  template <typename T>
+  AURORA_HD static void set(aurora_control::LawGains<T>& g, const aurora_sim::Ardrone2::Params<T>&, const double* v) {
+    giveGain(g.pd.kp, v[0]);
+    giveGain(g.pd.kd, v[1]);
+  }
+};
+
+// The AR.Drone's underactuated law: its 12 gains (underactuatedGainName order).
+template <>
+struct RobotGains<aurora_control::ArdroneLaw<aurora_control::LawType::kUnderactuated>> {
+  static const char* law(const aurora_sim::Ardrone2::Params<double>&) { return "underactuated"; }
+  static std::vector<LawGainRow> rows(const aurora_sim::Ardrone2::Params<double>&) {
+    using namespace aurora_control;
+    std::vector<LawGainRow> r;
+    for (int i = 0; i < kUnderactuatedGainCount; ++i) {
+      r.push_back({underactuatedGainName(i), 0.0, kUnderactuatedGainMin, kUnderactuatedGainMax, false});
+    }
+    return r;
+  }
+  template <typename T>
+  AURORA_HD static void set(aurora_control::LawGains<T>& g, const aurora_sim::Ardrone2::Params<T>&, const double* v) {
+    for (int i = 0; i < kUnderactuatedGainCount; ++i) giveGain(aurora_control::underactuatedGain(g.underactuated, i), v[i]);
+  }
+};
+
+// The laws SweepGains lists (the Bebop 2 compensator, the Pioneer's two):
+// their rows, their block.
+template <class Law>
+struct ListedRobotGains {
+  template <class Params>
+  static const char* law(const Params&) {
+    return Law::name();
+  }
+  template <class Params>
+  static std::vector<LawGainRow> rows(const Params&) {
+    std::vector<LawGainRow> r;
+    for (int i = 0; i < SweepGains<Law>::kCount; ++i) r.push_back(SweepGains<Law>::row(i));
+    return r;
+  }
+  template <class Gains, class Params>
+  AURORA_HD static void set(Gains& g, const Params&, const double* v) {
+    SweepGains<Law>::set(g, v);
+  }
+};
+template <>
+struct RobotGains<aurora_control::Bebop2Compensator> : ListedRobotGains<aurora_control::Bebop2Compensator> {};
+template <>
+struct RobotGains<aurora_control::PioneerDynamic> : ListedRobotGains<aurora_control::PioneerDynamic> {};
+template <>
+struct RobotGains<aurora_control::PioneerKinematic> : ListedRobotGains<aurora_control::PioneerKinematic> {};
+
+// A mixed crew's robot: the law its parameters choose.
+template <class First, class Second>
+struct RobotGains<aurora_control::EitherLaw<First, Second>> {
+  template <class Params>
+  static const char* law(const Params& p) {
+    return p.is_second ? RobotGains<Second>::law(p.second) : RobotGains<First>::law(p.first);
+  }
+  template <class Params>
+  static std::vector<LawGainRow> rows(const Params& p) {
+    return p.is_second ? RobotGains<Second>::rows(p.second) : RobotGains<First>::rows(p.first);
+  }
+  template <class Gains, class Params>
+  AURORA_HD static void set(Gains& g, const Params& p, const double* v) {
+    if (p.is_second) RobotGains<Second>::set(g.second, p.second, v);
+    else RobotGains<First>::set(g.first, p.first, v);
+  }
+};
+
+}  // namespace aurora_sweep
