@@ -257,8 +257,13 @@ void SimNode<Vehicle>::onLockstepRetry(const ros::WallTimerEvent&) {
     return;
   }
   // Re-send the newest state when the loop has stalled (a controller that
-  // missed our publication never answered).
-  if ((ros::WallTime::now() - last_publish_wall_).toSec() > 0.2) {
+  // missed our publication never answered). Not sooner than a second: the
+  // controller answers a re-sent state it already answered with that
+  // step's command again, and a command is no more than a step (cmd_vel
+  // carries none), so a re-send to a controller that was only slow (a busy
+  // machine) would make this sim take two steps on one step's command.
+  constexpr double kStalledAfter = 1.0;  // [s] wall
+  if ((ros::WallTime::now() - last_publish_wall_).toSec() > kStalledAfter) {
     publishState(lockstepTime());
   }
 }
