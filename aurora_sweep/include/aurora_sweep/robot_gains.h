@@ -25,7 +25,9 @@ struct RobotGains;
 // The AR.Drone's PD law: kp, kd.
 template <>
 struct RobotGains<aurora_control::ArdroneLaw<aurora_control::LawType::kPdSaturated>> {
-  static const char* law(const aurora_sim::Ardrone2::Params<double>&) { return "pd_saturated"; }
+  static const char* law(const aurora_sim::Ardrone2::Params<double>&) {
+    return aurora_control::lawName(aurora_control::LawType::kPdSaturated);
+  }
   static std::vector<LawGainRow> rows(const aurora_sim::Ardrone2::Params<double>&) {
     using namespace aurora_control;
     return {{"kp", 0.0, kPdGainMin, kPdGainMax, false}, {"kd", 0.0, kPdGainMin, kPdGainMax, false}};
@@ -40,7 +42,9 @@ struct RobotGains<aurora_control::ArdroneLaw<aurora_control::LawType::kPdSaturat
 // The AR.Drone's underactuated law: its 12 gains (underactuatedGainName order).
 template <>
 struct RobotGains<aurora_control::ArdroneLaw<aurora_control::LawType::kUnderactuated>> {
-  static const char* law(const aurora_sim::Ardrone2::Params<double>&) { return "underactuated"; }
+  static const char* law(const aurora_sim::Ardrone2::Params<double>&) {
+    return aurora_control::lawName(aurora_control::LawType::kUnderactuated);
+  }
   static std::vector<LawGainRow> rows(const aurora_sim::Ardrone2::Params<double>&) {
     using namespace aurora_control;
     std::vector<LawGainRow> r;
