@@ -22,31 +22,15 @@ namespace aurora_sweep {
 template <class Law>
 struct RobotGains;
 
-// The AR.Drone's PD law: kp, kd.
-template <>
-struct RobotGains<aurora_control::ArdroneLaw<aurora_control::LawType::kPdSaturated>> {
-  static const char* law(const aurora_sim::Ardrone2::Params<double>&) {
-    return aurora_control::lawName(aurora_control::LawType::kPdSaturated);
-  }
+// The AR.Drone's laws: the PD law's kp, kd; the underactuated law's 12
+// gains (underactuatedGainName order).
+template <aurora_control::LawType L>
+struct RobotGains<aurora_control::ArdroneLaw<L>> {
+  static constexpr bool kPd = L == aurora_control::LawType::kPdSaturated;
+  static const char* law(const aurora_sim::Ardrone2::Params<double>&) { return aurora_control::lawName(L); }
   static std::vector<LawGainRow> rows(const aurora_sim::Ardrone2::Params<double>&) {
     using namespace aurora_control;
-    return {{"kp", 0.0, kPdGainMin, kPdGainMax, false}, {"kd", 0.0, kPdGainMin, kPdGainMax, false}};
-  }
-  template <typename T>
-  AURORA_HD static void set(aurora_control::LawGains<T>& g, const aurora_sim::Ardrone2::Params<T>&, const double* v) {
-    giveGain(g.pd.kp, v[0]);
-    giveGain(g.pd.kd, v[1]);
-  }
-};
-
-// The AR.Drone's underactuated law: its 12 gains (underactuatedGainName order).
-template <>
-struct RobotGains<aurora_control::ArdroneLaw<aurora_control::LawType::kUnderactuated>> {
-  static const char* law(const aurora_sim::Ardrone2::Params<double>&) {
-    return aurora_control::lawName(aurora_control::LawType::kUnderactuated);
-  }
-  static std::vector<LawGainRow> rows(const aurora_sim::Ardrone2::Params<double>&) {
-    using namespace aurora_control;
+    if (kPd) return {{"kp", 0.0, kPdGainMin, kPdGainMax, false}, {"kd", 0.0, kPdGainMin, kPdGainMax, false}};
     std::vector<LawGainRow> r;
     for (int i = 0; i < kUnderactuatedGainCount; ++i) {
       r.push_back({underactuatedGainName(i), 0.0, kUnderactuatedGainMin, kUnderactuatedGainMax, false});
@@ -55,6 +39,11 @@ struct RobotGains<aurora_control::ArdroneLaw<aurora_control::LawType::kUnderactu
   }
   template <typename T>
   AURORA_HD static void set(aurora_control::LawGains<T>& g, const aurora_sim::Ardrone2::Params<T>&, const double* v) {
+    if (kPd) {
+      giveGain(g.pd.kp, v[0]);
+      giveGain(g.pd.kd, v[1]);
+      return;
+    }
     for (int i = 0; i < kUnderactuatedGainCount; ++i) giveGain(aurora_control::underactuatedGain(g.underactuated, i), v[i]);
   }
 };
