@@ -120,18 +120,6 @@ const ParamInfo& paramInfo(int id, SweepShape shape) {
   return tables[static_cast<int>(shape)][static_cast<size_t>(id)];
 }
 
-int paramIdOf(const std::string& name, SweepShape shape) {
-  if (name.empty()) return -1;
-  for (int id = 0; id < kParamCount; ++id) {
-    if (paramInfo(id, shape).name == name) return id;
-  }
-  return -1;
-}
-
-bool paramApplies(int id, const std::string& controller, SweepShape shape) {
-  return paramApplies(paramInfo(id, shape), controller, shape);
-}
-
 bool paramApplies(const ParamInfo& info, const std::string& controller, SweepShape shape) {
   const ParamGroup group = info.group;
   aurora_control::LawType ardrone_law;
@@ -153,14 +141,6 @@ bool paramApplies(const ParamInfo& info, const std::string& controller, SweepSha
     case ParamGroup::kUnused: return false;
     default: return true;
   }
-}
-
-std::string acceptedParamNames(const std::string& controller, SweepShape shape) {
-  std::string names;
-  for (int id = 0; id < kParamCount; ++id) {
-    if (paramApplies(id, controller, shape)) names += (names.empty() ? "" : ", ") + paramInfo(id, shape).name;
-  }
-  return names;
 }
 
 std::string sweepControllerNames() {

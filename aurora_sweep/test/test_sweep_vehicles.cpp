@@ -79,9 +79,9 @@ TEST(SweepVehicles, TheShippedStudiesFlyTheirOwnVehicle) {
   // AuRoRA's gains are on the grids (the docs' max tolerable delay there).
   const GridView g = b30.view();
   const Combination c = g.decode(3 + 16 * 3);
-  EXPECT_EQ(c.v[paramIdOf("kp_xy", SweepShape::kNone)], 1.0);
-  EXPECT_EQ(c.v[paramIdOf("ksd_xy", SweepShape::kNone)], 2.0);
-  EXPECT_EQ(c.v[paramIdOf("ksp_xy", SweepShape::kNone)], 2.0);  // the file's default: AuRoRA's
+  EXPECT_EQ(c.v[SweepSpec().paramId("kp_xy")], 1.0);
+  EXPECT_EQ(c.v[SweepSpec().paramId("ksd_xy")], 2.0);
+  EXPECT_EQ(c.v[SweepSpec().paramId("ksp_xy")], 2.0);  // the file's default: AuRoRA's
 }
 
 TEST(SweepVehicles, ACombinationIsTheFlightOfItsGainsAndDelay) {
@@ -92,8 +92,8 @@ TEST(SweepVehicles, ACombinationIsTheFlightOfItsGainsAndDelay) {
   for (long i : {0L, 17L, 51L, 300L, 511L}) {
     const Combination c = b5.view().decode(i);
     auto g = aurora_control::CompensatorGains<double>::defaults();
-    g.kp[0] = g.kp[1] = c.v[paramIdOf("kp_xy", SweepShape::kNone)];
-    g.ksd[0] = g.ksd[1] = c.v[paramIdOf("ksd_xy", SweepShape::kNone)];
+    g.kp[0] = g.kp[1] = c.v[SweepSpec().paramId("kp_xy")];
+    g.ksd[0] = g.ksd[1] = c.v[SweepSpec().paramId("ksd_xy")];
     g.period_steps = 6.0;
     expectSameRecord(bebop[static_cast<size_t>(i)], flownByHand<aurora_control::Bebop2Compensator>(bsetup, c.delay(), g),
                      i);
@@ -106,8 +106,8 @@ TEST(SweepVehicles, ACombinationIsTheFlightOfItsGainsAndDelay) {
     const Combination c = p.view().decode(p.range_begin + i);
     ASSERT_EQ(c.delay(), 7);
     auto g = aurora_control::PioneerDynamicGains<double>::defaults();
-    g.kc1[0] = g.kc1[1] = c.v[paramIdOf("kc1", SweepShape::kNone)];
-    g.kc2[0] = g.kc2[1] = c.v[paramIdOf("kc2", SweepShape::kNone)];
+    g.kc1[0] = g.kc1[1] = c.v[SweepSpec().paramId("kc1")];
+    g.kc2[0] = g.kc2[1] = c.v[SweepSpec().paramId("kc2")];
     expectSameRecord(pioneer[static_cast<size_t>(i)], flownByHand<aurora_control::PioneerDynamic>(psetup, 7, g), i);
   }
 }

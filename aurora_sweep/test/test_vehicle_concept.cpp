@@ -195,7 +195,7 @@ TEST(VehicleConcept, ATestVehicleFliesEveryBackend) {
 TEST(VehicleConcept, TheBebop2FliesEveryBackend) {
   PointGrid grid;
   grid.axes = {{1.0, 2.0}, {1.0, 2.0}, {0, 3, 9}, {1.0, 0.8}};
-  const int params[4] = {paramIdOf("ksp_xy", SweepShape::kNone), paramIdOf("ksd_xy", SweepShape::kNone), kParamDelay, kParamFirstModelFactor};
+  const int params[4] = {SweepSpec().paramId("ksp_xy"), SweepSpec().paramId("ksd_xy"), kParamDelay, kParamFirstModelFactor};
   test::setAxes(grid.view, params, grid.axes);
   const SimSetup<aurora_sim::Bebop2, double> ideal = bebopSetup<double>(aurora_control::LinkParams());
   const std::vector<SimResult> flown = scalarLoop<double, false, BebopLaw>(ideal, grid.view);
@@ -220,7 +220,7 @@ TEST(VehicleConcept, ThePioneerFliesEveryBackend) {
   using PioneerLaw = aurora_control::PioneerDynamic;
   PointGrid grid;
   grid.axes = {{0.2, 0.35}, {0.5, 0.75}, {0, 2, 5}, {1.0, 1.2}};
-  const int params[4] = {paramIdOf("kc1", SweepShape::kNone), paramIdOf("kd1_u", SweepShape::kNone), kParamDelay, kParamFirstModelFactor};
+  const int params[4] = {SweepSpec().paramId("kc1"), SweepSpec().paramId("kd1_u"), kParamDelay, kParamFirstModelFactor};
   test::setAxes(grid.view, params, grid.axes);
   auto setup = [](const aurora_control::LinkParams& link, auto precision) {
     using T = decltype(precision);

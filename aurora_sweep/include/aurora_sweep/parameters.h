@@ -37,23 +37,19 @@ struct ParamInfo {
   double preset = 0;  // a kLawGain's default (the law's defaults())
 };
 
+// Parameter id's row in a sweep of `shape` (a formation's robot gains are
+// the sweep's own rows: SweepSpec::param, SweepSpec::paramId by name).
 const ParamInfo& paramInfo(int id, SweepShape shape);
-// -1 for a name no controller accepts.
-int paramIdOf(const std::string& name, SweepShape shape);
 // A short name; "kp", "k1_theta", "m", ...
 inline const char* paramName(int id, SweepShape shape) { return paramInfo(id, shape).name.c_str(); }
 
-// Whether a sweep of controller `controller` (a law's name) accepts
-// parameter `id` (its gains, the delay, the model factors of the AR.Drone,
-// the link); a formation sweep (shape not kNone) accepts its robots'
-// delays, the formation's gains (a triangle's law) and the link's values
-// instead.
-bool paramApplies(int id, const std::string& controller, SweepShape shape);
-// The same for a parameter's row (a formation's robot gains: the sweep's
-// own rows, SweepSpec::robot_gains).
+// Whether a sweep of controller `controller` (a law's name) accepts the
+// parameter of row `info` (its gains, the delay, the model factors of the
+// AR.Drone, the link); a formation sweep (shape not kNone) accepts its
+// robots' delays, the formation's gains (a triangle's law), the link's
+// values and its robots' own gains instead (SweepSpec::accepts; its
+// acceptedNames lists them).
 bool paramApplies(const ParamInfo& info, const std::string& controller, SweepShape shape);
-// The accepted names, in ParamId order, comma separated.
-std::string acceptedParamNames(const std::string& controller, SweepShape shape);
 // The controllers a sweep flies, comma separated, quoted: the AR.Drone's
 // two, the Bebop 2 compensator, the Pioneer's two.
 std::string sweepControllerNames();
