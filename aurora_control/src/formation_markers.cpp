@@ -26,24 +26,27 @@ geometry_msgs::Point point(const double* p) {
 
 }  // namespace
 
-visualization_msgs::MarkerArray formationMarkers(const double X[6], const FormationLayer<double, LineFormation<double>>& layer,
-                                                 const std::string& frame) {
+visualization_msgs::MarkerArray formationMarkers(const std::vector<double>& X, const std::vector<double>& Xd,
+                                                 const std::vector<const double*>& held, const std::string& frame) {
   const float actual[4] = {0.1f, 0.9f, 0.2f, 1.0f}, desired[4] = {1.0f, 1.0f, 1.0f, 0.8f},
               reference[4] = {1.0f, 0.6f, 0.0f, 0.9f};
-  double Xd[6];
-  LineFormation<double>::positions(layer.Qd(), Xd);
   visualization_msgs::MarkerArray a;
   visualization_msgs::Marker line = base(frame, "formation_line", 0, visualization_msgs::Marker::LINE_STRIP, actual, 0.03);
   visualization_msgs::Marker want = base(frame, "desired_line", 0, visualization_msgs::Marker::LINE_STRIP, desired, 0.02);
   visualization_msgs::Marker spots = base(frame, "desired_drones", 0, visualization_msgs::Marker::SPHERE_LIST, desired, 0.12);
-  visualization_msgs::Marker held = base(frame, "references", 0, visualization_msgs::Marker::SPHERE_LIST, reference, 0.08);
-  for (int d = 0; d < 2; ++d) {
-    line.points.push_back(point(X + 3 * d));
-    want.points.push_back(point(Xd + 3 * d));
-    spots.points.push_back(point(Xd + 3 * d));
-    held.points.push_back(point(layer.position(d)));
+  visualization_msgs::Marker refs = base(frame, "references", 0, visualization_msgs::Marker::SPHERE_LIST, reference, 0.08);
+  const size_t robots = held.size();
+  for (size_t d = 0; d < robots; ++d) {
+    line.points.push_back(point(&X[3 * d]));
+    want.points.push_back(point(&Xd[3 * d]));
+    spots.points.push_back(point(&Xd[3 * d]));
+    refs.points.push_back(point(held[d]));
   }
-  a.markers = {line, want, spots, held};
+  if (robots > 2) {  // a closed shape (the triangle): back to robot 1
+    line.points.push_back(line.points.front());
+    want.points.push_back(want.points.front());
+  }
+  a.markers = {line, want, spots, refs};
   return a;
 }
 

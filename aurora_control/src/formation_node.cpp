@@ -2,6 +2,8 @@
 
 #include <geometry_msgs/Twist.h>
 
+#include <limits>
+
 #include "aurora_control/formation/formation_yaml.h"
 #include "aurora_control/params/parameter_table.h"
 #include "formation_markers.h"
@@ -20,62 +22,85 @@ constexpr ParameterSpec kFormationSubscribers{
     "lockstep_subscribers/formation", ParamKind::kWhole, 0, 0, 100, "subscribers",
     "formation node, lockstep: subscribers of formation to wait for (a recorder, a test)"};
 
+std::string joined(const std::vector<std::string>& v) {
+  std::string s;
+  for (const std::string& x : v) s += (s.empty() ? "" : ", ") + x;
+  return s;
+}
+
 }  // namespace
 
 FormationNode::FormationNode(ros::NodeHandle nh, ros::NodeHandle private_nh) : nh_(nh), pnh_(private_nh) {
   refuseDuplicatedKeysInLoadedFiles(pnh_);
-  LawType law = LawType::kUnderactuated;
-  const FormationRun<double, LineFormation<double>> run = loadRun(law);
-  core_.reset(new Core(run, law));
+  loadCrew();
   const std::string mode = aurora_common::wordParam(pnh_, kParameterTable[kRowMode]);  // the controller's row
   lockstep_ = mode == "lockstep";
   configureSequence();
   cmd_subscribers_ = static_cast<int>(aurora_common::wholeParam(pnh_, kParameterTable[kRowLockstepCmdSubscribers]));
   formation_subscribers_ = static_cast<int>(aurora_common::wholeParam(pnh_, kFormationSubscribers));
   connect();
-  ROS_INFO("formation_controller: %s, drones %s and %s, delays %ld and %ld samples, %s law, layer every %ld steps",
-           mode.c_str(), drones_[0].c_str(), drones_[1].c_str(), run.drone[0].delay, run.drone[1].delay,
-           lawName(law), run.schedule.period_ticks);
+  std::string delays;
+  for (int d = 0; d < crew_->robots(); ++d) delays += (d ? ", " : "") + std::to_string(crew_->robot(d).delay);
+  ROS_INFO("formation_controller: %s, %s formation (%s), robots %s, delays %s samples of %.4f s", mode.c_str(),
+           crew_->shape().c_str(), crew_->lawName().c_str(), joined(drones_).c_str(), delays.c_str(),
+           crew_->sampleTime());
 }
 
-// The formation file (~formation_file) with the drones' vehicle (~vehicle)
-// and ~delay_1, ~delay_2 (-1: the file's); ~drones, when given, must be the
-// file's namespaces (the launch started those sims).
-FormationRun<double, LineFormation<double>> FormationNode::loadRun(LawType& law) {
-  const std::string file = aurora_common::requireParam<std::string>(pnh_, "formation_file", "a formation file (config/formations/NAME.yaml)");
-  const std::string config_dir = aurora_common::paramOr<std::string>(pnh_, "config_dir", "");
-  const FormationFile f = readFormationFile(file, config_dir);
-  const aurora_control::LawVehicleParams vehicle = aurora_sim::loadVehicleParams(pnh_, "vehicle");
-  FormationRun<double, LineFormation<double>> run = formationRun(f, vehicle);
-  law = f.drones[0].controller.law;
-  for (int d = 0; d < kDrones; ++d) {
-    drones_.push_back(f.drones[d].name_space);
+// The formation file (~formation_file; the two-drone line's drones' vehicle
+// ~vehicle) and ~delay_1 .. ~delay_3 (-1: the file's); ~drones, when given,
+// must be the crew's namespaces (the launch started those sims).
+void FormationNode::loadCrew() {
+  CrewRequest q;
+  q.file = aurora_common::requireParam<std::string>(pnh_, "formation_file", "a formation file (config/formations/NAME.yaml)");
+  q.config_dir = aurora_common::paramOr<std::string>(pnh_, "config_dir", "");
+  const std::string shape = formationShapeOf(q.file);
+  if (shape != "triangle" && shape != "uav_ugv_line") q.line_vehicle = aurora_sim::loadVehicleParams(pnh_, "vehicle");
+  for (int d = 0; d < kMaxCrew; ++d) {
     const std::string key = "delay_" + std::to_string(d + 1);
     const double given = aurora_common::rangedParam(pnh_, key, -1, -1, double(kMaxDelaySamples), "samples (-1: the file's)");
     if (given != double(long(given))) {
       throw aurora_common::ConfigError("parameter '" + aurora_common::fullKey(pnh_, key) + "' = " + aurora_common::numberText(given) +
                                     " is refused: accepted whole samples");
     }
-    // A delay given replaces the drone's, its link's uplink delay included (docs/links.md).
-    if (given >= 0) run.drone[d].delay = static_cast<long>(given);
+    q.delays.push_back(static_cast<long>(given));  // a delay given replaces the robot's, its link's uplink delay included
+    q.delay_keys.push_back(aurora_common::fullKey(pnh_, key));
   }
-  refuseFormationDelays(run, vehicle.Ts, {aurora_common::fullKey(pnh_, "delay_1"), aurora_common::fullKey(pnh_, "delay_2")});
+  crew_ = loadFormationCrew(q);
+  for (int d = 0; d < crew_->robots(); ++d) drones_.push_back(crew_->robot(d).name_space);
   std::vector<std::string> launched;
   if (pnh_.getParam("drones", launched) && launched != drones_) {
-    throw aurora_common::ConfigError("parameter '" + aurora_common::fullKey(pnh_, "drones") + "': the launch started drones '" +
-                                  (launched.empty() ? std::string() : launched[0]) + "', ... but the formation file '" + file +
-                                  "' names " + drones_[0] + " and " + drones_[1] + ": give the file's namespaces");
+    throw aurora_common::ConfigError("parameter '" + aurora_common::fullKey(pnh_, "drones") + "' = [" + joined(launched) +
+                                  "]: the formation file '" + q.file + "' flies " + std::to_string(crew_->robots()) +
+                                  " robots in namespaces " + joined(drones_) + ": give those (formation.launch does)");
   }
-  if (formationHistory(run) > kMaxDelaySamples) {
-    throw aurora_common::ConfigError("the drones' delays plus their links' jitter need more than " +
-                                  std::to_string(kMaxDelaySamples) + " samples of history");
+  refuseOtherSims();
+}
+
+// A simulated robot whose vehicle file (/NS/vehicle, as the launch loads it)
+// is another vehicle, or steps at another sample time, would not fly the
+// formation's run: refused naming the key.
+void FormationNode::refuseOtherSims() const {
+  for (int d = 0; d < crew_->robots(); ++d) {
+    const CrewRobot& r = crew_->robot(d);
+    const std::string type_key = "/" + r.name_space + "/vehicle/type", ts_key = "/" + r.name_space + "/vehicle/sample_time";
+    std::string type;
+    if (nh_.getParam(type_key, type) && type != r.vehicle) {
+      throw aurora_common::ConfigError("parameter '" + type_key + "' = '" + type + "': robot " + std::to_string(d + 1) +
+                                    " of the formation is a " + r.vehicle + ": load its vehicle file there");
+    }
+    double Ts = 0.0;
+    if (nh_.getParam(ts_key, Ts) && Ts != crew_->sampleTime()) {
+      throw aurora_common::ConfigError("parameter '" + ts_key + "' = " + aurora_common::numberText(Ts) +
+                                    " s is not the formation's step " + aurora_common::numberText(crew_->sampleTime()) +
+                                    " s (every robot steps at it): formation.launch sets it from the formation file");
+    }
   }
-  return run;
 }
 
 void FormationNode::connect() {
-  for (int d = 0; d < kDrones; ++d) {
-    const std::string ns = "/" + drones_[d];
+  for (const std::string& name : drones_) {
+    const std::string ns = "/" + name;
+    const int d = static_cast<int>(cmd_pubs_.size());
     cmd_pubs_.push_back(nh_.advertise<geometry_msgs::Twist>(ns + "/cmd_vel", 1000));
     state_subs_.push_back(nh_.subscribe<aurora_msgs::DroneState>(
         ns + "/state", 1000, [this, d](const aurora_msgs::DroneState::ConstPtr& m) { onState(d, m); },
@@ -83,7 +108,7 @@ void FormationNode::connect() {
   }
   formation_pub_ = nh_.advertise<aurora_msgs::Formation>("formation", 1000);
   markers_pub_ = nh_.advertise<visualization_msgs::MarkerArray>("markers", 10);
-  if (!lockstep_) timer_ = nh_.createTimer(ros::Duration(core_->run().drone[0].plant.Ts), &FormationNode::onTimer, this);
+  if (!lockstep_) timer_ = nh_.createTimer(ros::Duration(crew_->sampleTime()), &FormationNode::onTimer, this);
 }
 
 bool FormationNode::listenersReady() const {
@@ -93,92 +118,106 @@ bool FormationNode::listenersReady() const {
   return static_cast<int>(formation_pub_.getNumSubscribers()) >= formation_subscribers_;
 }
 
-// Lockstep: a drone's state; once every drone's state of step k is here,
+// Lockstep: a robot's state; once every robot's state of step k is here,
 // tick k. A re-sent state of the step last answered (its command was lost)
-// gets that command again; a re-sent state of a step not answered yet (the
-// other drone's state has not come) gets nothing: the sim would step on
-// the previous command and leave the drones a step apart.
+// gets that command again; a re-sent state of a step not answered yet (a
+// robot's state has not come) gets nothing: the sim would step on the
+// previous command and leave the robots a step apart.
 void FormationNode::onState(int d, const aurora_msgs::DroneState::ConstPtr& msg) {
   if (msg->stale) return;  // the estimator's source stopped: the state ages
   if (lockstep_ && answered_ < 0 && !listenersReady()) {
     ROS_INFO_THROTTLE(5.0, "formation_controller: lockstep waits for the listeners of cmd_vel and formation");
     return;  // the sims re-send their states
   }
-  const bool fresh = core_->push(d, sampleFromMsg(*msg));
+  const bool fresh = crew_->push(d, sampleFromMsg(*msg));
   last_state_[d] = ros::Time::now();
   if (!lockstep_) return;
   if (!fresh) {
     if (static_cast<long>(msg->step) == answered_) {
-      cmd_pubs_[d].publish(aurora_sim::twistMsgFromModelCommand(last_sent_[d]));
+      cmd_pubs_[d].publish(aurora_sim::twistMsgOf(crew_->toDriver(d, last_sent_[d])));
     }
     return;
   }
-  const long k = core_->commonStep();
+  const long k = crew_->commonStep();
   if (k >= 0) answer(k, msg->header.stamp);
 }
 
-// Realtime: every Ts on the newest states, once every drone sent one.
+// Realtime: every Ts on the newest states, once every robot sent one.
 void FormationNode::onTimer(const ros::TimerEvent&) {
   if (sequence_) return flightCycle(ros::Time::now());
-  for (int d = 0; d < kDrones; ++d) {
-    if (!core_->ready(d)) return;
+  for (int d = 0; d < crew_->robots(); ++d) {
+    if (!crew_->ready(d)) return;
   }
   answer(cycles_++, ros::Time::now());
 }
 
 void FormationNode::answer(long k, const ros::Time& stamp) {
-  const Core::Tick t = core_->tick(k);
+  const CrewTick t = crew_->tick(k);
   send(t);
   answered_ = k;
   publish(t, stamp);
 }
 
-void FormationNode::send(const Core::Tick& t) {
+void FormationNode::send(const CrewTick& t) {
   if (t.not_finite >= 0) {
     const std::string& ns = drones_[t.not_finite];
     mode_ = "hover (" + ns + ": non-finite command)";
     if (!told_not_finite_) {
       ROS_ERROR("formation_controller: tick %ld: %s's law gave a non-finite command (the formation layer is singular "
-                "where the drones are level or together, docs/formation.md): every drone hovers (zero commands) "
+                "where the drones are level or together, docs/formation.md): every robot hovers (zero commands) "
                 "while it lasts; this is said once", t.k, ns.c_str());
       told_not_finite_ = true;
     }
   } else if (!sequence_) {
     mode_ = "fly";
   }
-  for (int d = 0; d < kDrones; ++d) {
+  for (int d = 0; d < crew_->robots(); ++d) {
     for (int i = 0; i < 4; ++i) last_sent_[d][i] = t.out[d].U[i];
-    cmd_pubs_[d].publish(aurora_sim::twistMsgFromModelCommand(t.out[d].U));
+    cmd_pubs_[d].publish(aurora_sim::twistMsgOf(crew_->toDriver(d, t.out[d].U)));
   }
 }
 
-void FormationNode::publish(const Core::Tick& t, const ros::Time& stamp) {
+void FormationNode::publish(const CrewTick& t, const ros::Time& stamp) {
   aurora_msgs::Formation m;
   m.header.stamp = stamp;
   m.header.frame_id = "world";
   m.step = static_cast<uint64_t>(t.k);
-  m.sample_time = core_->run().drone[0].plant.Ts;
-  m.ticks = static_cast<uint64_t>(formationTicks(core_->run().reference.duration, m.sample_time));
+  m.shape = crew_->shape();
+  m.sample_time = crew_->sampleTime();
+  m.ticks = static_cast<uint64_t>(crew_->ticks());
   m.layer_ran = t.layer_ran;
   m.drones = drones_;
   m.mode = mode_;
-  const FormationLayer<double, LineFormation<double>>& layer = core_->layer();
-  for (int i = 0; i < 6; ++i) m.Q[i] = layer.Q()[i], m.Qd[i] = layer.Qd()[i], m.Qtil[i] = layer.Qtil()[i];
-  for (int d = 0; d < kDrones; ++d) {
+  const int n = crew_->variables(), robots = crew_->robots();
+  for (int i = 0; i < n; ++i) m.variables.push_back(crew_->variableName(i));
+  m.Q.assign(crew_->Q(), crew_->Q() + n);
+  m.Qd.assign(crew_->Qd(), crew_->Qd() + n);
+  m.Qtil.assign(crew_->Qtil(), crew_->Qtil() + n);
+  m.desired_position.resize(n);
+  crew_->positionsOf(m.Qd.data(), m.desired_position.data());
+  bool all_ready = true;
+  for (int d = 0; d < robots; ++d) {
+    m.vehicles.push_back(crew_->robot(d).vehicle);
+    all_ready = all_ready && crew_->ready(d);
     for (int i = 0; i < 3; ++i) {
       m.reference_position.push_back(t.ref[d].pos[i]);
       m.reference_velocity.push_back(t.ref[d].vel[i]);
     }
     for (int i = 0; i < 4; ++i) m.command.push_back(t.out[d].U[i]);
   }
+  m.position_error = m.shape_error = std::numeric_limits<double>::quiet_NaN();
+  std::vector<double> X(3 * robots);
+  if (all_ready) {
+    crew_->newestPositions(X.data());
+    m.Q_newest.resize(n);
+    crew_->variablesOf(X.data(), m.Q_newest.data());
+    crew_->errors(X.data(), m.desired_position.data(), m.position_error, m.shape_error);
+  }
   formation_pub_.publish(m);
-  if (t.k % kMarkerDecimation == 0 && markers_pub_.getNumSubscribers() > 0) {
-    for (int d = 0; d < kDrones; ++d) {
-      if (!core_->ready(d)) return;
-    }
-    double X[LineFormation<double>::kVariables];
-    core_->newestPositions(X);
-    markers_pub_.publish(formationMarkers(X, layer, "world"));
+  if (all_ready && t.k % kMarkerDecimation == 0 && markers_pub_.getNumSubscribers() > 0) {
+    std::vector<const double*> held;
+    for (int d = 0; d < robots; ++d) held.push_back(crew_->heldPosition(d));
+    markers_pub_.publish(formationMarkers(X, m.desired_position, held, "world"));
   }
 }
 

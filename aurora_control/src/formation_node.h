@@ -1,13 +1,14 @@
 // The formation node (docs/formation.md, "In the ROS loop"): flies the
-// drones of a formation file through their driver topics. It subscribes
-// each drone's state (/NS/state), runs FormationController's tick (each
-// drone's delay or link and law, the formation layer) and publishes each
-// drone's command (/NS/cmd_vel) and the layer's state (formation). In
-// lockstep it answers once every drone's state of the same step arrived; in
-// realtime it runs on a 30 Hz timer on the newest states. With real drones
-// (~safety/flight_sequence) it also takes them off, starts the formation
-// once both hover at their start points, watches their states and lands
-// them (formation_supervisor.h; formation_sequence.cpp).
+// robots of a formation file (the two-drone line, the UAV-UGV line, the
+// triangle: formation_crew.h) through their driver topics. It subscribes
+// each robot's state (/NS/state), runs the crew's tick (each robot's delay
+// or link and law, the formation layer) and publishes each robot's command
+// (/NS/cmd_vel, its driver's form) and the layer's state (formation). In
+// lockstep it answers once every robot's state of the same step arrived; in
+// realtime it runs on a timer of the robots' step on the newest states.
+// With real drones (~safety/flight_sequence) it also takes them off, starts
+// the formation once both hover at their start points, watches their states
+// and lands them (formation_supervisor.h; formation_sequence.cpp).
 #pragma once
 
 #include <aurora_msgs/DroneState.h>
@@ -18,7 +19,7 @@
 #include <string>
 #include <vector>
 
-#include "aurora_control/formation/formation_controller.h"
+#include "aurora_control/formation/formation_crew.h"
 #include "aurora_control/formation/formation_supervisor.h"
 #include "aurora_control/params/limits.h"
 #include "driver_command_channel.h"
@@ -31,32 +32,32 @@ class FormationNode {
   FormationNode(ros::NodeHandle nh, ros::NodeHandle private_nh);
 
  private:
-  using Core = FormationController<kDelayHistory>;
-  static constexpr int kDrones = Core::kDrones;
+  static constexpr int kDrones = 2;  // the flight sequence's (real drones: the two-drone line)
 
-  FormationRun<double, LineFormation<double>> loadRun(LawType& law);
+  void loadCrew();
+  void refuseOtherSims() const;
   void connect();
   void onState(int d, const aurora_msgs::DroneState::ConstPtr& msg);
   void onTimer(const ros::TimerEvent&);
   bool listenersReady() const;
   void answer(long k, const ros::Time& stamp);
-  void publish(const Core::Tick& t, const ros::Time& stamp);
-  void send(const Core::Tick& t);
+  void publish(const CrewTick& t, const ros::Time& stamp);
+  void send(const CrewTick& t);
   // The flight sequence (formation_sequence.cpp).
   void configureSequence();
   void flightCycle(const ros::Time& now);
   FormationSupervisor<kDrones>::Decision superviseDrones(const ros::Time& now);
   void serviceDriverCommands(const FormationSupervisor<kDrones>::Decision& c, const ros::Time& now);
-  Core::Tick holdOrHover(const FormationSupervisor<kDrones>::Decision& c);
+  CrewTick holdOrHover(const FormationSupervisor<kDrones>::Decision& c);
 
   ros::NodeHandle nh_, pnh_;
   std::vector<std::string> drones_;  // namespaces, the formation file's order
   bool lockstep_ = false;
   int cmd_subscribers_ = 1, formation_subscribers_ = 0;  // lockstep: listeners before the first step
-  std::unique_ptr<Core> core_;
+  std::unique_ptr<FormationCrew> crew_;
   long answered_ = -1;   // lockstep: the newest step answered
   long cycles_ = 0;      // realtime: timer cycles since the first states
-  double last_sent_[kDrones][4] = {};
+  double last_sent_[kMaxCrew][4] = {};
   std::vector<ros::Subscriber> state_subs_;
   std::vector<ros::Publisher> cmd_pubs_;
   ros::Publisher formation_pub_, markers_pub_;
@@ -68,7 +69,7 @@ class FormationNode {
   SafetyConfig safety_;
   FormationSupervisor<kDrones> supervisor_;
   TakeoffLand takeoff_land_[kDrones];
-  ros::Time last_state_[kDrones];  // when each drone's newest fresh state arrived
+  ros::Time last_state_[kMaxCrew];  // when each robot's newest fresh state arrived
   long formation_k_ = 0;           // the formation's next tick (its time stops while the drones hover)
   std::string mode_ = "fly";
   bool told_not_finite_ = false;  // a non-finite command was reported (once)

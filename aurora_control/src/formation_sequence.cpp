@@ -16,6 +16,11 @@ void FormationNode::configureSequence() {
   safety_ = loadSafetyConfig(pnh_);
   sequence_ = safety_.flight_sequence;
   if (!sequence_) return;
+  if (crew_->shape() != "line") {
+    throw aurora_common::ConfigError("parameter '" + aurora_common::fullKey(pnh_, "safety/flight_sequence") +
+                                  "' = true (real robots) flies the two-drone line only for now: a " + crew_->shape() +
+                                  " formation flies simulated robots (formation.launch driver:=sim)");
+  }
   if (lockstep_) {
     throw aurora_common::ConfigError("parameter '" + aurora_common::fullKey(pnh_, "safety/flight_sequence") +
                                   "' = true needs '" + aurora_common::fullKey(pnh_, "mode") +
@@ -25,7 +30,7 @@ void FormationNode::configureSequence() {
   double starts[kDrones][3];
   for (int d = 0; d < kDrones; ++d) {
     names[d] = drones_[d];
-    for (int i = 0; i < 3; ++i) starts[d][i] = core_->run().drone[d].start[i];
+    for (int i = 0; i < 3; ++i) starts[d][i] = crew_->robot(d).start[i];
   }
   supervisor_.configure(safety_, names, starts);
   mode_ = "wait for state";
@@ -46,12 +51,12 @@ void FormationNode::flightCycle(const ros::Time& now) {
   }
   serviceDriverCommands(c, now);
   if (c.started) {  // tick 0 from where the drones hover now
-    double X0[LineFormation<double>::kVariables];
-    core_->newestPositions(X0);
-    core_->startFrom(X0);
+    double X0[3 * kDrones];
+    crew_->newestPositions(X0);
+    crew_->startFrom(X0);
     formation_k_ = 0;
   }
-  const Core::Tick t = c.formation ? core_->tick(formation_k_++) : holdOrHover(c);
+  const CrewTick t = c.formation ? crew_->tick(formation_k_++) : holdOrHover(c);
   send(t);
   publish(t, now);
 }
@@ -63,39 +68,39 @@ FormationSupervisor<FormationNode::kDrones>::Decision FormationNode::superviseDr
   const double* X[kDrones];
   long step[kDrones];
   for (int d = 0; d < kDrones; ++d) {
-    const bool have = core_->ready(d);
+    const bool have = crew_->ready(d);
     age[d] = have ? (now - last_state_[d]).toSec() : std::numeric_limits<double>::infinity();
-    X[d] = have ? core_->newest(d).X : kNoState;
-    step[d] = have ? core_->newest(d).step : 0;
+    X[d] = have ? crew_->newest(d).X : kNoState;
+    step[d] = have ? crew_->newest(d).step : 0;
   }
-  const double Ts = core_->run().drone[0].plant.Ts;
+  const double Ts = crew_->sampleTime();
   // Ticks 0 .. n - 1 fly (as the offline runner's); tick n lands them.
-  const double duration = double(formationTicks(core_->run().reference.duration, Ts) - 1) * Ts;
+  const double duration = double(crew_->ticks() - 1) * Ts;
   return supervisor_.update(now.toSec(), age, X, step, taskTime(double(formation_k_), Ts), duration);
 }
 
 void FormationNode::serviceDriverCommands(const FormationSupervisor<kDrones>::Decision& c, const ros::Time& now) {
   for (int d = 0; d < kDrones; ++d) {
-    const bool have = core_->ready(d);
-    takeoff_land_[d].apply(c.drone[d], now.toSec(), have ? core_->newest(d).X[aurora_sim::kZ] : 0.0);
+    const bool have = crew_->ready(d);
+    takeoff_land_[d].apply(c.drone[d], now.toSec(), have ? crew_->newest(d).X[aurora_sim::kZ] : 0.0);
     const bool fresh = have && (now - last_state_[d]).toSec() <= safety_.hover_after;
-    takeoff_land_[d].service(now.toSec(), fresh ? core_->newest(d).X : nullptr);
+    takeoff_land_[d].service(now.toSec(), fresh ? crew_->newest(d).X : nullptr);
   }
 }
 
 // Outside the formation: a drone holds its start point (its law) or hovers
 // (a zero command; drivers expect a steady stream, with or without a state).
-FormationNode::Core::Tick FormationNode::holdOrHover(const FormationSupervisor<kDrones>::Decision& c) {
-  Core::Tick t;
+CrewTick FormationNode::holdOrHover(const FormationSupervisor<kDrones>::Decision& c) {
+  CrewTick t;
   t.k = formation_k_;
   for (int d = 0; d < kDrones; ++d) {
     const FlightDecision& f = c.drone[d];
-    if (!core_->ready(d)) continue;  // zero command, reference at the origin
+    if (!crew_->ready(d)) continue;  // zero command, reference at the origin
     if (f.run_law && f.hold) {
-      t.out[d] = core_->hold(d, f.hold_point);
+      t.out[d] = crew_->hold(d, f.hold_point);
       t.ref[d] = DelayedController<kDelayHistory>::restingAt(f.hold_point);
     } else {
-      t.out[d] = core_->hover(d);
+      t.out[d] = crew_->hover(d);
     }
   }
   return t;

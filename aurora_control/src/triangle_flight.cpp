@@ -32,13 +32,22 @@ std::vector<std::string> triangleColumns(bool kinematic) {
   return c;
 }
 
+// Q of the robots' positions at period n (as the two-drone line's rows; the
+// layer's own Q is of what the robots' links delivered).
+void positionVariables(const TrianglePeriod& p, double X[9], double Q[9]) {
+  for (int i = 0; i < 9; ++i) X[i] = p.position(i / 3, i % 3);
+  Triangle::variables(X, Q);
+}
+
 std::vector<double> triangleRow(double t, bool kinematic, const TrianglePeriod& p) {
   std::vector<double> v{double(p.n), t};
   for (int d = 0; d < 3; ++d) {
     v.insert(v.end(), p.X[d], p.X[d] + (kinematic ? 3 : LawVehicle::kStates));
     if (!kinematic) v.insert(v.end(), p.U[d], p.U[d] + LawVehicle::kInputs);
   }
-  v.insert(v.end(), p.layer.Q(), p.layer.Q() + 9);
+  double X[9], Q[9];
+  positionVariables(p, X, Q);
+  v.insert(v.end(), Q, Q + 9);
   v.insert(v.end(), p.layer.Qd(), p.layer.Qd() + 9);
   return v;
 }
@@ -49,13 +58,13 @@ struct TriangleErrors {
   double sq[7] = {}, closest = 1e300;
   long n = 0;
   void add(double t, const TrianglePeriod& p) {
-    double X[9];
-    for (int i = 0; i < 9; ++i) X[i] = p.position(i / 3, i % 3);
+    double X[9], Q[9], e[9];
+    positionVariables(p, X, Q);
     for (int a = 0; a < 3; ++a) {
       for (int b = a + 1; b < 3; ++b) closest = std::fmin(closest, triangle_detail::distance(X + 3 * a, X + 3 * b));
     }
     if (t < 20.0) return;
-    const double* e = p.layer.Qtil();
+    Triangle::error(X, p.layer.Qd(), Q, e);
     sq[0] += e[0] * e[0] + e[1] * e[1] + e[2] * e[2];
     for (int i = 3; i < 9; ++i) sq[i - 2] += e[i] * e[i];
     ++n;

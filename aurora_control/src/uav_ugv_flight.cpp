@@ -31,15 +31,25 @@ std::vector<std::string> uavUgvColumns() {
 
 using Tick = FormationObservation<double, UavUgvShape, UavUgvRobots::Data>;
 
+// Q of the robots' positions at tick k's start (X_k, as the two-drone
+// line's rows; the layer's own Q is of what the robots' links delivered).
+void positionVariables(const Tick& o, double Q[6]) {
+  double X[6];
+  dronePositions<UavUgvShape, UavUgvRobots::Vehicle>(o.X_before, X);
+  UavUgvShape::variables(X, Q);
+}
+
 // Tick k's row: the robots' states at its start, the commands they
-// applied, the layer's Q and Qd.
+// applied, Q of their positions and the layer's Qd.
 std::vector<double> uavUgvRow(double t, const Tick& o) {
   std::vector<double> v{double(o.k), t};
   v.insert(v.end(), o.X_before[0], o.X_before[0] + aurora_sim::Pioneer3dx::kStates);
   v.insert(v.end(), o.steps[0].U, o.steps[0].U + aurora_sim::Pioneer3dx::kInputs);
   v.insert(v.end(), o.X_before[1], o.X_before[1] + LawVehicle::kStates);
   v.insert(v.end(), o.steps[1].U, o.steps[1].U + LawVehicle::kInputs);
-  v.insert(v.end(), o.layer.Q(), o.layer.Q() + 6);
+  double Q[6];
+  positionVariables(o, Q);
+  v.insert(v.end(), Q, Q + 6);
   v.insert(v.end(), o.layer.Qd(), o.layer.Qd() + 6);
   return v;
 }
@@ -55,7 +65,9 @@ struct LineErrors {
     for (int i = 0; i < 3; ++i) d[i] = drone[i] - pioneer[i], de[i] = o.layer.position(1)[i] - drone[i];
     closest = std::fmin(closest, std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]));
     if (t < 20.0) return;
-    const double* e = o.layer.Qtil();
+    double Q[6], e[6];
+    positionVariables(o, Q);
+    UavUgvShape::error(nullptr, o.layer.Qd(), Q, e);
     sq[0] += e[0] * e[0] + e[1] * e[1], sq[1] += e[3] * e[3], sq[2] += e[4] * e[4], sq[3] += e[5] * e[5];
     sq[4] += de[0] * de[0] + de[1] * de[1] + de[2] * de[2];
     ++n;

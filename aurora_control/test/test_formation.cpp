@@ -266,13 +266,13 @@ TEST(FormationFile, MistakesAreRefusedNamingTheKey) {
     EXPECT_NE(why.find(text), std::string::npos) << to << " -> " << why;
   };
   says("shape: line", "shape: hexagon", "'formation.shape' = 'hexagon' is unknown: accepted line");
-  // AuRoRA's shapes have readers of their own; this one (the node's) says where they fly.
+  // AuRoRA's shapes have readers of their own; this one says so.
   for (const char* name : {"triangle_ardrones", "line_pioneer_ardrone"}) {
     try {
       readFormationFile(config + "/formations/" + name + ".yaml", config);
       ADD_FAILURE() << name << " read as a two-drone line";
     } catch (const aurora_common::ConfigError& e) {
-      EXPECT_NE(std::string(e.what()).find("flies offline only for now (flight --formation"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("is not the two-drone line this reader reads"), std::string::npos) << e.what();
     }
   }
   says("law: position_priority", "law: P", "'formation.law' = 'P' is unknown: accepted inverse_kinematics, position_priority");
@@ -362,7 +362,7 @@ TEST(FormationController, IsTheRunnersTickOverDelaysAndLinks) {
     offline.push_back(t);
   };
   runFormation<aurora_control::ArdroneLaw<LawType::kUnderactuated>, double, Line, 64>(run, 900, observe);
-  FormationController<64> core(run, LawType::kUnderactuated);
+  FormationController<64> core(run, flyingLaw(LawType::kUnderactuated));
   long mismatches = 0, hovers = 0;
   for (long k = 0; k < 900; ++k) {
     for (int d = 0; d < 2; ++d) {
@@ -420,7 +420,7 @@ TEST(FormationChecks, ADroneFlyingNaNFailsEveryCheck) {
 TEST(FormationController, ANonFiniteCommandMakesEveryDroneHover) {
   FormationRun<double, Line> run = labScenario(FormationLaw::kPositionPriority);
   run.drone[1].start[2] = run.drone[0].start[2];  // level: the layer commands NaN
-  FormationController<64> core(run, LawType::kUnderactuated);
+  FormationController<64> core(run, flyingLaw(LawType::kUnderactuated));
   for (int d = 0; d < 2; ++d) {
     StateSample s;
     s.step = 0;
@@ -434,7 +434,7 @@ TEST(FormationController, ANonFiniteCommandMakesEveryDroneHover) {
     for (int i = 0; i < 4; ++i) EXPECT_EQ(t.out[d].U[i], 0.0) << "drone " << d + 1 << " does not hover";
   }
   // The shipped start (drone 2 0.25 m above) flies finite commands.
-  FormationController<64> fine(labScenario(FormationLaw::kPositionPriority), LawType::kUnderactuated);
+  FormationController<64> fine(labScenario(FormationLaw::kPositionPriority), flyingLaw(LawType::kUnderactuated));
   for (int d = 0; d < 2; ++d) {
     StateSample s;
     s.step = 0;

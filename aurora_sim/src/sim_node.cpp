@@ -107,29 +107,16 @@ double xmlNumber(XmlRpc::XmlRpcValue& v, const std::string& key) {
 
 }  // namespace
 
-// Where the drone starts in the air: ~start [x, y, z] [m], or the start of
-// drone ~formation_drone (0-based) of the formation file loaded under
-// ~formation (formation.launch: the file's drones[i].start); else (0, 0, 0.75).
+// Where the robot starts: ~start [x, y, z] [m], else (0, 0, 0.75); its body
+// there, or (~start_at_state_point, formation.launch) the point its state
+// gives (a Pioneer's control point).
 template <class Vehicle>
 void SimNode<Vehicle>::readStart() {
   const char* start = kSimParameterTable[kSimRowStart].name;
-  const aurora_common::ParameterSpec& robot = kSimParameterTable[kSimRowFormationDrone];
+  start_at_state_point_ = flagParam(pnh_, kSimParameterTable[kSimRowStartAtStatePoint]);
   XmlRpc::XmlRpcValue list;
-  std::string key = fullKey(pnh_, start);
-  if (pnh_.hasParam(robot.name)) {
-    const int i = static_cast<int>(wholeParam(pnh_, robot));
-    XmlRpc::XmlRpcValue drones;
-    key = fullKey(pnh_, "formation/formation/drones");
-    if (!pnh_.getParam("formation/formation/drones", drones) || drones.getType() != XmlRpc::XmlRpcValue::TypeArray ||
-        i < 0 || i >= drones.size() || !drones[i].hasMember("start")) {
-      throw ConfigError("parameter '" + fullKey(pnh_, robot.name) + "' = " + std::to_string(i) +
-                        ": no such drone with a start in '" + key + "' (formation.launch loads the formation file there)");
-    }
-    list = drones[i]["start"];
-    key += "[" + std::to_string(i) + "].start";
-  } else if (!pnh_.getParam(start, list)) {
-    return;
-  }
+  const std::string key = fullKey(pnh_, start);
+  if (!pnh_.getParam(start, list)) return;
   if (list.getType() != XmlRpc::XmlRpcValue::TypeArray || list.size() != 3) {
     throw ConfigError("parameter '" + key + "' is invalid: accepted [x, y, z] in m");
   }
@@ -146,6 +133,11 @@ void SimNode<Vehicle>::resetModel() {
   // the ground below it when landed (sim_profile.h).
   const double at[3] = {start_[0], start_[1], flight_ == Flight::kLanded ? 0.0 : start_[2]};
   Profile::place(params_, model_, at);
+  // A formation's start is where the state lies (formation_runner.h,
+  // startFormation: AuRoRA's rSetPose on a Pioneer's control point).
+  if (start_at_state_point_) {
+    for (int i = 0; i < 3; ++i) model_.X[kX + i] = at[i];
+  }
   step_ = 0;
   have_command_ = false;
   for (double& u : command_) u = 0.0;

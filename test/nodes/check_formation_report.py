@@ -1,8 +1,9 @@
 #!/usr/bin/python3
-"""report on a bag of formation.launch (lockstep, delays 3 and 9) gives the
-formation's errors exactly as `flight --formation` computes them from its
-own run (its --csv: Q and Qd per tick), each drone's tracking, the smallest
-distance, the figures and the video of both drones."""
+"""report on a bag of formation.launch (lockstep, each robot its delay) gives
+the formation's errors exactly as `flight --formation` computes them from
+its own run (its --csv: Q and Qd per tick), each robot's tracking, the
+smallest distance, the figures and the video of the robots; for the
+two-drone line and the UAV-UGV line (~formation_file, ~robots)."""
 import csv
 import json
 import math
@@ -22,9 +23,10 @@ sys.path.insert(0, os.path.dirname(os.path.realpath(__file__)))
 from bag_helpers import record_until  # noqa: E402
 
 
-def flight_errors(formation_file, delays, first, last, ts):
-    """RMS after 10 s of rho, alpha, beta, the horizontal position and the
-    height over ticks first..last, and the smallest distance, from flight's CSV."""
+def flight_errors(formation_file, delays, first, last, ts, names):
+    """RMS after 10 s of the shape's variables (rho, alpha, beta), the
+    horizontal position and the height over ticks first..last, and the
+    smallest distance, from flight's CSV."""
     with tempfile.TemporaryDirectory() as tmp:
         path = os.path.join(tmp, "f.csv")
         subprocess.run(["rosrun", "aurora_control", "flight", "--formation", formation_file, "--delay"] +
@@ -35,7 +37,7 @@ def flight_errors(formation_file, delays, first, last, ts):
         closest = min(closest, float(r["Q_rho"]))
         if int(r["step"]) * ts < 10.0:
             continue
-        e = [float(r["Qd_" + v]) - float(r["Q_" + v]) for v in ("xF", "yF", "zF", "rho", "alpha", "beta")]
+        e = [float(r["Qd_" + v]) - float(r["Q_" + v]) for v in names]
         for i, term in enumerate((e[3] ** 2, e[4] ** 2, e[5] ** 2, e[0] ** 2 + e[1] ** 2, e[2] ** 2)):
             sums[i] += term
         n += 1
@@ -73,17 +75,20 @@ class FormationReportTest(unittest.TestCase):
         last = min(m["last_tick"], 2699)  # flight runs ticks 0 .. 2699
         self.assertEqual(m["first_tick"], 0)
         self.assertGreaterEqual(m["last_tick"], 900)
-        ts = rospy.get_param("/ardrone1/vehicle/sample_time")
+        robots = rospy.get_param("~robots")
+        ts = rospy.get_param("/%s/vehicle/sample_time" % robots[0])
         delays = [rospy.get_param("~delay_1"), rospy.get_param("~delay_2")]
-        rms, closest, rows = flight_errors(rospy.get_param("~formation_file"), delays, 0, last, ts)
+        names = m["variables"]
+        self.assertEqual(names, rospy.get_param("~variables"))
+        rms, closest, rows = flight_errors(rospy.get_param("~formation_file"), delays, 0, last, ts, names)
         self.assertEqual(rows, m["ticks"], "the report's ticks are not flight's")
         got = m["rms_after_settle"]
         for name, want in zip(("rho_m", "alpha_rad", "beta_rad", "position_xy_m", "height_m"), rms):
             self.assertAlmostEqual(got[name], want, delta=1e-12 + 1e-9 * abs(want), msg=name)
         self.assertAlmostEqual(m["smallest_distance_m"], closest, delta=1e-12)
-        for d in ("ardrone1", "ardrone2"):
+        for d in robots:
             self.assertGreater(m["drones"][d]["rms_tracking_error_m"], 0.0)
-            self.assertLess(m["drones"][d]["max_tracking_error_m"], 1.0)
+            self.assertLess(m["drones"][d]["max_tracking_error_m"], rospy.get_param("~max_tracking_error", 1.0))
         for f in ("formation_shape.png", "formation_position.png", "formation_errors.png", "formation_top_view.png",
                   "formation_flight.mp4"):
             self.assertGreater(os.path.getsize(os.path.join(out, f)), 10000, f)
@@ -99,12 +104,19 @@ class FormationReportTest(unittest.TestCase):
         g = aurora.simulate_formation(rospy.get_param("~formation_file"), delays=tuple(delays))
         k = frame.step.to_numpy()
         self.assertTrue(np.array_equal(k, np.arange(len(k))))
-        for j, v in enumerate(("xF", "yF", "zF", "rho", "alpha", "beta")):
-            self.assertTrue(np.allclose(frame["Q_" + v], g.Q[k, j], rtol=0, atol=1e-12), v)  # asin of the same positions
-            self.assertTrue(np.array_equal(frame["Qd_" + v].to_numpy(), g.Qd[k, j]), v)
-        for d in range(2):
+        if hasattr(g, "Q"):  # the two-drone line's FormationFlight
+            Q, Qd = (lambda j, v: g.Q[k, j]), (lambda j, v: g.Qd[k, j])  # noqa: E731
+            position = lambda d, j, a: g.states[k, d, j]  # noqa: E731
+        else:  # a ShapedFormationFlight: flight --formation's columns
+            Q, Qd = (lambda j, v: g.column("Q_" + v)[k]), (lambda j, v: g.column("Qd_" + v)[k])  # noqa: E731
+            robot = lambda d, a: next(c for c in g.columns if c in ("r%d_%s" % (d + 1, a), "d%d_%s" % (d + 1, a)))  # noqa: E731
+            position = lambda d, j, a: g.column(robot(d, a))[k]  # noqa: E731
+        for j, v in enumerate(m["variables"]):
+            self.assertTrue(np.allclose(frame["Q_" + v], Q(j, v), rtol=0, atol=1e-12), v)  # asin of the same positions
+            self.assertTrue(np.array_equal(frame["Qd_" + v].to_numpy(), Qd(j, v)), v)
+        for d in range(len(rospy.get_param("~robots"))):
             for j, a in enumerate("xyz"):
-                self.assertTrue(np.array_equal(frame["d%d_%s" % (d + 1, a)].to_numpy(), g.states[k, d, j]))
+                self.assertTrue(np.array_equal(frame["d%d_%s" % (d + 1, a)].to_numpy(), position(d, j, a)))
         self.assertEqual(metrics["rms_after_settle"], m["rms_after_settle"])
         with self.assertRaises(ValueError) as e:  # no drone's control topic: not a single-drone flight
             aurora.read_bag(bag)

@@ -318,10 +318,10 @@ class FormationAndLinkArgumentsTest(unittest.TestCase):
             self.assertEqual(open(zero).read(), open(csv).read())
         rc, out = flight("--formation", "line_pioneer_ardrone", "--delay", "0", "10")
         self.assertIn("delays 0 and 10 ticks", out)
-        self.assertIn("RMS after 20 s: xf, yf 0.0069 m, rho 0.0143 m, alpha 0.0079 rad, beta 0.0124 rad, "
+        self.assertIn("RMS after 20 s: xf, yf 0.0069 m, rho 0.0185 m, alpha 0.0172 rad, beta 0.0164 rad, "
                       "drone position 0.0405 m", out)
         rc, out = flight("--formation", "line_pioneer_ardrone", "--delay", "10", "0")
-        self.assertIn("RMS after 20 s: xf, yf 0.0118 m, rho 0.0029 m", out)
+        self.assertIn("RMS after 20 s: xf, yf 0.0277 m, rho 0.0131 m", out)
         rc, out = flight("--formation", "line_pioneer_ardrone_kinematic")
         self.assertEqual(rc, 0, out)
         self.assertIn("RMS after 20 s: xf, yf 0.0093 m, rho 0.0093 m", out)
@@ -378,10 +378,10 @@ class FormationAndLinkArgumentsTest(unittest.TestCase):
         # Each robot its own feedback delay (kinematic: layer periods; drones: their steps).
         rc, out = flight("--formation", "triangle_kinematic", "--delay", "3", "0", "0")
         self.assertIn("delays 3, 0, 0 periods", out)
-        self.assertIn("RMS after 20 s: position 0.0013 m, p 0.0016 m, q 0.0023 m, beta 0.0011", out)
+        self.assertIn("RMS after 20 s: position 0.0093 m, p 0.0130 m, q 0.0172 m, beta 0.0056", out)
         rc, out = flight("--formation", "triangle_ardrones", "--delay", "6", "6", "6")
         self.assertIn("delays 6, 6, 6 steps", out)
-        self.assertIn("RMS after 20 s: position 0.0743 m, p 0.0595 m, q 0.0388 m, beta 0.0179", out)
+        self.assertIn("RMS after 20 s: position 0.0741 m, p 0.0598 m, q 0.0404 m, beta 0.0179", out)
         self.refused(["--formation", "triangle_ardrones", "--delay", "1", "2"],
                      "--delay: give one delay per robot (3 for the triangle), or none: got 2")
         # Each drone over its own link (robots.links: one link file per drone).

@@ -22,7 +22,7 @@ enum SimParameterRow : int {
   kSimRowTakeoffAltitude,
   kSimRowStartFlying,
   kSimRowStart,
-  kSimRowFormationDrone,
+  kSimRowStartAtStatePoint,
   kSimRowFrameId,
   kSimRowChildFrameId,
   kSimRowPathDecimation,
@@ -55,9 +55,9 @@ constexpr aurora_common::ParameterSpec kSimParameterTable[kSimParameterRows] = {
      false, nullptr},
     {"start", sim_rows::ParamKind::kPoint, sim_rows::kNoValue, sim_rows::kNoValue, sim_rows::kNoValue, "m",
      "the start point [x, y, z] (world frame)", nullptr, nullptr, false, "[0, 0, 0.75]"},
-    {"formation_drone", sim_rows::ParamKind::kWhole, sim_rows::kNoValue, 0, sim_rows::kNoValue, "",
-     "formation.launch: this sim is robot i (0-based) of the formation file loaded under ~formation, and starts "
-     "at its start (instead of ~start)", nullptr, nullptr, false, nullptr},
+    {"start_at_state_point", sim_rows::ParamKind::kBool, 0, 0, 1, "",
+     "~start is the point the state gives (a Pioneer's control point, a ahead of its centre), as a formation "
+     "file's starts are (formation.launch); false: the body's centre", nullptr, nullptr, false, nullptr},
     {"frame_id", sim_rows::ParamKind::kText, sim_rows::kNoValue, sim_rows::kNoValue, sim_rows::kNoValue, "",
      "the world frame of odom, path and tf", nullptr, nullptr, false, "world"},
     {"child_frame_id", sim_rows::ParamKind::kText, sim_rows::kNoValue, sim_rows::kNoValue, sim_rows::kNoValue, "",

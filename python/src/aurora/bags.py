@@ -14,8 +14,6 @@ import os
 
 from aurora import formation_report, report
 
-_Q = formation_report.VARIABLES
-
 
 class BagFlight:
     """One drone of a bag: states (one row per state step: step, t [s from
@@ -92,9 +90,10 @@ def read_bag(path, namespaces=None):
 
 
 def read_formation_bag(path):
-    """One row per formation tick with both drones' states: step, t, Q_*,
-    Qd_* (formation variables, the layer's held desired) and each drone's
-    position d{i}_x, d{i}_y, d{i}_z; and the report's formation metrics."""
+    """One row per formation tick with every robot's state: step, t, Q_*,
+    Qd_* (the shape's formation variables, the layer's held desired) and
+    each robot's position d{i}_x, d{i}_y, d{i}_z; and the report's
+    formation metrics."""
     import pandas as pd
     bag = _open(path)
     try:
@@ -102,17 +101,17 @@ def read_formation_bag(path):
             raise ValueError("bag '%s' holds no %s: record formation.launch with record:=true"
                              % (path, formation_report.FORMATION_TOPIC))
         drones, ticks, states = formation_report.read_formation(bag, report.ReportError)
-        ts = ticks[min(ticks)].sample_time
+        ts, names = ticks[min(ticks)].sample_time, formation_report.variable_names(ticks[min(ticks)])
         s = formation_report.series_of(drones, ticks, states, ts)
     except report.ReportError as e:
         raise ValueError(str(e)) from None
     finally:
         bag.close()
     rows = {"step": s["k"], "t": s["t"]}
-    for j, name in enumerate(_Q):
+    for j, name in enumerate(names):
         rows["Q_" + name] = [q[j] for q in s["Q"]]
         rows["Qd_" + name] = [q[j] for q in s["Qd"]]
     for i, d in enumerate(drones):
         for j, axis in enumerate("xyz"):
             rows["d%d_%s" % (i + 1, axis)] = [p[j] for p in s[d]["pos"]]
-    return pd.DataFrame(rows), formation_report.metrics_of(drones, s, ts)
+    return pd.DataFrame(rows), formation_report.metrics_of(drones, s, ts, names)

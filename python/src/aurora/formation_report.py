@@ -1,11 +1,15 @@
 """The formation part of `report` (docs/formation.md, "Reporting a formation
-flight"): from a bag of formation.launch record:=true, the formation errors
-over time (rho, alpha, beta and the formation's position against the
-desired), each drone's tracking of its held reference, the smallest distance
-between the drones, the formation checks' figures, and a video of both
-drones. The errors are those `flight --formation` prints (docs/formation.md,
-"Formation errors" and "Formation checks"): at tick k the drones' true
-positions X_k against the layer's Qd held at k."""
+flight"): from a bag of formation.launch record:=true, of any shape (the
+two-drone line, the UAV-UGV line, the triangle), the formation's variables
+over time against the desired ones, the formation checks' position and
+shape errors, each robot's tracking of its held reference, the smallest
+distance between any two robots, a top view and a video of the robots. The
+errors are those `flight --formation` computes (docs/formation.md,
+"Formation errors" and "Formation checks"): at tick k the robots' positions
+X_k against the positions of the layer's Qd held at k. The formation node
+publishes the shape's own numbers with each tick (Formation: variables,
+Q_newest, desired_position, position_error, shape_error); bags recorded
+before it did are the two-drone line's, whose formulas are below."""
 import math
 import os
 import sys
@@ -15,7 +19,9 @@ FORMATION_TYPE = "aurora_msgs/Formation"
 # The formation checks' defaults (aurora_control/formation/formation_checks.h, FormationCriteria::study).
 SETTLE_TIME = 10.0
 MIN_DISTANCE = 0.6
-VARIABLES = ("xF", "yF", "zF", "rho", "alpha", "beta")
+VARIABLES = ("xF", "yF", "zF", "rho", "alpha", "beta")  # the two-drone line's (bags without `variables`)
+LENGTHS = ("xF", "yF", "zF", "xf", "yf", "zf", "rho", "p", "q")  # variables in m; the others are angles [rad]
+COLOURS = ("tab:blue", "tab:orange", "tab:purple")
 
 
 def has_formation(topics):
@@ -44,8 +50,13 @@ def read_formation(bag, report_error):
     return drones, ticks, states
 
 
+def variable_names(msg):
+    """The shape's variables, in Q's order."""
+    return tuple(getattr(msg, "variables", None) or VARIABLES)
+
+
 def variables(X):
-    """Q of positions X = (p1, p2) (eq. F1, line_formation.h)."""
+    """Q of positions X = (p1, p2) (eq. F1, line_formation.h): the two-drone line's."""
     d = [X[3 + i] - X[i] for i in range(3)]
     rho = math.sqrt(sum(v * v for v in d))
     return [X[0], X[1], X[2], rho, math.asin(d[0] / rho), math.asin(d[1] / rho)]
@@ -57,10 +68,30 @@ def positions(Q):
     return list(Q[:3]) + [Q[0] + Q[3] * sa, Q[1] + Q[3] * sb, Q[2] + Q[3] * math.sqrt(1.0 - sa * sa - sb * sb)]
 
 
+def closest_pair(X):
+    """The smallest distance between any two robots of positions X [m]."""
+    n = len(X) // 3
+    return min(math.sqrt(sum((X[3 * b + i] - X[3 * a + i]) ** 2 for i in range(3)))
+               for a in range(n) for b in range(a + 1, n))
+
+
+def errors_of(m, X):
+    """Q of the positions X, the desired positions and the checks' position
+    and shape errors at tick m: the node's (the shape's own formulas), or,
+    in a bag recorded before it published them, the two-drone line's."""
+    if len(getattr(m, "Q_newest", ())) > 0:
+        return list(m.Q_newest), list(m.desired_position), m.position_error, m.shape_error
+    Q, Xd = variables(X), positions(list(m.Qd))
+    e_position = math.sqrt(sum((m.Qd[i] - Q[i]) ** 2 for i in range(3)))
+    e_shape = math.sqrt(sum(((X[3 + i] - X[i]) - (Xd[3 + i] - Xd[i])) ** 2 for i in range(3)))
+    return Q, Xd, e_position, e_shape
+
+
 def series_of(drones, ticks, states, ts):
-    """Per tick k present for both drones: t, Q, Qd, the errors, each
-    drone's position, reference and tracking error, the distance."""
-    s = {k: [] for k in ("k", "t", "Q", "Qd", "e_position", "e_shape", "distance")}
+    """Per tick k present for every robot: t, Q, Qd, the desired positions,
+    the errors, each robot's position, reference and tracking error, the
+    smallest distance between two robots."""
+    s = {k: [] for k in ("k", "t", "Q", "Qd", "Xd", "e_position", "e_shape", "distance")}
     for d in drones:
         s[d] = {"pos": [], "ref": [], "track": []}
     count = getattr(ticks[min(ticks)], "ticks", 0)  # 0 in bags recorded before the field: every tick
@@ -74,14 +105,15 @@ def series_of(drones, ticks, states, ts):
             p = states[d][k].position
             X += [p.x, p.y, p.z]
         m = ticks[k]
-        Q, Qd, Xd = variables(X), list(m.Qd), positions(list(m.Qd))
+        Q, Xd, e_position, e_shape = errors_of(m, X)
         s["k"].append(k)
         s["t"].append(k * ts)
         s["Q"].append(Q)
-        s["Qd"].append(Qd)
-        s["e_position"].append(math.sqrt(sum((Qd[i] - Q[i]) ** 2 for i in range(3))))
-        s["e_shape"].append(math.sqrt(sum(((X[3 + i] - X[i]) - (Xd[3 + i] - Xd[i])) ** 2 for i in range(3))))
-        s["distance"].append(Q[3])
+        s["Qd"].append(list(m.Qd))
+        s["Xd"].append(Xd)
+        s["e_position"].append(e_position)
+        s["e_shape"].append(e_shape)
+        s["distance"].append(closest_pair(X))
         for j, d in enumerate(drones):
             pos, ref = X[3 * j: 3 * j + 3], list(m.reference_position[3 * j: 3 * j + 3])
             s[d]["pos"].append(pos)
@@ -94,15 +126,22 @@ def rms(values):
     return math.sqrt(sum(v * v for v in values) / len(values)) if values else 0.0
 
 
-def metrics_of(drones, s, ts):
-    """The flight tool's figures: RMS after SETTLE_TIME of rho, alpha, beta,
-    the horizontal position and the height; the checks' errors; tracking."""
+def unit_of(name):
+    return "m" if name in LENGTHS else "rad"
+
+
+def metrics_of(drones, s, ts, names=VARIABLES):
+    """The flight tool's figures: RMS after SETTLE_TIME of each shape
+    variable (rho, alpha, beta for a line), the horizontal position and
+    the height; the checks' errors; the smallest distance; tracking."""
     judged = [i for i, t in enumerate(s["t"]) if t >= SETTLE_TIME]
     err = lambda j: [s["Qd"][i][j] - s["Q"][i][j] for i in judged]  # noqa: E731
     horizontal = [math.hypot(a, b) for a, b in zip(err(0), err(1))]
+    after = {"%s_%s" % (n, unit_of(n)): rms(err(j)) for j, n in enumerate(names) if j >= 3}
+    after.update({"position_xy_m": rms(horizontal), "height_m": rms(err(2))})
     m = {"ticks": len(s["t"]), "first_tick": s["k"][0] if s["k"] else None, "last_tick": s["k"][-1] if s["k"] else None,
-         "rms_after_settle": {"rho_m": rms(err(3)), "alpha_rad": rms(err(4)), "beta_rad": rms(err(5)),
-                              "position_xy_m": rms(horizontal), "height_m": rms(err(2))},
+         "variables": list(names),
+         "rms_after_settle": after,
          "settle_time_s": SETTLE_TIME,
          "max_position_error_m": max([s["e_position"][i] for i in judged], default=0.0),
          "max_shape_error_m": max([s["e_shape"][i] for i in judged], default=0.0),
@@ -116,7 +155,7 @@ def metrics_of(drones, s, ts):
     return m
 
 
-def figures(drones, s, out_dir, pdf):
+def figures(drones, s, out_dir, pdf, names=VARIABLES):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -130,14 +169,14 @@ def figures(drones, s, out_dir, pdf):
         plt.close(fig)
 
     t = s["t"]
-    units = ("m", "m", "m", "m", "deg", "deg")
-    scale = (1, 1, 1, 1, 180 / math.pi, 180 / math.pi)
-    for name, rows in (("shape", (3, 4, 5)), ("position", (0, 1, 2))):
-        fig, axes = plt.subplots(3, 1, figsize=(8, 7), sharex=True)
+    units = ["m" if unit_of(n) == "m" else "deg" for n in names]
+    scale = [1 if unit_of(n) == "m" else 180 / math.pi for n in names]
+    for name, rows in (("shape", tuple(range(3, len(names)))), ("position", (0, 1, 2))):
+        fig, axes = plt.subplots(len(rows), 1, figsize=(8, 7 if len(rows) <= 3 else 11), sharex=True)
         for ax, j in zip(axes, rows):
-            ax.plot(t, [q[j] * scale[j] for q in s["Q"]], label=VARIABLES[j])
-            ax.plot(t, [q[j] * scale[j] for q in s["Qd"]], "--", color="tab:red", label=VARIABLES[j] + " desired")
-            ax.set_ylabel("%s [%s]" % (VARIABLES[j], units[j]))
+            ax.plot(t, [q[j] * scale[j] for q in s["Q"]], label=names[j])
+            ax.plot(t, [q[j] * scale[j] for q in s["Qd"]], "--", color="tab:red", label=names[j] + " desired")
+            ax.set_ylabel("%s [%s]" % (names[j], units[j]))
             ax.grid(True, alpha=0.3)
             ax.legend(loc="best")
         axes[-1].set_xlabel("t [s]")
@@ -151,17 +190,17 @@ def figures(drones, s, out_dir, pdf):
     for d in drones:
         axes[1].plot(t, s[d]["track"], label=d)
     axes[1].set_ylabel("|reference - position| [m]")
-    axes[2].plot(t, s["distance"], color="k", label="distance between the drones")
+    axes[2].plot(t, s["distance"], color="k", label="smallest distance between two robots")
     axes[2].axhline(MIN_DISTANCE, color="tab:red", ls="--", label="min_distance %.1f m" % MIN_DISTANCE)
     axes[2].set_ylabel("distance [m]")
     for ax in axes:
         ax.grid(True, alpha=0.3)
         ax.legend(loc="best")
     axes[-1].set_xlabel("t [s]")
-    axes[0].set_title("formation errors (checks from %.0f s), each drone's tracking, the drones' distance" % SETTLE_TIME)
+    axes[0].set_title("formation errors (checks from %.0f s), each robot's tracking, the robots' distance" % SETTLE_TIME)
     save(fig, "errors")
     fig, ax = plt.subplots(figsize=(6.4, 5.6))
-    for d, c in zip(drones, ("tab:blue", "tab:orange")):
+    for d, c in zip(drones, COLOURS):
         ax.plot([p[0] for p in s[d]["pos"]], [p[1] for p in s[d]["pos"]], color=c, label=d)
     ax.plot([q[0] for q in s["Qd"]], [q[1] for q in s["Qd"]], "--", color="tab:red", label="desired formation position")
     ax.set_aspect("equal")
@@ -174,7 +213,8 @@ def figures(drones, s, out_dir, pdf):
 
 
 def video(drones, s, out_dir, fps):
-    """Both drones in 3D with their trails and the line between them."""
+    """The robots in 3D with their trails, joined as the shape joins them
+    (the triangle closed), and the desired formation."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -190,8 +230,9 @@ def video(drones, s, out_dir, fps):
     ax.set_ylim(min(p[1] for p in every) - pad, max(p[1] for p in every) + pad)
     ax.set_zlim(0, max(p[2] for p in every) + pad)
     ax.set_xlabel("x [m]"); ax.set_ylabel("y [m]"); ax.set_zlabel("z [m]")
-    trails = [ax.plot([], [], [], color=c, lw=1.2, label=d)[0] for d, c in zip(drones, ("tab:blue", "tab:orange"))]
-    line, = ax.plot([], [], [], "o-", color="tab:green", ms=6, label="formation line")
+    trails = [ax.plot([], [], [], color=c, lw=1.2, label=d)[0] for d, c in zip(drones, COLOURS)]
+    line, = ax.plot([], [], [], "o-", color="tab:green", ms=6, label="formation")
+    closed = (lambda v: v + v[:1]) if len(drones) > 2 else (lambda v: v)  # noqa: E731
     desired, = ax.plot([], [], [], "--", color="tab:red", lw=1, label="desired")
     ax.legend(loc="upper left", fontsize=7)
     label = ax.set_title("")
@@ -208,9 +249,9 @@ def video(drones, s, out_dir, fps):
             for trail, d in zip(trails, drones):
                 trail.set_data_3d(*[[p[j] for p in s[d]["pos"][: i + 1]] for j in range(3)])
             ends = [s[d]["pos"][i] for d in drones]
-            line.set_data_3d(*[[e[j] for e in ends] for j in range(3)])
-            Xd = positions(s["Qd"][i])
-            desired.set_data_3d([Xd[0], Xd[3]], [Xd[1], Xd[4]], [Xd[2], Xd[5]])
+            line.set_data_3d(*[closed([e[j] for e in ends]) for j in range(3)])
+            Xd = s["Xd"][i]
+            desired.set_data_3d(*[closed(Xd[j::3]) for j in range(3)])
             label.set_text("formation   t = %5.1f s" % ft)
             writer.grab_frame()
             frames += 1
@@ -220,18 +261,19 @@ def video(drones, s, out_dir, fps):
 
 def markdown(m, files):
     r = m["rms_after_settle"]
+    shape = ["%s %.4f %s" % (k.rsplit("_", 1)[0], v, k.rsplit("_", 1)[1]) for k, v in r.items()
+             if k not in ("position_xy_m", "height_m")]
     lines = ["## Formation", "",
              "| metric | value |", "|---|---|",
              "| ticks | %d (steps %d to %d) |" % (m["ticks"], m["first_tick"], m["last_tick"]),
-             "| RMS after %.0f s: rho / alpha / beta | %.4f m / %.4f rad / %.4f rad |" % (
-                 m["settle_time_s"], r["rho_m"], r["alpha_rad"], r["beta_rad"]),
+             "| RMS after %.0f s: %s | %s |" % (m["settle_time_s"], ", ".join(m["variables"][3:]), ", ".join(shape)),
              "| RMS after %.0f s: position (x, y) / height | %.4f m / %.4f m |" % (
                  m["settle_time_s"], r["position_xy_m"], r["height_m"]),
              "| largest position / shape error after %.0f s | %.4f m / %.4f m |" % (
                  m["settle_time_s"], m["max_position_error_m"], m["max_shape_error_m"]),
              "| IAE position / shape after %.0f s | %.4f / %.4f m s |" % (
                  m["settle_time_s"], m["iae_position_m_s"], m["iae_shape_m_s"]),
-             "| smallest distance between the drones | %.4f m at %.2f s |" % (
+             "| smallest distance between two robots | %.4f m at %.2f s |" % (
                  m["smallest_distance_m"], m["smallest_distance_at_s"])]
     for d, v in m["drones"].items():
         lines.append("| %s: RMS / max tracking of its reference | %.4f m / %.4f m |" % (
@@ -253,13 +295,15 @@ def report(bag, out_dir, pdf, with_video, fps, report_error):
     report.md lines; progress on stderr."""
     progress("reading the bag")
     drones, ticks, states = read_formation(bag, report_error)
-    ts = ticks[min(ticks)].sample_time
+    first = ticks[min(ticks)]
+    ts, names = first.sample_time, variable_names(first)
     s = series_of(drones, ticks, states, ts)
     if len(s["t"]) < 2:
-        raise report_error("bag '%s': fewer than 2 ticks with every drone's state" % bag.filename)
-    m = metrics_of(drones, s, ts)
+        raise report_error("bag '%s': fewer than 2 ticks with every robot's state" % bag.filename)
+    m = metrics_of(drones, s, ts, names)
+    m["shape"] = getattr(first, "shape", "") or "line"
     progress("drawing the figures")
-    files = figures(drones, s, out_dir, pdf)
+    files = figures(drones, s, out_dir, pdf, names)
     if with_video:
         m["video"], m["video_frames"] = video(drones, s, out_dir, fps)
         files.append(m["video"])

@@ -696,11 +696,12 @@ def main(argv):
     all_metrics = {"bag": bag_path, "drones": []}
     if formation_part:
         all_metrics["formation"] = formation_part[0]
-        r = formation_part[0]["rms_after_settle"]
-        print("report: formation: %d ticks, RMS after %.0f s rho %.4f m, alpha %.4f rad, beta %.4f rad, position %.4f m; "
-              "smallest distance %.4f m" % (formation_part[0]["ticks"], formation_report.SETTLE_TIME, r["rho_m"],
-                                            r["alpha_rad"], r["beta_rad"], r["position_xy_m"],
-                                            formation_part[0]["smallest_distance_m"]), file=sys.stderr)
+        f = formation_part[0]
+        shape = ", ".join("%s %.4f %s" % (k.rsplit("_", 1)[0], v, k.rsplit("_", 1)[1])
+                          for k, v in f["rms_after_settle"].items() if k not in ("position_xy_m", "height_m"))
+        print("report: formation (%s): %d ticks, RMS after %.0f s %s, position %.4f m; smallest distance %.4f m"
+              % (f["shape"], f["ticks"], formation_report.SETTLE_TIME, shape, f["rms_after_settle"]["position_xy_m"],
+                 f["smallest_distance_m"]), file=sys.stderr)
     for ns, d in data.items():
         m, series, cmd = analyse(ns, d)
         print("report: %s: %d steps, IAE %.6g, ITAE %.6g, IASC %.6g, max error %.3f m" %

@@ -1,12 +1,13 @@
 // The formation node's tick, ROS-free (docs/formation.md, "In the ROS
-// loop"): each drone's controller core (delayed_controller.h: its delay
-// buffer or its link, its law, as the single-drone node's) and the formation
-// layer on the states those cores deliver. Tick k is the offline runner's
-// (formation_runner.h, "One tick"): when k is a multiple of the period the
-// layer runs on the delivered positions towards Qd(k Ts), then each drone's
-// law runs towards its held reference. The node calls it with the drones'
-// states as they arrive; a test compares the drones' trajectories with the
-// offline runner's bit for bit.
+// loop"): each robot's controller core (delayed_controller.h: its delay
+// buffer or its link, its law, as the single-robot node's) and the formation
+// layer of any shape (the two-drone line, the UAV-UGV line, the triangle) on
+// the states those cores deliver. Tick k is the offline runner's
+// (formation_runner.h, "One tick"): when the schedule says a period is due
+// before robot step k the layer runs on the delivered positions towards Qd
+// of its time, then each robot's law runs towards its held reference. The
+// node calls it with the robots' states as they arrive; tests compare the
+// robots' trajectories with the offline runner's bit for bit.
 #pragma once
 
 #include "aurora_control/loop/delayed_controller.h"
@@ -16,47 +17,72 @@
 
 namespace aurora_control {
 
-template <int Capacity>
+// Robot r's controller settings from the run: its gains and the model its
+// law inverts (the AR.Drone's two laws, or one law type's).
+inline void robotSettings(const FormationDrone<double, ArdroneLawData>& robot, ControllerSettings& s) {
+  s.gains = robot.gains.pd;
+  s.underactuated = robot.gains.underactuated;
+  s.vehicle = robot.model;
+}
+template <class Law>
+void robotSettings(const FormationDrone<double, typename Law::Data>& robot, LawSettings<Law>& s) {
+  s.gains = robot.gains;
+  s.vehicle = robot.model;
+}
+
+// The AR.Drone's settings flying `law` (the two-drone line's and the
+// triangle's robots; the rest of each robot's comes from the run).
+inline ControllerSettings flyingLaw(LawType law) {
+  ControllerSettings s;
+  s.law = law;
+  return s;
+}
+
+// Settings: ControllerSettings (AR.Drones, the law chosen at run time) or
+// LawSettings<Law> (a law type: a mixed crew's EitherLaw).
+template <int Capacity, class Shape = LineFormation<double>, class Settings = ControllerSettings>
 class FormationController {
  public:
-  using Line = LineFormation<double>;
-  static constexpr int kDrones = Line::kDrones;
+  using Data = typename Settings::Data;
+  using Vehicle = typename Data::Vehicle;
+  using Run = FormationRun<double, Shape, Data>;
+  using Layer = LayerOf<double, Shape>;
+  static constexpr int kDrones = Shape::kDrones, kN = Shape::kVariables;
 
-  // What tick k gave each drone, and whether the layer ran.
+  // What tick k gave each robot, and whether the layer ran.
   struct Tick {
     long k = 0;
     bool layer_ran = false;
-    int not_finite = -1;  // the first drone whose law gave a non-finite command: every drone hovers instead
+    int not_finite = -1;  // the first robot whose law gave a non-finite command: every robot hovers instead
     Reference<double> ref[kDrones];
     ControlOutput out[kDrones];
   };
 
-  // `run`: the formation (formation_yaml.h's formationRun), its drones'
-  // delays and links; `law`: the drones' law. Commands are not clamped here
-  // (the formation script clamps nowhere; drivers and the sim clamp).
-  FormationController(const FormationRun<double, Line>& run, LawType law)
+  // `run`: the formation (its robots, their delays and links); `common`:
+  // what every robot's settings share (the AR.Drones' law). Commands are
+  // not clamped here (AuRoRA's formation scripts clamp nowhere; drivers and
+  // the sims clamp).
+  FormationController(const Run& run, const Settings& common)
       : run_(run), layer_(run.law, run.gains, run.schedule.period(run.drone[0].plant.Ts)) {
     for (int d = 0; d < kDrones; ++d) {
-      ControllerSettings& s = core_[d].settings;
-      s.law = law;
-      s.gains = run.drone[d].gains.pd;
-      s.underactuated = run.drone[d].gains.underactuated;
-      s.vehicle = run.drone[d].model;
+      Settings& s = core_[d].settings;
+      s = common;
+      robotSettings(run.drone[d], s);
       s.delay = run.drone[d].delay;
       s.link = run.drone[d].link;
       s.clamp_commands = false;
       s.Ts = run.drone[d].plant.Ts;
-      core_[d].configureLink(static_cast<uint64_t>(d));  // keyed by the drone, as runFormation
+      core_[d].configureLink(static_cast<uint64_t>(d));  // keyed by the robot, as runFormation
     }
     startPositions(run, start_);
     startLayer();
   }
 
-  // A state of drone d arrived; false for a re-sent one (lockstep). A step
-  // going back (a reset sim) starts that drone's core afresh.
+  // A state of robot d arrived; false for a re-sent one (lockstep). A step
+  // going back (a reset sim) starts that robot's core afresh.
   bool push(int d, const StateSample& s) { return core_[d].push(s); }
 
-  // The step every drone's newest state has, -1 when they differ or one has none.
+  // The step every robot's newest state has, -1 when they differ or one has none.
   long commonStep() const {
     if (core_[0].empty()) return -1;
     const long k = core_[0].newest().step;
@@ -67,56 +93,56 @@ class FormationController {
   }
   bool ready(int d) const { return !core_[d].empty(); }
   const StateSample& newest(int d) const { return core_[d].newest(); }
-  // The drones' stacked positions of their newest states (every drone ready).
-  void newestPositions(double X[Line::kVariables]) const {
+  // The robots' stacked positions of their newest states (every robot ready).
+  void newestPositions(double X[kN]) const {
     const double* newest_X[kDrones];
     for (int d = 0; d < kDrones; ++d) newest_X[d] = core_[d].newest().X;
-    dronePositions<Line>(newest_X, X);
+    dronePositions<Shape, Vehicle>(newest_X, X);
   }
 
-  // Tick k (the layer's period counts from k = 0; a k below the last one
-  // starts the layer again, as the drones' reset did).
+  // Tick k (a k below the last one starts the layer again, as the robots'
+  // reset did): formationTick's steps on the states the cores deliver.
   Tick tick(long k) {
     if (k < last_k_) startLayer();
     last_k_ = k;
     Tick t;
     t.k = k;
-    double time = 0.0, Qd[Line::kVariables];
+    double time = 0.0, Qd[kN];
     t.layer_ran = desiredBefore(run_, k, time, Qd);
     if (t.layer_ran) {
-      double seen[Line::kVariables];
+      double seen[kN];
       const double* delivered[kDrones];
       for (int d = 0; d < kDrones; ++d) delivered[d] = core_[d].delivered().X;
-      dronePositions<Line>(delivered, seen);
-      layer_.update(seen, Qd);
+      dronePositions<Shape, Vehicle>(delivered, seen);
+      layer_.update(seen, Qd, time);
     }
     for (int d = 0; d < kDrones; ++d) {
       t.ref[d] = heldReference(layer_, d);
       t.out[d] = core_[d].compute(t.ref[d]);
-      if (t.not_finite < 0 && !aurora_sim::allFinite(t.out[d].U, 4)) t.not_finite = d;
+      if (t.not_finite < 0 && !aurora_sim::allFinite(t.out[d].U, Vehicle::kInputs)) t.not_finite = d;
     }
-    // A NaN or infinite command never reaches a drone (the layer is singular
-    // where the drones are level, line_formation.h): both hover, as the
-    // flight sequence does when either must.
+    // A NaN or infinite command never reaches a robot (the line is singular
+    // where the drones are level, line_formation.h): all hover, as the
+    // flight sequence does when any must.
     if (t.not_finite >= 0) {
       for (int d = 0; d < kDrones; ++d) t.out[d] = core_[d].hover();
     }
     return t;
   }
 
-  // Real drones (formation_supervisor.h): the formation starts from where
-  // the drones are (positions, 3 per drone, m); the next tick is tick 0.
-  void startFrom(const double X0[Line::kVariables]) {
-    for (int i = 0; i < Line::kVariables; ++i) start_[i] = X0[i];
+  // Real robots (formation_supervisor.h): the formation starts from where
+  // the robots are (positions, 3 per robot, m); the next tick is tick 0.
+  void startFrom(const double X0[kN]) {
+    for (int i = 0; i < kN; ++i) start_[i] = X0[i];
     startLayer();
   }
-  // Before the formation starts: drone d's law flies to p and rests there.
+  // Before the formation starts: robot d's law flies to p and rests there.
   ControlOutput hold(int d, const double p[3]) { return core_[d].compute(p); }
   // A watchdog's hover: no law, a zero command.
   ControlOutput hover(int d) { return core_[d].hover(); }
 
-  const FormationLayer<double, Line>& layer() const { return layer_; }
-  const FormationRun<double, Line>& run() const { return run_; }
+  const Layer& layer() const { return layer_; }
+  const Run& run() const { return run_; }
 
  private:
   void startLayer() {
@@ -124,10 +150,10 @@ class FormationController {
     last_k_ = -1;
   }
 
-  FormationRun<double, Line> run_;
-  FormationLayer<double, Line> layer_;
-  DelayedController<Capacity> core_[kDrones];
-  double start_[Line::kVariables];  // the drones' positions the layer starts from
+  Run run_;
+  Layer layer_;
+  DelayedController<Capacity, Settings> core_[kDrones];
+  double start_[kN];  // the robots' positions the layer starts from
   long last_k_ = -1;
 };
 

@@ -212,17 +212,17 @@ inline std::string formationShapeOf(const std::string& path) {
   return aurora_common::yamlFileWord("formation file", path, "formation", "shape");
 }
 
-// The two-drone line's file (shape: line): what the formation node and
-// formation.launch fly. AuRoRA's triangle and UAV-UGV line have readers of
-// their own (triangle_yaml.h, uav_ugv_yaml.h) and fly offline for now.
+// The two-drone line's file (shape: line). AuRoRA's triangle and UAV-UGV
+// line have readers of their own (triangle_yaml.h, uav_ugv_yaml.h), which
+// every entry point chooses by formationShapeOf (flight, the formation
+// node's formation_crew.cpp, the sweep).
 inline FormationFile readFormationFile(const std::string& path, const std::string& config_dir) {
   using namespace formation_detail;
   const YamlReader r("formation file '" + path + "': ");
   const std::string named = formationShapeOf(path);
   if (named == "triangle" || named == "uav_ugv_line") {
-    r.fail("formation.shape", "= '" + named + "' flies offline only for now (flight --formation, "
-                              "aurora.simulate_formation, sweeps; docs/formation.md): the formation node and "
-                              "formation.launch fly shape line (config/formations/line_lemniscate.yaml)");
+    r.fail("formation.shape", "= '" + named + "' is not the two-drone line this reader reads (its own reader: "
+                              "triangle_yaml.h, uav_ugv_yaml.h)");
   }
   const YAML::Node n = formationSection(r, path, {"shape", "law", "period", "gains", "reference", "drones"});
   FormationFile f;

@@ -47,14 +47,17 @@ inline TwistCommand twistCommandFromMsg(const geometry_msgs::Twist& t) {
   return TwistCommand{t.linear.x, t.linear.y, t.linear.z, t.angular.z};
 }
 
-// Vehicle's command U as its driver's cmd_vel (Vehicle::toDriver).
-template <class Vehicle = Ardrone2>
-geometry_msgs::Twist twistMsgFromModelCommand(const double U[Vehicle::kInputs]) {
-  const TwistCommand c = Vehicle::toDriver(U);
+inline geometry_msgs::Twist twistMsgOf(const TwistCommand& c) {
   geometry_msgs::Twist t;
   t.linear.x = c.linear_x; t.linear.y = c.linear_y; t.linear.z = c.linear_z;
   t.angular.z = c.angular_z;
   return t;
+}
+
+// Vehicle's command U as its driver's cmd_vel (Vehicle::toDriver).
+template <class Vehicle = Ardrone2>
+geometry_msgs::Twist twistMsgFromModelCommand(const double U[Vehicle::kInputs]) {
+  return twistMsgOf(Vehicle::toDriver(U));
 }
 
 }  // namespace aurora_sim

@@ -1,0 +1,96 @@
+// formation_robot: what formation.launch gives robot N of a formation file
+// (docs/formation.md, "In the ROS loop"), read by the formation node's own
+// reader (formation_crew.h), so that each robot's sim flies the node's run:
+//   --print vehicle    its vehicle file as YAML, with the formation's changes
+//                      (every robot's sample_time is the formation's tick; a
+//                      Pioneer's kinematic_model), for <param type="yaml">;
+//   --print start      its start [x, y, z] in m;
+//   --print namespace  its namespace.
+#include <yaml-cpp/yaml.h>
+
+#include <boost/program_options.hpp>
+#include <cstdio>
+#include <iostream>
+#include <string>
+
+#include "aurora_control/formation/formation_crew.h"
+#include "aurora_sim/vehicle_yaml.h"
+
+namespace po = boost::program_options;
+using namespace aurora_control;
+using aurora_common::ConfigError;
+
+namespace {
+
+struct Options {
+  std::string formation, config_dir, vehicle, print;
+  int robot = 0;
+};
+
+bool parse(int argc, char** argv, Options& o) {
+  po::options_description d(
+      "usage: formation_robot FORMATION_FILE --robot N --print vehicle|start|namespace [options]\n\n"
+      "Prints what formation.launch gives robot N's sim (docs/formation.md, \"In the ROS loop\").\n\noptions");
+  d.add_options()("help,h", "this text")("formation", po::value(&o.formation)->required(), "formation YAML")
+      ("robot", po::value(&o.robot)->required(), "the robot, 1-based, in the file's order")
+      ("print", po::value(&o.print)->required(), "vehicle, start or namespace")
+      ("config-dir", po::value(&o.config_dir)->default_value(""), "the folder the file's paths are in (aurora_config)")
+      ("vehicle", po::value(&o.vehicle)->default_value(""), "the two-drone line's drones' vehicle YAML (its file names none)");
+  po::positional_options_description positional;
+  positional.add("formation", 1);
+  po::variables_map vm;
+  po::store(po::command_line_parser(argc, argv).options(d).positional(positional).run(), vm);
+  if (vm.count("help")) {
+    std::cout << d;
+    return false;
+  }
+  po::notify(vm);
+  if (o.print != "vehicle" && o.print != "start" && o.print != "namespace") {
+    throw ConfigError("--print " + o.print + " is refused: accepted vehicle, start or namespace");
+  }
+  return true;
+}
+
+// The vehicle file's YAML with the formation's values in place of its own.
+std::string vehicleYaml(const CrewRobot& r) {
+  YAML::Node v = YAML::LoadFile(r.vehicle_file);
+  for (const auto& change : r.vehicle_overrides) v[change.first] = change.second;
+  YAML::Emitter out;
+  out << v;
+  return out.c_str();
+}
+
+int run(const Options& o) {
+  CrewRequest q;
+  q.file = o.formation, q.config_dir = o.config_dir;
+  if (!o.vehicle.empty()) q.line_vehicle = aurora_sim::loadVehicleYaml(o.vehicle), q.line_vehicle_file = o.vehicle;
+  const auto crew = loadFormationCrew(q);
+  if (o.robot < 1 || o.robot > crew->robots()) {
+    throw ConfigError("--robot " + std::to_string(o.robot) + " is refused: the " + crew->shape() + " formation has robots 1 to " +
+                      std::to_string(crew->robots()));
+  }
+  const CrewRobot& r = crew->robot(o.robot - 1);
+  if (o.print == "namespace") std::printf("%s\n", r.name_space.c_str());
+  if (o.print == "start") {
+    std::printf("[%s, %s, %s]\n", roundTripText(r.start[0]).c_str(), roundTripText(r.start[1]).c_str(),
+                roundTripText(r.start[2]).c_str());
+  }
+  if (o.print == "vehicle") {
+    if (r.vehicle_file.empty()) throw ConfigError("--vehicle: the two-drone line's drones' vehicle YAML is required");
+    std::printf("%s\n", vehicleYaml(r).c_str());
+  }
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    Options o;
+    if (!parse(argc, argv, o)) return 0;
+    return run(o);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "formation_robot: %s\n", e.what());
+    return 2;
+  }
+}
