@@ -173,7 +173,8 @@ void FormationNode::send(const CrewTick& t) {
   }
   for (int d = 0; d < crew_->robots(); ++d) {
     for (int i = 0; i < 4; ++i) last_sent_[d][i] = t.out[d].U[i];
-    cmd_pubs_[d].publish(aurora_sim::twistMsgOf(crew_->toDriver(d, t.out[d].U)));
+    limitGroundCommand(d, last_sent_[d]);
+    cmd_pubs_[d].publish(aurora_sim::twistMsgOf(crew_->toDriver(d, last_sent_[d])));
   }
 }
 
@@ -203,7 +204,7 @@ void FormationNode::publish(const CrewTick& t, const ros::Time& stamp) {
       m.reference_position.push_back(t.ref[d].pos[i]);
       m.reference_velocity.push_back(t.ref[d].vel[i]);
     }
-    for (int i = 0; i < 4; ++i) m.command.push_back(t.out[d].U[i]);
+    for (int i = 0; i < 4; ++i) m.command.push_back(last_sent_[d][i]);  // as sent (send() ran first)
   }
   m.position_error = m.shape_error = std::numeric_limits<double>::quiet_NaN();
   std::vector<double> X(3 * robots);

@@ -6,9 +6,11 @@
 // (/NS/cmd_vel, its driver's form) and the layer's state (formation). In
 // lockstep it answers once every robot's state of the same step arrived; in
 // realtime it runs on a timer of the robots' step on the newest states.
-// With real drones (~safety/flight_sequence) it also takes them off, starts
-// the formation once both hover at their start points, watches their states
-// and lands them (formation_supervisor.h; formation_sequence.cpp).
+// With real robots (~safety/flight_sequence) it also takes the drones off
+// (a ground robot drives to its start point), starts the formation once
+// every robot is still at its start point, watches their states and lands
+// the drones (a ground robot stops) (formation_supervisor.h;
+// formation_sequence.cpp).
 #pragma once
 
 #include <aurora_msgs/DroneState.h>
@@ -32,7 +34,7 @@ class FormationNode {
   FormationNode(ros::NodeHandle nh, ros::NodeHandle private_nh);
 
  private:
-  static constexpr int kDrones = 2;  // the flight sequence's (real drones: the two-drone line)
+  using Supervisor = FormationSupervisor<kMaxCrew>;
 
   void loadCrew();
   void refuseOtherSims() const;
@@ -46,9 +48,11 @@ class FormationNode {
   // The flight sequence (formation_sequence.cpp).
   void configureSequence();
   void flightCycle(const ros::Time& now);
-  FormationSupervisor<kDrones>::Decision superviseDrones(const ros::Time& now);
-  void serviceDriverCommands(const FormationSupervisor<kDrones>::Decision& c, const ros::Time& now);
-  CrewTick holdOrHover(const FormationSupervisor<kDrones>::Decision& c);
+  SafetyConfig robotSafety(int d, const SafetyConfig& drones) const;
+  Supervisor::Decision superviseDrones(const ros::Time& now);
+  void serviceDriverCommands(const Supervisor::Decision& c, const ros::Time& now);
+  CrewTick holdOrHover(const Supervisor::Decision& c);
+  void limitGroundCommand(int d, double U[4]) const;
 
   ros::NodeHandle nh_, pnh_;
   std::vector<std::string> drones_;  // namespaces, the formation file's order
@@ -66,9 +70,9 @@ class FormationNode {
 
   // The flight sequence of real drones (off in simulation: mode_ stays "fly").
   bool sequence_ = false;
-  SafetyConfig safety_;
-  FormationSupervisor<kDrones> supervisor_;
-  TakeoffLand takeoff_land_[kDrones];
+  SafetyConfig safety_[kMaxCrew];  // each robot's: the drones' ~safety, a ground robot's ~ground/safety
+  Supervisor supervisor_;
+  TakeoffLand takeoff_land_[kMaxCrew];  // the drones' (a ground robot has none)
   ros::Time last_state_[kMaxCrew];  // when each robot's newest fresh state arrived
   long formation_k_ = 0;           // the formation's next tick (its time stops while the drones hover)
   std::string mode_ = "fly";

@@ -273,3 +273,48 @@ TEST(FormationSupervisor, BothLandWhenTheFormationEnds) {
   EXPECT_TRUE(c.drone[0].send_land && c.drone[1].send_land);
   EXPECT_EQ(c.mode, "land (task complete)");
 }
+
+// A Pioneer (ground robot, its own safety) beside a drone, in a crew sized
+// for three: the drone takes off while the Pioneer drives to its start
+// point; the formation starts once both are still at their starts; the
+// Pioneer is never told to take off or land; at the end its "stop (task
+// complete)" lands the drone for the same reason.
+TEST(FormationSupervisor, AGroundRobotDrivesToItsStartAndStopsWhereTheDronesLand) {
+  FormationSupervisor<3> s;
+  SafetyConfig cfg[2] = {realFlight(), realFlight()};
+  cfg[0].ground_robot = true;
+  const std::string names[2] = {"pioneer1", "ardrone2"};
+  const double start[2][3] = {{-1.0, 0.0, 0.0}, {0.0, 0.0, 0.75}};
+  s.configure(cfg, names, start, 2);
+  double X[3][12] = {}, now = 0.0;
+  X[0][0] = -1.25;  // the Pioneer stands 0.25 m behind its start
+  const double age[3] = {0.0, 0.0, 0.0};
+  long step[3] = {0, 0, 0};
+  auto cycle = [&](double task_time = 0.0) {
+    const double* const Xs[3] = {X[0], X[1], X[2]};
+    now += 1.0 / 30.0, ++step[0], ++step[1];
+    return s.update(now, age, Xs, step, task_time, 20.0);
+  };
+  auto c = cycle();
+  EXPECT_EQ(c.mode, "takeoff");
+  EXPECT_FALSE(c.drone[0].send_takeoff);
+  EXPECT_TRUE(c.drone[1].send_takeoff);
+  EXPECT_TRUE(c.drone[0].run_law && c.drone[0].hold) << "the Pioneer drives to its start point";
+  EXPECT_EQ(c.drone[0].hold_point[0], -1.0);
+  for (int i = 0; i < 3; ++i) X[1][i] = start[1][i];  // the drone hovers at its start
+  c = cycle();
+  EXPECT_EQ(c.mode, "hold (waiting for pioneer1)");
+  EXPECT_FALSE(c.formation);
+  X[0][0] = -1.0, X[0][6] = 0.2;  // at its start, still moving
+  EXPECT_EQ(cycle().mode, "hold (waiting for pioneer1)");
+  X[0][6] = 0.0;
+  c = cycle();
+  EXPECT_TRUE(c.started && c.formation);
+  c = cycle(20.1);  // past the formation's end
+  EXPECT_EQ(c.mode, "land (task complete)");
+  EXPECT_FALSE(c.drone[0].send_land) << "a ground robot stops";
+  EXPECT_FALSE(c.drone[0].run_law);
+  EXPECT_TRUE(c.drone[1].send_land);
+  X[1][2] = 0.05;
+  EXPECT_EQ(cycle(20.1).mode, "landed");
+}

@@ -11,6 +11,10 @@
 //    otherwise steer the others by a position it no longer knows);
 //  - when any drone must land, every drone lands; at the formation's end,
 //    every drone lands.
+// A ground robot (its SafetyConfig's ground_robot: a mixed crew's Pioneer)
+// neither takes off nor lands: it drives to its start point and holds it
+// (the formation starts once it is there too, and still), and stops where
+// the drones land. D robots at most; configure() says how many fly.
 #pragma once
 
 #include <limits>
@@ -35,9 +39,16 @@ class FormationSupervisor {
   // start point from the formation file [m], where it hovers after take-off
   // until every drone is at its own (the file refuses level starts).
   void configure(const SafetyConfig& cfg, const std::string (&names)[D], const double (&starts)[D][3]) {
-    cfg_ = cfg;
-    for (int d = 0; d < D; ++d) {
-      supervisor_[d].configure(cfg), names_[d] = names[d];
+    SafetyConfig cfgs[D];
+    for (int d = 0; d < D; ++d) cfgs[d] = cfg;
+    configure(cfgs, names, starts, D);
+  }
+  // n robots (at most D), each with its own safety configuration.
+  void configure(const SafetyConfig* cfgs, const std::string* names, const double (*starts)[3], int n) {
+    n_ = n;
+    for (int d = 0; d < n_; ++d) {
+      supervisor_[d].configure(cfgs[d]), names_[d] = names[d];
+      ground_[d] = cfgs[d].ground_robot;
       supervisor_[d].startAt(starts[d]);
     }
     started_ = false;
@@ -55,22 +66,29 @@ class FormationSupervisor {
     Decision c;
     // The drones take off together: none before every one has a fresh state.
     bool all_fresh = true;
-    for (int d = 0; d < D; ++d) all_fresh = all_fresh && age[d] <= cfg_.hover_after;
-    for (int d = 0; d < D; ++d) {
+    for (int d = 0; d < n_; ++d) all_fresh = all_fresh && age[d] <= freshWithin(d);
+    for (int d = 0; d < n_; ++d) {
       const bool held = !all_fresh && supervisor_[d].phase() == FlightPhase::kWaitState;
       c.drone[d] = supervisor_[d].update(now, held ? kNever : age[d], X[d], step[d], started_ ? task_time : 0.0,
                                          duration);
     }
     const int lander = firstLanding(c);
     if (lander >= 0 || landing_) return landAll(c, lander);
-    if (!started_) return beforeStart(c);
+    if (!started_) return beforeStart(c, X);
     return flying(c);
   }
 
  private:
+  double freshWithin(int d) const { return supervisor_[d].config().hover_after; }
+
+  // Ready for tick 0: flying; a ground robot also at its start point, still.
+  bool readyToStart(int d, const double* X) const {
+    return supervisor_[d].phase() == FlightPhase::kFly && (!ground_[d] || supervisor_[d].atStartPoint(X));
+  }
+
   // The first drone whose supervisor lands it now or did before, -1: none.
   int firstLanding(const Decision& c) const {
-    for (int d = 0; d < D; ++d) {
+    for (int d = 0; d < n_; ++d) {
       const FlightPhase p = supervisor_[d].phase();
       if (c.drone[d].send_land || p == FlightPhase::kLand || p == FlightPhase::kLanded) return d;
     }
@@ -82,7 +100,7 @@ class FormationSupervisor {
     if (!landing_) {
       landing_ = true;
       land_mode_ = landMode(lander, c.drone[lander].mode);
-      for (int d = 0; d < D; ++d) {
+      for (int d = 0; d < n_; ++d) {
         const FlightPhase p = supervisor_[d].phase();
         if (d != lander && p != FlightPhase::kLand && p != FlightPhase::kLanded) {
           c.drone[d] = supervisor_[d].landNow(land_mode_);
@@ -90,47 +108,57 @@ class FormationSupervisor {
       }
     }
     bool all_landed = true;
-    for (int d = 0; d < D; ++d) all_landed = all_landed && supervisor_[d].phase() == FlightPhase::kLanded;
+    for (int d = 0; d < n_; ++d) all_landed = all_landed && supervisor_[d].phase() == FlightPhase::kLanded;
     return finish(c, all_landed ? "landed" : land_mode_);
   }
 
   // "land (task complete)" as every drone's; another reason names the drone:
   // "land (ardrone2: no fresh state for 1 s)".
-  std::string landMode(int lander, const std::string& mode) const {
+  std::string landMode(int lander, const std::string& given) const {
     static const std::string kComplete = "land (task complete)", kOpen = "land (";
+    // A ground robot's "stop (why)" lands the drones for the same reason.
+    const std::string mode = given.compare(0, 6, "stop (") == 0 ? "land" + given.substr(4) : given;
     if (mode == kComplete) return mode;
     const bool why = mode.compare(0, kOpen.size(), kOpen) == 0;
     return kOpen + names_[lander] + (why ? ": " + mode.substr(kOpen.size()) : ")");
   }
 
-  // Take-off: a drone at its start point holds it until every drone is there.
-  Decision& beforeStart(Decision& c) {
+  // Take-off: a drone at its start point holds it until every drone is
+  // there; a ground robot drives to its start point and holds it.
+  Decision& beforeStart(Decision& c, const double* const (&X)[D]) {
     int at_start = 0;
-    for (int d = 0; d < D; ++d) at_start += supervisor_[d].phase() == FlightPhase::kFly;
-    if (at_start == D) {
+    for (int d = 0; d < n_; ++d) at_start += readyToStart(d, X[d]);
+    if (at_start == n_) {
       started_ = true;
       c.started = true;
       return flying(c);
     }
     std::string waiting;
-    for (int d = 0; d < D; ++d) {
-      if (supervisor_[d].phase() != FlightPhase::kFly) {
-        waiting += (waiting.empty() ? "" : ", ") + names_[d];
-        continue;
-      }
+    for (int d = 0; d < n_; ++d) {
+      if (!readyToStart(d, X[d])) waiting += (waiting.empty() ? "" : ", ") + names_[d];
+      if (supervisor_[d].phase() != FlightPhase::kFly) continue;
       FlightDecision& f = c.drone[d];
       if (!f.run_law) continue;  // its own watchdog: hover
       f.hold = true;
       for (int i = 0; i < 3; ++i) f.hold_point[i] = supervisor_[d].startPoint()[i];
     }
-    return finish(c, at_start == 0 ? c.drone[0].mode : "hold (waiting for " + waiting + ")");
+    return finish(c, at_start == 0 ? c.drone[firstInSequence()].mode : "hold (waiting for " + waiting + ")");
+  }
+
+  // The first robot still in its own sequence (waiting for a state, taking
+  // off; a ground robot drives from its first state), else robot 1.
+  int firstInSequence() const {
+    for (int d = 0; d < n_; ++d) {
+      if (supervisor_[d].phase() == FlightPhase::kWaitState || supervisor_[d].phase() == FlightPhase::kTakeoff) return d;
+    }
+    return 0;
   }
 
   // The formation flies when every drone's law may run; else all hover.
   Decision& flying(Decision& c) {
-    for (int d = 0; d < D; ++d) {
+    for (int d = 0; d < n_; ++d) {
       if (c.drone[d].run_law) continue;
-      for (int o = 0; o < D; ++o) c.drone[o].run_law = false, c.drone[o].hold = false;
+      for (int o = 0; o < n_; ++o) c.drone[o].run_law = false, c.drone[o].hold = false;
       return finish(c, "hover (" + names_[d] + ": " + c.drone[d].mode + ")");
     }
     c.formation = true;
@@ -145,8 +173,9 @@ class FormationSupervisor {
   }
 
   static constexpr double kNever = std::numeric_limits<double>::infinity();  // no state yet
-  SafetyConfig cfg_;
+  int n_ = D;
   FlightSupervisor supervisor_[D];
+  bool ground_[D] = {};
   std::string names_[D];
   bool started_ = false;
   bool landing_ = false;

@@ -63,6 +63,7 @@ class FlightSupervisor {
   }
 
   FlightPhase phase() const { return phase_; }
+  const SafetyConfig& config() const { return cfg_; }
   // Step of the state at which the task started (task time = (step - this) Ts).
   long flyStartStep() const { return fly_start_step_; }
   // Where the drone hovers after take-off [m, world frame].
@@ -73,6 +74,17 @@ class FlightSupervisor {
   void startAt(const double p[3]) {
     fixed_start_ = true;
     for (int i = 0; i < 3; ++i) fixed_start_point_[i] = p[i];
+  }
+
+  // At the start point (within takeoff_tolerance) and still (below hover_speed).
+  bool atStartPoint(const double X[aurora_sim::kStateSize]) const {
+    double e2 = 0.0, v2 = 0.0;
+    for (int i = 0; i < 3; ++i) {
+      e2 += (X[aurora_sim::kX + i] - start_point_[i]) * (X[aurora_sim::kX + i] - start_point_[i]);
+      v2 += X[aurora_sim::kVx + i] * X[aurora_sim::kVx + i];
+    }
+    return e2 <= cfg_.takeoff_tolerance * cfg_.takeoff_tolerance &&
+           v2 <= cfg_.hover_speed * cfg_.hover_speed;
   }
 
   // Land now, whatever the phase (a formation lands every drone when one
@@ -94,6 +106,8 @@ class FlightSupervisor {
         if (have_state && state_age <= cfg_.hover_after && cfg_.ground_robot) {  // it drives from here
           phase_ = FlightPhase::kFly;
           fly_start_step_ = step;
+          // A formation's ground robot drives to its start point first.
+          for (int i = 0; i < 3; ++i) start_point_[i] = fixed_start_ ? fixed_start_point_[i] : X[aurora_sim::kX + i];
           d.run_law = true;
           return finish(d, "fly");
         }
@@ -160,16 +174,6 @@ class FlightSupervisor {
     char buf[32];
     std::snprintf(buf, sizeof buf, "%g s", s);
     return buf;
-  }
-
-  bool atStartPoint(const double X[aurora_sim::kStateSize]) const {
-    double e2 = 0.0, v2 = 0.0;
-    for (int i = 0; i < 3; ++i) {
-      e2 += (X[aurora_sim::kX + i] - start_point_[i]) * (X[aurora_sim::kX + i] - start_point_[i]);
-      v2 += X[aurora_sim::kVx + i] * X[aurora_sim::kVx + i];
-    }
-    return e2 <= cfg_.takeoff_tolerance * cfg_.takeoff_tolerance &&
-           v2 <= cfg_.hover_speed * cfg_.hover_speed;
   }
 
   bool outsideBox(const double X[aurora_sim::kStateSize]) const {

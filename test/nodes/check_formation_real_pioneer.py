@@ -1,0 +1,87 @@
+#!/usr/bin/python3
+"""formation.launch with real robots of a UAV-UGV line (formation_real_pioneer.test):
+against a fake RosAria (pioneer1) and a fake AR.Drone driver (ardrone2), the
+drone takes off and the Pioneer drives to its start point, the formation
+flies its ticks once both are still at their starts and holds its shape,
+the Pioneer's commands reach RosAria within its safety file's limits, and at
+the end the drone lands and the Pioneer stops. The Pioneer is never told to
+take off or land: nothing publishes those topics in its namespace."""
+import math
+import threading
+import unittest
+
+import rosgraph
+import rospy
+import rostest
+from aurora_msgs.msg import DroneState, Formation
+from std_msgs.msg import String
+
+# Measured here (both cores busy too): shape error at most 0.066 m, position error 0.022 m after 10 s
+# (the sim's: 0.06 m, 0.02 m).
+SHAPE_ERROR, POSITION_ERROR = 0.3, 0.3
+MAX_SPEED, MAX_TURN_RATE = 0.5, 1.0  # config/safety/real_ground.yaml
+
+
+class FormationRealPioneerTest(unittest.TestCase):
+    def test_a_pioneer_and_a_drone_fly_the_line_formation(self):
+        ticks, truth, received, cmd = [], {"pioneer1": [], "ardrone2": []}, {}, []
+        landed = threading.Event()
+
+        def on_formation(m):
+            ticks.append(m)
+            if m.mode == "landed":
+                landed.set()
+        subs = [rospy.Subscriber("/formation/formation", Formation, on_formation, queue_size=1000),
+                rospy.Subscriber("/pioneer1/RosAria/cmd_vel", rospy.AnyMsg, lambda m: cmd.append(m), queue_size=1000)]
+        for ns in truth:
+            subs.append(rospy.Subscriber("/%s/fake_driver/true_state" % ns, DroneState,
+                                         lambda m, ns=ns: truth[ns].append((m.position.x, m.position.y, m.position.z)),
+                                         queue_size=1000))
+            subs.append(rospy.Subscriber("/%s/fake_driver/received" % ns, String,
+                                         lambda m, ns=ns: received.__setitem__(ns, m.data)))
+        self.assertTrue(landed.wait(130.0), "the flight did not end with 'landed': last mode %r"
+                        % (ticks[-1].mode if ticks else None))
+        modes = [m.mode for m in ticks]
+        self.assertIn("takeoff", modes)
+        self.assertTrue(any(m.startswith("hold (waiting for") for m in modes), sorted(set(modes)))
+        self.assertIn("land (task complete)", modes)
+        flown = [m for m in ticks if m.mode == "fly"]
+        self.assertEqual(flown[0].step, 0)
+        self.assertEqual(flown[-1].step, flown[-1].ticks - 1, "the formation did not fly its ticks 0 .. n - 1")
+        self.assertEqual(list(flown[0].drones), ["pioneer1", "ardrone2"])
+        self.assertEqual(list(flown[0].vehicles), ["pioneer3dx", "ardrone2"])
+        # The shape holds once settled (the formation checks' errors, from 10 s on).
+        settled = [m for m in flown if m.step * m.sample_time >= 10.0]
+        print("formation.launch, a Pioneer with a drone: %d ticks flown; after 10 s shape error max %.3f m, position "
+              "error max %.3f m; Pioneer |u| max %.3f m/s, |omega| max %.3f rad/s"
+              % (len(flown), max(m.shape_error for m in settled), max(m.position_error for m in settled),
+                 max(abs(m.command[0]) for m in flown), max(abs(m.command[1]) for m in flown)))
+        self.assertLess(max(m.shape_error for m in settled), SHAPE_ERROR)
+        self.assertLess(max(m.position_error for m in settled), POSITION_ERROR)
+        # The Pioneer drove (it leads the figure-eight) within its limits, through RosAria.
+        u = [m.command[0] for m in flown]
+        w = [m.command[1] for m in flown]
+        self.assertGreater(max(abs(v) for v in u), 0.02)
+        self.assertLessEqual(max(abs(v) for v in u), MAX_SPEED)
+        self.assertLessEqual(max(abs(v) for v in w), MAX_TURN_RATE)
+        self.assertGreater(len(cmd), len(flown))
+        p = truth["pioneer1"]
+        self.assertGreater(math.hypot(p[-1][0] - p[0][0], p[-1][1] - p[0][1]), 0.5)
+        self.assertEqual(max(z for _, _, z in p), 0.0)
+        # The drone took off and landed; nothing asks the Pioneer to.
+        self.assertNotIn("takeoff=0", received["ardrone2"])
+        self.assertNotIn("land=0", received["ardrone2"])
+        publishers = dict(rosgraph.Master("/check").getSystemState()[0])
+        for topic in ("/pioneer1/takeoff", "/pioneer1/land", "/pioneer1/RosAria/takeoff"):
+            self.assertFalse(publishers.get(topic), topic)
+        self.assertTrue(publishers.get("/ardrone2/ardrone/takeoff"), "the drone's take-off topic has no publisher")
+        # At the end the Pioneer stands: zero commands once the formation ended.
+        after = [m for m in ticks if m.mode in ("land (task complete)", "landed")]
+        self.assertTrue(after and all(m.command[0] == 0.0 and m.command[1] == 0.0 for m in after[1:]))
+        for s in subs:
+            s.unregister()
+
+
+if __name__ == "__main__":
+    rospy.init_node("check_formation_real_pioneer")
+    rostest.rosrun("aurora_tests", "formation_real_pioneer", FormationRealPioneerTest)
