@@ -90,20 +90,22 @@ class CudaEvent {
   cudaEvent_t event_ = nullptr;
 };
 
-// A single-robot sweep's kernel, law `Law` on its vehicle.
-// Its arguments stay within the 4 KB kernel arguments older CUDA versions
-// (before 12.1) allow.
-template <class Law, typename T, int Capacity, bool Linked>
+// A single-robot sweep's kernel, law `Law` on its vehicle (with the state
+// predictor when `Predicted`: docs/predictor.md). Its arguments stay within
+// the 4 KB kernel arguments older CUDA versions (before 12.1) allow.
+template <class Law, typename T, int Capacity, bool Linked, bool Predicted = false>
 __global__ void sweepKernel(SimSetup<typename Law::Vehicle, T> setup, GridView grid, long first, long n,
                             SimResult* out) {
   static_assert(sizeof(setup) + sizeof(grid) + 3 * sizeof(long) <= 4096, "a kernel's arguments within 4 KB");
-  sweepThread<Law, T, Capacity, Linked>(setup, grid, first, n, out, blockIdx.x, blockDim.x, threadIdx.x);
+  sweepThread<Law, T, Capacity, Linked, Predicted>(setup, grid, first, n, out, blockIdx.x, blockDim.x, threadIdx.x);
 }
 
-// A formation sweep's kernel: one formation per thread; its setup (the
-// formation file's run, about 2 kB) is read from device memory.
-template <class Law, typename T, int Capacity, bool Linked>
-__global__ void formationKernel(const FormationSetup<T>* setup, GridView grid, long first, long n, SimResult* out) {
+// A formation sweep's kernel, of any shape (the two-drone line, the UAV-UGV
+// line, the triangle): one formation per thread; its setup (the formation
+// file's run, a few kB) is read from device memory.
+template <class Law, template <typename> class Shape, typename T, int Capacity, bool Linked>
+__global__ void formationKernel(const FormationSetup<T, Shape, typename Law::Data>* setup, GridView grid, long first,
+                                long n, SimResult* out) {
   formationThread<Law, T, Capacity, Linked>(*setup, grid, first, n, out, blockIdx.x, blockDim.x, threadIdx.x);
 }
 
@@ -140,30 +142,48 @@ void withKernelShape(const SweepSpec& spec, F&& f) {
 // robot's by value; a formation's, about 2 kB, uploaded to device memory,
 // held until the object goes after the launch's synchronisation), `launch`
 // starts it.
-template <class Law, typename T, int Capacity, bool Linked>
+template <class Law, typename T, int Capacity, bool Linked, bool Predicted = false>
 struct SweepStart {
-  static auto kernel() { return sweepKernel<Law, T, Capacity, Linked>; }
+  static auto kernel() { return sweepKernel<Law, T, Capacity, Linked, Predicted>; }
   explicit SweepStart(const SweepSpec& spec) : setup_(makeSetup<typename Law::Vehicle, T>(spec)) {}
   void launch(unsigned blocks, int block, const GridView& grid, long first, long n, SimResult* out) const {
-    sweepKernel<Law, T, Capacity, Linked><<<blocks, block>>>(setup_, grid, first, n, out);
+    sweepKernel<Law, T, Capacity, Linked, Predicted><<<blocks, block>>>(setup_, grid, first, n, out);
   }
 
  private:
   SimSetup<typename Law::Vehicle, T> setup_;
 };
-template <class Law, typename T, int Capacity, bool Linked>
+template <class Law, template <typename> class Shape, typename T, int Capacity, bool Linked>
 struct FormationStart {
-  static auto kernel() { return formationKernel<Law, T, Capacity, Linked>; }
+  using Setup = FormationSetup<T, Shape, typename Law::Data>;
+  static auto kernel() { return formationKernel<Law, Shape, T, Capacity, Linked>; }
   explicit FormationStart(const SweepSpec& spec) : setup_(1) {
-    const FormationSetup<T> host = makeFormationSetup<T>(spec, spec.formation_run);
-    setup_.upload(&host);
+    spec.withFormation([&](const auto& run, auto) { upload(spec, run); });
   }
   void launch(unsigned blocks, int block, const GridView& grid, long first, long n, SimResult* out) const {
-    formationKernel<Law, T, Capacity, Linked><<<blocks, block>>>(setup_.get(), grid, first, n, out);
+    formationKernel<Law, Shape, T, Capacity, Linked><<<blocks, block>>>(setup_.get(), grid, first, n, out);
   }
 
  private:
-  DeviceArray<FormationSetup<T>> setup_;
+  // The spec's run of this shape (withFormation's run of another shape is
+  // never this kernel's: withKernel chose it by the same call).
+  void upload(const SweepSpec& spec, const ShapeRun<double, Shape, typename Law::Data>& run) {
+    const Setup host = makeFormationSetup<T>(spec, run);
+    setup_.upload(&host);
+  }
+  template <class OtherRun>
+  void upload(const SweepSpec&, const OtherRun&) {}
+
+  DeviceArray<Setup> setup_;
+};
+
+// The template of a formation run's shape (ShapeRun<T, Shape, Data>'s Shape).
+template <class Run>
+struct ShapeTemplateOf;
+template <typename T, template <typename> class Shape, class Data>
+struct ShapeTemplateOf<aurora_control::FormationRun<T, Shape<T>, Data>> {
+  template <class Law, typename U, int Capacity, bool Linked>
+  using Start = FormationStart<Law, Shape, U, Capacity, Linked>;
 };
 
 // A kernel's start as a type, without preparing it.
@@ -180,7 +200,12 @@ void withKernel(const SweepSpec& spec, F&& f) {
     constexpr int kCapacity = decltype(capacity)::value;
     constexpr bool kLinked = decltype(linked)::value;
     if (spec.formation()) {
-      aurora_control::withLaw(spec.law, [&](auto law) { f(StartOf<FormationStart<decltype(law), T, kCapacity, kLinked>>()); });
+      spec.withFormation([&](const auto& run, auto law) {
+        using Shape = ShapeTemplateOf<typename std::decay<decltype(run)>::type>;
+        f(StartOf<typename Shape::template Start<decltype(law), T, kCapacity, kLinked>>());
+      });
+    } else if (spec.predicting()) {  // the AR.Drone's laws (cudaDelayProblem refuses the others)
+      aurora_control::withLaw(spec.law, [&](auto law) { f(StartOf<SweepStart<decltype(law), T, kCapacity, kLinked, true>>()); });
     } else {
       withSweepLaw(spec, [&](auto law) { f(StartOf<SweepStart<decltype(law), T, kCapacity, kLinked>>()); });
     }
@@ -332,13 +357,11 @@ CudaDevice probeCudaDevice() {
 long cudaMaxDelay() { return aurora_control::kMediumHistory - 1; }
 
 std::string cudaDelayProblem(const SweepSpec& spec) {
-  if (spec.predicting()) {
-    return "the state predictor (sweep.predictor) has no CUDA kernel yet (its per-thread entry runs on the host "
-           "only): use --backend cpu";
-  }
-  if (spec.formation() && spec.shape != SweepShape::kLine) {
-    return std::string("the ") + sweepShapeName(spec.shape) + " has no CUDA kernel yet (its per-thread entry runs on "
-           "the host only): use --backend cpu";
+  bool other_vehicle = false;  // withSweepLaw's choice: another vehicle's law, not the AR.Drone's
+  forEachOtherLaw([&](auto law) { other_vehicle = other_vehicle || spec.controller == law.name(); });
+  if (spec.predicting() && other_vehicle) {
+    return "the state predictor (sweep.predictor) has CUDA kernels for the AR.Drone's laws only, not " +
+           spec.controller + "'s: use --backend cpu";
   }
   if (spec.historyNeeded() <= cudaMaxDelay()) return "";
   return "the cuda backend holds delays (with a link's jitter) up to " + std::to_string(cudaMaxDelay()) +

@@ -105,16 +105,27 @@ class LaneHistory {
     count_ = count_ + I(Int(1));
   }
 
-  // Each lane's state of its step `step` (0-based), gathered from the ring.
-  void read(const I& step, B X[kStates]) const {
+  // Each lane's state of its step `step` (0-based), gathered from the ring;
+  // latched per lane as StateHistory::read does (a step read before is the
+  // state read then: after a long loss burst its slot holds a newer state).
+  void read(const I& step, B X[kStates]) {
     const I base = ((start_ + step) & I(Int(Capacity - 1))) * I(Int(W * L)) + lane_;
+    const auto fresh = xsimd::bool_cast(step != held_step_ | count_ != held_count_);
     aurora_control::LawSample<B, Law> sample;
-    for (int j = 0; j < W; ++j) sample.v[j] = gatherLanes<B>(ring_.data(), base + I(Int(j * L)));
+    for (int j = 0; j < W; ++j) {
+      held_[j] = xsimd::select(fresh, gatherLanes<B>(ring_.data(), base + I(Int(j * L))), held_[j]);
+      sample.v[j] = held_[j];
+    }
+    held_step_ = step;
+    held_count_ = count_ + I(Int(1));  // a restarted lane (count 0 again) never reuses its old run's state
     sample.toState(X);
   }
 
  private:
   std::vector<T, xsimd::aligned_allocator<T, 64>> ring_;
+  B held_[W];                         // each lane's state read last (read's latch) ...
+  I held_step_ = I(Int(-1));          // ... its step
+  I held_count_ = I(Int(-1));         // ... and the lane's count at the next read (a new run's differs)
   I count_ = I(Int(0));
   I start_ = I(Int(0));
   I lane_;

@@ -141,6 +141,31 @@ TEST(SweepLink, TheKernelsPerThreadEntryOverALinkIsTheScalarLoop) {
   EXPECT_EQ(differing(scalar, out), 0);
 }
 
+// A loss burst longer than the history: the controller holds the newest
+// state it received (it arrived young, long ago), whatever the ring's size.
+// The histories latch what they read (closed_loop.h StateHistory,
+// lane_history.h): before, a held step older than the ring read a newer,
+// wrapped slot: the short tier (the scalar loop's here) and the medium one
+// (the kernel's per-thread entry, forced) differed, and the SIMD lanes (one
+// ring for all lanes) wrapped elsewhere: 8 of these 16 runs feasible on
+// `cpu`, 7 on `scalar`.
+TEST(SweepLink, ALossBurstLongerThanTheHistoryDoesNotDependOnItsSize) {
+  const SweepSpec spec = loadSweepFile(writeTemp("long_burst.yaml",
+      "sweep:\n  early_stop: false\n  repeats: 4\n  parameters:\n    kp: {values: [0.3, 0.5]}\n    kd: 0.85\n"
+      "    delay: {values: [3, 20]}\n    uplink_loss: 0.3\n    uplink_burst: 80\n"), configDir());
+  ASSERT_LT(spec.historyNeeded(), aurora_control::kShortHistory) << "the sweep's loops take the short tier";
+  const std::vector<SimResult> scalar = runOn("scalar", spec);
+  expectRunsAgree(scalar, runOn("cpu", spec), 0.0);  // the lanes' flags equal, sums to rounding
+  const SweepSetup<double> setup = makeSetup<SweepVehicle, double>(spec);
+  const GridView grid = spec.view();
+  const long n = spec.size();
+  const std::vector<SimResult> medium = launchOnHost(n, 8, [&](unsigned b, unsigned block, unsigned t, SimResult* out) {
+    sweepThread<aurora_control::ArdroneLaw<aurora_control::LawType::kPdSaturated>, double, aurora_control::kMediumHistory, true>(
+        setup, grid, 0, n, out, b, block, t);
+  });
+  EXPECT_EQ(differing(scalar, medium), 0);
+}
+
 // A combination's run is the offline runner's (flight's) over the link the
 // combination names, with its draws keyed by the combination; repeat r
 // draws with the link's seed + r.

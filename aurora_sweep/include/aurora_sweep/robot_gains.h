@@ -42,9 +42,9 @@ struct RobotGains<aurora_control::ArdroneLaw<L>> {
     if (kPd) {
       giveGain(g.pd.kp, v[0]);
       giveGain(g.pd.kd, v[1]);
-      return;
+    } else {
+      for (int i = 0; i < kUnderactuatedGainCount; ++i) giveGain(aurora_control::underactuatedGain(g.underactuated, i), v[i]);
     }
-    for (int i = 0; i < kUnderactuatedGainCount; ++i) giveGain(aurora_control::underactuatedGain(g.underactuated, i), v[i]);
   }
 };
 

@@ -53,8 +53,10 @@ struct FormationReference {
   AURORA_HD static void carrousel(const T&, T* Qd, std::false_type) { notThisShape(Qd); }
   AURORA_HD static void uavUgv(const T&, T* Qd, std::false_type) { notThisShape(Qd); }
   AURORA_HD static void notThisShape(T* Qd) {
-    for (int i = 0; i < N; ++i) Qd[i] = T(std::numeric_limits<double>::quiet_NaN());
+    for (int i = 0; i < N; ++i) Qd[i] = T(kNotThisShape);
   }
+  // A constant, not quiet_NaN() (a host function) in device code.
+  static constexpr double kNotThisShape = std::numeric_limits<double>::quiet_NaN();
 };
 
 }  // namespace aurora_control

@@ -107,7 +107,7 @@ AURORA_HD inline void modelPositions(const Loops& state, T positions[Shape::kVar
 
 // The layer started with the drones at X0 (3 positions per drone, m): the
 // offline runner's at the file's starts, real drones' where they hover
-// when the formation begins (docs/formation.md, "Real drones").
+// when the formation begins (docs/formation.md, "Real robots").
 template <typename T, class Shape, class Data>
 AURORA_HD inline void startLayerAt(const FormationRun<T, Shape, Data>& run, const T X0[Shape::kVariables],
                                    LayerOf<T, Shape>& layer) {

@@ -1,5 +1,5 @@
-// Flight sequence of a formation of real drones (docs/formation.md, "Real
-// drones"), ROS-free: each drone keeps the single-drone controller's
+// Flight sequence of a formation of real robots (docs/formation.md, "Real
+// robots"), ROS-free: each drone keeps the single-drone controller's
 // FlightSupervisor (take-off, hover on a stale state, land on a long one or
 // outside the safety box), and the formation adds its rules above them:
 //  - after take-off each drone flies to its start point of the formation

@@ -241,15 +241,26 @@ AURORA_HD inline Mask loopIteration(const LoopParams<Data, T>& p, const TaskT& t
 
 // The history of one run (scalars): the last Capacity states as law `Law`
 // reads them (delay_buffer.h); read(j) gives back the state of step j.
+// The controller holds the newest state it received: a link's loss burst
+// may leave it on a step older than the ring holds (it arrived, young, long
+// ago), so read() latches what it read and reads the ring again only for
+// another step. A new arrival is at most the link's latency old
+// (LinkParams::historyNeeded, below Capacity), so the run does not depend
+// on the ring's size.
 template <class Law, typename T, int Capacity>
 class StateHistory {
  public:
   using Sample = LawSample<T, Law>;
   AURORA_HD void push(const T X[Law::Vehicle::kStates]) { ring_.push(Sample::fromState(X)); }
-  AURORA_HD void read(long step, T X[Law::Vehicle::kStates]) const { ring_.at(step).toState(X); }
+  AURORA_HD void read(long step, T X[Law::Vehicle::kStates]) {
+    if (step != held_step_) held_ = ring_.at(step), held_step_ = step;
+    held_.toState(X);
+  }
 
  private:
   DelayBuffer<Sample, Capacity> ring_;  // on the stack: Capacity x the law's width, no allocation
+  Sample held_;
+  long held_step_ = -1;  // the step of held_ (none yet)
 };
 
 // Number of loop iterations of `while t < duration: ...; t += Ts` with t
