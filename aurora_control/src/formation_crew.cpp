@@ -3,8 +3,6 @@
 // crew of a formation file as `flight --formation` builds its run.
 #include "aurora_control/formation/formation_crew.h"
 
-#include <cstdio>
-#include <functional>
 
 #include "aurora_control/formation/formation_checks.h"
 #include "aurora_control/formation/formation_flight.h"
@@ -15,12 +13,6 @@
 #include "aurora_sim/vehicle/sim_profile.h"
 
 namespace aurora_control {
-
-std::string roundTripText(double v) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.17g", v);
-  return text;
-}
 
 namespace {
 
@@ -39,10 +31,12 @@ struct RobotVehicle {
     fileChoices(p, r);
     r.vehicle = Vehicle::name();
     r.ground = !aurora_sim::SimProfile<Vehicle>::kFlies;
-    r.inputs = Vehicle::kInputs;
   }
   static aurora_sim::TwistCommand toDriver(const typename Vehicle::template Params<double>&, const double* U) {
     return Vehicle::toDriver(U);
+  }
+  static void limitSpeed(const typename Vehicle::template Params<double>&, double* U, double speed, double turn) {
+    aurora_sim::SimProfile<Vehicle>::limitSpeed(U, speed, turn);
   }
 };
 // A mixed crew's robot: the vehicle its parameters chose.
@@ -55,6 +49,10 @@ struct RobotVehicle<aurora_sim::EitherVehicle<First, Second>> {
   }
   static aurora_sim::TwistCommand toDriver(const Params& p, const double* U) {
     return p.is_second ? Second::toDriver(U) : First::toDriver(U);
+  }
+  static void limitSpeed(const Params& p, double* U, double speed, double turn) {
+    if (p.is_second) return RobotVehicle<Second>::limitSpeed(p.second, U, speed, turn);
+    RobotVehicle<First>::limitSpeed(p.first, U, speed, turn);
   }
 };
 
@@ -74,7 +72,7 @@ class CrewOf final : public FormationCrew {
       CrewRobot r;
       r.name_space = namespaces[d];
       r.vehicle_file = vehicle_files[d];
-      r.vehicle_overrides.emplace_back("sample_time", roundTripText(Ts_));
+      r.vehicle_overrides.emplace_back("sample_time", aurora_common::roundTripText(Ts_));
       RobotVehicle<Vehicle>::describe(run.drone[d].plant, r);
       r.delay = run.drone[d].delay;
       for (int i = 0; i < 3; ++i) r.start[i] = run.drone[d].start[i];
@@ -105,6 +103,9 @@ class CrewOf final : public FormationCrew {
   aurora_sim::TwistCommand toDriver(int d, const double* U) const override {
     return RobotVehicle<Vehicle>::toDriver(core_.run().drone[d].plant, U);
   }
+  void limitSpeed(int d, double* U, double max_speed, double max_turn_rate) const override {
+    RobotVehicle<Vehicle>::limitSpeed(core_.run().drone[d].plant, U, max_speed, max_turn_rate);
+  }
 
  private:
   static CrewTick crewTick(const typename Core::Tick& t) {
@@ -121,12 +122,10 @@ class CrewOf final : public FormationCrew {
 // the file's; refused naming the key when the run cannot hold it.
 template <class Setup>
 void requestedDelays(const CrewRequest& q, int robots, double Ts, long ticks, Setup&& robot) {
-  if (q.delays.size() > static_cast<size_t>(robots)) {
-    for (size_t r = robots; r < q.delays.size(); ++r) {
-      if (q.delays[r] >= 0) {
-        throw ConfigError("parameter '" + q.delay_keys[r] + "' = " + std::to_string(q.delays[r]) +
-                          " is refused: this formation has " + std::to_string(robots) + " robots (give -1)");
-      }
+  for (size_t r = robots; r < q.delays.size(); ++r) {
+    if (q.delays[r] >= 0) {
+      throw ConfigError("parameter '" + q.delay_keys[r] + "' = " + std::to_string(q.delays[r]) +
+                        " is refused: this formation has " + std::to_string(robots) + " robots (give -1)");
     }
   }
   for (int r = 0; r < robots; ++r) {
@@ -142,12 +141,16 @@ void requestedDelays(const CrewRequest& q, int robots, double Ts, long ticks, Se
   }
 }
 
-// The vehicle file robot `at` names (formation.robots[i].vehicle, or the
-// triangle's one formation.robots.vehicle), in the config folder; the
-// reader has checked it.
-std::string namedVehicleFile(const CrewRequest& q, const std::function<YAML::Node(const YAML::Node&)>& at) {
-  const YAML::Node robots = YAML::LoadFile(q.file)["formation"]["robots"];
-  return formation_detail::inConfig(at(robots).as<std::string>(), q.config_dir);
+// The vehicle file each robot's entry names (formation.robots[i].vehicle,
+// or the triangle's one formation.robots.vehicle), in the config folder;
+// the shape's reader has checked them.
+std::vector<std::string> namedVehicleFiles(const CrewRequest& q, int robots) {
+  const YAML::Node n = YAML::LoadFile(q.file)["formation"]["robots"];
+  std::vector<std::string> files;
+  for (int r = 0; r < robots; ++r) {
+    files.push_back(formation_detail::inConfig((n.IsSequence() ? n[r] : n)["vehicle"].as<std::string>(), q.config_dir));
+  }
+  return files;
 }
 
 std::unique_ptr<FormationCrew> lineCrew(const CrewRequest& q) {
@@ -173,10 +176,7 @@ std::unique_ptr<FormationCrew> uavUgvCrew(const CrewRequest& q) {
   });
   return std::unique_ptr<FormationCrew>(new CrewOf<UavUgvShape, LawSettings<UavUgvRobots>>(
       run, LawSettings<UavUgvRobots>(), "uav_ugv_line", "without integration; pioneer_dynamic and underactuated",
-      {"pioneer1", "ardrone2"},
-      {namedVehicleFile(q, [](const YAML::Node& n) { return n[0]["vehicle"]; }),
-       namedVehicleFile(q, [](const YAML::Node& n) { return n[1]["vehicle"]; })},
-      setup.ticks()));
+      {"pioneer1", "ardrone2"}, namedVehicleFiles(q, 2), setup.ticks()));
 }
 
 // The triangle's three AR.Drones (ardrone1 .. ardrone3); kinematic robots
@@ -194,7 +194,7 @@ std::unique_ptr<FormationCrew> triangleCrew(const CrewRequest& q) {
   return std::unique_ptr<FormationCrew>(new CrewOf<Triangle, ControllerSettings>(
       run, flyingLaw(LawType::kUnderactuated), "triangle",
       std::string(triangleLawName(setup.law)) + ", drones: underactuated", {"ardrone1", "ardrone2", "ardrone3"},
-      std::vector<std::string>(3, namedVehicleFile(q, [](const YAML::Node& n) { return n["vehicle"]; })), steps));
+      namedVehicleFiles(q, 3), steps));
 }
 
 }  // namespace

@@ -22,12 +22,6 @@ constexpr ParameterSpec kFormationSubscribers{
     "lockstep_subscribers/formation", ParamKind::kWhole, 0, 0, 100, "subscribers",
     "formation node, lockstep: subscribers of formation to wait for (a recorder, a test)"};
 
-std::string joined(const std::vector<std::string>& v) {
-  std::string s;
-  for (const std::string& x : v) s += (s.empty() ? "" : ", ") + x;
-  return s;
-}
-
 }  // namespace
 
 FormationNode::FormationNode(ros::NodeHandle nh, ros::NodeHandle private_nh) : nh_(nh), pnh_(private_nh) {
@@ -42,7 +36,7 @@ FormationNode::FormationNode(ros::NodeHandle nh, ros::NodeHandle private_nh) : n
   std::string delays;
   for (int d = 0; d < crew_->robots(); ++d) delays += (d ? ", " : "") + std::to_string(crew_->robot(d).delay);
   ROS_INFO("formation_controller: %s, %s formation (%s), robots %s, delays %s samples of %.4f s", mode.c_str(),
-           crew_->shape().c_str(), crew_->lawName().c_str(), joined(drones_).c_str(), delays.c_str(),
+           crew_->shape().c_str(), crew_->lawName().c_str(), joinKeys(drones_).c_str(), delays.c_str(),
            crew_->sampleTime());
 }
 
@@ -69,9 +63,9 @@ void FormationNode::loadCrew() {
   for (int d = 0; d < crew_->robots(); ++d) drones_.push_back(crew_->robot(d).name_space);
   std::vector<std::string> launched;
   if (pnh_.getParam("drones", launched) && launched != drones_) {
-    throw aurora_common::ConfigError("parameter '" + aurora_common::fullKey(pnh_, "drones") + "' = [" + joined(launched) +
+    throw aurora_common::ConfigError("parameter '" + aurora_common::fullKey(pnh_, "drones") + "' = [" + joinKeys(launched) +
                                   "]: the formation file '" + q.file + "' flies " + std::to_string(crew_->robots()) +
-                                  " robots in namespaces " + joined(drones_) + ": give those (formation.launch does)");
+                                  " robots in namespaces " + joinKeys(drones_) + ": give those (formation.launch does)");
   }
   refuseOtherSims();
 }
@@ -173,7 +167,7 @@ void FormationNode::send(const CrewTick& t) {
   }
   for (int d = 0; d < crew_->robots(); ++d) {
     for (int i = 0; i < 4; ++i) last_sent_[d][i] = t.out[d].U[i];
-    limitGroundCommand(d, last_sent_[d]);
+    if (sequence_) crew_->limitSpeed(d, last_sent_[d], safety_[d].max_speed, safety_[d].max_turn_rate);
     cmd_pubs_[d].publish(aurora_sim::twistMsgOf(crew_->toDriver(d, last_sent_[d])));
   }
 }
@@ -194,7 +188,7 @@ void FormationNode::publish(const CrewTick& t, const ros::Time& stamp) {
   m.Q.assign(crew_->Q(), crew_->Q() + n);
   m.Qd.assign(crew_->Qd(), crew_->Qd() + n);
   m.Qtil.assign(crew_->Qtil(), crew_->Qtil() + n);
-  m.desired_position.resize(n);
+  m.desired_position.resize(3 * robots);
   crew_->positionsOf(m.Qd.data(), m.desired_position.data());
   bool all_ready = true;
   for (int d = 0; d < robots; ++d) {

@@ -52,7 +52,6 @@ class FormationNode {
   Supervisor::Decision superviseDrones(const ros::Time& now);
   void serviceDriverCommands(const Supervisor::Decision& c, const ros::Time& now);
   CrewTick holdOrHover(const Supervisor::Decision& c);
-  void limitGroundCommand(int d, double U[4]) const;
 
   ros::NodeHandle nh_, pnh_;
   std::vector<std::string> drones_;  // namespaces, the formation file's order

@@ -72,8 +72,8 @@ int run(const Options& o) {
   const CrewRobot& r = crew->robot(o.robot - 1);
   if (o.print == "namespace") std::printf("%s\n", r.name_space.c_str());
   if (o.print == "start") {
-    std::printf("[%s, %s, %s]\n", roundTripText(r.start[0]).c_str(), roundTripText(r.start[1]).c_str(),
-                roundTripText(r.start[2]).c_str());
+    std::printf("[%s, %s, %s]\n", aurora_common::roundTripText(r.start[0]).c_str(),
+                aurora_common::roundTripText(r.start[1]).c_str(), aurora_common::roundTripText(r.start[2]).c_str());
   }
   if (o.print == "vehicle") {
     if (r.vehicle_file.empty()) throw ConfigError("--vehicle: the two-drone line's drones' vehicle YAML is required");

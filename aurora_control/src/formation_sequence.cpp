@@ -7,7 +7,6 @@
 #include <limits>
 
 #include "aurora_sim/ros/conversions.h"
-#include "aurora_sim/vehicle/sim_profile.h"
 #include "controller_params.h"
 #include "formation_node.h"
 
@@ -56,14 +55,6 @@ SafetyConfig FormationNode::robotSafety(int d, const SafetyConfig& drones) const
   }
   c.ground_robot = true;
   return c;
-}
-
-// A ground robot's speed limits on what is sent (its safety file's, as the
-// single-robot controller applies them).
-void FormationNode::limitGroundCommand(int d, double U[4]) const {
-  if (sequence_ && crew_->robot(d).ground) {
-    aurora_sim::SimProfile<aurora_sim::Pioneer3dx>::limitSpeed(U, safety_[d].max_speed, safety_[d].max_turn_rate);
-  }
 }
 
 void FormationNode::flightCycle(const ros::Time& now) {

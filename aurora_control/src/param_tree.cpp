@@ -22,11 +22,8 @@ YAML::Node yamlFromXmlRpc(XmlRpc::XmlRpcValue& v) {
       for (int i = 0; i < v.size(); ++i) seq.push_back(yamlFromXmlRpc(v[i]));
       return seq;
     }
-    case XmlRpc::XmlRpcValue::TypeDouble: {
-      char buf[40];
-      std::snprintf(buf, sizeof buf, "%.17g", static_cast<double>(v));
-      return YAML::Node(std::string(buf));
-    }
+    case XmlRpc::XmlRpcValue::TypeDouble:
+      return YAML::Node(aurora_common::roundTripText(static_cast<double>(v)));
     case XmlRpc::XmlRpcValue::TypeInt:
       return YAML::Node(static_cast<int>(v));
     case XmlRpc::XmlRpcValue::TypeBoolean:

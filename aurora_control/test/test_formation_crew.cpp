@@ -114,6 +114,14 @@ TEST(FormationCrew, TheUavUgvLinesTickIsTheRunners) {
   const aurora_sim::TwistCommand c = crew->toDriver(0, U);
   EXPECT_EQ(c.linear_x, 0.3);
   EXPECT_EQ(c.angular_z, -0.2);
+  // A real ground robot's safety limits bind its command; a drone has none.
+  double pioneer[4] = {0.8, -1.5, 0.0, 0.0}, drone[4] = {0.8, -1.5, 0.9, 1.0};
+  crew->limitSpeed(0, pioneer, 0.5, 1.0);
+  crew->limitSpeed(1, drone, 0.5, 1.0);
+  EXPECT_EQ(pioneer[0], 0.5);
+  EXPECT_EQ(pioneer[1], -1.0);
+  EXPECT_EQ(drone[0], 0.8);
+  EXPECT_EQ(drone[1], -1.5);
 }
 
 TEST(FormationCrew, TheTrianglesTickIsTheRunners) {

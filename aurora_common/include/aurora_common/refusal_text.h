@@ -26,6 +26,14 @@ inline std::string numberText(double v) {
   return buf;
 }
 
+// A number with the digits that read back to it (%.17g): what is passed on
+// as text (a launch's parameter, a YAML scalar) must not round.
+inline std::string roundTripText(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.17g", v);
+  return buf;
+}
+
 // The one boolean rule (a YAML file, a ROS parameter, a sweep file): an
 // unquoted true or false; anything else, a quoted "false" included (a
 // string, whatever it reads as), is refused with this text.

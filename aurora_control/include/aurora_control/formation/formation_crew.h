@@ -29,13 +29,12 @@ struct CrewTick {
 // A robot as the launch starts it: its namespace, its vehicle (the type
 // name of its vehicle file, e.g. ardrone2, pioneer3dx), that file and what
 // the formation file changes in it (every robot steps at the formation's
-// tick; a Pioneer's kinematic_model), whether it drives on the floor, its
-// inputs, and its start [m].
+// tick; a Pioneer's kinematic_model), whether it drives on the floor, and
+// its start [m].
 struct CrewRobot {
   std::string name_space, vehicle, vehicle_file;
   std::vector<std::pair<std::string, std::string>> vehicle_overrides;  // key, YAML value
   bool ground = false;
-  int inputs = 4;
   long delay = 0;  // [samples] its uplink delay in force
   double start[3] = {0, 0, 0};
 };
@@ -74,6 +73,9 @@ class FormationCrew {
   virtual void errors(const double* X, const double* Xd, double& position, double& shape) const = 0;
   // Robot d's command as its driver's cmd_vel.
   virtual aurora_sim::TwistCommand toDriver(int d, const double* U) const = 0;
+  // A real robot's speed limits on U, as its safety file gives them (its
+  // vehicle's: a ground robot's forward speed and turn rate; a drone's none).
+  virtual void limitSpeed(int d, double* U, double max_speed, double max_turn_rate) const = 0;
 
  protected:
   std::string shape_, law_name_;
@@ -98,8 +100,5 @@ struct CrewRequest {
 // file that cannot fly in the ROS loop (the triangle's kinematic robots),
 // a delay for a robot the shape has not, or a delay the run cannot hold.
 std::unique_ptr<FormationCrew> loadFormationCrew(const CrewRequest& request);
-
-// v with the digits that read back to v (%.17g): what a launch passes on.
-std::string roundTripText(double v);
 
 }  // namespace aurora_control

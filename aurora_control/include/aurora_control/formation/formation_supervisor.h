@@ -48,7 +48,6 @@ class FormationSupervisor {
     n_ = n;
     for (int d = 0; d < n_; ++d) {
       supervisor_[d].configure(cfgs[d]), names_[d] = names[d];
-      ground_[d] = cfgs[d].ground_robot;
       supervisor_[d].startAt(starts[d]);
     }
     started_ = false;
@@ -83,7 +82,8 @@ class FormationSupervisor {
 
   // Ready for tick 0: flying; a ground robot also at its start point, still.
   bool readyToStart(int d, const double* X) const {
-    return supervisor_[d].phase() == FlightPhase::kFly && (!ground_[d] || supervisor_[d].atStartPoint(X));
+    return supervisor_[d].phase() == FlightPhase::kFly &&
+           (!supervisor_[d].config().ground_robot || supervisor_[d].atStartPoint(X));
   }
 
   // The first drone whose supervisor lands it now or did before, -1: none.
@@ -175,7 +175,6 @@ class FormationSupervisor {
   static constexpr double kNever = std::numeric_limits<double>::infinity();  // no state yet
   int n_ = D;
   FlightSupervisor supervisor_[D];
-  bool ground_[D] = {};
   std::string names_[D];
   bool started_ = false;
   bool landing_ = false;
