@@ -22,7 +22,13 @@ start=$(date +%s)
 make -C "$BUILD" run_tests -j"$jobs" 2>&1 | grep -vE "^make\[|^\[ *[0-9]+%\]|Built target"
 summary=$(catkin_test_results "$BUILD/test_results" --all 2>&1)
 rc=$?
-echo "$summary" | grep -vE "^Skipping" | tail -40
+# The files with errors or failures (catkin_test_results prints counts only
+# then), and why each failed test failed, last, where a CI log's tail shows it.
+echo "$summary" | grep -E "errors|^Summary:"
+if [ "$rc" -ne 0 ]; then
+  echo "why they failed (the results are in $BUILD/test_results, the nodes' logs in $ROS_LOG_DIR):"
+  /usr/bin/python3 "$(dirname "$0")/print_test_failures.py" "$BUILD/test_results" --lines 15
+fi
 echo "test time: $(( $(date +%s) - start )) s"
 # A plain closing line for CI: N passed, N failed.
 line=$(echo "$summary" | grep -E "^Summary:" | tail -1)

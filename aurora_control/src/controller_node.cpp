@@ -341,9 +341,9 @@ void ControllerNodeOf<Settings>::onState(const aurora_msgs::DroneState::ConstPtr
   if (!msg->header.frame_id.empty()) state_frame_ = msg->header.frame_id;
   last_state_time_ = ros::Time::now();
   if (lockstep_) {
-    cycle(msg->header.stamp);
+    cycle(msg->header.stamp, 0.0);
   } else if (!timer_triggered_) {
-    cycle(ros::Time::now());
+    cycle(ros::Time::now(), 0.0);
   }
 }
 
@@ -360,9 +360,9 @@ bool ControllerNodeOf<Settings>::lockstepListenersReady() const {
 }
 
 template <class Settings>
-double ControllerNodeOf<Settings>::stateAge() const {
+double ControllerNodeOf<Settings>::stateAge(const ros::Time& now) const {
   if (core_->empty()) return std::numeric_limits<double>::infinity();
-  return lockstep_ ? 0.0 : (ros::Time::now() - last_state_time_).toSec();
+  return lockstep_ ? 0.0 : stall_.stateAge(now, last_state_time_);
 }
 
 template <class Settings>
@@ -370,8 +370,9 @@ void ControllerNodeOf<Settings>::onTimer(const ros::TimerEvent& event) {
   // The watchdogs run here when no state arrives; with trigger=timer the law
   // too. (With trigger=state a fresh state already ran the cycle: running it
   // here as well would double the command rate.)
-  const bool fresh = stateAge() <= Ts_ * 1.5;
-  if (timer_triggered_ || !fresh) cycle(event.current_real);
+  stall_.timerRan(event, Ts_);  // state_age.h: the watchdogs leave our own stalls out
+  const double age = stateAge(event.current_real);
+  if (timer_triggered_ || age > Ts_ * 1.5) cycle(event.current_real, age);
 }
 
 template <class Settings>
@@ -433,9 +434,8 @@ void ControllerNodeOf<Settings>::sendCommand(const double U[kMaxInputs]) {
 }
 
 template <class Settings>
-void ControllerNodeOf<Settings>::cycle(const ros::Time& now) {
+void ControllerNodeOf<Settings>::cycle(const ros::Time& now, double age) {
   boost::recursive_mutex::scoped_lock lock(config_mutex_);
-  const double age = stateAge();
   static const double kNoState[aurora_sim::kMaxStates] = {};
   const bool have_state = !core_->empty();
   const StateSample* newest = have_state ? &core_->newest() : nullptr;

@@ -22,6 +22,7 @@
 #include "aurora_control/params/limits.h"
 #include "aurora_control/task/task.h"
 #include "driver_command_channel.h"
+#include "state_age.h"
 
 namespace aurora_control {
 
@@ -51,7 +52,8 @@ class ControllerNodeOf {
                        dynamic_reconfigure::Reconfigure::Response& rsp);
   void advertiseLiveSettings();
   ControllerConfig liveConfig() const;  // the settings in force, as the server shows them
-  void cycle(const ros::Time& now);
+  // age: of the newest state [s] (stateAge)
+  void cycle(const ros::Time& now, double age);
   void logEvent(const std::string& event) const;
   void fillOutput(const ControlOutput& out, aurora_msgs::Control& control) const;
   // Says once when the task's time is up ("mission complete", the headline
@@ -73,7 +75,7 @@ class ControllerNodeOf {
   void refuseUnknownTopLevelKeys();
   void loadPredictor();   // ~predictor (docs/predictor.md, "Configuration")
   void applyPredictor();  // the settings' form with predictor_base_'s model, over the link's command delay
-  double stateAge() const;
+  double stateAge(const ros::Time& now) const;  // [s] infinite before the first state
   bool lockstepListenersReady() const;
 
   ros::NodeHandle nh_, pnh_;
@@ -90,6 +92,7 @@ class ControllerNodeOf {
   FlightSupervisor supervisor_;    // flight sequence and watchdogs (ROS-free)
   std::string state_frame_ = "world";
   ros::Time last_state_time_;      // ROS time the newest fresh state arrived
+  ProcessStall stall_;             // this process's last stall, which the state's age leaves out
   bool warned_stale_input_ = false;
   bool mission_reported_ = false;          // "mission complete" said for this task
   bool delay_pending_announced_ = false;   // a live delay raise waits for history

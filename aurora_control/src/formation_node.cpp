@@ -137,8 +137,9 @@ void FormationNode::onState(int d, const aurora_msgs::DroneState::ConstPtr& msg)
 }
 
 // Realtime: every Ts on the newest states, once every robot sent one.
-void FormationNode::onTimer(const ros::TimerEvent&) {
-  if (sequence_) return flightCycle(ros::Time::now());
+void FormationNode::onTimer(const ros::TimerEvent& event) {
+  stall_.timerRan(event, crew_->sampleTime());  // state_age.h
+  if (sequence_) return flightCycle(event.current_real);
   for (int d = 0; d < crew_->robots(); ++d) {
     if (!crew_->ready(d)) return;
   }

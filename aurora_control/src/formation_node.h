@@ -25,6 +25,7 @@
 #include "aurora_control/formation/formation_supervisor.h"
 #include "aurora_control/params/limits.h"
 #include "driver_command_channel.h"
+#include "state_age.h"
 
 namespace aurora_control {
 
@@ -73,6 +74,7 @@ class FormationNode {
   Supervisor supervisor_;
   TakeoffLand takeoff_land_[kMaxCrew];  // the drones' (a ground robot has none)
   ros::Time last_state_[kMaxCrew];  // when each robot's newest fresh state arrived
+  ProcessStall stall_;              // this process's last stall, which the states' ages leave out
   long formation_k_ = 0;           // the formation's next tick (its time stops while the drones hover)
   std::string mode_ = "fly";
   bool told_not_finite_ = false;  // a non-finite command was reported (once)

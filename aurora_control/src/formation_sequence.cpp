@@ -85,7 +85,7 @@ FormationNode::Supervisor::Decision FormationNode::superviseDrones(const ros::Ti
   long step[kMaxCrew] = {};
   for (int d = 0; d < crew_->robots(); ++d) {
     const bool have = crew_->ready(d);
-    age[d] = have ? (now - last_state_[d]).toSec() : std::numeric_limits<double>::infinity();
+    age[d] = have ? stall_.stateAge(now, last_state_[d]) : std::numeric_limits<double>::infinity();
     X[d] = have ? crew_->newest(d).X : kNoState;
     step[d] = have ? crew_->newest(d).step : 0;
   }
@@ -100,7 +100,7 @@ void FormationNode::serviceDriverCommands(const Supervisor::Decision& c, const r
     if (crew_->robot(d).ground) continue;  // no take-off or landing
     const bool have = crew_->ready(d);
     takeoff_land_[d].apply(c.drone[d], now.toSec(), have ? crew_->newest(d).X[aurora_sim::kZ] : 0.0);
-    const bool fresh = have && (now - last_state_[d]).toSec() <= safety_[d].hover_after;
+    const bool fresh = have && stall_.stateAge(now, last_state_[d]) <= safety_[d].hover_after;
     takeoff_land_[d].service(now.toSec(), fresh ? crew_->newest(d).X : nullptr);
   }
 }

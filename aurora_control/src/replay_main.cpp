@@ -348,17 +348,39 @@ void cycleSettings(const aurora_msgs::Control& c, const Overrides& o, long itera
   set.clamp_commands = o.clamp ? o.clamp_value : static_cast<bool>(c.clamped);
 }
 
+// The states the controller received, by step.
+struct BagStates {
+  std::map<long, StateSample> by_step;
+  std::set<long> recovered;  // steps the bag lacked, taken from Control.state_used
+};
+
+// A state the recorder dropped (a loaded machine) is in the control message
+// of the cycle that used it: Control.state_used holds it whole (its step,
+// stamp and the vehicle's states). Steps between the first and the last
+// recorded state only.
+void recoverDroppedStates(const std::vector<aurora_msgs::Control>& controls, BagStates& states) {
+  if (states.by_step.empty()) return;
+  const long first = states.by_step.begin()->first, last = states.by_step.rbegin()->first;
+  for (const aurora_msgs::Control& c : controls) {
+    const long step = static_cast<long>(c.state_used.step);
+    if (step <= first || step >= last || states.by_step.count(step)) continue;
+    states.by_step.emplace(step, sampleFromMsg(c.state_used));
+    states.recovered.insert(step);
+  }
+}
+
 // The drone's states (by step, the first of a re-sent one, none marked
-// stale) and control messages in the bag.
+// stale; those the recorder dropped from the control messages) and control
+// messages in the bag.
 void readDrone(rosbag::Bag& bag, const std::string& bag_path, const std::string& ns,
-               std::map<long, StateSample>& states, std::vector<aurora_msgs::Control>& controls) {
+               BagStates& states, std::vector<aurora_msgs::Control>& controls) {
   try {
     rosbag::View view(bag, rosbag::TopicQuery(std::vector<std::string>{ns + "/state", ns + "/control"}));
     for (const rosbag::MessageInstance& m : view) {
       if (auto s = m.instantiate<aurora_msgs::DroneState>()) {
         if (s->stale) continue;  // the node ignores states its source marked stale
         const StateSample sample = sampleFromMsg(*s);
-        states.emplace(sample.step, sample);  // keeps the first of a re-sent step
+        states.by_step.emplace(sample.step, sample);  // keeps the first of a re-sent step
       } else if (auto c = m.instantiate<aurora_msgs::Control>()) {
         controls.push_back(*c);
       }
@@ -366,6 +388,7 @@ void readDrone(rosbag::Bag& bag, const std::string& bag_path, const std::string&
   } catch (const std::exception& e) {
     fail(std::string("bag '") + bag_path + "' is damaged: " + e.what());
   }
+  recoverDroppedStates(controls, states);
 }
 
 // The vehicle the law flies and inverts (--vehicle, else its shipped file).
@@ -490,9 +513,55 @@ void followPredictor(const Arguments& args, const aurora_msgs::Control& c, Core&
   core.configurePredictor(p);
 }
 
+// Pushes the states the controller had received by cycle `c` (steps up to
+// c.step) into the core; the steps the bag lacks go to `missing`.
+template <class Core>
+void pushStatesUpTo(const aurora_msgs::Control& c, const BagStates& states, long& next_step, Core& core,
+                    std::set<long>& missing) {
+  for (; next_step <= static_cast<long>(c.step); ++next_step) {
+    auto it = states.by_step.find(next_step);
+    if (it != states.by_step.end()) {
+      core.push(it->second);
+    } else {
+      missing.insert(next_step);
+    }
+  }
+}
+
+struct ReplayCount {
+  long cycles = 0, identical = 0;
+  double max_diff = 0.0;
+  long differ() const { return cycles - identical; }
+};
+
+// What replay says at the end; the exit status.
+int replayVerdict(const Arguments& args, const std::string& ns, const ReplayCount& n, const BagStates& states,
+                  const std::set<long>& missing, const std::vector<aurora_msgs::Control>& controls,
+                  const ControlOutput& last_out) {
+  const aurora_msgs::Control& last = controls.back();
+  std::printf("replay: %s: %ld control cycles, %ld identical, %ld differ, max |dU| = %.6g%s\n", ns.c_str(),
+              n.cycles, n.identical, n.differ(), n.max_diff, configurationText(args, controls));
+  std::printf("replay: metrics recorded IAE %.10g ITAE %.10g IASC %.10g; replayed (open loop on "
+              "the recorded states) IAE %.10g ITAE %.10g IASC %.10g\n",
+              last.iae, last.itae, last.iasc, last_out.iae, last_out.itae, last_out.iasc);
+  if (!states.recovered.empty()) {
+    std::printf("replay: %zu state steps missing from the bag (the recorder dropped them, first %ld) were taken "
+                "from the control messages that used them (Control.state_used)\n",
+                states.recovered.size(), *states.recovered.begin());
+  }
+  if (!missing.empty()) {
+    std::printf("replay: %zu state steps missing from the bag and from its control messages (the recorder dropped "
+                "them, first %ld): the replayed history differs from there\n", missing.size(), *missing.begin());
+  }
+  if (args.out_path.empty() && n.differ() > 0) {
+    std::printf("replay: write the commands side by side with --out FILE.csv\n");
+  }
+  return args.expect_identical && n.differ() > 0 ? 1 : 0;
+}
+
 // Replays the recorded cycles with the law of Settings; the exit status.
 template <class Settings>
-int replayCycles(const Arguments& args, const std::string& ns, const std::map<long, StateSample>& states,
+int replayCycles(const Arguments& args, const std::string& ns, const BagStates& states,
                  const std::vector<aurora_msgs::Control>& controls) {
   const std::string& out_path = args.out_path;
   const bool expect_identical = args.expect_identical;
@@ -503,32 +572,22 @@ int replayCycles(const Arguments& args, const std::string& ns, const std::map<lo
   const long iterations = taskStepCount(recorded.task_duration, recorded.sample_time);
   const std::unique_ptr<DelayedController<kCapacity, Settings>> core = makeCore<Settings>(args, recorded, iterations);
   FILE* csv = out_path.empty() ? nullptr : openCommandsCsv(out_path);
-  long identical = 0, cycles = 0, missing = 0;
-  double max_diff = 0.0;
-  long next_step = states.begin()->first;
-  double last_iae = 0, last_itae = 0, last_iasc = 0;
+  ReplayCount n;
+  std::set<long> missing;
+  ControlOutput out{};
+  long next_step = states.by_step.begin()->first;
   for (const aurora_msgs::Control& c : controls) {
-    // The states the controller had received at this cycle: up to c.step.
-    while (next_step <= static_cast<long>(c.step)) {
-      auto it = states.find(next_step);
-      if (it != states.end()) {
-        core->push(it->second);
-      } else {
-        ++missing;
-      }
-      ++next_step;
-    }
+    pushStatesUpTo(c, states, next_step, *core, missing);
     if (core->empty()) continue;
     cycleSettings(c, o, iterations, recorded.task_duration, core->settings);
     if (c.law_ran) followPredictor(args, c, *core);
     // The law ran when the node says it did.
-    const ControlOutput out = c.law_ran ? core->compute(referenceFromMsg(c)) : core->hover();
+    out = c.law_ran ? core->compute(referenceFromMsg(c)) : core->hover();
     bool same = true;
     const double diff = commandDifference(c, out, same);
-    identical += same;
-    max_diff = std::max(max_diff, diff);
-    ++cycles;
-    last_iae = out.iae, last_itae = out.itae, last_iasc = out.iasc;
+    ++n.cycles;
+    n.identical += same;
+    n.max_diff = std::max(n.max_diff, diff);
     if (csv) {
       std::fprintf(csv, "%lu,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n",
                    static_cast<unsigned long>(c.step), c.command[0], c.command[1], c.command[2],
@@ -536,20 +595,7 @@ int replayCycles(const Arguments& args, const std::string& ns, const std::map<lo
     }
   }
   if (csv) std::fclose(csv);
-  const aurora_msgs::Control& last = controls.back();
-  std::printf("replay: %s: %ld control cycles, %ld identical, %ld differ, max |dU| = %.6g%s\n",
-              ns.c_str(), cycles, identical, cycles - identical, max_diff, configurationText(args, controls));
-  std::printf("replay: metrics recorded IAE %.10g ITAE %.10g IASC %.10g; replayed (open loop on "
-              "the recorded states) IAE %.10g ITAE %.10g IASC %.10g\n",
-              last.iae, last.itae, last.iasc, last_iae, last_itae, last_iasc);
-  if (missing > 0) {
-    std::printf("replay: %ld state steps missing from the bag (the recorder dropped them); "
-                "the replayed history differs there\n", missing);
-  }
-  if (out_path.empty() && identical != cycles) {
-    std::printf("replay: write the commands side by side with --out FILE.csv\n");
-  }
-  return expect_identical && identical != cycles ? 1 : 0;
+  return replayVerdict(args, ns, n, states, missing, controls, out);
 }
 
 // Replays the bag of `args` and compares the commands; the exit status.
@@ -557,10 +603,10 @@ int run(const Arguments& args) {
   rosbag::Bag bag;
   openBag(args.bag_path, bag);
   const std::string ns = droneNamespace(bag, args.ns);
-  std::map<long, StateSample> states;
+  BagStates states;
   std::vector<aurora_msgs::Control> controls;
   readDrone(bag, args.bag_path, ns, states, controls);
-  if (controls.empty() || states.empty()) fail("no " + ns + "/control or " + ns + "/state messages");
+  if (controls.empty() || states.by_step.empty()) fail("no " + ns + "/control or " + ns + "/state messages");
   // The law: the --controller file's, else the recorded one (its vehicle's core).
   const std::string law = args.o.law ? args.o.controller_name : controls.front().controller;
   int status = 0;

@@ -6,6 +6,7 @@
 #include <cuda_runtime.h>
 
 #include <chrono>
+#include <cstdio>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -37,6 +38,18 @@ bool isSticky(cudaError_t err) {
     default:
       return false;
   }
+}
+
+// The architectures this build has native code for ("75,80": CMake's
+// AURORA_CUDA_ARCHITECTURES less the -virtual ones). For another device the
+// driver compiles the kernels' PTX when it first loads them.
+#ifndef AURORA_CUDA_NATIVE_ARCHITECTURES
+#define AURORA_CUDA_NATIVE_ARCHITECTURES ""
+#endif
+
+bool hasNativeCode(const cudaDeviceProp& prop) {
+  const std::string archs = std::string(",") + AURORA_CUDA_NATIVE_ARCHITECTURES + ",";
+  return archs.find("," + std::to_string(10 * prop.major + prop.minor) + ",") != std::string::npos;
 }
 
 std::string errorText(cudaError_t err) {
@@ -339,6 +352,12 @@ CudaDevice probeCudaDevice() {
   // Loading a kernel shows that the driver runs this build's code on this
   // device (an old driver, or no SASS/PTX for its architecture, fails here
   // and not at the first chunk).
+  if (!hasNativeCode(prop)) {
+    std::fprintf(stderr, "cuda: this build has no native code for '%s' (compute capability %d.%d): the driver "
+                 "compiles the kernels' PTX before the first chunk (a minute or two when not in its cache, "
+                 "~/.nv/ComputeCache); build with -DAURORA_CUDA_ARCHITECTURES=%d%d to have it in the build\n",
+                 prop.name, prop.major, prop.minor, prop.major, prop.minor);
+  }
   SweepSpec probe;
   try {
     kernelAttributes(probe);

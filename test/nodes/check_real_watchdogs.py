@@ -1,5 +1,6 @@
 #!/usr/bin/python3
-"""Joystick override and mocap watchdogs through real.launch against the fake driver."""
+"""Joystick override, the watchdogs through a stall of the controller's own, and
+mocap dropouts, through real.launch against the fake driver."""
 import os
 import sys
 import threading
@@ -16,7 +17,7 @@ from std_msgs.msg import Empty, Float64
 # The shared helpers sit beside this script (catkin's devel-space relay runs
 # it with __file__ set to this path; an install puts them beside it too).
 sys.path.insert(0, os.path.dirname(os.path.realpath(__file__)))
-from flight_checks import joy_msg, wait_for  # noqa: E402
+from flight_checks import hold_up, joy_msg, node_pid, wait_for  # noqa: E402
 
 CYCLE = 1.0 / 30.0
 
@@ -158,6 +159,20 @@ class RealWatchdogsTest(unittest.TestCase):
         # Handed back once and for good: no joystick or resuming cycle after it.
         later = [m for m, _, _ in after[end:]]
         self.assertFalse([m for m in later if "resuming" in m or "joystick" in m], later[:5])
+
+        # The controller itself held up for 0.4 s, three times, while the
+        # poses keep coming: the states that came meanwhile wait behind the
+        # late timer callback, and the watchdog must not take its own stall
+        # for missing states (aurora_control/src/state_age.h).
+        controller = node_pid(rospy.resolve_name("controller"))
+        held = time.time()
+        for _ in range(3):
+            hold_up(controller, 0.4)
+            time.sleep(1.0)
+        modes = rec.modes_between(held, time.time())
+        self.assertTrue(modes, "no control messages after the controller was held up")
+        self.assertFalse([m for m in modes if "no fresh state" in m],
+                         "the watchdog took the controller's own stall for missing states: %s" % sorted(set(modes)))
 
         # Poses stop for 0.5 s: hover (zero command), then fly again. What is
         # checked is what the controller reported in force, not a wall-clock

@@ -2,8 +2,9 @@
 """A recorded flight of another vehicle than the AR.Drone (a Bebop 2, a
 Pioneer P3-DX): the bag holds its driver's odometry topic and its states
 (a Pioneer's u, omega in DroneState.extra, named by Control); replay gives
-every command again (over the flight's link file where it had one); the
-report names the vehicle and labels its own commands."""
+every command again (over the flight's link file where it had one), also
+when the recorder dropped a state; the report names the vehicle and labels
+its own commands."""
 import json
 import os
 import sys
@@ -44,6 +45,7 @@ class VehicleBagTest(unittest.TestCase):
         rospy.loginfo(log)
         self.assertEqual(rc, 0, log)
         self.assertIn(" 0 differ, max |dU| = 0 ", log)
+        self.check_a_dropped_state_is_taken_from_its_control(bag, replay, states, controls)
         out = tempfile.mkdtemp(prefix="vehicle_report_")
         rc, log = run(["rosrun", "aurora", "report", bag, "--out", out, "--no-video"])
         self.assertEqual(rc, 0, log)
@@ -54,6 +56,35 @@ class VehicleBagTest(unittest.TestCase):
         self.assertEqual(drone["command_names"], p("command_names"))
         self.assertTrue(drone["metrics_match_controller"])
         os.remove(bag)
+
+
+    def check_a_dropped_state_is_taken_from_its_control(self, bag, replay, states, controls):
+        """A state the recorder dropped (a loaded machine): replay takes it
+        from the control message that used it (Control.state_used) and gives
+        every command again; with that message dropped too it says so and
+        the commands differ from there."""
+        ns = rospy.get_namespace().rstrip("/")
+        steps = [s.step for s in states]
+        dropped = steps[len(steps) // 2]
+        users = [c.step for c in controls if c.state_used.step == dropped]
+        self.assertTrue(users, "no control message used state %d" % dropped)
+        for drop_controls, rc_expected in (((), 0), (users, 1)):
+            thinned = bag[:-len(".bag")] + "_dropped.bag"
+            with rosbag.Bag(bag) as b, rosbag.Bag(thinned, "w") as out:
+                for topic, m, t in b.read_messages():
+                    if not ((topic == ns + "/state" and m.step == dropped)
+                            or (topic == ns + "/control" and m.step in drop_controls)):
+                        out.write(topic, m, t)
+            rc, log = run(replay[:3] + [thinned] + replay[4:])
+            os.remove(thinned)
+            self.assertEqual(rc, rc_expected, log)
+            if rc_expected == 0:
+                self.assertIn(" 0 differ, max |dU| = 0 ", log)
+                self.assertIn("state steps missing from the bag (the recorder dropped them, first %d) were taken "
+                              "from the control messages that used them" % dropped, log)
+            else:
+                self.assertIn("missing from the bag and from its control messages (the recorder dropped them, "
+                              "first %d)" % dropped, log)
 
 
 if __name__ == "__main__":

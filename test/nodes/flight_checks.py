@@ -1,7 +1,12 @@
-"""Shared by the real-drone checks: polling a condition under a lock, and the
-joystick message the xbox mapping reads (LB deadman, right stick up = x)."""
+"""Shared by the real-drone checks: polling a condition under a lock, the
+joystick message the xbox mapping reads (LB deadman, right stick up = x), and
+holding a node's process up as a loaded machine would."""
+import os
+import signal
 import time
+import xmlrpc.client
 
+import rosgraph
 import rospy
 from sensor_msgs.msg import Joy
 
@@ -25,3 +30,22 @@ def joy_msg(deadman, stick):
     m.axes[4] = stick
     m.buttons[4] = 1 if deadman else 0
     return m
+
+
+def node_pid(name):
+    """The process id of a running node (its XML-RPC API's getPid)."""
+    uri = rosgraph.Master(rospy.get_name()).lookupNode(name)
+    code, msg, pid = xmlrpc.client.ServerProxy(uri).getPid(rospy.get_name())
+    if code != 1:
+        raise RuntimeError("getPid of %s: %s" % (name, msg))
+    return pid
+
+
+def hold_up(pid, seconds):
+    """Stops a process for `seconds` (SIGSTOP, then SIGCONT), as a loaded
+    machine's scheduler may: its threads and timers all stand still."""
+    os.kill(pid, signal.SIGSTOP)
+    try:
+        time.sleep(seconds)
+    finally:
+        os.kill(pid, signal.SIGCONT)

@@ -4,7 +4,7 @@
 // its watchdogs keep seeing the real, undelayed states. The mission
 // completes; the link loses states and commands, delays them, makes the
 // drone hover on a stale command; and outages of the model's uplink longer
-// than the watchdog's hover_after never trigger the stale-state hover.
+// than the watchdog's hover_after do not trigger the stale-state hover.
 #include <aurora_msgs/Control.h>
 #include <gtest/gtest.h>
 #include <ros/ros.h>
@@ -25,6 +25,38 @@ long longestUplinkOutage(const std::vector<aurora_msgs::Control>& fly) {
   return longest;
 }
 
+bool watchdogHovers(const aurora_msgs::Control& c) { return c.mode.find("no fresh state") != std::string::npos; }
+
+// The model's uplink outages longer than `cycles` during the task (from the
+// first "fly" to the landing), and in how many of them a watchdog hovered.
+struct Outages {
+  long longer = 0, hovered = 0;
+};
+Outages outagesLongerThan(const std::vector<aurora_msgs::Control>& all, long cycles) {
+  Outages o;
+  long run = 0;
+  bool hovered = false, flying = false;
+  auto close = [&] {
+    if (run > cycles) {
+      ++o.longer;
+      o.hovered += hovered;
+    }
+    run = 0;
+    hovered = false;
+  };
+  for (const auto& c : all) {
+    flying = (flying || c.mode == "fly") && c.mode.rfind("land", 0) != 0;
+    if (!flying || c.state_arrived) {
+      close();
+      continue;
+    }
+    ++run;
+    hovered = hovered || watchdogHovers(c);
+  }
+  close();
+  return o;
+}
+
 }  // namespace
 
 TEST(RealLink, TheModelsLinkSitsBetweenTheRealDroneAndTheLawNotTheWatchdogs) {
@@ -43,13 +75,13 @@ TEST(RealLink, TheModelsLinkSitsBetweenTheRealDroneAndTheLawNotTheWatchdogs) {
   }
   ASSERT_TRUE(done) << "the flight did not end with 'landed' in time (last mode '"
                     << (all.empty() ? std::string("none") : all.back().mode) << "')";
-  bool complete = false, stale = false;
+  bool complete = false;
+  long watchdog_hovers = 0;
   for (const auto& c : all) {
     complete |= c.mode == "land (task complete)";
-    stale |= c.mode.find("no fresh state") != std::string::npos;
+    watchdog_hovers += watchdogHovers(c);
   }
   EXPECT_TRUE(complete) << "the mission did not end by completing its task";
-  EXPECT_FALSE(stale) << "a watchdog saw the model's link instead of the real states";
   ASSERT_GT(fly.size(), 1700u);
 
   // The link at work: losses on both directions, states kept, the base delay
@@ -79,9 +111,17 @@ TEST(RealLink, TheModelsLinkSitsBetweenTheRealDroneAndTheLawNotTheWatchdogs) {
   EXPECT_GT(max_age, 2) << "jitter and losses age the state";
   EXPECT_EQ(min_command_age, 2) << "the downlink's base delay (2)";
   EXPECT_GT(hovers, 0);
-  // The watchdog hovers after 0.2 s (6 cycles) without a fresh state; the
-  // model's uplink went longer without one and the watchdog did not notice.
+  // The watchdog hovers after 0.2 s (6 cycles) without a fresh state. Had it
+  // watched the model's link, it would have hovered in each of the model's
+  // uplink outages longer than that. A real stall of the states (the fake
+  // driver held up on a loaded machine) does make it hover, rightly, and may
+  // fall in one: most outages must pass without a hover.
   EXPECT_GT(outage, 6);
+  const Outages o = outagesLongerThan(all, 6);
+  std::printf("%ld of the model's uplink outages were longer than 6 cycles; a watchdog hovered in %ld of them "
+              "(%ld watchdog hover cycles in all)\n", o.longer, o.hovered, watchdog_hovers);
+  EXPECT_GE(o.longer, 2) << "too few long outages of the model's uplink to tell what the watchdog watches";
+  EXPECT_LT(2 * o.hovered, o.longer) << "a watchdog saw the model's link instead of the real states";
 }
 
 int main(int argc, char** argv) {
