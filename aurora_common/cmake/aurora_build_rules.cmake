@@ -11,3 +11,13 @@ set(CMAKE_CXX_STANDARD_REQUIRED ON)
 if(NOT CMAKE_BUILD_TYPE)
   set(CMAKE_BUILD_TYPE Release)
 endif()
+
+# Test executables (gtests, the rostests' checkers) compile at -O1: at -O3
+# they were 40% of the build's compile time, and -O1 takes a third off that.
+# What they run at speed (the sweep engines, the nodes, flight) is in the
+# libraries and programs, built at -O3. The rounding is the same at every
+# level (no contraction, no fast-math), so their bit-exact comparisons with
+# -O3 code hold.
+function(aurora_test_target target)
+  target_compile_options(${target} PRIVATE -O1)
+endfunction()
