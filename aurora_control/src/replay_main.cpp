@@ -551,7 +551,8 @@ int replayVerdict(const Arguments& args, const std::string& ns, const ReplayCoun
   }
   if (!missing.empty()) {
     std::printf("replay: %zu state steps missing from the bag and from its control messages (the recorder dropped "
-                "them, first %ld): the replayed history differs from there\n", missing.size(), *missing.begin());
+                "them, first %ld): a law with memory may give other commands from there (none, if no cycle "
+                "used them)\n", missing.size(), *missing.begin());
   }
   if (args.out_path.empty() && n.differ() > 0) {
     std::printf("replay: write the commands side by side with --out FILE.csv\n");
