@@ -150,18 +150,6 @@ std::vector<long> robotDelays(const std::vector<long>& given, size_t robots, con
   return delays;
 }
 
-// The formation checks (docs/formation.md, "Formation checks"), as a sweep judges them.
-void printChecks(const FormationJudge<double>& judge) {
-  const FormationCriteria<double>& c = judge.criteria;
-  const FormationMetrics<double, bool, Line>& m = judge.metrics;
-  const auto held = [&](int i) { return m.ok[i] ? "held" : "FAILED"; };
-  std::printf("  checks from %.0f s: 1 position error max %.4f m (<= %g) %s; 2 shape error max %.4f m (<= %g) %s;\n"
-              "    3 IAE position %.4f m s (<= %g), shape %.4f m s (<= %g) %s; 4 smallest distance %.4f m (>= %g) %s: %s\n",
-              c.settle_time, m.max_position, c.max_position_error, held(0), m.max_shape, c.max_shape_error, held(1),
-              m.iae_position, c.max_iae_position, m.iae_shape, c.max_iae_shape, held(2), m.closest, c.min_distance,
-              held(3), m.feasible() ? "feasible" : "not feasible");
-}
-
 FormationFlight flyFormationFiles(const FormationFlightOptions& o, const FormationObserver& observe) {
   const auto p = aurora_sim::loadVehicleFile<ArdroneLawData::Vehicle>(o.vehicle, "the formation's drones' laws");
   FormationFlight r{readFormationFile(o.formation, o.config_dir), {}, p.Ts, 0, 0.0, {},
@@ -203,7 +191,7 @@ void flyFormation(const FormationFlightOptions& o) {
               r.run.drone[1].delay, r.ticks, r.seconds);
   std::printf("  RMS formation error after 10 s: rho %.4f m, alpha %.4f rad, beta %.4f rad, position (x, y) %.4f m, "
               "height %.4f m\n", r.rms[0], r.rms[1], r.rms[2], r.rms[3], r.rms[4]);
-  printChecks(r.judge);
+  std::printf("%s", checksText(r.judge.criteria, r.judge.metrics, false).c_str());
 }
 
 }  // namespace aurora_control

@@ -87,6 +87,9 @@ ShapedFlight flyUavUgvLine(const FormationFlightOptions& o, FlightTable& table) 
     refuseRobotLink(setup.link[r], setup.delay[r], r, setup.ticks(), setup.tick);
   }
   LineErrors errors;
+  FormationJudge<double, UavUgvShape, UavUgvRobots::Data> judge{FormationCriteria<double>::study(), false, setup.tick,
+                                                                {}, {}};
+  judge.metrics.reset();
   const long ticks = setup.ticks();
   if (table.columns) table.columns(uavUgvColumns());
   ShapedFlight f;
@@ -94,6 +97,7 @@ ShapedFlight flyUavUgvLine(const FormationFlightOptions& o, FlightTable& table) 
   auto observe = [&](const Tick& o) {
     const double t = double(o.k) * setup.tick;
     errors.add(t, o);
+    judge(o);
     if (table.row) table.row(uavUgvRow(t, o));
   };
   runFormation<UavUgvRobots, double, UavUgvShape, kDelayHistory>(uavUgvRun(setup), ticks, observe);
@@ -106,10 +110,15 @@ ShapedFlight flyUavUgvLine(const FormationFlightOptions& o, FlightTable& table) 
                 setup.pioneer.kinematic != 0.0 ? "kinematic" : "dynamic", ticks, setup.tick, setup.delay[0],
                 setup.delay[1], f.seconds, errors.rms(0), errors.rms(1), errors.rms(2), errors.rms(3), errors.rms(4),
                 errors.closest);
-  f.summary = line;
+  f.summary = line + checksText(judge.criteria, judge.metrics, true);
   f.errors = {{"rms_xf_yf", errors.rms(0)}, {"rms_rho", errors.rms(1)}, {"rms_alpha", errors.rms(2)},
               {"rms_beta", errors.rms(3)}, {"rms_drone_position", errors.rms(4)}, {"closest", errors.closest},
               {"ticks", double(ticks)}, {"delay_1", double(setup.delay[0])}, {"delay_2", double(setup.delay[1])}};
+  // The formation checks, as a sweep records them (check_1 .. check_5: 1 held).
+  const FormationMetrics<double, bool, UavUgvShape>& m = judge.metrics;
+  for (int i = 0; i < m.kChecks; ++i) f.errors.emplace_back("check_" + std::to_string(i + 1), m.ok[i] ? 1.0 : 0.0);
+  f.errors.emplace_back("feasible", m.feasible() ? 1.0 : 0.0);
+  f.errors.emplace_back("ground_command", m.ground_command);
   return f;
 }
 

@@ -16,11 +16,13 @@
 #include <string>
 #include <vector>
 
+#include "aurora_control/formation/formation_judge.h"
 #include "aurora_control/formation/uav_ugv_yaml.h"
 #include "aurora_control/law/control_law.h"
 #include "aurora_control/law/pioneer_laws.h"
 #include "aurora_sim/vehicle_yaml.h"
 #include "edited_file.h"
+#include "yaml-cpp/yaml.h"
 
 namespace {
 
@@ -118,6 +120,49 @@ TEST(UavUgvLine, TheStandardScenarioTracksAsAuRoRAs) {
     for (int i = 0; i < 5; ++i) EXPECT_NEAR(rms[i], spec[i], 0.05 * spec[i]) << names[i];  // the spec rounds to 2 digits
     EXPECT_NEAR(closest, kinematic ? 1.21 : 1.24, 0.005);
   }
+}
+
+// Check 5 (docs/formation.md, "Formation checks"): the Pioneer's commands as
+// its law sent them, against real_ground.yaml's limits (the study's
+// defaults); the drone is no ground robot. The standard scenario holds it
+// with its largest share; a speed limit below what the Pioneer is sent
+// fails it, and only it.
+TEST(UavUgvLine, CheckFiveJudgesTheGroundRobotsCommands) {
+  using Judge = aurora_control::FormationJudge<double, aurora_control::UavUgvShape, aurora_control::UavUgvRobots::Data>;
+  using Ground = aurora_control::GroundCommands<aurora_control::UavUgvRobots::Vehicle>;
+  const YAML::Node safety = YAML::LoadFile(std::string(AURORA_CONFIG_DIR) + "/safety/real_ground.yaml")["safety"];
+  auto study = aurora_control::FormationCriteria<double>::study();
+  EXPECT_EQ(study.max_ground_speed, safety["max_speed"].as<double>());
+  EXPECT_EQ(study.max_ground_turn_rate, safety["max_turn_rate"].as<double>());
+  bool ground[2] = {false, false};
+  const auto judged = [&](const aurora_control::FormationCriteria<double>& criteria, double& share) {
+    Judge judge{criteria, false, 1.0 / 30.0, {}, {}};
+    judge.metrics.reset();
+    share = 0.0;
+    flyScenario(false, 3900, [&](const Tick& o) {
+      judge(o);
+      const double* U = o.steps[0].U;
+      share = std::max({share, std::fabs(U[0]) / criteria.max_ground_speed, std::fabs(U[1]) / criteria.max_ground_turn_rate});
+      double speed, turn_rate;
+      for (int r = 0; r < 2; ++r) ground[r] = Ground::of(o.params[r].model, o.steps[r].U, speed, turn_rate);
+    });
+    return judge.metrics;
+  };
+  double share;
+  const auto held = judged(study, share);
+  EXPECT_TRUE(ground[0]);
+  EXPECT_FALSE(ground[1]);
+  EXPECT_DOUBLE_EQ(held.ground_command, share);
+  EXPECT_NEAR(share, 0.7531, 1e-4);  // its largest u_ref, 0.3765 m/s (tick 5), of 0.5 m/s
+  for (int i = 0; i < 5; ++i) EXPECT_TRUE(held.ok[i]) << "check " << i + 1;
+  EXPECT_TRUE(held.feasible());
+  study.max_ground_speed = 0.37;
+  const auto failed = judged(study, share);
+  EXPECT_DOUBLE_EQ(failed.ground_command, share);
+  EXPECT_GT(share, 1.0);
+  for (int i = 0; i < 4; ++i) EXPECT_TRUE(failed.ok[i]) << "check " << i + 1;
+  EXPECT_FALSE(failed.ok[4]);
+  EXPECT_FALSE(failed.feasible());
 }
 
 // The variables and their inverse are proper inverses for rho > 0; a

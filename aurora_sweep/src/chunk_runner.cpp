@@ -66,7 +66,7 @@ Counts mergeChunks(const SweepSpec& spec, const ChunkStore& store,
                    const std::vector<ResultsWriter*>& writers, const ChunkConsumer& consume,
                    std::vector<double>* writer_s, std::map<std::string, long>* chunks_by) {
   const long iterations = spec.iterations();
-  Counts counts;
+  Counts counts(checkCount(spec.formation()));
   std::vector<SimResult> chunk;
   std::vector<double> seconds(writers.size(), 0.0);
   for (long c = 0; c < store.plan().count(); ++c) {

@@ -161,6 +161,7 @@ class FormationBatch {
     aurora_control::formationTick<Law>(params, setup_.run.clamp, layer, due ? Qd : nullptr, B(t), B(T(k)), xc, state, step,
                                        [&](int d, B U[Vehicle::kInputs]) { downlink(d, k, U); });
     metrics.add(criteria, X, Xd_, B(aurora_control::taskTime(T(k), Ts)), B(Ts));
+    metrics.template addCommands<Vehicle>(criteria, params, step);
     return endLanes(k, first, metrics, state, ended);
   }
 
@@ -183,8 +184,8 @@ class FormationBatch {
     aurora_control::FormationMetrics<T, bool, OneLane> lane;
     lane.iae_position = LaneOps::get(m.iae_position, l), lane.iae_shape = LaneOps::get(m.iae_shape, l);
     lane.max_position = LaneOps::get(m.max_position, l), lane.max_shape = LaneOps::get(m.max_shape, l);
-    lane.closest = LaneOps::get(m.closest, l);
-    for (int i = 0; i < 4; ++i) lane.ok[i] = LaneOps::get(m.ok[i], l);
+    lane.closest = LaneOps::get(m.closest, l), lane.ground_command = LaneOps::get(m.ground_command, l);
+    for (int i = 0; i < m.kChecks; ++i) lane.ok[i] = LaneOps::get(m.ok[i], l);
     T X[N];
     for (int d = 0; d < D; ++d) {
       for (int i = 0; i < 3; ++i) X[3 * d + i] = LaneOps::get(state[d].model.X[Vehicle::kPosition + i], l);

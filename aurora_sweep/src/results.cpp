@@ -24,13 +24,13 @@ std::string readFile(const std::string& path) {
 class CsvWriter : public ResultsWriter {
  public:
   CsvWriter(const std::string& path, const SweepSpec& spec, bool feasible_only)
-      : path_(path), grid_(spec.view()), params_(spec.columns()), feasible_only_(feasible_only) {
+      : path_(path), grid_(spec.view()), params_(spec.columns()), results_(resultColumns(spec.formation())),
+        feasible_only_(feasible_only) {
     f_ = std::fopen(path.c_str(), "w");
     if (!f_) throw std::runtime_error("cannot write '" + path + "'");
     std::fprintf(f_, "index");
     for (int id : params_) std::fprintf(f_, ",%s", spec.paramNameOf(id));
-    const ResultColumn* columns = resultColumns(spec.formation());
-    for (int k = 0; k < kResultColumnCount; ++k) std::fprintf(f_, ",%s", columns[k].name);
+    for (int k = 0; k < results_.count; ++k) std::fprintf(f_, ",%s", results_[k].name);
     std::fprintf(f_, "\n");
   }
   ~CsvWriter() override {
@@ -47,7 +47,7 @@ class CsvWriter : public ResultsWriter {
         if (id == kParamDelay) std::fprintf(f_, ",%ld", c.delay());
         else std::fprintf(f_, ",%.17g", c.v[id]);
       }
-      for (int k = 0; k < kResultColumnCount; ++k) print(columnValue(r, k));
+      for (int k = 0; k < results_.count; ++k) print(columnValue(r, results_[k]));
       std::fprintf(f_, "\n");
       ++rows_;
     }
@@ -73,6 +73,7 @@ class CsvWriter : public ResultsWriter {
   std::string path_;
   GridView grid_;
   std::vector<int> params_;  // ParamIds of the parameter columns
+  ResultColumnList results_;  // then these
   bool feasible_only_;
   FILE* f_ = nullptr;
   long rows_ = 0;
@@ -168,8 +169,8 @@ void addCounts(Counts& c, const std::vector<SimResult>& results, long iterations
   c.combinations += static_cast<long>(results.size());
   for (const SimResult& r : results) {
     const bool complete = r.steps >= iterations;
-    for (int i = 0; i < 4; ++i) {
-      const bool held = (r.ok >> i) & 1;
+    for (int i = 0; i < c.checks; ++i) {
+      const bool held = checkHeld(r, i);
       c.passed[i] += held && complete;
       c.failed[i] += !held;
       c.not_reached[i] += held && !complete;
@@ -179,8 +180,8 @@ void addCounts(Counts& c, const std::vector<SimResult>& results, long iterations
   }
 }
 
-Counts countResults(const std::vector<SimResult>& results, long iterations) {
-  Counts c;
+Counts countResults(const std::vector<SimResult>& results, long iterations, int checks) {
+  Counts c(checks);
   addCounts(c, results, iterations);
   return c;
 }
@@ -203,8 +204,9 @@ namespace {
 nlohmann::json resultColumnsJson(bool formation) {
   const char* types[] = {"flag", "double", "int32", "float"};
   nlohmann::json columns = nlohmann::json::array();
-  for (int k = 0; k < kResultColumnCount; ++k) {
-    const ResultColumn& c = resultColumns(formation)[k];
+  const ResultColumnList list = resultColumns(formation);
+  for (int k = 0; k < list.count; ++k) {
+    const ResultColumn& c = list[k];
     columns.push_back({{"name", c.name}, {"type", types[static_cast<int>(c.type)]}, {"unit", c.unit},
                        {"doc", c.doc}});
   }
@@ -228,7 +230,7 @@ void writeSummaryJson(const std::string& path, const SweepSpec& spec, const RunI
     parameters.push_back(spec.paramNameOf(id));
     if (!spec.varies(id)) fixed[spec.paramNameOf(id)] = spec.fixed[id];
   }
-  const auto list = [](const long v[4]) { return json::array({v[0], v[1], v[2], v[3]}); };
+  const auto list = [&](const long* v) { return json(std::vector<long>(v, v + counts.checks)); };
   json j = {
       {"name", spec.name},
       {"sweep_file", spec.file},
@@ -249,7 +251,7 @@ void writeSummaryJson(const std::string& path, const SweepSpec& spec, const RunI
       {"order", order},
       {"combinations", counts.combinations},
       {"feasible", counts.feasible},
-      // Per check 1-4: held through a complete run / failed / not reached
+      // Per check (1-4; a formation sweep 1-5): held through a complete run / failed / not reached
       // (the run stopped early at another check's failure while this one held).
       {"checks", {{"passed", list(counts.passed)}, {"failed", list(counts.failed)},
                   {"not_reached", list(counts.not_reached)}}},
@@ -273,7 +275,9 @@ void writeSummaryJson(const std::string& path, const SweepSpec& spec, const RunI
     j["formation_shape"] = sweepShapeName(spec.shape);  // line, uav_ugv_line, triangle
     j["formation_criteria"] = {{"settle_time", c.settle_time}, {"max_position_error", c.max_position_error},
                                {"max_shape_error", c.max_shape_error}, {"max_iae_position", c.max_iae_position},
-                               {"max_iae_shape", c.max_iae_shape}, {"min_distance", c.min_distance}};
+                               {"max_iae_shape", c.max_iae_shape}, {"min_distance", c.min_distance},
+                               {"max_ground_speed", c.max_ground_speed},
+                               {"max_ground_turn_rate", c.max_ground_turn_rate}};
   }
   if (!spec.points_file.empty()) j["points_file"] = spec.points_file;
   j["design"] = spec.design;

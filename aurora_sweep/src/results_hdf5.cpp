@@ -45,7 +45,8 @@ Column columnOf(const ResultColumn& c) {
 class Hdf5Writer : public ResultsWriter {
  public:
   Hdf5Writer(const std::string& path, const SweepSpec& spec, bool feasible_only)
-      : path_(path), grid_(spec.view()), params_(spec.columns()), feasible_only_(feasible_only) {
+      : path_(path), grid_(spec.view()), params_(spec.columns()), results_(resultColumns(spec.formation())),
+        feasible_only_(feasible_only) {
     file_ = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
     if (file_ < 0) throw std::runtime_error("cannot write '" + path + "' (HDF5)");
     // index, the parameters (results.h: the delay whole), the results.
@@ -54,7 +55,7 @@ class Hdf5Writer : public ResultsWriter {
       columns_.push_back(id == kParamDelay ? Column{spec.paramNameOf(id), H5T_NATIVE_INT64, 8}
                                            : Column{spec.paramNameOf(id), H5T_NATIVE_DOUBLE, 8});
     }
-    for (int k = 0; k < kResultColumnCount; ++k) columns_.push_back(columnOf(resultColumns(spec.formation())[k]));
+    for (int k = 0; k < results_.count; ++k) columns_.push_back(columnOf(results_[k]));
     const hsize_t zero = 0, unlimited = H5S_UNLIMITED, chunk = kRowsPerChunk;
     const hid_t space = H5Screate_simple(1, &zero, &unlimited);
     const hid_t props = H5Pcreate(H5P_DATASET_CREATE);
@@ -141,7 +142,7 @@ class Hdf5Writer : public ResultsWriter {
         if (id == kParamDelay) put(col++, row, int64_t(c.delay()));
         else put(col++, row, c.v[id]);
       }
-      for (int k = 0; k < kResultColumnCount; ++k) putValue(col++, row, columnValue(r, k));
+      for (int k = 0; k < results_.count; ++k) putValue(col++, row, columnValue(r, results_[k]));
     }
     for (Column& c : columns_) c.buffer.resize(buffered_ * c.size);
   }
@@ -171,6 +172,7 @@ class Hdf5Writer : public ResultsWriter {
   std::string path_;
   GridView grid_;
   std::vector<int> params_;  // ParamIds of the parameter columns
+  ResultColumnList results_;  // then these
   bool feasible_only_;
   hid_t file_ = -1;
   std::vector<Column> columns_;

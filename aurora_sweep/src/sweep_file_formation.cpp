@@ -97,13 +97,14 @@ void readSweepFormation(const aurora_control::YamlReader& r, const YAML::Node& s
 
 void readFormationCriteria(const aurora_control::YamlReader& r, const YAML::Node& c,
                            aurora_control::FormationCriteria<double>& cr) {
-  const char* names[6] = {"settle_time", "max_position_error", "max_shape_error", "max_iae_position", "max_iae_shape",
-                          "min_distance"};
-  double* into[6] = {&cr.settle_time, &cr.max_position_error, &cr.max_shape_error, &cr.max_iae_position,
-                     &cr.max_iae_shape, &cr.min_distance};
-  const char* units[6] = {"s", "m", "m", "m s", "m s", "m"};
-  r.onlyKeys(c, "sweep.criteria", {names, names + 6});
-  for (int i = 0; i < 6; ++i) {
+  constexpr int kKeys = 8;
+  const char* names[kKeys] = {"settle_time",   "max_position_error", "max_shape_error",  "max_iae_position",
+                              "max_iae_shape", "min_distance",       "max_ground_speed", "max_ground_turn_rate"};
+  double* into[kKeys] = {&cr.settle_time,   &cr.max_position_error, &cr.max_shape_error,  &cr.max_iae_position,
+                         &cr.max_iae_shape, &cr.min_distance,       &cr.max_ground_speed, &cr.max_ground_turn_rate};
+  const char* units[kKeys] = {"s", "m", "m", "m s", "m s", "m", "m/s", "rad/s"};
+  r.onlyKeys(c, "sweep.criteria", {names, names + kKeys});
+  for (int i = 0; i < kKeys; ++i) {
     const std::string key = std::string("sweep.criteria.") + names[i];
     // The settle time and the distance may be 0 (judge from the start; no collision check).
     if (c[names[i]]) *into[i] = r.numberIn(c[names[i]], key, 0.0, 1e9, units[i], i == 0 || i == 5);

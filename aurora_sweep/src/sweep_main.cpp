@@ -147,14 +147,19 @@ nlohmann::json runFacts(const Options& opt, const ChunkStore& store, const Chunk
           {"timing", {{"compute_s", work.compute_s}, {"chunk_write_s", work.write_s}}}};
 }
 
+// "a b c d" of a count per check.
+std::string perCheck(const Counts& counts, const long* v) {
+  std::string s;
+  for (int i = 0; i < counts.checks; ++i) s += (i ? " " : "") + std::to_string(v[i]);
+  return s;
+}
+
 void printCounts(const Counts& counts, const RunInfo& info, const SweepSpec& spec) {
-  std::printf("sweep: %s, %ld feasible; checks 1-4 passed %ld %ld %ld %ld, failed %ld %ld %ld "
-              "%ld, not reached (early stop) %ld %ld %ld %ld; "
+  std::printf("sweep: %s, %ld feasible; checks 1-%d passed %s, failed %s, not reached (early stop) %s; "
               "%.3f s, %.0f sims/s, %.3g control steps/s, backend %s (%s), %s\n",
-              counted(counts.combinations, "combination", "combinations").c_str(), counts.feasible, counts.passed[0], counts.passed[1],
-              counts.passed[2], counts.passed[3], counts.failed[0], counts.failed[1], counts.failed[2],
-              counts.failed[3], counts.not_reached[0], counts.not_reached[1], counts.not_reached[2],
-              counts.not_reached[3], info.wall_time_s,
+              counted(counts.combinations, "combination", "combinations").c_str(), counts.feasible, counts.checks,
+              perCheck(counts, counts.passed).c_str(), perCheck(counts, counts.failed).c_str(),
+              perCheck(counts, counts.not_reached).c_str(), info.wall_time_s,
               std::max(info.computed_combinations, 0L) / std::max(info.wall_time_s, 1e-9),
               std::max(info.computed_steps, 0LL) / std::max(info.wall_time_s, 1e-9), info.backend.c_str(),
               info.device.c_str(),

@@ -109,6 +109,8 @@ inline void expectRecordsAgree(const std::string& key, const std::vector<SimResu
     EXPECT_PRED3(relClose, scalar[i].iae, simd[i].iae, rel) << key << " " << i;
     EXPECT_PRED3(relClose, scalar[i].itae, simd[i].itae, rel) << key << " " << i;
     EXPECT_PRED3(relClose, scalar[i].iasc, simd[i].iasc, rel) << key << " " << i;
+    // A formation's ground_command: a float, so to its last bits at least.
+    EXPECT_PRED3(relClose, double(scalar[i].extra), double(simd[i].extra), std::max(rel, 1e-6)) << key << " " << i;
   }
   EXPECT_GE(compared, min_compared) << key;
 }

@@ -148,6 +148,20 @@ TEST(AuRoRAsFormationSweep, TheUavUgvLineFliesEveryBackend) {
   const SweepSpec lossy = sweepOf("uav_ugv_lossy", "line_pioneer_ardrone_kinematic", kLineLossy);
   EXPECT_FALSE(lossy.linkIdeal());
   expectEveryBackendAgrees<aurora_control::UavUgvRobots>(lossy, lossy.uav_ugv_run, 2, 2e-3);
+  // Check 5 held and failed in one grid: the Pioneer's law saturates its
+  // turn rate command at 1 rad/s when it is 20 ticks late, and sends at most
+  // 0.71 rad/s (and 0.38 m/s) when it is on time or 10 ticks late.
+  const SweepSpec tight = sweepOf("uav_ugv_tight", "line_pioneer_ardrone",
+                                  std::string(kLineGrid) + "  criteria: {max_ground_turn_rate: 0.99}\n");
+  expectEveryBackendAgrees<aurora_control::UavUgvRobots>(tight, tight.uav_ugv_run, 8, 2e-3);
+  int held = 0, failed = 0;
+  for (const SimResult& r : runOn("scalar", tight)) {
+    (checkHeld(r, 4) ? held : failed) += 1;
+    EXPECT_EQ(checkHeld(r, 4), r.extra <= 1.0f) << "ground_command " << r.extra;
+    EXPECT_GT(r.extra, 0.7f);  // the Pioneer is judged: 0.75 at least (0.377 of 0.5 m/s)
+  }
+  EXPECT_GT(held, 0);
+  EXPECT_GT(failed, 0);
 }
 
 // Each combination's law, delays and robot 3's link values reach its run;

@@ -196,15 +196,27 @@ TEST(FormationSweep, ResultsNameTheFormationsColumns) {
   writeResultsCsv(csv, p, runOn("cpu", p));
   const std::string text = readText(csv);
   EXPECT_EQ(text.substr(0, text.find('\n')),
-            "index,delay_1,delay_2,formation_k1_rho,ok1,ok2,ok3,ok4,feasible,iae_position,iae_shape,min_distance,steps,"
-            "max_position_error,max_shape_error,end_distance");
+            "index,delay_1,delay_2,formation_k1_rho,ok1,ok2,ok3,ok4,ok5,feasible,iae_position,iae_shape,min_distance,"
+            "steps,max_position_error,max_shape_error,end_distance,ground_command");
+  // Two drones: no ground robot, check 5 holds and no command share is used.
+  size_t rows = 0;
+  for (size_t at = text.find('\n'); at + 1 < text.size(); at = text.find('\n', at + 1), ++rows) {
+    const std::string row = text.substr(at + 1, text.find('\n', at + 1) - at - 1);
+    EXPECT_EQ(row.substr(row.rfind(',')), ",0") << row;
+  }
+  EXPECT_EQ(static_cast<long>(rows), p.size());
   EXPECT_NE(definitionHash(p), definitionHash(ik));
   const std::string summary = ::testing::TempDir() + "/formation_summary.json";
-  writeSummaryJson(summary, p, RunInfo(), countResults(runOn("cpu", p), p.iterations()));
+  const std::vector<SimResult> results = runOn("cpu", p);
+  for (const SimResult& r : results) EXPECT_TRUE(checkHeld(r, 4));
+  writeSummaryJson(summary, p, RunInfo(), countResults(results, p.iterations(), checkCount(true)));
   const nlohmann::json j = nlohmann::json::parse(readText(summary));
   EXPECT_EQ(j["formation_file"], configDir() + "/formations/line_lemniscate.yaml");
   EXPECT_EQ(j["formation_criteria"]["min_distance"], 0.6);
-  EXPECT_EQ(j["result_columns"][7]["name"], "min_distance");
+  EXPECT_EQ(j["formation_criteria"]["max_ground_speed"], 0.5);
+  EXPECT_EQ(j["result_columns"][8]["name"], "min_distance");
+  EXPECT_EQ(j["checks"]["failed"].size(), 5u);
+  EXPECT_EQ(j["checks"]["failed"][4], 0);
   EXPECT_EQ(j["controller"], "underactuated");
 }
 

@@ -96,7 +96,7 @@ py::dict formationMetrics(const FormationFlight& r) {
   out["rms_position_xy"] = r.rms[3], out["rms_height"] = r.rms[4];
   out["max_position_error"] = m.max_position, out["max_shape_error"] = m.max_shape;
   out["iae_position"] = m.iae_position, out["iae_shape"] = m.iae_shape, out["min_distance"] = m.closest;
-  out["checks"] = py::make_tuple(m.ok[0], m.ok[1], m.ok[2], m.ok[3]);
+  out["checks"] = py::make_tuple(m.ok[0], m.ok[1], m.ok[2], m.ok[3], m.ok[4]);
   out["feasible"] = m.feasible();
   return out;
 }

@@ -126,13 +126,15 @@ struct FormationRecord {
   double iae_position, iae_shape;                           // [m s] after settle_time
   double min_distance;                                      // [m] the closest two drones came, whole flight
   unsigned char ok;                                         // SimResult::ok's bits
-  unsigned char zero[7];
+  unsigned char zero[3];
+  float ground_command;  // the largest share of a ground robot's check 5 limits its commands used (0: none)
 };
 static_assert(sizeof(FormationRecord) == sizeof(SimResult) &&
                   offsetof(FormationRecord, ticks) == offsetof(SimResult, steps) &&
                   offsetof(FormationRecord, iae_position) == offsetof(SimResult, iae) &&
                   offsetof(FormationRecord, min_distance) == offsetof(SimResult, iasc) &&
-                  offsetof(FormationRecord, ok) == offsetof(SimResult, ok),
+                  offsetof(FormationRecord, ok) == offsetof(SimResult, ok) &&
+                  offsetof(FormationRecord, ground_command) == offsetof(SimResult, extra),
               "a formation's record is the sweep's record, field for field");
 
 // The record of a formation's metrics after `ticks` ticks, its drones
@@ -141,7 +143,7 @@ template <typename T, class Shape>
 AURORA_HD inline SimResult formationResult(const aurora_control::FormationMetrics<T, bool, Shape>& m, long ticks,
                                            T end_distance) {
   FormationRecord f;
-  for (int i = 0; i < 7; ++i) f.zero[i] = 0;
+  for (int i = 0; i < 3; ++i) f.zero[i] = 0;
   f.max_position_error = static_cast<float>(m.max_position);
   f.max_shape_error = static_cast<float>(m.max_shape);
   f.end_distance = static_cast<float>(end_distance);
@@ -149,8 +151,9 @@ AURORA_HD inline SimResult formationResult(const aurora_control::FormationMetric
   f.iae_position = double(m.iae_position);
   f.iae_shape = double(m.iae_shape);
   f.min_distance = double(m.closest);
+  f.ground_command = static_cast<float>(m.ground_command);
   f.ok = 0;
-  for (int i = 0; i < 4; ++i) f.ok |= static_cast<unsigned char>((m.ok[i] ? 1 : 0) << i);
+  for (int i = 0; i < m.kChecks; ++i) f.ok |= static_cast<unsigned char>((m.ok[i] ? 1 : 0) << checkBit(i));
   f.ok |= static_cast<unsigned char>((m.feasible() ? 1 : 0) << kFeasibleBit);
   SimResult s;
   memcpy(&s, &f, sizeof s);

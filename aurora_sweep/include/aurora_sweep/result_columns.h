@@ -12,66 +12,78 @@ namespace aurora_sweep {
 // How a column is stored: a 0/1 flag (uint8), a double, an int32, a float.
 enum class ColumnType { kFlag, kDouble, kInt32, kFloat };
 
+// Where a column's value sits in the record (SimResult): a bit of ok, one
+// of the three doubles, steps, one of the three floats, or extra.
+enum class ColumnField { kBit, kDouble, kSteps, kFloat, kExtra };
+
 struct ResultColumn {
   const char* name;
   ColumnType type;
   const char* unit;  // "" for none
   const char* doc;
+  ColumnField field;
+  int at;  // kBit: the bit; kDouble, kFloat: which of the three
 };
-
-// The columns' positions, named.
-enum ResultColumnIndex : int {
-  kColumnOk1 = 0,  // ok1..ok4 at 0..3: SimResult::ok's bits
-  kColumnFeasible = 4,
-  kColumnIae,
-  kColumnItae,
-  kColumnIasc,
-  kColumnSteps,
-  kColumnX,  // x, y, z
-};
-static_assert(kColumnFeasible == kFeasibleBit, "the flags are SimResult::ok's bits in order");
 
 constexpr ResultColumn kResultColumns[] = {
-    {"ok1", ColumnType::kFlag, "", "check 1 held: true error within max_error"},
-    {"ok2", ColumnType::kFlag, "", "check 2 held: IAE within max_iae"},
-    {"ok3", ColumnType::kFlag, "", "check 3 held: ITAE within max_itae"},
-    {"ok4", ColumnType::kFlag, "", "check 4 held: true error within error_growth times the initial error"},
-    {"feasible", ColumnType::kFlag, "", "all four checks held"},
-    {"iae", ColumnType::kDouble, "m s", "integral of the controller's position error"},
-    {"itae", ColumnType::kDouble, "m s^2", "integral of the loop clock's time times that error"},
-    {"iasc", ColumnType::kDouble, "s", "integral of the command's norm"},
-    {"steps", ColumnType::kInt32, "", "model steps run (fewer with early_stop)"},
-    {"x", ColumnType::kFloat, "m", "final position, world frame"},
-    {"y", ColumnType::kFloat, "m", "final position, world frame"},
-    {"z", ColumnType::kFloat, "m", "final position, world frame"},
+    {"ok1", ColumnType::kFlag, "", "check 1 held: true error within max_error", ColumnField::kBit, checkBit(0)},
+    {"ok2", ColumnType::kFlag, "", "check 2 held: IAE within max_iae", ColumnField::kBit, checkBit(1)},
+    {"ok3", ColumnType::kFlag, "", "check 3 held: ITAE within max_itae", ColumnField::kBit, checkBit(2)},
+    {"ok4", ColumnType::kFlag, "", "check 4 held: true error within error_growth times the initial error",
+     ColumnField::kBit, checkBit(3)},
+    {"feasible", ColumnType::kFlag, "", "all four checks held", ColumnField::kBit, kFeasibleBit},
+    {"iae", ColumnType::kDouble, "m s", "integral of the controller's position error", ColumnField::kDouble, 0},
+    {"itae", ColumnType::kDouble, "m s^2", "integral of the loop clock's time times that error", ColumnField::kDouble, 1},
+    {"iasc", ColumnType::kDouble, "s", "integral of the command's norm", ColumnField::kDouble, 2},
+    {"steps", ColumnType::kInt32, "", "model steps run (fewer with early_stop)", ColumnField::kSteps, 0},
+    {"x", ColumnType::kFloat, "m", "final position, world frame", ColumnField::kFloat, 0},
+    {"y", ColumnType::kFloat, "m", "final position, world frame", ColumnField::kFloat, 1},
+    {"z", ColumnType::kFloat, "m", "final position, world frame", ColumnField::kFloat, 2},
 };
-constexpr int kResultColumnCount = static_cast<int>(sizeof kResultColumns / sizeof kResultColumns[0]);
 
-// A formation sweep's columns: the same record and types in the same places
-// (formation_simulation.h's formationResult), named for the formation's
-// checks (docs/formation.md, "Formation checks").
+// A formation sweep's columns: the same record (formation_simulation.h's
+// FormationRecord), named for the formation's checks (docs/formation.md,
+// "Formation checks").
 constexpr ResultColumn kFormationResultColumns[] = {
-    {"ok1", ColumnType::kFlag, "", "check 1 held: formation position error within max_position_error after settle_time"},
-    {"ok2", ColumnType::kFlag, "", "check 2 held: shape error within max_shape_error after settle_time"},
-    {"ok3", ColumnType::kFlag, "", "check 3 held: both errors' integrals within max_iae_position and max_iae_shape"},
-    {"ok4", ColumnType::kFlag, "", "check 4 held: the drones never closer than min_distance (no collision)"},
-    {"feasible", ColumnType::kFlag, "", "all four checks held"},
-    {"iae_position", ColumnType::kDouble, "m s", "integral of the formation position error after settle_time"},
-    {"iae_shape", ColumnType::kDouble, "m s", "integral of the shape error after settle_time"},
-    {"min_distance", ColumnType::kDouble, "m", "smallest distance between the drones"},
-    {"steps", ColumnType::kInt32, "", "ticks run (fewer with early_stop)"},
-    {"max_position_error", ColumnType::kFloat, "m", "largest formation position error after settle_time"},
-    {"max_shape_error", ColumnType::kFloat, "m", "largest shape error after settle_time"},
-    {"end_distance", ColumnType::kFloat, "m", "distance between the drones at the end"},
+    {"ok1", ColumnType::kFlag, "", "check 1 held: formation position error within max_position_error after settle_time",
+     ColumnField::kBit, checkBit(0)},
+    {"ok2", ColumnType::kFlag, "", "check 2 held: shape error within max_shape_error after settle_time",
+     ColumnField::kBit, checkBit(1)},
+    {"ok3", ColumnType::kFlag, "", "check 3 held: both errors' integrals within max_iae_position and max_iae_shape",
+     ColumnField::kBit, checkBit(2)},
+    {"ok4", ColumnType::kFlag, "", "check 4 held: the drones never closer than min_distance (no collision)",
+     ColumnField::kBit, checkBit(3)},
+    {"ok5", ColumnType::kFlag, "",
+     "check 5 held: every ground robot's commands within max_ground_speed and max_ground_turn_rate (always, without one)",
+     ColumnField::kBit, checkBit(4)},
+    {"feasible", ColumnType::kFlag, "", "all five checks held", ColumnField::kBit, kFeasibleBit},
+    {"iae_position", ColumnType::kDouble, "m s", "integral of the formation position error after settle_time",
+     ColumnField::kDouble, 0},
+    {"iae_shape", ColumnType::kDouble, "m s", "integral of the shape error after settle_time", ColumnField::kDouble, 1},
+    {"min_distance", ColumnType::kDouble, "m", "smallest distance between the drones", ColumnField::kDouble, 2},
+    {"steps", ColumnType::kInt32, "", "ticks run (fewer with early_stop)", ColumnField::kSteps, 0},
+    {"max_position_error", ColumnType::kFloat, "m", "largest formation position error after settle_time",
+     ColumnField::kFloat, 0},
+    {"max_shape_error", ColumnType::kFloat, "m", "largest shape error after settle_time", ColumnField::kFloat, 1},
+    {"end_distance", ColumnType::kFloat, "m", "distance between the drones at the end", ColumnField::kFloat, 2},
+    {"ground_command", ColumnType::kFloat, "",
+     "the largest share of check 5's limits a ground robot's commands used (over 1: check 5 failed; 0: no ground robot)",
+     ColumnField::kExtra, 0},
 };
-static_assert(sizeof kFormationResultColumns == sizeof kResultColumns, "one record, two namings");
 
 // The columns of a sweep, a formation sweep's or the single drone's.
-inline const ResultColumn* resultColumns(bool formation) {
-  return formation ? kFormationResultColumns : kResultColumns;
+struct ResultColumnList {
+  const ResultColumn* columns;
+  int count;
+  const ResultColumn& operator[](int k) const { return columns[k]; }
+};
+inline ResultColumnList resultColumns(bool formation) {
+  constexpr int one = static_cast<int>(sizeof kResultColumns / sizeof kResultColumns[0]);
+  constexpr int shape = static_cast<int>(sizeof kFormationResultColumns / sizeof kFormationResultColumns[0]);
+  return formation ? ResultColumnList{kFormationResultColumns, shape} : ResultColumnList{kResultColumns, one};
 }
 
-// Column k's value of a result, in the column's type.
+// A column's value of a result, in the column's type.
 struct ColumnValue {
   ColumnType type;
   union {
@@ -82,17 +94,16 @@ struct ColumnValue {
   };
 };
 
-inline ColumnValue columnValue(const SimResult& r, int k) {
+inline ColumnValue columnValue(const SimResult& r, const ResultColumn& c) {
   ColumnValue v;
-  v.type = kResultColumns[k].type;
-  switch (k) {
-    case kColumnIae: v.real = r.iae; break;
-    case kColumnItae: v.real = r.itae; break;
-    case kColumnIasc: v.real = r.iasc; break;
-    case kColumnSteps: v.whole = static_cast<int32_t>(r.steps); break;
-    default:
-      if (k <= kColumnFeasible) v.flag = static_cast<uint8_t>((r.ok >> k) & 1);
-      else v.single = r.final_pos[k - kColumnX];
+  v.type = c.type;
+  const double reals[3] = {r.iae, r.itae, r.iasc};
+  switch (c.field) {
+    case ColumnField::kBit: v.flag = static_cast<uint8_t>((r.ok >> c.at) & 1); break;
+    case ColumnField::kDouble: v.real = reals[c.at]; break;
+    case ColumnField::kSteps: v.whole = static_cast<int32_t>(r.steps); break;
+    case ColumnField::kFloat: v.single = r.final_pos[c.at]; break;
+    case ColumnField::kExtra: v.single = r.extra; break;
   }
   return v;
 }

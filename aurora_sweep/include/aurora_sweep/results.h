@@ -27,17 +27,22 @@ struct RunInfo {
 
 // Per check: passed (held through a complete run), failed, or not reached
 // (the run stopped early at another check's failure while this one held).
+// A sweep of one robot has four checks, a formation sweep five.
 struct Counts {
+  static constexpr int kMostChecks = 5;
+  explicit Counts(int check_count = 4) : checks(check_count) {}
+  int checks;
   long combinations = 0;
   long feasible = 0;
-  long passed[4] = {0, 0, 0, 0};
-  long failed[4] = {0, 0, 0, 0};
-  long not_reached[4] = {0, 0, 0, 0};
+  long passed[kMostChecks] = {0, 0, 0, 0, 0};
+  long failed[kMostChecks] = {0, 0, 0, 0, 0};
+  long not_reached[kMostChecks] = {0, 0, 0, 0, 0};
   long long steps = 0;
 };
+inline int checkCount(bool formation) { return formation ? 5 : 4; }
 
 // `iterations`: the steps of a complete run (studyIterationCount).
-Counts countResults(const std::vector<SimResult>& results, long iterations);
+Counts countResults(const std::vector<SimResult>& results, long iterations, int checks = 4);
 // Adds one chunk's results to running counts.
 void addCounts(Counts& c, const std::vector<SimResult>& results, long iterations);
 

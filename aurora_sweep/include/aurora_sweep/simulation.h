@@ -53,19 +53,23 @@ struct SimResult {
   float final_pos[3];   // [m]
   int steps;            // model steps run
   double iae, itae, iasc;
-  unsigned char ok;     // bit i: check i + 1 held; bit 4: feasible
-  unsigned char zero[7];  // always 0
+  unsigned char ok;     // check i + 1 held at bit checkBit(i) (1-4 at 0-3, a formation's 5 at 5); bit 4: feasible
+  unsigned char zero[3];  // always 0
+  float extra;          // a formation's ground_command (FormationRecord); 0 for one robot
 };
 static_assert(sizeof(SimResult) == 48, "the chunk files' record: 48 bytes, no implicit padding");
 
-// The bits of SimResult::ok, by name: check i (0-based) held, and feasible.
+// The bits of SimResult::ok, by name: check i (0-based) held, and feasible
+// (checks 1-4 keep the bits they had before a formation's fifth came).
 constexpr int kFeasibleBit = 4;
-AURORA_HD inline int checkHeld(const SimResult& r, int check) { return (r.ok >> check) & 1; }
+AURORA_HD constexpr int checkBit(int check) { return check < kFeasibleBit ? check : check + 1; }
+AURORA_HD inline int checkHeld(const SimResult& r, int check) { return (r.ok >> checkBit(check)) & 1; }
 AURORA_HD inline int feasible(const SimResult& r) { return (r.ok >> kFeasibleBit) & 1; }
 
 AURORA_HD inline SimResult compactResult(const aurora_control::RunnerResult& r) {
   SimResult s;
-  for (int i = 0; i < 7; ++i) s.zero[i] = 0;
+  for (int i = 0; i < 3; ++i) s.zero[i] = 0;
+  s.extra = 0.0f;
   for (int i = 0; i < 3; ++i) s.final_pos[i] = static_cast<float>(r.final_pos[i]);
   s.steps = static_cast<int>(r.steps);
   s.iae = r.iae;

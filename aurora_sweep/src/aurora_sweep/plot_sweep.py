@@ -25,7 +25,7 @@ MAX_SCATTER = 50000
 
 
 def flag_columns(summary):
-    """The results' 0/1 columns (ok1 ... ok4, feasible): summary.json's
+    """The results' 0/1 columns (ok1 ... ok4, a formation's ok5, feasible): summary.json's
     "result_columns", which the sweep writes from its one column list
     (aurora_sweep/result_columns.h)."""
     return [c["name"] for c in summary["result_columns"] if c["type"] == "flag"]
@@ -203,6 +203,8 @@ def formation_delays(np, plt, cols, ok, summary, out):
     cells = np.searchsorted(u2, d2) * len(u1) + np.searchsorted(u1, d1)
     names = {"feasible": "feasible", "ok1": "check 1: position error", "ok2": "check 2: shape error",
              "ok3": "check 3: error integrals", "ok4": "check 4: no collision"}
+    if "ok5" in ok and not ok["ok5"].all():  # a ground robot's commands over its limits somewhere
+        names["ok5"] = "check 5: ground robot's commands"
     if summary.get("early_stop", True):
         names = {"feasible": "feasible"}
     fig, axes = plt.subplots(1, len(names), figsize=(4.6 * len(names) + 1.4, 4.4), squeeze=False)

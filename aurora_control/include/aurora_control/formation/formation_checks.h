@@ -1,7 +1,8 @@
-// The formation's metrics and its four checks (docs/formation.md, "Formation
+// The formation's metrics and its five checks (docs/formation.md, "Formation
 // checks"): how far the formation's position and its shape are from the
-// desired ones once the formation has settled, their integrals, and how
-// close the drones come to each other. Written against a shape (its
+// desired ones once the formation has settled, their integrals, how close
+// the drones come to each other, and whether a ground robot's commands stay
+// within what its real safety layer passes. Written against a shape (its
 // variables and inverse transform), for scalars (Mask = bool) and SIMD
 // batches, host and device. Each check, once failed, stays failed.
 #pragma once
@@ -9,6 +10,7 @@
 #include <cmath>
 #include <type_traits>
 
+#include "aurora_control/formation/ground_commands.h"
 #include "aurora_control/loop/feasibility.h"
 #include "aurora_common/scalar_math.h"
 
@@ -22,15 +24,20 @@ struct FormationCriteria {
   T max_iae_position;    // check 3 [m s]: the position error's integral after settle_time ...
   T max_iae_shape;       // ... and the shape error's
   T min_distance;        // check 4 [m]: the drones' centres never closer (a collision)
+  T max_ground_speed;      // check 5 [m/s]: a ground robot's |speed command| at most this ...
+  T max_ground_turn_rate;  // ... and its |turn rate command| [rad/s], every tick
 
-  // The defaults of docs/formation.md, "Formation checks".
+  // The defaults of docs/formation.md, "Formation checks"; check 5's are
+  // config/safety/real_ground.yaml's max_speed and max_turn_rate (a test
+  // reads the file and compares).
   AURORA_HD static FormationCriteria study() {
-    return FormationCriteria{T(10), T(0.75), T(1.5), T(30), T(120), T(0.6)};
+    return FormationCriteria{T(10), T(0.75), T(1.5), T(30), T(120), T(0.6), T(0.5), T(1)};
   }
   template <typename U>
   AURORA_HD FormationCriteria<U> cast() const {
-    return FormationCriteria<U>{U(settle_time), U(max_position_error), U(max_shape_error),
-                                U(max_iae_position), U(max_iae_shape), U(min_distance)};
+    return FormationCriteria<U>{U(settle_time),   U(max_position_error), U(max_shape_error),
+                                U(max_iae_position), U(max_iae_shape),  U(min_distance),
+                                U(max_ground_speed), U(max_ground_turn_rate)};
   }
 };
 
@@ -100,15 +107,17 @@ AURORA_HD inline T closestPair(const T X[Shape::kVariables]) {
 template <typename T, typename Mask, class Shape>
 struct FormationMetrics {
   static constexpr int kN = Shape::kVariables;
+  static constexpr int kChecks = 5;
   T iae_position, iae_shape;      // [m s] after settle_time
   T max_position, max_shape;      // [m] the largest errors after settle_time
   T closest;                      // [m] the smallest distance between drones, whole flight
-  Mask ok[4];
+  T ground_command;               // the largest share of a ground robot's check 5 limits its commands used (0: none)
+  Mask ok[kChecks];
 
   AURORA_HD void reset() {
-    iae_position = iae_shape = max_position = max_shape = T(0);
+    iae_position = iae_shape = max_position = max_shape = ground_command = T(0);
     closest = T(1e30);
-    for (int i = 0; i < 4; ++i) ok[i] = Mask(true);
+    for (int i = 0; i < kChecks; ++i) ok[i] = Mask(true);
   }
 
   // Tick k at time t = k Ts: the drones at X_k against the positions Xd of
@@ -137,7 +146,25 @@ struct FormationMetrics {
     ok[3] = ok[3] & finite & (r >= c.min_distance);
   }
 
-  AURORA_HD Mask feasible() const { return ok[0] & ok[1] & ok[2] & ok[3]; }
+  // Check 5 at a tick: each ground robot's commands U (as its law sent
+  // them; Vehicle: the crew's, a robot's params choose for a mixed crew)
+  // within the limits. A NaN command fails it and is kept.
+  template <class Vehicle, class Params, class Step>
+  AURORA_HD void addCommands(const FormationCriteria<T>& c, const Params* params, const Step* steps) {
+    using aurora_common::select;
+    using std::sqrt;
+    for (int d = 0; d < Shape::kDrones; ++d) {
+      T speed, turn_rate;
+      if (!GroundCommands<Vehicle>::of(params[d].model, steps[d].U, speed, turn_rate)) continue;
+      const T s = speed / c.max_ground_speed, w = turn_rate / c.max_ground_turn_rate;
+      const T s2 = s * s, w2 = w * w;
+      const T share = sqrt(select((s2 > w2) | (s2 != s2), s2, w2));  // the larger, or the NaN
+      ground_command = select(!(share <= ground_command), share, ground_command);
+      ok[4] = ok[4] & (s2 <= T(1)) & (w2 <= T(1));
+    }
+  }
+
+  AURORA_HD Mask feasible() const { return ok[0] & ok[1] & ok[2] & ok[3] & ok[4]; }
 };
 
 }  // namespace aurora_control

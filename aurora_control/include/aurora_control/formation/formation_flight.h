@@ -33,6 +33,28 @@ std::vector<long> robotDelays(const std::vector<long>& given, size_t robots, con
 // run's `ticks`, its history within the delay history; refused naming it.
 void refuseRobotLink(const LinkParams& link, long delay, int r, long ticks, double Ts);
 
+// The formation checks (docs/formation.md, "Formation checks") as a sweep
+// judges them, as the flight tool prints them: check 5 where the formation
+// has a ground robot.
+template <class Shape>
+std::string checksText(const FormationCriteria<double>& c, const FormationMetrics<double, bool, Shape>& m,
+                       bool ground_robot) {
+  const auto held = [&](int i) { return m.ok[i] ? "held" : "FAILED"; };
+  char text[600], ground[200] = "";
+  if (ground_robot) {
+    std::snprintf(ground, sizeof ground, "; 5 ground commands at most %.3f of %g m/s, %g rad/s %s", m.ground_command,
+                  c.max_ground_speed, c.max_ground_turn_rate, held(4));
+  }
+  std::snprintf(text, sizeof text,
+                "  checks from %.0f s: 1 position error max %.4f m (<= %g) %s; 2 shape error max %.4f m (<= %g) %s;\n"
+                "    3 IAE position %.4f m s (<= %g), shape %.4f m s (<= %g) %s; 4 smallest distance %.4f m (>= %g) "
+                "%s%s: %s\n",
+                c.settle_time, m.max_position, c.max_position_error, held(0), m.max_shape, c.max_shape_error, held(1),
+                m.iae_position, c.max_iae_position, m.iae_shape, c.max_iae_shape, held(2), m.closest, c.min_distance,
+                held(3), ground, m.feasible() ? "feasible" : "not feasible");
+  return text;
+}
+
 // Each tick, with the drones' sample time Ts [s].
 using FormationObserver = std::function<void(const FormationObservation<double, LineFormation<double>>&, double Ts)>;
 

@@ -25,6 +25,7 @@ struct FormationJudge {
     dronePositions<Shape, typename Data::Vehicle>(o.X_before, X);
     if (o.layer_ran) Shape::positions(o.layer.Qd(), Xd);
     metrics.add(criteria, X, Xd, taskTime(T(o.k), Ts), Ts);
+    metrics.template addCommands<typename Data::Vehicle>(criteria, o.params, o.steps);
     return !(early_stop && !metrics.feasible());
   }
 };

@@ -88,6 +88,7 @@ struct FormationObservation {
   const DroneState<T, bool, Data>* drones;          // after the model step, per drone (X_(k+1))
   const DroneStep<T, Data>* steps;                  // each drone's reference and applied command
   const LayerOf<T, Shape>& layer;
+  const DroneParams<T, Data>* params;               // each robot's (its vehicle, for a mixed crew)
 };
 
 // The robots' stacked positions (3 per robot, the shape's X) of their
@@ -244,7 +245,7 @@ AURORA_HD long runFormationOver(const FormationRun<T, Shape, typename Law::Data>
     DroneStep<T, Data> step[D];
     formationTick<Law>(params, run.clamp, layer, due ? Qd : nullptr, t, T(k), xc, state, step,
                        [&](int d, T U[Law::Vehicle::kInputs]) { links[d].downlink(k, U, U); });
-    if (!observeTick(observe, FormationObservation<T, Shape, Data>{k, due, before, state, step, layer})) return k + 1;
+    if (!observeTick(observe, FormationObservation<T, Shape, Data>{k, due, before, state, step, layer, params})) return k + 1;
   }
   return iterations;
 }

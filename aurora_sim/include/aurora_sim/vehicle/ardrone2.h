@@ -7,7 +7,9 @@
 // - kStates, kInputs, kPosition: the state's size, the command's size, and
 //   where x y z [m, world frame] sit in X; stateName(i): X's names;
 //   inputName(i): U's, with units;
-// - kOnGround: a ground robot (its tasks lie on the floor, z = 0);
+// - kOnGround: a ground robot (its tasks lie on the floor, z = 0); a
+//   ground robot also names its forward speed and turn rate commands
+//   (kSpeedInput, kTurnRateInput: what a real one's safety layer limits);
 // - start(p, s): a new robot at rest with its centre at the world origin,
 //   heading 0 (every loop's first state);
 // - step(p, s, U): one model step of Ts with command U;

@@ -29,6 +29,8 @@ struct Pioneer3dx {
   static constexpr int kPosition = kX;
   static constexpr int kFactors = 6;                 // theta1 .. theta6
   static constexpr bool kOnGround = true;
+  static constexpr int kSpeedInput = kPioneerURef;         // a ground robot's commands, by name
+  static constexpr int kTurnRateInput = kPioneerOmegaRef;  // (config/safety/real_ground.yaml limits them)
 
   static const char* stateName(int i) { return i < kStateSize ? stateName12(i) : i == kPioneerU ? "u" : "omega"; }
   static const char* inputName(int i) { return i == kPioneerURef ? "u_ref [m/s]" : "omega_ref [rad/s]"; }  // RosAria's cmd_vel
