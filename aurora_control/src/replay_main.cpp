@@ -12,7 +12,9 @@
 
 #include <boost/program_options.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -529,9 +531,31 @@ void pushStatesUpTo(const aurora_msgs::Control& c, const BagStates& states, long
 }
 
 struct ReplayCount {
-  long cycles = 0, identical = 0;
+  long cycles = 0, identical = 0;  // compared
   double max_diff = 0.0;
   long differ() const { return cycles - identical; }
+  // Control messages the recorder dropped (a loaded machine): header.seq,
+  // which roscpp numbers per publisher, skips them. A law with memory
+  // cannot be replayed across a cycle it lacks, so the cycles from the
+  // first gap on are replayed but not compared.
+  long missing_controls = 0, first_gap_step = -1, not_compared = 0;
+  uint32_t last_seq = 0;
+  void read(const aurora_msgs::Control& c, bool first) {
+    if (!first && c.header.seq > last_seq + 1) {
+      missing_controls += c.header.seq - last_seq - 1;
+      if (first_gap_step < 0) first_gap_step = static_cast<long>(c.step);
+    }
+    last_seq = c.header.seq;
+  }
+  void add(bool same, double diff) {
+    if (first_gap_step >= 0) {
+      ++not_compared;
+      return;
+    }
+    ++cycles;
+    identical += same;
+    max_diff = std::max(max_diff, diff);
+  }
 };
 
 // What replay says at the end; the exit status.
@@ -548,6 +572,11 @@ int replayVerdict(const Arguments& args, const std::string& ns, const ReplayCoun
     std::printf("replay: %zu state steps missing from the bag (the recorder dropped them, first %ld) were taken "
                 "from the control messages that used them (Control.state_used)\n",
                 states.recovered.size(), *states.recovered.begin());
+  }
+  if (n.missing_controls > 0) {
+    std::printf("replay: %ld control messages missing from the bag (the recorder dropped them, first before step "
+                "%ld): a law's memory cannot be replayed across a cycle it lacks, so the %ld cycles from there on "
+                "were replayed but not compared\n", n.missing_controls, n.first_gap_step, n.not_compared);
   }
   if (!missing.empty()) {
     std::printf("replay: %zu state steps missing from the bag and from its control messages (the recorder dropped "
@@ -578,6 +607,7 @@ int replayCycles(const Arguments& args, const std::string& ns, const BagStates& 
   ControlOutput out{};
   long next_step = states.by_step.begin()->first;
   for (const aurora_msgs::Control& c : controls) {
+    n.read(c, &c == &controls.front());
     pushStatesUpTo(c, states, next_step, *core, missing);
     if (core->empty()) continue;
     cycleSettings(c, o, iterations, recorded.task_duration, core->settings);
@@ -586,9 +616,7 @@ int replayCycles(const Arguments& args, const std::string& ns, const BagStates& 
     out = c.law_ran ? core->compute(referenceFromMsg(c)) : core->hover();
     bool same = true;
     const double diff = commandDifference(c, out, same);
-    ++n.cycles;
-    n.identical += same;
-    n.max_diff = std::max(n.max_diff, diff);
+    n.add(same, diff);
     if (csv) {
       std::fprintf(csv, "%lu,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n",
                    static_cast<unsigned long>(c.step), c.command[0], c.command[1], c.command[2],

@@ -61,8 +61,10 @@ class VehicleBagTest(unittest.TestCase):
     def check_a_dropped_state_is_taken_from_its_control(self, bag, replay, states, controls):
         """A state the recorder dropped (a loaded machine): replay takes it
         from the control message that used it (Control.state_used) and gives
-        every command again; with that message dropped too it says so and
-        the commands differ from there."""
+        every command again; with those control messages dropped too the
+        history differs and replay says from where. A control message the
+        recorder dropped (header.seq skips it): replay compares the cycles
+        before it, the report the controller's metrics up to it."""
         ns = rospy.get_namespace().rstrip("/")
         # A state some cycle used: on a loaded machine two states can come
         # between two cycles, and the controller never uses the first.
@@ -71,23 +73,45 @@ class VehicleBagTest(unittest.TestCase):
         self.assertTrue(used, "no control cycle used a recorded state")
         dropped = used[len(used) // 2]
         users = [c.step for c in controls if c.state_used.step == dropped]
-        for drop_controls, rc_expected in (((), 0), (users, 1)):
+        lost = sum(1 for c in controls if c.step in users)
+        after = min(c.step for c in controls if c.step > min(users) and c.step not in users)
+        gap = "%d control messages missing from the bag (the recorder dropped them, first before step %d)" % (
+            lost, after)
+        # The state alone, the state and its users, its users alone.
+        for drop_state, drop_controls, rc_expected in ((True, (), 0), (True, users, 1), (False, users, 0)):
             thinned = bag[:-len(".bag")] + "_dropped.bag"
             with rosbag.Bag(bag) as b, rosbag.Bag(thinned, "w") as out:
                 for topic, m, t in b.read_messages():
-                    if not ((topic == ns + "/state" and m.step == dropped)
+                    if not ((drop_state and topic == ns + "/state" and m.step == dropped)
                             or (topic == ns + "/control" and m.step in drop_controls)):
                         out.write(topic, m, t)
             rc, log = run(replay[:3] + [thinned] + replay[4:])
-            os.remove(thinned)
             self.assertEqual(rc, rc_expected, log)
             if rc_expected == 0:
                 self.assertIn(" 0 differ, max |dU| = 0 ", log)
+            if not drop_controls:
                 self.assertIn("state steps missing from the bag (the recorder dropped them, first %d) were taken "
                               "from the control messages that used them" % dropped, log)
-            else:
+            elif drop_state:
                 self.assertIn("missing from the bag and from its control messages (the recorder dropped them, "
                               "first %d)" % dropped, log)
+            else:
+                self.assertIn(gap, log)
+                self.check_the_report_compares_up_to_the_gap(thinned, lost, min(users))
+            os.remove(thinned)
+
+    def check_the_report_compares_up_to_the_gap(self, bag, missing, first_missing):
+        out = tempfile.mkdtemp(prefix="vehicle_report_gap_")
+        rc, log = run(["rosrun", "aurora", "report", bag, "--out", out, "--no-video"])
+        self.assertEqual(rc, 0, log)
+        with open(os.path.join(out, "metrics.json")) as f:
+            metrics = json.load(f)
+        drone = metrics["drones"][0] if "drones" in metrics else metrics
+        self.assertEqual(drone["control_messages_missing"], missing)
+        self.assertLess(drone["metrics_compared_up_to_step"], first_missing)
+        self.assertTrue(drone["metrics_match_controller"])
+        # Over the whole flight the recomputed metrics lack the dropped terms.
+        self.assertLess(drone["iae"], drone["controller_iae"])
 
 
 if __name__ == "__main__":

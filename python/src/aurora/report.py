@@ -112,7 +112,8 @@ def read_bag(bag, namespaces):
     if missing:
         raise ReportError("bag '%s' lacks the topics the report needs: missing %s; present: %s"
                           % (bag.filename, ", ".join(missing), ", ".join(present) or "none"))
-    data = {ns: {"states": [], "controls": {}, "control_stamps": [], "cmd_times": []} for ns in namespaces}
+    data = {ns: {"states": [], "controls": {}, "control_stamps": [], "control_seqs": [], "cmd_times": []}
+            for ns in namespaces}
     wanted = {}
     for ns in namespaces:
         wanted[ns + "/state"] = (ns, "state")
@@ -126,6 +127,7 @@ def read_bag(bag, namespaces):
                 d["states"].append(msg)
             elif kind == "control":
                 d["control_stamps"].append(msg.header.stamp.to_sec())
+                d["control_seqs"].append((msg.header.seq, msg.step))
                 d["controls"].setdefault(msg.step, msg)  # a re-sent state is answered twice: keep the first
             else:
                 d["cmd_times"].append(t.to_sec())
@@ -156,6 +158,33 @@ def loop_clock(steps, ts):
         while at < step:
             t, at = t + ts, at + 1
         yield step, t
+
+
+def control_gap(seqs):
+    """Control messages the recorder dropped (a loaded machine): header.seq,
+    which roscpp numbers per publisher, skips them. `seqs`: (seq, step) in
+    the bag's order. How many are missing, and the step of the first message
+    after the first gap (None without one)."""
+    missing, first = 0, None
+    for (before, _), (seq, step) in zip(seqs, seqs[1:]):
+        if seq > before + 1:
+            missing += seq - before - 1
+            first = step if first is None else first
+    return missing, first
+
+
+def controller_metrics_match(controls, ts, gap_step):
+    """Whether the metrics recomputed from the control messages equal the
+    controller's own (each message carries its running IAE, ITAE, IASC): over
+    the whole flight, or, where the recorder dropped control messages, up to
+    the last message before the first gap (the dropped ones' terms are not
+    in the bag). Returns (match, the last step compared)."""
+    steps = sorted(s for s in controls if gap_step is None or s < gap_step)
+    if not steps:
+        return False, None
+    iae, itae, iasc = study_metrics({s: controls[s] for s in steps}, ts)
+    last = controls[steps[-1]]
+    return (iae == last.iae and itae == last.itae and iasc == last.iasc), steps[-1]
 
 
 def study_metrics(controls, ts):
@@ -222,6 +251,8 @@ def analyse(ns, d):
     first, last = controls[min(controls)], controls[max(controls)]
     ts = first.sample_time
     iae, itae, iasc = study_metrics(controls, ts)
+    missing_controls, gap_step = control_gap(d["control_seqs"])
+    metrics_match, compared_to = controller_metrics_match(controls, ts, gap_step)
     t0 = states[min(states)].header.stamp.to_sec()
     series = flight_series(ns, states, controls, ts, t0)
     # The vehicle's own commands (a bag from before Control named them: the AR.Drone's).
@@ -254,7 +285,9 @@ def analyse(ns, d):
         "duration_s": series["t"][-1],
         "iae": iae, "itae": itae, "iasc": iasc,
         "controller_iae": last.iae, "controller_itae": last.itae, "controller_iasc": last.iasc,
-        "metrics_match_controller": (iae == last.iae and itae == last.itae and iasc == last.iasc),
+        "metrics_match_controller": metrics_match,
+        "control_messages_missing": missing_controls,  # the recorder dropped them (header.seq skips)
+        "metrics_compared_up_to_step": compared_to,     # the last step before the first missing one
         "max_position_error_m": max(series["err"]),
         "final_position_error_m": series["err"][-1],
         "delay_samples": last.delay_samples,
@@ -629,6 +662,16 @@ def video(ns, series, out_dir, fps):
     return path, len(frame_times)
 
 
+def matched_text(m):
+    """Whether the recomputed metrics equal the controller's, and how far
+    they could be compared."""
+    said = "yes" if m["metrics_match_controller"] else "NO"
+    if m["control_messages_missing"]:
+        said += " (up to step %s: %d control messages missing from the bag, the recorder dropped them)" % (
+            m["metrics_compared_up_to_step"], m["control_messages_missing"])
+    return said
+
+
 def write_markdown(bag_path, out_dir, sections, formation_lines=()):
     lines = ["# Flight report", "", "Bag: `%s`" % bag_path, ""] + list(formation_lines)
     for m, files in sections:
@@ -636,7 +679,7 @@ def write_markdown(bag_path, out_dir, sections, formation_lines=()):
         lines += ["## %s" % tag, "",
                   "| metric | value |", "|---|---|",
                   "| IAE / ITAE / IASC | %.6g / %.6g / %.6g |" % (m["iae"], m["itae"], m["iasc"]),
-                  "| equal to the controller's own | %s |" % ("yes" if m["metrics_match_controller"] else "NO"),
+                  "| equal to the controller's own | %s |" % matched_text(m),
                   "| max / final position error | %.4f m / %.4f m |" % (m["max_position_error_m"], m["final_position_error_m"]),
                   "| delay in force | %d samples (%.4f s) |" % (m["delay_samples"], m["delay_seconds"]),
                   "| controller | %s: %s (%s) |" % (m["controller"], ", ".join("%s = %g" % kv for kv in m["gains"].items()),
