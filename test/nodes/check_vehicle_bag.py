@@ -46,12 +46,7 @@ class VehicleBagTest(unittest.TestCase):
         self.assertEqual(rc, 0, log)
         self.assertIn(" 0 differ, max |dU| = 0 ", log)
         self.check_a_dropped_state_is_taken_from_its_control(bag, replay, states, controls)
-        out = tempfile.mkdtemp(prefix="vehicle_report_")
-        rc, log = run(["rosrun", "aurora", "report", bag, "--out", out, "--no-video"])
-        self.assertEqual(rc, 0, log)
-        with open(os.path.join(out, "metrics.json")) as f:
-            metrics = json.load(f)
-        drone = metrics["drones"][0] if "drones" in metrics else metrics
+        drone = self.report_metrics(bag)
         self.assertEqual(drone["vehicle"], p("vehicle"))
         self.assertEqual(drone["command_names"], p("command_names"))
         self.assertTrue(drone["metrics_match_controller"])
@@ -100,13 +95,17 @@ class VehicleBagTest(unittest.TestCase):
                 self.check_the_report_compares_up_to_the_gap(thinned, lost, min(users))
             os.remove(thinned)
 
-    def check_the_report_compares_up_to_the_gap(self, bag, missing, first_missing):
-        out = tempfile.mkdtemp(prefix="vehicle_report_gap_")
+    def report_metrics(self, bag):
+        """The report's metrics.json of the bag's vehicle."""
+        out = tempfile.mkdtemp(prefix="vehicle_report_")
         rc, log = run(["rosrun", "aurora", "report", bag, "--out", out, "--no-video"])
         self.assertEqual(rc, 0, log)
         with open(os.path.join(out, "metrics.json")) as f:
             metrics = json.load(f)
-        drone = metrics["drones"][0] if "drones" in metrics else metrics
+        return metrics["drones"][0] if "drones" in metrics else metrics
+
+    def check_the_report_compares_up_to_the_gap(self, bag, missing, first_missing):
+        drone = self.report_metrics(bag)
         self.assertEqual(drone["control_messages_missing"], missing)
         self.assertLess(drone["metrics_compared_up_to_step"], first_missing)
         self.assertTrue(drone["metrics_match_controller"])
