@@ -3,6 +3,7 @@
 // through the model equal to today's loop bit for bit.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <string>
@@ -300,4 +301,35 @@ TEST(Link, TheNodesCoreOverALinkIsTheRunners) {
   EXPECT_EQ(differ, 0);
   EXPECT_GT(hovered, 10);  // the link made the drone hover now and then
   EXPECT_EQ(node->compute(task.at(taskTime(900, p.Ts))).itae, r.itae);
+}
+
+// Through a loss burst longer than the node's history the law keeps the
+// last state its link delivered (as the sweep's StateHistory does), not the
+// newest state, which the link lost.
+TEST(Link, ALossBurstLongerThanTheNodesHistoryKeepsTheLastStateDelivered) {
+  constexpr int kShort = 64;
+  ControllerSettings set;
+  set.vehicle = aurora_sim::referenceArdrone2Params();
+  set.Ts = set.vehicle.Ts;
+  set.link.uplink.loss = 0.5;
+  set.link.uplink.burst = 300.0;
+  set.link.seed = 7;
+  std::unique_ptr<DelayedController<kShort>> node(new DelayedController<kShort>());
+  node->settings = set;
+  node->configureLink();
+  const double desired[3] = {1.0, 1.0, 1.0};
+  long delivered = -1, burst = 0, longest = 0, checked = 0;
+  for (long k = 0; k < 3000; ++k) {
+    StateSample s;
+    s.step = k;
+    node->push(s);
+    const ControlOutput out = node->compute(desired);
+    if (out.state_arrived) delivered = k, burst = 0;
+    else longest = std::max(longest, ++burst);
+    if (delivered < 0) continue;
+    EXPECT_EQ(out.used->step, delivered) << "step " << k << ", " << burst << " states lost in a row";
+    checked += burst > kShort;
+  }
+  EXPECT_GT(longest, kShort);  // the seed gives bursts longer than the history
+  EXPECT_GT(checked, 0);
 }

@@ -126,6 +126,7 @@ class DelayedController {
 
   void reset() {
     history_.clear();
+    held_valid_ = false;
     side_.memory.reset();
     link_.reset();
     resetMetrics();
@@ -164,6 +165,7 @@ class DelayedController {
     if (link_.active()) {
       link_.setDelay(settings.delay);
       used_step_ = link_.stateReceived(s.step);
+      holdUsedState();
     }
     return true;
   }
@@ -182,7 +184,8 @@ class DelayedController {
   // The state the law uses this cycle: the delay rule's, or the newest its
   // link delivered. Requires !empty().
   const StateSample& delivered() const {
-    return link_.active() ? stateOfStep(used_step_) : history_.delayed(settings.delay);
+    if (!link_.active()) return history_.delayed(settings.delay);
+    return held_valid_ ? held_ : newest();  // newest: before the link delivered any state
   }
 
   ControlOutput compute(const Reference<double>& ref) {
@@ -242,12 +245,19 @@ class DelayedController {
     return predicted;
   }
 
-  // The stored state of step `step` (the link's choice), newest first.
-  const StateSample& stateOfStep(long step) const {
+  // The link's choice, held from when it was chosen (it arrived, so it is
+  // in the history then): through a loss burst longer than the history the
+  // law keeps the last state delivered, as the sweep's StateHistory does,
+  // not a state the link lost.
+  void holdUsedState() {
+    if (held_valid_ && held_.step == used_step_) return;
     for (long i = 0; i < history_.size() && i < Capacity; ++i) {
-      if (history_.delayed(i).step == step) return history_.delayed(i);
+      if (history_.delayed(i).step == used_step_) {
+        held_ = history_.delayed(i);
+        held_valid_ = true;
+        return;
+      }
     }
-    return newest();
   }
 
   // The drone's side of the command over the link (after the metrics, which
@@ -299,6 +309,8 @@ class DelayedController {
   LoopClock clock_;
   NodeLink<Capacity> link_;
   long used_step_ = -1;  // over a link: the step of the state the law uses
+  StateSample held_;     // ... and that state (held_valid_: the link has delivered one)
+  bool held_valid_ = false;
   PredictorRun<Vehicle, double> predictor_run_;
   std::unique_ptr<HostPredictor<Vehicle, double>> predictor_;
 };
