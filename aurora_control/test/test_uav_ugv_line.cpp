@@ -123,7 +123,7 @@ TEST(UavUgvLine, TheStandardScenarioTracksAsAuRoRAs) {
 }
 
 // Check 5 (docs/formation.md, "Formation checks"): the Pioneer's commands as
-// its law sent them, against real_ground.yaml's limits (the study's
+// it applies them, against real_ground.yaml's limits (the study's
 // defaults); the drone is no ground robot. The standard scenario holds it
 // with its largest share; a speed limit below what the Pioneer is sent
 // fails it, and only it.

@@ -146,9 +146,10 @@ struct FormationMetrics {
     ok[3] = ok[3] & finite & (r >= c.min_distance);
   }
 
-  // Check 5 at a tick: each ground robot's commands U (as its law sent
-  // them; Vehicle: the crew's, a robot's params choose for a mixed crew)
-  // within the limits. A NaN command fails it and is kept.
+  // Check 5 at a tick: each ground robot's commands U (as it applies them:
+  // its law's, over its downlink; Vehicle: the crew's, a robot's params
+  // choose for a mixed crew) within the limits. A NaN command fails it and
+  // is kept.
   template <class Vehicle, class Params, class Step>
   AURORA_HD void addCommands(const FormationCriteria<T>& c, const Params* params, const Step* steps) {
     using aurora_common::select;
