@@ -29,7 +29,7 @@ struct RunInfo {
 // (the run stopped early at another check's failure while this one held).
 // A sweep of one robot has four checks, a formation sweep five.
 struct Counts {
-  static constexpr int kMostChecks = 5;
+  static constexpr int kMostChecks = aurora_control::kFormationChecks;
   explicit Counts(int check_count = 4) : checks(check_count) {}
   int checks;
   long combinations = 0;
@@ -39,7 +39,7 @@ struct Counts {
   long not_reached[kMostChecks] = {0, 0, 0, 0, 0};
   long long steps = 0;
 };
-inline int checkCount(bool formation) { return formation ? 5 : 4; }
+inline int checkCount(bool formation) { return formation ? aurora_control::kFormationChecks : 4; }
 
 // `iterations`: the steps of a complete run (studyIterationCount).
 Counts countResults(const std::vector<SimResult>& results, long iterations, int checks = 4);

@@ -173,16 +173,17 @@ def control_gap(seqs):
     return missing, first
 
 
-def controller_metrics_match(controls, ts, gap_step):
+def controller_metrics_match(controls, ts, gap_step, whole):
     """Whether the metrics recomputed from the control messages equal the
     controller's own (each message carries its running IAE, ITAE, IASC): over
-    the whole flight, or, where the recorder dropped control messages, up to
-    the last message before the first gap (the dropped ones' terms are not
-    in the bag). Returns (match, the last step compared)."""
+    the whole flight (`whole`: study_metrics of all of them), or, where the
+    recorder dropped control messages, up to the last message before the
+    first gap (the dropped ones' terms are not in the bag). Returns (match,
+    the last step compared)."""
     steps = sorted(s for s in controls if gap_step is None or s < gap_step)
     if not steps:
         return False, None
-    iae, itae, iasc = study_metrics({s: controls[s] for s in steps}, ts)
+    iae, itae, iasc = whole if gap_step is None else study_metrics({s: controls[s] for s in steps}, ts)
     last = controls[steps[-1]]
     return (iae == last.iae and itae == last.itae and iasc == last.iasc), steps[-1]
 
@@ -252,7 +253,7 @@ def analyse(ns, d):
     ts = first.sample_time
     iae, itae, iasc = study_metrics(controls, ts)
     missing_controls, gap_step = control_gap(d["control_seqs"])
-    metrics_match, compared_to = controller_metrics_match(controls, ts, gap_step)
+    metrics_match, compared_to = controller_metrics_match(controls, ts, gap_step, (iae, itae, iasc))
     t0 = states[min(states)].header.stamp.to_sec()
     series = flight_series(ns, states, controls, ts, t0)
     # The vehicle's own commands (a bag from before Control named them: the AR.Drone's).

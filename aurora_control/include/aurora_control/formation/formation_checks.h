@@ -104,10 +104,13 @@ AURORA_HD inline T closestPair(const T X[Shape::kVariables]) {
   return closest;
 }
 
+// The formation's checks: 1-5 of docs/formation.md, "Formation checks".
+constexpr int kFormationChecks = 5;
+
 template <typename T, typename Mask, class Shape>
 struct FormationMetrics {
   static constexpr int kN = Shape::kVariables;
-  static constexpr int kChecks = 5;
+  static constexpr int kChecks = kFormationChecks;
   T iae_position, iae_shape;      // [m s] after settle_time
   T max_position, max_shape;      // [m] the largest errors after settle_time
   T closest;                      // [m] the smallest distance between drones, whole flight
