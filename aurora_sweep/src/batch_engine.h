@@ -19,11 +19,16 @@
 namespace xsimd {
 // The model's sin and cos of one angle in one go (found by argument-dependent
 // lookup from the AR.Drone's model step): xsimd shares the range reduction.
+// A lane that is not finite (a diverged flight runs on beside the others)
+// takes NaN (x - x: the NaN its sin and cos give), without the call: xsimd
+// reduces a batch with such a lane element by element, at a scalar's cost.
 template <class T, class A>
 inline void sinCos(const batch<T, A>& x, batch<T, A>& s, batch<T, A>& c) {
-  const auto sc = xsimd::sincos(x);
-  s = sc.first;
-  c = sc.second;
+  const auto bad = !xsimd::isfinite(x);
+  const auto sc = xsimd::sincos(xsimd::select(bad, batch<T, A>(T(0)), x));
+  const batch<T, A> nan = x - x;
+  s = xsimd::select(bad, nan, sc.first);
+  c = xsimd::select(bad, nan, sc.second);
 }
 // Each lane's iteration number as a batch of T (aurora_control::loopIteration).
 template <class T, class A>

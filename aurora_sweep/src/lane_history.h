@@ -109,12 +109,22 @@ class LaneHistory {
   // latched per lane as StateHistory::read does (a step read before is the
   // state read then: after a long loss burst its slot holds a newer state).
   void read(const I& step, B X[kStates]) {
-    const I base = ((start_ + step) & I(Int(Capacity - 1))) * I(Int(W * L)) + lane_;
+    const I slot = (start_ + step) & I(Int(Capacity - 1));
+    const I base = slot * I(Int(W * L)) + lane_;
     const auto fresh = xsimd::bool_cast(step != held_step_ | count_ != held_count_);
     aurora_control::LawSample<B, Law> sample;
-    for (int j = 0; j < W; ++j) {
-      held_[j] = xsimd::select(fresh, gatherLanes<B>(ring_.data(), base + I(Int(j * L))), held_[j]);
-      sample.v[j] = held_[j];
+    long same = -1;  // the slot every lane reads, if they read one (a drone whose delay the batch shares)
+    if (sameSlot(slot, same)) {
+      // One slot: a plain load per input, no gather (the same values).
+      for (int j = 0; j < W; ++j) {
+        held_[j] = xsimd::select(fresh, B::load_aligned(&ring_[(same * W + j) * L]), held_[j]);
+        sample.v[j] = held_[j];
+      }
+    } else {
+      for (int j = 0; j < W; ++j) {
+        held_[j] = xsimd::select(fresh, gatherLanes<B>(ring_.data(), base + I(Int(j * L))), held_[j]);
+        sample.v[j] = held_[j];
+      }
     }
     held_step_ = step;
     held_count_ = count_ + I(Int(1));  // a restarted lane (count 0 again) never reuses its old run's state
@@ -122,6 +132,17 @@ class LaneHistory {
   }
 
  private:
+  // Whether every lane's slot is one (`slot` then).
+  static bool sameSlot(const I& slots, long& slot) {
+    alignas(64) Int at[L];
+    slots.store_aligned(at);
+    for (int l = 1; l < L; ++l) {
+      if (at[l] != at[0]) return false;
+    }
+    slot = long(at[0]);
+    return true;
+  }
+
   std::vector<T, xsimd::aligned_allocator<T, 64>> ring_;
   B held_[W];                         // each lane's state read last (read's latch) ...
   I held_step_ = I(Int(-1));          // ... its step

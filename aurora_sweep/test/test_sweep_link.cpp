@@ -15,6 +15,7 @@
 #include "aurora_sweep/kernel_entry.h"
 #include "sweep_test_support.h"
 #ifdef AURORA_SWEEP_LANES  // xsimd >= 8
+#include "../src/lane_history.h"
 #include "../src/lane_links.h"
 #endif
 
@@ -116,6 +117,53 @@ void expectLanePhiloxIsRandom123s() {
 
 TEST(SweepLink, LanePhiloxIsRandom123s) {
   expectLanePhiloxIsRandom123s<xsimd::default_arch>();
+}
+
+// The SIMD engine's history gives each lane the state of its own step,
+// whether the lanes read one slot (a plain load: a drone whose delay the
+// batch shares) or several (a gather); a step read again is the one latched.
+TEST(SweepLink, ALaneHistoryReadsEachLanesStepFromOneSlotOrMany) {
+  using Law = aurora_control::ArdroneLaw<aurora_control::LawType::kUnderactuated>;
+  using History = LaneHistory<Law, float, xsimd::default_arch, 16>;
+  using B = History::B;
+  using I = History::I;
+  constexpr int L = History::L, S = Law::Vehicle::kStates;
+  History history;
+  for (int l = 0; l < L; ++l) history.startLane(l);
+  // State k of lane l: component i is 1000 k + 10 i + l.
+  auto value = [](int k, int i, int l) { return float(1000 * k + 10 * i + l); };
+  for (int k = 0; k < 12; ++k) {
+    B X[S];
+    for (int i = 0; i < S; ++i) {
+      alignas(64) float lanes[L];
+      for (int l = 0; l < L; ++l) lanes[l] = value(k, i, l);
+      X[i] = B::load_aligned(lanes);
+    }
+    history.push(X);
+  }
+  auto expectSteps = [&](const int (&steps)[L]) {
+    alignas(64) int32_t at[L];
+    for (int l = 0; l < L; ++l) at[l] = steps[l];
+    B X[S];
+    history.read(I::load_aligned(at), X);
+    aurora_control::LawSample<float, Law> mask;
+    for (int j = 0; j < Law::Input::kWidth; ++j) mask.v[j] = 1.0f;
+    float read[S];
+    mask.toState(read);  // 1 where the law reads a component
+    for (int i = 0; i < S; ++i) {
+      alignas(64) float got[L];
+      X[i].store_aligned(got);
+      for (int l = 0; l < L; ++l) {
+        EXPECT_EQ(got[l], read[i] == 1.0f ? value(steps[l], i, l) : 0.0f) << "component " << i << " lane " << l;
+      }
+    }
+  };
+  int same[L], mixed[L], again[L];
+  for (int l = 0; l < L; ++l) same[l] = 7, mixed[l] = 11 - l % 5, again[l] = l % 2 ? 7 : 11 - l % 5;
+  expectSteps(same);
+  expectSteps(mixed);
+  expectSteps(again);
+  expectSteps(same);
 }
 #endif
 

@@ -47,7 +47,7 @@ AURORA_HD inline void cross(const T a[3], const T b[3], T c[3]) {
 }
 
 // Solves A x = b for a symmetric positive definite A (Cholesky, in place:
-// A becomes its factor, b the solution).
+// A's lower triangle, all it reads, becomes its factor; b the solution).
 template <typename T, int N>
 AURORA_HD inline void solveSpd(T A[N][N], T b[N]) {
   using std::sqrt;
@@ -143,15 +143,17 @@ class TriangleJacobian {
     fullRows(rows);
     T n[9];
     rollDirection(n);
+    // The lower triangle (all solveSpd reads) of J^T J + n n^T, the sums
+    // in the rows' order; a position row's product is nonzero only where
+    // both columns are its axis (its entries are 1/3 there, 0 elsewhere).
     T M[9][9];
     for (int i = 0; i < 9; ++i) {
-      out[i] = T(0);
-      for (int j = 0; j < 9; ++j) M[i][j] = n[i] * n[j];
-    }
-    for (int r = 0; r < 9; ++r) {
-      for (int i = 0; i < 9; ++i) {
-        out[i] = out[i] + rows[r][i] * v[r];
-        for (int j = 0; j < 9; ++j) M[i][j] = M[i][j] + rows[r][i] * rows[r][j];
+      out[i] = rows[i % 3][i] * v[i % 3];
+      for (int r = 3; r < 9; ++r) out[i] = out[i] + rows[r][i] * v[r];
+      for (int j = 0; j <= i; ++j) {
+        M[i][j] = n[i] * n[j];
+        if (i % 3 == j % 3) M[i][j] = M[i][j] + rows[i % 3][i] * rows[i % 3][j];
+        for (int r = 3; r < 9; ++r) M[i][j] = M[i][j] + rows[r][i] * rows[r][j];
       }
     }
     solveSpd<T, 9>(M, out);

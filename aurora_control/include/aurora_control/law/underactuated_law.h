@@ -79,6 +79,13 @@ AURORA_HD inline void pinvTimes(const aurora_sim::ArdroneParams<T>& p, const T n
   }
 }
 
+// pinv(A) [0; w_r]: pinvTimes of torques alone.
+template <typename T>
+AURORA_HD inline void pinvTorque(const aurora_sim::ArdroneParams<T>& p, const T w_r[3], T out[4]) {
+  const T c[3] = {w_r[0] / p.k1, w_r[1] / p.k1, w_r[2] / p.k2};
+  for (int j = 0; j < 4; ++j) out[j] = (T(mix(1, j)) * c[0] + T(mix(2, j)) * c[1] + T(mix(3, j)) * c[2]) / T(4);
+}
+
 // A Fr: the body force along n and the three torques.
 template <typename T>
 AURORA_HD inline void actuation(const aurora_sim::ArdroneParams<T>& p, const T n[3], const T F[4],
@@ -114,15 +121,16 @@ template <typename T>
 AURORA_HD inline void reducedForces(const aurora_sim::ArdroneParams<T>& p, const T R[3][3],
                                     const T Mr[3][3], const T Cr_rates[3], const T eta[6], T Fr[4]) {
   const T n[3] = {R[0][2], R[1][2], R[2][2]};
-  const T zero3[3] = {T(0), T(0), T(0)};
   // Ma = pinv(A) MM, column by column; Ea = pinv(A) (CC X(7:12) + GG).
+  // MM's first three columns are m e_j (forces only): pinv(A) gives
+  // (n . m e_j) v0 / 4 = m n_j / 4 on every rotor; the last three (torques
+  // only) pinvTorque. Both the values pinvTimes gives, without its zero terms.
   T Ma[6][4];
   for (int j = 0; j < 3; ++j) {
-    T unit[3] = {T(0), T(0), T(0)};
-    unit[j] = p.m;
-    pinvTimes(p, n, unit, zero3, Ma[j]);
+    const T force = n[j] * p.m / T(4);
+    for (int r = 0; r < 4; ++r) Ma[j][r] = force;
     const T mr_col[3] = {Mr[0][j], Mr[1][j], Mr[2][j]};
-    pinvTimes(p, n, zero3, mr_col, Ma[3 + j]);
+    pinvTorque(p, mr_col, Ma[3 + j]);
   }
   const T gravity[3] = {T(0), T(0), p.m * p.g};
   T Ea[4];
@@ -151,12 +159,14 @@ AURORA_HD inline void commandsFromForces(const aurora_sim::ArdroneParams<T>& p, 
                                          const T X[aurora_sim::kStateSize], const T Fd[4], T U[4]) {
   using std::sqrt;
   using std::tanh;
+  // The motor's constants, once per call (the rotors' loop stores to
+  // memory the compiler cannot tell from p's).
+  const T inertia = p.Jm * p.Rm / p.Km, damping = p.Bm * p.Rm / p.Km + p.Kb, drag = p.Ct * p.Rm / (p.Km * p.r);
   T Vr[4];
   for (int i = 0; i < 4; ++i) {
     const T Wda = mem.Wd[i];
     mem.Wd[i] = sqrt(Fd[i] / p.Cf);
-    Vr[i] = -p.Vo + p.Jm * p.Rm / p.Km * (mem.Wd[i] - Wda) / p.Ts +
-            (p.Bm * p.Rm / p.Km + p.Kb) * mem.Wd[i] + p.Ct * p.Rm / (p.Km * p.r) * mem.Wd[i] * mem.Wd[i];
+    Vr[i] = -p.Vo + inertia * (mem.Wd[i] - Wda) / p.Ts + damping * mem.Wd[i] + drag * mem.Wd[i] * mem.Wd[i];
   }
   const T sigma = T(0.25) * p.Ts;
   const T kd[4] = {p.kdp, p.kdt, p.kdz, p.kds};
