@@ -59,10 +59,10 @@ constexpr long kChunk = 64;
 
 // Runs the combinations [first, total) of `grid` on the lanes of batches of
 // instruction set Arch, law `Law` on its vehicle (setup), histories of
-// Capacity samples; each lane's iteration is loopIteration (closed_loop.h)
+// `capacity` samples; each lane's iteration is loopIteration (closed_loop.h)
 // over lane policies (lane_history.h), with the state predictor when
 // `Predicted` (lane_predictor.h: the history then keeps whole states).
-template <typename T, class Arch, int Capacity, class Law, bool Predicted = false>
+template <typename T, class Arch, class Law, bool Predicted = false>
 class BatchWorker {
  public:
   using LaneOps = Lanes<T, Arch>;
@@ -72,16 +72,18 @@ class BatchWorker {
   using Vehicle = typename Law::Vehicle;
   using Data = typename Law::Data;
   using Reader = typename std::conditional<Predicted, aurora_control::WholeStateReader<Vehicle>, Law>::type;
-  using History = LaneHistory<Reader, T, Arch, Capacity>;
-  using Predictor = LanePredictor<Vehicle, T, Arch, 2 * Capacity>;
+  using History = LaneHistory<Reader, T, Arch>;
+  using Predictor = LanePredictor<Vehicle, T, Arch>;
   using Int = typename History::Int;
   using I = typename History::I;
 
-  BatchWorker(const SimSetup<Vehicle, T>& setup, const GridView& grid, long first, long total,
+  BatchWorker(const SimSetup<Vehicle, T>& setup, int capacity, const GridView& grid, long first, long total,
               std::vector<SimResult>& out, std::atomic<long>& next, Progress& progress)
-      : grid_(grid), first_(first), total_(total), out_(out), next_(next), progress_(progress), setup_(setup) {
+      : grid_(grid), first_(first), total_(total), out_(out), next_(next), progress_(progress), setup_(setup),
+        capacity_(capacity) {
+    history_.allocate(capacity_);
     if (!setup_.ideal_link) {
-      links_.reset(new LaneModelLinks<Reader, T, Arch, Capacity>(setup_.config.link, double(setup_.model.Ts), history_));
+      links_.reset(new LaneModelLinks<Reader, T, Arch>(setup_.config.link, double(setup_.model.Ts), history_));
     }
     loop_.model = setup_.model.template cast<B>();
     loop_.plant = loop_.model;  // per lane when the model varies (startLane)
@@ -216,6 +218,7 @@ class BatchWorker {
   long chunk_next_ = 0, chunk_end_ = 0;
 
   const SimSetup<Vehicle, T> setup_;
+  const int capacity_;  // the history's (limits.h, historyCapacity)
   // Each lane's vehicle and gains; the nominal model the law inverts.
   aurora_control::LoopParams<Data, B> loop_;
   const aurora_control::ClampPolicy clamp_{setup_.config.clamp_commands, setup_.config.clamp_at_drone};
@@ -223,11 +226,12 @@ class BatchWorker {
   aurora_control::LoopState<Data, B, M> sim_;
   History history_;
   aurora_control::IdealLinkOf<I> ideal_{I(Int(0))};        // each lane's delay [samples], over the delay rule
-  std::unique_ptr<LaneModelLinks<Reader, T, Arch, Capacity>> links_;  // or each lane's link model
+  std::unique_ptr<LaneModelLinks<Reader, T, Arch>> links_;  // or each lane's link model
   // With Predicted, in this object (its batches need the alignment the
   // engine's C++14 `new` does not give; its rings are on the heap).
   typename std::conditional<Predicted, Predictor, NoLanePredictor>::type predictor_{
-      setup_.predictor, setup_.predictor_model, vehicleStart<Vehicle, T>(setup_.model), setup_.config.clamp_at_drone};
+      setup_.predictor, setup_.predictor_model, vehicleStart<Vehicle, T>(setup_.model), setup_.config.clamp_at_drone,
+      2 * capacity_};
   bool active_[L];
   long index_[L];
 };
@@ -260,24 +264,26 @@ void onRange(const SweepSpec& spec, int threads, std::vector<SimResult>& out, Wo
   onThreads(threads, [&] { work(grid, spec.rangeBegin(), spec.rangeEnd(), next); });
 }
 
-template <typename T, class Arch, int Capacity, class Law>
+template <typename T, class Arch, class Law>
 void runBatchWith(const SweepSpec& spec, int threads, std::vector<SimResult>& out, Progress& progress) {
   const auto setup = makeSetup<typename Law::Vehicle, T>(spec);
+  const int capacity = aurora_control::historyCapacity(spec.historyNeeded());
   onRange(spec, threads, out, [&](const GridView& grid, long first, long total, std::atomic<long>& next) {
     if (spec.predicting()) {
-      BatchWorker<T, Arch, Capacity, Law, true>(setup, grid, first, total, out, next, progress).run();
+      BatchWorker<T, Arch, Law, true>(setup, capacity, grid, first, total, out, next, progress).run();
     } else {
-      BatchWorker<T, Arch, Capacity, Law>(setup, grid, first, total, out, next, progress).run();
+      BatchWorker<T, Arch, Law>(setup, capacity, grid, first, total, out, next, progress).run();
     }
   });
 }
 
-template <typename T, class Arch, int Capacity, class Law, template <typename> class Shape>
+template <typename T, class Arch, class Law, template <typename> class Shape>
 void runFormationBatchWith(const SweepSpec& spec, const ShapeRun<double, Shape, typename Law::Data>& run, int threads,
                            std::vector<SimResult>& out, Progress& progress) {
   const FormationSetup<T, Shape, typename Law::Data> setup = makeFormationSetup<T>(spec, run);
+  const int capacity = aurora_control::historyCapacity(spec.historyNeeded());
   onRange(spec, threads, out, [&](const GridView& grid, long first, long total, std::atomic<long>& next) {
-    FormationBatch<T, Arch, Capacity, Law, Shape>(setup, grid, first, total, out, next, progress).run();
+    FormationBatch<T, Arch, Law, Shape>(setup, capacity, grid, first, total, out, next, progress).run();
   });
 }
 
@@ -287,14 +293,14 @@ void runFormationBatchWith(const SweepSpec& spec, const ShapeRun<double, Shape, 
 template <class Arch>
 void runBatchArch(const SweepSpec& spec, int threads, std::vector<SimResult>& out,
                   Progress& progress) {
+  // The history's capacity is a run-time value here (one engine for all).
   if (spec.formation()) {
-    return withFormationTypes(spec, [&](auto type, auto capacity, auto law, const auto& run) {
-      runFormationBatchWith<decltype(type), Arch, decltype(capacity)::value, decltype(law)>(spec, run, threads, out,
-                                                                                            progress);
+    return withFormationTypes(spec, [&](auto type, auto, auto law, const auto& run) {
+      runFormationBatchWith<decltype(type), Arch, decltype(law)>(spec, run, threads, out, progress);
     });
   }
-  withSweepTypes(spec, [&](auto type, auto capacity, auto law) {
-    runBatchWith<decltype(type), Arch, decltype(capacity)::value, decltype(law)>(spec, threads, out, progress);
+  withSweepTypes(spec, [&](auto type, auto, auto law) {
+    runBatchWith<decltype(type), Arch, decltype(law)>(spec, threads, out, progress);
   });
 }
 

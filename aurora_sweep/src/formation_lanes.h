@@ -19,7 +19,7 @@ namespace aurora_sweep {
 
 namespace {
 
-template <typename T, class Arch, int Capacity, class Law, template <typename> class Shape = aurora_control::LineFormation>
+template <typename T, class Arch, class Law, template <typename> class Shape = aurora_control::LineFormation>
 class FormationBatch {
  public:
   using LaneOps = Lanes<T, Arch>;
@@ -33,15 +33,17 @@ class FormationBatch {
   using Data = typename Law::Data;
   using Vehicle = typename Law::Vehicle;
   static constexpr int S = Vehicle::kStates;
-  using History = LaneHistory<Law, T, Arch, Capacity>;
-  using Links = LaneModelLinks<Law, T, Arch, Capacity>;
+  using History = LaneHistory<Law, T, Arch>;
+  using Links = LaneModelLinks<Law, T, Arch>;
 
-  FormationBatch(const FormationSetup<T, Shape, Data>& setup, const GridView& grid, long first, long total,
-                 std::vector<SimResult>& out, std::atomic<long>& next, Progress& progress)
+  // `capacity`: each drone's history's (limits.h, historyCapacity).
+  FormationBatch(const FormationSetup<T, Shape, Data>& setup, int capacity, const GridView& grid, long first,
+                 long total, std::vector<SimResult>& out, std::atomic<long>& next, Progress& progress)
       : grid_(grid), first_(first), total_(total), out_(out), next_(next), progress_(progress), setup_(setup) {
     // A sweep's link values may change a drone's link per combination: the
     // vectorized links apply unless the drone's own jitter is geometric.
     for (int d = 0; d < D; ++d) {
+      history_[d].allocate(capacity);
       ideal_[d].delay = I(Int(0));
       if (!setup_.ideal_link) {
         links_[d].reset(new Links(setup_.run.drone[d].link, double(setup_.run.drone[d].plant.Ts), history_[d]));

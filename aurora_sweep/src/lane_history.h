@@ -5,6 +5,7 @@
 // batch_engine.h only.
 #pragma once
 
+#include <stdexcept>
 #include <type_traits>
 
 #include <xsimd/xsimd.hpp>
@@ -66,10 +67,12 @@ struct Lanes {
   }
 };
 
-// Every lane's last Capacity states as law `Law` reads them, in one ring of
-// slots [slot][j][lane]: every lane writes the same slot at each push (a
-// plain vector store); lane l's H(i) sits at slot start_l + i - 1.
-template <class Law, typename T, class Arch, int Capacity>
+// Every lane's last `capacity` states as law `Law` reads them, in one ring
+// of slots [slot][j][lane]: every lane writes the same slot at each push (a
+// plain vector store); lane l's H(i) sits at slot start_l + i - 1. The
+// capacity is the run's (limits.h, historyCapacity), set before the first
+// push: one engine for every capacity (each a compile of its own before).
+template <class Law, typename T, class Arch>
 class LaneHistory {
  public:
   using B = xsimd::batch<T, Arch>;
@@ -79,18 +82,25 @@ class LaneHistory {
   static constexpr int L = static_cast<int>(B::size);
   static constexpr int W = Input::kWidth;
   static constexpr int kStates = Law::Vehicle::kStates;
-  static_assert((Capacity & (Capacity - 1)) == 0, "history capacity must be a power of two");
 
-  LaneHistory() : ring_(static_cast<size_t>(Capacity) * W * L) {
+  LaneHistory() {
     alignas(64) Int iota[L];
     for (int l = 0; l < L; ++l) iota[l] = static_cast<Int>(l);
     lane_ = I::load_aligned(iota);
   }
 
+  // The ring's size in states (a power of two).
+  void allocate(int capacity) {
+    if (capacity <= 0 || (capacity & (capacity - 1)) != 0) throw std::invalid_argument("history capacity must be a power of two");
+    mask_ = capacity - 1;
+    ring_.assign(static_cast<size_t>(capacity) * W * L, T(0));
+  }
+  int capacity() const { return int(mask_) + 1; }
+
   // Lane l starts a run: empty, its H(1) at the next slot pushed.
   void startLane(int l) {
     Lanes<T, Arch>::set(count_, l, Int(0));
-    Lanes<T, Arch>::set(start_, l, static_cast<Int>((slot_ + 1) % Capacity));
+    Lanes<T, Arch>::set(start_, l, static_cast<Int>((slot_ + 1) & mask_));
   }
 
   // States kept by each lane: its iteration k about to run (k + 1 once pushed).
@@ -100,7 +110,7 @@ class LaneHistory {
 
   void push(const B X[kStates]) {
     ++slot_;
-    const long slot = slot_ % Capacity;
+    const long slot = slot_ & mask_;
     for (int j = 0; j < W; ++j) X[Input::state(j)].store_aligned(&ring_[(slot * W + j) * L]);
     count_ = count_ + I(Int(1));
   }
@@ -109,7 +119,7 @@ class LaneHistory {
   // latched per lane as StateHistory::read does (a step read before is the
   // state read then: after a long loss burst its slot holds a newer state).
   void read(const I& step, B X[kStates]) {
-    const I slot = (start_ + step) & I(Int(Capacity - 1));
+    const I slot = (start_ + step) & I(static_cast<Int>(mask_));
     const I base = slot * I(Int(W * L)) + lane_;
     const auto fresh = xsimd::bool_cast(step != held_step_ | count_ != held_count_);
     aurora_control::LawSample<B, Law> sample;
@@ -151,33 +161,37 @@ class LaneHistory {
   I start_ = I(Int(0));
   I lane_;
   long slot_ = 0;
+  long mask_ = -1;  // capacity - 1 (allocate)
 };
 
 // Every lane over its own link model: vectorized (LaneLinks) or, where those
 // do not apply (a geometric jitter), each lane's ModelLink in turn.
-template <class Law, typename T, class Arch, int Capacity>
+template <class Law, typename T, class Arch>
 class LaneModelLinks {
  public:
-  using History = LaneHistory<Law, T, Arch, Capacity>;
+  using History = LaneHistory<Law, T, Arch>;
   using B = typename History::B;
   using Int = typename History::Int;
   using I = typename History::I;
   static constexpr int L = History::L, kInputs = Law::Vehicle::kInputs;
+  template <int Capacity>
   using Link = aurora_control::ModelLink<Capacity, T, kInputs>;
 
   LaneModelLinks(const aurora_control::LinkParams& base, double Ts, const History& history) : history_(history) {
     if (laneLinksApply(base)) {
-      lanes_.reset(new LaneLinks<Capacity, T, Arch, kInputs>(std::lround(base.cmd_timeout / Ts)));
+      lanes_.reset(new LaneLinks<T, Arch, kInputs>(history.capacity(), std::lround(base.cmd_timeout / Ts)));
     } else {
-      links_.reserve(L);
-      for (int l = 0; l < L; ++l) links_.emplace_back(base, 0, 0, Ts);
+      withLinks([&](auto& links) {
+        links.reserve(L);
+        for (int l = 0; l < L; ++l) links.emplace_back(base, 0, 0, Ts);
+      });
     }
   }
 
   // Lane l's run over `link`, its draws keyed by `key`.
   void startLane(int l, const aurora_control::LinkParams& link, long delay, uint64_t key, double Ts) {
     if (lanes_) return lanes_->start(l, link, key);
-    links_[l] = Link(link, delay, key, Ts);
+    withLinks([&](auto& links) { links[l] = typename std::decay<decltype(links)>::type::value_type(link, delay, key, Ts); });
   }
 
   // The step (0-based) whose state each lane's controller receives at its k.
@@ -186,7 +200,9 @@ class LaneModelLinks {
     if (lanes_) return lanes_->uplink(k + one, history_.start(), history_.slot()) - one;
     long steps[L];
     laneSteps(k, steps);
-    return modelLinksUplink<I>(links_, steps) - one;
+    I index;
+    withLinks([&](auto& links) { index = modelLinksUplink<I>(links, steps); });
+    return index - one;
   }
 
   // The commands each lane sent at its k become the ones its vehicle applies.
@@ -194,7 +210,7 @@ class LaneModelLinks {
     if (lanes_) return lanes_->downlink(k + I(Int(1)), history_.start(), history_.slot(), U);
     long steps[L];
     laneSteps(k, steps);
-    modelLinksDownlink<kInputs>(links_, steps, U);
+    withLinks([&](auto& links) { modelLinksDownlink<kInputs>(links, steps, U); });
   }
 
  private:
@@ -204,9 +220,22 @@ class LaneModelLinks {
     for (int l = 0; l < L; ++l) steps[l] = long(at[l]);
   }
 
+  // f(the lane-by-lane links) of the history's capacity: a ModelLink's
+  // rings are arrays (a lane's run starts a new one: the smallest tier).
+  template <class F>
+  void withLinks(F&& f) {
+    switch (history_.capacity()) {
+      case aurora_control::kShortHistory: return f(short_);
+      case aurora_control::kMediumHistory: return f(medium_);
+      default: return f(full_);
+    }
+  }
+
   const History& history_;
-  std::unique_ptr<LaneLinks<Capacity, T, Arch, kInputs>> lanes_;
-  std::vector<Link> links_;
+  std::unique_ptr<LaneLinks<T, Arch, kInputs>> lanes_;
+  std::vector<Link<aurora_control::kShortHistory>> short_;
+  std::vector<Link<aurora_control::kMediumHistory>> medium_;
+  std::vector<Link<aurora_control::kDelayHistory>> full_;
 };
 
 }  // namespace

@@ -68,7 +68,7 @@ struct LanePhilox {
 // indexed by the engine's global slot, as the history: lane l's packet j at
 // slot start_l + j). Integers of the lanes' width (Int: int32 lanes for
 // float, int64 for double), so a receive is a few gathers.
-template <int Window, class Int, class Arch>
+template <class Int, class Arch>
 struct LaneChannel {
   using I = xsimd::batch<Int, Arch>;
   static constexpr int L = static_cast<int>(I::size);
@@ -79,9 +79,11 @@ struct LaneChannel {
   uint64_t lost[L];                       // 0 or 1: the chain's state
   Int newest[L];
   Int newest_at[L];
-  std::vector<Int, xsimd::aligned_allocator<Int, 64>> arrival =
-      std::vector<Int, xsimd::aligned_allocator<Int, 64>>(static_cast<size_t>(Window) * L);
+  long mask;                              // the ring's slots - 1 (a power of two - 1)
+  std::vector<Int, xsimd::aligned_allocator<Int, 64>> arrival;
   long longest_jitter = 0;                // the largest jitter_max any lane has had
+
+  explicit LaneChannel(long window) : mask(window - 1), arrival(static_cast<size_t>(window) * L) {}
 
   void start(int l, const aurora_control::LinkDirection& d, long delay_samples) {
     delay[l] = static_cast<Int>(delay_samples);
@@ -96,7 +98,7 @@ struct LaneChannel {
   // the words of its draws (jitter_w, loss_w): the one-run channel's rules
   // (lossStep, packetArrival) with the uniform jitter (uniformJitter).
   void send(const Int k[L], long slot, const uint64_t jitter_w[L], const uint64_t loss_w[L]) {
-    Int* at = &arrival[static_cast<size_t>(slot & (Window - 1)) * L];
+    Int* at = &arrival[static_cast<size_t>(slot & mask) * L];
     for (int l = 0; l < L; ++l) {
       lost[l] = aurora_control::lossStep(lost[l], loss_w[l], good[l], bad[l], flips[l]);
       const Int jitter = static_cast<Int>(aurora_control::uniformJitter(static_cast<uint32_t>(jitter_w[l]), jitter_max[l]));
@@ -110,12 +112,12 @@ struct LaneChannel {
   // Conditions are integer masks (all ones: true), not batch_bool: xsimd
   // 8.1 builds some integer comparisons element by element.
   I receive(const I& k, const I& start, const I& lane) {
-    const I zero(Int(0)), ones(Int(-1)), mask(Int(Window - 1)), jmax = I::load_unaligned(jitter_max);
+    const I zero(Int(0)), ones(Int(-1)), slots(static_cast<Int>(mask)), jmax = I::load_unaligned(jitter_max);
     const I d = I::load_unaligned(delay);
     I best = I::load_unaligned(newest), best_at = I::load_unaligned(newest_at), pending = ones;
     for (long o = 0; o <= longest_jitter; ++o) {
       const I j = k - d - I(Int(o));
-      const I a = gatherLanes<I>(arrival.data(), ((start + nonNegative(j)) & mask) * I(Int(L)) + lane);
+      const I a = gatherLanes<I>(arrival.data(), ((start + nonNegative(j)) & slots) * I(Int(L)) + lane);
       const I got = pending & atLeast(jmax, I(Int(o))) & atLeast(j, zero) & atLeast(j - best, I(Int(1))) &
                     atLeast(a, zero) & atLeast(k, a);
       best = (got & j) | (best & ~got);
@@ -124,7 +126,7 @@ struct LaneChannel {
     }
     best.store_unaligned(newest);
     best_at.store_unaligned(newest_at);
-    return ((start + nonNegative(best)) & mask) * I(Int(L)) + lane;
+    return ((start + nonNegative(best)) & slots) * I(Int(L)) + lane;
   }
 
   // All ones where a >= b, else 0 (link.h's mask form).
@@ -159,8 +161,9 @@ void modelLinksDownlink(std::vector<Link>& links, const long (&k)[L], B U[Inputs
 }
 
 // Both directions and the commands in flight on every lane (ModelLink), in
-// the engine's batches: B of T, I of Int; commands of `Inputs` values.
-template <int Window, typename T, class Arch, int Inputs = 4>
+// the engine's batches: B of T, I of Int; commands of `Inputs` values;
+// rings of `window` slots (the history's capacity).
+template <typename T, class Arch, int Inputs = 4>
 class LaneLinks {
  public:
   using B = xsimd::batch<T, Arch>;
@@ -168,7 +171,9 @@ class LaneLinks {
   using I = xsimd::batch<Int, Arch>;
   static constexpr int L = static_cast<int>(B::size);
 
-  explicit LaneLinks(long timeout_steps) : timeout_(static_cast<Int>(timeout_steps)) {
+  LaneLinks(long window, long timeout_steps)
+      : timeout_(static_cast<Int>(timeout_steps)), up_(window), down_(window), mask_(window - 1),
+        commands_(static_cast<size_t>(window) * Inputs * L) {
     for (int l = 0; l < L; ++l) lane_[l] = static_cast<Int>(l);
   }
 
@@ -199,7 +204,7 @@ class LaneLinks {
     up_.send(k, slot, words_[0], words_[1]);
     up_.receive(I::load_aligned(k), start, I::load_unaligned(lane_));
     const I newest = I::load_unaligned(up_.newest);
-    const I arrived = LaneChannel<Window, Int, Arch>::atLeast(newest, I(Int(0)));
+    const I arrived = LaneChannel<Int, Arch>::atLeast(newest, I(Int(0)));
     return ((newest + I(Int(1))) & arrived) | (count & ~arrived);
   }
 
@@ -209,7 +214,7 @@ class LaneLinks {
   void downlink(const I& count, const I& start, long slot, B U[Inputs]) {
     alignas(64) Int k[L];
     (count - I(Int(1))).store_aligned(k);
-    T* sent = &commands_[static_cast<size_t>(slot & (Window - 1)) * Inputs * L];
+    T* sent = &commands_[static_cast<size_t>(slot & mask_) * Inputs * L];
     for (int i = 0; i < Inputs; ++i) U[i].store_unaligned(sent + i * L);
     down_.send(k, slot, words_[2], words_[3]);
     const I kb = I::load_aligned(k), lane = I::load_unaligned(lane_);
@@ -227,11 +232,11 @@ class LaneLinks {
  private:
   Int timeout_;
   Int lane_[L];  // 0, 1, ..., L - 1 (no batch members: this object is not over-aligned)
-  LaneChannel<Window, Int, Arch> up_, down_;
+  LaneChannel<Int, Arch> up_, down_;
+  long mask_;  // window - 1
   uint64_t key_[2][L], ctr_[4][L];  // each lane's Philox key and counter (32-bit values)
   uint64_t words_[4][L];
-  std::vector<T, xsimd::aligned_allocator<T, 64>> commands_ =
-      std::vector<T, xsimd::aligned_allocator<T, 64>>(static_cast<size_t>(Window) * Inputs * L);  // [slot][i][lane]
+  std::vector<T, xsimd::aligned_allocator<T, 64>> commands_;  // [slot][i][lane]
 };
 
 }  // namespace aurora_sweep

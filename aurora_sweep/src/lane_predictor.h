@@ -21,7 +21,7 @@ namespace aurora_sweep {
 
 namespace {
 
-template <class Vehicle, typename T, class Arch, int Window>
+template <class Vehicle, typename T, class Arch>
 class LanePredictor {
  public:
   using B = xsimd::batch<T, Arch>;
@@ -32,14 +32,14 @@ class LanePredictor {
   static constexpr int L = static_cast<int>(B::size);
   static constexpr int kStates = Vehicle::kStates, kInputs = Vehicle::kInputs;
   static constexpr int kStateBatches = static_cast<int>(sizeof(State) / sizeof(B));
-  static_assert((Window & (Window - 1)) == 0, "the rings' size is a power of two");
   static_assert(sizeof(State) == kStateBatches * sizeof(B), "a vehicle state is a struct of its scalar only");
 
-  // `start`: the vehicle's state at the start (every lane's, scalar).
+  // `start`: the vehicle's state at the start (every lane's, scalar);
+  // rings of `window` slots (a power of two).
   LanePredictor(aurora_control::PredictorForm form, const typename Vehicle::template Params<T>& model,
-                const typename Vehicle::template State<T>& start, bool clamp)
-      : form_(form), model_(model.template cast<B>()), clamp_(clamp), start_(start),
-        sent_(static_cast<size_t>(Window) * kInputs * L, T(0)), open_X_(static_cast<size_t>(Window) * kStates * L) {
+                const typename Vehicle::template State<T>& start, bool clamp, long window)
+      : form_(form), model_(model.template cast<B>()), clamp_(clamp), start_(start), mask_(window - 1),
+        sent_(static_cast<size_t>(window) * kInputs * L, T(0)), open_X_(static_cast<size_t>(window) * kStates * L) {
     alignas(64) Int iota[L];
     for (int l = 0; l < L; ++l) iota[l] = static_cast<Int>(l);
     lane_ = I::load_aligned(iota);
@@ -72,13 +72,13 @@ class LanePredictor {
 
   // The commands every lane sent at its step k (all at this push's slot).
   void sent(const B U[kInputs]) {
-    const long slot = pushed_ & (Window - 1);
+    const long slot = pushed_ & mask_;
     for (int i = 0; i < kInputs; ++i) U[i].store_unaligned(&sent_[(slot * kInputs + i) * L]);
   }
 
  private:
   I target() const { return k_ + delay_; }
-  I slotOf(const I& step) const { return (base_ + step) & I(Int(Window - 1)); }
+  I slotOf(const I& step) const { return (base_ + step) & I(static_cast<Int>(mask_)); }
 
   // What each lane's vehicle applies at its step j (StatePredictor::applied).
   void applied(const I& j, B U[kInputs]) const {
@@ -143,7 +143,7 @@ class LanePredictor {
     }
   }
   void storeLane(int l, long slot, const T* X) {
-    slot &= Window - 1;
+    slot &= mask_;
     for (int i = 0; i < kStates; ++i) open_X_[(slot * kStates + i) * L + l] = X[i];
   }
 
@@ -157,6 +157,7 @@ class LanePredictor {
   typename Vehicle::template Params<B> model_;
   bool clamp_;
   typename Vehicle::template State<T> start_;
+  long mask_;  // the rings' slots - 1
   std::vector<T, xsimd::aligned_allocator<T, 64>> sent_;  // [slot][input][lane]
   std::vector<T> open_X_;                                 // [slot][state][lane]
   I lane_, base_ = I(Int(0)), delay_ = I(Int(0));

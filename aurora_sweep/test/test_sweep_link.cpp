@@ -124,11 +124,12 @@ TEST(SweepLink, LanePhiloxIsRandom123s) {
 // batch shares) or several (a gather); a step read again is the one latched.
 TEST(SweepLink, ALaneHistoryReadsEachLanesStepFromOneSlotOrMany) {
   using Law = aurora_control::ArdroneLaw<aurora_control::LawType::kUnderactuated>;
-  using History = LaneHistory<Law, float, xsimd::default_arch, 16>;
+  using History = LaneHistory<Law, float, xsimd::default_arch>;
   using B = History::B;
   using I = History::I;
   constexpr int L = History::L, S = Law::Vehicle::kStates;
   History history;
+  history.allocate(16);
   for (int l = 0; l < L; ++l) history.startLane(l);
   // State k of lane l: component i is 1000 k + 10 i + l.
   auto value = [](int k, int i, int l) { return float(1000 * k + 10 * i + l); };

@@ -98,7 +98,7 @@ std::vector<SimResult> simdLanes(const SimSetup<typename L::Vehicle, T>& setup, 
   std::vector<SimResult> out(static_cast<size_t>(grid.size()));
   std::atomic<long> next{0};
   Progress progress{0};
-  BatchWorker<T, xsimd::default_arch, 64, L>(setup, grid, 0, grid.size(), out, next, progress).run();
+  BatchWorker<T, xsimd::default_arch, L>(setup, 64, grid, 0, grid.size(), out, next, progress).run();
   EXPECT_EQ(progress.load(), grid.size());
   return out;
 }

@@ -20,14 +20,19 @@ constexpr int kDelayHistory = static_cast<int>(kMaxDelaySamples) + 1;
 // The history capacities the loops are compiled for: the smallest that holds
 // `max_delay` (a short history keeps a batch of lanes in cache). Calls
 // f(std::integral_constant<int, capacity>()); every runner and sweep backend
-// picks its capacity here; the CUDA backend compiles the two tiers below the
-// full history.
+// picks its capacity here (the SIMD engine's rings take it at run time);
+// the CUDA backend compiles the two tiers below the full history.
 constexpr int kShortHistory = 64, kMediumHistory = 512;
+constexpr int historyCapacity(long max_delay) {
+  return max_delay < kShortHistory ? kShortHistory : max_delay < kMediumHistory ? kMediumHistory : kDelayHistory;
+}
 template <class F>
 void withHistoryCapacity(long max_delay, F&& f) {
-  if (max_delay < kShortHistory) return f(std::integral_constant<int, kShortHistory>());
-  if (max_delay < kMediumHistory) return f(std::integral_constant<int, kMediumHistory>());
-  return f(std::integral_constant<int, kDelayHistory>());
+  switch (historyCapacity(max_delay)) {
+    case kShortHistory: return f(std::integral_constant<int, kShortHistory>());
+    case kMediumHistory: return f(std::integral_constant<int, kMediumHistory>());
+    default: return f(std::integral_constant<int, kDelayHistory>());
+  }
 }
 
 // Gains of the two laws (one range for both PD gains, one for the 12
