@@ -182,21 +182,21 @@ inline void checkRunnerDelay(long delay) {
 // std::integral_constant) and the link of a run of law `Law` with cfg's
 // link: the delay rule over an ideal one, else its model (combination 0, as
 // a single flight's and the node's). Refuses a delay the history cannot hold.
+// One flight takes the full history (a run does not depend on its size:
+// StateHistory), so each caller compiles one loop, not one per tier.
 template <class Law, typename T, typename Run>
 void withLoopLink(const StudyRun<typename Law::Data, T>& run, const RunnerConfig<T>& cfg, Run&& fly) {
   checkRunnerDelay(run.delay);
   const long history = cfg.link.ideal() ? run.delay : cfg.link.historyNeeded(run.delay);
   checkRunnerDelay(history);
-  withHistoryCapacity(history, [&](auto capacity) {
-    constexpr int kCapacity = decltype(capacity)::value;
-    if (cfg.link.ideal()) {
-      IdealLink link{run.delay};
-      return fly(capacity, link);
-    }
-    using Link = ModelLink<kCapacity, T, Law::Vehicle::kInputs>;
-    std::unique_ptr<Link> link(new Link(cfg.link, run.delay, 0, double(run.plant.Ts)));
-    fly(capacity, *link);
-  });
+  const std::integral_constant<int, kDelayHistory> capacity;
+  if (cfg.link.ideal()) {
+    IdealLink link{run.delay};
+    return fly(capacity, link);
+  }
+  using Link = ModelLink<kDelayHistory, T, Law::Vehicle::kInputs>;
+  std::unique_ptr<Link> link(new Link(cfg.link, run.delay, 0, double(run.plant.Ts)));
+  fly(capacity, *link);
 }
 
 // Runs `iterations` iterations of law `Law`; `observe(LoopObservation)` is
