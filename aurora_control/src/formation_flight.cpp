@@ -169,10 +169,9 @@ FormationFlight flyFormationFiles(const FormationFlightOptions& o, const Formati
     errors.add(obs, p.Ts);
     r.judge(obs);
   };
-  withHistoryCapacity(history, [&](auto capacity) {
-    withLaw(r.file.drones[0].controller.law, [&](auto law) {
-      runFormation<decltype(law), double, Line, decltype(capacity)::value>(r.run, r.ticks, each);
-    });
+  // The full history, as the other shapes' flights (a run does not depend on it).
+  withLaw(r.file.drones[0].controller.law, [&](auto law) {
+    runFormation<decltype(law), double, Line, kDelayHistory>(r.run, r.ticks, each);
   });
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   for (int i = 0; i < 5; ++i) r.rms[i] = errors.rms(i);
