@@ -19,10 +19,7 @@ if ! [[ "$jobs" =~ ^[1-9][0-9]*$ ]]; then
 fi
 rm -rf "$BUILD/test_results"
 start=$(date +%s)
-# The sweep's gtests (half a minute in one process) first: run_tests starts
-# the packages' gtests after every rostest, where that one ran alone at the end.
-make -C "$BUILD" run_tests_aurora_sweep_gtest_test_sweep run_tests -j"$jobs" 2>&1 |
-  grep -vE "^make\[|^\[ *[0-9]+%\]|Built target"
+make -C "$BUILD" run_tests -j"$jobs" 2>&1 | grep -vE "^make\[|^\[ *[0-9]+%\]|Built target"
 summary=$(catkin_test_results "$BUILD/test_results" --all 2>&1)
 rc=$?
 # The files with errors or failures (catkin_test_results prints counts only
