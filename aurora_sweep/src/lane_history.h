@@ -91,7 +91,9 @@ class LaneHistory {
 
   // The ring's size in states (a power of two).
   void allocate(int capacity) {
-    if (capacity <= 0 || (capacity & (capacity - 1)) != 0) throw std::invalid_argument("history capacity must be a power of two");
+    if (capacity <= 0 || (capacity & (capacity - 1)) != 0) {
+      throw std::invalid_argument("history capacity must be a power of two");
+    }
     mask_ = capacity - 1;
     ring_.assign(static_cast<size_t>(capacity) * W * L, T(0));
   }
@@ -123,18 +125,15 @@ class LaneHistory {
     const I base = slot * I(Int(W * L)) + lane_;
     const auto fresh = xsimd::bool_cast(step != held_step_ | count_ != held_count_);
     aurora_control::LawSample<B, Law> sample;
-    long same = -1;  // the slot every lane reads, if they read one (a drone whose delay the batch shares)
-    if (sameSlot(slot, same)) {
-      // One slot: a plain load per input, no gather (the same values).
-      for (int j = 0; j < W; ++j) {
-        held_[j] = xsimd::select(fresh, B::load_aligned(&ring_[(same * W + j) * L]), held_[j]);
-        sample.v[j] = held_[j];
-      }
-    } else {
-      for (int j = 0; j < W; ++j) {
-        held_[j] = xsimd::select(fresh, gatherLanes<B>(ring_.data(), base + I(Int(j * L))), held_[j]);
-        sample.v[j] = held_[j];
-      }
+    // Where every lane reads one slot (a drone whose delay the batch's lanes
+    // share), a plain load per input gives what the gather would.
+    long same = -1;
+    const bool one_slot = sameSlot(slot, same);
+    for (int j = 0; j < W; ++j) {
+      const B stored = one_slot ? B::load_aligned(&ring_[(same * W + j) * L])
+                                : gatherLanes<B>(ring_.data(), base + I(Int(j * L)));
+      held_[j] = xsimd::select(fresh, stored, held_[j]);
+      sample.v[j] = held_[j];
     }
     held_step_ = step;
     held_count_ = count_ + I(Int(1));  // a restarted lane (count 0 again) never reuses its old run's state
