@@ -34,9 +34,9 @@ struct Counts {
   int checks;
   long combinations = 0;
   long feasible = 0;
-  long passed[kMostChecks] = {0, 0, 0, 0, 0};
-  long failed[kMostChecks] = {0, 0, 0, 0, 0};
-  long not_reached[kMostChecks] = {0, 0, 0, 0, 0};
+  long passed[kMostChecks] = {};
+  long failed[kMostChecks] = {};
+  long not_reached[kMostChecks] = {};
   long long steps = 0;
 };
 inline int checkCount(bool formation) { return formation ? aurora_control::kFormationChecks : 4; }
