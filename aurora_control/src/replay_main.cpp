@@ -354,6 +354,7 @@ void cycleSettings(const aurora_msgs::Control& c, const Overrides& o, long itera
 struct BagStates {
   std::map<long, StateSample> by_step;
   std::set<long> recovered;  // steps the bag lacked, taken from Control.state_used
+  std::set<long> stale;      // steps its source marked stale, which the node ignored
 };
 
 // A state the recorder dropped (a loaded machine) is in the control message
@@ -380,7 +381,10 @@ void readDrone(rosbag::Bag& bag, const std::string& bag_path, const std::string&
     rosbag::View view(bag, rosbag::TopicQuery(std::vector<std::string>{ns + "/state", ns + "/control"}));
     for (const rosbag::MessageInstance& m : view) {
       if (auto s = m.instantiate<aurora_msgs::DroneState>()) {
-        if (s->stale) continue;  // the node ignores states its source marked stale
+        if (s->stale) {  // the node ignores states its source marked stale
+          states.stale.insert(static_cast<long>(s->step));
+          continue;
+        }
         const StateSample sample = sampleFromMsg(*s);
         states.by_step.emplace(sample.step, sample);  // keeps the first of a re-sent step
       } else if (auto c = m.instantiate<aurora_msgs::Control>()) {
@@ -516,17 +520,26 @@ void followPredictor(const Arguments& args, const aurora_msgs::Control& c, Core&
 }
 
 // Pushes the states the controller had received by cycle `c` (steps up to
-// c.step) into the core; the steps the bag lacks go to `missing`.
+// c.step) into the core. The node received every step from the bag's first
+// on but those marked stale: its sources number their states one by one and
+// its queue holds 100. A step the bag lacks (the recorder dropped it, and
+// every control message that used it) still takes its place in the history
+// and on the link, as it did in the node, with the state before it standing
+// in for it; it goes to `missing`.
 template <class Core>
 void pushStatesUpTo(const aurora_msgs::Control& c, const BagStates& states, long& next_step, Core& core,
                     std::set<long>& missing) {
   for (; next_step <= static_cast<long>(c.step); ++next_step) {
+    if (states.stale.count(next_step)) continue;
     auto it = states.by_step.find(next_step);
     if (it != states.by_step.end()) {
       core.push(it->second);
-    } else {
-      missing.insert(next_step);
+      continue;
     }
+    StateSample stand_in = core.newest();  // the first step pushed is a recorded one
+    stand_in.step = next_step;
+    core.push(stand_in);
+    missing.insert(next_step);
   }
 }
 
@@ -539,6 +552,7 @@ struct ReplayCount {
   // cannot be replayed across a cycle it lacks, so the cycles from the
   // first gap on are replayed but not compared.
   long missing_controls = 0, first_gap_step = -1, not_compared = 0;
+  long on_stand_in = 0;  // cycles whose law ran on a stand-in for a state the bag lacks (pushStatesUpTo)
   uint32_t last_seq = 0;
   void read(const aurora_msgs::Control& c, bool first) {
     if (!first && c.header.seq > last_seq + 1) {
@@ -580,8 +594,9 @@ int replayVerdict(const Arguments& args, const std::string& ns, const ReplayCoun
   }
   if (!missing.empty()) {
     std::printf("replay: %zu state steps missing from the bag and from its control messages (the recorder dropped "
-                "them, first %ld): a law with memory may give other commands from there (none, if no cycle "
-                "used them)\n", missing.size(), *missing.begin());
+                "them, first %ld) kept their places in the history and on the link, the state before each "
+                "standing in; %ld replayed cycles ran the law on a stand-in%s\n", missing.size(), *missing.begin(),
+                n.on_stand_in, n.on_stand_in > 0 ? " (their commands, and a law's memory after them, may differ)" : "");
   }
   if (args.out_path.empty() && n.differ() > 0) {
     std::printf("replay: write the commands side by side with --out FILE.csv\n");
@@ -614,6 +629,7 @@ int replayCycles(const Arguments& args, const std::string& ns, const BagStates& 
     if (c.law_ran) followPredictor(args, c, *core);
     // The law ran when the node says it did.
     out = c.law_ran ? core->compute(referenceFromMsg(c)) : core->hover();
+    n.on_stand_in += c.law_ran && missing.count(out.used->step);
     bool same = true;
     const double diff = commandDifference(c, out, same);
     n.add(same, diff);
