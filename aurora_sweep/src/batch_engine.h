@@ -146,7 +146,7 @@ class BatchWorker {
     if (setup_.varies_model) LaneOps::setFields(loop_.plant, l, run.plant);
     LaneOps::setFields(sim_.model, l, fresh_.model);
     LaneOps::setFields(sim_.memory, l, fresh_.memory);
-    for (int i = 0; i < 4; ++i) LaneOps::set(sim_.metrics.ok[i], l, true);
+    for (int i = 0; i < aurora_control::kPositioningChecks; ++i) LaneOps::set(sim_.metrics.ok[i], l, true);
     LaneOps::set(sim_.metrics.iae, l, T(0));
     LaneOps::set(sim_.metrics.itae, l, T(0));
     LaneOps::set(sim_.metrics.iasc, l, T(0));
@@ -158,7 +158,7 @@ class BatchWorker {
   // own rule (runnerResult).
   void finishLane(int l) {
     aurora_control::LoopState<Data, T, bool> lane;
-    for (int i = 0; i < 4; ++i) lane.metrics.ok[i] = LaneOps::get(sim_.metrics.ok[i], l);
+    for (int i = 0; i < aurora_control::kPositioningChecks; ++i) lane.metrics.ok[i] = LaneOps::get(sim_.metrics.ok[i], l);
     lane.metrics.iae = LaneOps::get(sim_.metrics.iae, l);
     lane.metrics.itae = LaneOps::get(sim_.metrics.itae, l);
     lane.metrics.iasc = LaneOps::get(sim_.metrics.iasc, l);

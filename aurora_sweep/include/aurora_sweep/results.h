@@ -39,7 +39,7 @@ struct Counts {
   long not_reached[kMostChecks] = {};
   long long steps = 0;
 };
-inline int checkCount(bool formation) { return formation ? aurora_control::kFormationChecks : 4; }
+inline int checkCount(bool formation) { return formation ? aurora_control::kFormationChecks : aurora_control::kPositioningChecks; }
 
 // `iterations`: the steps of a complete run (studyIterationCount).
 Counts countResults(const std::vector<SimResult>& results, long iterations, int checks = 4);

@@ -76,7 +76,7 @@ AURORA_HD inline SimResult compactResult(const aurora_control::RunnerResult& r) 
   s.itae = r.itae;
   s.iasc = r.iasc;
   s.ok = 0;
-  for (int i = 0; i < 4; ++i) s.ok |= static_cast<unsigned char>((r.ok[i] ? 1 : 0) << i);
+  for (int i = 0; i < aurora_control::kPositioningChecks; ++i) s.ok |= static_cast<unsigned char>((r.ok[i] ? 1 : 0) << i);
   s.ok |= static_cast<unsigned char>((r.feasible ? 1 : 0) << kFeasibleBit);
   return s;
 }

@@ -34,16 +34,20 @@ AURORA_HD inline T norm3(const T v[3]) {
   return sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
 }
 
+// The single-robot checks (docs/delay-and-study.md, criteria), in the order
+// check() fills them: 1 the true error, 2 IAE, 3 ITAE, 4 the error's growth.
+constexpr int kPositioningChecks = 4;
+
 template <typename T, typename Mask>
 struct PositioningMetrics {
   T iae;   // integral of |controller's position error| dt
   T itae;  // integral of t |controller's position error| dt
   T iasc;  // integral of |U| dt
-  Mask ok[4];
+  Mask ok[kPositioningChecks];
 
   AURORA_HD void reset() {
     iae = T(0); itae = T(0); iasc = T(0);
-    for (int i = 0; i < 4; ++i) ok[i] = Mask(true);
+    for (int i = 0; i < kPositioningChecks; ++i) ok[i] = Mask(true);
   }
 
   // Step (3) of the loop: accumulate with the controller's (delayed) error.

@@ -40,7 +40,7 @@ struct StudyRun {
 };
 
 struct RunnerResult {
-  bool ok[4];
+  bool ok[kPositioningChecks];
   bool feasible;
   double iae, itae, iasc;
   long steps;           // model steps run
@@ -78,7 +78,7 @@ struct NoObserver {
 template <class Data, typename T>
 AURORA_HD inline RunnerResult runnerResult(const LoopState<Data, T, bool>& sim, long steps) {
   RunnerResult r;
-  for (int i = 0; i < 4; ++i) r.ok[i] = sim.metrics.ok[i];
+  for (int i = 0; i < kPositioningChecks; ++i) r.ok[i] = sim.metrics.ok[i];
   r.feasible = sim.metrics.feasible();
   r.iae = double(sim.metrics.iae);
   r.itae = double(sim.metrics.itae);
