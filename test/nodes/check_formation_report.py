@@ -23,15 +23,17 @@ sys.path.insert(0, os.path.dirname(os.path.realpath(__file__)))
 from bag_helpers import record_until  # noqa: E402
 
 
-def flight_errors(formation_file, delays, first, last, ts, names):
+def flight_errors(formation_file, delays, first, last, ts, names, skipped=()):
     """RMS after 10 s of the shape's variables (rho, alpha, beta), the
-    horizontal position and the height over ticks first..last, and the
-    smallest distance, from flight's CSV."""
+    horizontal position and the height over ticks first..last but the
+    `skipped` ones (those the bag lacks), and the smallest distance, from
+    flight's CSV."""
     with tempfile.TemporaryDirectory() as tmp:
         path = os.path.join(tmp, "f.csv")
         subprocess.run(["rosrun", "aurora_control", "flight", "--formation", formation_file, "--delay"] +
                        [str(d) for d in delays] + ["--csv", path], check=True, stdout=subprocess.PIPE)
-        rows = [r for r in csv.DictReader(open(path)) if first <= int(r["step"]) <= last]
+        rows = [r for r in csv.DictReader(open(path))
+                if first <= int(r["step"]) <= last and int(r["step"]) not in skipped]
     sums, n, closest = [0.0] * 5, 0, 1e300
     for r in rows:
         closest = min(closest, float(r["Q_rho"]))
@@ -60,7 +62,17 @@ class FormationReportTest(unittest.TestCase):
         s = formation_report.series_of(["a", "b"], ticks, states, 1.0 / 30)
         self.assertEqual(s["k"], [0, 1, 2, 3, 4])
         m = formation_report.metrics_of(["a", "b"], s, 1.0 / 30)
-        self.assertEqual((m["ticks"], m["last_tick"]), (5, 4))
+        self.assertEqual((m["ticks"], m["last_tick"], m["ticks_missing"]), (5, 4, []))
+        self.assertNotIn("missing", formation_report.missing_text(m))
+        # Messages the recorder dropped (a loaded machine): a robot's state
+        # at tick 1, the Formation message of tick 3. The report skips those
+        # ticks and says which.
+        del states["b"][1], ticks[3]
+        s = formation_report.series_of(["a", "b"], ticks, states, 1.0 / 30)
+        self.assertEqual(s["k"], [0, 2, 4])
+        m = formation_report.metrics_of(["a", "b"], s, 1.0 / 30)
+        self.assertEqual((m["ticks"], m["last_tick"], m["ticks_missing"]), (3, 4, [1, 3]))
+        self.assertIn("2 ticks missing from the bag, first 1: the recorder dropped", formation_report.missing_text(m))
 
     def test_report_of_a_formation_bag(self):
         bag = record_until(900, rospy.get_param("~bag_dir"), rospy.get_param("~prefix"),
@@ -80,7 +92,9 @@ class FormationReportTest(unittest.TestCase):
         delays = [rospy.get_param("~delay_1"), rospy.get_param("~delay_2")]
         names = m["variables"]
         self.assertEqual(names, rospy.get_param("~variables"))
-        rms, closest, rows = flight_errors(rospy.get_param("~formation_file"), delays, 0, last, ts, names)
+        # A tick the recorder dropped (a loaded machine) is skipped by the report, which says which.
+        rms, closest, rows = flight_errors(rospy.get_param("~formation_file"), delays, 0, last, ts, names,
+                                           set(m["ticks_missing"]))
         self.assertEqual(rows, m["ticks"], "the report's ticks are not flight's")
         got = m["rms_after_settle"]
         for name, want in zip(("rho_m", "alpha_rad", "beta_rad", "position_xy_m", "height_m"), rms):
@@ -103,7 +117,8 @@ class FormationReportTest(unittest.TestCase):
         frame, metrics = aurora.read_formation_bag(bag)
         g = aurora.simulate_formation(rospy.get_param("~formation_file"), delays=tuple(delays))
         k = frame.step.to_numpy()
-        self.assertTrue(np.array_equal(k, np.arange(len(k))))
+        held = [i for i in range(m["last_tick"] + 1) if i not in set(m["ticks_missing"])]  # the report's ticks
+        self.assertTrue(np.array_equal(k, held))
         if hasattr(g, "Q"):  # the two-drone line's FormationFlight
             Q, Qd = (lambda j, v: g.Q[k, j]), (lambda j, v: g.Qd[k, j])  # noqa: E731
             position = lambda d, j, a: g.states[k, d, j]  # noqa: E731

@@ -93,7 +93,8 @@ def read_formation_bag(path):
     """One row per formation tick with every robot's state: step, t, Q_*,
     Qd_* (the shape's formation variables, the layer's held desired) and
     each robot's position d{i}_x, d{i}_y, d{i}_z; and the report's
-    formation metrics."""
+    formation metrics (ticks_missing: the ticks the recorder dropped, which
+    have no row)."""
     import pandas as pd
     bag = _open(path)
     try:

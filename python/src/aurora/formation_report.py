@@ -90,15 +90,19 @@ def errors_of(m, X):
 def series_of(drones, ticks, states, ts):
     """Per tick k present for every robot: t, Q, Qd, the desired positions,
     the errors, each robot's position, reference and tracking error, the
-    smallest distance between two robots."""
-    s = {k: [] for k in ("k", "t", "Q", "Qd", "Xd", "e_position", "e_shape", "distance")}
+    smallest distance between two robots. s["missing"]: the ticks between
+    the bag's first and last whose Formation message or some robot's state
+    the bag lacks (the recorder drops messages on a loaded machine): the
+    series skip them."""
+    s = {k: [] for k in ("k", "t", "Q", "Qd", "Xd", "e_position", "e_shape", "distance", "missing")}
     for d in drones:
         s[d] = {"pos": [], "ref": [], "track": []}
     count = getattr(ticks[min(ticks)], "ticks", 0)  # 0 in bags recorded before the field: every tick
-    for k in sorted(ticks):
-        if count and k >= count:
-            break  # the formation's ticks are 0 .. ticks - 1 (flight --formation's); later states are after its end
-        if not all(k in states[d] for d in drones):
+    # The formation's ticks are 0 .. ticks - 1 (flight --formation's); later states are after its end.
+    last = min(max(ticks), count - 1) if count else max(ticks)
+    for k in range(min(ticks), last + 1):
+        if k not in ticks or not all(k in states[d] for d in drones):
+            s["missing"].append(k)
             continue
         X = []
         for d in drones:
@@ -140,6 +144,7 @@ def metrics_of(drones, s, ts, names=VARIABLES):
     after = {"%s_%s" % (n, unit_of(n)): rms(err(j)) for j, n in enumerate(names) if j >= 3}
     after.update({"position_xy_m": rms(horizontal), "height_m": rms(err(2))})
     m = {"ticks": len(s["t"]), "first_tick": s["k"][0] if s["k"] else None, "last_tick": s["k"][-1] if s["k"] else None,
+         "ticks_missing": s["missing"],
          "variables": list(names),
          "rms_after_settle": after,
          "settle_time_s": SETTLE_TIME,
@@ -259,13 +264,22 @@ def video(drones, s, out_dir, fps):
     return path, frames
 
 
+def missing_text(m):
+    """What report.md says of the ticks the bag lacks."""
+    missing = m["ticks_missing"]
+    if not missing:
+        return ""
+    return ("; %d ticks missing from the bag, first %d: the recorder dropped their Formation message or a robot's "
+            "state, and every figure, RMS and IAE here skips them" % (len(missing), missing[0]))
+
+
 def markdown(m, files):
     r = m["rms_after_settle"]
     shape = ["%s %.4f %s" % (k.rsplit("_", 1)[0], v, k.rsplit("_", 1)[1]) for k, v in r.items()
              if k not in ("position_xy_m", "height_m")]
     lines = ["## Formation", "",
              "| metric | value |", "|---|---|",
-             "| ticks | %d (steps %d to %d) |" % (m["ticks"], m["first_tick"], m["last_tick"]),
+             "| ticks | %d (steps %d to %d%s) |" % (m["ticks"], m["first_tick"], m["last_tick"], missing_text(m)),
              "| RMS after %.0f s: %s | %s |" % (m["settle_time_s"], ", ".join(m["variables"][3:]), ", ".join(shape)),
              "| RMS after %.0f s: position (x, y) / height | %.4f m / %.4f m |" % (
                  m["settle_time_s"], r["position_xy_m"], r["height_m"]),

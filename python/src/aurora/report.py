@@ -746,6 +746,8 @@ def main(argv):
         print("report: formation (%s): %d ticks, RMS after %.0f s %s, position %.4f m; smallest distance %.4f m"
               % (f["shape"], f["ticks"], formation_report.SETTLE_TIME, shape, f["rms_after_settle"]["position_xy_m"],
                  f["smallest_distance_m"]), file=sys.stderr)
+        if f["ticks_missing"]:
+            print("report: formation: warning: %s" % formation_report.missing_text(f)[2:], file=sys.stderr)
     for ns, d in data.items():
         m, series, cmd = analyse(ns, d)
         print("report: %s: %d steps, IAE %.6g, ITAE %.6g, IASC %.6g, max error %.3f m" %
