@@ -554,12 +554,14 @@ struct ReplayCount {
   long missing_controls = 0, first_gap_step = -1, not_compared = 0;
   long on_stand_in = 0;  // cycles whose law ran on a stand-in for a state the bag lacks (pushStatesUpTo)
   uint32_t last_seq = 0;
-  void read(const aurora_msgs::Control& c, bool first) {
-    if (!first && c.header.seq > last_seq + 1) {
+  bool read_any = false;
+  void read(const aurora_msgs::Control& c) {
+    if (read_any && c.header.seq > last_seq + 1) {
       missing_controls += c.header.seq - last_seq - 1;
       if (first_gap_step < 0) first_gap_step = static_cast<long>(c.step);
     }
     last_seq = c.header.seq;
+    read_any = true;
   }
   void add(bool same, double diff) {
     if (first_gap_step >= 0) {
@@ -622,7 +624,7 @@ int replayCycles(const Arguments& args, const std::string& ns, const BagStates& 
   ControlOutput out{};
   long next_step = states.by_step.begin()->first;
   for (const aurora_msgs::Control& c : controls) {
-    n.read(c, &c == &controls.front());
+    n.read(c);
     pushStatesUpTo(c, states, next_step, *core, missing);
     if (core->empty()) continue;
     cycleSettings(c, o, iterations, recorded.task_duration, core->settings);

@@ -53,16 +53,15 @@ std::vector<double> triangleRow(double t, bool kinematic, const TrianglePeriod& 
 }
 
 // Sums of squares after 20 s: the position (xF, yF, zF), p, q, beta, phi,
-// theta, psi; the closest pair of robots.
+// theta, psi; the closest pair of robots (NaN from the first period a
+// robot's position is NaN, as the formation checks take it).
 struct TriangleErrors {
   double sq[7] = {}, closest = 1e300;
   long n = 0;
   void add(double t, const TrianglePeriod& p) {
     double X[9], Q[9], e[9];
     positionVariables(p, X, Q);
-    for (int a = 0; a < 3; ++a) {
-      for (int b = a + 1; b < 3; ++b) closest = std::fmin(closest, triangle_detail::distance(X + 3 * a, X + 3 * b));
-    }
+    closest = smallerDistance(closest, closestPair<Triangle>(X));
     if (t < 20.0) return;
     Triangle::error(X, p.layer.Qd(), Q, e);
     sq[0] += e[0] * e[0] + e[1] * e[1] + e[2] * e[2];

@@ -55,15 +55,15 @@ std::vector<double> uavUgvRow(double t, const Tick& o) {
 }
 
 // Sums of squares after 20 s: the formation position (xf, yf), rho, alpha,
-// beta, the drone's distance to its desired position; the closest approach.
+// beta, the drone's distance to its desired position. (The closest approach
+// is the judge's: FormationMetrics::closest, NaN once a robot's is.)
 struct LineErrors {
-  double sq[5] = {0, 0, 0, 0, 0}, closest = 1e300;
+  double sq[5] = {0, 0, 0, 0, 0};
   long n = 0;
   void add(double t, const Tick& o) {
-    const double *pioneer = o.X_before[0], *drone = o.X_before[1];
-    double d[3], de[3];
-    for (int i = 0; i < 3; ++i) d[i] = drone[i] - pioneer[i], de[i] = o.layer.position(1)[i] - drone[i];
-    closest = std::fmin(closest, std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]));
+    const double* drone = o.X_before[1];
+    double de[3];
+    for (int i = 0; i < 3; ++i) de[i] = o.layer.position(1)[i] - drone[i];
     if (t < 20.0) return;
     double Q[6], e[6];
     positionVariables(o, Q);
@@ -109,10 +109,10 @@ ShapedFlight flyUavUgvLine(const FormationFlightOptions& o, FlightTable& table) 
                 "closest approach %.3f m\n",
                 setup.pioneer.kinematic != 0.0 ? "kinematic" : "dynamic", ticks, setup.tick, setup.delay[0],
                 setup.delay[1], f.seconds, errors.rms(0), errors.rms(1), errors.rms(2), errors.rms(3), errors.rms(4),
-                errors.closest);
+                judge.metrics.closest);
   f.summary = line + checksText(judge.criteria, judge.metrics, true);
   f.errors = {{"rms_xf_yf", errors.rms(0)}, {"rms_rho", errors.rms(1)}, {"rms_alpha", errors.rms(2)},
-              {"rms_beta", errors.rms(3)}, {"rms_drone_position", errors.rms(4)}, {"closest", errors.closest},
+              {"rms_beta", errors.rms(3)}, {"rms_drone_position", errors.rms(4)}, {"closest", judge.metrics.closest},
               {"ticks", double(ticks)}, {"delay_1", double(setup.delay[0])}, {"delay_2", double(setup.delay[1])}};
   // The formation checks, as a sweep records them (check_1 .. check_5: 1 held).
   const FormationMetrics<double, bool, UavUgvShape>& m = judge.metrics;

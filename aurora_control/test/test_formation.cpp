@@ -417,6 +417,23 @@ TEST(FormationChecks, ADroneFlyingNaNFailsEveryCheck) {
   }
 }
 
+// The smallest distance of three robots is NaN whichever robot is NaN (a
+// finite pair checked after a NaN one took its place: robot 1 NaN gave the
+// distance of robots 2 and 3), and stays NaN over a flight.
+struct ThreeRobots {
+  static constexpr int kDrones = 3, kVariables = 9;
+};
+TEST(FormationChecks, TheClosestPairIsNaNWhicheverRobotIsNaN) {
+  for (int nan_robot = 0; nan_robot < 3; ++nan_robot) {
+    double X[9] = {0, 0, 1, 2, 0, 1, 0, 3, 1};
+    EXPECT_DOUBLE_EQ(closestPair<ThreeRobots>(X), 2.0);
+    X[3 * nan_robot + 1] = std::nan("");
+    EXPECT_TRUE(std::isnan(closestPair<ThreeRobots>(X))) << "robot " << nan_robot + 1;
+  }
+  EXPECT_TRUE(std::isnan(smallerDistance(smallerDistance(5.0, std::nan("")), 1.0)));
+  EXPECT_DOUBLE_EQ(smallerDistance(smallerDistance(5.0, 2.0), 3.0), 2.0);
+}
+
 TEST(FormationController, ANonFiniteCommandMakesEveryDroneHover) {
   FormationRun<double, Line> run = labScenario(FormationLaw::kPositionPriority);
   run.drone[1].start[2] = run.drone[0].start[2];  // level: the layer commands NaN

@@ -6,7 +6,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
+#include <limits>
 
 #include "aurora_control/formation/formation_judge.h"
 #include "aurora_control/formation/formation_yaml.h"
@@ -270,3 +272,39 @@ TEST(FormationSweep, TheFormationDelayStudiesSpanTheMargin) {
     EXPECT_EQ(at_31, 0) << name;
   }
 }
+
+#ifdef AURORA_SWEEP_LANES  // xsimd >= 8
+#include <xsimd/xsimd.hpp>
+// The formation checks' smallest distance on SIMD lanes (this program's
+// baseline instruction set): NaN on the lane of a NaN robot, whichever robot
+// it is, and the other lanes' own distances. (smallerDistance tests NaN as
+// !(r == r): xsimd's != on AVX-512 is ordered, false for NaN, which passed a
+// NaN over on the engine's lanes; the equality is false for NaN everywhere.)
+template <typename T>
+void expectLaneClosestPairs() {
+  using B = xsimd::batch<T>;
+  constexpr int L = static_cast<int>(B::size);
+  struct Three {
+    enum : int { kDrones = 3, kVariables = 9 };
+  };
+  for (int nan_robot = 0; nan_robot < 3; ++nan_robot) {
+    const T start[9] = {0, 0, 1, 2, 0, 1, 0, 3, 1};  // closest: robots 1 and 2, 2 m apart
+    B X[9];
+    for (int i = 0; i < 9; ++i) {
+      alignas(64) T lanes[L];
+      for (int l = 0; l < L; ++l) lanes[l] = start[i] * T(1 + l);  // lane l: 2 (l + 1) m
+      if (i == 3 * nan_robot + 1) lanes[0] = std::numeric_limits<T>::quiet_NaN();
+      X[i] = B::load_aligned(lanes);
+    }
+    alignas(64) T got[L];
+    aurora_control::closestPair<Three>(X).store_aligned(got);
+    EXPECT_TRUE(std::isnan(got[0])) << "robot " << nan_robot + 1 << ": " << got[0];
+    for (int l = 1; l < L; ++l) EXPECT_EQ(got[l], T(2 * (l + 1))) << "lane " << l;
+  }
+}
+
+TEST(FormationSweep, TheClosestPairOnLanesIsNaNWhereARobotIsNaN) {
+  expectLaneClosestPairs<float>();
+  expectLaneClosestPairs<double>();
+}
+#endif

@@ -88,17 +88,24 @@ AURORA_HD inline void formationErrors(const T X[Shape::kVariables], const T Xd[S
   shape = shapeErrorOf<Shape>(X, Xd, HasShapeError<Shape>());
 }
 
+// The smaller of two distances [m], NaN once either is: a NaN distance (a
+// diverged robot's) is kept, not passed over by a later finite one.
+template <typename T>
+AURORA_HD inline T smallerDistance(const T& closest, const T& r) {
+  using aurora_common::select;
+  // !(r == r): r is NaN (xsimd's != is ordered on AVX-512, false for NaN).
+  return select((r < closest) | !(r == r), r, closest);
+}
+
 // The smallest distance between any two drones of positions X [m]; NaN
-// where a drone's position is NaN.
+// where any drone's position is NaN (whichever drone it is).
 template <class Shape, typename T>
 AURORA_HD inline T closestPair(const T X[Shape::kVariables]) {
-  using aurora_common::select;
   T closest = T(1e30);
   for (int a = 0; a < Shape::kDrones; ++a) {
     for (int b = a + 1; b < Shape::kDrones; ++b) {
       const T d[3] = {X[3 * b] - X[3 * a], X[3 * b + 1] - X[3 * a + 1], X[3 * b + 2] - X[3 * a + 2]};
-      const T r = norm3(d);
-      closest = select(!(r >= closest), r, closest);  // a NaN distance is kept: NaN, not 1e30
+      closest = smallerDistance(closest, norm3(d));
     }
   }
   return closest;
@@ -162,7 +169,7 @@ struct FormationMetrics {
       if (!GroundCommands<Vehicle>::of(params[d].model, steps[d].U, speed, turn_rate)) continue;
       const T s = speed / c.max_ground_speed, w = turn_rate / c.max_ground_turn_rate;
       const T s2 = s * s, w2 = w * w;
-      const T share = sqrt(select((s2 > w2) | (s2 != s2), s2, w2));  // the larger, or the NaN
+      const T share = sqrt(select((s2 > w2) | !(s2 == s2), s2, w2));  // the larger, or the NaN (as smallerDistance)
       ground_command = select(!(share <= ground_command), share, ground_command);
       ok[4] = ok[4] & (s2 <= T(1)) & (w2 <= T(1));
     }
