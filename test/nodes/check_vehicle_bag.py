@@ -83,20 +83,22 @@ class VehicleBagTest(unittest.TestCase):
                     if not ((drop_state and topic == ns + "/state" and m.step == dropped)
                             or (topic == ns + "/control" and m.step in drop_controls)):
                         out.write(topic, m, t)
-            rc, log = run(replay[:3] + [thinned] + replay[4:])
-            self.assertEqual(rc, 0, log)
-            self.assertIn(" 0 differ, max |dU| = 0 ", log)
-            if not drop_controls:
-                self.assertIn("state steps missing from the bag (the recorder dropped them, first %d) were taken "
-                              "from the control messages that used them" % dropped, log)
-            elif drop_state:
-                self.assertIn("missing from the bag and from its control messages (the recorder dropped them, "
-                              "first %d) kept their places in the history and on the link, the state before each "
-                              "standing in; 0 replayed cycles ran the law on a stand-in\n" % dropped, log)
-            else:
-                self.assertIn(gap, log)
-                self.check_the_report_compares_up_to_the_gap(thinned, lost, min(users))
-            os.remove(thinned)
+            try:
+                rc, log = run(replay[:3] + [thinned] + replay[4:])
+                self.assertEqual(rc, 0, log)
+                self.assertIn(" 0 differ, max |dU| = 0 ", log)
+                if not drop_controls:
+                    self.assertIn("state steps missing from the bag (the recorder dropped them, first %d) were taken "
+                                  "from the control messages that used them" % dropped, log)
+                elif drop_state:
+                    self.assertIn("missing from the bag and from its control messages (the recorder dropped them, "
+                                  "first %d) kept their places in the history and on the link, the state before each "
+                                  "standing in; 0 replayed cycles ran the law on a stand-in\n" % dropped, log)
+                else:
+                    self.assertIn(gap, log)
+                    self.check_the_report_compares_up_to_the_gap(thinned, lost, min(users))
+            finally:  # also when a check failed: the next run's bag_dir stays clean
+                os.remove(thinned)
 
     def report_metrics(self, bag):
         """The report's metrics.json of the bag's vehicle."""
