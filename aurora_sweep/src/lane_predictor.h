@@ -43,6 +43,7 @@ class LanePredictor {
     alignas(64) Int iota[L];
     for (int l = 0; l < L; ++l) iota[l] = static_cast<Int>(l);
     lane_ = I::load_aligned(iota);
+    for (int i = 0; i < kStates; ++i) kept_X_[i] = B(T(0));
   }
 
   // Lane l starts a run whose step 0 is the next one pushed, with command
@@ -52,6 +53,7 @@ class LanePredictor {
     Lanes<T, Arch>::set(delay_, l, static_cast<Int>(delay));
     Lanes<T, Arch>::set(anchor_step_, l, Int(0));
     Lanes<T, Arch>::set(open_step_, l, Int(0));
+    Lanes<T, Arch>::set(kept_step_, l, Int(-1));
     Lanes<T, Arch>::setFields(anchor_, l, start_);
     Lanes<T, Arch>::setFields(open_, l, start_);
     storeLane(l, pushed_ + 1, start_.X);  // the open loop's step 0
@@ -63,6 +65,7 @@ class LanePredictor {
   // Each lane at its step k received the state xc of its step r.
   void predict(const I& k, const I& r, const B xc[kStates], B xp[kStates]) {
     k_ = k;
+    if (form_ != aurora_control::PredictorForm::kSmith) keepCommandsInRing();
     receive(r, xc);
     if (form_ == aurora_control::PredictorForm::kSmith) return smith(xp);
     State s = anchor_;
@@ -116,14 +119,27 @@ class LanePredictor {
     for (int i = 0; i < kStates; ++i) anchor_.X[i] = xsimd::select(newer, xc[i], anchor_.X[i]);
   }
 
-  // Eq. P2 on every lane.
+  // Resimulate across a long outage: before a state is received, each
+  // lane's anchor steps along the model over each command about to leave
+  // the ring, as StatePredictor::keepCommandsInRing (the lanes send at every
+  // step from their first).
+  void keepCommandsInRing() {
+    const I first_kept = k_ - I(static_cast<Int>(mask_ + 1)) + delay_ + I(Int(1));
+    steppedTo(anchor_, anchor_step_, first_kept, nullptr);
+    anchor_step_ = xsimd::max(anchor_step_, first_kept);
+  }
+
+  // Eq. P2 on every lane; m_a copied before the open loop's ring overwrites
+  // it (keepStates), as StatePredictor::smith.
   void smith(B xp[kStates]) {
     steppedTo(open_, open_step_, k_ + delay_, &open_X_);
     open_step_ = xsimd::max(open_step_, k_ + delay_);
     State ahead = open_;
     const I at = slotOf(anchor_step_) * I(Int(kStates * L)) + lane_;
+    const M kept = xsimd::bool_cast(kept_step_ == anchor_step_);
     for (int i = 0; i < kStates; ++i) {
-      xp[i] = anchor_.X[i] + (ahead.X[i] - gatherLanes<B>(open_X_.data(), at + I(Int(i * L))));
+      const B then = xsimd::select(kept, kept_X_[i], gatherLanes<B>(open_X_.data(), at + I(Int(i * L))));
+      xp[i] = anchor_.X[i] + (ahead.X[i] - then);
     }
   }
 
@@ -139,8 +155,15 @@ class LanePredictor {
       if (!lanes[l]) continue;
       T X[kStates];
       for (int i = 0; i < kStates; ++i) X[i] = x[i][l];
+      const Int anchor = Lanes<T, Arch>::get(anchor_step_, l);
+      if (steps[l] - (mask_ + 1) == anchor) keepOpenAtAnchor(l, anchor);  // its slot is the one written now
       storeLane(l, Lanes<T, Arch>::get(base_, l) + steps[l], X);
     }
+  }
+  void keepOpenAtAnchor(int l, Int anchor) {
+    const long slot = (Lanes<T, Arch>::get(base_, l) + anchor) & mask_;
+    for (int i = 0; i < kStates; ++i) Lanes<T, Arch>::set(kept_X_[i], l, open_X_[(slot * kStates + i) * L + l]);
+    Lanes<T, Arch>::set(kept_step_, l, anchor);
   }
   void storeLane(int l, long slot, const T* X) {
     slot &= mask_;
@@ -162,6 +185,8 @@ class LanePredictor {
   std::vector<T> open_X_;                                 // [slot][state][lane]
   I lane_, base_ = I(Int(0)), delay_ = I(Int(0));
   I k_ = I(Int(0)), anchor_step_ = I(Int(0)), open_step_ = I(Int(0));
+  I kept_step_ = I(Int(-1));  // smith: the anchor step whose open-loop state kept_X_ holds, per lane
+  B kept_X_[kStates];
   State anchor_, open_;  // the newest state received (resimulate: the model's whole state there); the open loop
   long pushed_ = 0;
 };

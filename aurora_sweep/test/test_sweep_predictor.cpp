@@ -114,3 +114,62 @@ TEST(SweepPredictor, BadInputIsRefusedNamingTheKey) {
   EXPECT_NE(formation.find("'sweep.predictor' is refused for a formation sweep"), std::string::npos) << formation;
   EXPECT_EQ(test::refusal(head + "  predictor: {form: 'off'}\n"), "");
 }
+
+#ifdef AURORA_SWEEP_LANES  // xsimd >= 8
+#include <cmath>
+
+#include "aurora_sim/vehicle_yaml.h"
+#include "../src/lane_predictor.h"
+
+// The lanes' predictor across long outages (no newer state for longer
+// than its rings), each lane its own: the prediction of rings of 16 slots
+// is the one of 4,096, to the bit, both forms (StatePredictor's test on
+// the lanes).
+TEST(SweepPredictor, ALongOutageDoesNotWrapTheLanesRings) {
+  using Vehicle = aurora_sim::Ardrone2;
+  using Lanes = LanePredictor<Vehicle, double, xsimd::default_arch>;
+  using B = Lanes::B;
+  using I = Lanes::I;
+  constexpr int L = Lanes::L, S = Vehicle::kStates;
+  const auto model = aurora_sim::loadVehicleYaml(std::string(AURORA_CONFIG_DIR) + "/vehicles/ardrone2.yaml");
+  Vehicle::State<double> start;
+  Vehicle::start(model, start);
+  for (const auto form : {aurora_control::PredictorForm::kResimulate, aurora_control::PredictorForm::kSmith}) {
+    Lanes ring(form, model, start, false, 16), endless(form, model, start, false, 4096);
+    std::vector<Vehicle::State<double>> plant(L, start);
+    alignas(64) int64_t received[L] = {};
+    for (int l = 0; l < L; ++l) ring.startLane(l, l % 3), endless.startLane(l, l % 3);
+    long compared = 0;
+    for (long k = 0; k < 160; ++k) {
+      ring.pushed(), endless.pushed();
+      alignas(64) double xc[S][L];
+      for (int l = 0; l < L; ++l) {
+        const bool outage = k >= 20 + 5 * l && k < 80 + 7 * l;  // each lane its own
+        if (!outage) received[l] = k;
+        compared += outage;
+        for (int i = 0; i < S; ++i) xc[i][l] = plant[l].X[i];
+      }
+      B x[S], a[S], b[S];
+      for (int i = 0; i < S; ++i) x[i] = B::load_aligned(xc[i]);
+      const I r = I::load_aligned(received);
+      ring.predict(I(k), r, x, a);
+      endless.predict(I(k), r, x, b);
+      for (int i = 0; i < S; ++i) {
+        alignas(64) double got[L], want[L];
+        a[i].store_aligned(got), b[i].store_aligned(want);
+        for (int l = 0; l < L; ++l) {
+          ASSERT_EQ(got[l], want[l]) << aurora_control::predictorFormName(form) << " lane " << l << " step " << k;
+        }
+      }
+      double U[Vehicle::kInputs] = {0.3 * std::sin(0.1 * k), 0.2 * std::cos(0.07 * k), 0.4, 0.1};
+      B Ub[Vehicle::kInputs];
+      for (int i = 0; i < Vehicle::kInputs; ++i) Ub[i] = B(U[i]);
+      ring.sent(Ub), endless.sent(Ub);
+      for (int l = 0; l < L; ++l) {
+        if (received[l] == k) Vehicle::step(model, plant[l], U);
+      }
+    }
+    EXPECT_GT(compared, 60 * L);
+  }
+}
+#endif

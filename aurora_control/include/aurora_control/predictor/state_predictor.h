@@ -59,6 +59,7 @@ class StatePredictor {
   // state predicted for step target() from the newest state received.
   AURORA_HD void predict(long k, long received, const T xc[kStates], T xp[kStates]) {
     k_ = k;
+    if (form_ != PredictorForm::kSmith) keepCommandsInRing();
     receive(received, xc);
     if (form_ == PredictorForm::kSmith) return smith(xp);
     State s = anchor_;
@@ -116,19 +117,39 @@ class StatePredictor {
     for (int i = 0; i < kStates; ++i) anchor_.X[i] = xc[i];
   }
 
+  // Resimulate across a long outage (no newer state for about a window):
+  // before a state is received, the anchor steps along the model over each
+  // command about to leave the ring (up to the one of step k - Window, which
+  // sent(k) overwrites), so the prediction steps the same model over the
+  // same commands, to the bit, as with an endless ring. Nothing sent yet:
+  // nothing to keep (receive's rule for a first state far ahead holds); a
+  // cycle more than a window after the last: the anchor jumps, as there.
+  AURORA_HD void keepCommandsInRing() {
+    const long first_kept = k_ - Window + path_.delay + 1;
+    if (last_sent_ < 0) return;
+    if (first_kept - anchor_step_ >= Window) anchor_step_ = first_kept;
+    for (; anchor_step_ < first_kept; ++anchor_step_) stepModel(anchor_, anchor_step_);
+  }
+
   // Eq. P2: xp = x_a + (m_N - m_a), m the model open loop on the commands
-  // applied (its states kept by step up to those all sent, k + delay).
+  // applied (its states kept by step up to those all sent, k + delay). m_a
+  // is copied before the open loop's ring overwrites it (a long outage).
   AURORA_HD void smith(T xp[kStates]) {
     const long sent_through = k_ + path_.delay;
     if (sent_through - open_step_ >= Window) open_step_ = sent_through - 1;
     for (; open_step_ < sent_through; ++open_step_) {
       stepModel(open_, open_step_);
+      if (open_step_ + 1 - Window == anchor_step_) keepOpenAtAnchor();
       for (int i = 0; i < kStates; ++i) open_X_[index(open_step_ + 1)][i] = open_.X[i];
     }
     State ahead = open_;
     for (long j = open_step_; j < target(); ++j) stepModel(ahead, j);
-    const T* then = open_X_[index(anchor_step_)];
+    const T* then = kept_step_ == anchor_step_ ? kept_X_ : open_X_[index(anchor_step_)];
     for (int i = 0; i < kStates; ++i) xp[i] = anchor_.X[i] + (ahead.X[i] - then[i]);
+  }
+  AURORA_HD void keepOpenAtAnchor() {
+    for (int i = 0; i < kStates; ++i) kept_X_[i] = open_X_[index(anchor_step_)][i];
+    kept_step_ = anchor_step_;
   }
 
   PredictorForm form_;
@@ -141,6 +162,8 @@ class StatePredictor {
   State open_;                    // smith: the model open loop, at open_step_
   T open_X_[Window][kStates];     // its states by step
   long open_step_ = 0;
+  T kept_X_[kStates] = {};        // smith: its state at the anchor, once the ring let it go
+  long kept_step_ = -1;
   long k_ = 0;
 };
 
