@@ -61,10 +61,10 @@ struct LineErrors {
   double sq[5] = {0, 0, 0, 0, 0};
   long n = 0;
   void add(double t, const Tick& o) {
+    if (t < 20.0) return;
     const double* drone = o.X_before[1];
     double de[3];
     for (int i = 0; i < 3; ++i) de[i] = o.layer.position(1)[i] - drone[i];
-    if (t < 20.0) return;
     double Q[6], e[6];
     positionVariables(o, Q);
     UavUgvShape::error(nullptr, o.layer.Qd(), Q, e);

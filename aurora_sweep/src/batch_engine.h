@@ -265,9 +265,8 @@ void onRange(const SweepSpec& spec, int threads, std::vector<SimResult>& out, Wo
 }
 
 template <typename T, class Arch, class Law>
-void runBatchWith(const SweepSpec& spec, int threads, std::vector<SimResult>& out, Progress& progress) {
+void runBatchWith(const SweepSpec& spec, int capacity, int threads, std::vector<SimResult>& out, Progress& progress) {
   const auto setup = makeSetup<typename Law::Vehicle, T>(spec);
-  const int capacity = aurora_control::historyCapacity(spec.historyNeeded());
   onRange(spec, threads, out, [&](const GridView& grid, long first, long total, std::atomic<long>& next) {
     if (spec.predicting()) {
       BatchWorker<T, Arch, Law, true>(setup, capacity, grid, first, total, out, next, progress).run();
@@ -278,10 +277,9 @@ void runBatchWith(const SweepSpec& spec, int threads, std::vector<SimResult>& ou
 }
 
 template <typename T, class Arch, class Law, template <typename> class Shape>
-void runFormationBatchWith(const SweepSpec& spec, const ShapeRun<double, Shape, typename Law::Data>& run, int threads,
-                           std::vector<SimResult>& out, Progress& progress) {
+void runFormationBatchWith(const SweepSpec& spec, const ShapeRun<double, Shape, typename Law::Data>& run, int capacity,
+                           int threads, std::vector<SimResult>& out, Progress& progress) {
   const FormationSetup<T, Shape, typename Law::Data> setup = makeFormationSetup<T>(spec, run);
-  const int capacity = aurora_control::historyCapacity(spec.historyNeeded());
   onRange(spec, threads, out, [&](const GridView& grid, long first, long total, std::atomic<long>& next) {
     FormationBatch<T, Arch, Law, Shape>(setup, capacity, grid, first, total, out, next, progress).run();
   });
@@ -293,14 +291,16 @@ void runFormationBatchWith(const SweepSpec& spec, const ShapeRun<double, Shape, 
 template <class Arch>
 void runBatchArch(const SweepSpec& spec, int threads, std::vector<SimResult>& out,
                   Progress& progress) {
-  // The history's capacity is a run-time value here (one engine for all).
+  // The history's capacity the types' dispatch chose, as a run-time value
+  // here (one engine for all).
   if (spec.formation()) {
-    return withFormationTypes(spec, [&](auto type, auto, auto law, const auto& run) {
-      runFormationBatchWith<decltype(type), Arch, decltype(law)>(spec, run, threads, out, progress);
+    return withFormationTypes(spec, [&](auto type, auto capacity, auto law, const auto& run) {
+      runFormationBatchWith<decltype(type), Arch, decltype(law)>(spec, run, decltype(capacity)::value, threads, out,
+                                                                 progress);
     });
   }
-  withSweepTypes(spec, [&](auto type, auto, auto law) {
-    runBatchWith<decltype(type), Arch, decltype(law)>(spec, threads, out, progress);
+  withSweepTypes(spec, [&](auto type, auto capacity, auto law) {
+    runBatchWith<decltype(type), Arch, decltype(law)>(spec, decltype(capacity)::value, threads, out, progress);
   });
 }
 

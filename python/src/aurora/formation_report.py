@@ -265,11 +265,11 @@ def video(drones, s, out_dir, fps):
 
 
 def missing_text(m):
-    """What report.md says of the ticks the bag lacks."""
+    """What the report says of the ticks the bag lacks ("" if none)."""
     missing = m["ticks_missing"]
     if not missing:
         return ""
-    return ("; %d ticks missing from the bag, first %d: the recorder dropped their Formation message or a robot's "
+    return ("%d ticks missing from the bag, first %d: the recorder dropped their Formation message or a robot's "
             "state, and every figure, RMS and IAE here skips them" % (len(missing), missing[0]))
 
 
@@ -279,7 +279,8 @@ def markdown(m, files):
              if k not in ("position_xy_m", "height_m")]
     lines = ["## Formation", "",
              "| metric | value |", "|---|---|",
-             "| ticks | %d (steps %d to %d%s) |" % (m["ticks"], m["first_tick"], m["last_tick"], missing_text(m)),
+             "| ticks | %d (steps %d to %d%s) |" % (m["ticks"], m["first_tick"], m["last_tick"],
+                                                  "; " + missing_text(m) if m["ticks_missing"] else ""),
              "| RMS after %.0f s: %s | %s |" % (m["settle_time_s"], ", ".join(m["variables"][3:]), ", ".join(shape)),
              "| RMS after %.0f s: position (x, y) / height | %.4f m / %.4f m |" % (
                  m["settle_time_s"], r["position_xy_m"], r["height_m"]),

@@ -747,7 +747,7 @@ def main(argv):
               % (f["shape"], f["ticks"], formation_report.SETTLE_TIME, shape, f["rms_after_settle"]["position_xy_m"],
                  f["smallest_distance_m"]), file=sys.stderr)
         if f["ticks_missing"]:
-            print("report: formation: warning: %s" % formation_report.missing_text(f)[2:], file=sys.stderr)
+            print("report: formation: warning: %s" % formation_report.missing_text(f), file=sys.stderr)
     for ns, d in data.items():
         m, series, cmd = analyse(ns, d)
         print("report: %s: %d steps, IAE %.6g, ITAE %.6g, IASC %.6g, max error %.3f m" %
