@@ -308,7 +308,11 @@ def analyse(ns, d):
         "segments": segments,
         "modes": sorted({c.mode for c in controls.values()}),
     }
-    metrics.update(task_coverage(first, last, ts))
+    # The task's part the report covers: its steps with both a state and a
+    # control (flight_series). A recorder closing on a loaded machine can
+    # write a step's control without its state: that step is not covered.
+    covered = [controls[k] for k in sorted(controls) if k in states]
+    metrics.update(task_coverage(covered[0], covered[-1], ts))
     prediction = prediction_metrics(states, controls, t0)
     if prediction is not None:
         series["prediction_t"], series["prediction_err"] = prediction.pop("t"), prediction.pop("err")
@@ -392,7 +396,8 @@ def link_metrics(controls):
 
 def task_coverage(first, last, ts):
     """How much of the task the bag holds, from the controller's task clock
-    (Control.task_time, task_duration): a bag cut short says so."""
+    (Control.task_time, task_duration) of the first and last steps covered:
+    a bag cut short says so."""
     start, end, length = first.task_time, last.task_time, last.task_duration
     return {"task_duration_s": length, "task_time_recorded_s": [start, end],
             "task_complete": end + 0.5 * ts >= length and start <= 0.5 * ts}
