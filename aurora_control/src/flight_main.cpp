@@ -30,7 +30,7 @@ namespace {
 
 struct Options {
   std::string controller, task, vehicle, csv, link, formation, config, law;
-  std::vector<long> delays;  // one (a flight), or one per drone (a formation)
+  std::vector<long> delays;  // one (a flight), or one per robot (a formation)
   long delay = 0;            // a flight's
   double rate = 0.0;         // [Hz] the compensator's, instead of its file's (0: the file's)
   std::string flown_law;     // the controller file's law (its controller.name; a flight's)
@@ -38,18 +38,27 @@ struct Options {
   bool no_clamp = false;
 };
 
-// A formation file gives each drone's link (drones[i].link) and never
-// clamps (AuRoRA's formation script does not): the flight's --link,
-// --no-clamp, --controller and --task would be ignored, so they are refused.
-void refuseFlightOnlyOptions(const po::variables_map& vm) {
-  const char* why[][2] = {
-      {"link", "give each drone's link in the formation file (drones[i].link: links/NAME.yaml)"},
-      {"no-clamp", "a formation's commands are never clamped (AuRoRA's formation script does not clamp)"},
-      {"controller", "give each drone's controller in the formation file (drones[i].controller)"},
+// Where a formation file of `shape` gives each robot's `what` (link,
+// controller): each shape's reader names its robots its own way.
+std::string robotKey(const std::string& shape, const std::string& what) {
+  if (shape == "triangle") return "formation.robots." + what + (what == "link" ? "s (one file per drone)" : " (one for the three)");
+  if (shape == "uav_ugv_line") return "formation.robots[i]." + what;
+  return "formation.drones[i]." + what;
+}
+
+// A formation file gives each robot's link and controller and never clamps
+// (AuRoRA's formation scripts do not): the flight's --link, --no-clamp,
+// --controller and --task would be ignored, so they are refused, naming the
+// file's key for the file's shape.
+void refuseFlightOnlyOptions(const po::variables_map& vm, const std::string& shape) {
+  const std::string why[][2] = {
+      {"link", "give each robot's link in the formation file (" + robotKey(shape, "link") + ": links/NAME.yaml)"},
+      {"no-clamp", "a formation's commands are never clamped (AuRoRA's formation scripts do not clamp)"},
+      {"controller", "give the robots' controllers in the formation file (" + robotKey(shape, "controller") + ")"},
       {"task", "the formation file's reference is the task"}};
   for (const auto& w : why) {
     if (vm.count(w[0]) && !vm[w[0]].defaulted()) {
-      throw ConfigError(std::string("--") + w[0] + " is refused with --formation: " + w[1]);
+      throw ConfigError("--" + w[0] + " is refused with --formation: " + w[1]);
     }
   }
 }
@@ -64,12 +73,12 @@ bool parse(int argc, char** argv, Options& o) {
       ("task", po::value(&o.task)->default_value(config + "/tasks/mission4.yaml"), "task YAML (waypoints, circle, lemniscate), or a shipped NAME (config/tasks/NAME.yaml)")
       ("rate", po::value(&o.rate), "the Bebop 2 compensator's rate [Hz] instead of its file's: the vehicle's 30 Hz divided by whole steps (30, 15, 10, 7.5, 6, 5, ...)")
       ("vehicle", po::value(&o.vehicle), "vehicle YAML or a shipped NAME (default: the controller's vehicle, config/vehicles/NAME.yaml: ardrone2, bebop2 for bebop2_compensator, pioneer3dx for the pioneer_ laws)")
-      ("delay", po::value(&o.delays)->multitoken()->composing(), "feedback delay [samples of Ts], 0 to 2047 (limits.h); with --formation one per drone (default: the file's)")
+      ("delay", po::value(&o.delays)->multitoken()->composing(), "feedback delay [samples of Ts], 0 to 2047 (limits.h); with --formation one per robot (default: the file's)")
       ("no-clamp", po::bool_switch(&o.no_clamp), "do not clamp the law's commands (an AR.Drone's sim still does, as its driver; a Bebop is clamped nowhere; refused for the Pioneer, whose laws saturate)")
-      ("formation", po::value(&o.formation), "formation YAML or a shipped NAME (config/formations/*.yaml, docs/formation.md): fly its drones and formation layer instead of --controller and --task")
+      ("formation", po::value(&o.formation), "formation YAML or a shipped NAME (config/formations/*.yaml, docs/formation.md): fly its robots and formation layer instead of --controller and --task")
       ("law", po::value(&o.law), "with --formation, a triangle's law instead of its file's: N, PSO, SPO, OSP, S-PO (docs/formation.md)")
       ("link", po::value(&o.link), "link YAML or a shipped NAME (config/links/*.yaml, docs/links.md): jitter, losses, a command-path delay; its uplink delay unless --delay is given")
-      ("csv", po::value(&o.csv), "write one row per step k = 0..N at round-trip precision: step, t, the vehicle's state after k model steps (x, y, z, phi, theta, psi, dx, dy, dz, dphi, dtheta, dpsi; the Pioneer also u, omega), its commands u1..uN applied at step k (model order), the reference of step k and the tracking error (with --formation: each drone's state and commands, Q and Qd; docs/formation.md)");
+      ("csv", po::value(&o.csv), "write one row per step k = 0..N at round-trip precision: step, t, the vehicle's state after k model steps (x, y, z, phi, theta, psi, dx, dy, dz, dphi, dtheta, dpsi; the Pioneer also u, omega), its commands u1..uN applied at step k (model order), the reference of step k and the tracking error (with --formation: each robot's state and commands, Q and Qd; docs/formation.md)");
   po::variables_map vm;
   po::store(po::command_line_parser(joinOptionValues(argc, argv, d)).options(d).run(), vm);
   if (vm.count("help")) {
@@ -110,7 +119,7 @@ void resolve(const po::variables_map& vm, const std::string& config, Options& o)
     }
     refuseRateFor(o.flown, o.rate, "--rate");
   }
-  if (!o.formation.empty()) refuseFlightOnlyOptions(vm);
+  if (!o.formation.empty()) refuseFlightOnlyOptions(vm, formationShapeOf(o.formation));
   if (o.vehicle.empty()) {
     o.vehicle = config + "/vehicles/" + (o.formation.empty() ? o.flown : LawVehicle::name()) + ".yaml";
   }
@@ -213,7 +222,9 @@ int main(int argc, char** argv) {
       const std::string shape = formationShapeOf(o.formation);
       if (!o.law.empty() && shape != "triangle") {
         throw ConfigError("--law is refused for a formation of shape '" + shape + "': it chooses a triangle's law "
-                          "(N, PSO, SPO, OSP, S-PO); the line's law is its file's formation.law");
+                          "(N, PSO, SPO, OSP, S-PO); " +
+                          (shape == "line" ? "the line's law is its file's formation.law"
+                                           : "the UAV-UGV line has one law (docs/formation.md, \"The UAV-UGV line\")"));
       }
       if (shape == "uav_ugv_line") flyUavUgvLine(f);
       else if (shape == "triangle") flyTriangle(f);

@@ -278,7 +278,7 @@ TEST(FormationSweep, TheFormationDelayStudiesSpanTheMargin) {
 // The formation checks' smallest distance on SIMD lanes (this program's
 // baseline instruction set): NaN on the lane of a NaN robot, whichever robot
 // it is, and the other lanes' own distances. (smallerDistance tests NaN as
-// !(r == r): xsimd's != on AVX-512 is ordered, false for NaN, which passed a
+// !(r == r): xsimd's != on AVX and AVX-512 is ordered, false for NaN, which passed a
 // NaN over on the engine's lanes; the equality is false for NaN everywhere.)
 template <typename T>
 void expectLaneClosestPairs() {

@@ -169,10 +169,17 @@ class PythonSweepTest(unittest.TestCase):
             (lambda: aurora.sweep(thesis_cut(), backend="cuda"), "--backend cuda"),
             (lambda: aurora.read_bag(None), "path: expected a bag file's path, got None"),
         ]
-        before = set(os.listdir(tempfile.gettempdir()))
-        expect_refusals(self, cases)
-        left = [n for n in set(os.listdir(tempfile.gettempdir())) - before if n.startswith("aurora_sweep_")]
-        self.assertEqual(left, [])
+        # Nothing left behind: aurora.sweep's folders go to a temporary
+        # directory of this test's own (the other tests share /tmp and run
+        # sweeps at the same time: a clean clone's run once saw one of theirs).
+        private = tempfile.mkdtemp(prefix="check_python_sweep_")
+        shared, tempfile.tempdir = tempfile.tempdir, private
+        try:
+            expect_refusals(self, cases)
+        finally:
+            tempfile.tempdir = shared
+        self.assertEqual(os.listdir(private), [])
+        os.rmdir(private)
 
 
 if __name__ == "__main__":

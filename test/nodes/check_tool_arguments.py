@@ -138,6 +138,17 @@ class FormationAndLinkArgumentsTest(unittest.TestCase):
                      "--link is refused with --formation")
         self.refused(["--formation", f, "--link", "/missing.yaml"], "--link is refused with --formation")
         self.refused(["--formation", f, "--no-clamp"], "--no-clamp is refused with --formation")
+        link = os.path.join(config_dir(), "links", "wifi_lab.yaml")
+        # Each shape's file names its robots' links and controllers its own way.
+        for name, link_key, controller_key in (
+                ("line_lemniscate", "formation.drones[i].link", "formation.drones[i].controller"),
+                ("triangle_ardrones", "formation.robots.links (one file per drone)", "formation.robots.controller"),
+                ("line_pioneer_ardrone", "formation.robots[i].link", "formation.robots[i].controller")):
+            f = os.path.join(config_dir(), "formations", name + ".yaml")
+            self.refused(["--formation", f, "--link", link], "--link is refused with --formation", link_key)
+            self.refused(["--formation", f, "--controller", "underactuated"], "--controller is refused", controller_key)
+        self.refused(["--formation", os.path.join(config_dir(), "formations", "line_pioneer_ardrone.yaml"), "--law", "N"],
+                     "the UAV-UGV line has one law")
 
     def test_a_delay_beside_a_link_replaces_its_uplink_delay(self):
         link = os.path.join(config_dir(), "links", "wifi_lab.yaml")  # uplink delay 1

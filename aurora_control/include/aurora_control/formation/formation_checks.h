@@ -93,7 +93,7 @@ AURORA_HD inline void formationErrors(const T X[Shape::kVariables], const T Xd[S
 template <typename T>
 AURORA_HD inline T smallerDistance(const T& closest, const T& r) {
   using aurora_common::select;
-  // !(r == r): r is NaN (xsimd's != is ordered on AVX-512, false for NaN).
+  // !(r == r): r is NaN (xsimd's != is ordered on AVX and AVX-512, false for NaN).
   return select((r < closest) | !(r == r), r, closest);
 }
 

@@ -227,7 +227,7 @@ inline FormationFile readFormationFile(const std::string& path, const std::strin
   const YAML::Node n = formationSection(r, path, {"shape", "law", "period", "gains", "reference", "drones"});
   FormationFile f;
   const std::string shape = r.text(r.require(n, "formation", "shape", "line"), "formation.shape");
-  if (shape != "line") r.fail("formation.shape", "= '" + shape + "' is unknown: accepted line (and, offline, triangle and uav_ugv_line)");
+  if (shape != "line") r.fail("formation.shape", "= '" + shape + "' is unknown: accepted line, triangle, uav_ugv_line");
   const std::string law = r.text(r.require(n, "formation", "law", "inverse_kinematics, position_priority, shape_priority"), "formation.law");
   bool known = false;
   for (FormationLaw l : {FormationLaw::kInverseKinematics, FormationLaw::kPositionPriority, FormationLaw::kShapePriority}) {
