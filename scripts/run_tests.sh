@@ -8,6 +8,9 @@ export PATH=/usr/bin:/bin:$PATH
 [ -f /opt/ros/noetic/setup.bash ] && source /opt/ros/noetic/setup.bash
 source "$BUILD/devel/setup.bash"
 export ROS_LOG_DIR=${ROS_LOG_DIR:-$PWD/$BUILD/ros_log}
+# The rostests' bags, in this build (two checkouts' runs at once on one
+# machine would share /tmp/aurora_tests, the tests' default).
+export AURORA_TEST_BAG_DIR=${AURORA_TEST_BAG_DIR:-$(cd "$BUILD" && pwd)/test_bags}
 # Most rostests wait for simulated time in real time (the CPU is idle for much
 # of a run): twice the cores, at most 8, keeps the machine busy.
 cores=$(nproc 2>/dev/null || echo 2)
