@@ -7,6 +7,7 @@
 #include <ros/timer.h>
 
 #include <algorithm>
+#include <deque>
 
 namespace aurora_control {
 
@@ -15,29 +16,42 @@ namespace aurora_control {
 // due in that time, and a watchdog judging on those callbacks would hover
 // for a stall of its own, fresh states at hand. A timer callback that runs
 // more than a period after it was due marks such a stall; a state's age
-// leaves it out. The watchdog still fires when the states really stop, late
-// by at most the stall (the process could not have acted sooner).
+// leaves out every stall since the state came. The watchdog still fires
+// when the states really stop, late by at most the stalls (the process
+// could not have acted sooner).
 class ProcessStall {
  public:
   // Called first in each timer callback of the node's loop (period [s]).
   void timerRan(const ros::TimerEvent& event, double period) {
-    if ((event.current_real - event.current_expected).toSec() > period) {
-      from_ = event.current_expected;
-      to_ = event.current_real;
+    if ((event.current_real - event.current_expected).toSec() <= period) return;
+    const Stall stall{event.current_expected, event.current_real};
+    if (!stalls_.empty() && stall.from <= stalls_.back().to) {  // late callbacks of one stall: one span
+      stalls_.back().to = std::max(stalls_.back().to, stall.to);
+      return;
     }
+    stalls_.push_back(stall);
+    if (stalls_.size() > kKept) stalls_.pop_front();
   }
 
-  // [s] from `received` (the newest state's arrival) to `now`, less the
-  // last stall within that span; never negative.
+  // [s] from `received` (the newest state's arrival) to `now`, less every
+  // stall within that span (the last kKept); never negative.
   double stateAge(const ros::Time& now, const ros::Time& received) const {
     double age = (now - received).toSec();
-    const ros::Time a = std::max(received, from_), b = std::min(now, to_);
-    if (b > a) age -= (b - a).toSec();
+    for (const Stall& s : stalls_) {
+      const ros::Time a = std::max(received, s.from), b = std::min(now, s.to);
+      if (b > a) age -= (b - a).toSec();
+    }
     return std::max(0.0, age);
   }
 
  private:
-  ros::Time from_, to_;  // the last stall (none: both 0)
+  struct Stall {
+    ros::Time from, to;
+  };
+  // More than a watchdog's span needs: its timeouts are seconds, a stall a
+  // period at least.
+  static constexpr size_t kKept = 64;
+  std::deque<Stall> stalls_;  // oldest first, apart
 };
 
 }  // namespace aurora_control
