@@ -12,6 +12,7 @@
 
 #include "aurora_control/loop/flight_setup.h"
 #include "aurora_control/formation/formation_flight.h"
+#include "aurora_control/formation/triangle_formation.h"
 #include "aurora_control/formation/uav_ugv_yaml.h"
 #include "aurora_control/params/shipped_files.h"
 
@@ -176,6 +177,32 @@ py::dict simulateShapedFormationFiles(const std::string& formation, const std::v
 // The shape of a formation file ("line", "uav_ugv_line", "triangle").
 std::string shapeOf(const std::string& formation) { return formationShapeOf(formation); }
 
+// Q~ = Qd - Q of a shape's variables as its layer and checks take it (the
+// shape's own angle wraps: the triangle's, the UAV-UGV line's; the line's
+// none), at positions X: for the formation report.
+template <class Shape>
+std::vector<double> shapeError(const std::vector<double>& X, const std::vector<double>& Qd,
+                               const std::vector<double>& Q) {
+  constexpr int n = Shape::kVariables;
+  if (X.size() != size_t(n) || Qd.size() != size_t(n) || Q.size() != size_t(n)) {
+    throw aurora_common::ConfigError("formation_error: X, Qd and Q must hold " + std::to_string(n) +
+                                     " values each for this shape (" + std::to_string(X.size()) + ", " +
+                                     std::to_string(Qd.size()) + ", " + std::to_string(Q.size()) + " given)");
+  }
+  std::vector<double> e(n);
+  Shape::error(X.data(), Qd.data(), Q.data(), e.data());
+  return e;
+}
+
+std::vector<double> formationError(const std::string& shape, const std::vector<double>& X,
+                                   const std::vector<double>& Qd, const std::vector<double>& Q) {
+  if (shape == "triangle") return shapeError<TriangleFormation<double>>(X, Qd, Q);
+  if (shape == "uav_ugv_line") return shapeError<UavUgvLine<double>>(X, Qd, Q);
+  if (shape == "line") return shapeError<LineFormation<double>>(X, Qd, Q);
+  throw aurora_common::ConfigError("formation_error: shape '" + shape + "' is unknown: accepted line, uav_ugv_line, "
+                                   "triangle");
+}
+
 }  // namespace
 
 PYBIND11_MODULE(_core, m) {
@@ -202,4 +229,6 @@ PYBIND11_MODULE(_core, m) {
         py::arg("law"), py::arg("config_dir"),
         "A UAV-UGV line or triangle file flown as flight --formation flies it: its CSV's columns and rows.");
   m.def("formation_shape", &shapeOf, py::arg("formation"), "The shape of a formation file.");
+  m.def("formation_error", &formationError, py::arg("shape"), py::arg("X"), py::arg("Qd"), py::arg("Q"),
+        "Qd - Q of a shape's variables with the shape's own angle wraps, at positions X (3 per robot).");
 }

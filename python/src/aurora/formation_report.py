@@ -87,6 +87,17 @@ def errors_of(m, X):
     return Q, Xd, e_position, e_shape
 
 
+def variable_errors(m, X, Q):
+    """Qd - Q at tick m, as the shape's layer and flight --formation take it
+    (the shape's own angle wraps, aurora._core.formation_error: the
+    triangle's psi follows a reference that turns on past pi, its Q stays
+    within [-pi, pi]); a bag recorded before the message named its shape
+    is the two-drone line's, which wraps nothing."""
+    shape = getattr(m, "shape", "") or "line"
+    from aurora import _core
+    return _core.formation_error(shape, X, list(m.Qd), Q)
+
+
 def series_of(drones, ticks, states, ts):
     """Per tick k present for every robot: t, Q, Qd, the desired positions,
     the errors, each robot's position, reference and tracking error, the
@@ -94,7 +105,7 @@ def series_of(drones, ticks, states, ts):
     the bag's first and last whose Formation message or some robot's state
     the bag lacks (the recorder drops messages on a loaded machine): the
     series skip them."""
-    s = {k: [] for k in ("k", "t", "Q", "Qd", "Xd", "e_position", "e_shape", "distance", "missing")}
+    s = {k: [] for k in ("k", "t", "Q", "Qd", "Qtil", "Xd", "e_position", "e_shape", "distance", "missing")}
     for d in drones:
         s[d] = {"pos": [], "ref": [], "track": []}
     count = getattr(ticks[min(ticks)], "ticks", 0)  # 0 in bags recorded before the field: every tick
@@ -114,6 +125,7 @@ def series_of(drones, ticks, states, ts):
         s["t"].append(k * ts)
         s["Q"].append(Q)
         s["Qd"].append(list(m.Qd))
+        s["Qtil"].append(variable_errors(m, X, Q))
         s["Xd"].append(Xd)
         s["e_position"].append(e_position)
         s["e_shape"].append(e_shape)
@@ -139,7 +151,7 @@ def metrics_of(drones, s, ts, names=VARIABLES):
     variable (rho, alpha, beta for a line), the horizontal position and
     the height; the checks' errors; the smallest distance; tracking."""
     judged = [i for i, t in enumerate(s["t"]) if t >= SETTLE_TIME]
-    err = lambda j: [s["Qd"][i][j] - s["Q"][i][j] for i in judged]  # noqa: E731
+    err = lambda j: [s["Qtil"][i][j] for i in judged]  # noqa: E731
     horizontal = [math.hypot(a, b) for a, b in zip(err(0), err(1))]
     after = {"%s_%s" % (n, unit_of(n)): rms(err(j)) for j, n in enumerate(names) if j >= 3}
     after.update({"position_xy_m": rms(horizontal), "height_m": rms(err(2))})
@@ -179,7 +191,8 @@ def figures(drones, s, out_dir, pdf, names=VARIABLES):
     for name, rows in (("shape", tuple(range(3, len(names)))), ("position", (0, 1, 2))):
         fig, axes = plt.subplots(len(rows), 1, figsize=(8, 7 if len(rows) <= 3 else 11), sharex=True)
         for ax, j in zip(axes, rows):
-            ax.plot(t, [q[j] * scale[j] for q in s["Q"]], label=names[j])
+            # Q as the layer compares it with Qd: Qd - Q~ (an angle on the desired's branch).
+            ax.plot(t, [(qd[j] - e[j]) * scale[j] for qd, e in zip(s["Qd"], s["Qtil"])], label=names[j])
             ax.plot(t, [q[j] * scale[j] for q in s["Qd"]], "--", color="tab:red", label=names[j] + " desired")
             ax.set_ylabel("%s [%s]" % (names[j], units[j]))
             ax.grid(True, alpha=0.3)
