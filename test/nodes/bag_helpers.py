@@ -33,3 +33,12 @@ def run_tool(cmd, timeout=240):
     """A tool's exit status and its output (stdout and stderr together)."""
     p = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, timeout=timeout)
     return p.returncode, p.stdout.decode(errors="replace")
+
+
+def report_on(bag):
+    """`rosrun aurora report BAG` into BAG's folder (no PDF): the report's
+    folder, its output and exit status."""
+    out = bag[:-4] + "_report"
+    p = subprocess.run(["rosrun", "aurora", "report", bag, "--out", out, "--no-pdf"],
+                       stdout=subprocess.PIPE, stderr=subprocess.STDOUT, universal_newlines=True)
+    return out, p.returncode, p.stdout

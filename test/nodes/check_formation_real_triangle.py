@@ -3,13 +3,15 @@
 against three fake AR.Drone drivers (ardrone1..3), each with its mocap
 stream, the three take off together, the formation flies its ticks once all
 three hover and holds its shape, and at the end all three land."""
-import threading
+import os
+import sys
 import unittest
 
 import rospy
 import rostest
-from aurora_msgs.msg import DroneState, Formation
-from std_msgs.msg import String
+
+sys.path.insert(0, os.path.dirname(os.path.realpath(__file__)))
+from real_formation import flown_ticks, watch_until_landed  # noqa: E402
 
 DRONES = ["ardrone1", "ardrone2", "ardrone3"]
 # Measured here: after 10 s shape error at most 0.239 m, position error 0.355 m (0.235, 0.358 m with both
@@ -20,29 +22,9 @@ SHAPE_ERROR, POSITION_ERROR = 0.5, 0.6
 
 class FormationRealTriangleTest(unittest.TestCase):
     def test_three_drones_fly_the_triangle(self):
-        ticks, heights, received = [], {d: [] for d in DRONES}, {}
-        landed = threading.Event()
-
-        def on_formation(m):
-            ticks.append(m)
-            if m.mode == "landed":
-                landed.set()
-        subs = [rospy.Subscriber("/formation/formation", Formation, on_formation, queue_size=1000)]
-        for ns in DRONES:
-            subs.append(rospy.Subscriber("/%s/fake_driver/true_state" % ns, DroneState,
-                                         lambda m, ns=ns: heights[ns].append(m.position.z), queue_size=1000))
-            subs.append(rospy.Subscriber("/%s/fake_driver/received" % ns, String,
-                                         lambda m, ns=ns: received.__setitem__(ns, m.data)))
-        self.assertTrue(landed.wait(140.0), "the flight did not end with 'landed': last mode %r"
-                        % (ticks[-1].mode if ticks else None))
-        modes = [m.mode for m in ticks]
-        # "takeoff" unless this checker connected after it (a loaded machine starts it late).
-        if not modes[0].startswith("hold (waiting for"):
-            self.assertIn("takeoff", modes)
-        self.assertIn("land (task complete)", modes)
-        flown = [m for m in ticks if m.mode == "fly"]
-        self.assertEqual(flown[0].step, 0)
-        self.assertEqual(flown[-1].step, flown[-1].ticks - 1, "the formation did not fly its ticks 0 .. n - 1")
+        ended, ticks, truth, received = watch_until_landed(DRONES, 140.0)
+        self.assertTrue(ended, "the flight did not end with 'landed': last mode %r" % (ticks[-1].mode if ticks else None))
+        flown = flown_ticks(self, ticks)
         self.assertEqual(flown[0].shape, "triangle")
         self.assertEqual(list(flown[0].drones), DRONES)
         self.assertEqual(list(flown[0].vehicles), ["ardrone2"] * 3)
@@ -56,10 +38,8 @@ class FormationRealTriangleTest(unittest.TestCase):
         for ns in DRONES:  # each took off and landed through its own driver
             self.assertNotIn("takeoff=0", received[ns], ns)
             self.assertNotIn("land=0", received[ns], ns)
-            self.assertGreater(max(heights[ns]), 0.5, ns)
-            self.assertLess(heights[ns][-1], 0.1, ns)
-        for s in subs:
-            s.unregister()
+            self.assertGreater(max(z for _, _, z in truth[ns]), 0.5, ns)
+            self.assertLess(truth[ns][-1][2], 0.1, ns)
 
 
 if __name__ == "__main__":

@@ -20,7 +20,7 @@ import rostest
 import aurora
 
 sys.path.insert(0, os.path.dirname(os.path.realpath(__file__)))
-from bag_helpers import record_until  # noqa: E402
+from bag_helpers import record_until, report_on  # noqa: E402
 
 
 def flight_errors(formation_file, delays, first, last, ts, names, skipped=()):
@@ -77,12 +77,10 @@ class FormationReportTest(unittest.TestCase):
     def test_report_of_a_formation_bag(self):
         bag = record_until(900, rospy.get_param("~bag_dir"), rospy.get_param("~prefix"),
                            state="/ardrone2/state", recorder="/recorder")
-        out = bag[:-4] + "_report"
-        p = subprocess.run(["rosrun", "aurora", "report", bag, "--out", out, "--no-pdf"],
-                           stdout=subprocess.PIPE, stderr=subprocess.STDOUT, universal_newlines=True)
-        self.assertEqual(p.returncode, 0, p.stdout)
+        out, rc, said = report_on(bag)
+        self.assertEqual(rc, 0, said)
         # Issue 31: it said nothing while it rendered the video (80 s for a whole flight).
-        self.assertIn("report: formation: rendering the video: frame 1 of", p.stdout)
+        self.assertIn("report: formation: rendering the video: frame 1 of", said)
         m = json.load(open(os.path.join(out, "metrics.json")))["formation"]
         last = min(m["last_tick"], 2699)  # flight runs ticks 0 .. 2699
         self.assertEqual(m["first_tick"], 0)

@@ -8,7 +8,6 @@ distance, each drone's tracking, the figures and the video."""
 import json
 import math
 import os
-import subprocess
 import sys
 import unittest
 
@@ -19,7 +18,7 @@ import aurora
 from aurora import _core
 
 sys.path.insert(0, os.path.dirname(os.path.realpath(__file__)))
-from bag_helpers import record_until  # noqa: E402
+from bag_helpers import record_until, report_on  # noqa: E402
 
 VARIABLES = ["xF", "yF", "zF", "p", "q", "beta", "phi", "theta", "psi"]
 
@@ -28,10 +27,8 @@ class TriangleReportTest(unittest.TestCase):
     def test_report_of_a_triangle_bag(self):
         bag = record_until(900, rospy.get_param("~bag_dir"), rospy.get_param("~prefix"),
                            state="/ardrone3/state", recorder="/recorder")
-        out = bag[:-4] + "_report"
-        p = subprocess.run(["rosrun", "aurora", "report", bag, "--out", out, "--no-pdf"],
-                           stdout=subprocess.PIPE, stderr=subprocess.STDOUT, universal_newlines=True)
-        self.assertEqual(p.returncode, 0, p.stdout)
+        out, rc, said = report_on(bag)
+        self.assertEqual(rc, 0, said)
         m = json.load(open(os.path.join(out, "metrics.json")))["formation"]
         self.assertEqual(m["variables"], VARIABLES)
         self.assertEqual(m["first_tick"], 0)
