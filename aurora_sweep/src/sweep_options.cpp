@@ -20,7 +20,7 @@ namespace aurora_sweep {
 namespace {
 
 const char* kAbout =
-    "usage: sweep --config FILE --out DIR [options]\n"
+    "usage: sweep --config FILE|NAME --out DIR [options]\n"
     "\n"
     "Runs every combination of a sweep file (a law's gains x delay x model factors x\n"
     "link values, on any task; or a formation's robots' delays x formation gains x link\n"
@@ -44,8 +44,8 @@ po::options_description describe(Options& o, Numbers& n) {
   po::options_description d(kAbout, 100, 50);
   d.add_options()
       ("config", po::value(&o.config)->value_name("FILE"),
-       "sweep file (YAML), e.g. config/sweeps/positioning_delay.yaml (the thesis grid) or "
-       "config/sweeps/underactuated_13.yaml (13 parameters)")
+       "sweep file (YAML), or a shipped NAME (config/sweeps/NAME.yaml), e.g. positioning_delay (the thesis "
+       "grid) or underactuated_13 (13 parameters)")
       ("out", po::value(&o.out)->value_name("DIR"), "output folder (created; must be writable)")
       ("backend", po::value(&o.backend)->value_name("NAME"),
        "scalar (one simulation at a time, one thread), cpu (SIMD lanes on all cores), cuda (one "
@@ -118,7 +118,7 @@ void check(Options& o, const Numbers& n, const po::options_description& d) {
                "threads (a kernel may allow fewer: checked against its registers before the run)", d);
   }
   if (!n.chunk_size.empty()) o.chunk_size = wholeNumber("--chunk-size", n.chunk_size, 1L << 30, d);
-  if (o.config.empty()) usageError("--config FILE is required", d);
+  if (o.config.empty()) usageError("--config FILE (or a shipped NAME) is required", d);
   if (o.out.empty()) usageError("--out DIR is required", d);
   if (o.threads == 0) o.threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
 }

@@ -13,6 +13,7 @@
 #include <map>
 
 #include "aurora_common/ros/config_dir.h"
+#include "aurora_control/params/shipped_files.h"
 #include "aurora_sweep/backends.h"
 #include "aurora_sweep/cuda_backend.h"
 #include "aurora_sweep/sweep_file.h"
@@ -176,7 +177,9 @@ std::string outputFormat(const Options& opt, long combinations) {
 
 StartCheck loadAndChooseBackend(const Options& opt, const MpiRanks* mpi, Start& s) {
   try {
-    s.spec = loadSweepFile(opt.config, opt.config_dir.empty() ? aurora_common::configDir() : opt.config_dir);
+    const std::string config_dir = opt.config_dir.empty() ? aurora_common::configDir() : opt.config_dir;
+    // A shipped NAME is config/sweeps/NAME.yaml (flight's rule, shipped_files.h).
+    s.spec = loadSweepFile(aurora_control::shippedOrPath(opt.config, config_dir, "sweeps"), config_dir);
   } catch (const std::exception& e) {
     return {2, e.what()};
   }

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -428,6 +429,27 @@ TEST(SweepProgram, RefusalsLeaveNothingBehind) {
   EXPECT_EQ(log.find("combinations, backend"), std::string::npos) << "work started before the check: " << log;
   struct stat st;
   EXPECT_NE(stat((out2 + "/results.csv").c_str(), &st), 0);
+}
+
+// --config takes a shipped NAME as flight does (config/sweeps/NAME.yaml of
+// the config folder, README's `sweep --config link_margin`), or a path; a
+// NAME no file has is refused naming the file it looked for.
+TEST(SweepProgram, AShippedSweepIsTakenByItsName) {
+  const std::string config = ::testing::TempDir() + "/sweep_named_config";
+  std::string log;
+  ASSERT_EQ(std::system(("rm -rf '" + config + "' && mkdir -p '" + config + "/sweeps' && cp '" + kData +
+                         "/small_grid.yaml' '" + config + "/sweeps/' && ln -s '" + kConfig + "/vehicles' '" +
+                         config + "/vehicles'").c_str()), 0);
+  const std::string out = ::testing::TempDir() + "/sweep_named_out";
+  ASSERT_EQ(runSweep("--config small_grid --config-dir " + config + " --out " + out +
+                         " --backend scalar --no-plots --quiet --overwrite",
+                     log), 0)
+      << log;
+  std::stringstream summary;
+  summary << std::ifstream(out + "/summary.json").rdbuf();
+  EXPECT_NE(summary.str().find("\"combinations\": 80"), std::string::npos) << summary.str();
+  EXPECT_EQ(runSweep("--config nowhere --config-dir " + config + " --out " + out + "_no --no-plots", log), 2);
+  EXPECT_NE(log.find("'" + config + "/sweeps/nowhere.yaml' cannot be read"), std::string::npos) << log;
 }
 
 // The plots start without a shell: an output folder whose name holds
