@@ -14,6 +14,8 @@ import math
 import os
 import sys
 
+from aurora import _core
+
 FORMATION_TOPIC = "/formation/formation"
 FORMATION_TYPE = "aurora_msgs/Formation"
 # The formation checks' defaults (aurora_control/formation/formation_checks.h, FormationCriteria::study).
@@ -93,9 +95,7 @@ def variable_errors(m, X, Q):
     triangle's psi follows a reference that turns on past pi, its Q stays
     within [-pi, pi]); a bag recorded before the message named its shape
     is the two-drone line's, which wraps nothing."""
-    shape = getattr(m, "shape", "") or "line"
-    from aurora import _core
-    return _core.formation_error(shape, X, list(m.Qd), Q)
+    return _core.formation_error(getattr(m, "shape", "") or "line", X, list(m.Qd), Q)
 
 
 def series_of(drones, ticks, states, ts):
@@ -288,12 +288,13 @@ def missing_text(m):
 
 def markdown(m, files):
     r = m["rms_after_settle"]
+    missing = missing_text(m)
     shape = ["%s %.4f %s" % (k.rsplit("_", 1)[0], v, k.rsplit("_", 1)[1]) for k, v in r.items()
              if k not in ("position_xy_m", "height_m")]
     lines = ["## Formation", "",
              "| metric | value |", "|---|---|",
              "| ticks | %d (steps %d to %d%s) |" % (m["ticks"], m["first_tick"], m["last_tick"],
-                                                  "; " + missing_text(m) if m["ticks_missing"] else ""),
+                                                  ("; " + missing) if missing else ""),
              "| RMS after %.0f s: %s | %s |" % (m["settle_time_s"], ", ".join(m["variables"][3:]), ", ".join(shape)),
              "| RMS after %.0f s: position (x, y) / height | %.4f m / %.4f m |" % (
                  m["settle_time_s"], r["position_xy_m"], r["height_m"]),
