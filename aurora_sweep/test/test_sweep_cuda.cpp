@@ -260,9 +260,12 @@ TEST(CudaBackend, LinkSweepsMatchCpu) {
 
 // Formation sweeps, one formation per thread (docs/formation.md, "Formation
 // sweeps"): both laws, double and float, ideal and over lossy links with
-// repeats, in launches of 5, against the scalar loop (the same code).
-// Delays up to 15 samples: beyond, the flights swing so hard that last-bit
-// differences grow into other outcomes.
+// repeats, in launches of 5, against the scalar loop (the same code), no
+// further from it than the CPU's SIMD lanes (expectNoFurtherThanLanes: on
+// an H200 one run of line_lemniscate_ik beyond 1e-9 in double, where the
+// lanes reach 4.5e-10 over lossy links). Delays up to 15 samples: beyond,
+// the flights swing so hard that last-bit differences grow into other
+// outcomes.
 TEST(CudaBackend, FormationSweepsMatchTheScalarLoop) {
   SKIP_WITHOUT_DEVICE();
   const std::string grid = "  parameters:\n    delay_1: {values: [0, 9, 15]}\n    delay_2: {values: [0, 15]}\n"
@@ -273,12 +276,12 @@ TEST(CudaBackend, FormationSweepsMatchTheScalarLoop) {
     for (const std::string& body : {grid, lossy, own}) {
       SweepSpec spec = loadSweepFile(test::writeTemp(std::string("cuda_formation_") + file + ".yaml",
           std::string("sweep:\n  early_stop: false\n  formation: formations/") + file + ".yaml\n" + body), AURORA_CONFIG_DIR);
-      EXPECT_EQ(fieldDifferences(cudaInChunks(spec, 5), test::runOn("scalar", spec)), 0) << file << " double";
+      SCOPED_TRACE(std::string(file) + ": " + body);
+      test::expectNoFurtherThanLanes(test::runOn("scalar", spec), cudaInChunks(spec, 5), test::runOn("cpu", spec), 0.0);
       spec.precision = Precision::kFloat;
       const std::vector<SimResult> gpu = cudaInChunks(spec, 5), cpu = test::runOn("scalar", spec);
-      long flags = 0;
-      for (size_t i = 0; i < cpu.size(); ++i) flags += gpu[i].ok != cpu[i].ok || gpu[i].steps != cpu[i].steps;
-      EXPECT_EQ(flags, 0) << file << " float";
+      const test::RunDifferences d = test::runDifferences(cpu, gpu), l = test::runDifferences(cpu, test::runOn("cpu", spec));
+      EXPECT_LE(d.flags, 2 * l.flags) << "float: device " << d.text() << "; CPU lanes " << l.text();
     }
   }
 }
@@ -286,7 +289,9 @@ TEST(CudaBackend, FormationSweepsMatchTheScalarLoop) {
 // The Bebop 2's and the Pioneer's delay studies (each law's own kernel) on
 // the GPU against the scalar loop, in double: the checks of all but 0.1 %
 // of the runs equal (the device's tanh, sin and cos differ from libm's in
-// the last bits, and a run on the edge of a check may go either way).
+// the last bits, and a run on the edge of a check may go either way), or
+// no more than twice as many as the CPU's SIMD lanes' (the Bebop at 5 Hz:
+// expectNoFurtherThanLanes).
 TEST(CudaBackend, TheOtherVehiclesStudiesMatchTheScalarLoop) {
   SKIP_WITHOUT_DEVICE();
   for (const char* study : {"bebop2_delay", "bebop2_delay_5hz", "pioneer_delay"}) {
@@ -294,7 +299,7 @@ TEST(CudaBackend, TheOtherVehiclesStudiesMatchTheScalarLoop) {
     const SweepSpec spec = loadSweepFile(std::string(AURORA_CONFIG_DIR) + "/sweeps/" + study + ".yaml", AURORA_CONFIG_DIR);
     std::vector<SimResult> gpu;
     runCuda(spec, 0, gpu);
-    test::expectRunsAgree(test::runOn("scalar", spec), gpu, 1e-3);
+    test::expectNoFurtherThanLanes(test::runOn("scalar", spec), gpu, test::runOn("cpu", spec), 1e-3);
   }
 }
 
@@ -404,7 +409,9 @@ TEST(CudaBackend, AuRoRAsFormationsHaveKernels) {
 // The triangle's three drones and the UAV-UGV line's Pioneer and drone on
 // the GPU against the scalar loop: each robot its own delay, ideal and over
 // lossy links with repeats, in launches of 5; double (the checks of all but
-// 0.1 % of the runs equal) and float (flags).
+// 0.1 % of the runs equal) and float (flags), no further from it than the
+// CPU's SIMD lanes (float triangles: the lanes 2 of 12 runs with other
+// flags, an H200 1).
 TEST(CudaBackend, AuRoRAsFormationSweepsMatchTheScalarLoop) {
   SKIP_WITHOUT_DEVICE();
   const std::string triangle = "  parameters:\n    delay_1: {values: [0, 6]}\n    delay_2: {values: [0, 9]}\n"
@@ -418,12 +425,12 @@ TEST(CudaBackend, AuRoRAsFormationSweepsMatchTheScalarLoop) {
       SweepSpec spec = loadSweepFile(test::writeTemp(std::string("cuda_shape_") + file_body.first + ".yaml",
           std::string("sweep:\n  early_stop: false\n  formation: formations/") + file_body.first + ".yaml\n" +
           file_body.second + extra), AURORA_CONFIG_DIR);
-      test::expectRunsAgree(test::runOn("scalar", spec), cudaInChunks(spec, 5), 1e-3);
+      test::expectNoFurtherThanLanes(test::runOn("scalar", spec), cudaInChunks(spec, 5), test::runOn("cpu", spec), 1e-3);
       spec.precision = Precision::kFloat;
       const std::vector<SimResult> gpu = cudaInChunks(spec, 5), cpu = test::runOn("scalar", spec);
-      long flags = 0;
-      for (size_t i = 0; i < cpu.size(); ++i) flags += gpu[i].ok != cpu[i].ok;
-      EXPECT_LE(flags, static_cast<long>(cpu.size() / 50)) << "float flags";
+      const test::RunDifferences d = test::runDifferences(cpu, gpu), l = test::runDifferences(cpu, test::runOn("cpu", spec));
+      EXPECT_LE(double(d.flags), std::max(double(cpu.size()) / 50, 2.0 * double(l.flags)))
+          << "float: device " << d.text() << "; CPU lanes " << l.text();
     }
   }
 }
