@@ -1,10 +1,12 @@
 #include "controller_node.h"
 
 #include <geometry_msgs/Twist.h>
+#include <geometry_msgs/TwistStamped.h>
 #include <nav_msgs/Path.h>
 #include <std_msgs/Empty.h>
 #include <visualization_msgs/MarkerArray.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -95,6 +97,7 @@ template <class Settings>
 void ControllerNodeOf<Settings>::connectTopics(const SafetyConfig& safety) {
   cmd_pub_ = nh_.advertise<geometry_msgs::Twist>("cmd_vel", 1000);
   control_pub_ = nh_.advertise<aurora_msgs::Control>("control", 1000);
+  if (lockstep_) step_cmd_pub_ = nh_.advertise<geometry_msgs::TwistStamped>("cmd_vel_stamped", 1000);
   markers_pub_ = nh_.advertise<visualization_msgs::MarkerArray>("waypoints", 1, true);
   desired_path_pub_ = nh_.advertise<nav_msgs::Path>("desired_path", 1, true);
   // The drivers' names (ardrone_autonomy: ardrone/takeoff ...; bebop_autonomy:
@@ -330,6 +333,7 @@ void ControllerNodeOf<Settings>::onState(const aurora_msgs::DroneState::ConstPtr
   if (!core_->push(sample)) {
     // The lockstep sim re-sends a state it got no answer to: answer again
     // with the same command; the history already holds this sample.
+    answering_ = msg->header.stamp;
     if (lockstep_) sendCommand(last_sent_);
     return;
   }
@@ -341,6 +345,7 @@ void ControllerNodeOf<Settings>::onState(const aurora_msgs::DroneState::ConstPtr
   if (!msg->header.frame_id.empty()) state_frame_ = msg->header.frame_id;
   last_state_time_ = ros::Time::now();
   if (lockstep_) {
+    answering_ = msg->header.stamp;
     cycle(msg->header.stamp, 0.0);
   } else if (!timer_triggered_) {
     cycle(ros::Time::now(), 0.0);
@@ -351,7 +356,12 @@ template <class Settings>
 bool ControllerNodeOf<Settings>::lockstepListenersReady() const {
   const int cmd = static_cast<int>(cmd_pub_.getNumSubscribers());
   const int control = static_cast<int>(control_pub_.getNumSubscribers());
-  if (cmd >= lockstep_cmd_subscribers_ && control >= lockstep_control_subscribers_) return true;
+  // The sim steps on cmd_vel_stamped: it listens there when cmd_vel has listeners to wait for.
+  const int stepping = static_cast<int>(step_cmd_pub_.getNumSubscribers());
+  if (cmd >= lockstep_cmd_subscribers_ && control >= lockstep_control_subscribers_ &&
+      stepping >= std::min(1, lockstep_cmd_subscribers_)) {
+    return true;
+  }
   ROS_INFO_THROTTLE(5.0, "controller: lockstep waits for %d subscriber(s) of %s (%d now) and %d of "
                     "%s (%d now) before the first step", lockstep_cmd_subscribers_,
                     cmd_pub_.getTopic().c_str(), cmd, lockstep_control_subscribers_,
@@ -428,7 +438,14 @@ void ControllerNodeOf<Settings>::serviceDriverCommands(double now, const double*
 
 template <class Settings>
 void ControllerNodeOf<Settings>::sendCommand(const double U[kMaxInputs]) {
-  cmd_pub_.publish(aurora_sim::twistMsgFromModelCommand<Vehicle>(U));
+  const geometry_msgs::Twist twist = aurora_sim::twistMsgFromModelCommand<Vehicle>(U);
+  cmd_pub_.publish(twist);
+  if (lockstep_) {
+    geometry_msgs::TwistStamped answer;
+    answer.header.stamp = answering_;
+    answer.twist = twist;
+    step_cmd_pub_.publish(answer);
+  }
   for (int i = 0; i < kMaxInputs; ++i) last_sent_[i] = U[i];
   ++sent_in_window_;
 }

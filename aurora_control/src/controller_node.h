@@ -110,6 +110,10 @@ class ControllerNodeOf {
   ros::ServiceServer set_parameters_;
   ros::Publisher descriptions_pub_, updates_pub_;
   ros::Publisher cmd_pub_, control_pub_, markers_pub_, desired_path_pub_;
+  // Lockstep: each command also as cmd_vel_stamped, stamped with the state
+  // it answers (answering_), on which the sim steps once per step.
+  ros::Publisher step_cmd_pub_;
+  ros::Time answering_;
   // take-off and land: held until the driver listens, re-sent until shown;
   // reset: sent once
   TakeoffLand takeoff_land_;

@@ -1,7 +1,9 @@
 #include "formation_node.h"
 
 #include <geometry_msgs/Twist.h>
+#include <geometry_msgs/TwistStamped.h>
 
+#include <algorithm>
 #include <limits>
 
 #include "aurora_control/formation/formation_yaml.h"
@@ -96,6 +98,7 @@ void FormationNode::connect() {
     const std::string ns = "/" + name;
     const int d = static_cast<int>(cmd_pubs_.size());
     cmd_pubs_.push_back(nh_.advertise<geometry_msgs::Twist>(ns + "/cmd_vel", 1000));
+    if (lockstep_) step_cmd_pubs_.push_back(nh_.advertise<geometry_msgs::TwistStamped>(ns + "/cmd_vel_stamped", 1000));
     state_subs_.push_back(nh_.subscribe<aurora_msgs::DroneState>(
         ns + "/state", 1000, [this, d](const aurora_msgs::DroneState::ConstPtr& m) { onState(d, m); },
         ros::VoidConstPtr(), ros::TransportHints().tcpNoDelay()));
@@ -108,6 +111,10 @@ void FormationNode::connect() {
 bool FormationNode::listenersReady() const {
   for (const ros::Publisher& p : cmd_pubs_) {
     if (static_cast<int>(p.getNumSubscribers()) < cmd_subscribers_) return false;
+  }
+  // Each robot's sim steps on its cmd_vel_stamped (lockstep).
+  for (const ros::Publisher& p : step_cmd_pubs_) {
+    if (static_cast<int>(p.getNumSubscribers()) < std::min(1, cmd_subscribers_)) return false;
   }
   return static_cast<int>(formation_pub_.getNumSubscribers()) >= formation_subscribers_;
 }
@@ -128,7 +135,7 @@ void FormationNode::onState(int d, const aurora_msgs::DroneState::ConstPtr& msg)
   if (!lockstep_) return;
   if (!fresh) {
     if (static_cast<long>(msg->step) == answered_) {
-      cmd_pubs_[d].publish(aurora_sim::twistMsgOf(crew_->toDriver(d, last_sent_[d])));
+      command(d, msg->header.stamp);
     }
     return;
   }
@@ -148,12 +155,22 @@ void FormationNode::onTimer(const ros::TimerEvent& event) {
 
 void FormationNode::answer(long k, const ros::Time& stamp) {
   const CrewTick t = crew_->tick(k);
-  send(t);
+  send(t, stamp);
   answered_ = k;
   publish(t, stamp);
 }
 
-void FormationNode::send(const CrewTick& t) {
+void FormationNode::command(int d, const ros::Time& stamp) {
+  const geometry_msgs::Twist twist = aurora_sim::twistMsgOf(crew_->toDriver(d, last_sent_[d]));
+  cmd_pubs_[d].publish(twist);
+  if (!lockstep_) return;
+  geometry_msgs::TwistStamped answer;
+  answer.header.stamp = stamp;
+  answer.twist = twist;
+  step_cmd_pubs_[d].publish(answer);
+}
+
+void FormationNode::send(const CrewTick& t, const ros::Time& stamp) {
   if (t.not_finite >= 0) {
     const std::string& ns = drones_[t.not_finite];
     mode_ = "hover (" + ns + ": non-finite command)";
@@ -169,7 +186,7 @@ void FormationNode::send(const CrewTick& t) {
   for (int d = 0; d < crew_->robots(); ++d) {
     for (int i = 0; i < 4; ++i) last_sent_[d][i] = t.out[d].U[i];
     if (sequence_) crew_->limitSpeed(d, last_sent_[d], safety_[d].max_speed, safety_[d].max_turn_rate);
-    cmd_pubs_[d].publish(aurora_sim::twistMsgOf(crew_->toDriver(d, last_sent_[d])));
+    command(d, stamp);
   }
 }
 

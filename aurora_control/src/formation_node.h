@@ -45,7 +45,10 @@ class FormationNode {
   bool listenersReady() const;
   void answer(long k, const ros::Time& stamp);
   void publish(const CrewTick& t, const ros::Time& stamp);
-  void send(const CrewTick& t);
+  void send(const CrewTick& t, const ros::Time& stamp);
+  // Robot d's command: cmd_vel, and in lockstep cmd_vel_stamped with the
+  // stamp of the state it answers (the sim steps once per step on it).
+  void command(int d, const ros::Time& stamp);
   // The flight sequence (formation_sequence.cpp).
   void configureSequence();
   void flightCycle(const ros::Time& now);
@@ -63,7 +66,7 @@ class FormationNode {
   long cycles_ = 0;      // realtime: timer cycles since the first states
   double last_sent_[kMaxCrew][4] = {};
   std::vector<ros::Subscriber> state_subs_;
-  std::vector<ros::Publisher> cmd_pubs_;
+  std::vector<ros::Publisher> cmd_pubs_, step_cmd_pubs_;
   ros::Publisher formation_pub_, markers_pub_;
   static constexpr long kMarkerDecimation = 3;  // rviz markers at 10 Hz
   ros::Timer timer_;

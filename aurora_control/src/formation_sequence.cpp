@@ -73,7 +73,7 @@ void FormationNode::flightCycle(const ros::Time& now) {
     formation_k_ = 0;
   }
   const CrewTick t = c.formation ? crew_->tick(formation_k_++) : holdOrHover(c);
-  send(t);
+  send(t, now);  // realtime: no stamped answer
   publish(t, now);
 }
 

@@ -56,9 +56,13 @@ SimNode<Vehicle>::SimNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
   reset_sub_ = nh_.subscribe("reset", 1, &SimNode::onReset, this);
 
   if (lockstep) {
-    // The sim owns the clock: one step per received command, as fast as the
-    // controller answers. Until the first command arrives the initial state
-    // is re-sent, so a controller that connects late still starts the loop.
+    // The sim owns the clock: one step per command that answers its newest
+    // state (cmd_vel_stamped: the driver's Twist stamped with the state's
+    // stamp), as fast as the controller answers; a second answer to a step
+    // already taken is ignored, so the steps never depend on timing. Until
+    // the first command arrives the initial state is re-sent, so a
+    // controller that connects late still starts the loop.
+    step_cmd_sub_ = nh_.subscribe("cmd_vel_stamped", 10, &SimNode::onStepCommand, this, hints);
     if (publish_clock_) clock_pub_ = nh_.advertise<rosgraph_msgs::Clock>("/clock", 1000);
     retry_timer_ = nh_.createWallTimer(ros::WallDuration(0.2), &SimNode::onLockstepRetry,
                                        this);
@@ -150,10 +154,36 @@ ros::Time SimNode<Vehicle>::lockstepTime() const {
   return ros::Time().fromNSec(static_cast<uint64_t>(std::llround(double(step_) * params_.Ts * 1e9)));
 }
 
+// Realtime: the driver's command, applied at the next timer step. In
+// lockstep cmd_vel names no step: the sim steps on cmd_vel_stamped only.
 template <class Vehicle>
 void SimNode<Vehicle>::onCmdVel(const geometry_msgs::Twist::ConstPtr& msg) {
+  if (mode_ == Mode::kLockstep) return;
+  takeCommand(*msg);
+}
+
+// Lockstep: a command stamped with the state it answers steps the sim when
+// that state is its newest (lockstepTime() of its step), once: a controller
+// answering a re-sent state twice (a stall longer than the re-send period)
+// sends the second answer with an older stamp, or after the step.
+template <class Vehicle>
+void SimNode<Vehicle>::onStepCommand(const geometry_msgs::TwistStamped::ConstPtr& msg) {
+  if (!lockstep_started_) return;
+  if (msg->header.stamp != lockstepTime()) {
+    if (answers_ignored_++ == 0) {
+      ROS_INFO("sim: ignored a command answering step %.0f, already taken (now at step %lu); such answers are "
+               "counted, not stepped on", msg->header.stamp.toSec() / params_.Ts, step_);
+    }
+    return;
+  }
+  takeCommand(msg->twist);
+  lockstepStep();
+}
+
+template <class Vehicle>
+void SimNode<Vehicle>::takeCommand(const geometry_msgs::Twist& msg) {
   double U[Vehicle::kInputs];
-  Vehicle::fromDriver(twistCommandFromMsg(*msg), U);
+  Vehicle::fromDriver(twistCommandFromMsg(msg), U);
   const double t = ros::WallTime::now().toSec();
   logBurst(nan_burst_.poll(t));
   if (!allFinite(U, Vehicle::kInputs)) {
@@ -161,7 +191,7 @@ void SimNode<Vehicle>::onCmdVel(const geometry_msgs::Twist::ConstPtr& msg) {
     if (started.kind == BurstReport::kStarted) {
       ROS_WARN("sim: rejected cmd_vel with NaN/Inf (linear %g %g %g, angular.z %g): the "
                "drone hovers on each such command; further ones are counted until none for %.1f s",
-               msg->linear.x, msg->linear.y, msg->linear.z, msg->angular.z, nan_quiet_period_);
+               msg.linear.x, msg.linear.y, msg.linear.z, msg.angular.z, nan_quiet_period_);
     }
     for (double& u : command_) u = 0.0;
   } else {
@@ -170,18 +200,19 @@ void SimNode<Vehicle>::onCmdVel(const geometry_msgs::Twist::ConstPtr& msg) {
   }
   have_command_ = true;
   command_time_ = ros::Time::now();
-  if (mode_ == Mode::kLockstep && lockstep_started_) {
-    if (max_real_time_factor_ > 0.0) {
-      // Leave the CPU to subscribers that must not lose a step (rosbag's
-      // subscription queue is 100 messages deep and cannot be changed).
-      const ros::WallTime due =
-          last_step_wall_ + ros::WallDuration(params_.Ts / max_real_time_factor_);
-      const ros::WallTime now = ros::WallTime::now();
-      if (now < due) (due - now).sleep();
-    }
-    last_step_wall_ = ros::WallTime::now();
-    stepAndPublish(lockstepTime(), true);
+}
+
+template <class Vehicle>
+void SimNode<Vehicle>::lockstepStep() {
+  if (max_real_time_factor_ > 0.0) {
+    // Leave the CPU to subscribers that must not lose a step (rosbag's
+    // subscription queue is 100 messages deep and cannot be changed).
+    const ros::WallTime due = last_step_wall_ + ros::WallDuration(params_.Ts / max_real_time_factor_);
+    const ros::WallTime now = ros::WallTime::now();
+    if (now < due) (due - now).sleep();
   }
+  last_step_wall_ = ros::WallTime::now();
+  stepAndPublish(lockstepTime(), true);
 }
 
 template <class Vehicle>
@@ -249,11 +280,11 @@ void SimNode<Vehicle>::onLockstepRetry(const ros::WallTimerEvent&) {
     return;
   }
   // Re-send the newest state when the loop has stalled (a controller that
-  // missed our publication never answered). Not sooner than a second: the
-  // controller answers a re-sent state it already answered with that
-  // step's command again, and a command is no more than a step (cmd_vel
-  // carries none), so a re-send to a controller that was only slow (a busy
-  // machine) would make this sim take two steps on one step's command.
+  // missed our publication never answered). The controller answers a
+  // re-sent state it already answered with that step's command again, and
+  // the sim steps on one answer per step (onStepCommand), so a re-send to a
+  // controller that was only slow (a busy machine) costs a message, not a
+  // step; a second keeps re-sends rare.
   constexpr double kStalledAfter = 1.0;  // [s] wall
   if ((ros::WallTime::now() - last_publish_wall_).toSec() > kStalledAfter) {
     publishState(lockstepTime());
@@ -315,6 +346,7 @@ void SimNode<Vehicle>::stepAndPublish(const ros::Time& now, bool command_fresh) 
     timer_.stop();
     retry_timer_.stop();
     cmd_sub_.shutdown();
+    step_cmd_sub_.shutdown();
     // A short grace period lets subscribers (rosbag) receive the last state.
     shutdown_timer_ = nh_.createWallTimer(
         ros::WallDuration(0.5), [](const ros::WallTimerEvent&) { aurora_common::endAsPlanned(); }, true);

@@ -5,6 +5,7 @@
 
 #include <aurora_msgs/DroneState.h>
 #include <geometry_msgs/Twist.h>
+#include <geometry_msgs/TwistStamped.h>
 #include <nav_msgs/Path.h>
 #include <ros/ros.h>
 #include <std_msgs/Empty.h>
@@ -35,6 +36,9 @@ class SimNode {
 
  private:
   void onCmdVel(const geometry_msgs::Twist::ConstPtr& msg);
+  void onStepCommand(const geometry_msgs::TwistStamped::ConstPtr& msg);
+  void takeCommand(const geometry_msgs::Twist& msg);
+  void lockstepStep();
   void onTakeoff(const std_msgs::Empty::ConstPtr&);
   void onLand(const std_msgs::Empty::ConstPtr&);
   void onReset(const std_msgs::Empty::ConstPtr&);
@@ -77,7 +81,8 @@ class SimNode {
   double nan_quiet_period_ = 1.0;
 
   ros::Publisher state_pub_, odom_pub_, path_pub_, clock_pub_;
-  ros::Subscriber cmd_sub_, takeoff_sub_, land_sub_, reset_sub_;
+  ros::Subscriber cmd_sub_, step_cmd_sub_, takeoff_sub_, land_sub_, reset_sub_;
+  unsigned long answers_ignored_ = 0;  // lockstep: commands answering a step already stepped
   tf2_ros::TransformBroadcaster tf_;
   ros::Timer timer_;
   ros::WallTimer retry_timer_, shutdown_timer_;

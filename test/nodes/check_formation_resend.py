@@ -7,14 +7,16 @@ drone's state of step k has not reached the node: the node must not answer
 it (with its previous command the sim would step and the two drones would
 run a step apart, each step then waiting for re-sends: a lockstep run once
 crawled at 2.5 steps/s that way). A state re-sent after its step was
-answered (the command was lost) gets that command again."""
+answered (the command was lost) gets that command again. Each answer also
+comes on cmd_vel_stamped, stamped with the state it answers (a lockstep
+sim steps on it once per step, issue 51)."""
 import threading
 import unittest
 
 import rospy
 import rostest
 from aurora_msgs.msg import DroneState
-from geometry_msgs.msg import Twist
+from geometry_msgs.msg import Twist, TwistStamped
 
 STARTS = {1: (-1.0, 0.0, 0.75), 2: (1.0, 0.0, 1.0)}  # line_lemniscate_ik.yaml's
 
@@ -23,10 +25,12 @@ class FormationResendTest(unittest.TestCase):
     def setUp(self):
         self.lock = threading.Lock()
         self.cmds = {1: [], 2: []}
+        self.stamped = {1: [], 2: []}
         self.pubs, self.subs = {}, []
         for d in (1, 2):
             self.pubs[d] = rospy.Publisher("/ardrone%d/state" % d, DroneState, queue_size=10)
             self.subs.append(rospy.Subscriber("/ardrone%d/cmd_vel" % d, Twist, self.on_cmd, d))
+            self.subs.append(rospy.Subscriber("/ardrone%d/cmd_vel_stamped" % d, TwistStamped, self.on_stamped, d))
         deadline = rospy.Time.now() + rospy.Duration(20.0)
         while rospy.Time.now() < deadline and not all(p.get_num_connections() for p in self.pubs.values()):
             rospy.sleep(0.05)
@@ -37,13 +41,23 @@ class FormationResendTest(unittest.TestCase):
         with self.lock:
             self.cmds[d].append((msg.linear.x, msg.linear.y, msg.linear.z, msg.angular.z))
 
+    def on_stamped(self, msg, d):
+        with self.lock:
+            t = msg.twist
+            self.stamped[d].append((msg.header.stamp, (t.linear.x, t.linear.y, t.linear.z, t.angular.z)))
+
+    @staticmethod
+    def stamp_of(step):
+        """A lockstep sim's stamp of its state of `step` (step Ts, Ts = 1/30 s)."""
+        return rospy.Time(0, int(round(step * 1e9 / 30.0)))
+
     def count(self, d):
         with self.lock:
             return len(self.cmds[d])
 
     def send(self, d, step):
         m = DroneState()
-        m.header.stamp = rospy.Time.now()
+        m.header.stamp = self.stamp_of(step)
         m.step = step
         m.position.x, m.position.y, m.position.z = STARTS[d]
         self.pubs[d].publish(m)
@@ -81,6 +95,13 @@ class FormationResendTest(unittest.TestCase):
         self.send(2, 1)
         self.assertEqual(self.wait_for(1, 3), 3)
         self.assertEqual(self.wait_for(2, 2), 2)
+        # The stamped answers: the same commands, each stamped with the step it answers.
+        rospy.sleep(0.3)
+        with self.lock:
+            self.assertEqual([c for _, c in self.stamped[1]], self.cmds[1])
+            self.assertEqual([c for _, c in self.stamped[2]], self.cmds[2])
+            self.assertEqual([s for s, _ in self.stamped[1]], [self.stamp_of(k) for k in (0, 0, 1)])
+            self.assertEqual([s for s, _ in self.stamped[2]], [self.stamp_of(k) for k in (0, 1)])
 
 
 if __name__ == "__main__":
