@@ -36,7 +36,7 @@ case "${ID}:${VERSION_ID}" in
     ;;
 esac
 PKGS+=(build-essential cmake libeigen3-dev libyaml-cpp-dev libgtest-dev googletest libxsimd-dev
-       libboost-program-options-dev nlohmann-json3-dev libhdf5-dev python3-h5py libcsv-dev
+       libboost-program-options-dev nlohmann-json3-dev libfmt-dev libhdf5-dev python3-h5py libcsv-dev
        libopenmpi-dev openmpi-bin librandom123-dev
        python3-matplotlib python3-numpy python3-yaml ffmpeg xvfb xauth imagemagick
        pybind11-dev python3-dev)

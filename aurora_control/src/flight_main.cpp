@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "aurora_common/number_text.h"
 #include "aurora_control/loop/flight_setup.h"
 #include "aurora_common/ros/config_dir.h"
 #include "aurora_control/formation/formation_flight.h"
@@ -90,6 +91,10 @@ bool parse(int argc, char** argv, Options& o) {
     throw ConfigError("--law " + o.law + " is refused without --formation: it chooses a triangle's law; a flight's law "
                       "is its --controller file's");
   }
+  if (vm.count("law") && o.law.empty()) {
+    throw ConfigError("--law '' is refused: give a triangle law's name (N, PSO, SPO, OSP, S-PO), or leave --law out "
+                      "to fly the formation file's");
+  }
   if (o.formation.empty() && o.delays.size() > 1) {
     throw ConfigError("--delay takes one value for a flight (one per drone with --formation): got " + std::to_string(o.delays.size()));
   }
@@ -152,8 +157,8 @@ class SegmentErrors {
 
 // One row per step k: the state after k model steps (the vehicle's state
 // names), the command the vehicle applied at step k (u1 .. uN, model
-// order), the reference of step k and its tracking error; %.17g reads back
-// to the same double.
+// order), the reference of step k and its tracking error; each number the
+// shortest text that reads back to the same double (number_text.h).
 template <class Vehicle>
 std::string csvHeader() {
   std::string h = "step,t";
@@ -164,11 +169,14 @@ std::string csvHeader() {
 
 template <class Vehicle>
 void writeCsvRow(FILE* csv, const LoopObservation<Vehicle, double>& o, double t, double error) {
-  std::fprintf(csv, "%ld,%.17g", o.k, t);
-  for (int i = 0; i < Vehicle::kStates; ++i) std::fprintf(csv, ",%.17g", o.X_before[i]);
-  for (int i = 0; i < Vehicle::kInputs; ++i) std::fprintf(csv, ",%.17g", o.step.U[i]);
-  for (int i = 0; i < 3; ++i) std::fprintf(csv, ",%.17g", o.step.ref.pos[i]);
-  std::fprintf(csv, ",%.17g\n", error);
+  using aurora_common::writeNumber;
+  std::fprintf(csv, "%ld", o.k);
+  writeNumber(csv, t);
+  for (int i = 0; i < Vehicle::kStates; ++i) writeNumber(csv, o.X_before[i]);
+  for (int i = 0; i < Vehicle::kInputs; ++i) writeNumber(csv, o.step.U[i]);
+  for (int i = 0; i < 3; ++i) writeNumber(csv, o.step.ref.pos[i]);
+  writeNumber(csv, error);
+  std::fprintf(csv, "\n");
 }
 
 // Flies `f` once and prints what it measured.

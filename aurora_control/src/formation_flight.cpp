@@ -6,6 +6,7 @@
 #include <memory>
 #include <stdexcept>
 
+#include "aurora_common/number_text.h"
 #include "aurora_control/formation/formation_judge.h"
 #include "aurora_control/formation/formation_yaml.h"
 #include "aurora_sim/vehicle_yaml.h"
@@ -65,16 +66,18 @@ class FormationCsv {
   }
   void add(const FormationObservation<double, Line>& o, double Ts) {
     if (!f_) return;
-    std::fprintf(f_, "%ld,%.17g", o.k, double(o.k) * Ts);
+    using aurora_common::writeNumber;
+    std::fprintf(f_, "%ld", o.k);
+    writeNumber(f_, double(o.k) * Ts);
     double P[Line::kVariables], Q[Line::kVariables];
     for (int d = 0; d < Line::kDrones; ++d) {
-      for (int i = 0; i < aurora_sim::kStateSize; ++i) std::fprintf(f_, ",%.17g", o.X_before[d][i]);
-      for (int i = 0; i < 4; ++i) std::fprintf(f_, ",%.17g", o.steps[d].U[i]);
+      for (int i = 0; i < aurora_sim::kStateSize; ++i) writeNumber(f_, o.X_before[d][i]);
+      for (int i = 0; i < 4; ++i) writeNumber(f_, o.steps[d].U[i]);
     }
     dronePositions<Line>(o.X_before, P);
     Line::variables(P, Q);
-    for (int i = 0; i < 6; ++i) std::fprintf(f_, ",%.17g", Q[i]);
-    for (int i = 0; i < 6; ++i) std::fprintf(f_, ",%.17g", o.layer.Qd()[i]);
+    for (int i = 0; i < 6; ++i) writeNumber(f_, Q[i]);
+    for (int i = 0; i < 6; ++i) writeNumber(f_, o.layer.Qd()[i]);
     std::fprintf(f_, "\n");
   }
 

@@ -26,6 +26,7 @@
 #include <string>
 #include <vector>
 
+#include "aurora_common/number_text.h"
 #include "aurora_control/predictor/predictor_yaml.h"
 #include "aurora_control/loop/delayed_controller.h"
 #include "option_values.h"
@@ -33,6 +34,7 @@
 #include "aurora_control/law/other_laws.h"
 #include "aurora_control/link/link_yaml.h"
 #include "aurora_control/params/limits.h"
+#include "aurora_control/params/shipped_files.h"
 #include "aurora_control/task/tracking.h"
 #include "aurora_common/ros/config_dir.h"
 #include "aurora_sim/vehicle_yaml.h"
@@ -154,7 +156,7 @@ po::options_description describe(Arguments& args, Given& g) {
   d.add_options()
       ("ns", po::value(&args.ns)->value_name("NAME"), "drone namespace (default: the only one in the bag)")
       ("controller", po::value(&g.controller)->value_name("FILE"),
-       "controller YAML (config/controllers/*.yaml): law, gains, clamping")
+       "controller YAML (config/controllers/*.yaml), or a shipped NAME (config/controllers/NAME.yaml): law, gains, clamping")
       ("kp", po::value(&g.kp)->value_name("X"), "gain of the PD law")
       ("kd", po::value(&g.kd)->value_name("X"), "gain of the PD law")
       ("vehicle", po::value(&args.vehicle_path)->value_name("FILE"),
@@ -162,7 +164,8 @@ po::options_description describe(Arguments& args, Given& g) {
        "law's vehicle: ardrone2, bebop2, pioneer3dx)")
       ("delay", po::value(&g.delay)->value_name("N"), "delay in samples")
       ("link", po::value(&args.link_path)->value_name("FILE"),
-       "link YAML (config/links/*.yaml, docs/links.md): replay over that link (the delay stays the recorded or given one)")
+       "link YAML (config/links/*.yaml, docs/links.md), or a shipped NAME (config/links/NAME.yaml: wifi_lab, ...): "
+       "replay over that link (the delay stays the recorded or given one)")
       ("delay-seconds", po::value(&g.delay_seconds)->value_name("S"), "delay in seconds (rounded to whole samples)")
       ("predictor-model", po::value(&args.predictor_model_path)->value_name("FILE"),
        "vehicle YAML the node's state predictor used as its model, where the bag's Control.predictor is on "
@@ -224,6 +227,10 @@ Arguments parseArguments(int argc, char** argv) {
   if (g.bags.empty()) usageError("a bag is required", d);
   if (g.bags.size() > 1) fail("one bag at a time ('" + g.bags[1] + "' is extra)");
   args.bag_path = g.bags[0];
+  // Shipped files by NAME, as flight takes them (config/controllers/NAME.yaml, config/links/NAME.yaml).
+  const std::string config = aurora_common::configDir();
+  g.controller = aurora_control::shippedOrPath(g.controller, config, "controllers");
+  args.link_path = aurora_control::shippedOrPath(args.link_path, config, "links");
   readOverrides(vm, g, args.o);
   return args;
 }
@@ -428,6 +435,12 @@ std::unique_ptr<DelayedController<kCapacity, Settings>> makeCore(const Arguments
                                                                  long iterations) {
   using Vehicle = typename Settings::Data::Vehicle;
   std::unique_ptr<DelayedController<kCapacity, Settings>> core(new DelayedController<kCapacity, Settings>());
+  if (args.o.law && vehicleOfLaw(args.o.controller_name) != vehicleOfLaw(recorded.controller)) {
+    fail("--controller " + args.o.controller_path + ": its law '" + args.o.controller_name + "' flies the " +
+         vehicleOfLaw(args.o.controller_name) + ", but the bag's controller '" + recorded.controller + "' flew the " +
+         vehicleOfLaw(recorded.controller) + ": give a controller file of a " + vehicleOfLaw(recorded.controller) +
+         " law (config/controllers/)");
+  }
   core->settings.vehicle = vehicleFor<Vehicle>(args.vehicle_path, args.o.law ? args.o.controller_name : recorded.controller);
   if (core->settings.vehicle.Ts != recorded.sample_time) {
     fail("the vehicle's sample time " + YamlReader::fmt(core->settings.vehicle.Ts) + " s differs from the recorded " +
@@ -636,9 +649,11 @@ int replayCycles(const Arguments& args, const std::string& ns, const BagStates& 
     const double diff = commandDifference(c, out, same);
     n.add(same, diff);
     if (csv) {
-      std::fprintf(csv, "%lu,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n",
-                   static_cast<unsigned long>(c.step), c.command[0], c.command[1], c.command[2],
-                   c.command[3], out.U[0], out.U[1], out.U[2], out.U[3], diff);
+      std::fprintf(csv, "%lu", static_cast<unsigned long>(c.step));
+      for (double v : {c.command[0], c.command[1], c.command[2], c.command[3], out.U[0], out.U[1], out.U[2], out.U[3], diff}) {
+        aurora_common::writeNumber(csv, v);
+      }
+      std::fprintf(csv, "\n");
     }
   }
   if (csv) std::fclose(csv);

@@ -62,13 +62,13 @@ struct TriangleErrors {
     double X[9], Q[9], e[9];
     positionVariables(p, X, Q);
     closest = smallerDistance(closest, closestPair<Triangle>(X));
-    if (t < 20.0) return;
+    if (t < kRmsFrom) return;
     Triangle::error(X, p.layer.Qd(), Q, e);
     sq[0] += e[0] * e[0] + e[1] * e[1] + e[2] * e[2];
     for (int i = 3; i < 9; ++i) sq[i - 2] += e[i] * e[i];
     ++n;
   }
-  double rms(int i) const { return n > 0 ? std::sqrt(sq[i] / double(n)) : 0.0; }
+  double rms(int i) const { return n > 0 ? std::sqrt(sq[i] / double(n)) : std::nan(""); }
 };
 
 }  // namespace
@@ -98,16 +98,15 @@ ShapedFlight flyTriangle(const FormationFlightOptions& o, FlightTable& table) {
     });
   });
   f.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  char line[400];
-  std::snprintf(line, sizeof line,
-                "flight: triangle, law %s, %s, %ld periods of %.3f s, delays %ld, %ld, %ld %s, in %.3f s\n"
-                "  RMS after 20 s: position %.4f m, p %.4f m, q %.4f m, beta %.4f, phi %.4f, theta %.4f, psi %.4f rad; "
-                "closest pair %.3f m\n",
+  char head[200], values[200], closest[40];
+  std::snprintf(head, sizeof head, "flight: triangle, law %s, %s, %ld periods of %.3f s, delays %ld, %ld, %ld %s, in %.3f s\n",
                 triangleLawName(setup.law), setup.kinematic ? "kinematic robots" : "three AR.Drones", periods,
                 setup.period, setup.delay[0], setup.delay[1], setup.delay[2], setup.kinematic ? "periods" : "steps",
-                f.seconds, errors.rms(0), errors.rms(1), errors.rms(2), errors.rms(3), errors.rms(4), errors.rms(5),
-                errors.rms(6), errors.closest);
-  f.summary = line;
+                f.seconds);
+  std::snprintf(values, sizeof values, "position %.4f m, p %.4f m, q %.4f m, beta %.4f, phi %.4f, theta %.4f, psi %.4f rad",
+                errors.rms(0), errors.rms(1), errors.rms(2), errors.rms(3), errors.rms(4), errors.rms(5), errors.rms(6));
+  std::snprintf(closest, sizeof closest, "closest pair %.3f m", errors.closest);
+  f.summary = head + rmsLine(errors.n, double(periods) * setup.period, values, closest);
   const char* names[7] = {"rms_position", "rms_p", "rms_q", "rms_beta", "rms_phi", "rms_theta", "rms_psi"};
   for (int i = 0; i < 7; ++i) f.errors.emplace_back(names[i], errors.rms(i));
   f.errors.emplace_back("closest", errors.closest);

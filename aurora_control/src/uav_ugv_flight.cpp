@@ -61,7 +61,7 @@ struct LineErrors {
   double sq[5] = {0, 0, 0, 0, 0};
   long n = 0;
   void add(double t, const Tick& o) {
-    if (t < 20.0) return;
+    if (t < kRmsFrom) return;
     const double* drone = o.X_before[1];
     double de[3];
     for (int i = 0; i < 3; ++i) de[i] = o.layer.position(1)[i] - drone[i];
@@ -72,7 +72,7 @@ struct LineErrors {
     sq[4] += de[0] * de[0] + de[1] * de[1] + de[2] * de[2];
     ++n;
   }
-  double rms(int i) const { return n > 0 ? std::sqrt(sq[i] / double(n)) : 0.0; }
+  double rms(int i) const { return n > 0 ? std::sqrt(sq[i] / double(n)) : std::nan(""); }
 };
 
 }  // namespace
@@ -102,15 +102,16 @@ ShapedFlight flyUavUgvLine(const FormationFlightOptions& o, FlightTable& table) 
   };
   runFormation<UavUgvRobots, double, UavUgvShape, kDelayHistory>(uavUgvRun(setup), ticks, observe);
   f.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  char line[400];
-  std::snprintf(line, sizeof line,
-                "flight: UAV-UGV line (%s Pioneer + AR.Drone), %ld ticks of %.4f s, delays %ld and %ld ticks, in %.3f s\n"
-                "  RMS after 20 s: xf, yf %.4f m, rho %.4f m, alpha %.4f rad, beta %.4f rad, drone position %.4f m; "
-                "closest approach %.3f m\n",
+  char head[200], values[200], closest[40];
+  std::snprintf(head, sizeof head,
+                "flight: UAV-UGV line (%s Pioneer + AR.Drone), %ld ticks of %.4f s, delays %ld and %ld ticks, in %.3f s\n",
                 setup.pioneer.kinematic != 0.0 ? "kinematic" : "dynamic", ticks, setup.tick, setup.delay[0],
-                setup.delay[1], f.seconds, errors.rms(0), errors.rms(1), errors.rms(2), errors.rms(3), errors.rms(4),
-                judge.metrics.closest);
-  f.summary = line + checksText(judge.criteria, judge.metrics, true);
+                setup.delay[1], f.seconds);
+  std::snprintf(values, sizeof values, "xf, yf %.4f m, rho %.4f m, alpha %.4f rad, beta %.4f rad, drone position %.4f m",
+                errors.rms(0), errors.rms(1), errors.rms(2), errors.rms(3), errors.rms(4));
+  std::snprintf(closest, sizeof closest, "closest approach %.3f m", judge.metrics.closest);
+  f.summary = head + rmsLine(errors.n, double(ticks) * setup.tick, values, closest) +
+              checksText(judge.criteria, judge.metrics, true);
   f.errors = {{"rms_xf_yf", errors.rms(0)}, {"rms_rho", errors.rms(1)}, {"rms_alpha", errors.rms(2)},
               {"rms_beta", errors.rms(3)}, {"rms_drone_position", errors.rms(4)}, {"closest", judge.metrics.closest},
               {"ticks", double(ticks)}, {"delay_1", double(setup.delay[0])}, {"delay_2", double(setup.delay[1])}};

@@ -283,7 +283,7 @@ TEST(FormationFile, MistakesAreRefusedNamingTheKey) {
   says("      delay: 0\n      controller: *lab_gains", "      delay: -2\n      controller: *lab_gains",
        "'formation.drones[1].delay' = -2");
   says("start: [1.0, 0.0, 1.0]", "start: [1.0, 0.0, 0.75]", "0 m apart in height: the line's variables are singular");
-  says("start: [1.0, 0.0, 1.0]", "start: [1.0, 0.0, -0.1]", "'formation.drones[1].start' = [1, 0, -0.1] is below the ground");
+  says("start: [1.0, 0.0, 1.0]", "start: [1.0, 0.0, -0.1]", "'formation.drones[1].start' = [1, 0, -0.1] has z = -0.1 m, below the ground: accepted heights [0, 100] m");
   says("  period: 0.2", "  period: 0.2\n  period: 0.4", "'formation.period' is given twice, on lines 12 and 13");
   says("k1: [0.1, 0.1, 1.0, 0.75, 0.5, 0.5]", "k1: [0.1, 0.1, 1.0, 0.75, 0.5, 500]",
        "'formation.gains.k1' = 500 (entry 6) is refused: accepted gains in [0.001, 100]");

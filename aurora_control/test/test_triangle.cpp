@@ -305,4 +305,15 @@ TEST(Triangle, ABadFileIsRefusedNamingTheKey) {
   e = refusalOfEdited("kinematic", "[-1.0, 0.0, 0.0], [0.0, 1.0, 0.0]]", "[-1.0, 1.0, 0.0], [-1.0, -1.0, 0.0]]");
   EXPECT_NE(e.find("'formation.robots.starts' puts robot 1's median m = 2 p1 - p2 - p3 along x: phi is 0 / 0"),
             std::string::npos) << e;
+  // Issue 51: the start check, the duration rule and the predictor refusal every shape shares.
+  e = refusalOfEdited("ardrones", "[0.0, 1.0, 0.75]]", "[0.0, 1.0, -1.0]]");
+  EXPECT_NE(e.find("'formation.robots.starts[2]' = [0, 1, -1] has z = -1 m, below the ground: accepted heights [0, 100] m"),
+            std::string::npos) << e;
+  e = refusalOfEdited("ardrones", "duration: 50", "duration: 5");
+  EXPECT_NE(e.find("'formation.duration' = 5 s is refused: the formation checks judge a flight from 10 s on"),
+            std::string::npos) << e;
+  EXPECT_EQ(refusalOfEdited("ardrones", "duration: 50", "duration: 10.05"), "");
+  e = refusalOfEdited("ardrones", "controller: controllers/underactuated.yaml", "controller: controllers/underactuated_predictor.yaml");
+  EXPECT_NE(e.find("'formation.robots.controller' = '"), std::string::npos) << e;
+  EXPECT_NE(e.find("asks for the state predictor ('predictor.form' = resimulate)"), std::string::npos) << e;
 }

@@ -194,7 +194,13 @@ std::string refusalOfEdited(const std::string& from, const std::string& to) {
 TEST(UavUgvLine, ABadFileIsRefusedNamingTheKey) {
   EXPECT_EQ(refusalOfEdited("start: [-1.0, 0.0, 0.0]", "start: [-1.0, 0.0, 0.0]"), "");
   std::string e = refusalOfEdited("start: [-1.0, 0.0, 0.0]", "start: [-1.0, 0.0, 0.5]");
-  EXPECT_NE(e.find("'formation.robots[0].start' has z = 0.5 m: accepted z = 0"), std::string::npos) << e;
+  EXPECT_NE(e.find("'formation.robots[0].start' = [-1, 0, 0.5] has z = 0.5 m: accepted z = 0"), std::string::npos) << e;
+  e = refusalOfEdited("start: [0.0, 0.0, 0.75]", "start: [0.0, 0.0, -1.0]");
+  EXPECT_NE(e.find("'formation.robots[1].start' = [0, 0, -1] has z = -1 m, below the ground: accepted heights [0, 100] m"),
+            std::string::npos) << e;
+  e = refusalOfEdited("duration: 130", "duration: 5");
+  EXPECT_NE(e.find("'formation.duration' = 5 s is refused: the formation checks judge a flight from 10 s on"),
+            std::string::npos) << e;
   e = refusalOfEdited("name: pioneer_dynamic", "name: pioneer_kinematic");
   EXPECT_NE(e.find("'formation.robots[0].controller.name' = 'pioneer_kinematic' is refused: this robot flies "
                    "pioneer_dynamic"), std::string::npos) << e;

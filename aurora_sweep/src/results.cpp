@@ -6,6 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "aurora_common/number_text.h"
 #include "aurora_sweep/chunk_store.h"
 #include "aurora_sweep/result_columns.h"
 
@@ -45,7 +46,7 @@ class CsvWriter : public ResultsWriter {
       std::fprintf(f_, "%ld", index);
       for (int id : params_) {
         if (id == kParamDelay) std::fprintf(f_, ",%ld", c.delay());
-        else std::fprintf(f_, ",%.17g", c.v[id]);
+        else aurora_common::writeNumber(f_, c.v[id]);
       }
       for (int k = 0; k < results_.count; ++k) print(columnValue(r, results_[k]));
       std::fprintf(f_, "\n");
@@ -60,13 +61,14 @@ class CsvWriter : public ResultsWriter {
   long rows() const override { return rows_; }
 
  private:
-  // Doubles to the last bit (%.17g), the float positions to theirs (%.9g).
+  // Doubles and floats as the shortest text that reads back to the same
+  // value (number_text.h: 0.85, not 0.84999999999999998).
   void print(const ColumnValue& v) {
     switch (v.type) {
       case ColumnType::kFlag: std::fprintf(f_, ",%d", v.flag); break;
-      case ColumnType::kDouble: std::fprintf(f_, ",%.17g", v.real); break;
+      case ColumnType::kDouble: aurora_common::writeNumber(f_, v.real); break;
       case ColumnType::kInt32: std::fprintf(f_, ",%d", v.whole); break;
-      case ColumnType::kFloat: std::fprintf(f_, ",%.9g", v.single); break;
+      case ColumnType::kFloat: aurora_common::writeNumber(f_, v.single); break;
     }
   }
 
@@ -159,8 +161,10 @@ void FeasibleShare::writeCsv(const std::string& path, const SweepSpec& spec) con
   for (size_t k = 0; k < feasible_runs_.size(); ++k) {
     const Combination c = grid.decode(static_cast<long>(k) * repeats_);
     std::fprintf(f, "%zu", k);
-    for (int id : params) std::fprintf(f, ",%.17g", c.v[id]);
-    std::fprintf(f, ",%ld,%u,%.17g\n", repeats_, feasible_runs_[k], double(feasible_runs_[k]) / double(repeats_));
+    for (int id : params) aurora_common::writeNumber(f, c.v[id]);
+    std::fprintf(f, ",%ld,%u", repeats_, feasible_runs_[k]);
+    aurora_common::writeNumber(f, double(feasible_runs_[k]) / double(repeats_));
+    std::fprintf(f, "\n");
   }
   if (std::fclose(f) != 0) throw std::runtime_error("cannot finish writing '" + path + "'");
 }

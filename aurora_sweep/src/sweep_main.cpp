@@ -157,7 +157,7 @@ std::string perCheck(const Counts& counts, const long* v) {
 void printCounts(const Counts& counts, const RunInfo& info, const SweepSpec& spec) {
   std::printf("sweep: %s, %ld feasible; checks 1-%d passed %s, failed %s, not reached (early stop) %s; "
               "%.3f s, %.0f sims/s, %.3g control steps/s, backend %s (%s), %s\n",
-              counted(counts.combinations, "combination", "combinations").c_str(), counts.feasible, counts.checks,
+              runCount(counts.combinations, spec.repeats).c_str(), counts.feasible, counts.checks,
               perCheck(counts, counts.passed).c_str(), perCheck(counts, counts.failed).c_str(),
               perCheck(counts, counts.not_reached).c_str(), info.wall_time_s,
               std::max(info.computed_combinations, 0L) / std::max(info.wall_time_s, 1e-9),

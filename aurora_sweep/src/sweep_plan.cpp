@@ -91,10 +91,15 @@ std::string counted(long n, const std::string& singular, const std::string& plur
   return grouped(n) + " " + (n == 1 ? singular : plural);
 }
 
+std::string runCount(long n, long repeats) {
+  return repeats > 1 ? counted(n, "run", "runs") : counted(n, "combination", "combinations");
+}
+
 SweepPlan planSweep(const SweepSpec& spec, const BackendChoice& choice, const std::string& out,
                     const std::string& format, long chunk_size) {
   SweepPlan p;
   p.combinations = spec.size();
+  p.repeats = spec.repeats;
   std::vector<SimResult> sample;
   p.rate = calibrate(spec, choice, p.calibrated, sample);
   p.seconds = p.rate > 0 ? p.combinations / p.rate : 0;
@@ -105,7 +110,8 @@ SweepPlan planSweep(const SweepSpec& spec, const BackendChoice& choice, const st
   double results = 0;
   if (format == "csv" || format == "both") results += row * rows;
   // HDF5 keeps the same columns in binary: a CSV row's bytes bound it.
-  if (format == "hdf5" || format == "both" || format == "none") results += row * rows;
+  // --output none writes no results (the summary and plots only).
+  if (format == "hdf5" || format == "both") results += row * rows;
   p.results_bytes = static_cast<uint64_t>(results);
   p.volume = existingFolder(out);
   struct statvfs fs;
@@ -116,7 +122,7 @@ SweepPlan planSweep(const SweepSpec& spec, const BackendChoice& choice, const st
 std::string planText(const SweepPlan& p) {
   char rate[160];
   std::snprintf(rate, sizeof rate, "%.0f sims/s", p.rate);
-  return counted(p.combinations, "combination", "combinations") + " in " + counted(p.chunks, "chunk", "chunks") +
+  return runCount(p.combinations, p.repeats) + " in " + counted(p.chunks, "chunk", "chunks") +
          ": " + (p.seconds < 1 ? "" : "about ") + durationText(p.seconds) + " at " + rate + " (measured on the first " +
          grouped(p.calibrated) + "), writes about " + bytesText(double(p.neededBytes())) + " (chunk files " +
          bytesText(double(p.chunk_bytes)) + ", results " + bytesText(double(p.results_bytes)) + "); " +

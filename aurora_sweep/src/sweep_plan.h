@@ -14,7 +14,8 @@
 namespace aurora_sweep {
 
 struct SweepPlan {
-  long combinations = 0;
+  long combinations = 0;       // runs: combinations x repeats
+  long repeats = 1;            // the spec's (runs are counted as runs when above 1)
   long chunks = 0;             // of the chunk size planned
   long calibrated = 0;         // combinations run to measure the rate
   double rate = 0;             // simulations per second measured
@@ -40,5 +41,9 @@ std::string planText(const SweepPlan& plan);
 
 // "1 combination", "2 combinations" (item counts in messages).
 std::string counted(long n, const std::string& singular, const std::string& plural);
+
+// n simulations of a spec of `repeats`: "80 combinations", or with repeats
+// "30 runs" (each combination flies `repeats` runs).
+std::string runCount(long n, long repeats);
 
 }  // namespace aurora_sweep

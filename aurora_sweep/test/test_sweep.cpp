@@ -281,6 +281,9 @@ TEST(SweepProgram, RepeatsReportTheFeasibleShare) {
   const std::string out = ::testing::TempDir() + "/sweep_repeats";
   std::string log;
   ASSERT_EQ(runSweep("--config " + file + " --out " + out + " --backend cpu --overwrite", log), 0) << log;
+  // Issue 51 (10): runs are counted as runs in the plan and result lines too.
+  EXPECT_NE(log.find("sweep: plan: 30 runs in 1 chunk: "), std::string::npos) << log;
+  EXPECT_NE(log.find("sweep: 30 runs, "), std::string::npos) << log;
   std::ifstream results(out + "/results.csv");
   std::string line;
   std::getline(results, line);
@@ -293,6 +296,9 @@ TEST(SweepProgram, RepeatsReportTheFeasibleShare) {
     std::stringstream ss(line);
     for (std::string x; std::getline(ss, x, ',');) f.push_back(x);
     EXPECT_EQ(std::stol(f[11]), rows % 5) << line;  // the repeat varies fastest
+    // Issue 51 (6): the shortest text that reads back (pd.read_csv(...)[kd == 0.85] selects the row).
+    EXPECT_EQ(f[2], "0.85") << line;
+    EXPECT_EQ(f[5], "0.3") << line;
     runs[static_cast<size_t>(rows / 5)] += std::stoi(f[16]);  // feasible
     ++rows;
   }
@@ -305,6 +311,9 @@ TEST(SweepProgram, RepeatsReportTheFeasibleShare) {
   int mixed = 0;
   for (size_t k = 0; std::getline(shares, line); ++k) {
     const size_t last = line.rfind(','), before = line.rfind(',', last - 1);
+    EXPECT_NE(line.find(",0.5,0.85,"), std::string::npos) << line;
+    const std::string share = line.substr(last + 1);
+    EXPECT_TRUE(share == "0" || share == "0.2" || share == "0.4" || share == "0.6" || share == "0.8" || share == "1") << line;
     EXPECT_EQ(std::stoi(line.substr(before + 1, last - before - 1)), runs[k]) << line;
     ++by_runs[static_cast<size_t>(runs[k])];
     mixed += runs[k] > 0 && runs[k] < 5;
@@ -528,6 +537,10 @@ TEST(SweepProgram, SaysTheCostUpFrontAndRefusesWhatCannotFit) {
   EXPECT_NE(log.find("sweep: plan: 80 combinations in 1 chunk: "), std::string::npos) << log;
   EXPECT_NE(log.find("sims/s (measured on the first "), std::string::npos) << log;
   EXPECT_EQ(log.find("1 chunks"), std::string::npos) << log;
+  // Issue 51 (10): --output none writes no results, and counts none against the free space.
+  ASSERT_EQ(runSweep("--config " + kData + "/small_grid.yaml --out " + small + " --backend scalar --no-plots "
+                     "--output none --overwrite", log), 0) << log;
+  EXPECT_NE(log.find(", results 0 B); "), std::string::npos) << log;
 }
 #endif
 

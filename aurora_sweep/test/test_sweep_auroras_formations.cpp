@@ -307,4 +307,10 @@ TEST(AuRoRAsFormationSweep, MistakesAreRefusedNamingTheKey) {
   }
   e = refusedFor("triangle_ardrones", all);
   EXPECT_NE(e.find("'sweep.parameters' varies 36 parameters: at most 32 vary in one sweep"), std::string::npos) << e;
+  // Issue 51 (2): checks from a settle time past the flight's end judge nothing (every run feasible, errors 0).
+  for (const char* shape : {"triangle_ardrones", "line_pioneer_ardrone", "line_lemniscate"}) {
+    e = refusedFor(shape, "  criteria: {settle_time: 200}\n  parameters:\n    delay_1: 1\n");
+    EXPECT_NE(e.find("'sweep.criteria.settle_time' = 200 s is refused: the formation file '"), std::string::npos) << e;
+    EXPECT_NE(e.find("checks from the settle time on would judge nothing"), std::string::npos) << e;
+  }
 }

@@ -232,6 +232,7 @@ class ShapedFormationTest(unittest.TestCase):
             (lambda: aurora.simulate_formation("line_pioneer_ardrone", delays=(1, 5000)), "(robot 2)"),
             (lambda: aurora.simulate_formation("triangle_kinematic", law="NSB"), "'NSB' is not a triangle law"),
             (lambda: aurora.simulate_formation("triangle_kinematic", law=3), "law: expected a triangle law"),
+            (lambda: aurora.simulate_formation("triangle_kinematic", law=""), "law: expected a triangle law's name"),
             (lambda: aurora.simulate_formation("line_lemniscate", law="N"), "law= is refused for the line"),
             (lambda: aurora.simulate_formation("line_pioneer_ardrone", vehicle="ardrone2"), "vehicle= is refused"),
         ])

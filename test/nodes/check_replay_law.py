@@ -32,6 +32,15 @@ class ReplayLawTest(unittest.TestCase):
             rc, log = run(["rosrun", "aurora_control", "replay", bag, "--kp", "0.5"])
             self.assertEqual(rc, 2, log)
             self.assertIn("--kp is a gain of the pd_saturated law, but the bag's controller is underactuated", log)
+        # Issue 51 (8): another vehicle's law is named as such (it blamed the sample time), and shipped
+        # NAMEs are taken as flight takes them.
+        rc, log = run(["rosrun", "aurora_control", "replay", bag, "--controller", "pioneer_dynamic"])
+        self.assertEqual(rc, 2, log)
+        self.assertIn("its law 'pioneer_dynamic' flies the pioneer3dx, but the bag's controller '%s' flew the ardrone2"
+                      % rospy.get_param("~controller"), log)
+        rc, log = run(["rosrun", "aurora_control", "replay", bag, "--controller", rospy.get_param("~controller"),
+                       "--link", "ideal", "--expect-identical"])
+        self.assertEqual(rc, 0, log)
         out = tempfile.mkdtemp(prefix="aurora_replay_law_")
         rc, log = run(["rosrun", "aurora", "report", bag, "--out", out, "--no-video"])
         self.assertEqual(rc, 0, log)

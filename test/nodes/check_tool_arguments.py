@@ -64,6 +64,37 @@ class ToolArgumentsTest(unittest.TestCase):
         self.assert_refused(["--controller", cfg + "/controllers/pd_saturated_predictor.yaml"],
                             "its 'predictor' block is refused here: replay follows the predictor the bag's Control")
 
+    def test_shipped_names_as_flight_takes_them(self):
+        # Issue 51 (8): replay --controller NAME read config/controllers/NAME.yaml ("cannot be read" before).
+        self.assert_refused(["--controller", "pd_saturated_predictor"],
+                            "/controllers/pd_saturated_predictor.yaml: its 'predictor' block is refused here")
+        rc, out = replay("--controller", "pd_saturated", "--link", "wifi_lab")
+        self.assertIn("bag '/nonexistent.bag' does not exist", out)
+
+    def test_the_kernels_register_table_reads_todays_names(self):
+        """Issue 51 (9): bench/cuda_registers.sh printed its header only (the kernels' names had changed).
+        Its table, on ptxas output of today's kernels (a single robot's and a formation's, test/data), names
+        each instantiation; output with no sweep kernel fails instead of printing an empty table."""
+        root = os.path.abspath(os.path.join(os.path.dirname(os.path.realpath(__file__)), "..", ".."))
+        table = os.path.join(root, "bench", "ptxas_table.py")
+        if not os.path.exists(table):  # run from an install space
+            self.skipTest("no source tree next to this script")
+        with open(os.path.join(root, "test", "data", "ptxas_sample.log")) as log:
+            p = subprocess.run(["python3", table], stdin=log, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                               universal_newlines=True)
+        self.assertEqual(p.returncode, 0, p.stdout)
+        rows = p.stdout.splitlines()
+        self.assertEqual(rows[1].split(), ["ArdroneLaw<underactuated>", "-", "float", "512", "model", "no", "227",
+                                           "41328", "0/0"], p.stdout)
+        self.assertEqual(rows[2].split(), ["ArdroneLaw<underactuated>", "LineFormation", "float", "512", "model", "no",
+                                           "255", "85280", "260/260"], p.stdout)
+        self.assertEqual(rows[3], "2 kernel instantiations")
+        p = subprocess.run(["python3", table], input="ptxas info    : Compiling entry function '_Z6helperv' for 'sm_90'\n"
+                           "ptxas info    : Used 8 registers\n", stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                           universal_newlines=True)
+        self.assertEqual(p.returncode, 1, p.stdout)
+        self.assertIn("no sweep kernel (sweepKernel, formationKernel) among the 1 entry functions", p.stdout)
+
     def test_delay_beyond_the_node_limit(self):
         self.assert_refused(["--delay", "2048"], "--delay 2048 is refused: accepted integer samples in [0, 2047]")
 
@@ -114,14 +145,53 @@ class FormationAndLinkArgumentsTest(unittest.TestCase):
         with tempfile.TemporaryDirectory() as tmp:
             for edit, said in ((("start: [1.0, 0.0, 1.0]", "start: [1.0, 0.0, 0.75]"), "0 m apart in height"),
                                (("start: [1.0, 0.0, 1.0]", "start: [-1.0, 0.0, 0.75]"), "0 m apart and 0 m apart"),
-                               (("start: [1.0, 0.0, 1.0]", "start: [1.0, 0.0, -0.2]"), "is below the ground")):
+                               (("start: [1.0, 0.0, 1.0]", "start: [1.0, 0.0, -0.2]"), "has z = -0.2 m, below the ground")):
                 self.refused(["--formation", formation_file(tmp, edit)], said)
+            # Issue 51 (7): one start check for every shape (the triangle took z = -1 m).
+            self.refused(["--formation", formation_file(tmp, ("[0.0, 1.0, 0.75]]", "[0.0, 1.0, -1.0]]"), "triangle_ardrones")],
+                         "'formation.robots.starts[2]' = [0, 1, -1] has z = -1 m, below the ground: accepted heights [0, 100] m")
+            self.refused(["--formation", formation_file(tmp, ("[0.0, 1.0, 0.0]]", "[0.0, 1.0, -1.0]]"), "triangle_kinematic")],
+                         "'formation.robots.starts[2]' = [0, 1, -1] has z = -1 m, below the ground")
+            self.refused(["--formation", formation_file(tmp, ("start: [0.0, 0.0, 0.75]", "start: [0.0, 0.0, -1.0]"),
+                                                        "line_pioneer_ardrone")],
+                         "'formation.robots[1].start' = [0, 0, -1] has z = -1 m, below the ground: accepted heights [0, 100] m")
+
+    def test_a_formation_too_short_to_judge_is_refused_on_every_shape(self):
+        """Issue 51 (2): the checks judge from 10 s on; a 5 s UAV-UGV line or triangle printed RMS 0 and feasible."""
+        with tempfile.TemporaryDirectory() as tmp:
+            for name, edit, key in (("triangle_ardrones", ("duration: 50", "duration: 5"), "formation.duration"),
+                                    ("triangle_kinematic", ("duration: 50", "duration: 0.01"), "formation.duration"),
+                                    ("line_pioneer_ardrone", ("duration: 130", "duration: 5"), "formation.duration"),
+                                    ("line_lemniscate", ("duration: 90", "duration: 10"), "formation.reference.duration")):
+                value = edit[1].split(": ")[1]
+                self.refused(["--formation", formation_file(tmp, edit, name)],
+                             "'%s' = %s s is refused: the formation checks judge a flight from 10 s on" % (key, value),
+                             "accepted durations > 10 s")
+            # Past 10 s but short of 20 s: the RMS window is empty, and flight says so instead of printing 0.
+            for name, edit in (("triangle_ardrones", ("duration: 50", "duration: 15")),
+                               ("line_pioneer_ardrone", ("duration: 130", "duration: 15"))):
+                rc, out = flight("--formation", formation_file(tmp, edit, name))
+                self.assertEqual(rc, 0, out)
+                self.assertIn("RMS after 20 s: none, the flight ends at 15 s", out)
+                self.assertNotIn("0.0000", out)
+
+    def test_a_formation_robots_predictor_is_refused_not_dropped(self):
+        """Issue 51 (1): a formation robot's controller file with a predictor flew the plain law in silence."""
+        with tempfile.TemporaryDirectory() as tmp:
+            for name, edit, key in (
+                    ("triangle_ardrones", ("controller: controllers/underactuated.yaml",
+                                           "controller: controllers/underactuated_predictor.yaml"), "formation.robots.controller"),
+                    ("line_lemniscate_ik", ("controller: *lab_gains", "controller: controllers/underactuated_predictor.yaml"),
+                     "formation.drones[1].controller")):
+                path = formation_file(tmp, edit, name)
+                self.refused(["--formation", path, "--delay"] + ["6"] * (3 if "triangle" in name else 2),
+                             "'%s' = '" % key, "asks for the state predictor ('predictor.form' = resimulate)")
 
     def test_a_formation_too_short_to_judge_or_with_a_delay_beyond_it_is_refused(self):
         with tempfile.TemporaryDirectory() as tmp:
             for duration in ("0.01", "10"):
                 self.refused(["--formation", formation_file(tmp, ("duration: 90", "duration: " + duration))],
-                             "formation.reference.duration = %s s" % duration, "accepted durations > 10 s")
+                             "'formation.reference.duration' = %s s" % duration, "accepted durations > 10 s")
             # 12 s: 360 ticks; a drone's delay of 400 samples would never reach its law.
             text = open(formation_file(tmp, ("duration: 90", "duration: 12"))).read()
             last = text.rfind("delay: 0")
@@ -421,6 +491,16 @@ class FormationAndLinkArgumentsTest(unittest.TestCase):
         self.refused(["--formation", "triangle_kinematic", "--law", "NSB"], "--law = 'NSB' is not a triangle law")
         self.refused(["--formation", "line_lemniscate", "--law", "N"], "--law is refused for a formation of shape 'line'")
         self.refused(["--law", "N"], "--law N is refused without --formation")
+        self.refused(["--formation", "triangle_kinematic", "--law", ""], "--law '' is refused: give a triangle law's name")
+
+    def test_a_compensator_period_longer_than_the_task_is_refused(self):
+        """Issue 51 (8): --rate 1e-9 ran the law once and held its command for the whole task."""
+        for rate in ("1e-9", str(30.0 / 1800)):
+            self.refused(["--controller", "bebop2_compensator", "--task", "bebop2_lemniscate", "--rate", rate],
+                         "as long as the task (60 s) or longer: its first command would be held for the whole flight",
+                         "accepted rates above 0.0166667 Hz")
+        rc, out = flight("--controller", "bebop2_compensator", "--task", "bebop2_lemniscate", "--rate", str(30.0 / 1799))
+        self.assertEqual(rc, 0, out)  # the law runs at steps 0 and 1799
 
     def test_two_sweeps_on_one_folder_and_an_interrupted_sweep(self):
         sweep = subprocess.run(["catkin_find", "--first-only", "--libexec", "aurora_sweep", "sweep"],

@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "aurora_common/number_text.h"
 #include "aurora_control/formation/formation_judge.h"
 #include "aurora_control/formation/formation_yaml.h"
 
@@ -89,7 +90,7 @@ struct FlightTable {
 };
 
 // The table as the CSV file `f` (none when null): the step as an integer,
-// every other value at 17 significant digits.
+// every other value as the shortest text that reads back to it (number_text.h).
 inline FlightTable csvTable(FILE* f) {
   FlightTable t;
   if (!f) return t;
@@ -99,7 +100,7 @@ inline FlightTable csvTable(FILE* f) {
   };
   t.row = [f](const std::vector<double>& v) {
     std::fprintf(f, "%ld", long(v[0]));
-    for (size_t i = 1; i < v.size(); ++i) std::fprintf(f, ",%.17g", v[i]);
+    for (size_t i = 1; i < v.size(); ++i) aurora_common::writeNumber(f, v[i]);
     std::fprintf(f, "\n");
   };
   return t;
@@ -112,6 +113,18 @@ struct ShapedFlight {
   std::vector<std::pair<std::string, double>> errors;
   double seconds = 0.0;  // wall time of the run
 };
+
+// The printed RMS errors are taken from this time on [s] (AuRoRA's reports).
+constexpr double kRmsFrom = 20.0;
+
+// The RMS line of a shaped flight: `values` when `samples` fell after
+// kRmsFrom, else that the window is empty (a flight ending at `end_s`, a
+// 15 s triangle say): an empty window is no 0 error. Its errors are then
+// NaN (not measured).
+inline std::string rmsLine(long samples, double end_s, const std::string& values, const std::string& rest) {
+  const std::string measured = samples > 0 ? values : "none, the flight ends at " + YamlReader::fmt(end_s) + " s";
+  return "  RMS after " + YamlReader::fmt(kRmsFrom) + " s: " + measured + "; " + rest + "\n";
+}
 
 // Flies a UAV-UGV line file (shape: uav_ugv_line; uav_ugv_yaml.h) or a
 // triangle file (shape: triangle; triangle_yaml.h) with the options' delays

@@ -19,6 +19,7 @@
 #include "aurora_control/params/limits.h"
 #include "aurora_control/link/link_yaml.h"
 #include "aurora_control/params/yaml_reader.h"
+#include "aurora_control/predictor/predictor_yaml.h"
 
 namespace aurora_control {
 
@@ -112,9 +113,26 @@ inline void readReference(const YamlReader& r, const YAML::Node& n, const std::s
 
 // A robot's controller at `key`: a mapping {name, gains ...} or a
 // controller file (controllers/NAME.yaml, in the config folder).
+// Formation robots fly their law on the delayed state: the state predictor
+// (docs/predictor.md) is not in the formation loops (flight, the node,
+// Python, the sweeps), so a robot's controller file that asks for one is
+// refused naming the key, never flown without it in silence.
+inline void refuseFormationPredictor(const YamlReader& r, const std::string& key, const std::string& file) {
+  const PredictorFile p = readControllerPredictor(file);
+  if (p.form == PredictorForm::kOff) return;
+  r.fail(key, "= '" + file + "' asks for the state predictor ('predictor.form' = " + predictorFormName(p.form) +
+                  "): formation robots fly their law on the delayed state, without a predictor (docs/predictor.md, "
+                  "\"Not yet\"); accepted a controller file without one (controllers/underactuated.yaml) or with "
+                  "'predictor.form: off'");
+}
+
 inline ControllerSettings controllerAt(const YamlReader& r, const YAML::Node& c, const std::string& key,
                                        const std::string& config_dir) {
-  if (c.IsScalar()) return readControllerFile(inConfig(r.text(c, key), config_dir)).settings;
+  if (c.IsScalar()) {
+    const std::string file = inConfig(r.text(c, key), config_dir);
+    refuseFormationPredictor(r, key, file);
+    return readControllerFile(file).settings;
+  }
   ControllerSettings set;
   readLaw(r, c, key, set);
   return set;
@@ -152,14 +170,25 @@ inline std::string pointText(const double p[3]) {
   return "[" + YamlReader::fmt(p[0]) + ", " + YamlReader::fmt(p[1]) + ", " + YamlReader::fmt(p[2]) + "]";
 }
 
+// The highest start a formation file takes [m] (the drones' waypoint
+// ceiling, task_check.h's 100 m).
+constexpr double kHighestStart = 100.0;
+
+// The one start check of every shape (the line's drones, the UAV-UGV
+// line's robots, the triangle's): z within [lo, hi] m, refused naming `key`
+// and the start, with `accepted` saying what is (a ground robot: z = 0).
+inline void refuseStartHeight(const YamlReader& r, const std::string& key, const double p[3], double lo = 0.0,
+                              double hi = kHighestStart, const std::string& accepted = "") {
+  if (p[2] >= lo && p[2] <= hi) return;
+  r.fail(key, "= " + pointText(p) + " has z = " + YamlReader::fmt(p[2]) + " m" + (p[2] < 0.0 ? ", below the ground" : "") +
+                  ": " + (accepted.empty() ? "accepted heights [" + YamlReader::fmt(lo) + ", " + YamlReader::fmt(hi) + "] m" : accepted));
+}
+
 // Starts the line's variables are defined at (line_formation.h): no drone
 // below the ground, drone 2 not level with drone 1.
 inline void refuseSingularStart(const YamlReader& r, const std::vector<FormationDroneFile>& drones) {
   for (size_t i = 0; i < drones.size(); ++i) {
-    if (drones[i].start[2] < 0.0) {
-      r.fail("formation.drones[" + std::to_string(i) + "].start", "= " + pointText(drones[i].start) +
-                 " is below the ground (z < 0): accepted z >= 0 m");
-    }
+    refuseStartHeight(r, "formation.drones[" + std::to_string(i) + "].start", drones[i].start);
   }
   const double* a = drones[0].start;
   const double* b = drones[1].start;
@@ -242,15 +271,19 @@ inline FormationFile readFormationFile(const std::string& path, const std::strin
 }
 
 // A formation is judged from the checks' settling time on
-// (formation_checks.h): a shorter one would be judged on nothing and pass.
-inline void refuseShortFormation(const FormationRun<double, LineFormation<double>>& run, double Ts) {
-  const double settle = FormationCriteria<double>::study().settle_time;
-  const long ticks = formationTicks(run.reference.duration, Ts);
-  if (!(run.reference.duration > settle)) {
-    throw ConfigError("formation.reference.duration = " + YamlReader::fmt(run.reference.duration) + " s (" +
-                      std::to_string(ticks) + " ticks) is refused: the formation checks judge it from " +
-                      YamlReader::fmt(settle) + " s on; accepted durations > " + YamlReader::fmt(settle) + " s");
-  }
+// (formation_checks.h): a shorter one would be judged on nothing and pass,
+// every error 0. Every shape's file (`key`: its duration's key) and a
+// sweep's criteria (`settle`: its settle_time) refuse it by this rule.
+inline std::string shortFormationRefusal(double duration, const std::string& key,
+                                         double settle = FormationCriteria<double>::study().settle_time) {
+  if (duration > settle) return "";
+  return "'" + key + "' = " + YamlReader::fmt(duration) + " s is refused: the formation checks judge a flight from " +
+         YamlReader::fmt(settle) + " s on (settle_time), so a shorter one would be judged on nothing; accepted durations > " +
+         YamlReader::fmt(settle) + " s";
+}
+inline void refuseShortFormation(double duration, const std::string& key) {
+  const std::string refusal = shortFormationRefusal(duration, key);
+  if (!refusal.empty()) throw ConfigError(refusal);
 }
 
 // Each drone's delay in force shorter than the run, as one drone's
@@ -289,7 +322,7 @@ inline FormationRun<double, LineFormation<double>> formationRun(const FormationF
     run.drone[d].link = f.drones[d].link;
     for (int i = 0; i < 3; ++i) run.drone[d].start[i] = f.drones[d].start[i];
   }
-  refuseShortFormation(run, vehicle.Ts);
+  refuseShortFormation(run.reference.duration, "formation.reference.duration");
   refuseFormationDelays(run, vehicle.Ts, {"formation.drones[0].delay", "formation.drones[1].delay"});
   return run;
 }

@@ -112,6 +112,7 @@ inline void readRobots(const YamlReader& r, const YAML::Node& n, const std::stri
   for (int d = 0; d < 3; ++d) {
     const std::vector<double> p = formation_detail::numbers(r, starts[d], r.key(key, "starts") + "[" + std::to_string(d) + "]", 3);
     for (int i = 0; i < 3; ++i) s.start[3 * d + i] = p[i];
+    formation_detail::refuseStartHeight(r, r.key(key, "starts") + "[" + std::to_string(d) + "]", &s.start[3 * d]);
   }
   refuseSingularStart(r, s.start);
   s.kinematic = !n["vehicle"];
@@ -146,6 +147,8 @@ inline TriangleSetup readTriangleFile(const std::string& path, const std::string
   }
   s.period = r.numberIn(r.require(n, "formation", "period", "s"), "formation.period", 0.0, 10.0, "s", false);
   s.duration = r.numberIn(r.require(n, "formation", "duration", "s"), "formation.duration", 0.0, 3600.0, "s", false);
+  const std::string short_run = shortFormationRefusal(s.duration, "formation.duration");
+  if (!short_run.empty()) r.failWith(short_run);
   if (n["gains"]) formation_detail::readGains(r, n["gains"], "formation.gains", s.gains);
   const std::string reference = r.text(r.require(n, "formation", "reference", "carrousel"), "formation.reference");
   if (reference != "carrousel") r.fail("formation.reference", "= '" + reference + "' is unknown: accepted carrousel");

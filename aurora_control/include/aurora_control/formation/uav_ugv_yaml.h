@@ -31,8 +31,8 @@ inline void readStart(const YamlReader& r, const YAML::Node& n, const std::strin
                       const std::string& why, double start[3]) {
   const std::vector<double> s =
       formation_detail::numbers(r, r.require(n, key, "start", "[x, y, z] in m"), r.key(key, "start"), 3);
-  if (!(s[2] >= lo && s[2] <= hi)) r.fail(r.key(key, "start"), "has z = " + YamlReader::fmt(s[2]) + " m: " + why);
   for (int i = 0; i < 3; ++i) start[i] = s[i];
+  formation_detail::refuseStartHeight(r, r.key(key, "start"), start, lo, hi, why);
 }
 
 // The robot's controller mapping, whose name must be `law`.
@@ -75,7 +75,7 @@ inline void readDrone(const YamlReader& r, const YAML::Node& n, const std::strin
   ControllerSettings set;
   readLaw(r, controllerOf(r, n, key, lawName(LawType::kUnderactuated)), r.key(key, "controller"), set);
   s.drone_gains.underactuated = set.underactuated;
-  readStart(r, n, key, 0.0, 100.0, "accepted heights [0, 100] m", s.drone_start);
+  readStart(r, n, key, 0.0, formation_detail::kHighestStart, "", s.drone_start);
   readRobotLink(r, n, key, config_dir, 1, s);
 }
 
@@ -89,6 +89,8 @@ inline UavUgvLineSetup readUavUgvLineFile(const std::string& path, const std::st
   UavUgvLine<double>::defaultGains(s.k1, s.k2);
   s.tick = r.numberIn(r.require(n, "formation", "tick", "s (AuRoRA's 1/30)"), "formation.tick", 0.0, 1.0, "s", false);
   s.duration = r.numberIn(r.require(n, "formation", "duration", "s"), "formation.duration", 0.0, 3600.0, "s", false);
+  const std::string short_run = shortFormationRefusal(s.duration, "formation.duration");
+  if (!short_run.empty()) r.failWith(short_run);
   if (n["gains"]) {
     FormationGains<double, 6> g;
     for (int i = 0; i < 6; ++i) g.k1[i] = s.k1[i], g.k2[i] = s.k2[i];

@@ -120,6 +120,16 @@ inline LawFlight<Bebop2Compensator> loadCompensatorFlight(const FlightFiles& f, 
   LawFlight<Bebop2Compensator> s = lawFlight<Bebop2Compensator>(f, file.gains);
   s.rate = file.rate;
   s.run.gains.period_steps = double(compensatorPeriod(given, file.rate, s.run.plant.Ts));
+  // The task's steps 0 .. steps - 1 span steps - 1 periods of Ts: a law
+  // period that long would run at step 0 alone and its command hold for the
+  // whole task.
+  if (long(s.run.gains.period_steps) >= s.steps - 1) {
+    const double task = s.cfg.task.duration();
+    throw ConfigError(given + " Hz is refused: the law would run every " + YamlReader::fmt(s.run.gains.period_steps) +
+                      " steps (" + YamlReader::fmt(s.run.gains.period_steps * s.run.plant.Ts) + " s), as long as the task (" +
+                      YamlReader::fmt(task) + " s) or longer: its first command would be held for the whole flight; "
+                      "accepted rates above " + YamlReader::fmt(1.0 / task) + " Hz");
+  }
   s.cfg.clamp_commands = !f.no_clamp && (!file.has_clamp || file.clamp);
   s.cfg.clamp_at_drone = !f.no_clamp;
   return s;
