@@ -89,6 +89,7 @@ std::string ControllerNodeOf<Settings>::readLoopMode() {
   // first steps, depending on machine load.
   lockstep_cmd_subscribers_ = static_cast<int>(wholeParam(pnh_, kParameterTable[kRowLockstepCmdSubscribers]));
   lockstep_control_subscribers_ = static_cast<int>(wholeParam(pnh_, kParameterTable[kRowLockstepControlSubscribers]));
+  record_subscribers_ = static_cast<int>(wholeParam(pnh_, kParameterTable[kRowRecordSubscribers]));
   return mode;
 }
 
@@ -190,7 +191,7 @@ template <class Settings>
 void ControllerNodeOf<Settings>::refuseUnknownTopLevelKeys() {
   // The node's own keys and those the reconfigure server writes beside them.
   std::vector<std::string> accepted{"controller", "task", "safety", "joystick", "mode", "trigger",
-                                    "delay", "clamp_commands", "lockstep_subscribers", "kp", "kd",
+                                    "delay", "clamp_commands", "lockstep_subscribers", "record_subscribers", "kp", "kd",
                                     "delay_samples", "link", "link_name", "yaml_files", "predictor",
                                     "controller_file"};
   const std::vector<std::string> gains = lawGainNames(LawType::kUnderactuated);
@@ -327,6 +328,7 @@ void ControllerNodeOf<Settings>::onState(const aurora_msgs::DroneState::ConstPtr
     return;
   }
   warned_stale_input_ = false;
+  if (core_->empty() && !recorderReady()) return;  // the first state the recorder will see
   if (lockstep_ && core_->empty() && !lockstepListenersReady()) return;  // the sim re-sends it
   const StateSample sample = sampleFromMsg(*msg);
   const bool went_back = !core_->empty() && sample.step < core_->newest().step;
@@ -350,6 +352,20 @@ void ControllerNodeOf<Settings>::onState(const aurora_msgs::DroneState::ConstPtr
   } else if (!timer_triggered_) {
     cycle(ros::Time::now(), 0.0);
   }
+}
+
+// A recorded flight (record:=true) starts once the recorder listens to
+// control and cmd_vel: the law's first cycle, its delay history and its
+// memory are then in the bag, and replay reproduces every cycle (a recorder
+// that connected a few cycles late made replay of realtime bags differ).
+template <class Settings>
+bool ControllerNodeOf<Settings>::recorderReady() const {
+  const int control = static_cast<int>(control_pub_.getNumSubscribers());
+  const int cmd = static_cast<int>(cmd_pub_.getNumSubscribers());
+  if (control >= record_subscribers_ && cmd >= record_subscribers_) return true;
+  ROS_INFO_THROTTLE(5.0, "controller: waits for %d recorder(s) of %s and %s (%d and %d now) before its first state",
+                    record_subscribers_, control_pub_.getTopic().c_str(), cmd_pub_.getTopic().c_str(), control, cmd);
+  return false;
 }
 
 template <class Settings>

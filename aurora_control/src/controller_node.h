@@ -113,6 +113,8 @@ class ControllerNodeOf {
   // Lockstep: each command also as cmd_vel_stamped, stamped with the state
   // it answers (answering_), on which the sim steps once per step.
   ros::Publisher step_cmd_pub_;
+  int record_subscribers_ = 0;  // recorders of control to wait for before the first state (record:=true)
+  bool recorderReady() const;
   ros::Time answering_;
   // take-off and land: held until the driver listens, re-sent until shown;
   // reset: sent once

@@ -34,6 +34,7 @@ FormationNode::FormationNode(ros::NodeHandle nh, ros::NodeHandle private_nh) : n
   configureSequence();
   cmd_subscribers_ = static_cast<int>(aurora_common::wholeParam(pnh_, kParameterTable[kRowLockstepCmdSubscribers]));
   formation_subscribers_ = static_cast<int>(aurora_common::wholeParam(pnh_, kFormationSubscribers));
+  record_subscribers_ = static_cast<int>(aurora_common::wholeParam(pnh_, kParameterTable[kRowRecordSubscribers]));
   connect();
   std::string delays;
   for (int d = 0; d < crew_->robots(); ++d) delays += (d ? ", " : "") + std::to_string(crew_->robot(d).delay);
@@ -124,8 +125,24 @@ bool FormationNode::listenersReady() const {
 // gets that command again; a re-sent state of a step not answered yet (a
 // robot's state has not come) gets nothing: the sim would step on the
 // previous command and leave the robots a step apart.
+// A recorded flight (record:=true) takes its first state once the recorder
+// listens to the formation topic and every robot's cmd_vel: the bag then
+// holds every tick from the first (the controller node's rule).
+bool FormationNode::recorderReady() {
+  if (recording_) return true;
+  bool ready = static_cast<int>(formation_pub_.getNumSubscribers()) >= record_subscribers_;
+  for (const ros::Publisher& p : cmd_pubs_) ready = ready && static_cast<int>(p.getNumSubscribers()) >= record_subscribers_;
+  if (!ready) {
+    ROS_INFO_THROTTLE(5.0, "formation_controller: waits for %d recorder(s) of formation and cmd_vel before its first state",
+                      record_subscribers_);
+  }
+  recording_ = ready;
+  return ready;
+}
+
 void FormationNode::onState(int d, const aurora_msgs::DroneState::ConstPtr& msg) {
   if (msg->stale) return;  // the estimator's source stopped: the state ages
+  if (!recorderReady()) return;
   if (lockstep_ && answered_ < 0 && !listenersReady()) {
     ROS_INFO_THROTTLE(5.0, "formation_controller: lockstep waits for the listeners of cmd_vel and formation");
     return;  // the sims re-send their states

@@ -43,6 +43,9 @@ class FormationNode {
   void onState(int d, const aurora_msgs::DroneState::ConstPtr& msg);
   void onTimer(const ros::TimerEvent&);
   bool listenersReady() const;
+  bool recorderReady();
+  int record_subscribers_ = 0;  // recorders of formation to wait for before the first state (record:=true)
+  bool recording_ = false;      // they were connected (states are taken from then on)
   void answer(long k, const ros::Time& stamp);
   void publish(const CrewTick& t, const ros::Time& stamp);
   void send(const CrewTick& t, const ros::Time& stamp);

@@ -566,9 +566,28 @@ struct ReplayCount {
   // first gap on are replayed but not compared.
   long missing_controls = 0, first_gap_step = -1, not_compared = 0;
   long on_stand_in = 0;  // cycles whose law ran on a stand-in for a state the bag lacks (pushStatesUpTo)
+  // A bag that starts late: its first control message is not the
+  // controller's first (roscpp numbers a publisher's messages from 0), so
+  // the states before it and the law's memory are not in it. Its cycles
+  // are replayed, and compared from the second of two law cycles in a row
+  // whose state is the recorded one (the delay history rebuilt, the law's
+  // memory of one cycle refreshed), once the command the drone applies was
+  // sent from then on (over a link's downlink it is an older one).
+  long missed_at_start = 0, warming = 0, warm_from = -1;
+  int warm_runs = 0;
+  void warmUp(const aurora_msgs::Control& c, const ControlOutput& out) {
+    if (missed_at_start == 0 || warm_from >= 0) return;
+    const bool in_step = c.law_ran && out.used && out.used->step == static_cast<long>(c.state_used.step);
+    warm_runs = in_step ? warm_runs + 1 : 0;
+    if (warm_runs >= 2) warm_from = static_cast<long>(c.step);
+  }
+  bool warm(const aurora_msgs::Control& c) const {
+    return missed_at_start == 0 || (warm_from >= 0 && static_cast<long>(c.step) - c.command_age >= warm_from);
+  }
   uint32_t last_seq = 0;
   bool read_any = false;
   void read(const aurora_msgs::Control& c) {
+    if (!read_any) missed_at_start = c.header.seq;
     if (read_any && c.header.seq > last_seq + 1) {
       missing_controls += c.header.seq - last_seq - 1;
       if (first_gap_step < 0) first_gap_step = static_cast<long>(c.step);
@@ -576,7 +595,11 @@ struct ReplayCount {
     last_seq = c.header.seq;
     read_any = true;
   }
-  void add(bool same, double diff) {
+  void add(const aurora_msgs::Control& c, bool same, double diff) {
+    if (!warm(c)) {
+      ++warming;
+      return;
+    }
     if (first_gap_step >= 0) {
       ++not_compared;
       return;
@@ -597,6 +620,12 @@ int replayVerdict(const Arguments& args, const std::string& ns, const ReplayCoun
   std::printf("replay: metrics recorded IAE %.10g ITAE %.10g IASC %.10g; replayed (open loop on "
               "the recorded states) IAE %.10g ITAE %.10g IASC %.10g\n",
               last.iae, last.itae, last.iasc, last_out.iae, last_out.itae, last_out.iasc);
+  if (n.missed_at_start > 0) {
+    std::printf("replay: the bag starts late: the controller's first %ld control messages are not in it (a recorder "
+                "that connected after the loop started; record:=true waits for it): the %ld cycles before its inputs "
+                "were in the bag (the delay history, the law's memory) were replayed but not compared\n",
+                n.missed_at_start, n.warming);
+  }
   if (!states.recovered.empty()) {
     std::printf("replay: %zu state steps missing from the bag (the recorder dropped them, first %ld) were taken "
                 "from the control messages that used them (Control.state_used)\n",
@@ -644,10 +673,11 @@ int replayCycles(const Arguments& args, const std::string& ns, const BagStates& 
     if (c.law_ran) followPredictor(args, c, *core);
     // The law ran when the node says it did.
     out = c.law_ran ? core->compute(referenceFromMsg(c)) : core->hover();
+    n.warmUp(c, out);
     n.on_stand_in += c.law_ran && missing.count(out.used->step);
     bool same = true;
     const double diff = commandDifference(c, out, same);
-    n.add(same, diff);
+    n.add(c, same, diff);
     if (csv) {
       std::fprintf(csv, "%lu", static_cast<unsigned long>(c.step));
       for (double v : {c.command[0], c.command[1], c.command[2], c.command[3], out.U[0], out.U[1], out.U[2], out.U[3], diff}) {

@@ -37,6 +37,7 @@ enum ParameterRow : int {
   kRowDownlinkLoss,
   kRowDownlinkBurst,
   kRowPredictorForm,
+  kRowRecordSubscribers,
   kParameterRows,
 };
 
@@ -93,6 +94,9 @@ constexpr ParameterSpec kParameterTable[kParameterRows] = {
      "state predictor (docs/predictor.md): the law flies on the state of the step its command acts on, predicted by "
      "a model (predictor/model; live: the node's vehicle file when none was given)",
      "off|resimulate|smith", "predictor"},
+    {"record_subscribers", ParamKind::kWhole, 0, 0, 100, "subscribers",
+     "controller and formation nodes, both modes: subscribers of control (formation) that record the flight; no state "
+     "is taken before they are connected, so a bag holds the loop from its first cycle (record:=true sets 1)"},
 };
 
 // The row of a live setting's name, or nullptr.
