@@ -527,7 +527,8 @@ void ControllerNodeOf<Settings>::cycle(const ros::Time& now, double age) {
 template <class Settings>
 void ControllerNodeOf<Settings>::logEvent(const std::string& event) const {
   if (event.empty()) return;
-  const bool safety = event.rfind("hover", 0) == 0 || event.rfind("land (", 0) == 0;
+  const bool safety = event.rfind("hover", 0) == 0 || event.rfind("halt (", 0) == 0 || event.rfind("land (", 0) == 0 ||
+                      event.rfind("stop (", 0) == 0;
   if (safety) {
     ROS_WARN("controller: %s", event.c_str());
   } else {

@@ -132,8 +132,7 @@ void requestedDelays(const CrewRequest& q, int robots, double Ts, long ticks, Se
     long& delay = robot(r).delay;
     if (static_cast<size_t>(r) < q.delays.size() && q.delays[r] >= 0) delay = q.delays[r];
     try {
-      refuseRobotLink(robot(r).link, delay, r, ticks, Ts);
-      if (!delayShorterThanRun(delay, ticks)) throw ConfigError(delayRunText(delay, ticks, Ts));
+      refuseRobotDelay(robot(r).link, delay, r, ticks, Ts);
     } catch (const ConfigError& e) {
       const std::string key = static_cast<size_t>(r) < q.delay_keys.size() ? q.delay_keys[r] : "the file's delay";
       throw ConfigError("parameter '" + key + "' = " + std::to_string(delay) + ": " + e.what());

@@ -134,6 +134,11 @@ void refuseRobotLink(const LinkParams& link, long delay, int r, long ticks, doub
   }
 }
 
+void refuseRobotDelay(const LinkParams& link, long delay, int r, long ticks, double Ts) {
+  if (!delayShorterThanRun(delay, ticks)) throw ConfigError(delayRunText(delay, ticks, Ts));
+  refuseRobotLink(link, delay, r, ticks, Ts);
+}
+
 std::vector<long> robotDelays(const std::vector<long>& given, size_t robots, const std::string& shape, double Ts,
                               long ticks, const std::vector<long>& none, const std::string& robot) {
   if (given.empty()) return none;

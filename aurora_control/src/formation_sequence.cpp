@@ -61,7 +61,8 @@ void FormationNode::flightCycle(const ros::Time& now) {
   const Supervisor::Decision c = superviseDrones(now);
   mode_ = c.mode;
   if (!c.event.empty()) {
-    const bool safety = c.event.rfind("hover", 0) == 0 || (c.event.rfind("land (", 0) == 0 && c.event != "land (task complete)");
+    const bool safety = c.event.rfind("hover", 0) == 0 || c.event.rfind("halt (", 0) == 0 ||
+                        (c.event.rfind("land (", 0) == 0 && c.event != "land (task complete)");
     if (safety) ROS_WARN("formation_controller: %s", c.event.c_str());
     else ROS_INFO("formation_controller: %s", c.event.c_str());
   }

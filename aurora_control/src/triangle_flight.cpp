@@ -75,15 +75,16 @@ struct TriangleErrors {
 
 ShapedFlight flyTriangle(const FormationFlightOptions& o, FlightTable& table) {
   TriangleSetup setup = readTriangleFile(o.formation, o.config_dir, o.law);
-  // Delays in drone steps (kinematic robots: in layer periods), shorter than the run.
+  // Delays in drone steps (kinematic robots: in layer periods), shorter than
+  // the run's steps (triangleSteps: what runTriangle flies, the node's rule).
   const double unit = setup.kinematic ? setup.period : setup.drone.Ts;
-  const long samples = setup.kinematic ? setup.periods() : setup.periods() * setup.layer_ticks / setup.drone_ticks;
+  const long samples = triangleSteps(setup);
   // --delay replaces the file's delays (its links' uplink delays, else 0).
   const std::vector<long> delays =
       robotDelays(o.delays, 3, "the triangle", unit, samples, {setup.delay[0], setup.delay[1], setup.delay[2]});
   for (int r = 0; r < 3; ++r) {
     setup.delay[r] = delays[r];
-    refuseRobotLink(setup.link[r], setup.delay[r], r, samples, unit);
+    refuseRobotDelay(setup.link[r], setup.delay[r], r, samples, unit);
   }
   TriangleErrors errors;
   const long periods = setup.periods();

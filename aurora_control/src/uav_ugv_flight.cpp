@@ -84,7 +84,7 @@ ShapedFlight flyUavUgvLine(const FormationFlightOptions& o, FlightTable& table) 
       robotDelays(o.delays, 2, "the UAV-UGV line", setup.tick, setup.ticks(), {setup.delay[0], setup.delay[1]});
   for (int r = 0; r < 2; ++r) {
     setup.delay[r] = delays[r];
-    refuseRobotLink(setup.link[r], setup.delay[r], r, setup.ticks(), setup.tick);
+    refuseRobotDelay(setup.link[r], setup.delay[r], r, setup.ticks(), setup.tick);
   }
   LineErrors errors;
   FormationJudge<double, UavUgvShape, UavUgvRobots::Data> judge{FormationCriteria<double>::study(), false, setup.tick,

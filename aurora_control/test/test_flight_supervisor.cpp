@@ -114,6 +114,10 @@ TEST(FlightSupervisor, AGroundRobotDrivesAtOnceAndStopsWhereADroneLands) {
 
   FlightSupervisor stale(c), outside(c);
   stale.update(0.0, 0.0, X0, 1, 0, 25);
+  // A stale state stands it still, and says so as a robot that does not fly (issue 51: "hover").
+  d = stale.update(0.5, 0.3, X0, 1, 0.1, 25);
+  EXPECT_EQ(d.mode, "halt (no fresh state for 0.2 s)");
+  EXPECT_FALSE(d.run_law);
   d = stale.update(1.0, 1.2, X0, 1, 0.1, 25);
   EXPECT_EQ(d.mode, "stop (no fresh state for 1 s)");
   EXPECT_FALSE(d.send_land);

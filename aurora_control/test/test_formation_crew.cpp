@@ -149,4 +149,11 @@ TEST(FormationCrew, WhatTheRosLoopCannotFlyIsRefusedNamingTheKey) {
   EXPECT_NE(three.find("'/formation/delay_3' = 4 is refused: this formation has 2 robots"), std::string::npos) << three;
   const std::string long_delay = refusal(request("triangle_ardrones", {-1, 2000, -1}));
   EXPECT_NE(long_delay.find("'/formation/delay_2' = 2000"), std::string::npos) << long_delay;
+  // Issue 51: the node and flight share one rule: the triangle flies 1,499 steps (triangleSteps), so
+  // delay 1498 is flown and 1499 refused by both, by the delay's own text (no link was given).
+  EXPECT_EQ(refusal(request("triangle_ardrones", {-1, -1, 1498})), "");
+  const std::string at_end = refusal(request("triangle_ardrones", {-1, -1, 1499}));
+  EXPECT_NE(at_end.find("'/formation/delay_3' = 1499: 1499 samples is not shorter than the run's 1499 steps"),
+            std::string::npos) << at_end;
+  EXPECT_EQ(at_end.find("link"), std::string::npos) << at_end;
 }

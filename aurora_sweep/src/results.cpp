@@ -252,6 +252,7 @@ void writeSummaryJson(const std::string& path, const SweepSpec& spec, const RunI
       {"repeats", spec.repeats},
       {"fixed", fixed},
       {"task_duration_s", spec.duration()},
+      {"sample_time_s", spec.formation() ? spec.formationTs() : spec.Ts()},  // a delay sample [s]
       {"order", order},
       {"combinations", counts.combinations},
       {"feasible", counts.feasible},

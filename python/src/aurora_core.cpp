@@ -15,6 +15,8 @@
 #include "aurora_control/formation/triangle_formation.h"
 #include "aurora_control/formation/uav_ugv_yaml.h"
 #include "aurora_control/params/shipped_files.h"
+#include "aurora_sim/vehicle/sim_profile.h"
+#include "aurora_sim/vehicle/vehicle_type.h"
 
 namespace py = pybind11;
 using namespace aurora_control;
@@ -86,6 +88,19 @@ py::dict simulateFiles(const std::string& controller, const std::string& task, c
 
 // The vehicle a controller file's law flies (its name).
 std::string vehicleOf(const std::string& controller) { return controllerVehicle(controller); }
+
+// Whether a vehicle type flies (a drone: it takes off, hovers, lands) or
+// drives on the floor (a ground robot: it stands still), by its sim profile.
+bool vehicleFlies(const std::string& type) {
+  bool known = false, flies = true;
+  aurora_sim::forEachVehicle([&](auto v) {
+    if (type != v.name()) return;
+    known = true;
+    flies = aurora_sim::SimProfile<decltype(v)>::kFlies;
+  });
+  if (!known) throw py::value_error("'" + type + "' is not a vehicle type: accepted " + aurora_sim::knownVehicleTypes());
+  return flies;
+}
 
 // The formation checks and errors of a formation flight, as flight --formation prints them.
 py::dict formationMetrics(const FormationFlight& r) {
@@ -222,6 +237,8 @@ PYBIND11_MODULE(_core, m) {
         "config/<folder>/NAME.yaml for a shipped NAME, a path as it is: flight's rule");
   m.def("controller_vehicle", &vehicleOf, py::arg("controller"),
         "The name of the vehicle a controller file's law flies (config/vehicles/NAME.yaml).");
+  m.def("vehicle_flies", &vehicleFlies, py::arg("type"),
+        "True for a vehicle type that flies (a drone), False for a ground robot (its sim profile).");
   m.def("simulate_formation_files", &simulateFormationFiles, py::arg("formation"), py::arg("vehicle"),
         py::arg("delays"), py::arg("config_dir"),
         "One formation flight from YAML files, as flight --formation flies it: a dict of numpy arrays and metrics.");

@@ -134,6 +134,8 @@ class FormationReportTest(unittest.TestCase):
         with self.assertRaises(ValueError) as e:  # no drone's control topic: not a single-drone flight
             aurora.read_bag(bag)
         self.assertIn("control", str(e.exception))
+        self.assertIn("is a formation's", str(e.exception))  # issue 51: it pointed nowhere
+        self.assertIn("aurora.read_formation_bag(path)", str(e.exception))
 
 
 if __name__ == "__main__":

@@ -131,6 +131,34 @@ class PythonSweepTest(unittest.TestCase):
             self.assertEqual(bad.returncode, 2)
             self.assertIn("give two sweeps' output folders and a folder for the figures", bad.stderr)
 
+    def test_studies_of_other_sample_times_compare_in_seconds(self):
+        """Issue 51 (8): plot_sweep --compare of a Bebop (1/30 s) and a Pioneer (0.1 s) study put both on one
+        "delay [samples]" axis; summary.json now gives each sweep's sample time, and the two are drawn in
+        seconds (said on the way); two of one sample time stay in samples."""
+        from aurora_sweep.plot_sweep import delay_scales
+        cuts = {}
+        for name in ("bebop2_delay", "pioneer_delay"):
+            d = shipped(name)
+            for k, v in d["sweep"]["parameters"].items():
+                if isinstance(v, dict) and "count" in v:
+                    v["count"] = 4
+            d["sweep"]["parameters"]["delay"] = {"values": [0, 5, 10, 15]}
+            cuts[name] = d
+        with tempfile.TemporaryDirectory() as tmp:
+            summaries = {}
+            for name, d in cuts.items():
+                _, summaries[name] = aurora.sweep(d, out=tmp + "/" + name, backend="cpu", progress=False)
+            self.assertEqual(summaries["bebop2_delay"]["sample_time_s"], 1.0 / 30.0)
+            self.assertEqual(summaries["pioneer_delay"]["sample_time_s"], 0.1)
+            p = subprocess.run(["rosrun", "aurora_sweep", "plot_sweep", "--compare", tmp + "/bebop2_delay",
+                                tmp + "/pioneer_delay", tmp + "/cmp"], stdout=subprocess.PIPE, universal_newlines=True)
+            self.assertEqual(p.returncode, 0)
+            self.assertIn("the sample times differ (0.0333333, 0.1 s): delays drawn in seconds", p.stdout)
+            self.assertIn("compare_feasible_share.png", os.listdir(tmp + "/cmp"))
+        self.assertEqual(delay_scales([summaries["bebop2_delay"], summaries["pioneer_delay"]]), ([1.0 / 30.0, 0.1], "s"))
+        self.assertEqual(delay_scales([summaries["bebop2_delay"]] * 2), ([1.0, 1.0], "samples"))
+        self.assertEqual(delay_scales([{}, summaries["pioneer_delay"]]), ([1.0, 1.0], "samples"))
+
     def test_share_contours_draw_only_the_levels_crossed(self):
         """Issue 31: a grid all feasible printed matplotlib's "No contour
         levels were found" warning with its source line."""

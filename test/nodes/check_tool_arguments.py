@@ -465,6 +465,11 @@ class FormationAndLinkArgumentsTest(unittest.TestCase):
         self.assertIn("RMS after 20 s: position 0.0741 m, p 0.0598 m, q 0.0404 m, beta 0.0179", out)
         self.refused(["--formation", "triangle_ardrones", "--delay", "1", "2"],
                      "--delay: give one delay per robot (3 for the triangle), or none: got 2")
+        # Issue 51 (8): the node's rule: the triangle flies 1,499 steps, so 1499 is refused as the node refuses it.
+        self.refused(["--formation", "triangle_ardrones", "--delay", "0", "0", "1499"],
+                     "--delay (robot 3) = 1499 samples is not shorter than the run's 1499 steps")
+        rc, out = flight("--formation", "triangle_ardrones", "--delay", "0", "0", "1498")
+        self.assertEqual(rc, 0, out)
         # Each drone over its own link (robots.links: one link file per drone).
         with tempfile.TemporaryDirectory() as tmp:
             starts = "    starts: [[1.0, 0.0, 0.75], [-1.0, 0.0, 0.75], [0.0, 1.0, 0.75]]"

@@ -101,13 +101,23 @@ class VehicleBagTest(unittest.TestCase):
                 os.remove(thinned)
 
     def report_metrics(self, bag):
-        """The report's metrics.json of the bag's vehicle."""
+        """The report's metrics.json of the bag's vehicle; its report.md speaks of the vehicle as it is
+        (issue 51: a Pioneer's said its commands were clamped and spoke of a drone hovering)."""
         out = tempfile.mkdtemp(prefix="vehicle_report_")
         rc, log = run(["rosrun", "aurora", "report", bag, "--out", out, "--no-video"])
         self.assertEqual(rc, 0, log)
         with open(os.path.join(out, "metrics.json")) as f:
             metrics = json.load(f)
-        return metrics["drones"][0] if "drones" in metrics else metrics
+        drone = metrics["drones"][0] if "drones" in metrics else metrics
+        with open(os.path.join(out, "report.md")) as f:
+            md = f.read()
+        flies = rospy.get_param("~vehicle") != "pioneer3dx"
+        self.assertEqual(drone["flies"], flies)
+        if not flies:
+            self.assertIn("commands saturated by the law", md)
+            self.assertNotIn("clamped", md)
+            self.assertNotIn("hover", md)
+        return drone
 
     def check_the_report_compares_up_to_the_gap(self, bag, missing, first_missing):
         drone = self.report_metrics(bag)

@@ -338,8 +338,21 @@ def sweep_label(summary, fallback):
     return "%s (predictor %s)" % (summary.get("name", fallback), form)
 
 
-def compare_tolerable(np, plt, runs, out):
+def delay_scales(summaries):
+    """How two sweeps' delays are drawn side by side: (factors, unit). In
+    samples when their sample times agree; in seconds (each sweep's samples
+    times its sample_time_s) when they differ, a Bebop 2's 1/30 s against a
+    Pioneer's 0.1 s say; in samples, said, when a summary predates
+    sample_time_s."""
+    ts = [s.get("sample_time_s") for s in summaries]
+    if None in ts or len(set(ts)) == 1:
+        return [1.0] * len(summaries), "samples"
+    return ts, "s"
+
+
+def compare_tolerable(np, plt, runs, out, scales):
     """Two sweeps' max tolerable delay maps side by side, one colour scale."""
+    scale, unit = scales
     maps = []
     for summary, names, cols, ok in runs:
         gains = summary.get("delay_monotony", {}).get("gains", ["kp", "kd"])
@@ -348,7 +361,7 @@ def compare_tolerable(np, plt, runs, out):
         found = tolerable_delays(np, cols[gains[0]], cols[gains[1]], cols["delay"], ok)
         if found is None:
             return
-        maps.append((gains, found))
+        maps.append((gains, tuple(found[:2]) + (found[2] * scale[len(maps)],)))
     top = max(np.nanmax(t) if np.isfinite(t).any() else 0 for _, (_, _, t) in maps)
     fig, axes = plt.subplots(1, 2, figsize=(13, 5.5))
     for ax, (summary, _, _, _), (gains, (ukp, ukd, tolerable)) in zip(axes, runs, maps):
@@ -356,27 +369,28 @@ def compare_tolerable(np, plt, runs, out):
         ax.set_xlabel(gain_label(gains[0]))
         ax.set_ylabel(gain_label(gains[1]))
         ax.set_title("%s\n%d gain pairs tolerate some delay" % (sweep_label(summary, "?"), np.isfinite(tolerable).sum()))
-    fig.colorbar(im, ax=axes, label="max tolerable delay [samples] (blank: none)")
+    fig.colorbar(im, ax=axes, label="max tolerable delay [%s] (blank: none)" % unit)
     fig.savefig(os.path.join(out, "compare_max_tolerable_delay.png"), dpi=100)
     plt.close(fig)
 
 
-def compare_shares(np, plt, runs, out):
+def compare_shares(np, plt, runs, out, scales):
     """The feasible share of each sweep against the delay and, where the
     plant's model factors vary, against the largest factor error max |f - 1|
     (what model error leaves of a remedy)."""
-    axes_of = [("delay", "delay [samples]", lambda cols: cols["delay"])]
+    scale, unit = scales
+    axes_of = [("delay", "delay [%s]" % unit, lambda cols, i: cols["delay"] * scale[i])]
     factors = [f for f in MODEL_FACTORS if all(f in names for _, names, _, _ in runs)]
     if factors:
         axes_of.append(("model error", "largest model factor error max |f - 1| over " + ", ".join(factors),
-                        lambda cols: np.max(np.abs(np.stack([cols[f] for f in factors]) - 1.0), axis=0)))
+                        lambda cols, i: np.max(np.abs(np.stack([cols[f] for f in factors]) - 1.0), axis=0)))
     axes_of = [a for a in axes_of if all(a[0] != "delay" or "delay" in names for _, names, _, _ in runs)]
     if not axes_of:
         return
     fig, axes = plt.subplots(1, len(axes_of), figsize=(6.5 * len(axes_of), 4.5), squeeze=False)
     for ax, (_, label, values) in zip(axes[0], axes_of):
-        for summary, _, cols, ok in runs:
-            idx, centres = binned(np, values(cols), bins=16)
+        for i, (summary, _, cols, ok) in enumerate(runs):
+            idx, centres = binned(np, values(cols, i), bins=16)
             ax.plot(centres, share(np, idx, ok, len(centres)), "o-", label=sweep_label(summary, "?"))
         ax.set_xlabel(label)
         ax.set_ylabel("feasible share")
@@ -407,8 +421,12 @@ def compare(argv):
             return 2
         runs.append((summary, names, cols, cols["feasible"] == 1))
     os.makedirs(argv[2], exist_ok=True)
-    compare_tolerable(np, plt, runs, argv[2])
-    compare_shares(np, plt, runs, argv[2])
+    scales = delay_scales([r[0] for r in runs])
+    if scales[1] == "s":
+        print("plot_sweep --compare: the sample times differ (%s s): delays drawn in seconds"
+              % ", ".join("%g" % t for t in scales[0]))
+    compare_tolerable(np, plt, runs, argv[2], scales)
+    compare_shares(np, plt, runs, argv[2], scales)
     return 0
 
 

@@ -72,6 +72,9 @@ def read_bag(path, namespaces=None):
     a state and a control topic, or those named)."""
     bag = _open(path)
     try:
+        if formation_report.has_formation(report.topics_of(bag)):
+            raise ValueError("bag '%s' is a formation's (it holds %s and no robot's control topic): read it with "
+                             "aurora.read_formation_bag(path)" % (path, formation_report.FORMATION_TOPIC))
         data = report.read_bag(bag, namespaces)
         flights = {}
         for ns, d in data.items():

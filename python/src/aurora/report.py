@@ -17,7 +17,7 @@ import os
 import sys
 import time
 
-from aurora import formation_report
+from aurora import _core, formation_report
 
 # Metric integrals of the study (docs/delay-and-study.md): dt = 0.03 s, t the
 # loop clock (docs/architecture.md, "Step index and metric time").
@@ -279,6 +279,7 @@ def analyse(ns, d):
     series["label"] = "%s (%s%s, %s; delay %d samples = %.3f s)" % (
         ns, law, "" if predictor == "off" else " with the %s predictor" % predictor, gains, last.delay_samples,
         last.delay_seconds)
+    series["flies"] = _core.vehicle_flies(getattr(last, "vehicle", "") or "ardrone2")
     segments = segment_metrics(series)
     metrics = {
         "namespace": ns,
@@ -297,6 +298,9 @@ def analyse(ns, d):
         "kp": last.kp, "kd": last.kd, "commands_clamped": last.clamped,
         "controller": last.controller or "pd_saturated",
         "vehicle": getattr(last, "vehicle", "") or "ardrone2",
+        # A drone hovers on zero commands; a ground robot stands still, and its laws saturate
+        # their own commands (the vehicle's sim profile, aurora._core.vehicle_flies).
+        "flies": series["flies"],
         "command_names": names,
         "gains": dict(zip(last.gain_names, last.gains)),
         "task_kind": "trajectory" if trajectory else "waypoints",
@@ -581,11 +585,14 @@ def figures(ns, series, cmd, out_dir, pdf):
         ax.legend(loc="best")
     finish(fig, axes, "position against desired", "position")
 
-    fig, axes = plt.subplots(3, 1, figsize=(8, 7), sharex=True)
-    for ax, k, name in zip(axes, ("roll", "pitch", "yaw"), ("roll φ", "pitch θ", "yaw ψ")):
+    # A ground robot's roll and pitch are 0 by its model: its heading alone.
+    angles = (("roll", "pitch", "yaw"), ("roll φ", "pitch θ", "yaw ψ")) if series.get("flies", True) else (("yaw",), ("heading ψ",))
+    fig, axes = plt.subplots(len(angles[0]), 1, figsize=(8, 7 if len(angles[0]) == 3 else 3.5), sharex=True, squeeze=False)
+    axes = axes[:, 0]
+    for ax, k, name in zip(axes, *angles):
         ax.plot(t, [math.degrees(v) for v in series[k]], label=name)
         if k == "yaw":  # the task's desired yaw (along the path, or fixed)
-            ax.plot(t, [math.degrees(v) for v in series["yaw_d"]], "--", color="tab:red", label="yaw desired")
+            ax.plot(t, [math.degrees(v) for v in series["yaw_d"]], "--", color="tab:red", label=name.split()[0] + " desired")
             ax.legend(loc="best")
         ax.set_ylabel(name + " [deg]")
         ax.grid(True, alpha=0.3)
@@ -678,6 +685,14 @@ def matched_text(m):
     return said
 
 
+def commands_text(m):
+    """How the controller's commands were limited: a drone's clamped to [-1, 1] (or not); a ground robot's laws
+    saturate their own (docs/pioneer3dx.md), which the clamp flag does not describe."""
+    if not m.get("flies", True):
+        return "commands saturated by the law"
+    return "clamped" if m["commands_clamped"] else "unclamped"
+
+
 def write_markdown(bag_path, out_dir, sections, formation_lines=()):
     lines = ["# Flight report", "", "Bag: `%s`" % bag_path, ""] + list(formation_lines)
     for m, files in sections:
@@ -689,7 +704,7 @@ def write_markdown(bag_path, out_dir, sections, formation_lines=()):
                   "| max / final position error | %.4f m / %.4f m |" % (m["max_position_error_m"], m["final_position_error_m"]),
                   "| delay in force | %d samples (%.4f s) |" % (m["delay_samples"], m["delay_seconds"]),
                   "| controller | %s: %s (%s) |" % (m["controller"], ", ".join("%s = %g" % kv for kv in m["gains"].items()),
-                                                   "clamped" if m["commands_clamped"] else "unclamped"),
+                                                   commands_text(m)),
                   "| task recorded | %s |" % ("all %.1f s" % m["task_duration_s"] if m["task_complete"]
                                               else "**" + coverage_text(m) + "**"),
                   "| RMS tracking error | %.4f m |" % m["rms_tracking_error_m"],
@@ -697,7 +712,8 @@ def write_markdown(bag_path, out_dir, sections, formation_lines=()):
         if m.get("link"):
             k = m["link"]
             lines += ["| link: losses up / down | %d / %d packets |" % (k["uplink_losses"], k["downlink_losses"]),
-                      "| link: longest without a new state / drone hovering | %d / %d steps |" % (
+                      "| link: longest without a new state / %s | %d / %d steps |" % (
+                          "drone hovering" if m.get("flies", True) else "robot standing still",
                           k["longest_without_new_state_steps"], k["longest_drone_hover_steps"]),
                       "| link: max state / command age | %d / %d samples |" % (
                           k["max_state_age_samples"], k["max_command_age_samples"])]

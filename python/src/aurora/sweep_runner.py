@@ -193,7 +193,10 @@ def read_summary(out):
 
 def sweep(config, backend="auto", precision="double", out=None, threads=None, progress=True, as_frame=True,
           output="hdf5", rows="all", plots=False, chunk_size=None):
-    """Runs the sweep `config`; returns (results, summary). backend: auto,
+    """Runs the sweep `config` (a shipped sweep's name, a path, or a dict
+    of a sweep file's schema: without `controller` it flies pd_saturated,
+    without `task` the thesis's positioning task, as a sweep file does);
+    returns (results, summary). backend: auto,
     scalar, cpu or cuda; `precision` double or float (None: the sweep
     file's `precision`); `out` None computes in a temporary folder removed afterwards
     (give `out` to keep the results, plots and chunks, and to resume);

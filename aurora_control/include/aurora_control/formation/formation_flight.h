@@ -34,6 +34,12 @@ std::vector<long> robotDelays(const std::vector<long>& given, size_t robots, con
 // run's `ticks`, its history within the delay history; refused naming it.
 void refuseRobotLink(const LinkParams& link, long delay, int r, long ticks, double Ts);
 
+// Robot r's delay in a run of `ticks` steps: shorter than the run (the
+// delay's own refusal, which names no link), then its link's packets
+// (refuseRobotLink). The one rule of flight --formation and the formation
+// node (formation_crew.cpp), for every shape.
+void refuseRobotDelay(const LinkParams& link, long delay, int r, long ticks, double Ts);
+
 // The formation checks (docs/formation.md, "Formation checks") as a sweep
 // judges them, as the flight tool prints them: check 5 where the formation
 // has a ground robot.

@@ -146,7 +146,9 @@ class FlightSupervisor {
         if (!have_state) return finish(d, "wait for state");
         if (staleLand(d, state_age)) return d;
         if (state_age > cfg_.hover_after) {
-          return finish(d, "hover (no fresh state for " + seconds(cfg_.hover_after) + ")");
+          // All-zero commands: a drone hovers, a ground robot stands still (it does not fly).
+          return finish(d, std::string(cfg_.ground_robot ? "halt" : "hover") + " (no fresh state for " +
+                               seconds(cfg_.hover_after) + ")");
         }
         if (cfg_.box_enabled && outsideBox(X)) {
           char buf[96];
