@@ -5,6 +5,7 @@ name a page under docs/ and one of its headings (or a heading's leading
 words before " (" or ":"). A renamed heading or a page never written fails."""
 import os
 import re
+import shlex
 import subprocess
 import sys
 import unittest
@@ -46,6 +47,48 @@ def flattened(path):
     return " ".join(lines)
 
 
+# A passage of docs/ or the README whose figures a shipped command prints:
+#   <!-- printed: flight --formation triangle_ardrones --delay 6 6 6 ; flight ... -->
+#   ... figures ...
+#   <!-- /printed -->
+# Each command (paths relative to the repository) is run; every number
+# written with 3 or more decimals between the markers must be one the
+# commands print, rounded to the digits written (a table's 0.290 is a
+# printed 0.2904). A change that moves a number fails until the docs follow.
+PRINTED = re.compile(r"<!-- printed: (.+?) -->(.*?)<!-- /printed -->", re.S)
+FIGURE = re.compile(r"(?<![\w.])-?\d+\.(\d{3,})(?![\w.])")
+TOOLS = {"flight": ("aurora_control", "flight"), "replay": ("aurora_control", "replay")}
+
+
+def printed_numbers(root, commands):
+    """Every decimal number the commands (`TOOL args ; TOOL args`) print, from the repository's root."""
+    numbers = []
+    for command in commands.split(" ; "):
+        words = shlex.split(command)
+        pkg, tool = TOOLS[words[0]]
+        p = subprocess.run(["rosrun", pkg, tool] + words[1:], cwd=root, stdout=subprocess.PIPE,
+                           stderr=subprocess.STDOUT, universal_newlines=True)
+        if p.returncode != 0:
+            raise AssertionError("'%s' failed: %s" % (command, p.stdout))
+        numbers += re.findall(r"-?\d+\.\d+", p.stdout)
+    return numbers
+
+
+def unprinted_figures(root, path):
+    """(passage's commands, figure) for each figure of `path` that its commands do not print."""
+    missing, passages = [], 0
+    for m in PRINTED.finditer(open(path).read()):
+        passages += 1
+        printed = printed_numbers(root, m.group(1))
+        figures = [(f.group(0), len(f.group(1))) for f in FIGURE.finditer(m.group(2))]
+        if not figures:
+            missing.append((m.group(1), "no figure between its markers"))
+        for text, digits in figures:
+            if not any("%.*f" % (digits, float(n)) == text for n in printed if len(n.split(".")[1]) >= digits):
+                missing.append((m.group(1), text))
+    return missing, passages
+
+
 def sources(root):
     for d, dirs, files in os.walk(root):
         dirs[:] = [x for x in dirs if not x.startswith(".") and x not in ("build", "out")]
@@ -55,6 +98,21 @@ def sources(root):
 
 
 class DocsCitationsTest(unittest.TestCase):
+    def test_every_printed_figure_is_what_its_command_prints(self):
+        """Issue 51 (11): figures of docs/formation.md and docs/predictor.md had drifted from what the shipped
+        commands print. Every passage between printed markers is checked against its commands' output."""
+        root = repo_root()
+        if not os.path.isdir(os.path.join(root, "docs")):
+            self.skipTest("no source tree beside %s (an install space)" % root)
+        problems, passages = [], 0
+        pages = [os.path.join(root, "docs", f) for f in sorted(os.listdir(os.path.join(root, "docs"))) if f.endswith(".md")]
+        for path in pages + [os.path.join(root, "README.md")]:
+            missing, n = unprinted_figures(root, path)
+            passages += n
+            problems += ["%s: %s not printed by '%s'" % (os.path.relpath(path, root), f, c) for c, f in missing]
+        self.assertGreaterEqual(passages, 7, "the printed markers of docs/formation.md and docs/predictor.md")
+        self.assertEqual(problems, [], "\n".join(problems))
+
     def test_the_lap_2_table_is_what_flight_prints(self):
         """Issue 31: all 12 cells differed from flight's output (the table of docs/simulation.md)."""
         root = repo_root()

@@ -121,9 +121,9 @@ inline void refuseFormationPredictor(const YamlReader& r, const std::string& key
   const PredictorFile p = readControllerPredictor(file);
   if (p.form == PredictorForm::kOff) return;
   r.fail(key, "= '" + file + "' asks for the state predictor ('predictor.form' = " + predictorFormName(p.form) +
-                  "): formation robots fly their law on the delayed state, without a predictor (docs/predictor.md, "
-                  "\"Not yet\"); accepted a controller file without one (controllers/underactuated.yaml) or with "
-                  "'predictor.form: off'");
+                  "): formation robots fly their law on the delayed state, without a predictor "
+                  "(docs/predictor.md, \"Not yet\"); accepted a controller file without one "
+                  "(controllers/underactuated.yaml) or with 'predictor.form: off'");
 }
 
 inline ControllerSettings controllerAt(const YamlReader& r, const YAML::Node& c, const std::string& key,
