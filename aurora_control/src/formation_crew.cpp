@@ -166,7 +166,8 @@ std::unique_ptr<FormationCrew> lineCrew(const CrewRequest& q) {
       formationTicks(run.reference.duration, Ts)));
 }
 
-// The UAV-UGV line's robots: robot 1 the Pioneer (pioneer1), robot 2 the drone (ardrone2).
+// The UAV-UGV line's robots: robot 1 the Pioneer, robot 2 the drone, in
+// their file's namespaces (pioneer1, ardrone2 unless it names others).
 std::unique_ptr<FormationCrew> uavUgvCrew(const CrewRequest& q) {
   UavUgvLineSetup setup = readUavUgvLineFile(q.file, q.config_dir);
   UavUgvRun run = uavUgvRun(setup);
@@ -175,10 +176,11 @@ std::unique_ptr<FormationCrew> uavUgvCrew(const CrewRequest& q) {
   });
   return std::unique_ptr<FormationCrew>(new CrewOf<UavUgvShape, LawSettings<UavUgvRobots>>(
       run, LawSettings<UavUgvRobots>(), "uav_ugv_line", "without integration; pioneer_dynamic and underactuated",
-      {"pioneer1", "ardrone2"}, namedVehicleFiles(q, 2), setup.ticks()));
+      {setup.name_space[0], setup.name_space[1]}, namedVehicleFiles(q, 2), setup.ticks()));
 }
 
-// The triangle's three AR.Drones (ardrone1 .. ardrone3); kinematic robots
+// The triangle's three AR.Drones (robots.namespaces; ardrone1 .. ardrone3
+// unless the file names others); kinematic robots
 // (the file names no vehicle) have no vehicle to simulate or drive.
 std::unique_ptr<FormationCrew> triangleCrew(const CrewRequest& q) {
   const TriangleSetup setup = readTriangleFile(q.file, q.config_dir);
@@ -192,7 +194,7 @@ std::unique_ptr<FormationCrew> triangleCrew(const CrewRequest& q) {
   requestedDelays(q, 3, setup.drone.Ts, steps, [&](int r) -> FormationDrone<double>& { return run.drone[r]; });
   return std::unique_ptr<FormationCrew>(new CrewOf<Triangle, ControllerSettings>(
       run, flyingLaw(LawType::kUnderactuated), "triangle",
-      std::string(triangleLawName(setup.law)) + ", drones: underactuated", {"ardrone1", "ardrone2", "ardrone3"},
+      std::string(triangleLawName(setup.law)) + ", drones: underactuated", {setup.name_space[0], setup.name_space[1], setup.name_space[2]},
       namedVehicleFiles(q, 3), steps));
 }
 

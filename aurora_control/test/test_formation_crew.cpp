@@ -143,6 +143,21 @@ TEST(FormationCrew, TheTrianglesTickIsTheRunners) {
   EXPECT_NE(runner[449].U[2][0], 0.0);
 }
 
+// Issue 51: the UAV-UGV line and the triangle fly in the namespaces their files name (a lab whose
+// drivers run as bebop1 .. bebop3), the shipped files' defaults otherwise.
+TEST(FormationCrew, TheRobotsFlyInTheirFilesNamespaces) {
+  CrewRequest q = request("triangle_ardrones", {});
+  q.file = std::string(AURORA_TEST_CONFIG_DIR) + "/triangle_bebops.yaml";
+  auto crew = loadFormationCrew(q);
+  EXPECT_EQ(crew->robot(0).name_space, "bebop1");
+  EXPECT_EQ(crew->robot(2).name_space, "bebop3");
+  q.file = std::string(AURORA_TEST_CONFIG_DIR) + "/uav_ugv_named.yaml";
+  crew = loadFormationCrew(q);
+  EXPECT_EQ(crew->robot(0).name_space, "p3dx");
+  EXPECT_EQ(crew->robot(1).name_space, "drone7");
+  EXPECT_EQ(loadFormationCrew(request("line_pioneer_ardrone", {}))->robot(0).name_space, "pioneer1");
+}
+
 TEST(FormationCrew, WhatTheRosLoopCannotFlyIsRefusedNamingTheKey) {
   EXPECT_NE(refusal(request("triangle_kinematic", {})).find("its robots are kinematic"), std::string::npos);
   const std::string three = refusal(request("line_pioneer_ardrone", {-1, -1, 4}));

@@ -305,6 +305,14 @@ TEST(Triangle, ABadFileIsRefusedNamingTheKey) {
   e = refusalOfEdited("kinematic", "[-1.0, 0.0, 0.0], [0.0, 1.0, 0.0]]", "[-1.0, 1.0, 0.0], [-1.0, -1.0, 0.0]]");
   EXPECT_NE(e.find("'formation.robots.starts' puts robot 1's median m = 2 p1 - p2 - p3 along x: phi is 0 / 0"),
             std::string::npos) << e;
+  // Issue 51: the robots' namespaces: three of their own, each a ROS name.
+  e = refusalOfEdited("ardrones", "    starts:", "    namespaces: [bebop1, bebop2, bebop1]\n    starts:");
+  EXPECT_NE(e.find("'formation.robots.namespaces' names 'bebop1' for robots 1 and 3: accepted a namespace of its own"),
+            std::string::npos) << e;
+  e = refusalOfEdited("ardrones", "    starts:", "    namespaces: [bebop1, bebop2]\n    starts:");
+  EXPECT_NE(e.find("'formation.robots.namespaces' must list 3 namespaces, one per robot"), std::string::npos) << e;
+  e = refusalOfEdited("ardrones", "    starts:", "    namespaces: [bebop1, bebop2, 3drone]\n    starts:");
+  EXPECT_NE(e.find("'formation.robots.namespaces[2]' = '3drone' is not a namespace"), std::string::npos) << e;
   // Issue 51: the start check, the duration rule and the predictor refusal every shape shares.
   e = refusalOfEdited("ardrones", "[0.0, 1.0, 0.75]]", "[0.0, 1.0, -1.0]]");
   EXPECT_NE(e.find("'formation.robots.starts[2]' = [0, 1, -1] has z = -1 m, below the ground: accepted heights [0, 100] m"),

@@ -198,6 +198,9 @@ TEST(UavUgvLine, ABadFileIsRefusedNamingTheKey) {
   e = refusalOfEdited("start: [0.0, 0.0, 0.75]", "start: [0.0, 0.0, -1.0]");
   EXPECT_NE(e.find("'formation.robots[1].start' = [0, 0, -1] has z = -1 m, below the ground: accepted heights [0, 100] m"),
             std::string::npos) << e;
+  e = refusalOfEdited("    - vehicle: vehicles/ardrone2.yaml", "    - namespace: bebop2\n      vehicle: vehicles/ardrone2.yaml");
+  EXPECT_NE(e.find("'formation.robots[0].namespace' is missing: name both robots' namespaces or neither"),
+            std::string::npos) << e;
   e = refusalOfEdited("duration: 130", "duration: 5");
   EXPECT_NE(e.find("'formation.duration' = 5 s is refused: the formation checks judge a flight from 10 s on"),
             std::string::npos) << e;

@@ -8,6 +8,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <cctype>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -168,6 +169,28 @@ inline FormationDroneFile readDrone(const YamlReader& r, const YAML::Node& n, co
 
 inline std::string pointText(const double p[3]) {
   return "[" + YamlReader::fmt(p[0]) + ", " + YamlReader::fmt(p[1]) + ", " + YamlReader::fmt(p[2]) + "]";
+}
+
+// A robot's ROS namespace at `key` (a name such as ardrone1 or bebop2: a
+// letter, then letters, digits and '_'); the drivers' topics are under it.
+inline std::string namespaceAt(const YamlReader& r, const YAML::Node& n, const std::string& key) {
+  const std::string name = r.text(n, key);
+  bool ok = !name.empty() && std::isalpha(static_cast<unsigned char>(name[0]));
+  for (char c : name) ok = ok && (std::isalnum(static_cast<unsigned char>(c)) || c == '_');
+  if (!ok) r.fail(key, "= '" + name + "' is not a namespace: accepted a letter, then letters, digits or '_' (ardrone1, bebop2)");
+  return name;
+}
+
+// Every shape's robots in namespaces of their own (their drivers' topics).
+inline void refuseSharedNamespaces(const YamlReader& r, const std::string& key, const std::vector<std::string>& names) {
+  for (size_t i = 0; i < names.size(); ++i) {
+    for (size_t j = 0; j < i; ++j) {
+      if (names[i] == names[j]) {
+        r.fail(key, "names '" + names[i] + "' for robots " + std::to_string(j + 1) + " and " + std::to_string(i + 1) +
+                        ": accepted a namespace of its own for each robot");
+      }
+    }
+  }
 }
 
 // The highest start a formation file takes [m] (the drones' waypoint

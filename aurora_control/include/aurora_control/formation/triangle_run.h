@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "aurora_control/formation/formation_runner.h"
 #include "aurora_control/formation/kinematic_robot.h"
@@ -33,6 +34,7 @@ struct TriangleSetup {
   long layer_ticks = 1, drone_ticks = 1;  // the base tick's divisors: period / tick, Ts / tick
   long delay[3] = {0, 0, 0};  // each robot's feedback delay [drone steps; kinematic robots: layer periods]
   LinkParams link[3];         // each drone's link (docs/links.md; ideal unless the file gives one)
+  std::string name_space[3] = {"ardrone1", "ardrone2", "ardrone3"};  // ROS namespaces (robots.namespaces)
   long periods() const { return std::lround(std::ceil(duration / period - 1e-9)); }
 };
 

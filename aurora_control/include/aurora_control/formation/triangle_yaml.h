@@ -10,6 +10,7 @@
 //     reference: carrousel        # AuRoRA's Carrossel (the one so far)
 //     robots:
 //       starts: [[x, y, z], [x, y, z], [x, y, z]]   # m
+//       namespaces: [ardrone1, ardrone2, ardrone3]   # optional: the robots' ROS namespaces (these by default)
 //       vehicle: vehicles/ardrone2.yaml             # absent: kinematic robots (at their references)
 //       controller: controllers/underactuated.yaml  # or an underactuated mapping
 //       links: [links/A.yaml, links/B.yaml, links/C.yaml]   # optional, flying robots: one per drone
@@ -106,7 +107,13 @@ inline void readLinks(const YamlReader& r, const YAML::Node& n, const std::strin
 
 inline void readRobots(const YamlReader& r, const YAML::Node& n, const std::string& config_dir, TriangleSetup& s) {
   const std::string key = "formation.robots";
-  r.onlyKeys(n, key, {"starts", "vehicle", "controller", "links"});
+  r.onlyKeys(n, key, {"starts", "namespaces", "vehicle", "controller", "links"});
+  if (n["namespaces"]) {
+    const std::string at = r.key(key, "namespaces");
+    if (!n["namespaces"].IsSequence() || n["namespaces"].size() != 3) r.fail(at, "must list 3 namespaces, one per robot");
+    for (int d = 0; d < 3; ++d) s.name_space[d] = formation_detail::namespaceAt(r, n["namespaces"][d], at + "[" + std::to_string(d) + "]");
+    formation_detail::refuseSharedNamespaces(r, at, {s.name_space[0], s.name_space[1], s.name_space[2]});
+  }
   const YAML::Node starts = r.require(n, key, "starts", "three [x, y, z] in m");
   if (!starts.IsSequence() || starts.size() != 3) r.fail(r.key(key, "starts"), "must list 3 robots' [x, y, z] in m");
   for (int d = 0; d < 3; ++d) {

@@ -10,6 +10,7 @@
 #pragma once
 
 #include <cmath>
+#include <string>
 
 #include "aurora_control/formation/formation_runner.h"
 #include "aurora_control/formation/uav_ugv_line.h"
@@ -32,6 +33,7 @@ struct UavUgvLineSetup {
   long delay[2] = {0, 0};                // [ticks] each robot's feedback delay (Pioneer, drone)
   LinkParams link[2];                    // each robot's link (docs/links.md; ideal unless its file gives one)
   double duration = 130.0;               // [s]: ticks k = 0 .. round(duration / tick) - 1
+  std::string name_space[2] = {"pioneer1", "ardrone2"};  // each robot's ROS namespace (robots[i].namespace)
   long ticks() const { return std::lround(duration / tick); }
 };
 

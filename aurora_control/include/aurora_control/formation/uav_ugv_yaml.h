@@ -9,7 +9,8 @@
 //     robots:                     # robot 1 the Pioneer (the reference), robot 2 the drone
 //       - {vehicle: vehicles/pioneer3dx.yaml, kinematic_model: false, controller: {...}, start: [x, y, 0]}
 //       - {vehicle: vehicles/ardrone2.yaml, controller: {...}, start: [x, y, z]}
-//     (each robot may add `link: links/NAME.yaml`, its link: docs/links.md)
+//     (each robot may add `link: links/NAME.yaml`, its link: docs/links.md; and
+//     both or neither `namespace: NAME`, their ROS namespaces: pioneer1, ardrone2)
 //
 // Unknown keys, another robot count, another vehicle or law for a robot,
 // a ground robot off the floor, a drone below it: refused naming the key.
@@ -56,7 +57,8 @@ inline void readRobotLink(const YamlReader& r, const YAML::Node& n, const std::s
 
 inline void readPioneer(const YamlReader& r, const YAML::Node& n, const std::string& key,
                         const std::string& config_dir, UavUgvLineSetup& s) {
-  r.onlyKeys(n, key, {"vehicle", "kinematic_model", "controller", "start", "link"});
+  r.onlyKeys(n, key, {"namespace", "vehicle", "kinematic_model", "controller", "start", "link"});
+  if (n["namespace"]) s.name_space[0] = formation_detail::namespaceAt(r, n["namespace"], r.key(key, "namespace"));
   const std::string file = formation_detail::inConfig(r.text(r.require(n, key, "vehicle", "vehicles/pioneer3dx.yaml"),
                                                              r.key(key, "vehicle")), config_dir);
   s.pioneer = aurora_sim::loadVehicleFile<aurora_sim::Pioneer3dx>(file, "the UAV-UGV line's robot 1");
@@ -68,7 +70,8 @@ inline void readPioneer(const YamlReader& r, const YAML::Node& n, const std::str
 
 inline void readDrone(const YamlReader& r, const YAML::Node& n, const std::string& key, const std::string& config_dir,
                       UavUgvLineSetup& s) {
-  r.onlyKeys(n, key, {"vehicle", "controller", "start", "link"});
+  r.onlyKeys(n, key, {"namespace", "vehicle", "controller", "start", "link"});
+  if (n["namespace"]) s.name_space[1] = formation_detail::namespaceAt(r, n["namespace"], r.key(key, "namespace"));
   const std::string file = formation_detail::inConfig(r.text(r.require(n, key, "vehicle", "vehicles/ardrone2.yaml"),
                                                              r.key(key, "vehicle")), config_dir);
   s.drone = aurora_sim::loadVehicleFile<LawVehicle>(file, "the UAV-UGV line's robot 2");
@@ -103,6 +106,12 @@ inline UavUgvLineSetup readUavUgvLineFile(const std::string& path, const std::st
   }
   readPioneer(r, robots[0], "formation.robots[0]", config_dir, s);
   readDrone(r, robots[1], "formation.robots[1]", config_dir, s);
+  if (bool(robots[0]["namespace"]) != bool(robots[1]["namespace"])) {
+    // Both or neither: formation.launch places each robot's nodes by the file's names.
+    r.fail(std::string("formation.robots[") + (robots[0]["namespace"] ? "1" : "0") + "].namespace",
+           "is missing: name both robots' namespaces or neither (pioneer1, ardrone2)");
+  }
+  formation_detail::refuseSharedNamespaces(r, "formation.robots[1].namespace", {s.name_space[0], s.name_space[1]});
   double gap = 0.0;
   for (int i = 0; i < 3; ++i) gap += (s.drone_start[i] - s.pioneer_start[i]) * (s.drone_start[i] - s.pioneer_start[i]);
   if (!(gap > 0.0)) {
