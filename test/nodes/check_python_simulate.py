@@ -241,6 +241,26 @@ class ShapedFormationTest(unittest.TestCase):
         self.assertIn("'r1_u' is not a column", str(e.exception))
 
 
+class ShortFormationReportTest(unittest.TestCase):
+    def test_a_bag_shorter_than_the_settle_time_is_said_to_be(self):
+        """Issue 51 (2): a formation bag that ends before the checks' 10 s reported every RMS as 0."""
+        from aurora import formation_report
+        s = {"k": [0, 1], "t": [0.0, 5.0], "Qtil": [[0.1] * 6, [0.2] * 6], "e_position": [0.1, 0.2],
+             "e_shape": [0.1, 0.2], "distance": [1.0, 1.1], "missing": [], "d1": {"track": [0.1, 0.2]}}
+        m = formation_report.metrics_of(["d1"], s, 5.0)
+        self.assertEqual(m["ticks_judged"], 0)
+        self.assertTrue(all(v is None for v in m["rms_after_settle"].values()), m)
+        self.assertIsNone(m["max_position_error_m"])
+        self.assertIsNone(m["iae_shape_m_s"])
+        text = "\n".join(formation_report.markdown(dict(m, shape="line"), []))
+        self.assertIn("none: the bag ends at 5.00 s, before the 10 s the errors are judged from", text)
+        self.assertNotIn("0.0000", text)
+        s["t"] = [0.0, 12.0]
+        judged = formation_report.metrics_of(["d1"], s, 12.0)
+        self.assertEqual(judged["ticks_judged"], 1)
+        self.assertAlmostEqual(judged["rms_after_settle"]["rho_m"], 0.2)
+
+
 class FormationFiguresTest(unittest.TestCase):
     def test_the_figures_show_what_docs_say(self):
         from aurora import formation_figures
@@ -259,7 +279,8 @@ class FormationFiguresTest(unittest.TestCase):
         self.assertGreater(p.metrics["rms_rho"], 10 * ik.metrics["rms_rho"])
 
 
-class PythonSimulateTests(SimulateTest, SimulateFormationTest, ShapedFormationTest, FormationFiguresTest):
+class PythonSimulateTests(SimulateTest, SimulateFormationTest, ShapedFormationTest, ShortFormationReportTest,
+                          FormationFiguresTest):
     """Both, for rostest (which runs one TestCase class)."""
 
 

@@ -153,17 +153,21 @@ def metrics_of(drones, s, ts, names=VARIABLES):
     judged = [i for i, t in enumerate(s["t"]) if t >= SETTLE_TIME]
     err = lambda j: [s["Qtil"][i][j] for i in judged]  # noqa: E731
     horizontal = [math.hypot(a, b) for a, b in zip(err(0), err(1))]
-    after = {"%s_%s" % (n, unit_of(n)): rms(err(j)) for j, n in enumerate(names) if j >= 3}
-    after.update({"position_xy_m": rms(horizontal), "height_m": rms(err(2))})
+    # A bag that ends before SETTLE_TIME has nothing judged: its figures are None (null), not 0.
+    measured = (lambda v: v) if judged else (lambda v: None)  # noqa: E731
+    after = {"%s_%s" % (n, unit_of(n)): measured(rms(err(j))) for j, n in enumerate(names) if j >= 3}
+    after.update({"position_xy_m": measured(rms(horizontal)), "height_m": measured(rms(err(2)))})
     m = {"ticks": len(s["t"]), "first_tick": s["k"][0] if s["k"] else None, "last_tick": s["k"][-1] if s["k"] else None,
          "ticks_missing": s["missing"],
          "variables": list(names),
          "rms_after_settle": after,
          "settle_time_s": SETTLE_TIME,
-         "max_position_error_m": max([s["e_position"][i] for i in judged], default=0.0),
-         "max_shape_error_m": max([s["e_shape"][i] for i in judged], default=0.0),
-         "iae_position_m_s": sum(s["e_position"][i] for i in judged) * ts,
-         "iae_shape_m_s": sum(s["e_shape"][i] for i in judged) * ts,
+         "ticks_judged": len(judged),
+         "end_s": s["t"][-1] if s["t"] else 0.0,
+         "max_position_error_m": measured(max([s["e_position"][i] for i in judged], default=0.0)),
+         "max_shape_error_m": measured(max([s["e_shape"][i] for i in judged], default=0.0)),
+         "iae_position_m_s": measured(sum(s["e_position"][i] for i in judged) * ts),
+         "iae_shape_m_s": measured(sum(s["e_shape"][i] for i in judged) * ts),
          "smallest_distance_m": min(s["distance"]) if s["distance"] else None,
          "smallest_distance_at_s": s["t"][s["distance"].index(min(s["distance"]))] if s["distance"] else None,
          "drones": {}}
@@ -286,22 +290,38 @@ def missing_text(m):
             "state, and every figure, RMS and IAE here skips them" % (len(missing), missing[0]))
 
 
+def unjudged_text(m):
+    """What the report says of a bag that ends before the checks' settle time ("" if it does not)."""
+    if m.get("ticks_judged", 1):
+        return ""
+    return "none: the bag ends at %.2f s, before the %.0f s the errors are judged from" % (m["end_s"], m["settle_time_s"])
+
+
+def shape_rms_text(m):
+    """The shape variables' RMS after the settle time ("rho 0.0039 m, ..."), or why there is none."""
+    return unjudged_text(m) or ", ".join("%s %.4f %s" % (k.rsplit("_", 1)[0], v, k.rsplit("_", 1)[1])
+                                         for k, v in m["rms_after_settle"].items() if k not in ("position_xy_m", "height_m"))
+
+
+def judged_lines(m):
+    """The markdown rows of the errors judged after the settle time."""
+    r, after = m["rms_after_settle"], m["settle_time_s"]
+    lines = ["| RMS after %.0f s: %s | %s |" % (after, ", ".join(m["variables"][3:]), shape_rms_text(m))]
+    if unjudged_text(m):
+        return lines
+    return lines + [
+        "| RMS after %.0f s: position (x, y) / height | %.4f m / %.4f m |" % (after, r["position_xy_m"], r["height_m"]),
+        "| largest position / shape error after %.0f s | %.4f m / %.4f m |" % (
+            after, m["max_position_error_m"], m["max_shape_error_m"]),
+        "| IAE position / shape after %.0f s | %.4f / %.4f m s |" % (after, m["iae_position_m_s"], m["iae_shape_m_s"])]
+
+
 def markdown(m, files):
-    r = m["rms_after_settle"]
     missing = missing_text(m)
-    shape = ["%s %.4f %s" % (k.rsplit("_", 1)[0], v, k.rsplit("_", 1)[1]) for k, v in r.items()
-             if k not in ("position_xy_m", "height_m")]
     lines = ["## Formation", "",
              "| metric | value |", "|---|---|",
              "| ticks | %d (steps %d to %d%s) |" % (m["ticks"], m["first_tick"], m["last_tick"],
-                                                  ("; " + missing) if missing else ""),
-             "| RMS after %.0f s: %s | %s |" % (m["settle_time_s"], ", ".join(m["variables"][3:]), ", ".join(shape)),
-             "| RMS after %.0f s: position (x, y) / height | %.4f m / %.4f m |" % (
-                 m["settle_time_s"], r["position_xy_m"], r["height_m"]),
-             "| largest position / shape error after %.0f s | %.4f m / %.4f m |" % (
-                 m["settle_time_s"], m["max_position_error_m"], m["max_shape_error_m"]),
-             "| IAE position / shape after %.0f s | %.4f / %.4f m s |" % (
-                 m["settle_time_s"], m["iae_position_m_s"], m["iae_shape_m_s"]),
+                                                  ("; " + missing) if missing else "")] + judged_lines(m) + [
              "| smallest distance between two robots | %.4f m at %.2f s |" % (
                  m["smallest_distance_m"], m["smallest_distance_at_s"])]
     for d, v in m["drones"].items():

@@ -762,11 +762,10 @@ def main(argv):
     if formation_part:
         all_metrics["formation"] = formation_part[0]
         f = formation_part[0]
-        shape = ", ".join("%s %.4f %s" % (k.rsplit("_", 1)[0], v, k.rsplit("_", 1)[1])
-                          for k, v in f["rms_after_settle"].items() if k not in ("position_xy_m", "height_m"))
-        print("report: formation (%s): %d ticks, RMS after %.0f s %s, position %.4f m; smallest distance %.4f m"
-              % (f["shape"], f["ticks"], formation_report.SETTLE_TIME, shape, f["rms_after_settle"]["position_xy_m"],
-                 f["smallest_distance_m"]), file=sys.stderr)
+        position = f["rms_after_settle"]["position_xy_m"]
+        print("report: formation (%s): %d ticks, RMS after %.0f s %s%s; smallest distance %.4f m"
+              % (f["shape"], f["ticks"], formation_report.SETTLE_TIME, formation_report.shape_rms_text(f),
+                 "" if position is None else ", position %.4f m" % position, f["smallest_distance_m"]), file=sys.stderr)
         if f["ticks_missing"]:
             print("report: formation: warning: %s" % formation_report.missing_text(f), file=sys.stderr)
     for ns, d in data.items():
