@@ -296,9 +296,10 @@ void sayWhatStaysOnInterrupt(const Options& opt, int argc, char** argv) {
 // "1,344 combinations", or with repeats "21,504 runs (1,344 combinations x
 // 16 repeats)", as the docs count them.
 std::string runsText(const SweepSpec& spec) {
-  if (spec.repeats <= 1) return counted(spec.size(), "combination", "combinations");
-  return counted(spec.size(), "run", "runs") + " (" + counted(spec.size() / spec.repeats, "combination", "combinations") +
-         " x " + std::to_string(spec.repeats) + " repeats)";
+  const std::string runs = runCount(spec.size(), spec.repeats);
+  if (spec.repeats <= 1) return runs;
+  return runs + " (" + counted(spec.size() / spec.repeats, "combination", "combinations") + " x " +
+         std::to_string(spec.repeats) + " repeats)";
 }
 
 int runSweep(int argc, char** argv, const Options& opt, MpiRanks* mpi) {

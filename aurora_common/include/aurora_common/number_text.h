@@ -9,7 +9,6 @@
 #pragma once
 
 #include <cstdio>
-#include <string>
 
 // Header-only fmt in every includer: nothing to link, one mode everywhere.
 #ifndef FMT_HEADER_ONLY
@@ -19,11 +18,8 @@
 
 namespace aurora_common {
 
-// The shortest text of v that reads back to v ("nan", "inf", "-inf" as fmt writes them).
-inline std::string shortestText(double v) { return fmt::format("{}", v); }
-inline std::string shortestText(float v) { return fmt::format("{}", v); }
-
-// Writes `separator` then v's shortest text to f.
+// Writes `separator` then the shortest text of v that reads back to v to f
+// ("nan", "inf", "-inf" as fmt writes them).
 inline void writeNumber(std::FILE* f, double v, const char* separator = ",") {
   fmt::print(f, "{}{}", separator, v);
 }

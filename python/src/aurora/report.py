@@ -279,7 +279,8 @@ def analyse(ns, d):
     series["label"] = "%s (%s%s, %s; delay %d samples = %.3f s)" % (
         ns, law, "" if predictor == "off" else " with the %s predictor" % predictor, gains, last.delay_samples,
         last.delay_seconds)
-    series["flies"] = _core.vehicle_flies(getattr(last, "vehicle", "") or "ardrone2")
+    vehicle = getattr(last, "vehicle", "") or "ardrone2"
+    series["flies"] = _core.vehicle_flies(vehicle)
     segments = segment_metrics(series)
     metrics = {
         "namespace": ns,
@@ -297,7 +298,7 @@ def analyse(ns, d):
         "sample_time_s": ts,
         "kp": last.kp, "kd": last.kd, "commands_clamped": last.clamped,
         "controller": last.controller or "pd_saturated",
-        "vehicle": getattr(last, "vehicle", "") or "ardrone2",
+        "vehicle": vehicle,
         # A drone hovers on zero commands; a ground robot stands still, and its laws saturate
         # their own commands (the vehicle's sim profile, aurora._core.vehicle_flies).
         "flies": series["flies"],

@@ -308,6 +308,11 @@ inline void refuseShortFormation(double duration, const std::string& key) {
   const std::string refusal = shortFormationRefusal(duration, key);
   if (!refusal.empty()) throw ConfigError(refusal);
 }
+// The same, said with the reader's file (the UAV-UGV line's and the triangle's `formation.duration`).
+inline void refuseShortFormation(const YamlReader& r, double duration, const std::string& key) {
+  const std::string refusal = shortFormationRefusal(duration, key);
+  if (!refusal.empty()) r.failWith(refusal);
+}
 
 // Each drone's delay in force shorter than the run, as one drone's
 // (limits.h, delayShorterThanRun); `keys[d]` names where drone d's came from.

@@ -154,8 +154,7 @@ inline TriangleSetup readTriangleFile(const std::string& path, const std::string
   }
   s.period = r.numberIn(r.require(n, "formation", "period", "s"), "formation.period", 0.0, 10.0, "s", false);
   s.duration = r.numberIn(r.require(n, "formation", "duration", "s"), "formation.duration", 0.0, 3600.0, "s", false);
-  const std::string short_run = shortFormationRefusal(s.duration, "formation.duration");
-  if (!short_run.empty()) r.failWith(short_run);
+  refuseShortFormation(r, s.duration, "formation.duration");
   if (n["gains"]) formation_detail::readGains(r, n["gains"], "formation.gains", s.gains);
   const std::string reference = r.text(r.require(n, "formation", "reference", "carrousel"), "formation.reference");
   if (reference != "carrousel") r.fail("formation.reference", "= '" + reference + "' is unknown: accepted carrousel");

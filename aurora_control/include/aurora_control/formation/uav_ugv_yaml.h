@@ -92,8 +92,7 @@ inline UavUgvLineSetup readUavUgvLineFile(const std::string& path, const std::st
   UavUgvLine<double>::defaultGains(s.k1, s.k2);
   s.tick = r.numberIn(r.require(n, "formation", "tick", "s (AuRoRA's 1/30)"), "formation.tick", 0.0, 1.0, "s", false);
   s.duration = r.numberIn(r.require(n, "formation", "duration", "s"), "formation.duration", 0.0, 3600.0, "s", false);
-  const std::string short_run = shortFormationRefusal(s.duration, "formation.duration");
-  if (!short_run.empty()) r.failWith(short_run);
+  refuseShortFormation(r, s.duration, "formation.duration");
   if (n["gains"]) {
     FormationGains<double, 6> g;
     for (int i = 0; i < 6; ++i) g.k1[i] = s.k1[i], g.k2[i] = s.k2[i];
