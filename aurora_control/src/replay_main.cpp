@@ -364,16 +364,31 @@ struct BagStates {
   std::set<long> stale;      // steps its source marked stale, which the node ignored
 };
 
+// Where the controller's history began, when the bag holds its first cycle
+// (header.seq 0: roscpp numbers a publisher's messages from 0): the first of
+// the delay + 1 - pending states it held then (delay + 1 once the delay was
+// in force, all the delay rule reads). -1 when the bag starts later. With
+// record:=true the controller takes its first state once the recorder
+// listens to its control and cmd_vel, so the recorder's `state`
+// subscription may hold a few states more, or fewer, at the start.
+long historyStart(const aurora_msgs::Control& first) {
+  if (first.header.seq != 0) return -1;
+  const long held = static_cast<long>(first.delay_samples) + 1 - static_cast<long>(first.delay_pending);
+  return static_cast<long>(first.step) - held + 1;
+}
+
 // A state the recorder dropped (a loaded machine) is in the control message
 // of the cycle that used it: Control.state_used holds it whole (its step,
-// stamp and the vehicle's states). Steps between the first and the last
-// recorded state only.
+// stamp and the vehicle's states). Steps from the controller's first
+// (historyStart; the bag's first recorded state when unknown) to the last
+// recorded state.
 void recoverDroppedStates(const std::vector<aurora_msgs::Control>& controls, BagStates& states) {
-  if (states.by_step.empty()) return;
-  const long first = states.by_step.begin()->first, last = states.by_step.rbegin()->first;
+  if (states.by_step.empty() || controls.empty()) return;
+  const long start = historyStart(controls.front());
+  const long first = start >= 0 ? start : states.by_step.begin()->first, last = states.by_step.rbegin()->first;
   for (const aurora_msgs::Control& c : controls) {
     const long step = static_cast<long>(c.state_used.step);
-    if (step <= first || step >= last || states.by_step.count(step)) continue;
+    if (step < first || step >= last || states.by_step.count(step)) continue;
     states.by_step.emplace(step, sampleFromMsg(c.state_used));
     states.recovered.insert(step);
   }
@@ -533,9 +548,9 @@ void followPredictor(const Arguments& args, const aurora_msgs::Control& c, Core&
 }
 
 // Pushes the states the controller had received by cycle `c` (steps up to
-// c.step) into the core. The node received every step from the bag's first
-// on but those marked stale: its sources number their states one by one and
-// its queue holds 100. A step the bag lacks (the recorder dropped it, and
+// c.step) into the core. The node received every step from its first
+// (firstStateTaken) on but those marked stale: its sources number their
+// states one by one and its queue holds 100. A step the bag lacks (the recorder dropped it, and
 // every control message that used it) still takes its place in the history
 // and on the link, as it did in the node, with the state before it standing
 // in for it; it goes to `missing`.
@@ -554,6 +569,18 @@ void pushStatesUpTo(const aurora_msgs::Control& c, const BagStates& states, long
     core.push(stand_in);
     missing.insert(next_step);
   }
+}
+
+// The step of the first state the controller took: where its history
+// began (historyStart), else the bag's first state. A state recorded before
+// it the controller never had (on a loaded machine replay then put the
+// delay in force a few cycles early); one it had that the recorder missed
+// came back from the control messages (recoverDroppedStates).
+long firstStateTaken(const aurora_msgs::Control& first, const BagStates& states) {
+  const long start = historyStart(first);
+  const long from = start >= 0 ? start : states.by_step.begin()->first;
+  const auto it = states.by_step.lower_bound(from);  // a recorded state: the first pushed has no stand-in
+  return it == states.by_step.end() ? from : it->first;
 }
 
 struct ReplayCount {
@@ -664,7 +691,7 @@ int replayCycles(const Arguments& args, const std::string& ns, const BagStates& 
   ReplayCount n;
   std::set<long> missing;
   ControlOutput out{};
-  long next_step = states.by_step.begin()->first;
+  long next_step = firstStateTaken(controls.front(), states);
   for (const aurora_msgs::Control& c : controls) {
     n.read(c);
     pushStatesUpTo(c, states, next_step, *core, missing);

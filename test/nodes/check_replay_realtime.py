@@ -5,7 +5,14 @@ state once the recorder listens), so replay gives every command again
 (--expect-identical, over the flight's link file); the same bag cut to
 start late (its first seconds dropped, as a recorder started late would
 have it) is said to start late and still replays identical from the first
-cycle whose inputs it holds."""
+cycle whose inputs it holds; the same bag with states recorded before the
+controller took its first (the recorder listens to `state` a little before
+the controller sees it on `control`), or without the controller's first
+states (it listens a little after: on a loaded machine, a few states each
+way), replays identical too: replay starts the history where the
+controller's first cycle says it began, and takes the states the bag lacks
+from the control messages that used them."""
+import copy
 import os
 import sys
 import unittest
@@ -40,8 +47,10 @@ class ReplayRealtimeTest(unittest.TestCase):
         self.assertIn(" 0 differ, max |dU| = 0 ", log)
         self.assertNotIn("starts late", log)
         # The same bag from 2 s in: says so, and the cycles it can replay are identical.
-        late = bag[:-4] + "_late.bag"
+        late, early, after = bag[:-4] + "_late.bag", bag[:-4] + "_early.bag", bag[:-4] + "_after.bag"
         try:
+            self.check_states_before_the_controllers_first(bag, early, ns)
+            self.check_the_controllers_first_states_missing(bag, after, ns)
             with rosbag.Bag(bag) as b, rosbag.Bag(late, "w") as out:
                 start = b.get_start_time() + 2.0
                 for topic, msg, t in b.read_messages():
@@ -53,9 +62,49 @@ class ReplayRealtimeTest(unittest.TestCase):
             self.assertIn("replay: the bag starts late: the controller's first ", log)
             self.assertIn(" 0 differ, max |dU| = 0 ", log)
         finally:
-            for f in (bag, late):
+            for f in (bag, late, early, after):
                 if os.path.exists(f):
                     os.remove(f)
+
+
+    def check_states_before_the_controllers_first(self, bag, early, ns):
+        """Three states before the controller's first, as a recorder listening to `state` early records
+        them (copies of the first state, stepped and stamped back): replay leaves them out of the
+        controller's history (its first cycle says it held one state of the delay's), so the delay comes
+        into force at the recorded cycle and every command is identical (it came 3 cycles early)."""
+        with rosbag.Bag(bag) as b:
+            first = next(m for _, m, _ in b.read_messages(topics=[ns + "/state"]))
+            start = b.get_start_time()
+            with rosbag.Bag(early, "w") as out:
+                for back in (3, 2, 1):
+                    m = copy.deepcopy(first)
+                    m.step -= back
+                    m.header.stamp -= rospy.Duration(back / 30.0)
+                    out.write(ns + "/state", m, rospy.Time.from_sec(start - back / 30.0))
+                for topic, msg, t in b.read_messages():
+                    out.write(topic, msg, t)
+        rc, log = self.replay(early)
+        rospy.loginfo(log)
+        self.assertEqual(rc, 0, log)
+        self.assertIn(" 0 differ, max |dU| = 0 ", log)
+
+
+    def check_the_controllers_first_states_missing(self, bag, after, ns):
+        """The controller's first three states not in the bag (the recorder's `state` subscription came
+        after its `control` one: seen on a loaded machine, 5 cycles differed): replay takes them from the
+        control messages that used them, and every command is identical."""
+        with rosbag.Bag(bag) as b:
+            first = next(m for _, m, _ in b.read_messages(topics=[ns + "/control"]))
+            with rosbag.Bag(after, "w") as out:
+                for topic, msg, t in b.read_messages():
+                    if topic == ns + "/state" and msg.step < first.step + 3:
+                        continue
+                    out.write(topic, msg, t)
+        rc, log = self.replay(after)
+        rospy.loginfo(log)
+        self.assertEqual(rc, 0, log)
+        self.assertIn(" 0 differ, max |dU| = 0 ", log)
+        self.assertIn("were taken from the control messages that used them", log)
 
 
 if __name__ == "__main__":
