@@ -115,11 +115,13 @@ __global__ void sweepKernel(SimSetup<typename Law::Vehicle, T> setup, GridView g
 
 // A formation sweep's kernel, of any shape (the two-drone line, the UAV-UGV
 // line, the triangle): one formation per thread; its setup (the formation
-// file's run, a few kB) is read from device memory.
-template <class Law, template <typename> class Shape, typename T, int Capacity, bool Linked>
+// file's run, a few kB) is read from device memory; with its robots'
+// predictors when `Predicted` (the AR.Drones' formations).
+template <class Law, template <typename> class Shape, typename T, int Capacity, bool Linked, bool Predicted>
 __global__ void formationKernel(const FormationSetup<T, Shape, typename Law::Data>* setup, GridView grid, long first,
                                 long n, SimResult* out) {
-  formationThread<Law, T, Capacity, Linked>(*setup, grid, first, n, out, blockIdx.x, blockDim.x, threadIdx.x);
+  formationThread<Law, T, Capacity, Linked, Predicted>(*setup, grid, first, n, out, blockIdx.x, blockDim.x,
+                                                       threadIdx.x);
 }
 
 // Calls f(T(), capacity, linked) with the kernel's compile-time parameters
@@ -166,15 +168,15 @@ struct SweepStart {
  private:
   SimSetup<typename Law::Vehicle, T> setup_;
 };
-template <class Law, template <typename> class Shape, typename T, int Capacity, bool Linked>
+template <class Law, template <typename> class Shape, typename T, int Capacity, bool Linked, bool Predicted>
 struct FormationStart {
   using Setup = FormationSetup<T, Shape, typename Law::Data>;
-  static auto kernel() { return formationKernel<Law, Shape, T, Capacity, Linked>; }
+  static auto kernel() { return formationKernel<Law, Shape, T, Capacity, Linked, Predicted>; }
   explicit FormationStart(const SweepSpec& spec) : setup_(1) {
     spec.withFormation([&](const auto& run, auto) { upload(spec, run); });
   }
   void launch(unsigned blocks, int block, const GridView& grid, long first, long n, SimResult* out) const {
-    formationKernel<Law, Shape, T, Capacity, Linked><<<blocks, block>>>(setup_.get(), grid, first, n, out);
+    formationKernel<Law, Shape, T, Capacity, Linked, Predicted><<<blocks, block>>>(setup_.get(), grid, first, n, out);
   }
 
  private:
@@ -195,8 +197,8 @@ template <class Run>
 struct ShapeTemplateOf;
 template <typename T, template <typename> class Shape, class Data>
 struct ShapeTemplateOf<aurora_control::FormationRun<T, Shape<T>, Data>> {
-  template <class Law, typename U, int Capacity, bool Linked>
-  using Start = FormationStart<Law, Shape, U, Capacity, Linked>;
+  template <class Law, typename U, int Capacity, bool Linked, bool Predicted>
+  using Start = FormationStart<Law, Shape, U, Capacity, Linked, Predicted>;
 };
 
 // A kernel's start as a type, without preparing it.
@@ -215,7 +217,9 @@ void withKernel(const SweepSpec& spec, F&& f) {
     if (spec.formation()) {
       spec.withFormation([&](const auto& run, auto law) {
         using Shape = ShapeTemplateOf<typename std::decay<decltype(run)>::type>;
-        f(StartOf<typename Shape::template Start<decltype(law), T, kCapacity, kLinked>>());
+        withFormationPredictor(run, [&](auto predicted) {
+          f(StartOf<typename Shape::template Start<decltype(law), T, kCapacity, kLinked, decltype(predicted)::value>>());
+        });
       });
     } else if (spec.predicting()) {  // the AR.Drone's laws (cudaDelayProblem refuses the others)
       aurora_control::withLaw(spec.law, [&](auto law) { f(StartOf<SweepStart<decltype(law), T, kCapacity, kLinked, true>>()); });

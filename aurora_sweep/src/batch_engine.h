@@ -280,8 +280,12 @@ template <typename T, class Arch, class Law, template <typename> class Shape>
 void runFormationBatchWith(const SweepSpec& spec, const ShapeRun<double, Shape, typename Law::Data>& run, int capacity,
                            int threads, std::vector<SimResult>& out, Progress& progress) {
   const FormationSetup<T, Shape, typename Law::Data> setup = makeFormationSetup<T>(spec, run);
-  onRange(spec, threads, out, [&](const GridView& grid, long first, long total, std::atomic<long>& next) {
-    FormationBatch<T, Arch, Law, Shape>(setup, capacity, grid, first, total, out, next, progress).run();
+  withFormationPredictor(run, [&](auto predicted) {
+    onRange(spec, threads, out, [&](const GridView& grid, long first, long total, std::atomic<long>& next) {
+      FormationBatch<T, Arch, Law, Shape, decltype(predicted)::value>(setup, capacity, grid, first, total, out, next,
+                                                                      progress)
+          .run();
+    });
   });
 }
 

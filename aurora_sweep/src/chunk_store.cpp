@@ -144,6 +144,19 @@ void addOtherVehicle(Crc& crc, const SweepSpec& spec) {
 
 namespace {
 
+// The formation's robots' predictors (only theirs that fly one: the hashes
+// of formations without stay): form, horizon and model values.
+void addFormationPredictors(Crc& crc, const SweepSpec& spec) {
+  spec.withFormation([&](const auto& run, auto) {
+    for (int d = 0; d < spec.layout().robots; ++d) {
+      const auto& p = run.drone[d].predictor;
+      if (!p.on()) continue;
+      crc.add(d), crc.add(std::string(aurora_control::predictorFormName(p.form))), crc.add(p.path.horizon);
+      crc.add(p.model);
+    }
+  });
+}
+
 // The predictor's form and its model's file as it is (its values).
 void addPredictor(Crc& crc, const SweepSpec& spec) {
   crc.add(std::string(aurora_control::predictorFormName(spec.predictor)));
@@ -186,6 +199,7 @@ uint32_t definitionHash(const SweepSpec& spec) {
       if (spec.given(id)) crc.add(id), crc.add(spec.fixed[id]);
     }
     if (spec.shape == SweepShape::kTriangle) crc.add(spec.fixed[kParamFormationLaw]);
+    addFormationPredictors(crc, spec);
     for (int id = kParamFirstRobotGain; id < kParamCount; ++id) {  // the robots' gains it gives (older hashes stay)
       if (spec.given(id)) crc.add(id), crc.add(spec.fixed[id]);
     }

@@ -7,7 +7,9 @@
 // (formation_runner.h's formationTick and formation_checks.h on batches);
 // each drone's delayed state comes from receiveState (closed_loop.h) over
 // the lane policies of lane_history.h: its LaneHistory and the delay rule
-// on integer lanes or its lanes' link models. Included by batch_engine.h only.
+// on integer lanes or its lanes' link models; with `Predicted`, each drone's
+// LanePredictor (lane_predictor.h) over its whole-state history, as
+// formation_runner.h's runPredictedFormationOver. Included by batch_engine.h only.
 #pragma once
 
 #include <memory>
@@ -19,7 +21,8 @@ namespace aurora_sweep {
 
 namespace {
 
-template <typename T, class Arch, class Law, template <typename> class Shape = aurora_control::LineFormation>
+template <typename T, class Arch, class Law, template <typename> class Shape = aurora_control::LineFormation,
+          bool Predicted = false>
 class FormationBatch {
  public:
   using LaneOps = Lanes<T, Arch>;
@@ -33,8 +36,10 @@ class FormationBatch {
   using Data = typename Law::Data;
   using Vehicle = typename Law::Vehicle;
   static constexpr int S = Vehicle::kStates;
-  using History = LaneHistory<Law, T, Arch>;
-  using Links = LaneModelLinks<Law, T, Arch>;
+  using Reader = typename std::conditional<Predicted, aurora_control::WholeStateReader<Vehicle>, Law>::type;
+  using History = LaneHistory<Reader, T, Arch>;
+  using Links = LaneModelLinks<Reader, T, Arch>;
+  using Predictor = LanePredictor<Vehicle, T, Arch>;
 
   // `capacity`: each drone's history's (limits.h, historyCapacity).
   FormationBatch(const FormationSetup<T, Shape, Data>& setup, int capacity, const GridView& grid, long first,
@@ -48,6 +53,13 @@ class FormationBatch {
       if (!setup_.ideal_link) {
         links_[d].reset(new Links(setup_.run.drone[d].link, double(setup_.run.drone[d].plant.Ts), history_[d]));
       }
+    }
+    if (!Predicted) return;
+    predictors_.reserve(D);
+    for (int d = 0; d < D; ++d) {
+      const auto& p = setup_.run.drone[d].predictor;
+      predictors_.emplace_back(p.form, p.model, vehicleStart<Vehicle, T>(p.model), setup_.run.clamp.at_drone,
+                               2 * long(capacity));
     }
   }
 
@@ -76,6 +88,7 @@ class FormationBatch {
         LaneOps::setFields(run.drone[d].gains, l, lane.drone[d].gains);  // the robot gains the sweep gives
         LaneOps::set(ideal_[d].delay, l, static_cast<Int>(lane.drone[d].delay));
         history_[d].startLane(l);
+        if (Predicted) predictors_[d].startLane(l, lane.drone[d].link.downlink.delay);  // dronePredictor's delay
         if (links_[d]) {
           links_[d]->startLane(l, lane.drone[d].link, lane.drone[d].delay, formationLinkKey<OneLane>(c, d),
                                double(lane.drone[d].plant.Ts));
@@ -98,13 +111,26 @@ class FormationBatch {
   void receiveStates(long k, const aurora_control::DroneState<B, M, Data>* state, B xc[D][S]) {
     const I at(static_cast<Int>(k));
     for (int d = 0; d < D; ++d) {
-      if (links_[d]) aurora_control::receiveState(at, history_[d], *links_[d], state[d], xc[d]);
-      else aurora_control::receiveState(at, history_[d], ideal_[d], state[d], xc[d]);
+      if (links_[d]) receiveOver(at, d, *links_[d], state[d], xc[d], std::integral_constant<bool, Predicted>());
+      else receiveOver(at, d, ideal_[d], state[d], xc[d], std::integral_constant<bool, Predicted>());
     }
   }
+  template <class Link>
+  void receiveOver(const I& at, int d, Link& link, const aurora_control::DroneState<B, M, Data>& state, B* xc,
+                   std::false_type /*predicted*/) {
+    aurora_control::receiveState(at, history_[d], link, state, xc);
+  }
+  template <class Link>
+  void receiveOver(const I& at, int d, Link& link, const aurora_control::DroneState<B, M, Data>& state, B* xc,
+                   std::true_type /*predicted*/) {
+    PredictedLaneHistory<History, Predictor> predicted{history_[d], predictors_[d]};
+    aurora_control::receiveState(at, predicted, link, state, xc);
+  }
 
-  // Drone d's sent commands U become the ones it applies (ideal: as sent).
+  // Drone d's sent commands U (told to its predictor) become the ones it
+  // applies (ideal: as sent).
   void downlink(int d, long k, B U[Vehicle::kInputs]) {
+    if (Predicted) predictors_[d].sent(U);
     if (links_[d]) links_[d]->downlink(I(static_cast<Int>(k)), U, U);
   }
 
@@ -206,6 +232,8 @@ class FormationBatch {
   aurora_control::IdealLinkOf<I> ideal_[D];         // each drone's delay [samples] per lane, over the delay rule
   std::unique_ptr<Links> links_[D];                // or each drone's lanes' link models
   B Xd_[N];  // the positions of the layer's held Qd (the same on every lane)
+  // With Predicted, each drone's (aligned: its batches; its rings on the heap).
+  std::vector<Predictor, xsimd::aligned_allocator<Predictor, 64>> predictors_;
 };
 
 }  // namespace

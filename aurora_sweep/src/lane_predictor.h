@@ -63,8 +63,13 @@ class LanePredictor {
   void pushed() { ++pushed_; }
 
   // Each lane at its step k received the state xc of its step r.
+  // Off: the received state as it is (StatePredictor::predict's rule).
   void predict(const I& k, const I& r, const B xc[kStates], B xp[kStates]) {
     k_ = k;
+    if (form_ == aurora_control::PredictorForm::kOff) {
+      for (int i = 0; i < kStates; ++i) xp[i] = xc[i];
+      return;
+    }
     if (form_ != aurora_control::PredictorForm::kSmith) keepCommandsInRing();
     receive(r, xc);
     if (form_ == aurora_control::PredictorForm::kSmith) return smith(xp);

@@ -21,6 +21,21 @@ std::string readFile(const std::string& path) {
   return ss.str();
 }
 
+// The summary's predictor: the sweep's {form, model}; a formation's robots'
+// forms, one per robot (their controller files'); or "off".
+nlohmann::json predictorJson(const SweepSpec& spec) {
+  using nlohmann::json;
+  if (spec.predicting()) {
+    return json{{"form", aurora_control::predictorFormName(spec.predictor)}, {"model", spec.predictor_model_file}};
+  }
+  if (!spec.formationPredicting()) return json("off");
+  json robots = json::array();
+  spec.withFormation([&](const auto& run, auto) {
+    for (int d = 0; d < spec.layout().robots; ++d) robots.push_back(aurora_control::predictorFormName(run.drone[d].predictor.form));
+  });
+  return json{{"robots", robots}};
+}
+
 // One CSV row per combination, in index order.
 class CsvWriter : public ResultsWriter {
  public:
@@ -243,9 +258,7 @@ void writeSummaryJson(const std::string& path, const SweepSpec& spec, const RunI
       {"vehicle_file", spec.vehicle_file},
       {"vehicle_type", spec.vehicle_type},
       {"controller", spec.controller},
-      {"predictor", spec.predicting() ? json({{"form", aurora_control::predictorFormName(spec.predictor)},
-                                              {"model", spec.predictor_model_file}})
-                                      : json("off")},
+      {"predictor", predictorJson(spec)},
       {"parameters", parameters},
       {"result_columns", resultColumnsJson(spec.formation())},
       {"link", spec.linkIdeal() ? json("ideal") : spec.link_file.empty() ? json("the link parameters") : json(spec.link_file)},

@@ -13,10 +13,13 @@ void runEachCombination(const SweepSpec& spec, std::vector<SimResult>& out, Prog
       using Law = decltype(law);
       constexpr int kCapacity = decltype(capacity)::value;
       const auto setup = makeFormationSetup<T>(spec, run);
-      loop(spec.rangeSize(), [&](long i) {
-        out[i] = setup.ideal_link ? simulateFormation<Law, T, kCapacity, false>(setup, grid, first + i)
-                                  : simulateFormation<Law, T, kCapacity, true>(setup, grid, first + i);
-        progress.fetch_add(1, std::memory_order_relaxed);
+      withFormationPredictor(run, [&](auto predicted) {
+        constexpr bool kPredicted = decltype(predicted)::value;
+        loop(spec.rangeSize(), [&](long i) {
+          out[i] = setup.ideal_link ? simulateFormation<Law, T, kCapacity, false, kPredicted>(setup, grid, first + i)
+                                    : simulateFormation<Law, T, kCapacity, true, kPredicted>(setup, grid, first + i);
+          progress.fetch_add(1, std::memory_order_relaxed);
+        });
       });
     });
   }

@@ -530,7 +530,9 @@ void readSweepPredictor(const Reader& r, const YAML::Node& n, const std::string&
   spec.predictor = aurora_control::predictorFormNamed(
       r, r.require(n, "sweep.predictor", "form", "resimulate, smith, off"), "sweep.predictor.form");
   if (spec.predicting() && spec.formation()) {
-    r.fail("sweep.predictor", "is refused for a formation sweep: its drones have no predictor yet");
+    r.fail("sweep.predictor", "is refused for a formation sweep: its robots fly the predictor their controller files "
+                              "give (the formation file's, e.g. controller: controllers/underactuated_predictor.yaml; "
+                              "docs/predictor.md)");
   }
   spec.predictor_model_file =
       n["model"] ? resolve(r.text(n["model"], "sweep.predictor.model"), sweep_dir, config_dir) : spec.vehicle_file;

@@ -46,6 +46,22 @@ void readTriangle(const aurora_control::YamlReader& r, const std::string& file, 
   spec.controller = aurora_sweep::lawName(spec.law);
 }
 
+// A sweep's robots are simulated: the latency a predictor's horizon stands
+// for on a real robot is their links' (docs/predictor.md); their predictors'
+// rings are twice the sweep's history, which a horizon would pass.
+void refusePredictorHorizon(const aurora_control::YamlReader& r, const SweepSpec& spec) {
+  spec.withFormation([&](const auto& run, auto) {
+    for (int d = 0; d < spec.layout().robots; ++d) {
+      if (!run.drone[d].predictor.on() || run.drone[d].predictor.path.horizon == 0) continue;
+      r.fail("sweep.formation", "= '" + spec.formation_file + "': robot " + std::to_string(d + 1) +
+                                    "'s controller file gives 'predictor.horizon' (" +
+                                    std::to_string(run.drone[d].predictor.path.horizon) +
+                                    " samples), refused in a sweep: its simulated robots' latency is their links' "
+                                    "(give it as a link's downlink delay); accepted 'predictor.horizon: 0'");
+    }
+  });
+}
+
 // Each robot's own law's gains (robot_gains.h), named with its number
 // (k1_x_2); their values NaN: each robot keeps its file's gains unless the
 // sweep gives one.
@@ -81,6 +97,7 @@ void readSweepFormation(const aurora_control::YamlReader& r, const YAML::Node& s
   else if (shape == "uav_ugv_line") readUavUgvLine(file, config_dir, spec);
   else readLine(file, config_dir, spec);
   spec.formation_file = file;
+  refusePredictorHorizon(r, spec);
   nameRobotGains(spec);
   // The shape's room: its defaults, then the file's delays, gains and law;
   // the link values NaN (each robot keeps its own link unless the sweep

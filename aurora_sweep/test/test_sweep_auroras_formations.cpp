@@ -78,7 +78,10 @@ SimResult flightRecord(const SweepSpec& spec, const ShapeRun<double, Shape, type
     ticks = aurora_control::runFormation<Law, double, Shape<double>, aurora_control::kShortHistory>(run, setup.iterations,
                                                                                                     observe);
   } else {  // keyed as the sweep keys combination c's draws
-    ticks = flyFormation<Law, double, aurora_control::kShortHistory>(run, c, setup.iterations, observe, std::true_type());
+    withFormationPredictor(run, [&](auto predicted) {
+      ticks = flyFormation<Law, double, aurora_control::kShortHistory>(run, c, setup.iterations, observe,
+                                                                       std::true_type(), predicted);
+    });
   }
   return formationResult(judge.metrics, ticks, observe.distance);
 }
@@ -88,13 +91,20 @@ template <class Law, template <typename> class Shape>
 std::vector<SimResult> kernelThreads(const SweepSpec& spec, const ShapeRun<double, Shape, typename Law::Data>& file) {
   const auto setup = makeFormationSetup<double>(spec, file);
   const GridView grid = spec.view();
-  return launchOnHost(grid.size(), 4, [&](unsigned b, unsigned block, unsigned t, SimResult* out) {
-    if (setup.ideal_link) {
-      formationThread<Law, double, aurora_control::kShortHistory, false>(setup, grid, 0, grid.size(), out, b, block, t);
-    } else {
-      formationThread<Law, double, aurora_control::kShortHistory, true>(setup, grid, 0, grid.size(), out, b, block, t);
-    }
+  std::vector<SimResult> out;
+  withFormationPredictor(file, [&](auto predicted) {
+    constexpr bool kPredicted = decltype(predicted)::value;
+    out = launchOnHost(grid.size(), 4, [&](unsigned b, unsigned block, unsigned t, SimResult* out) {
+      if (setup.ideal_link) {
+        formationThread<Law, double, aurora_control::kShortHistory, false, kPredicted>(setup, grid, 0, grid.size(), out,
+                                                                                       b, block, t);
+      } else {
+        formationThread<Law, double, aurora_control::kShortHistory, true, kPredicted>(setup, grid, 0, grid.size(), out,
+                                                                                      b, block, t);
+      }
+    });
   });
+  return out;
 }
 
 int differing(const std::vector<SimResult>& a, const std::vector<SimResult>& b) {
@@ -139,6 +149,31 @@ TEST(AuRoRAsFormationSweep, TheTriangleFliesEveryBackend) {
   const SweepSpec lossy = sweepOf("triangle_lossy", "triangle_ardrones", kTriangleLossy);
   EXPECT_FALSE(lossy.linkIdeal());
   expectEveryBackendAgrees<aurora_control::TriangleDroneLaw>(lossy, lossy.triangle_run, 2, 5e-2);
+}
+
+// Issue 51 (1): the triangle's drones fly the predictor of their
+// controller file (triangle_ardrones_predictor.yaml) on every backend: the
+// flight tool's run, the kernel's per-thread entry, the scalar loop and the
+// SIMD lanes, over the delay rule and over lossy, jittery links. Over the
+// delay rule the exact model predicts the present to the bit: every run is
+// its law's undelayed run, which the same grid without the predictor is
+// not (the predictor was dropped in silence before).
+TEST(AuRoRAsFormationSweep, ThePredictorFliesEveryBackend) {
+  const SweepSpec grid = sweepOf("triangle_predictor_grid", "triangle_ardrones_predictor", kTriangleGrid);
+  ASSERT_TRUE(grid.formationPredicting());
+  EXPECT_FALSE(sweepOf("triangle_plain_grid", "triangle_ardrones", kTriangleGrid).formationPredicting());
+  expectEveryBackendAgrees<aurora_control::TriangleDroneLaw>(grid, grid.triangle_run, 8, 5e-2);
+  const SweepSpec lossy = sweepOf("triangle_predictor_lossy", "triangle_ardrones_predictor", kTriangleLossy);
+  expectEveryBackendAgrees<aurora_control::TriangleDroneLaw>(lossy, lossy.triangle_run, 2, 5e-2);
+  const auto undelayedDiffer = [](const SweepSpec& spec, const std::string& backend) {
+    const std::vector<SimResult> r = runOn(backend, spec);
+    int differ = 0;
+    for (size_t i = 4; i < r.size(); ++i) differ += std::memcmp(&r[i], &r[i % 4], sizeof r[i]) != 0;  // law: i % 4
+    return differ;
+  };
+  EXPECT_EQ(undelayedDiffer(grid, "scalar"), 0);
+  EXPECT_EQ(undelayedDiffer(grid, "cpu"), 0);
+  EXPECT_EQ(undelayedDiffer(sweepOf("triangle_plain_grid", "triangle_ardrones", kTriangleGrid), "scalar"), 12);
 }
 
 TEST(AuRoRAsFormationSweep, TheUavUgvLineFliesEveryBackend) {

@@ -111,7 +111,21 @@ TEST(SweepPredictor, BadInputIsRefusedNamingTheKey) {
   const std::string formation = test::refusal(
       "sweep:\n  formation: formations/line_lemniscate.yaml\n  parameters:\n    delay_1: 0\n    delay_2: 0\n"
       "  predictor: {form: resimulate}\n");
-  EXPECT_NE(formation.find("'sweep.predictor' is refused for a formation sweep"), std::string::npos) << formation;
+  EXPECT_NE(formation.find("'sweep.predictor' is refused for a formation sweep: its robots fly the predictor their "
+                           "controller files give"), std::string::npos) << formation;
+  // A formation robot's horizon stands for a real robot's latency: a sweep's robots' is their links'.
+  const std::string controller = test::writeTemp(
+      "horizon_controller.yaml", test::readText(test::configDir() + "/controllers/underactuated_predictor.yaml"));
+  std::string text = test::readText(controller);
+  text.replace(text.find("horizon: 0.0"), 12, "horizon: 0.1");
+  text.replace(text.find("../vehicles/ardrone2.yaml"), 25, test::configDir() + "/vehicles/ardrone2.yaml");
+  test::writeTemp("horizon_controller.yaml", text);
+  std::string triangle = test::readText(test::configDir() + "/formations/triangle_ardrones.yaml");
+  triangle.replace(triangle.find("controllers/underactuated.yaml"), 30, controller);
+  const std::string horizon = test::refusal("sweep:\n  formation: " + test::writeTemp("horizon_triangle.yaml", triangle) +
+                                            "\n  parameters:\n    delay_1: {values: [0, 3]}\n");
+  EXPECT_NE(horizon.find("robot 1's controller file gives 'predictor.horizon' (3 samples), refused in a sweep"),
+            std::string::npos) << horizon;
   EXPECT_EQ(test::refusal(head + "  predictor: {form: 'off'}\n"), "");
 }
 

@@ -210,6 +210,15 @@ class ShapedFormationTest(unittest.TestCase):
     """Issue 34: AuRoRA's UAV-UGV line and triangle from Python: flight --formation's CSV as an array, to the
     bit, with each robot's delay and the triangle's law; bad input refused naming it."""
 
+    def test_a_robots_predictor_is_flown(self):
+        """Issue 51 (1): the triangle's drones on their controller file's predictor (the exact model): the delayed
+        flight is the undelayed one, to the bit; without the predictor it is not."""
+        undelayed = aurora.simulate_formation("triangle_ardrones", delays=(0, 0, 0))
+        predicted = aurora.simulate_formation("triangle_ardrones_predictor", delays=(6, 6, 6))
+        self.assertTrue(np.array_equal(predicted.table, undelayed.table))
+        self.assertFalse(np.array_equal(aurora.simulate_formation("triangle_ardrones", delays=(6, 6, 6)).table,
+                                        undelayed.table))
+
     def test_the_uav_ugv_line_and_the_triangle_equal_flight_formation(self):
         for name, args, kwargs in (("line_pioneer_ardrone", ["--delay", "0", "10"], {"delays": (0, 10)}),
                                    ("triangle_ardrones", ["--law", "PSO", "--delay", "6", "0", "3"],

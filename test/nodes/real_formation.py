@@ -27,6 +27,11 @@ def watch_until_landed(robots, timeout):
         subs.append(rospy.Subscriber("/%s/fake_driver/received" % ns, String,
                                      lambda m, ns=ns: received.__setitem__(ns, m.data)))
     ended = landed.wait(timeout)
+    if ended:
+        # Each subscription has its own callback thread: the drivers' last true states (sent before the
+        # formation said "landed") may still be queued. A landed drone's z was read 0.1005 m once, its
+        # descent's sample before touch-down.
+        rospy.sleep(1.0)
     for s in subs:
         s.unregister()
     return ended, ticks, truth, received

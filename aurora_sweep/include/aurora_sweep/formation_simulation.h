@@ -51,6 +51,7 @@ void castFormationDrone(const aurora_control::FormationDrone<U, Data>& from, aur
   to.delay = from.delay;
   to.link = from.link;
   for (int i = 0; i < 3; ++i) to.start[i] = T(from.start[i]);
+  to.predictor = from.predictor.template cast<T>();
 }
 
 // The formation's own values (law, gains, period, reference, clamp) in T.
@@ -174,36 +175,81 @@ struct EndDistance {
   }
 };
 
+// Over links[d] for robot d (in this frame, no allocation), without a
+// predictor ...
+template <class Law, typename T, int Capacity, class Shape, class Observer, class Link>
+AURORA_HD inline long flyOver(const aurora_control::FormationRun<T, Shape, typename Law::Data>& run, long iterations,
+                              Observer& observe, Link* links, std::false_type /*predicted*/) {
+  return aurora_control::runFormationOver<Law, T, Shape, Capacity>(run, iterations, observe, links);
+}
+
+// ... or with each robot's (dronePredictor; off for a robot without one),
+// its rings twice the history, as a single robot's (simulation.h).
+template <class Predictor, typename T, class Shape, class Data>
+AURORA_HD inline Predictor robotPredictor(const aurora_control::FormationRun<T, Shape, Data>& run, int d) {
+  const aurora_control::PredictorRun<typename Data::Vehicle, T> p = aurora_control::dronePredictor(run, d);
+  return Predictor(p.form, p.model, p.path);
+}
+template <class Law, typename T, int Capacity, class Shape, class Observer, class Link, size_t... D>
+AURORA_HD inline long flyPredicted(const aurora_control::FormationRun<T, Shape, typename Law::Data>& run, long iterations,
+                                   Observer& observe, Link* links, std::index_sequence<D...> robots) {
+  using Predictor = aurora_control::StatePredictor<typename Law::Vehicle, T, 2 * Capacity>;
+  Predictor predictors[Shape::kDrones] = {robotPredictor<Predictor>(run, int(D))...};
+  return aurora_control::runPredictedFormationOver<Law, T, Shape, Capacity>(run, iterations, observe, links,
+                                                                            predictors, robots);
+}
+template <class Law, typename T, int Capacity, class Shape, class Observer, class Link>
+AURORA_HD inline long flyOver(const aurora_control::FormationRun<T, Shape, typename Law::Data>& run, long iterations,
+                              Observer& observe, Link* links, std::true_type /*predicted*/) {
+  return flyPredicted<Law, T, Capacity>(run, iterations, observe, links, std::make_index_sequence<Shape::kDrones>());
+}
+
 // Over today's delay rule on every drone.
-template <class Law, typename T, int Capacity, class Shape, class Observer>
+template <class Law, typename T, int Capacity, class Shape, class Observer, class Predicted>
 AURORA_HD inline long flyFormation(const aurora_control::FormationRun<T, Shape, typename Law::Data>& run, const Combination&,
-                                   long iterations, Observer& observe, std::false_type /*linked*/) {
+                                   long iterations, Observer& observe, std::false_type /*linked*/, Predicted predicted) {
   aurora_control::IdealLink links[Shape::kDrones];
   for (int d = 0; d < Shape::kDrones; ++d) links[d] = aurora_control::IdealLink{run.drone[d].delay};
-  return aurora_control::runFormationOver<Law, T, Shape, Capacity>(run, iterations, observe, links);
+  return flyOver<Law, T, Capacity>(run, iterations, observe, links, predicted);
 }
 
 // Over each drone's link model, built in this frame (no allocation).
-template <class Law, typename T, int Capacity, class Shape, class Observer, size_t... D>
+template <class Law, typename T, int Capacity, class Shape, class Observer, class Predicted, size_t... D>
 AURORA_HD inline long flyFormationOverModels(const aurora_control::FormationRun<T, Shape, typename Law::Data>& run,
                                              const Combination& c, long iterations, Observer& observe,
-                                             std::index_sequence<D...>) {
+                                             Predicted predicted, std::index_sequence<D...>) {
   using Link = aurora_control::ModelLink<Capacity, T, Law::Vehicle::kInputs>;
   Link links[Shape::kDrones] = {Link(run.drone[D].link, run.drone[D].delay, formationLinkKey<Shape>(c, int(D)),
                                      double(run.drone[D].plant.Ts))...};
-  return aurora_control::runFormationOver<Law, T, Shape, Capacity>(run, iterations, observe, links);
+  return flyOver<Law, T, Capacity>(run, iterations, observe, links, predicted);
 }
-template <class Law, typename T, int Capacity, class Shape, class Observer>
+template <class Law, typename T, int Capacity, class Shape, class Observer, class Predicted>
 AURORA_HD inline long flyFormation(const aurora_control::FormationRun<T, Shape, typename Law::Data>& run, const Combination& c,
-                                   long iterations, Observer& observe, std::true_type /*linked*/) {
-  return flyFormationOverModels<Law, T, Capacity>(run, c, iterations, observe,
+                                   long iterations, Observer& observe, std::true_type /*linked*/, Predicted predicted) {
+  return flyFormationOverModels<Law, T, Capacity>(run, c, iterations, observe, predicted,
                                                   std::make_index_sequence<Shape::kDrones>());
 }
 
+// Calls f(std::true_type()) when a robot of `run` flies with a predictor
+// (its controller file's), else f(std::false_type()): the one place a
+// formation sweep's backends choose. The AR.Drones' formations only (the
+// two-drone line, the triangle): no other shape's file gives a predictor.
+template <typename T, class Shape, class F>
+void withFormationPredictor(const aurora_control::FormationRun<T, Shape, aurora_control::ArdroneLawData>& run, F&& f) {
+  if (aurora_control::anyPredictor(run)) return f(std::true_type());
+  f(std::false_type());
+}
+template <typename T, class Shape, class Data, class F>
+void withFormationPredictor(const aurora_control::FormationRun<T, Shape, Data>&, F&& f) {
+  f(std::false_type());
+}
+
 // Formation `index` of the sweep (over its drones' links when `Linked`),
-// every robot flying law `Law` (a law type): the CUDA thread's and the
+// every robot flying law `Law` (a law type), with the predictors of its
+// robots' controller files when `Predicted`: the CUDA thread's and the
 // scalar loop's body.
-template <class Law, typename T, int Capacity, bool Linked = false, template <typename> class Shape>
+template <class Law, typename T, int Capacity, bool Linked = false, bool Predicted = false,
+          template <typename> class Shape>
 AURORA_HD inline SimResult simulateFormation(const FormationSetup<T, Shape, typename Law::Data>& setup,
                                              const GridView& grid, long index) {
   using Data = typename Law::Data;
@@ -214,7 +260,8 @@ AURORA_HD inline SimResult simulateFormation(const FormationSetup<T, Shape, type
   judge.metrics.reset();
   EndDistance<T, Shape<T>, Judge, Data> observe{judge};
   const long ticks = flyFormation<Law, T, Capacity>(run, c, setup.iterations, observe,
-                                                    std::integral_constant<bool, Linked>());
+                                                    std::integral_constant<bool, Linked>(),
+                                                    std::integral_constant<bool, Predicted>());
   return formationResult(judge.metrics, ticks, observe.distance);
 }
 

@@ -24,12 +24,14 @@ AURORA_HD inline void sweepThread(const SimSetup<typename Law::Vehicle, T>& setu
   if (i < n) out[i] = simulateCombination<Law, T, Capacity, Linked, Predicted>(setup, grid, first + i);
 }
 
-// The same for a formation sweep (of any shape): one formation per thread.
-template <class Law, typename T, int Capacity, bool Linked = false, template <typename> class Shape>
+// The same for a formation sweep (of any shape): one formation per thread
+// (with its robots' predictors when `Predicted`).
+template <class Law, typename T, int Capacity, bool Linked = false, bool Predicted = false,
+          template <typename> class Shape>
 AURORA_HD inline void formationThread(const FormationSetup<T, Shape, typename Law::Data>& setup, const GridView& grid, long first, long n,
                                       SimResult* out, unsigned block, unsigned block_dim, unsigned thread) {
   const long i = threadIndex(block, block_dim, thread);
-  if (i < n) out[i] = simulateFormation<Law, T, Capacity, Linked>(setup, grid, first + i);
+  if (i < n) out[i] = simulateFormation<Law, T, Capacity, Linked, Predicted>(setup, grid, first + i);
 }
 
 // Blocks of `block_size` threads that cover n combinations.

@@ -84,6 +84,12 @@ struct SweepSpec {
   aurora_control::FormationCriteria<double> formation_criteria =
       aurora_control::FormationCriteria<double>::study();
   bool formation() const { return shape != SweepShape::kNone; }
+  // Whether a formation's robots fly a predictor (their controller files').
+  bool formationPredicting() const {
+    bool on = false;
+    if (formation()) withFormation([&](const auto& run, auto) { on = aurora_control::anyPredictor(run); });
+    return on;
+  }
   // f(run, law) with the formation's run and its robots' law type (a
   // default value); the one place a formation sweep's types are chosen.
   template <class F>

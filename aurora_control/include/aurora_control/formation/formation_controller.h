@@ -73,6 +73,7 @@ class FormationController {
       s.clamp_commands = false;
       s.Ts = run.drone[d].plant.Ts;
       core_[d].configureLink(static_cast<uint64_t>(d));  // keyed by the robot, as runFormation
+      core_[d].configurePredictor(dronePredictor(run, d));
     }
     startPositions(run, start_);
     startLayer();
@@ -110,10 +111,13 @@ class FormationController {
     double time = 0.0, Qd[kN];
     t.layer_ran = desiredBefore(run_, k, time, Qd);
     if (t.layer_ran) {
+      // The states each robot's law flies on (its predictor's, when its
+      // controller file has one), as the offline runner's layer reads them.
       double seen[kN];
-      const double* delivered[kDrones];
-      for (int d = 0; d < kDrones; ++d) delivered[d] = core_[d].delivered().X;
-      dronePositions<Shape, Vehicle>(delivered, seen);
+      StateSample flown[kDrones];
+      const double* flown_X[kDrones];
+      for (int d = 0; d < kDrones; ++d) flown[d] = core_[d].flownState(), flown_X[d] = flown[d].X;
+      dronePositions<Shape, Vehicle>(flown_X, seen);
       layer_.update(seen, Qd, time);
     }
     for (int d = 0; d < kDrones; ++d) {

@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "aurora_control/loop/closed_loop.h"
@@ -15,13 +16,16 @@
 #include "aurora_control/formation/formation_reference.h"
 #include "aurora_control/formation/uav_ugv_line.h"
 #include "aurora_control/link/loop_link.h"
+#include "aurora_control/predictor/predicted_loop.h"
 
 namespace aurora_control {
 
 // One robot of a formation, flying a law of data `Data` (control_law.h:
 // its vehicle, gains and memory; the AR.Drone's laws by default): its model
 // (plant and the law's nominal model), its gains, its link (link.h; ideal
-// by default) with its uplink delay [samples], and where it starts [m].
+// by default) with its uplink delay [samples], where it starts [m], and the
+// state predictor its controller file gives (docs/predictor.md; off by
+// default; its command path the run's: dronePredictor).
 template <typename T, class Data = ArdroneLawData>
 struct FormationDrone {
   typename Data::Vehicle::template Params<T> plant, model;
@@ -29,6 +33,7 @@ struct FormationDrone {
   long delay = 0;
   LinkParams link;
   T start[3];
+  PredictorRun<typename Data::Vehicle, T> predictor;
 };
 
 // A formation's robots' loops: their parameters, states and steps.
@@ -222,18 +227,17 @@ AURORA_HD inline auto observeTick(Observer& observe, const Observation& o)
 
 // `iterations` ticks of law `Law` (control_law.h: a law type, all robots
 // its vehicle) on every robot, robot d over links[d] (IdealLink or
-// ModelLink), histories of `Capacity` samples (every robot's history below
-// it, checked by the caller). Returns the ticks run.
-template <class Law, typename T, class Shape, int Capacity, typename Observer, typename Link>
-AURORA_HD long runFormationOver(const FormationRun<T, Shape, typename Law::Data>& run, long iterations,
-                                Observer& observe, Link* links) {
+// ModelLink) and its history history[d] (StateHistory, or PredictedHistory
+// with a predictor). Returns the ticks run.
+template <class Law, typename T, class Shape, typename Observer, typename Link, typename History>
+AURORA_HD long runFormationWith(const FormationRun<T, Shape, typename Law::Data>& run, long iterations,
+                                Observer& observe, Link* links, History* history) {
   using Data = typename Law::Data;
   constexpr int D = Shape::kDrones, N = Shape::kVariables, S = Law::Vehicle::kStates;
   const T Ts = run.drone[0].plant.Ts;
   LayerOf<T, Shape> layer(run.law, run.gains, run.schedule.period(Ts));
   DroneParams<T, Data> params[D];
   DroneState<T, bool, Data> state[D];
-  StateHistory<Law, T, Capacity> history[D];
   startFormation(run, params, state, layer);
   for (long k = 0; k < iterations; ++k) {
     T xc[D][S], before[D][S], Qd[N], t = T(0);
@@ -250,25 +254,89 @@ AURORA_HD long runFormationOver(const FormationRun<T, Shape, typename Law::Data>
   return iterations;
 }
 
+// The same with histories of `Capacity` samples (every robot's history
+// below it, checked by the caller), without a predictor.
+template <class Law, typename T, class Shape, int Capacity, typename Observer, typename Link>
+AURORA_HD long runFormationOver(const FormationRun<T, Shape, typename Law::Data>& run, long iterations,
+                                Observer& observe, Link* links) {
+  StateHistory<Law, T, Capacity> history[Shape::kDrones];
+  return runFormationWith<Law, T, Shape>(run, iterations, observe, links, history);
+}
+
+// Robot d's predictor as it flies (docs/predictor.md, "The commands
+// applied"): the command delay its link's downlink base delay, the clamp the
+// run's robots apply. The runner, the sweeps and the formation node alike.
+template <typename T, class Shape, class Data>
+AURORA_HD inline PredictorRun<typename Data::Vehicle, T> dronePredictor(const FormationRun<T, Shape, Data>& run, int d) {
+  PredictorRun<typename Data::Vehicle, T> p = run.drone[d].predictor;
+  p.path.delay = run.drone[d].link.downlink.delay;
+  p.path.clamp = run.clamp.at_drone;
+  return p;
+}
+
+// Whether any robot flies with a predictor.
+template <typename T, class Shape, class Data>
+AURORA_HD inline bool anyPredictor(const FormationRun<T, Shape, Data>& run) {
+  bool on = false;
+  for (int d = 0; d < Shape::kDrones; ++d) on = on || run.drone[d].predictor.on();
+  return on;
+}
+
+// With each robot's predictor predictors[d] (off: the state delivered, as
+// it is): as the one loop's (predicted_loop.h), robot d's history reads back
+// the predictor's state and its link tells the predictor each command sent.
+// The layer and the law both fly on it: the controller side sees one state
+// per robot (the formation node's too, formation_controller.h).
+template <class Law, typename T, class Shape, int Capacity, typename Observer, typename Link, class Predictor,
+          size_t... D>
+AURORA_HD long runPredictedFormationOver(const FormationRun<T, Shape, typename Law::Data>& run, long iterations,
+                                         Observer& observe, Link* links, Predictor* predictors,
+                                         std::index_sequence<D...>) {
+  static_assert(sizeof...(D) == Shape::kDrones, "a predictor per robot");
+  using History = PredictedHistory<typename Law::Vehicle, T, Capacity, Predictor>;
+  History history[Shape::kDrones] = {History(predictors[D])...};
+  PredictedLink<Predictor, Link> predicted[Shape::kDrones] = {{predictors[D], links[D]}...};
+  return runFormationWith<Law, T, Shape>(run, iterations, observe, predicted, history);
+}
+
 // Every drone over its own link: today's delay rule when every link is
 // ideal, else each drone's link model, its draws keyed by the drone's index
-// (two drones over one link file lose different packets).
-template <class Law, typename T, class Shape, int Capacity, typename Observer>
-long runFormation(const FormationRun<T, Shape, typename Law::Data>& run, long iterations, Observer& observe) {
+// (two drones over one link file lose different packets). fly(links).
+template <class Law, typename T, class Shape, int Capacity, typename Fly>
+long withFormationLinks(const FormationRun<T, Shape, typename Law::Data>& run, Fly&& fly) {
   constexpr int D = Shape::kDrones;
   bool ideal = true;
   for (int d = 0; d < D; ++d) ideal = ideal && run.drone[d].link.ideal();
   if (ideal) {
     IdealLink links[D];
     for (int d = 0; d < D; ++d) links[d] = IdealLink{run.drone[d].delay};
-    return runFormationOver<Law, T, Shape, Capacity>(run, iterations, observe, links);
+    return fly(links);
   }
   std::vector<ModelLink<Capacity, T, Law::Vehicle::kInputs>> links;  // on the heap: Capacity-sized rings
   links.reserve(D);
   for (int d = 0; d < D; ++d) {
     links.emplace_back(run.drone[d].link, run.drone[d].delay, static_cast<uint64_t>(d), double(run.drone[d].plant.Ts));
   }
-  return runFormationOver<Law, T, Shape, Capacity>(run, iterations, observe, links.data());
+  return fly(links.data());
+}
+
+// The flight tool's, Python's and the tests' runner: each robot over its
+// link, with the predictor its controller file gives (HostPredictor, on the
+// heap) when any robot has one.
+template <class Law, typename T, class Shape, int Capacity, typename Observer>
+long runFormation(const FormationRun<T, Shape, typename Law::Data>& run, long iterations, Observer& observe) {
+  using Predictor = HostPredictor<typename Law::Vehicle, T>;
+  return withFormationLinks<Law, T, Shape, Capacity>(run, [&](auto* links) {
+    if (!anyPredictor(run)) return runFormationOver<Law, T, Shape, Capacity>(run, iterations, observe, links);
+    std::vector<Predictor> predictors;
+    predictors.reserve(Shape::kDrones);
+    for (int d = 0; d < Shape::kDrones; ++d) {
+      const PredictorRun<typename Law::Vehicle, T> p = dronePredictor(run, d);
+      predictors.emplace_back(p.form, p.model, p.path);
+    }
+    return runPredictedFormationOver<Law, T, Shape, Capacity>(run, iterations, observe, links, predictors.data(),
+                                                              std::make_index_sequence<Shape::kDrones>());
+  });
 }
 
 // The ticks k = 0 .. n - 1 of a formation flight of `duration` [s] (2700

@@ -30,6 +30,7 @@ struct FormationDroneFile {
   ControllerSettings controller;  // its law and gains
   long delay = 0;                // its uplink delay [samples]
   LinkParams link;               // its link (docs/links.md; ideal unless given)
+  PredictorFile predictor;       // its controller file's predictor (off for a mapping; docs/predictor.md)
 };
 
 struct FormationFile {
@@ -113,30 +114,22 @@ inline void readReference(const YamlReader& r, const YAML::Node& n, const std::s
 }
 
 // A robot's controller at `key`: a mapping {name, gains ...} or a
-// controller file (controllers/NAME.yaml, in the config folder).
-// Formation robots fly their law on the delayed state: the state predictor
-// (docs/predictor.md) is not in the formation loops (flight, the node,
-// Python, the sweeps), so a robot's controller file that asks for one is
-// refused naming the key, never flown without it in silence.
-inline void refuseFormationPredictor(const YamlReader& r, const std::string& key, const std::string& file) {
-  const PredictorFile p = readControllerPredictor(file);
-  if (p.form == PredictorForm::kOff) return;
-  r.fail(key, "= '" + file + "' asks for the state predictor ('predictor.form' = " + predictorFormName(p.form) +
-                  "): formation robots fly their law on the delayed state, without a predictor "
-                  "(docs/predictor.md, \"Not yet\"); accepted a controller file without one "
-                  "(controllers/underactuated.yaml) or with 'predictor.form: off'");
-}
-
+// controller file (controllers/NAME.yaml, in the config folder). A file's
+// predictor block is read by predictorAt: formation robots fly it
+// (formation_runner.h, dronePredictor).
 inline ControllerSettings controllerAt(const YamlReader& r, const YAML::Node& c, const std::string& key,
                                        const std::string& config_dir) {
-  if (c.IsScalar()) {
-    const std::string file = inConfig(r.text(c, key), config_dir);
-    refuseFormationPredictor(r, key, file);
-    return readControllerFile(file).settings;
-  }
+  if (c.IsScalar()) return readControllerFile(inConfig(r.text(c, key), config_dir)).settings;
   ControllerSettings set;
   readLaw(r, c, key, set);
   return set;
+}
+
+// The predictor of a robot's controller at `key` (off for a mapping).
+inline PredictorFile predictorAt(const YamlReader& r, const YAML::Node& c, const std::string& key,
+                                 const std::string& config_dir) {
+  if (!c.IsScalar()) return PredictorFile{};
+  return readControllerPredictor(inConfig(r.text(c, key), config_dir));
 }
 
 // A robot's link file at `key` (links/NAME.yaml, in the config folder).
@@ -156,6 +149,7 @@ inline FormationDroneFile readDrone(const YamlReader& r, const YAML::Node& n, co
   for (int i = 0; i < 3; ++i) d.start[i] = s[i];
   const YAML::Node c = r.require(n, key, "controller", "a controller mapping {name, gains} or file (controllers/NAME.yaml)");
   d.controller = controllerAt(r, c, r.key(key, "controller"), config_dir);
+  d.predictor = predictorAt(r, c, r.key(key, "controller"), config_dir);
   long given = kDelayNotGiven;
   if (n["delay"]) {
     const double value = r.number(n["delay"], r.key(key, "delay"));
@@ -328,6 +322,14 @@ inline void refuseFormationDelays(const FormationRun<double, LineFormation<doubl
   }
 }
 
+// A formation robot's predictor of file `f` flying law `Law` at sample time
+// Ts: its model loaded as the law's vehicle, its horizon in samples; its
+// command path is the run's (dronePredictor).
+template <class Law>
+PredictorRun<typename Law::Vehicle, double> formationPredictor(const PredictorFile& f, double Ts) {
+  return predictorRun<Law>(f, Ts, 0, 0, false);
+}
+
 // The run of a formation file with the drones' vehicle `vehicle`, its
 // period in whole drone steps (refused otherwise).
 inline FormationRun<double, LineFormation<double>> formationRun(const FormationFile& f,
@@ -349,6 +351,9 @@ inline FormationRun<double, LineFormation<double>> formationRun(const FormationF
     run.drone[d].delay = f.drones[d].delay;
     run.drone[d].link = f.drones[d].link;
     for (int i = 0; i < 3; ++i) run.drone[d].start[i] = f.drones[d].start[i];
+    withLaw(f.drones[d].controller.law, [&](auto law) {
+      run.drone[d].predictor = formationPredictor<decltype(law)>(f.drones[d].predictor, vehicle.Ts);
+    });
   }
   refuseShortFormation(run.reference.duration, "formation.reference.duration");
   refuseFormationDelays(run, vehicle.Ts, {"formation.drones[0].delay", "formation.drones[1].delay"});

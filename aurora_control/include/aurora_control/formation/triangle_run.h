@@ -35,6 +35,7 @@ struct TriangleSetup {
   long delay[3] = {0, 0, 0};  // each robot's feedback delay [drone steps; kinematic robots: layer periods]
   LinkParams link[3];         // each drone's link (docs/links.md; ideal unless the file gives one)
   std::string name_space[3] = {"ardrone1", "ardrone2", "ardrone3"};  // ROS namespaces (robots.namespaces)
+  PredictorRun<LawVehicle, double> predictor;  // flying: the drones' controller file's (docs/predictor.md)
   long periods() const { return std::lround(std::ceil(duration / period - 1e-9)); }
 };
 
@@ -55,6 +56,7 @@ inline long triangleSteps(const TriangleSetup& s) {
 inline void triangleRobot(const TriangleSetup& s, FormationDrone<double, TriangleDroneLaw::Data>& robot) {
   robot.plant = robot.model = s.drone;
   robot.gains = s.drone_gains;
+  robot.predictor = s.predictor;
 }
 inline void triangleRobot(const TriangleSetup& s, FormationDrone<double, FollowReference>& robot) {
   robot.plant = robot.model = KinematicRobot::Params<double>{s.period};

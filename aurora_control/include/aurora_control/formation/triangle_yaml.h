@@ -135,6 +135,8 @@ inline void readRobots(const YamlReader& r, const YAML::Node& n, const std::stri
   const ControllerSettings set = formation_detail::controllerAt(r, c, r.key(key, "controller"), config_dir);
   if (set.law != LawType::kUnderactuated) r.fail(r.key(key, "controller"), "is refused: the drones fly the underactuated law");
   s.drone_gains.underactuated = set.underactuated;
+  s.predictor = formationPredictor<TriangleDroneLaw>(formation_detail::predictorAt(r, c, r.key(key, "controller"), config_dir),
+                                                     s.drone.Ts);
 }
 
 }  // namespace triangle_yaml_detail

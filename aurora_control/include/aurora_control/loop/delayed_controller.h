@@ -188,6 +188,16 @@ class DelayedController {
     return held_valid_ ? held_ : newest();  // newest: before the link delivered any state
   }
 
+  // The state the law flies on this cycle: the predictor's from the
+  // delivered state, or that state. A formation's layer reads it before the
+  // law runs (formation_controller.h); predicting again for the same cycle
+  // gives the same state (StatePredictor::predict). Requires !empty().
+  StateSample flownState() {
+    StateSample predicted;
+    ControlOutput unused;
+    return predictedFrom(delivered(), predicted, unused);
+  }
+
   ControlOutput compute(const Reference<double>& ref) {
     ControlOutput out;
     const StateSample& used = delivered();

@@ -75,7 +75,12 @@ struct PredictorRun {
   PredictorForm form = PredictorForm::kOff;
   typename Vehicle::template Params<T> model;
   CommandPath path;
-  bool on() const { return form != PredictorForm::kOff; }
+  AURORA_HD bool on() const { return form != PredictorForm::kOff; }
+  // The same predictor in precision U (a sweep's).
+  template <typename U>
+  PredictorRun<Vehicle, U> cast() const {
+    return PredictorRun<Vehicle, U>{form, model.template cast<U>(), path};
+  }
 };
 
 // Runs loopIteration with `predictor` over `link` (host, scalar loop and

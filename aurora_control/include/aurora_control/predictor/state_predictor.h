@@ -57,8 +57,14 @@ class StatePredictor {
 
   // Iteration k: the state xc of step `received` (<= k) arrived; xp: the
   // state predicted for step target() from the newest state received.
+  // Off (a formation robot whose controller file has none, beside one
+  // that has): the received state as it is.
   AURORA_HD void predict(long k, long received, const T xc[kStates], T xp[kStates]) {
     k_ = k;
+    if (form_ == PredictorForm::kOff) {
+      for (int i = 0; i < kStates; ++i) xp[i] = xc[i];
+      return;
+    }
     if (form_ != PredictorForm::kSmith) keepCommandsInRing();
     receive(received, xc);
     if (form_ == PredictorForm::kSmith) return smith(xp);
