@@ -32,14 +32,17 @@ class DelayTest(unittest.TestCase):
         # state and control arrive on two connections, each with its own
         # thread: the control of step k can be handled before the state of
         # step k. Wait until every state up to the last control's step is in.
-        last = max(c.step for c in controls)
+        # Controls go on arriving: check those taken now, whose states the
+        # wait below covers (one of a later step failed with KeyError once).
+        taken = list(controls)
+        last = max(c.step for c in taken)
         deadline = time.time() + 10.0
         while any(k not in stamps for k in range(last + 1)) and time.time() < deadline:
             time.sleep(0.01)
         missing = [k for k in range(last + 1) if k not in stamps]
         self.assertEqual(missing, [], "states never received (the sim published every step)")
         by_step = {}
-        for c in controls:
+        for c in taken:
             by_step.setdefault(c.step, c)  # a re-sent state is answered again: keep the first
         self.assertEqual(sorted(by_step), list(range(0, max(by_step) + 1)), "control steps are not contiguous")
         for step, c in sorted(by_step.items()):

@@ -77,6 +77,12 @@ class InstallSpaceTest(unittest.TestCase):
         self.assertEqual(m["delay_samples"], 5)
         self.assertTrue(m["metrics_match_controller"])
         self.assertGreater(m["steps"], 590)
+        # identify from the install space: the AR.Drone's timing (its model is not fitted yet).
+        identified = os.path.join(self.tmp, "identify")
+        rc, out = self.sh("rosrun aurora identify %s --out %s" % (os.path.join(bags, bag[0]), identified))
+        self.assertEqual(rc, 0, out)
+        self.assertIn("feedback delay 5 samples", out)
+        self.assertEqual(json.load(open(os.path.join(identified, "identify.json")))["link"]["uplink"]["delay"], 5)
 
     def test_3_sweep_finds_vehicle_and_plot_script(self):
         out_dir = os.path.join(self.tmp, "sweep")

@@ -1,0 +1,363 @@
+"""Identify a recorded loop from its bag (docs/identify.md):
+
+    rosrun aurora identify BAG --out DIR [--ns NAME] [--max-delay N] [--window N]
+
+Measures the loop's timing from the bag's stamps and steps (the feedback
+delay of each cycle, the state and command streams' rates, jitter and
+losses) and fits the vehicle's model by least squares with the actuation
+delay that fits best (the Bebop 2 today), then writes DIR/identify.json,
+DIR/link.yaml (a link file flight --link, the nodes and sweeps take),
+DIR/vehicle.yaml (where the model was identified), figures and report.md.
+The same from Python: aurora.identify(bag) returns the identify.json
+object. The arithmetic is aurora.identify_core's (ROS-free)."""
+import argparse
+import json
+import os
+import shutil
+import sys
+import tempfile
+
+import numpy as np
+
+from aurora import identify_core as core
+from aurora import report
+
+# Fewer state steps than this identify nothing (10 s at 30 Hz).
+MIN_STEPS = 300
+# The vehicles whose model this tool fits, and those it times only.
+MODELS = {"bebop2": "Bebop 2"}
+TIMED_ONLY = {"ardrone2": "the AR.Drone's model is nonlinear (output-error fit: not yet)",
+              "pioneer3dx": "the Pioneer's theta fit is not yet in this tool"}
+
+
+class IdentifyError(Exception):
+    """A problem the user can act on; printed without a traceback."""
+
+
+def parse_args(argv):
+    p = argparse.ArgumentParser(prog="identify", description=__doc__.split("\n\n")[0])
+    p.add_argument("bag", help="the .bag file (sim.launch or real.launch record:=true)")
+    p.add_argument("--out", required=True, help="output folder (created; its identify files are replaced)")
+    p.add_argument("--ns", default=None, help="the robot's namespace (default: the bag's only one)")
+    p.add_argument("--max-delay", type=int, default=15,
+                   help="largest actuation delay tried [samples] (default 15: 0.5 s at 30 Hz)")
+    p.add_argument("--window", type=int, default=1,
+                   help="steps summed per equation against position noise [samples; 1: each step] "
+                        "(docs/identify.md, eq. I4; 15 for a motion capture's millimetres)")
+    args = p.parse_args(argv)
+    if not 0 <= args.max_delay <= 300:
+        p.error("--max-delay %d is refused: accepted 0 .. 300 samples" % args.max_delay)
+    if not 1 <= args.window <= 300:
+        p.error("--window %d is refused: accepted 1 .. 300 samples" % args.window)
+    return args
+
+
+def read_loop(path, ns=None):
+    """The robot's states and controls of the bag at `path`, as arrays."""
+    try:
+        bag = report.open_bag(path)
+    except report.ReportError as e:
+        raise IdentifyError(str(e))
+    try:
+        topics = report.topics_of(bag)
+        if "/formation/formation" in topics and ns is None:
+            raise IdentifyError("bag '%s' is a formation's: identify one robot at a time with --ns NAME (its "
+                                "namespaces: %s)" % (path, ", ".join(report.find_namespaces(topics)) or "none"))
+        try:
+            data = report.read_bag(bag, None if ns is None else [ns])
+        except report.ReportError as e:
+            raise IdentifyError(str(e).replace("the report needs", "identify needs").replace(
+                "has no drone to report", "has no robot to identify"))
+    finally:
+        bag.close()
+    if len(data) > 1:
+        raise IdentifyError("bag '%s' holds %d robots (%s): choose one with --ns NAME" % (path, len(data), ", ".join(data)))
+    name, d = next(iter(data.items()))
+    return name, loop_arrays(d)
+
+
+def loop_arrays(d):
+    """States (steps, stamps, X) and controls (steps, used steps, pending,
+    arrived, commands sent, stamps) of one robot's bag data."""
+    states = sorted({s.step: s for s in d["states"]}.values(), key=lambda s: s.step)
+    controls = [d["controls"][k] for k in sorted(d["controls"])]
+    first = controls[0]
+    return {
+        "vehicle": first.vehicle, "Ts": first.sample_time,
+        "state_steps": np.array([s.step for s in states], dtype=np.int64),
+        "state_stamps": np.array([s.header.stamp.to_sec() for s in states]),
+        "X": np.array([report.state_values(s) for s in states], dtype=float),
+        "control_steps": np.array([c.step for c in controls], dtype=np.int64),
+        "used_steps": np.array([c.state_used.step for c in controls], dtype=np.int64),
+        "pending": np.array([c.delay_pending for c in controls], dtype=np.int64),
+        "arrived": np.array([c.state_arrived for c in controls], dtype=bool),
+        "law_ran": np.array([c.law_ran for c in controls], dtype=bool),
+        "sent": np.array([list(c.command_sent) for c in controls], dtype=float),
+        "control_stamps": np.array([c.header.stamp.to_sec() for c in controls]),
+    }
+
+
+def timing(loop):
+    """Eqs. I1, I2: the feedback delays of the cycles once the delay could be
+    in force (delay_pending 0, and a state that old existed: the loop's first
+    D cycles, D the median delay, use newer ones), the streams' timing, the
+    uplink's losses."""
+    all_delays = core.feedback_delays(loop["control_steps"], loop["used_steps"])
+    first = min(int(loop["state_steps"][0]), int(loop["control_steps"][0]))
+    steady = (loop["pending"] == 0) & (loop["control_steps"] - first >= np.median(all_delays))
+    delays = core.feedback_delays(loop["control_steps"][steady], loop["used_steps"][steady])
+    return {"feedback_delay_samples": core.percentiles(delays), "feedback_delays": delays,
+            "state_stream": core.stream_timing(loop["state_steps"], loop["state_stamps"], loop["Ts"]),
+            "command_stream": core.stream_timing(loop["control_steps"], loop["control_stamps"], loop["Ts"]),
+            "uplink_loss": float(np.mean(~loop["arrived"][steady])) if steady.any() else 0.0,
+            "state_intervals": np.diff(loop["state_stamps"])}
+
+
+def commands_by_step(loop):
+    """The commands sent, one row per state step (a step the controller did
+    not answer holds the command before it, as the vehicle does)."""
+    X_steps = loop["state_steps"]
+    U = np.zeros((len(X_steps), 4))
+    at = {int(s): i for i, s in enumerate(loop["control_steps"])}
+    last = np.zeros(4)
+    for i, s in enumerate(X_steps):
+        if int(s) in at:
+            last = loop["sent"][at[int(s)]]
+        U[i] = last
+    return U
+
+
+def contiguous(loop):
+    """The longest run of consecutive state steps (the differences need them)."""
+    s = loop["state_steps"]
+    breaks = np.flatnonzero(np.diff(s) != 1)
+    starts = np.concatenate([[0], breaks + 1])
+    ends = np.concatenate([breaks + 1, [len(s)]])
+    i = int(np.argmax(ends - starts))
+    return slice(int(starts[i]), int(ends[i]))
+
+
+def fitted_model(loop, max_delay, window):
+    """The vehicle's model (eqs. I3-I5) at the best actuation delay, or why
+    this tool does not fit this vehicle."""
+    vehicle = loop["vehicle"]
+    if vehicle in TIMED_ONLY:
+        return None, "model not identified: " + TIMED_ONLY[vehicle] + "; the timing and link.yaml are"
+    if vehicle not in MODELS:
+        raise IdentifyError("vehicle '%s' (the bag's Control.vehicle) is unknown to identify: accepted %s"
+                            % (vehicle, ", ".join(sorted(list(MODELS) + list(TIMED_ONLY)))))
+    run = contiguous(loop)
+    X, U = loop["X"][run], commands_by_step(loop)[run]
+    if len(X) < MIN_STEPS:
+        raise IdentifyError("the bag's longest run of consecutive states is %d steps (%.1f s): identify needs %d "
+                            "(%.0f s); record a longer flight" % (len(X), len(X) * loop["Ts"], MIN_STEPS,
+                                                                   MIN_STEPS * loop["Ts"]))
+    delay, tried = core.best_delay(lambda d: core.fit_bebop2(X, U, loop["Ts"], d, window), max_delay)
+    result = tried[delay]
+    result["actuation_delay_samples"] = delay
+    result["residual_by_delay"] = {d: tried[d]["rss"] for d in tried}
+    result["series"] = (X, U)
+    return result, None
+
+
+def nominal_vehicle(vehicle):
+    import yaml
+    from aurora.simulation import config_dir
+    path = os.path.join(config_dir(), "vehicles", vehicle + ".yaml")
+    with open(path) as f:
+        return path, yaml.safe_load(f)
+
+
+def key_value(tree, key):
+    group, name = key.split(".")
+    return float(tree[group][name])
+
+
+def parameter_table(model, nominal):
+    """Each parameter by key: value, stderr, nominal, identified (excited
+    axis, positive, standard error below a tenth of the value) and why not."""
+    table = {}
+    for key in core.BEBOP2_KEYS:
+        value, stderr = model["parameters"][key]
+        axis = key.split(".")[1]
+        excited = model["spread"][axis] >= core.MIN_EXCITATION
+        ok = excited and value > 0 and stderr < 0.1 * value
+        why = ("" if ok else "its axis was not excited (command spread %.3g < %g)" % (model["spread"][axis],
+               core.MIN_EXCITATION) if not excited else "the fit is not determined (%.4g +- %.2g)" % (value, stderr))
+        table[key] = {"value": value if ok else key_value(nominal, key), "stderr": stderr if ok else None,
+                      "nominal": key_value(nominal, key), "identified": bool(ok)}
+        if why:
+            table[key]["why_not"] = why
+    return table
+
+
+def link_of(t, actuation_delay):
+    """The link file's content (docs/links.md): the uplink's base delay the
+    smallest steady feedback delay, its uniform jitter up to the 99th
+    percentile, its losses the cycles without a new state; the downlink's
+    delay the actuation delay (0 where it was not measured). Downlink
+    losses are not in a bag."""
+    delays = t["feedback_delays"]
+    base = int(delays.min()) if delays.size else 0
+    jitter = int(np.percentile(delays, 99)) - base if delays.size else 0
+    up = {"delay": base}
+    if jitter > 0:
+        up["jitter"] = {"kind": "uniform", "max": jitter}
+    if t["uplink_loss"] > 0:
+        up["loss"] = round(t["uplink_loss"], 6)
+    down = {"delay": int(actuation_delay)} if actuation_delay is not None else {"delay": 0}
+    return {"link": {"uplink": up, "downlink": down, "seed": 1}}
+
+
+def identify(bag, ns=None, max_delay=15, window=1, out=None):
+    """What `rosrun aurora identify` writes as identify.json, as a dict;
+    with `out`, the files too. Raises ValueError on bad input."""
+    try:
+        name, loop = read_loop(bag, ns)
+        if len(loop["state_steps"]) < MIN_STEPS:
+            raise IdentifyError("bag '%s' holds %d states of %s (%.1f s): identify needs %d (%.0f s)"
+                                % (bag, len(loop["state_steps"]), name, len(loop["state_steps"]) * loop["Ts"],
+                                   MIN_STEPS, MIN_STEPS * loop["Ts"]))
+        result = summary(bag, name, loop, max_delay, window)
+    except IdentifyError as e:
+        raise ValueError(str(e)) from None
+    if out is not None:
+        write_all(out, result)
+    return result["json"]
+
+
+def summary(bag, name, loop, max_delay, window):
+    t = timing(loop)
+    model, not_fitted = fitted_model(loop, max_delay, window)
+    j = {"vehicle": loop["vehicle"], "bag": os.path.abspath(bag), "namespace": name, "sample_time_s": loop["Ts"],
+         "feedback_delay_samples": int(round(t["feedback_delay_samples"]["median"])),
+         "feedback_delay_distribution": t["feedback_delay_samples"], "actuation_delay_samples": None,
+         "state_stream": t["state_stream"], "command_stream": t["command_stream"], "uplink_loss": t["uplink_loss"],
+         "parameters": {}, "fit": {}, "model": not_fitted or "identified"}
+    vehicle_file = None
+    if model:
+        nominal_path, nominal = nominal_vehicle(loop["vehicle"])
+        j["parameters"] = parameter_table(model, nominal)
+        j["fit"] = {axis: f["nrmse"] for axis, f in model["fit"].items()}
+        j["nominal_vehicle_file"] = nominal_path
+        if any(p["identified"] for p in j["parameters"].values()):
+            vehicle_file = vehicle_yaml(nominal, j["parameters"])
+            j["actuation_delay_samples"] = model["actuation_delay_samples"]  # measured by a fit that fits
+            j["residual_by_actuation_delay"] = {str(d): r for d, r in model["residual_by_delay"].items()}
+        else:
+            j["model"] = "nothing identifiable: " + "; ".join(
+                "%s: %s" % (k, p["why_not"]) for k, p in j["parameters"].items())
+    j["link"] = link_of(t, j["actuation_delay_samples"])["link"]
+    j["vehicle_file_written"] = vehicle_file is not None
+    return {"json": j, "timing": t, "model": model if vehicle_file is not None else None, "vehicle_file": vehicle_file}
+
+
+def vehicle_yaml(nominal, parameters):
+    """The bag's vehicle file: the nominal one with the identified values."""
+    import copy
+    v = copy.deepcopy(nominal)
+    for key, p in parameters.items():
+        group, name = key.split(".")
+        v[group][name] = p["value"]
+    return v
+
+
+def write_all(out, result):
+    """Every file into a fresh folder beside `out`, then moved in: an
+    interrupted run leaves nothing half-written."""
+    os.makedirs(out, exist_ok=True)
+    stage = tempfile.mkdtemp(prefix=".identify_", dir=out)
+    try:
+        write_files(stage, result)
+        for f in os.listdir(stage):
+            os.replace(os.path.join(stage, f), os.path.join(out, f))
+        if result["vehicle_file"] is None and os.path.exists(os.path.join(out, "vehicle.yaml")):
+            os.remove(os.path.join(out, "vehicle.yaml"))  # an earlier run's: not this bag's
+    finally:
+        shutil.rmtree(stage, ignore_errors=True)
+
+
+def write_files(d, result):
+    import yaml
+    j = result["json"]
+    with open(os.path.join(d, "identify.json"), "w") as f:
+        json.dump(j, f, indent=2)
+    with open(os.path.join(d, "link.yaml"), "w") as f:
+        f.write("# The link identified from bag %s (rosrun aurora identify; docs/identify.md)\n" % j["bag"])
+        yaml.safe_dump({"link": j["link"]}, f, sort_keys=False)
+    if result["vehicle_file"] is not None:
+        with open(os.path.join(d, "vehicle.yaml"), "w") as f:
+            f.write("# %s identified from bag %s (rosrun aurora identify; docs/identify.md): the nominal file's\n"
+                    "# values where an axis was not excited\n" % (j["vehicle"], j["bag"]))
+            yaml.safe_dump(result["vehicle_file"], f, sort_keys=False)
+    figures(d, result)
+    with open(os.path.join(d, "report.md"), "w") as f:
+        f.write(markdown(j))
+
+
+def figures(d, result):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    t = result["timing"]
+    fig, ax = plt.subplots(1, 2, figsize=(10, 3.5))
+    delays = t["feedback_delays"]
+    if delays.size:
+        ax[0].hist(delays, bins=np.arange(delays.min() - 0.5, delays.max() + 1.5, 1.0))
+    ax[0].set_xlabel("feedback delay [samples]"), ax[0].set_ylabel("cycles")
+    ax[1].plot(t["state_intervals"], lw=0.8)
+    ax[1].set_xlabel("state message"), ax[1].set_ylabel("interval [s]")
+    fig.tight_layout(), fig.savefig(os.path.join(d, "timing.png")), plt.close(fig)
+    if result["model"]:
+        fit_figure(plt, d, result)
+
+
+def fit_figure(plt, d, result):
+    """Each axis's measured acceleration and the identified model's."""
+    X, U = result["model"]["series"]
+    Ts, delay = result["json"]["sample_time_s"], result["json"]["actuation_delay_samples"]
+    rows, _ = core.bebop2_rows(X, U, Ts, delay)
+    theta = result["model"]["parameters"]
+    fig, ax = plt.subplots(3, 1, figsize=(10, 7), sharex=False)
+    for a, (axis, keys) in zip(ax, (("xy", ("input_gain.x", "input_gain.y", "damping.x", "damping.y")),
+                                    ("z", ("input_gain.z", "damping.z")), ("yaw", ("input_gain.yaw", "damping.yaw")))):
+        A, y = rows[axis]
+        a.plot(y, lw=0.8, label="measured")
+        a.plot(A @ np.array([theta[k][0] for k in keys]), lw=0.8, label="identified model")
+        a.set_ylabel(axis + " acceleration"), a.legend(loc="upper right")
+    ax[-1].set_xlabel("sample")
+    fig.tight_layout(), fig.savefig(os.path.join(d, "fit.png")), plt.close(fig)
+
+
+def markdown(j):
+    lines = ["# Identified loop: %s (%s)" % (j["namespace"], j["vehicle"]), "", "Bag: `%s`" % j["bag"], "",
+             "## Timing", "", "| quantity | value |", "|---|---|",
+             "| feedback delay (median) | %d samples |" % j["feedback_delay_samples"],
+             "| actuation delay (best fit) | %s |" % ("%d samples" % j["actuation_delay_samples"]
+                                                     if j["actuation_delay_samples"] is not None else "not measured"),
+             "| state stream | %.2f Hz, %d lost of %d steps (longest burst %d) |" % (
+                 j["state_stream"]["rate_hz"] or 0.0, j["state_stream"]["lost"], j["state_stream"]["steps_spanned"],
+                 j["state_stream"]["longest_burst"]),
+             "| cycles without a new state | %.4f |" % j["uplink_loss"], "",
+             "`link.yaml`: `%s`" % json.dumps(j["link"]), "", "## Model", "", j["model"], ""]
+    if j["parameters"]:
+        lines += ["| parameter | identified | stderr | nominal |", "|---|---|---|---|"]
+        for k, p in j["parameters"].items():
+            lines.append("| %s | %s | %s | %.6g |" % (k, "%.6g" % p["value"] if p["identified"] else "— (%s)" % p["why_not"],
+                                                      "%.2g" % p["stderr"] if p["stderr"] is not None else "—", p["nominal"]))
+        lines += ["", "Fit (NRMSE per axis): " + ", ".join("%s %.3g" % kv for kv in j["fit"].items()), ""]
+    return "\n".join(lines) + "\n"
+
+
+def main(argv):
+    args = parse_args(argv)
+    try:
+        j = identify(args.bag, args.ns, args.max_delay, args.window, args.out)
+    except ValueError as e:
+        print("identify: %s" % e, file=sys.stderr)
+        return 2
+    print("identify: %s (%s): feedback delay %d samples, actuation delay %s; %s; wrote %s" % (
+        j["namespace"], j["vehicle"], j["feedback_delay_samples"],
+        "%d samples" % j["actuation_delay_samples"] if j["actuation_delay_samples"] is not None else "not measured",
+        j["model"], args.out))
+    return 0

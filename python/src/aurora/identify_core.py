@@ -1,0 +1,151 @@
+"""The identification core (docs/identify.md), ROS-free: the loop's timing
+and a vehicle's parameters from arrays a recorded flight gives (the bag
+reading is aurora.identify's). Every function takes numpy arrays and
+returns plain values; nothing reads a clock or a file.
+
+- Timing (docs/identify.md, "Timing"): the feedback delay of each cycle is
+  the step the controller had minus the step of the state it used (eq. I1);
+  a stream's rate, jitter and losses come from its messages' steps and
+  stamps (eq. I2).
+- The Bebop 2's model (docs/bebop2.md) is linear in its input gains and
+  damping: a = F(psi) Ku U - Kv v, least squares per axis (eq. I3) over
+  velocities and accelerations differenced from positions (eq. I4), the
+  actuation delay the whole samples that fit best (eq. I5)."""
+import math
+
+import numpy as np
+
+# The Bebop 2's parameters by vehicle-file key, in the regression's order.
+BEBOP2_KEYS = ("input_gain.x", "input_gain.y", "input_gain.z", "input_gain.yaw",
+               "damping.x", "damping.y", "damping.z", "damping.yaw")
+# A command whose standard deviation is below this excites nothing (fractions of cmd_vel).
+MIN_EXCITATION = 0.02
+
+
+def percentiles(values):
+    """The distribution's summary: median, p5, p95, min, max, mean (empty: None)."""
+    v = np.asarray(values, dtype=float)
+    if v.size == 0:
+        return None
+    p5, p50, p95 = np.percentile(v, [5, 50, 95])
+    return {"median": float(p50), "p5": float(p5), "p95": float(p95), "min": float(v.min()),
+            "max": float(v.max()), "mean": float(v.mean())}
+
+
+def feedback_delays(newest_steps, used_steps):
+    """Eq. I1: each cycle's feedback delay [samples], the newest state's step
+    minus the step of the state the law used."""
+    return np.asarray(newest_steps, dtype=np.int64) - np.asarray(used_steps, dtype=np.int64)
+
+
+def loss_bursts(steps):
+    """The runs of missing steps between consecutive messages (each a burst's length)."""
+    s = np.unique(np.asarray(steps, dtype=np.int64))
+    gaps = np.diff(s) - 1
+    return gaps[gaps > 0]
+
+
+def stream_timing(steps, stamps, Ts):
+    """Eq. I2: a stream's messages (their steps and stamps [s]): rate [Hz],
+    the intervals' distribution [s], jitter (the intervals' standard
+    deviation) [s], the share of steps missing and their bursts."""
+    steps = np.asarray(steps, dtype=np.int64)
+    stamps = np.asarray(stamps, dtype=float)
+    if steps.size < 2:
+        raise ValueError("a stream of %d message(s): at least 2 are needed to measure its timing" % steps.size)
+    intervals = np.diff(stamps)
+    span = int(steps.max() - steps.min()) + 1
+    bursts = loss_bursts(steps)
+    lost = int(bursts.sum())
+    return {"messages": int(steps.size), "rate_hz": float((steps.size - 1) / (stamps[-1] - stamps[0]))
+            if stamps[-1] > stamps[0] else None, "interval_s": percentiles(intervals),
+            "jitter_s": float(np.std(intervals)), "expected_interval_s": Ts, "steps_spanned": span,
+            "lost": lost, "loss_rate": lost / span, "bursts": int(bursts.size),
+            "longest_burst": int(bursts.max()) if bursts.size else 0,
+            "mean_burst": float(bursts.mean()) if bursts.size else 0.0}
+
+
+def differences(positions, Ts):
+    """Eq. I4: v_k = (p_k - p_(k-1)) / Ts and a_k = (v_(k+1) - v_k) / Ts for
+    k = 1 .. n - 2 (the models' semi-implicit Euler step: its velocity
+    after a step is its position's difference). Returns v_k, a_k."""
+    v = np.diff(positions, axis=0) / Ts  # v[j] = v_(j+1)
+    a = np.diff(v, axis=0) / Ts          # a[j] = a_(j+1)
+    return v[:-1], a
+
+
+def windowed(A, y, window):
+    """Eq. I4's sums over blocks of `window` steps: sum a_k = (v_(k+N) -
+    v_k) / Ts telescopes, so a position's noise enters each block twice
+    instead of each step (1: the steps as they are)."""
+    if window <= 1:
+        return A, y
+    n = len(y) // window * window
+    return (A[:n].reshape(-1, window, A.shape[1]).sum(axis=1), y[:n].reshape(-1, window).sum(axis=1))
+
+
+def least_squares(A, y):
+    """theta, its standard errors, the residual's RMS and the NRMSE (the
+    residual's RMS over y's standard deviation)."""
+    theta, _, rank, _ = np.linalg.lstsq(A, y, rcond=None)
+    r = y - A @ theta
+    dof = max(len(y) - A.shape[1], 1)
+    sigma2 = float(r @ r) / dof
+    try:
+        cov = sigma2 * np.linalg.inv(A.T @ A)
+        stderr = np.sqrt(np.maximum(np.diag(cov), 0.0))
+    except np.linalg.LinAlgError:
+        stderr = np.full(A.shape[1], np.inf)
+    rms = math.sqrt(float(r @ r) / len(y))
+    spread = float(np.std(y))
+    return theta, stderr, rms, (rms / spread if spread > 0 else float("inf")), rank
+
+
+def bebop2_rows(X, U, Ts, delay, window=1):
+    """Eq. I3's regressors and outputs of a Bebop 2 flight: states X (n x
+    12, docs/bebop2.md), the commands sent U (n x 4, row k sent at step k),
+    the actuation delay `delay` [samples]: step k applies U_(k - delay).
+    Returns {axis: (A, y)} for 'xy' (Ku_x, Ku_y, Kv_x, Kv_y), 'z', 'yaw',
+    each summed over blocks of `window` steps (eq. I4), and the commands."""
+    p = np.column_stack([X[:, 0], X[:, 1], X[:, 2], np.unwrap(X[:, 5])])
+    v, a = differences(p, Ts)                       # k = 1 .. n - 2
+    k = np.arange(1, len(X) - 1)
+    keep = k - delay >= 0
+    k, v, a = k[keep], v[keep], a[keep]
+    u = U[k - delay]
+    psi = p[k, 3]
+    c, s = np.cos(psi), np.sin(psi)
+    zero = np.zeros_like(c)
+    # a_x = c Ku_x u1 - s Ku_y u2 - Kv_x v_x ; a_y = s Ku_x u1 + c Ku_y u2 - Kv_y v_y
+    rows_x = windowed(np.column_stack([c * u[:, 0], -s * u[:, 1], -v[:, 0], zero]), a[:, 0], window)
+    rows_y = windowed(np.column_stack([s * u[:, 0], c * u[:, 1], zero, -v[:, 1]]), a[:, 1], window)
+    xy = (np.vstack([rows_x[0], rows_y[0]]), np.concatenate([rows_x[1], rows_y[1]]))
+    return {"xy": xy, "z": windowed(np.column_stack([u[:, 2], -v[:, 2]]), a[:, 2], window),
+            "yaw": windowed(np.column_stack([u[:, 3], -v[:, 3]]), a[:, 3], window)}, u
+
+
+def fit_bebop2(X, U, Ts, delay, window=1):
+    """The Bebop 2's eight parameters at actuation delay `delay`: {key:
+    (value, stderr)}, each axis's NRMSE and RMS, and the commands' spread
+    per axis (what excited it)."""
+    rows, u = bebop2_rows(X, U, Ts, delay, window)
+    order = {"xy": ("input_gain.x", "input_gain.y", "damping.x", "damping.y"),
+             "z": ("input_gain.z", "damping.z"), "yaw": ("input_gain.yaw", "damping.yaw")}
+    params, fit, rss = {}, {}, 0.0
+    for axis, (A, y) in rows.items():
+        theta, stderr, rms, nrmse, _ = least_squares(A, y)
+        for key, value, e in zip(order[axis], theta, stderr):
+            params[key] = (float(value), float(e))
+        fit[axis] = {"nrmse": nrmse, "rms": rms, "samples": int(len(y))}
+        rss += rms * rms * len(y)
+    spread = {"x": float(np.std(u[:, 0])), "y": float(np.std(u[:, 1])), "z": float(np.std(u[:, 2])),
+              "yaw": float(np.std(u[:, 3]))}
+    return {"parameters": params, "fit": fit, "rss": rss, "spread": spread}
+
+
+def best_delay(fit_at, max_delay):
+    """Eq. I5: the actuation delay [samples] in 0 .. max_delay whose fit
+    leaves the smallest residual, with every delay's residual."""
+    tried = {d: fit_at(d) for d in range(max_delay + 1)}
+    best = min(tried, key=lambda d: tried[d]["rss"])
+    return best, tried

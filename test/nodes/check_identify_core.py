@@ -1,0 +1,117 @@
+#!/usr/bin/python3
+"""The identification core (aurora.identify_core, docs/identify.md) on
+synthetic series with known answers (issue 52, item 2): flights of the
+product's own simulator (aurora.simulate) of a modified Bebop 2, streams
+with losses and jitter made to measure."""
+import os
+import unittest
+
+import numpy as np
+import rostest
+
+import aurora
+from aurora import identification, identify_core as core
+
+HERE = os.path.dirname(os.path.realpath(__file__))
+MODIFIED = os.path.join(HERE, "..", "config", "identify", "bebop2_modified.yaml")
+TS = 1.0 / 30.0
+
+
+def modified():
+    import yaml
+    with open(MODIFIED) as f:
+        return yaml.safe_load(f)
+
+
+def flown(vehicle=MODIFIED, task="bebop2_waypoints"):
+    f = aurora.simulate("bebop2_compensator", task, vehicle=vehicle)
+    return f.states, f.commands
+
+
+class FitTest(unittest.TestCase):
+    def test_the_bebop2s_parameters_are_found_exactly_without_noise(self):
+        X, U = flown()
+        fit = core.fit_bebop2(X, U, TS, 0)
+        want = modified()
+        for key, (value, stderr) in fit["parameters"].items():
+            group, name = key.split(".")
+            self.assertAlmostEqual(value, want[group][name], delta=1e-9 * want[group][name], msg=key)
+        self.assertLess(max(f["nrmse"] for f in fit["fit"].values()), 1e-9)
+
+    def test_the_actuation_delay_is_the_best_fits(self):
+        X, U = flown()
+        for delay in (0, 2, 5):
+            sent = np.vstack([U[delay:], np.zeros((delay, 4))])  # sent at k, applied at k + delay
+            best, tried = core.best_delay(lambda d: core.fit_bebop2(X, sent, TS, d), 8)
+            self.assertEqual(best, delay)
+            self.assertEqual(len(tried), 9)
+
+    def test_with_position_noise_blocks_of_steps_keep_the_parameters_close(self):
+        """1 mm of position noise (a motion capture's): differenced twice it swamps the accelerations, so
+        step by step (--window 1) the fit fails (damping off by 10 to 25 times); summed over blocks of 15
+        steps (eq. I4) the input gains and the z and yaw damping stay within 5 % (measured: at most 4.7 %),
+        the horizontal damping within 25 % (measured 3.2 % x, 17.7 % y: this 30 s flight holds the drone
+        nearly still at its waypoints, so little drag is seen; docs/identify.md, "Accuracy")."""
+        X, U = flown()
+        noisy = X.copy()
+        rng = np.random.default_rng(52)
+        noisy[:, 0:3] += rng.normal(0.0, 1e-3, size=(len(X), 3))
+        noisy[:, 5] += rng.normal(0.0, 1e-3, size=len(X))
+        want = modified()
+
+        def errors(window):
+            fit = core.fit_bebop2(noisy, U, TS, 0, window=window)["parameters"]
+            return {k: abs(fit[k][0] / want[k.split(".")[0]][k.split(".")[1]] - 1.0) for k in fit}
+        blocks = errors(15)
+        print("1 mm noise, blocks of 15 steps: parameter errors %s" % {k: round(e, 4) for k, e in blocks.items()})
+        for key, e in blocks.items():
+            self.assertLess(e, 0.25 if key in ("damping.x", "damping.y") else 0.05, key)
+        self.assertGreater(max(errors(1).values()), 1.0)
+
+    def test_an_axis_not_excited_keeps_its_nominal_value(self):
+        X, U = flown()
+        U = U.copy()
+        U[:, 3] = 0.0  # no yaw command: the yaw's parameters are not identifiable
+        nominal = {"input_gain": {"x": 1, "y": 1, "z": 1, "yaw": 9.8524}, "damping": {"x": 1, "y": 1, "z": 1, "yaw": 4.7295}}
+        table = identification.parameter_table(core.fit_bebop2(X, U, TS, 0), nominal)
+        for key in ("input_gain.yaw", "damping.yaw"):
+            self.assertFalse(table[key]["identified"], key)
+            self.assertEqual(table[key]["value"], table[key]["nominal"])
+            self.assertIn("not excited", table[key]["why_not"])
+            self.assertIsNone(table[key]["stderr"])
+        self.assertTrue(table["input_gain.x"]["identified"])
+
+
+class TimingTest(unittest.TestCase):
+    def test_feedback_delays_are_step_differences(self):
+        self.assertEqual(list(core.feedback_delays([10, 11, 12], [7, 7, 10])), [3, 4, 2])
+
+    def test_a_streams_losses_bursts_and_jitter(self):
+        steps = np.arange(1000)
+        lost = set(range(100, 105)) | {300} | set(range(700, 720))
+        kept = np.array([s for s in steps if s not in lost])
+        rng = np.random.default_rng(7)
+        stamps = kept * TS + rng.uniform(-0.002, 0.002, size=len(kept))
+        t = core.stream_timing(kept, stamps, TS)
+        self.assertEqual(t["lost"], 26)
+        self.assertAlmostEqual(t["loss_rate"], 26 / 1000)
+        self.assertEqual((t["bursts"], t["longest_burst"]), (3, 20))
+        self.assertAlmostEqual(t["mean_burst"], 26 / 3)
+        self.assertAlmostEqual(t["rate_hz"], (len(kept) - 1) / (stamps[-1] - stamps[0]))
+        self.assertGreater(t["jitter_s"], 0.0)
+        with self.assertRaises(ValueError):
+            core.stream_timing([5], [0.0], TS)
+
+    def test_the_link_file_of_a_timing(self):
+        t = {"feedback_delays": np.array([3] * 95 + [4] * 3 + [5] * 2), "uplink_loss": 0.02}
+        link = identification.link_of(t, 2)["link"]
+        self.assertEqual(link["uplink"], {"delay": 3, "jitter": {"kind": "uniform", "max": 2}, "loss": 0.02})
+        self.assertEqual(link["downlink"], {"delay": 2})
+
+
+class IdentifyCoreTests(FitTest, TimingTest):
+    """Both, for rostest (which runs one TestCase class)."""
+
+
+if __name__ == "__main__":
+    rostest.rosrun("aurora_tests", "identify_core", IdentifyCoreTests)

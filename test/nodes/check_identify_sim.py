@@ -1,0 +1,114 @@
+#!/usr/bin/python3
+"""identify_sim.test (issue 52, item 3): a lockstep flight of a Bebop 2 whose
+vehicle file differs from the nominal one (input gains and damping -20 % ..
++20 %, test/config/identify/bebop2_modified.yaml), delay:=3, over a link whose
+downlink delay is 2, recorded; `rosrun aurora identify` finds feedback 3 and
+actuation 2 samples and the modified parameters, writes a link file and a
+vehicle file that flight takes, and aurora.identify returns the same; bad
+input is refused naming what is missing, with nothing written."""
+import json
+import os
+import subprocess
+import sys
+import tempfile
+import unittest
+
+import rospy
+import rostest
+import yaml
+
+sys.path.insert(0, os.path.dirname(os.path.realpath(__file__)))
+from bag_helpers import record_until, run_tool  # noqa: E402
+
+HERE = os.path.dirname(os.path.realpath(__file__))
+MODIFIED = os.path.join(HERE, "..", "config", "identify", "bebop2_modified.yaml")
+
+
+def edited(bag, folder, name, last_step=None, vehicle=None, formation=False, drop=None, zero_commands=False):
+    """A copy of `bag` cut after `last_step`, its Control.vehicle renamed, a
+    formation topic added, a topic dropped, or every command sent zero."""
+    import rosbag
+    from aurora_msgs.msg import Formation
+    path = os.path.join(folder, name + ".bag")
+    with rosbag.Bag(bag) as src, rosbag.Bag(path, "w") as dst:
+        for topic, msg, t in src.read_messages():
+            if topic == drop or (last_step is not None and getattr(msg, "step", 0) > last_step):
+                continue
+            if topic.endswith("/control"):
+                if vehicle:
+                    msg.vehicle = vehicle
+                if zero_commands:
+                    msg.command_sent = [0.0] * 4
+            dst.write(topic, msg, t)
+            if formation:
+                dst.write("/formation/formation", Formation(), t)
+                formation = False
+    return path
+
+
+class IdentifySimTest(unittest.TestCase):
+    def test_identifies_the_delays_and_the_modified_vehicle(self):
+        p = lambda name: rospy.get_param("~" + name)  # noqa: E731
+        bag = record_until(p("steps"), p("bag_dir"), p("prefix"))
+        out = tempfile.mkdtemp(prefix="identify_")
+        rc, text = run_tool(["rosrun", "aurora", "identify", bag, "--out", out])
+        self.assertEqual(rc, 0, text)
+        self.assertIn("feedback delay 3 samples, actuation delay 2 samples", text)
+        j = json.load(open(os.path.join(out, "identify.json")))
+        self.assertEqual(j["vehicle"], "bebop2")
+        self.assertEqual(j["feedback_delay_samples"], 3)
+        self.assertEqual(j["actuation_delay_samples"], 2)
+        modified = yaml.safe_load(open(MODIFIED))
+        for key, par in j["parameters"].items():
+            group, name = key.split(".")
+            want = modified[group][name]
+            self.assertTrue(par["identified"], (key, par))
+            self.assertLess(abs(par["value"] - want), 0.05 * want, (key, par["value"], want, par["nominal"]))
+            self.assertGreater(abs(par["nominal"] - want), 0.15 * want, key)  # the nominal one is far off
+        self.assertEqual(j["link"]["uplink"]["delay"], 3)
+        self.assertEqual(j["link"]["downlink"]["delay"], 2)
+        for f in ("link.yaml", "vehicle.yaml", "report.md", "timing.png", "fit.png"):
+            self.assertTrue(os.path.isfile(os.path.join(out, f)), f)
+        # The files are the product's own: flight takes them as they are.
+        rc, text = run_tool(["rosrun", "aurora_control", "flight", "--vehicle", os.path.join(out, "vehicle.yaml"),
+                             "--controller", "bebop2_compensator", "--task", "bebop2_waypoints",
+                             "--link", os.path.join(out, "link.yaml")])
+        self.assertEqual(rc, 0, text)
+        import aurora
+        self.assertEqual(aurora.identify(bag)["parameters"], j["parameters"])
+        self.check_bad_input(bag)
+
+    def check_bad_input(self, bag):
+        with tempfile.TemporaryDirectory() as tmp:
+            out = os.path.join(tmp, "out")
+            for name, edit, said in (
+                    ("short", {"last_step": 200}, "holds 201 states of /bebop1 (6.7 s): identify needs 300"),
+                    ("unknown", {"vehicle": "crazyflie"}, "vehicle 'crazyflie' (the bag's Control.vehicle) is unknown"),
+                    ("formation", {"formation": True}, "is a formation's: identify one robot at a time with --ns"),
+                    ("nostate", {"drop": "/bebop1/state"}, "lacks the topics identify needs: missing /bebop1/state")):
+                rc, text = run_tool(["rosrun", "aurora", "identify", edited(bag, tmp, name, **edit), "--out", out])
+                self.assertEqual(rc, 2, text)
+                self.assertIn(said, text)
+                self.assertFalse(os.path.exists(out), name)
+            # A hover (no command moves the drone): the timing is measured, no parameter is identified and
+            # no vehicle file is written; each parameter says why.
+            rc, text = run_tool(["rosrun", "aurora", "identify", edited(bag, tmp, "hover", zero_commands=True),
+                                 "--out", out])
+            self.assertEqual(rc, 0, text)
+            self.assertIn("nothing identifiable: input_gain.x: its axis was not excited", text)
+            self.assertFalse(os.path.exists(os.path.join(out, "vehicle.yaml")))
+            self.assertTrue(os.path.exists(os.path.join(out, "link.yaml")))
+            out = os.path.join(tmp, "args")
+            for args, said in (([os.path.join(tmp, "none.bag")], "does not exist"),
+                               ([bag, "--ns", "ardrone7"], "missing /ardrone7/state"),
+                               ([bag, "--max-delay", "-1"], "--max-delay -1 is refused"),
+                               ([bag, "--window", "0"], "--window 0 is refused")):
+                rc, text = run_tool(["rosrun", "aurora", "identify"] + args + ["--out", out])
+                self.assertEqual(rc, 2, text)
+                self.assertIn(said, text)
+                self.assertFalse(os.path.exists(os.path.join(out, "identify.json")), args)
+
+
+if __name__ == "__main__":
+    rospy.init_node("check_identify_sim")
+    rostest.rosrun("aurora_tests", "identify_sim", IdentifySimTest)
