@@ -82,6 +82,29 @@ class FitTest(unittest.TestCase):
         self.assertTrue(table["input_gain.x"]["identified"])
 
 
+class PioneerFitTest(unittest.TestCase):
+    """Eq. I6: the Pioneer's theta1..theta6 from a drive of the simulator (pioneer_lemniscate) of a Pioneer
+    whose thetas differ from the nominal ones by -20 % .. +20 %."""
+
+    def test_the_pioneers_thetas_and_actuation_delay_are_found(self):
+        import yaml
+        path = os.path.join(HERE, "..", "config", "identify", "pioneer3dx_modified.yaml")
+        want = yaml.safe_load(open(path))["dynamics"]
+        f = aurora.simulate("pioneer_dynamic", "pioneer_lemniscate", vehicle=path)
+        X, U, Ts = f.states, f.commands, f.sample_time
+        for delay in (0, 3):
+            sent = np.vstack([U[delay:], np.zeros((delay, 2))])
+            best, tried = core.best_delay(lambda d: core.fit_pioneer(X, sent, Ts, d), 6)
+            self.assertEqual(best, delay)
+            for key, (value, _) in tried[best]["parameters"].items():
+                name = key.split(".")[1]
+                self.assertAlmostEqual(value, want[name], delta=1e-9 * abs(want[name]), msg=key)
+        nominal = {"dynamics": {"theta%d" % i: 1.0 for i in range(1, 7)}}
+        table = identification.parameter_table(core.fit_pioneer(X, U, Ts, 0), nominal)
+        self.assertTrue(all(p["identified"] for p in table.values()), table)
+        self.assertLess(table["dynamics.theta3"]["value"], 0.0)  # signed: no positivity asked
+
+
 class TimingTest(unittest.TestCase):
     def test_feedback_delays_are_step_differences(self):
         self.assertEqual(list(core.feedback_delays([10, 11, 12], [7, 7, 10])), [3, 4, 2])
@@ -109,7 +132,7 @@ class TimingTest(unittest.TestCase):
         self.assertEqual(link["downlink"], {"delay": 2})
 
 
-class IdentifyCoreTests(FitTest, TimingTest):
+class IdentifyCoreTests(FitTest, PioneerFitTest, TimingTest):
     """Both, for rostest (which runs one TestCase class)."""
 
 

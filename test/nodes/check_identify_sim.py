@@ -1,11 +1,12 @@
 #!/usr/bin/python3
-"""identify_sim.test (issue 52, item 3): a lockstep flight of a Bebop 2 whose
-vehicle file differs from the nominal one (input gains and damping -20 % ..
-+20 %, test/config/identify/bebop2_modified.yaml), delay:=3, over a link whose
-downlink delay is 2, recorded; `rosrun aurora identify` finds feedback 3 and
-actuation 2 samples and the modified parameters, writes a link file and a
-vehicle file that flight takes, and aurora.identify returns the same; bad
-input is refused naming what is missing, with nothing written."""
+"""identify_sim.test, identify_sim_pioneer.test (issue 52, item 3): a
+lockstep flight of a Bebop 2 (a drive of a Pioneer) whose vehicle file
+differs from the nominal one by -20 % .. +20 % (~vehicle_file), with a
+feedback delay (~feedback) over a link whose downlink delay is ~actuation,
+recorded; `rosrun aurora identify` finds both delays and the modified
+parameters, writes a link file and a vehicle file that flight takes, and
+aurora.identify returns the same; with ~bad_input, bad bags are refused
+naming what is missing, with nothing written."""
 import json
 import os
 import subprocess
@@ -20,8 +21,6 @@ import yaml
 sys.path.insert(0, os.path.dirname(os.path.realpath(__file__)))
 from bag_helpers import record_until, run_tool  # noqa: E402
 
-HERE = os.path.dirname(os.path.realpath(__file__))
-MODIFIED = os.path.join(HERE, "..", "config", "identify", "bebop2_modified.yaml")
 
 
 def edited(bag, folder, name, last_step=None, vehicle=None, formation=False, drop=None, zero_commands=False):
@@ -53,30 +52,31 @@ class IdentifySimTest(unittest.TestCase):
         out = tempfile.mkdtemp(prefix="identify_")
         rc, text = run_tool(["rosrun", "aurora", "identify", bag, "--out", out])
         self.assertEqual(rc, 0, text)
-        self.assertIn("feedback delay 3 samples, actuation delay 2 samples", text)
+        self.assertIn("feedback delay %d samples, actuation delay %d samples" % (p("feedback"), p("actuation")), text)
         j = json.load(open(os.path.join(out, "identify.json")))
-        self.assertEqual(j["vehicle"], "bebop2")
-        self.assertEqual(j["feedback_delay_samples"], 3)
-        self.assertEqual(j["actuation_delay_samples"], 2)
-        modified = yaml.safe_load(open(MODIFIED))
+        modified = yaml.safe_load(open(p("vehicle_file")))
+        self.assertEqual(j["vehicle"], modified["type"])
+        self.assertEqual(j["feedback_delay_samples"], p("feedback"))
+        self.assertEqual(j["actuation_delay_samples"], p("actuation"))
         for key, par in j["parameters"].items():
             group, name = key.split(".")
             want = modified[group][name]
             self.assertTrue(par["identified"], (key, par))
-            self.assertLess(abs(par["value"] - want), 0.05 * want, (key, par["value"], want, par["nominal"]))
-            self.assertGreater(abs(par["nominal"] - want), 0.15 * want, key)  # the nominal one is far off
-        self.assertEqual(j["link"]["uplink"]["delay"], 3)
-        self.assertEqual(j["link"]["downlink"]["delay"], 2)
+            self.assertLess(abs(par["value"] - want), 0.05 * abs(want), (key, par["value"], want, par["nominal"]))
+            self.assertGreater(abs(par["nominal"] - want), 0.15 * abs(want), key)  # the nominal one is far off
+        self.assertEqual(j["link"]["uplink"]["delay"], p("feedback"))
+        self.assertEqual(j["link"]["downlink"]["delay"], p("actuation"))
         for f in ("link.yaml", "vehicle.yaml", "report.md", "timing.png", "fit.png"):
             self.assertTrue(os.path.isfile(os.path.join(out, f)), f)
         # The files are the product's own: flight takes them as they are.
         rc, text = run_tool(["rosrun", "aurora_control", "flight", "--vehicle", os.path.join(out, "vehicle.yaml"),
-                             "--controller", "bebop2_compensator", "--task", "bebop2_waypoints",
+                             "--controller", p("controller"), "--task", p("task"),
                              "--link", os.path.join(out, "link.yaml")])
         self.assertEqual(rc, 0, text)
         import aurora
         self.assertEqual(aurora.identify(bag)["parameters"], j["parameters"])
-        self.check_bad_input(bag)
+        if p("bad_input"):
+            self.check_bad_input(bag)
 
     def check_bad_input(self, bag):
         with tempfile.TemporaryDirectory() as tmp:

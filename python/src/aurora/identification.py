@@ -5,7 +5,7 @@
 Measures the loop's timing from the bag's stamps and steps (the feedback
 delay of each cycle, the state and command streams' rates, jitter and
 losses) and fits the vehicle's model by least squares with the actuation
-delay that fits best (the Bebop 2 today), then writes DIR/identify.json,
+delay that fits best (the Bebop 2, the Pioneer), then writes DIR/identify.json,
 DIR/link.yaml (a link file flight --link, the nodes and sweeps take),
 DIR/vehicle.yaml (where the model was identified), figures and report.md.
 The same from Python: aurora.identify(bag) returns the identify.json
@@ -24,10 +24,11 @@ from aurora import report
 
 # Fewer state steps than this identify nothing (10 s at 30 Hz).
 MIN_STEPS = 300
-# The vehicles whose model this tool fits, and those it times only.
-MODELS = {"bebop2": "Bebop 2"}
-TIMED_ONLY = {"ardrone2": "the AR.Drone's model is nonlinear (output-error fit: not yet)",
-              "pioneer3dx": "the Pioneer's theta fit is not yet in this tool"}
+# The vehicles whose model this tool fits (their fit, rows and axes), and
+# those it times only.
+MODELS = {"bebop2": (core.fit_bebop2, core.bebop2_rows, core.BEBOP2_AXES),
+          "pioneer3dx": (core.fit_pioneer, core.pioneer_rows, core.PIONEER_AXES)}
+TIMED_ONLY = {"ardrone2": "the AR.Drone's model is nonlinear (output-error fit: not yet)"}
 
 
 class IdentifyError(Exception):
@@ -152,7 +153,8 @@ def fitted_model(loop, max_delay, window):
         raise IdentifyError("the bag's longest run of consecutive states is %d steps (%.1f s): identify needs %d "
                             "(%.0f s); record a longer flight" % (len(X), len(X) * loop["Ts"], MIN_STEPS,
                                                                    MIN_STEPS * loop["Ts"]))
-    delay, tried = core.best_delay(lambda d: core.fit_bebop2(X, U, loop["Ts"], d, window), max_delay)
+    fit = MODELS[vehicle][0]
+    delay, tried = core.best_delay(lambda d: fit(X, U, loop["Ts"], d, window), max_delay)
     result = tried[delay]
     result["actuation_delay_samples"] = delay
     result["residual_by_delay"] = {d: tried[d]["rss"] for d in tried}
@@ -177,11 +179,11 @@ def parameter_table(model, nominal):
     """Each parameter by key: value, stderr, nominal, identified (excited
     axis, positive, standard error below a tenth of the value) and why not."""
     table = {}
-    for key in core.BEBOP2_KEYS:
+    for key in model["parameters"]:  # the regression's order
         value, stderr = model["parameters"][key]
-        axis = key.split(".")[1]
+        axis = core.excited_by(key)
         excited = model["spread"][axis] >= core.MIN_EXCITATION
-        ok = excited and value > 0 and stderr < 0.1 * value
+        ok = excited and (value > 0 or key in core.SIGNED) and stderr < 0.1 * abs(value)
         why = ("" if ok else "its axis was not excited (command spread %.3g < %g)" % (model["spread"][axis],
                core.MIN_EXCITATION) if not excited else "the fit is not determined (%.4g +- %.2g)" % (value, stderr))
         table[key] = {"value": value if ok else key_value(nominal, key), "stderr": stderr if ok else None,
@@ -313,18 +315,19 @@ def figures(d, result):
 
 
 def fit_figure(plt, d, result):
-    """Each axis's measured acceleration and the identified model's."""
+    """Each axis's measured output (the Bebop's accelerations, the
+    Pioneer's commands) and the identified model's."""
     X, U = result["model"]["series"]
     Ts, delay = result["json"]["sample_time_s"], result["json"]["actuation_delay_samples"]
-    rows, _ = core.bebop2_rows(X, U, Ts, delay)
+    _, rows_of, axes = MODELS[result["json"]["vehicle"]]
+    rows, _ = rows_of(X, U, Ts, delay)
     theta = result["model"]["parameters"]
-    fig, ax = plt.subplots(3, 1, figsize=(10, 7), sharex=False)
-    for a, (axis, keys) in zip(ax, (("xy", ("input_gain.x", "input_gain.y", "damping.x", "damping.y")),
-                                    ("z", ("input_gain.z", "damping.z")), ("yaw", ("input_gain.yaw", "damping.yaw")))):
+    fig, ax = plt.subplots(len(axes), 1, figsize=(10, 2.4 * len(axes)), sharex=False)
+    for a, (axis, keys) in zip(ax, axes.items()):
         A, y = rows[axis]
         a.plot(y, lw=0.8, label="measured")
         a.plot(A @ np.array([theta[k][0] for k in keys]), lw=0.8, label="identified model")
-        a.set_ylabel(axis + " acceleration"), a.legend(loc="upper right")
+        a.set_ylabel(axis), a.legend(loc="upper right")
     ax[-1].set_xlabel("sample")
     fig.tight_layout(), fig.savefig(os.path.join(d, "fit.png")), plt.close(fig)
 

@@ -15,9 +15,6 @@ import math
 
 import numpy as np
 
-# The Bebop 2's parameters by vehicle-file key, in the regression's order.
-BEBOP2_KEYS = ("input_gain.x", "input_gain.y", "input_gain.z", "input_gain.yaw",
-               "damping.x", "damping.y", "damping.z", "damping.yaw")
 # A command whose standard deviation is below this excites nothing (fractions of cmd_vel).
 MIN_EXCITATION = 0.02
 
@@ -124,23 +121,75 @@ def bebop2_rows(X, U, Ts, delay, window=1):
             "yaw": windowed(np.column_stack([u[:, 3], -v[:, 3]]), a[:, 3], window)}, u
 
 
-def fit_bebop2(X, U, Ts, delay, window=1):
-    """The Bebop 2's eight parameters at actuation delay `delay`: {key:
-    (value, stderr)}, each axis's NRMSE and RMS, and the commands' spread
-    per axis (what excited it)."""
-    rows, u = bebop2_rows(X, U, Ts, delay, window)
-    order = {"xy": ("input_gain.x", "input_gain.y", "damping.x", "damping.y"),
-             "z": ("input_gain.z", "damping.z"), "yaw": ("input_gain.yaw", "damping.yaw")}
+# Each vehicle's regression (its axes' parameters in their columns' order),
+# the command that excites each parameter's axis, and the parameters that
+# may be negative (the others are physical gains, time constants or damping).
+BEBOP2_AXES = {"xy": ("input_gain.x", "input_gain.y", "damping.x", "damping.y"),
+               "z": ("input_gain.z", "damping.z"), "yaw": ("input_gain.yaw", "damping.yaw")}
+PIONEER_KEYS = ("dynamics.theta1", "dynamics.theta2", "dynamics.theta3", "dynamics.theta4", "dynamics.theta5",
+                "dynamics.theta6")
+PIONEER_AXES = {"u": ("dynamics.theta1", "dynamics.theta3", "dynamics.theta4"),
+                "omega": ("dynamics.theta2", "dynamics.theta5", "dynamics.theta6")}
+SIGNED = {"dynamics.theta3", "dynamics.theta5"}
+
+
+def excited_by(key):
+    """The command axis that excites parameter `key` (the spread's name)."""
+    pioneer = {"dynamics.theta1": "u", "dynamics.theta3": "u", "dynamics.theta4": "u"}
+    if key.startswith("dynamics."):
+        return pioneer.get(key, "omega")
+    return key.split(".")[1]
+
+
+def fit_rows(rows, axes, spread):
+    """Least squares of each axis's rows: {key: (value, stderr)}, each axis's
+    NRMSE and RMS, the total residual, the commands' spread."""
     params, fit, rss = {}, {}, 0.0
     for axis, (A, y) in rows.items():
         theta, stderr, rms, nrmse, _ = least_squares(A, y)
-        for key, value, e in zip(order[axis], theta, stderr):
+        for key, value, e in zip(axes[axis], theta, stderr):
             params[key] = (float(value), float(e))
         fit[axis] = {"nrmse": nrmse, "rms": rms, "samples": int(len(y))}
         rss += rms * rms * len(y)
+    return {"parameters": params, "fit": fit, "rss": rss, "spread": spread}
+
+
+def fit_bebop2(X, U, Ts, delay, window=1):
+    """The Bebop 2's eight parameters at actuation delay `delay` (eq. I3)."""
+    rows, u = bebop2_rows(X, U, Ts, delay, window)
     spread = {"x": float(np.std(u[:, 0])), "y": float(np.std(u[:, 1])), "z": float(np.std(u[:, 2])),
               "yaw": float(np.std(u[:, 3]))}
-    return {"parameters": params, "fit": fit, "rss": rss, "spread": spread}
+    return fit_rows(rows, BEBOP2_AXES, spread)
+
+
+def pioneer_rows(X, U, Ts, delay, window=1):
+    """Eq. I6's regressors of a Pioneer P3-DX flight (docs/pioneer3dx.md):
+    its forward speed and turn rate from the control point's positions and
+    heading (omega_(k+1) = (psi_(k+1) - psi_k) / Ts, u_(k+1) = (dx cos psi_k +
+    dy sin psi_k) / Ts: the model's step), their differences, and the
+    commands sent U (u_ref, omega_ref) `delay` samples before. (The control
+    point's offset cancels: dx cos psi + dy sin psi is the forward speed.)"""
+    psi = np.unwrap(X[:, 5])
+    d = np.diff(np.column_stack([X[:, 0], X[:, 1], psi]), axis=0)
+    u_next = (d[:, 0] * np.cos(psi[:-1]) + d[:, 1] * np.sin(psi[:-1])) / Ts  # u_(j+1)
+    w_next = d[:, 2] / Ts
+    k = np.arange(1, len(X) - 1)
+    keep = k - delay >= 0
+    k = k[keep]
+    u, w = u_next[k - 1], w_next[k - 1]                    # u_k, omega_k
+    du, dw = (u_next[k] - u) / Ts, (w_next[k] - w) / Ts    # their steps' rates
+    cmd = U[k - delay]
+    rows = {"u": windowed(np.column_stack([du, -w * w, u]), cmd[:, 0], window),
+            "omega": windowed(np.column_stack([dw, u * w, w]), cmd[:, 1], window)}
+    return rows, cmd
+
+
+def fit_pioneer(X, U, Ts, delay, window=1):
+    """The Pioneer's theta1..theta6 at actuation delay `delay` (eq. I6):
+    u_ref = theta1 du + theta4 u - theta3 omega^2, omega_ref = theta2 domega +
+    theta5 u omega + theta6 omega."""
+    rows, cmd = pioneer_rows(X, U, Ts, delay, window)
+    return fit_rows(rows, PIONEER_AXES, {"u": float(np.std(cmd[:, 0])), "omega": float(np.std(cmd[:, 1]))})
 
 
 def best_delay(fit_at, max_delay):
