@@ -99,6 +99,44 @@ TEST(Triangle, TheInverseGivesBackAReachableFormation) {
   EXPECT_EQ(e[6], 0.0);
 }
 
+// Issue 51's float triangles: near psi = -pi/2 with a small tilt (the
+// median almost along -y, its x and z small: the orientation rows' weights
+// grow) the normal equations' Cholesky lost positive definiteness in float
+// and the law commanded NaN where double flew (about 1 % of the float
+// triangle_delay study). Solved as least squares by QR, float's J+ v and
+// JO+ y stay finite and near double's over such formations.
+TEST(Triangle, TheFloatPseudoInversesStayNearDoublesWhereTheMedianTurnsAlongY) {
+  int compared = 0;
+  double worst = 0.0;
+  for (double dpsi : {-2e-3, -3e-4, -1e-5, 0.0, 1e-5, 3e-4, 2e-3}) {
+    for (double tilt : {-3e-3, -1e-3, -1e-4, 1e-4, 1e-3, 3e-3}) {
+      const double Qd[9] = {-0.5, 0.2, 1.33, 1.72, 1.6, 0.96, 0.0, tilt, -M_PI / 2 + dpsi};
+      double X[9];
+      Triangle::positions(Qd, X);
+      float Xf[9];
+      for (int i = 0; i < 9; ++i) Xf[i] = static_cast<float>(X[i]);
+      const aurora_control::triangle_detail::TriangleJacobian<double> Jd(X);
+      const aurora_control::triangle_detail::TriangleJacobian<float> Jf(Xf);
+      const double v[9] = {0.01, -0.02, 0.003, 0.01, 0.005, -0.01, 0.002, -0.004, 0.03};
+      float vf[9], out_f[9], oy_f[9];
+      double out_d[9], oy_d[9];
+      for (int i = 0; i < 9; ++i) vf[i] = static_cast<float>(v[i]);
+      Jd.jointPinv(v, out_d), Jf.jointPinv(vf, out_f);
+      Jd.orientationPinv(v + 6, oy_d), Jf.orientationPinv(vf + 6, oy_f);
+      double scale = 0.0;
+      for (int i = 0; i < 9; ++i) scale = std::max({scale, std::fabs(out_d[i]), std::fabs(oy_d[i])});
+      for (int i = 0; i < 9; ++i) {
+        ASSERT_TRUE(std::isfinite(out_f[i]) && std::isfinite(oy_f[i])) << "dpsi " << dpsi << " tilt " << tilt;
+        worst = std::max({worst, std::fabs(out_f[i] - out_d[i]) / scale, std::fabs(oy_f[i] - oy_d[i]) / scale});
+      }
+      ++compared;
+    }
+  }
+  EXPECT_EQ(compared, 42);
+  EXPECT_LT(worst, 1e-2) << "float's pseudo-inverses against double's, relative to the largest entry";
+  std::printf("float against double: worst %.3g of the largest entry\n", worst);
+}
+
 // The closed forms are pseudo-inverses: N's J+ v gives the velocity whose
 // Q-rate is v where v is reachable (finite differences of the variables),
 // and is orthogonal to the roll about the median (J's null vector).

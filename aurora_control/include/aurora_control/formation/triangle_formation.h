@@ -57,7 +57,9 @@ struct TriangleFormation {
     const T p = triangle_detail::distance(X, X + 3), q = triangle_detail::distance(X, X + 6);
     const T r = triangle_detail::distance(X + 3, X + 6);
     Q[3] = p, Q[4] = q;
-    Q[5] = acos((p * p + q * q - r * r) / (T(2) * p * q));
+    // The cosine law's quotient within [-1, 1]: in float a narrow angle
+    // rounds it past 1 and acos gives NaN (double, in range, is unchanged).
+    Q[5] = acos(aurora_common::clampUnit((p * p + q * q - r * r) / (T(2) * p * q)));
     T m[3];
     triangle_detail::median(X, m);
     Q[6] = atan(m[2] / m[1]);

@@ -3,9 +3,9 @@
 // its null vector (the roll about the median, n_i = m x (p_i - c)) is known,
 // so J+ = (J^T J + n n^T)^-1 J^T with |n| = 1, and likewise for the
 // orientation rows JO = D [2I, -I, -I] (D m = 0; [2I, -I, -I] has
-// orthogonal rows of norm sqrt 6: JO+ = [2I, -I, -I]^T D+ / 6). The shape
-// rows JS have full rank: JS+ = JS^T (JS JS^T)^-1. Fixed loops only (host,
-// device, SIMD lanes).
+// orthogonal rows of norm sqrt 6: JO+ = [2I, -I, -I]^T D+ / 6), each solved
+// as least squares by QR (leastSquaresQr). The shape rows JS have full
+// rank: JS+ = JS^T (JS JS^T)^-1. Fixed loops only (host, device, SIMD lanes).
 #pragma once
 
 #include <cmath>
@@ -69,19 +69,63 @@ AURORA_HD inline void solveSpd(T A[N][N], T b[N]) {
   }
 }
 
+// The least-squares solution x of A x = b (A: M x N, full column rank) by
+// Householder QR, without forming A^T A: its error grows with cond(A), not
+// cond(A)^2. The pseudo-inverses with a known null direction (J's roll, D's
+// median) are such problems with that direction appended as a row
+// (min |J x - v|^2 + (n^T x)^2 has x orthogonal to n). In single precision
+// the normal equations' Cholesky lost positive definiteness where the
+// orientation rows' weights grow (psi near +-pi/2: a pivot of -3e-5, sqrt
+// of it NaN; about 1 % of the float triangle delay study diverged where
+// double flew). Branch-free (SIMD lanes: the reflector's sign by select).
+template <typename T, int M, int N>
+AURORA_HD inline void leastSquaresQr(T A[M][N], T b[M], T x[N]) {
+  using aurora_common::select;
+  using std::sqrt;
+  for (int j = 0; j < N; ++j) {
+    T below = T(0);
+    for (int i = j + 1; i < M; ++i) below = below + A[i][j] * A[i][j];
+    const T norm = sqrt(A[j][j] * A[j][j] + below);
+    const T alpha = select(A[j][j] < T(0), norm, -norm);  // the sign away from A[j][j]: no cancellation
+    const T v0 = A[j][j] - alpha;
+    const T vv = v0 * v0 + below;
+    const T tau = select(vv == T(0), T(0), T(2) / vv);
+    for (int k = j + 1; k < N; ++k) {
+      T s = v0 * A[j][k];
+      for (int i = j + 1; i < M; ++i) s = s + A[i][j] * A[i][k];
+      s = s * tau;
+      A[j][k] = A[j][k] - s * v0;
+      for (int i = j + 1; i < M; ++i) A[i][k] = A[i][k] - s * A[i][j];
+    }
+    T s = v0 * b[j];
+    for (int i = j + 1; i < M; ++i) s = s + A[i][j] * b[i];
+    s = s * tau;
+    b[j] = b[j] - s * v0;
+    for (int i = j + 1; i < M; ++i) b[i] = b[i] - s * A[i][j];
+    A[j][j] = alpha;
+  }
+  for (int i = N - 1; i >= 0; --i) {  // R x = Q^T b
+    T r = b[i];
+    for (int k = i + 1; k < N; ++k) r = r - A[i][k] * x[k];
+    x[i] = r / A[i][i];
+  }
+}
+
 template <typename T>
 class TriangleJacobian {
  public:
   AURORA_HD explicit TriangleJacobian(const T X[9]) {
-    using std::acos;
-    using std::cos;
-    using std::sin;
+    using std::sqrt;
     for (int i = 0; i < 9; ++i) X_[i] = X[i];
-    const T p = distance(X, X + 3), q = distance(X, X + 6), r = distance(X + 3, X + 6);
-    const T beta = acos((p * p + q * q - r * r) / (T(2) * p * q));
-    const T cb = cos(beta), sb = sin(beta);
-    T u12[3], u13[3];
+    const T p = distance(X, X + 3), q = distance(X, X + 6);
+    T u12[3], u13[3], c[3];
     for (int i = 0; i < 3; ++i) u12[i] = (X[i] - X[3 + i]) / p, u13[i] = (X[i] - X[6 + i]) / q;
+    // beta's cosine and sine from the unit sides (not cos and sin of the
+    // acos of the cosine law: in float its argument rounds past 1 on a
+    // narrow angle, sin then 0 and the shape rows infinite).
+    cross(u12, u13, c);
+    const T cb = u12[0] * u13[0] + u12[1] * u13[1] + u12[2] * u13[2];
+    const T sb = sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
     for (int i = 0; i < 3; ++i) {
       S_[0][i] = u12[i], S_[0][3 + i] = -u12[i], S_[0][6 + i] = T(0);
       S_[1][i] = u13[i], S_[1][3 + i] = T(0), S_[1][6 + i] = -u13[i];
@@ -137,26 +181,15 @@ class TriangleJacobian {
     for (int k = 0; k < 9; ++k) b[k] = b[k] - back[k];
   }
 
-  // J+ v (9 -> 9) for J = [JP; JS; JO]: (J^T J + n n^T)^-1 J^T v.
+  // J+ v (9 -> 9) for J = [JP; JS; JO]: the least-squares solution of
+  // [J; n^T] x = [v; 0], i.e. (J^T J + n n^T)^-1 J^T v (leastSquaresQr).
   AURORA_HD void jointPinv(const T v[9], T out[9]) const {
-    T rows[9][9];
+    T rows[10][9], b[10];
     fullRows(rows);
-    T n[9];
-    rollDirection(n);
-    // The lower triangle (all solveSpd reads) of J^T J + n n^T, the sums
-    // in the rows' order; a position row's product is nonzero only where
-    // both columns are its axis (its entries are 1/3 there, 0 elsewhere).
-    T M[9][9];
-    for (int i = 0; i < 9; ++i) {
-      out[i] = rows[i % 3][i] * v[i % 3];
-      for (int r = 3; r < 9; ++r) out[i] = out[i] + rows[r][i] * v[r];
-      for (int j = 0; j <= i; ++j) {
-        M[i][j] = n[i] * n[j];
-        if (i % 3 == j % 3) M[i][j] = M[i][j] + rows[i % 3][i] * rows[i % 3][j];
-        for (int r = 3; r < 9; ++r) M[i][j] = M[i][j] + rows[r][i] * rows[r][j];
-      }
-    }
-    solveSpd<T, 9>(M, out);
+    rollDirection(rows[9]);
+    for (int i = 0; i < 9; ++i) b[i] = v[i];
+    b[9] = T(0);
+    leastSquaresQr<T, 10, 9>(rows, b, out);
   }
 
  private:
@@ -172,23 +205,21 @@ class TriangleJacobian {
     for (int i = 0; i < 3; ++i) y[i] = D_[i][0] * Bb[0] + D_[i][1] * Bb[1] + D_[i][2] * Bb[2];
   }
 
-  // D+ y = (D^T D + mh mh^T)^-1 D^T y, mh = m / |m| (D's null direction).
+  // D+ y = (D^T D + mh mh^T)^-1 D^T y, mh = m / |m| (D's null direction):
+  // the least-squares solution of [D; mh^T] z = [y; 0] (leastSquaresQr).
   AURORA_HD void dPinv(const T y[3], T z[3]) const {
     using std::sqrt;
     const T norm = sqrt(m_[0] * m_[0] + m_[1] * m_[1] + m_[2] * m_[2]);
-    const T mh[3] = {m_[0] / norm, m_[1] / norm, m_[2] / norm};
-    T M[3][3];
+    T A[4][3], b[4] = {y[0], y[1], y[2], T(0)};
     for (int i = 0; i < 3; ++i) {
-      z[i] = D_[0][i] * y[0] + D_[1][i] * y[1] + D_[2][i] * y[2];
-      for (int j = 0; j < 3; ++j) {
-        M[i][j] = D_[0][i] * D_[0][j] + D_[1][i] * D_[1][j] + D_[2][i] * D_[2][j] + mh[i] * mh[j];
-      }
+      for (int j = 0; j < 3; ++j) A[i][j] = D_[i][j];
+      A[3][i] = m_[i] / norm;
     }
-    solveSpd<T, 3>(M, z);
+    leastSquaresQr<T, 4, 3>(A, b, z);
   }
 
   // J's nine rows: JP = (1/3)[I I I], JS, JO = D [2I, -I, -I].
-  AURORA_HD void fullRows(T rows[9][9]) const {
+  AURORA_HD void fullRows(T (*rows)[9]) const {
     for (int r = 0; r < 3; ++r) {
       for (int k = 0; k < 9; ++k) {
         rows[r][k] = k % 3 == r ? T(1) / T(3) : T(0);
@@ -200,7 +231,7 @@ class TriangleJacobian {
   }
 
   // J's null direction: n_i = m x (p_i - c), normalised.
-  AURORA_HD void rollDirection(T n[9]) const {
+  AURORA_HD void rollDirection(T* n) const {
     using std::sqrt;
     T c[3];
     for (int i = 0; i < 3; ++i) c[i] = (X_[i] + X_[3 + i] + X_[6 + i]) / T(3);
