@@ -75,8 +75,30 @@ class IdentifySimTest(unittest.TestCase):
         self.assertEqual(rc, 0, text)
         import aurora
         self.assertEqual(aurora.identify(bag)["parameters"], j["parameters"])
+        if p("study"):
+            self.check_study(bag, p("study"))
         if p("bad_input"):
             self.check_bad_input(bag)
+
+    def check_study(self, bag, study):
+        """--study: the study as shipped and with the identified vehicle and link, side by side."""
+        out = tempfile.mkdtemp(prefix="identify_study_")
+        rc, text = run_tool(["rosrun", "aurora", "identify", bag, "--out", out, "--study", study])
+        self.assertEqual(rc, 0, text)
+        self.assertIn("identify: study %s.yaml: " % study, text)
+        s = json.load(open(os.path.join(out, "identify.json")))["study"]
+        identified = yaml.safe_load(open(s["sweep_file"]))["sweep"]
+        self.assertEqual(identified["vehicle"], os.path.join(out, "vehicle.yaml"))
+        self.assertEqual(identified["link"], os.path.join(out, "link.yaml"))
+        self.assertEqual(s["nominal"]["combinations"], s["identified"]["combinations"])
+        self.assertNotEqual(s["nominal"]["feasible"], s["identified"]["feasible"])  # the modified vehicle and link count
+        for f in ("compare_max_tolerable_delay.png", "compare_feasible_share.png"):
+            self.assertTrue(os.path.isfile(os.path.join(out, "study_compare", f)), f)
+        for other, said in (("pioneer_delay", "flies a pioneer3dx, the bag a bebop2"),
+                            ("triangle_delay", "is a formation's sweep"), ("no_such_study", "is neither a file")):
+            rc, text = run_tool(["rosrun", "aurora", "identify", bag, "--out", out, "--study", other])
+            self.assertEqual(rc, 2, text)
+            self.assertIn(said, text)
 
     def check_bad_input(self, bag):
         with tempfile.TemporaryDirectory() as tmp:

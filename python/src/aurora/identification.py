@@ -1,6 +1,6 @@
 """Identify a recorded loop from its bag (docs/identify.md):
 
-    rosrun aurora identify BAG --out DIR [--ns NAME] [--max-delay N] [--window N]
+    rosrun aurora identify BAG --out DIR [--ns NAME] [--max-delay N] [--window N] [--study NAME|FILE]
 
 Measures the loop's timing from the bag's stamps and steps (the feedback
 delay of each cycle, the state and command streams' rates, jitter and
@@ -45,6 +45,9 @@ def parse_args(argv):
     p.add_argument("--window", type=int, default=1,
                    help="steps summed per equation against position noise [samples; 1: each step] "
                         "(docs/identify.md, eq. I4; 15 for a motion capture's millimetres)")
+    p.add_argument("--study", default=None,
+                   help="a single-robot sweep (a shipped NAME or a FILE) of the bag's vehicle, run as shipped and "
+                        "with DIR's vehicle.yaml and link.yaml; both side by side in DIR/study_compare")
     args = p.parse_args(argv)
     if not 0 <= args.max_delay <= 300:
         p.error("--max-delay %d is refused: accepted 0 .. 300 samples" % args.max_delay)
@@ -352,15 +355,32 @@ def markdown(j):
     return "\n".join(lines) + "\n"
 
 
+def study(j, name, out):
+    """identify --study: the study with the identified files beside the
+    nominal one, recorded in identify.json (docs/identify.md)."""
+    from aurora import identified_study
+    if not j["vehicle_file_written"]:
+        raise ValueError("--study needs an identified vehicle file, and this bag gave none (%s); the timing and "
+                         "link.yaml are in %s" % (j["model"], out))
+    j["study"] = identified_study.run_study(name, out, j["vehicle"])
+    with open(os.path.join(out, "identify.json"), "w") as f:
+        json.dump(j, f, indent=2)
+    print("identify: study %s: %d of %d feasible as shipped, %d with the identified vehicle and link; figures in %s"
+          % (os.path.basename(j["study"]["study"]), j["study"]["nominal"]["feasible"],
+             j["study"]["nominal"]["combinations"], j["study"]["identified"]["feasible"], j["study"]["figures"]))
+
+
 def main(argv):
     args = parse_args(argv)
     try:
         j = identify(args.bag, args.ns, args.max_delay, args.window, args.out)
+        print("identify: %s (%s): feedback delay %d samples, actuation delay %s; %s; wrote %s" % (
+            j["namespace"], j["vehicle"], j["feedback_delay_samples"],
+            "%d samples" % j["actuation_delay_samples"] if j["actuation_delay_samples"] is not None else "not measured",
+            j["model"], args.out))
+        if args.study:
+            study(j, args.study, args.out)
     except ValueError as e:
         print("identify: %s" % e, file=sys.stderr)
         return 2
-    print("identify: %s (%s): feedback delay %d samples, actuation delay %s; %s; wrote %s" % (
-        j["namespace"], j["vehicle"], j["feedback_delay_samples"],
-        "%d samples" % j["actuation_delay_samples"] if j["actuation_delay_samples"] is not None else "not measured",
-        j["model"], args.out))
     return 0
