@@ -56,10 +56,9 @@ class FormationBatch {
     }
     if (!Predicted) return;
     predictors_.reserve(D);
-    for (int d = 0; d < D; ++d) {
-      const auto& p = setup_.run.drone[d].predictor;
-      predictors_.emplace_back(p.form, p.model, vehicleStart<Vehicle, T>(p.model), setup_.run.clamp.at_drone,
-                               2 * long(capacity));
+    for (int d = 0; d < D; ++d) {  // each lane's command delay is its run's (startLanes)
+      const auto p = aurora_control::dronePredictor(setup_.run, d);
+      predictors_.emplace_back(p.form, p.model, vehicleStart<Vehicle, T>(p.model), p.path.clamp, 2 * long(capacity));
     }
   }
 
@@ -88,7 +87,7 @@ class FormationBatch {
         LaneOps::setFields(run.drone[d].gains, l, lane.drone[d].gains);  // the robot gains the sweep gives
         LaneOps::set(ideal_[d].delay, l, static_cast<Int>(lane.drone[d].delay));
         history_[d].startLane(l);
-        if (Predicted) predictors_[d].startLane(l, lane.drone[d].link.downlink.delay);  // dronePredictor's delay
+        if (Predicted) predictors_[d].startLane(l, aurora_control::dronePredictor(lane, d).path.delay);
         if (links_[d]) {
           links_[d]->startLane(l, lane.drone[d].link, lane.drone[d].delay, formationLinkKey<OneLane>(c, d),
                                double(lane.drone[d].plant.Ts));

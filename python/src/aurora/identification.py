@@ -19,7 +19,7 @@ import tempfile
 
 import numpy as np
 
-from aurora import identify_core as core
+from aurora import formation_report, identify_core as core
 from aurora import report
 
 # Fewer state steps than this identify nothing (10 s at 30 Hz).
@@ -64,7 +64,7 @@ def read_loop(path, ns=None):
         raise IdentifyError(str(e))
     try:
         topics = report.topics_of(bag)
-        if "/formation/formation" in topics and ns is None:
+        if formation_report.has_formation(topics) and ns is None:
             raise IdentifyError("bag '%s' is a formation's: identify one robot at a time with --ns NAME (its "
                                 "namespaces: %s)" % (path, ", ".join(report.find_namespaces(topics)) or "none"))
         try:

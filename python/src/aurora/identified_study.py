@@ -13,13 +13,12 @@ from aurora import sweep_runner
 
 
 def study_file(study):
-    """The sweep file of a shipped study's name or a path."""
+    """The sweep file of a shipped study's name or a path (flight's rule)."""
+    from aurora import _core
     from aurora.simulation import config_dir
-    if os.path.isfile(study):
-        return os.path.abspath(study)
-    shipped = os.path.join(config_dir(), "sweeps", study + ".yaml")
-    if os.path.isfile(shipped):
-        return shipped
+    path = _core.shipped_or_path(study, config_dir(), "sweeps")
+    if os.path.isfile(path):
+        return os.path.abspath(path)
     raise ValueError("--study '%s' is neither a file nor a shipped study (config/sweeps/NAME.yaml)" % study)
 
 

@@ -135,10 +135,10 @@ SIGNED = {"dynamics.theta3", "dynamics.theta5"}
 
 def excited_by(key):
     """The command axis that excites parameter `key` (the spread's name)."""
-    pioneer = {"dynamics.theta1": "u", "dynamics.theta3": "u", "dynamics.theta4": "u"}
-    if key.startswith("dynamics."):
-        return pioneer.get(key, "omega")
-    return key.split(".")[1]
+    for axis, keys in PIONEER_AXES.items():  # the Pioneer's: its regression's axis
+        if key in keys:
+            return axis
+    return key.split(".")[1]  # the Bebop's: the key's own axis (x, y, z, yaw)
 
 
 def fit_rows(rows, axes, spread):
