@@ -17,6 +17,7 @@
 #include "aurora_control/params/shipped_files.h"
 #include "aurora_sim/vehicle/sim_profile.h"
 #include "aurora_sim/vehicle/vehicle_type.h"
+#include "aurora_sim/vehicle_yaml.h"
 
 namespace py = pybind11;
 using namespace aurora_control;
@@ -218,6 +219,88 @@ std::vector<double> formationError(const std::string& shape, const std::vector<d
                                    "triangle");
 }
 
+
+// The model factors a vehicle type scales (its factorName order): what
+// identify's output-error fit may vary.
+std::vector<std::string> vehicleFactorNames(const std::string& type) {
+  std::vector<std::string> names;
+  if (!aurora_sim::isKnownVehicleType(type)) {
+    throw py::value_error("'" + type + "' is not a vehicle type: accepted " + aurora_sim::knownVehicleTypes());
+  }
+  aurora_sim::withVehicleOfType(type, [&](auto v) {
+    for (int i = 0; i < decltype(v)::kFactors; ++i) names.push_back(decltype(v)::factorName(i));
+  });
+  return names;
+}
+
+using Rows = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+// Flights of a vehicle through its own model, open loop (identify's
+// output-error fit and figures; docs/identify.md, eq. I7). The vehicle of
+// `type`, its file's parameters with each factor scaling its factorName.
+// For each start k0: the model is forced over the `forced` steps before k0
+// (its state set to the recorded X_k before each step, so what a recorded
+// state does not hold, the rotors' speeds, the on-board loop's memory, a
+// ground robot's speeds, follows the recording), then set to X_k0 and flown
+// `length` steps on the commands U_k0.. (each limited as its driver does).
+// Returns the states after each free step: (starts, length, kStates).
+template <class Vehicle>
+py::array_t<double> openLoopOf(const std::string& vehicle_file, const std::vector<double>& factors, const Rows& X,
+                               const Rows& U, const std::vector<long>& starts, long length, long forced) {
+  constexpr int kStates = Vehicle::kStates, kInputs = Vehicle::kInputs;
+  if (factors.size() != size_t(Vehicle::kFactors)) {
+    throw py::value_error("open_loop: " + std::to_string(factors.size()) + " factors given, a " + Vehicle::name() +
+                          " has " + std::to_string(Vehicle::kFactors));
+  }
+  const long n = long(X.shape(0)), recorded = X.ndim() == 2 ? long(X.shape(1)) : 0;
+  if (X.ndim() != 2 || recorded < 1 || recorded > kStates || U.ndim() != 2 || U.shape(1) != kInputs ||
+      U.shape(0) != n) {
+    throw py::value_error(std::string("open_loop: X must be (n, at most ") + std::to_string(kStates) +
+                          ") and U (n, " + std::to_string(kInputs) + ") for a " + Vehicle::name());
+  }
+  for (long k0 : starts) {
+    if (k0 - forced < 0 || k0 + length > n || length < 1 || forced < 0) {
+      throw py::value_error("open_loop: start " + std::to_string(k0) + " forced " + std::to_string(forced) +
+                            " steps and flown " + std::to_string(length) + " leaves the " + std::to_string(n) +
+                            " recorded steps");
+    }
+  }
+  const auto p = Vehicle::scaled(aurora_sim::loadVehicleFile<Vehicle>(vehicle_file, "identify"), factors.data());
+  const py::ssize_t m = py::ssize_t(starts.size());
+  py::array_t<double> out({m, py::ssize_t(length), py::ssize_t(kStates)});
+  const double *x = X.data(), *u = U.data();
+  double* o = out.mutable_data();
+  py::gil_scoped_release unlocked;
+  for (py::ssize_t j = 0; j < m; ++j) {
+    typename Vehicle::template State<double> s;
+    Vehicle::start(p, s);
+    const auto stepAt = [&](long k) {
+      double Uk[kInputs];
+      for (int i = 0; i < kInputs; ++i) Uk[i] = Vehicle::limitInput(p, i, u[kInputs * k + i]);
+      Vehicle::step(p, s, Uk);
+    };
+    const auto record = [&](long k) { std::copy(x + recorded * k, x + recorded * (k + 1), s.X); };
+    for (long k = starts[j] - forced; k < starts[j]; ++k) record(k), stepAt(k);
+    record(starts[j]);
+    for (long i = 0; i < length; ++i) {
+      stepAt(starts[j] + i);
+      std::copy(s.X, s.X + kStates, o + (j * length + i) * kStates);
+    }
+  }
+  return out;
+}
+
+py::array_t<double> openLoop(const std::string& type, const std::string& vehicle_file,
+                             const std::vector<double>& factors, const Rows& X, const Rows& U,
+                             const std::vector<long>& starts, long length, long forced) {
+  vehicleFactorNames(type);  // refuses an unknown type
+  py::array_t<double> out;
+  aurora_sim::withVehicleOfType(type, [&](auto v) {
+    out = openLoopOf<decltype(v)>(vehicle_file, factors, X, U, starts, length, forced);
+  });
+  return out;
+}
+
 }  // namespace
 
 PYBIND11_MODULE(_core, m) {
@@ -245,6 +328,12 @@ PYBIND11_MODULE(_core, m) {
   m.def("simulate_shaped_formation_files", &simulateShapedFormationFiles, py::arg("formation"), py::arg("delays"),
         py::arg("law"), py::arg("config_dir"),
         "A UAV-UGV line or triangle file flown as flight --formation flies it: its CSV's columns and rows.");
+  m.def("vehicle_factor_names", &vehicleFactorNames, py::arg("type"),
+        "The model factors a vehicle type scales, in their order (a sweep's names).");
+  m.def("open_loop", &openLoop, py::arg("type"), py::arg("vehicle_file"), py::arg("factors"), py::arg("X"),
+        py::arg("U"), py::arg("starts"), py::arg("length"), py::arg("forced"),
+        "Open-loop flights through the vehicle's model from recorded states X and commands U: "
+        "(starts, length, states) after each step (docs/identify.md, eq. I7).");
   m.def("formation_shape", &shapeOf, py::arg("formation"), "The shape of a formation file.");
   m.def("formation_error", &formationError, py::arg("shape"), py::arg("X"), py::arg("Qd"), py::arg("Q"),
         "Qd - Q of a shape's variables with the shape's own angle wraps, at positions X (3 per robot).");

@@ -11,6 +11,9 @@
 // ~takeoff_subscribe_after [s] subscribes to take-off only after that long;
 // ~ignore_takeoffs, ~ignore_lands [count] drop the first ones received.
 // ~start [x, y] (m, world frame): where it stands on the ground at first.
+// ~command_latency, ~command_jitter [s]: each cmd_vel takes effect that
+// long after it arrives, plus a uniform 0 .. jitter (the driver's and the
+// radio's delay, which no message declares: what identify must find).
 // The vehicle is the one of the file loaded under ~vehicle (its type: an
 // AR.Drone 2.0 or a Bebop 2, each with its own model and cmd_vel mapping;
 // or a Pioneer P3-DX behind RosAria: RosAria/cmd_vel, no take-off or
@@ -26,6 +29,7 @@
 #include <tf2/LinearMath/Transform.h>
 
 #include <algorithm>
+#include <deque>
 #include <random>
 #include <string>
 #include <vector>
@@ -58,6 +62,11 @@ class FakeDriver {
     noise_ang_ = pnh.param("noise_angle", 0.05 * kPi / 180.0);
     dropout_ = pnh.param("dropout_probability", 0.03);
     reorder_ = pnh.param("reorder_probability", 0.02);
+    latency_ = pnh.param("command_latency", 0.0);
+    jitter_ = pnh.param("command_jitter", 0.0);
+    if (!(latency_ >= 0.0 && latency_ <= 1.0) || !(jitter_ >= 0.0 && jitter_ <= 1.0)) {
+      throw ConfigError("~command_latency, ~command_jitter: seconds in [0, 1]");
+    }
     frame_ = pnh.param<std::string>("mocap_frame", "world");
     std::vector<double> xyz{0, 0, 0}, rpy{0, 0, 0};
     pnh.getParam("mocap_to_world/xyz", xyz);
@@ -115,8 +124,20 @@ class FakeDriver {
     double U[Vehicle::kInputs];
     Vehicle::fromDriver(twistCommandFromMsg(*msg), U);
     if (!allFinite(U, Vehicle::kInputs)) return;
-    for (int i = 0; i < Vehicle::kInputs; ++i) cmd_[i] = Vehicle::limitInput(params_, i, U[i]);
-    cmd_time_ = ros::Time::now();
+    Pending p;
+    for (int i = 0; i < Vehicle::kInputs; ++i) p.U[i] = Vehicle::limitInput(params_, i, U[i]);
+    std::uniform_real_distribution<double> late(0.0, jitter_);
+    p.due = ros::Time::now() + ros::Duration(latency_ + (jitter_ > 0.0 ? late(rng_) : 0.0));
+    pending_.push_back(p);
+  }
+  // The commands whose latency has passed take effect in the order they
+  // arrived (a driver's queue: never out of order), the last one stays.
+  void takeDueCommands(const ros::Time& now) {
+    while (!pending_.empty() && pending_.front().due <= now) {
+      std::copy(pending_.front().U, pending_.front().U + Vehicle::kInputs, cmd_);
+      cmd_time_ = pending_.front().due;
+      pending_.pop_front();
+    }
   }
   void countReceived(int takeoff, int land, int reset) {
     received_[0] += takeoff, received_[1] += land, received_[2] += reset;
@@ -155,6 +176,7 @@ class FakeDriver {
   // the command rate); the newest command applies at each step.
   void onStep(const ros::TimerEvent&) {
     double U[Vehicle::kInputs] = {};
+    takeDueCommands(ros::Time::now());
     switch (phase_) {
       case Phase::kLanded:
         break;
@@ -237,6 +259,12 @@ class FakeDriver {
   typename Vehicle::template State<double> model_;
   Phase phase_ = Phase::kLanded;
   double cmd_[Vehicle::kInputs] = {};
+  struct Pending {
+    double U[Vehicle::kInputs];
+    ros::Time due;
+  };
+  std::deque<Pending> pending_;  // commands received, in arrival order, not yet in effect
+  double latency_ = 0.0, jitter_ = 0.0;
   ros::Time cmd_time_, paused_until_, last_step_time_;
   unsigned long step_ = 0;
   std::mt19937 rng_;

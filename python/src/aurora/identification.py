@@ -4,8 +4,10 @@
 
 Measures the loop's timing from the bag's stamps and steps (the feedback
 delay of each cycle, the state and command streams' rates, jitter and
-losses) and fits the vehicle's model by least squares with the actuation
-delay that fits best (the Bebop 2, the Pioneer), then writes DIR/identify.json,
+losses) and fits the vehicle's model with the actuation delay that fits
+best (the Bebop 2's and the Pioneer's by least squares, the AR.Drone's by
+output error through its simulator), flies the recorded commands open loop
+through the identified and the nominal model, then writes DIR/identify.json,
 DIR/link.yaml (a link file flight --link, the nodes and sweeps take),
 DIR/vehicle.yaml (where the model was identified), figures and report.md.
 The same from Python: aurora.identify(bag) returns the identify.json
@@ -24,11 +26,33 @@ from aurora import report
 
 # Fewer state steps than this identify nothing (10 s at 30 Hz).
 MIN_STEPS = 300
-# The vehicles whose model this tool fits (their fit, rows and axes), and
-# those it times only.
-MODELS = {"bebop2": (core.fit_bebop2, core.bebop2_rows, core.BEBOP2_AXES),
-          "pioneer3dx": (core.fit_pioneer, core.pioneer_rows, core.PIONEER_AXES)}
-TIMED_ONLY = {"ardrone2": "the AR.Drone's model is nonlinear (output-error fit: not yet)"}
+
+
+def open_loop_flyer(vehicle, vehicle_file):
+    """fly(factors, X, U, starts, length, forced): the vehicle's own model
+    (aurora._core.open_loop) of `vehicle_file`, open loop (eq. I7)."""
+    from aurora import _core
+    return lambda factors, X, U, starts, length, forced: _core.open_loop(
+        vehicle, vehicle_file, [float(f) for f in factors], X, U, starts, length, forced)
+
+
+def ardrone_fit(nominal_path, nominal):
+    """The AR.Drone's output-error fit (eq. I7) around its nominal file."""
+    from aurora import _core
+    values = {key: key_value(nominal, key) for key in core.ARDRONE_FACTORS}
+    return lambda X, U, Ts, delay, window: core.fit_ardrone(
+        open_loop_flyer("ardrone2", nominal_path), _core.vehicle_factor_names("ardrone2"), values, X, U, Ts, delay,
+        window)
+
+
+# What a vehicle's model state holds beyond the recorded 12-state, from the
+# recording (the Pioneer's speeds), for its open-loop flights.
+MODEL_STATE = {"pioneer3dx": core.pioneer_state}
+
+# The vehicles whose model this tool fits: fit(X, U, Ts, delay, window) of
+# the vehicle's nominal file (its path and content).
+MODELS = {"bebop2": lambda path, nominal: core.fit_bebop2, "pioneer3dx": lambda path, nominal: core.fit_pioneer,
+          "ardrone2": ardrone_fit}
 
 
 class IdentifyError(Exception):
@@ -96,7 +120,7 @@ def loop_arrays(d):
         "pending": np.array([c.delay_pending for c in controls], dtype=np.int64),
         "arrived": np.array([c.state_arrived for c in controls], dtype=bool),
         "law_ran": np.array([c.law_ran for c in controls], dtype=bool),
-        "sent": np.array([list(c.command_sent) for c in controls], dtype=float),
+        "sent": np.array([list(c.command_sent)[:len(first.command_names)] for c in controls], dtype=float),
         "control_stamps": np.array([c.header.stamp.to_sec() for c in controls]),
     }
 
@@ -108,7 +132,7 @@ def timing(loop):
     uplink's losses."""
     all_delays = core.feedback_delays(loop["control_steps"], loop["used_steps"])
     first = min(int(loop["state_steps"][0]), int(loop["control_steps"][0]))
-    steady = (loop["pending"] == 0) & (loop["control_steps"] - first >= np.median(all_delays))
+    steady = (loop["pending"] == 0) & (loop["control_steps"] - first >= np.median(all_delays)) & loop["law_ran"]
     delays = core.feedback_delays(loop["control_steps"][steady], loop["used_steps"][steady])
     return {"feedback_delay_samples": core.percentiles(delays), "feedback_delays": delays,
             "state_stream": core.stream_timing(loop["state_steps"], loop["state_stamps"], loop["Ts"]),
@@ -121,9 +145,9 @@ def commands_by_step(loop):
     """The commands sent, one row per state step (a step the controller did
     not answer holds the command before it, as the vehicle does)."""
     X_steps = loop["state_steps"]
-    U = np.zeros((len(X_steps), 4))
+    U = np.zeros((len(X_steps), loop["sent"].shape[1]))
     at = {int(s): i for i, s in enumerate(loop["control_steps"])}
-    last = np.zeros(4)
+    last = np.zeros(U.shape[1])
     for i, s in enumerate(X_steps):
         if int(s) in at:
             last = loop["sent"][at[int(s)]]
@@ -132,9 +156,12 @@ def commands_by_step(loop):
 
 
 def contiguous(loop):
-    """The longest run of consecutive state steps (the differences need them)."""
+    """The longest run of consecutive state steps (the differences need them)
+    while the law flew the robot (before, a real drone's driver takes off by
+    itself and the commands sent are not what it flies)."""
     s = loop["state_steps"]
-    breaks = np.flatnonzero(np.diff(s) != 1)
+    flown = set(loop["control_steps"][loop["law_ran"]].tolist())
+    breaks = np.flatnonzero((np.diff(s) != 1) | ~np.isin(s[1:], list(flown)) | ~np.isin(s[:-1], list(flown)))
     starts = np.concatenate([[0], breaks + 1])
     ends = np.concatenate([breaks + 1, [len(s)]])
     i = int(np.argmax(ends - starts))
@@ -145,24 +172,23 @@ def fitted_model(loop, max_delay, window):
     """The vehicle's model (eqs. I3-I5) at the best actuation delay, or why
     this tool does not fit this vehicle."""
     vehicle = loop["vehicle"]
-    if vehicle in TIMED_ONLY:
-        return None, "model not identified: " + TIMED_ONLY[vehicle] + "; the timing and link.yaml are"
     if vehicle not in MODELS:
         raise IdentifyError("vehicle '%s' (the bag's Control.vehicle) is unknown to identify: accepted %s"
-                            % (vehicle, ", ".join(sorted(list(MODELS) + list(TIMED_ONLY)))))
+                            % (vehicle, ", ".join(sorted(MODELS))))
     run = contiguous(loop)
     X, U = loop["X"][run], commands_by_step(loop)[run]
     if len(X) < MIN_STEPS:
         raise IdentifyError("the bag's longest run of consecutive states is %d steps (%.1f s): identify needs %d "
                             "(%.0f s); record a longer flight" % (len(X), len(X) * loop["Ts"], MIN_STEPS,
                                                                    MIN_STEPS * loop["Ts"]))
-    fit = MODELS[vehicle][0]
+    fit = MODELS[vehicle](*nominal_vehicle(vehicle))
     delay, tried = core.best_delay(lambda d: fit(X, U, loop["Ts"], d, window), max_delay)
     result = tried[delay]
     result["actuation_delay_samples"] = delay
     result["residual_by_delay"] = {d: tried[d]["rss"] for d in tried}
     result["series"] = (X, U)
-    return result, None
+    result["Ts"] = loop["Ts"]
+    return result
 
 
 def nominal_vehicle(vehicle):
@@ -174,8 +200,10 @@ def nominal_vehicle(vehicle):
 
 
 def key_value(tree, key):
-    group, name = key.split(".")
-    return float(tree[group][name])
+    """The value at a parameter's key ("mass", "input_gain.x") in a vehicle file's tree."""
+    for part in key.split("."):
+        tree = tree[part]
+    return float(tree)
 
 
 def parameter_table(model, nominal):
@@ -186,7 +214,8 @@ def parameter_table(model, nominal):
         value, stderr = model["parameters"][key]
         axis = core.excited_by(key)
         excited = model["spread"][axis] >= core.MIN_EXCITATION
-        ok = excited and (value > 0 or key in core.SIGNED) and stderr < 0.1 * abs(value)
+        inside = key not in core.ARDRONE_FACTORS or 0.1 < value / key_value(nominal, key) < 10.0  # eq. I7's bounds
+        ok = excited and inside and (value > 0 or key in core.SIGNED) and stderr < 0.1 * abs(value)
         why = ("" if ok else "its axis was not excited (command spread %.3g < %g)" % (model["spread"][axis],
                core.MIN_EXCITATION) if not excited else "the fit is not determined (%.4g +- %.2g)" % (value, stderr))
         table[key] = {"value": value if ok else key_value(nominal, key), "stderr": stderr if ok else None,
@@ -233,25 +262,26 @@ def identify(bag, ns=None, max_delay=15, window=1, out=None):
 
 def summary(bag, name, loop, max_delay, window):
     t = timing(loop)
-    model, not_fitted = fitted_model(loop, max_delay, window)
+    model = fitted_model(loop, max_delay, window)
     j = {"vehicle": loop["vehicle"], "bag": os.path.abspath(bag), "namespace": name, "sample_time_s": loop["Ts"],
          "feedback_delay_samples": int(round(t["feedback_delay_samples"]["median"])),
          "feedback_delay_distribution": t["feedback_delay_samples"], "actuation_delay_samples": None,
          "state_stream": t["state_stream"], "command_stream": t["command_stream"], "uplink_loss": t["uplink_loss"],
-         "parameters": {}, "fit": {}, "model": not_fitted or "identified"}
+         "parameters": {}, "fit": {}, "model": "identified"}
     vehicle_file = None
-    if model:
-        nominal_path, nominal = nominal_vehicle(loop["vehicle"])
-        j["parameters"] = parameter_table(model, nominal)
-        j["fit"] = {axis: f["nrmse"] for axis, f in model["fit"].items()}
-        j["nominal_vehicle_file"] = nominal_path
-        if any(p["identified"] for p in j["parameters"].values()):
-            vehicle_file = vehicle_yaml(nominal, j["parameters"])
-            j["actuation_delay_samples"] = model["actuation_delay_samples"]  # measured by a fit that fits
-            j["residual_by_actuation_delay"] = {str(d): r for d, r in model["residual_by_delay"].items()}
-        else:
-            j["model"] = "nothing identifiable: " + "; ".join(
-                "%s: %s" % (k, p["why_not"]) for k, p in j["parameters"].items())
+    nominal_path, nominal = nominal_vehicle(loop["vehicle"])
+    j["parameters"] = parameter_table(model, nominal)
+    j["fit"] = {axis: f["nrmse"] for axis, f in model["fit"].items()}
+    j["nominal_vehicle_file"] = nominal_path
+    if any(p["identified"] for p in j["parameters"].values()):
+        vehicle_file = vehicle_yaml(nominal, j["parameters"])
+        model["open_loop"] = open_loop_comparison(loop["vehicle"], nominal_path, vehicle_file, model)
+        j["open_loop_rms"] = {which: r["rms"] for which, r in model["open_loop"]["models"].items()}
+        j["actuation_delay_samples"] = model["actuation_delay_samples"]  # measured by a fit that fits
+        j["residual_by_actuation_delay"] = {str(d): r for d, r in model["residual_by_delay"].items()}
+    else:
+        j["model"] = "nothing identifiable: " + "; ".join(
+            "%s: %s" % (k, p["why_not"]) for k, p in j["parameters"].items())
     j["link"] = link_of(t, j["actuation_delay_samples"])["link"]
     j["vehicle_file_written"] = vehicle_file is not None
     return {"json": j, "timing": t, "model": model if vehicle_file is not None else None, "vehicle_file": vehicle_file}
@@ -262,9 +292,39 @@ def vehicle_yaml(nominal, parameters):
     import copy
     v = copy.deepcopy(nominal)
     for key, p in parameters.items():
-        group, name = key.split(".")
-        v[group][name] = p["value"]
+        *groups, name = key.split(".")
+        tree = v
+        for g in groups:
+            tree = tree[g]
+        tree[name] = p["value"]
     return v
+
+
+def open_loop_comparison(vehicle, nominal_path, identified, model):
+    """The recorded commands flown open loop (eq. I7's segments, at the
+    identified actuation delay) through the identified and the nominal
+    model: each one's poses and their RMS error [m, rad] against the
+    recorded ones."""
+    import yaml
+    X, U = model["series"]
+    Ua = core.applied(U, model["actuation_delay_samples"])
+    starts = core.segment_starts(len(X))
+    X_model = MODEL_STATE[vehicle](X, model["Ts"]) if vehicle in MODEL_STATE else X
+    measured = np.stack([X[s + 1:s + 1 + core.SEGMENT, :6] for s in starts])
+    with tempfile.NamedTemporaryFile("w", suffix=".yaml") as f:
+        yaml.safe_dump(identified, f)
+        f.flush()
+        files = {"identified": f.name, "nominal": nominal_path}
+        from aurora import _core
+        ones = [1.0] * len(_core.vehicle_factor_names(vehicle))
+        flown = {which: open_loop_flyer(vehicle, path)(ones, X_model, Ua, starts, core.SEGMENT, core.FORCED)
+                 for which, path in files.items()}
+    models = {}
+    for which, poses in flown.items():
+        e = core.pose_error(poses, measured).reshape(-1, 6)
+        models[which] = {"poses": poses[..., :6], "rms": {name: float(np.sqrt(np.mean(e[:, i] ** 2)))
+                                                          for i, name in enumerate(core.POSE)}}
+    return {"starts": starts, "models": models}
 
 
 def write_all(out, result):
@@ -318,20 +378,24 @@ def figures(d, result):
 
 
 def fit_figure(plt, d, result):
-    """Each axis's measured output (the Bebop's accelerations, the
-    Pioneer's commands) and the identified model's."""
-    X, U = result["model"]["series"]
-    Ts, delay = result["json"]["sample_time_s"], result["json"]["actuation_delay_samples"]
-    _, rows_of, axes = MODELS[result["json"]["vehicle"]]
-    rows, _ = rows_of(X, U, Ts, delay)
-    theta = result["model"]["parameters"]
-    fig, ax = plt.subplots(len(axes), 1, figsize=(10, 2.4 * len(axes)), sharex=False)
-    for a, (axis, keys) in zip(ax, axes.items()):
-        A, y = rows[axis]
-        a.plot(y, lw=0.8, label="measured")
-        a.plot(A @ np.array([theta[k][0] for k in keys]), lw=0.8, label="identified model")
-        a.set_ylabel(axis), a.legend(loc="upper right")
-    ax[-1].set_xlabel("sample")
+    """The recorded poses and the recorded commands flown open loop through
+    the identified and the nominal model (eq. I7's segments, each started
+    at the recorded state), for each pose the flight moved."""
+    X, _ = result["model"]["series"]
+    comparison = result["model"]["open_loop"]
+    Ts, seg = result["json"]["sample_time_s"], core.SEGMENT
+    moved = [i for i, _ in enumerate(core.POSE) if np.ptp(X[:, i]) > 1e-6]
+    fig, ax = plt.subplots(len(moved), 1, figsize=(10, 2.2 * len(moved)), sharex=True, squeeze=False)
+    for a, i in zip(ax[:, 0], moved):
+        a.plot(np.arange(len(X)) * Ts, X[:, i], "k", lw=0.8, label="recorded")
+        for which, style in (("identified", "C0"), ("nominal", "C3--")):
+            poses = comparison["models"][which]["poses"]
+            for j, s in enumerate(comparison["starts"]):
+                a.plot((s + 1 + np.arange(seg)) * Ts, poses[j, :, i], style, lw=0.9,
+                       label=("%s model, open loop" % which) if j == 0 else None)
+        a.set_ylabel(core.POSE[i] + (" [m]" if i < 3 else " [rad]"))
+    ax[0, 0].legend(loc="upper right", fontsize=8)
+    ax[-1, 0].set_xlabel("t [s]  (open-loop segments of %.0f s, each from the recorded state)" % (seg * Ts))
     fig.tight_layout(), fig.savefig(os.path.join(d, "fit.png")), plt.close(fig)
 
 
@@ -352,6 +416,14 @@ def markdown(j):
             lines.append("| %s | %s | %s | %.6g |" % (k, "%.6g" % p["value"] if p["identified"] else "— (%s)" % p["why_not"],
                                                       "%.2g" % p["stderr"] if p["stderr"] is not None else "—", p["nominal"]))
         lines += ["", "Fit (NRMSE per axis): " + ", ".join("%s %.3g" % kv for kv in j["fit"].items()), ""]
+    if j.get("open_loop_rms"):
+        lines += ["## Open loop (fit.png)", "", "The recorded commands flown through each model over segments of "
+                  "%.0f s, each from the recorded state; RMS error against the recording:" % (
+                      core.SEGMENT * j["sample_time_s"]), "", "| model | " + " | ".join(core.POSE) + " |",
+                  "|---|" + "---|" * len(core.POSE)]
+        for which, rms in j["open_loop_rms"].items():
+            lines.append("| %s | %s |" % (which, " | ".join("%.3g" % rms[k] for k in core.POSE)))
+        lines.append("")
     return "\n".join(lines) + "\n"
 
 

@@ -10,7 +10,12 @@ returns plain values; nothing reads a clock or a file.
 - The Bebop 2's model (docs/bebop2.md) is linear in its input gains and
   damping: a = F(psi) Ku U - Kv v, least squares per axis (eq. I3) over
   velocities and accelerations differenced from positions (eq. I4), the
-  actuation delay the whole samples that fit best (eq. I5)."""
+  actuation delay the whole samples that fit best (eq. I5).
+- The Pioneer's theta1..theta6 enter its commands linearly: least squares
+  (eq. I6).
+- The AR.Drone's model is nonlinear: its factors are fitted by output error
+  (eq. I7), the recorded commands flown open loop through the product's
+  own simulator (a callable given in) over short segments."""
 import math
 
 import numpy as np
@@ -138,6 +143,8 @@ def excited_by(key):
     for axis, keys in PIONEER_AXES.items():  # the Pioneer's: its regression's axis
         if key in keys:
             return axis
+    if key in ARDRONE_FACTORS:  # the AR.Drone's: the command that turns it
+        return ARDRONE_FACTORS[key][1]
     return key.split(".")[1]  # the Bebop's: the key's own axis (x, y, z, yaw)
 
 
@@ -184,6 +191,19 @@ def pioneer_rows(X, U, Ts, delay, window=1):
     return rows, cmd
 
 
+def pioneer_state(X, Ts):
+    """The Pioneer's model state (docs/pioneer3dx.md): the control point's
+    recorded 12-state and its forward speed and turn rate after each step,
+    from the positions and heading as eq. I6 takes them (u_k = (dx cos
+    psi_(k-1) + dy sin psi_(k-1)) / Ts, omega_k = dpsi / Ts; 0 at the first),
+    which the open-loop flights start from (eq. I7)."""
+    psi = np.unwrap(X[:, 5])
+    d = np.diff(np.column_stack([X[:, 0], X[:, 1], psi]), axis=0)
+    u = np.concatenate([[0.0], (d[:, 0] * np.cos(psi[:-1]) + d[:, 1] * np.sin(psi[:-1])) / Ts])
+    w = np.concatenate([[0.0], d[:, 2] / Ts])
+    return np.column_stack([X[:, :12], u, w])
+
+
 def fit_pioneer(X, U, Ts, delay, window=1):
     """The Pioneer's theta1..theta6 at actuation delay `delay` (eq. I6):
     u_ref = theta1 du + theta4 u - theta3 omega^2, omega_ref = theta2 domega +
@@ -198,3 +218,92 @@ def best_delay(fit_at, max_delay):
     tried = {d: fit_at(d) for d in range(max_delay + 1)}
     best = min(tried, key=lambda d: tried[d]["rss"])
     return best, tried
+
+
+# The AR.Drone's fitted model factors (eq. I7), by their vehicle file's keys:
+# the factor's name (aurora._core.vehicle_factor_names, a sweep's) and the
+# command that excites it. Its mass is weighed, not fitted: with it free,
+# scaling the mass, inertias and thrust coefficient together flies nearly
+# alike and a fit with millimetres of noise wanders along that direction;
+# the motor's constants (Ct, Km, Jm) keep the vehicle file's values: with
+# them free, two directions of the eight factors fly identically.
+ARDRONE_FACTORS = {"inertia.xx": ("Ixx", "roll"), "inertia.yy": ("Iyy", "pitch"), "inertia.zz": ("Izz", "yaw"),
+                   "rotor.thrust_coefficient": ("Cf", "climb")}
+ARDRONE_COMMANDS = ("roll", "pitch", "climb", "yaw")  # the command's components, in order
+POSE = ("x", "y", "z", "roll", "pitch", "yaw")         # the outputs compared: the state's first six
+SEGMENT = 30   # steps each open-loop segment flies (1 s at 30 Hz: longer ones carry more of the noise in their start)
+FORCED = 30    # steps each segment's model is forced along the recording before it
+DIVERGED = 1e3  # the pose error [m, rad] of a segment whose flight diverged (a bad factor's)
+
+
+def applied(U, delay):
+    """The commands applied at each step when each was sent `delay` samples
+    before (none before the first: zero)."""
+    U = np.asarray(U, dtype=float)
+    return np.vstack([np.zeros((delay, U.shape[1])), U[:len(U) - delay]]) if delay else U
+
+
+def segment_starts(n, segment=SEGMENT, forced=FORCED):
+    """Eq. I7's segments of a run of n steps: their first steps."""
+    return list(range(forced, n - segment, segment))
+
+
+def pose_error(flown, measured):
+    """Flown minus measured poses (..., 6), yaw wrapped to (-pi, pi]."""
+    with np.errstate(invalid="ignore", over="ignore"):
+        e = flown[..., :6] - measured[..., :6]
+        e[..., 5] = np.angle(np.exp(1j * e[..., 5]))
+    return np.nan_to_num(e, nan=DIVERGED, posinf=DIVERGED, neginf=-DIVERGED)
+
+
+def fit_output_error(fly, names, free, X, U, delay, segment=SEGMENT, forced=FORCED):
+    """Eq. I7: the factors `free` (of the vehicle's factor `names`) that
+    make the model, flown open loop on the commands applied (sent `delay`
+    samples before) over segments of `segment` steps, each forced along
+    the recording for `forced` steps and started at the recorded state,
+    best match the recorded poses (metres and radians), by nonlinear least
+    squares (scipy), within the sweeps' factor range [0.1, 10].
+    fly(factors, X, U, starts, segment, forced) flies them (aurora._core.
+    open_loop). Returns {name: (factor, stderr)}, each pose's NRMSE, the
+    residual."""
+    from scipy.optimize import least_squares as solve
+    Ua = applied(U, delay)
+    starts = segment_starts(len(X), segment, forced)
+    if not starts:
+        raise ValueError("%d steps hold no open-loop segment of %d steps after %d forced" % (len(X), segment, forced))
+    measured = np.stack([X[s + 1:s + 1 + segment, :6] for s in starts])
+    index = [names.index(f) for f in free]
+
+    def residual(theta):
+        factors = np.ones(len(names))
+        factors[index] = theta
+        return pose_error(fly(factors, X, Ua, starts, segment, forced), measured).ravel()
+    r = solve(residual, np.ones(len(free)), bounds=(0.1, 10.0), xtol=1e-10, ftol=1e-10)
+    dof = max(r.fun.size - len(free), 1)
+    try:
+        stderr = np.sqrt(np.maximum(np.diag(2.0 * r.cost / dof * np.linalg.inv(r.jac.T @ r.jac)), 0.0))
+    except np.linalg.LinAlgError:
+        stderr = np.full(len(free), np.inf)
+    e = r.fun.reshape(-1, 6)
+    spread = measured.reshape(-1, 6).std(axis=0)
+    fit = {name: {"nrmse": float(np.sqrt(np.mean(e[:, i] ** 2)) / spread[i]) if spread[i] > 0 else float("inf"),
+                  "rms": float(np.sqrt(np.mean(e[:, i] ** 2))), "samples": int(e.shape[0])}
+           for i, name in enumerate(POSE)}
+    return {"factors": {f: (float(v), float(s)) for f, v, s in zip(free, r.x, stderr)}, "fit": fit,
+            "rss": float(2.0 * r.cost)}
+
+
+def fit_ardrone(fly, names, nominal, X, U, Ts, delay, window=1):
+    """The AR.Drone's factors of ARDRONE_FACTORS at actuation delay `delay`
+    (eq. I7), as the other fits give theirs: each parameter's value and
+    standard error (the factor times its `nominal` value), each pose's fit,
+    the commands' spread. (`Ts` and `window` are the linear fits'; the
+    model steps at its vehicle file's Ts, and a segment's open-loop flight
+    averages noise as eq. I4's blocks do.)"""
+    free = [f for f, _ in ARDRONE_FACTORS.values()]
+    r = fit_output_error(fly, names, free, X, U, delay)
+    params = {key: (r["factors"][f][0] * nominal[key], r["factors"][f][1] * nominal[key])
+              for key, (f, _) in ARDRONE_FACTORS.items()}
+    u = applied(U, delay)
+    return {"parameters": params, "fit": r["fit"], "rss": r["rss"],
+            "spread": {axis: float(np.std(u[:, i])) for i, axis in enumerate(ARDRONE_COMMANDS)}}
