@@ -179,10 +179,37 @@ class TimingTest(unittest.TestCase):
             core.stream_timing([5], [0.0], TS)
 
     def test_the_link_file_of_a_timing(self):
-        t = {"feedback_delays": np.array([3] * 95 + [4] * 3 + [5] * 2), "uplink_loss": 0.02}
+        t = identification.uplink(np.array([3] * 95 + [4] * 3 + [5] * 2), np.arange(1000))
+        self.assertEqual((t["uplink_delay"], t["uplink_jitter"]), (3, 2))
+        t["uplink_loss"] = 0.02
         link = identification.link_of(t, 2)["link"]
         self.assertEqual(link["uplink"], {"delay": 3, "jitter": {"kind": "uniform", "max": 2}, "loss": 0.02})
         self.assertEqual(link["downlink"], {"delay": 2})
+
+    def test_a_jittery_lossy_links_loss_from_the_states_used(self):
+        """Eq. I2b on links.md's receiver rule played out (the newest-sent packet among those arrived): with
+        jitter a state overtaken by a newer one is never used, lost or not; the loss is found within two of its
+        standard errors, the delay and jitter exactly, from the ages on arrival."""
+        self.assertAlmostEqual(core.seen_share(0.3, 0), 0.7)
+        self.assertAlmostEqual(core.seen_share(0.1, 1), 0.9 / 2 * (1 + (1 - 0.9 / 2)))
+        for jitter, loss, seed in ((2, 0.05, 1), (4, 0.2, 2), (0, 0.1, 3), (2, 0.0, 4)):
+            rng = np.random.default_rng(seed)
+            n, base = 30000, 3
+            arrive = np.arange(n) + base + rng.integers(0, jitter + 1, n)
+            arrive[rng.random(n) < loss] = -1
+            used, arrived, newest = [], [], -1
+            by_step = {}
+            for j in np.flatnonzero(arrive >= 0):
+                by_step.setdefault(int(arrive[j]), []).append(int(j))
+            for k in range(base + jitter, n):
+                candidate = max(by_step.get(k, [-1]))
+                arrived.append(candidate > newest)
+                newest = max(newest, candidate)
+                used.append(newest)
+            ages = np.arange(base + jitter, n) - np.array(used)
+            t = identification.uplink(ages[np.array(arrived)], np.array(used))
+            self.assertEqual((t["uplink_delay"], t["uplink_jitter"]), (base, jitter))
+            self.assertLess(abs(t["uplink_loss"] - loss), 2 * t["uplink_loss_stderr"] + 1e-9, (jitter, loss, t))
 
 
 class IdentifyCoreTests(FitTest, PioneerFitTest, ArdroneFitTest, TimingTest):

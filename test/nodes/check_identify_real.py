@@ -20,8 +20,8 @@ class IdentifyRealTest(unittest.TestCase):
     """What holds on a realtime loop (measured, idle / both cores busy: feedback delays 3 .. 6, median 4;
     actuation delay 3 / 2: the driver's 2 samples plus a fraction, the phase of its step timer against the
     loop's, rounded either way; input gains within 10.3 / 11.0 %; the horizontal damping not determined;
-    the link's loss 0.39 where 0.05 was configured: cycles whose state was overtaken by a newer one under
-    jitter count as lost; docs/identify.md, "A real loop")."""
+    the link's base delay 3 and jitter 2 exact, its loss 0.051 +- 0.036 where 0.05 was configured;
+    docs/identify.md, "A real loop")."""
 
     def test_identifies_the_real_loop(self):
         p = lambda name: rospy.get_param("~" + name)  # noqa: E731
@@ -38,6 +38,8 @@ class IdentifyRealTest(unittest.TestCase):
         # The uplink's base delay is the configured one (no cycle flies a newer state than delay:= allows),
         # the feedback delays vary by the link's jitter and what a realtime loop adds.
         self.assertEqual(j["link"]["uplink"]["delay"], 3)
+        self.assertEqual(j["link"]["uplink"]["jitter"], {"kind": "uniform", "max": 2})
+        self.assertLess(abs(j["uplink_loss"] - 0.05), 2 * j["uplink_loss_stderr"], j["uplink_loss"])
         self.assertGreaterEqual(j["feedback_delay_samples"], 3)
         # No command acts before the driver's latency (2 samples) has passed.
         self.assertGreaterEqual(j["actuation_delay_samples"], 2)

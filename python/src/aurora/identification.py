@@ -134,11 +134,33 @@ def timing(loop):
     first = min(int(loop["state_steps"][0]), int(loop["control_steps"][0]))
     steady = (loop["pending"] == 0) & (loop["control_steps"] - first >= np.median(all_delays)) & loop["law_ran"]
     delays = core.feedback_delays(loop["control_steps"][steady], loop["used_steps"][steady])
-    return {"feedback_delay_samples": core.percentiles(delays), "feedback_delays": delays,
-            "state_stream": core.stream_timing(loop["state_steps"], loop["state_stamps"], loop["Ts"]),
-            "command_stream": core.stream_timing(loop["control_steps"], loop["control_stamps"], loop["Ts"]),
-            "uplink_loss": float(np.mean(~loop["arrived"][steady])) if steady.any() else 0.0,
-            "state_intervals": np.diff(loop["state_stamps"])}
+    t = {"feedback_delay_samples": core.percentiles(delays), "feedback_delays": delays,
+         "state_stream": core.stream_timing(loop["state_steps"], loop["state_stamps"], loop["Ts"]),
+         "command_stream": core.stream_timing(loop["control_steps"], loop["control_stamps"], loop["Ts"]),
+         "state_intervals": np.diff(loop["state_stamps"])}
+    t.update(uplink(delays[loop["arrived"][steady]], loop["used_steps"][steady]))
+    return t
+
+
+def uplink(on_arrival, used):
+    """Eq. I2b: the uplink's base delay and uniform jitter from the ages of
+    states on the cycle they arrived (D + J each: a held state's age is not
+    its packet's), its loss from the share of states ever used (inverting
+    seen_share, with its standard error by the delta method)."""
+    if on_arrival.size == 0:
+        return {"uplink_delay": 0, "uplink_jitter": 0, "uplink_loss": 0.0, "uplink_loss_stderr": None,
+                "states_seen": None}
+    base = int(on_arrival.min())
+    jitter = int(on_arrival.max()) - base
+    seen_steps = np.unique(used)
+    n = int(seen_steps.max() - seen_steps.min()) + 1
+    seen = seen_steps.size / n
+    loss = core.link_loss(seen, jitter)
+    slope = (core.seen_share(min(loss + 1e-4, 1.0), jitter) - core.seen_share(max(loss - 1e-4, 0.0), jitter)) / (
+        min(loss + 1e-4, 1.0) - max(loss - 1e-4, 0.0))
+    stderr = float(np.sqrt(seen * (1.0 - seen) / n) / abs(slope)) if slope else None
+    return {"uplink_delay": base, "uplink_jitter": jitter, "uplink_loss": loss, "uplink_loss_stderr": stderr,
+            "states_seen": seen}
 
 
 def commands_by_step(loop):
@@ -226,14 +248,10 @@ def parameter_table(model, nominal):
 
 
 def link_of(t, actuation_delay):
-    """The link file's content (docs/links.md): the uplink's base delay the
-    smallest steady feedback delay, its uniform jitter up to the 99th
-    percentile, its losses the cycles without a new state; the downlink's
-    delay the actuation delay (0 where it was not measured). Downlink
-    losses are not in a bag."""
-    delays = t["feedback_delays"]
-    base = int(delays.min()) if delays.size else 0
-    jitter = int(np.percentile(delays, 99)) - base if delays.size else 0
+    """The link file's content (docs/links.md): the uplink's base delay,
+    uniform jitter and loss of eq. I2b; the downlink's delay the actuation
+    delay (0 where it was not measured). Downlink losses are not in a bag."""
+    base, jitter = t["uplink_delay"], t["uplink_jitter"]
     up = {"delay": base}
     if jitter > 0:
         up["jitter"] = {"kind": "uniform", "max": jitter}
@@ -267,6 +285,7 @@ def summary(bag, name, loop, max_delay, window):
          "feedback_delay_samples": int(round(t["feedback_delay_samples"]["median"])),
          "feedback_delay_distribution": t["feedback_delay_samples"], "actuation_delay_samples": None,
          "state_stream": t["state_stream"], "command_stream": t["command_stream"], "uplink_loss": t["uplink_loss"],
+         "uplink_loss_stderr": t["uplink_loss_stderr"], "states_seen": t["states_seen"],
          "parameters": {}, "fit": {}, "model": "identified"}
     vehicle_file = None
     nominal_path, nominal = nominal_vehicle(loop["vehicle"])
@@ -408,7 +427,8 @@ def markdown(j):
              "| state stream | %.2f Hz, %d lost of %d steps (longest burst %d) |" % (
                  j["state_stream"]["rate_hz"] or 0.0, j["state_stream"]["lost"], j["state_stream"]["steps_spanned"],
                  j["state_stream"]["longest_burst"]),
-             "| cycles without a new state | %.4f |" % j["uplink_loss"], "",
+             "| uplink loss (states never used, eq. I2b) | %.4f%s |" % (
+                 j["uplink_loss"], " +- %.4f" % j["uplink_loss_stderr"] if j["uplink_loss_stderr"] else ""), "",
              "`link.yaml`: `%s`" % json.dumps(j["link"]), "", "## Model", "", j["model"], ""]
     if j["parameters"]:
         lines += ["| parameter | identified | stderr | nominal |", "|---|---|---|---|"]

@@ -67,6 +67,34 @@ def stream_timing(steps, stamps, Ts):
             "mean_burst": float(bursts.mean()) if bursts.size else 0.0}
 
 
+def seen_share(loss, jitter_max):
+    """Eq. I2b: the share of the states sent that are ever the law's newest
+    over a link (docs/links.md) losing each packet with probability `loss`
+    and delaying it by a uniform 0 .. jitter_max extra samples: a state is
+    seen when it arrives and no newer one has arrived by then (one m steps
+    newer overtakes it when m + its jitter <= this one's jitter)."""
+    M = int(jitter_max)
+    total = 0.0
+    for J in range(M + 1):
+        p = 1.0
+        for m in range(1, J + 1):
+            p *= 1.0 - (1.0 - loss) * (J - m + 1) / (M + 1)
+        total += p
+    return (1.0 - loss) * total / (M + 1)
+
+
+def link_loss(seen, jitter_max):
+    """Eq. I2b inverted: the loss that leaves the share `seen` of the states
+    seen under a uniform jitter up to jitter_max (0 where even a lossless
+    link would show fewer)."""
+    from scipy.optimize import brentq
+    if seen >= seen_share(0.0, jitter_max):
+        return 0.0
+    if seen <= 0.0:
+        return 1.0
+    return float(brentq(lambda l: seen_share(l, jitter_max) - seen, 0.0, 1.0 - 1e-12, xtol=1e-12))
+
+
 def differences(positions, Ts):
     """Eq. I4: v_k = (p_k - p_(k-1)) / Ts and a_k = (v_(k+1) - v_k) / Ts for
     k = 1 .. n - 2 (the models' semi-implicit Euler step: its velocity
