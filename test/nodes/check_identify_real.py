@@ -1,7 +1,10 @@
 #!/usr/bin/python3
-"""identify_real.test (issue 52, item 2): a realtime flight through
-real.launch of a Bebop 2 that differs from its vehicle file, behind a
-driver with a latency of its own, recorded and identified."""
+"""identify_real.test, identify_real_pioneer.test (issue 52, item 2): a
+realtime flight (drive) through real.launch of a Bebop 2 (Pioneer) that
+differs from its vehicle file (~vehicle_file, the fake driver's), behind a
+driver with a latency of its own (~latency samples), over a link with
+jitter and losses (~feedback, ~jitter, ~loss), recorded and identified;
+~checked parameters within ~tolerance."""
 import json
 import os
 import sys
@@ -17,15 +20,13 @@ from bag_helpers import record_until, run_tool  # noqa: E402
 
 
 class IdentifyRealTest(unittest.TestCase):
-    """What holds on a realtime loop (measured, idle / both cores busy: feedback delays 3 .. 6, median 4;
-    actuation delay 3 / 2: the driver's 2 samples plus a fraction, the phase of its step timer against the
-    loop's, rounded either way; input gains within 10.3 / 11.0 %; the horizontal damping not determined;
-    the link's base delay 3 and jitter 2 exact, its loss 0.051 +- 0.036 where 0.05 was configured;
-    docs/identify.md, "A real loop")."""
+    """What holds on a realtime loop (docs/identify.md, "A real loop", gives what was measured: the link's
+    base delay, jitter and loss; an actuation delay of the driver's latency and a fraction, rounded either
+    way; some parameters within a few percent, others not determined or off by tens of percent under load)."""
 
     def test_identifies_the_real_loop(self):
         p = lambda name: rospy.get_param("~" + name)  # noqa: E731
-        bag = record_until(1500, p("bag_dir"), "identify", timeout=200.0)
+        bag = record_until(p("steps"), p("bag_dir"), "identify", timeout=200.0)
         out = tempfile.mkdtemp(prefix="identify_real_")
         rc, text = run_tool(["rosrun", "aurora", "identify", bag, "--out", out, "--window", "15"])
         self.assertEqual(rc, 0, text)
@@ -37,19 +38,26 @@ class IdentifyRealTest(unittest.TestCase):
             {k: round(e, 4) for k, e in errors.items()}, j.get("open_loop_rms")))
         # The uplink's base delay is the configured one (no cycle flies a newer state than delay:= allows),
         # the feedback delays vary by the link's jitter and what a realtime loop adds.
-        self.assertEqual(j["link"]["uplink"]["delay"], 3)
-        self.assertEqual(j["link"]["uplink"]["jitter"], {"kind": "uniform", "max": 2})
-        self.assertLess(abs(j["uplink_loss"] - 0.05), 2 * j["uplink_loss_stderr"], j["uplink_loss"])
-        self.assertGreaterEqual(j["feedback_delay_samples"], 3)
-        # No command acts before the driver's latency (2 samples) has passed.
-        self.assertGreaterEqual(j["actuation_delay_samples"], 2)
-        self.assertLessEqual(j["actuation_delay_samples"], 4)
-        for key in ("input_gain.x", "input_gain.z"):
+        self.assertEqual(j["link"]["uplink"]["delay"], p("feedback"))
+        self.assertEqual(j["link"]["uplink"]["jitter"], {"kind": "uniform", "max": p("jitter")})
+        self.assertLess(abs(j["uplink_loss"] - p("loss")), 2 * j["uplink_loss_stderr"], j["uplink_loss"])
+        self.assertGreaterEqual(j["feedback_delay_samples"], p("feedback"))
+        # No command acts before the driver's latency has passed; the loop adds up to a sample or two.
+        self.assertGreaterEqual(j["actuation_delay_samples"], p("latency"))
+        self.assertLessEqual(j["actuation_delay_samples"], p("latency") + 2)
+        for key in p("checked").split():
             self.assertTrue(j["parameters"][key]["identified"], (key, j["parameters"][key]))
-            self.assertLess(abs(errors[key]), 0.2, key)
+            self.assertLess(abs(errors[key]), p("tolerance"), key)
+        # The recorded commands flown open loop (eq. I7's segments): the identified model within 3 cm of the
+        # recording in x and y, and at most half as far as the nominal one on the ~better poses.
+        rms = j["open_loop_rms"]
+        for axis in ("x", "y"):
+            self.assertLess(rms["identified"][axis], 0.03, (axis, rms))
+        for axis in p("better").split():
+            self.assertLess(2 * rms["identified"][axis], rms["nominal"][axis], (axis, rms))
         # The identified files are the product's own.
         rc, text = run_tool(["rosrun", "aurora_control", "flight", "--vehicle", os.path.join(out, "vehicle.yaml"),
-                             "--controller", "bebop2_compensator", "--task", "bebop2_identification",
+                             "--controller", p("controller"), "--task", p("task"),
                              "--link", os.path.join(out, "link.yaml")])
         self.assertEqual(rc, 0, text)
 

@@ -126,13 +126,15 @@ def loop_arrays(d):
 
 
 def timing(loop):
-    """Eqs. I1, I2: the feedback delays of the cycles once the delay could be
-    in force (delay_pending 0, and a state that old existed: the loop's first
-    D cycles, D the median delay, use newer ones), the streams' timing, the
-    uplink's losses."""
-    all_delays = core.feedback_delays(loop["control_steps"], loop["used_steps"])
-    first = min(int(loop["state_steps"][0]), int(loop["control_steps"][0]))
-    steady = (loop["pending"] == 0) & (loop["control_steps"] - first >= np.median(all_delays)) & loop["law_ran"]
+    """Eqs. I1, I2: the feedback delays of the cycles the law flew once the
+    delay was in force (delay_pending 0) and a state had come over the link
+    (until one does, the law flies the current one, of age 0: links.md; the
+    leading cycles of age 0 where later ones are older), the streams'
+    timing, the uplink (eq. I2b)."""
+    ages = core.feedback_delays(loop["control_steps"], loop["used_steps"])
+    older = np.flatnonzero(ages > 0)
+    start = older[0] if older.size else 0
+    steady = (loop["pending"] == 0) & loop["law_ran"] & (np.arange(len(ages)) >= start)
     delays = core.feedback_delays(loop["control_steps"][steady], loop["used_steps"][steady])
     t = {"feedback_delay_samples": core.percentiles(delays), "feedback_delays": delays,
          "state_stream": core.stream_timing(loop["state_steps"], loop["state_stamps"], loop["Ts"]),
