@@ -8,6 +8,7 @@
 #include "aurora_control/link/link.h"
 #include "aurora_control/params/parameter_table.h"
 #include "aurora_control/law/underactuated_law.h"
+#include "aurora_sim/vehicle/vehicle_type.h"
 #include "aurora_sweep/sweep_gains.h"
 
 namespace aurora_sweep {
@@ -68,6 +69,19 @@ void withShapeParams(SweepShape shape, F&& f) {
   f(aurora_control::LineFormation<double>());
 }
 
+// Vehicle V's model factors in the sweep's slots (V::factorName order;
+// the slots it does not have unused).
+template <class V>
+std::vector<ParamInfo> factorRows() {
+  std::vector<ParamInfo> rows(kModelFactorCount, ParamInfo{"", ParamGroup::kUnused, 0.0, 0.0, "", false});
+  static_assert(V::kFactors <= kModelFactorCount, "the sweep holds kModelFactorCount model factors");
+  for (int i = 0; i < V::kFactors; ++i) {
+    rows[static_cast<size_t>(i)] = {V::factorName(i), ParamGroup::kModelFactor, kFactorMin, kFactorMax,
+                                    "a factor of the vehicle file's value: positive, at most 10x either way"};
+  }
+  return rows;
+}
+
 std::vector<ParamInfo> makeTable(SweepShape shape) {
   using namespace aurora_control;
   // Room no shape of the sweep uses: no name, applies to no sweep.
@@ -84,10 +98,8 @@ std::vector<ParamInfo> makeTable(SweepShape shape) {
                                            "the controller node's underactuated gain range (positive)", false,
                                            lawName(LawType::kUnderactuated)};
   }
-  const char* model[kModelFactorCount] = {"m", "Ixx", "Iyy", "Izz", "Cf", "Ct", "Km", "Jm"};
   for (int i = 0; i < kModelFactorCount; ++i) {
-    t[kParamFirstModelFactor + i] = {model[i], ParamGroup::kModelFactor, kFactorMin, kFactorMax,
-                                     "a factor of the vehicle file's value: positive, at most 10x either way"};
+    t[kParamFirstModelFactor + i] = modelFactorInfo(aurora_sim::Ardrone2::name(), i);
   }
   // The link's values: the parameter table's rows (their live names, ranges).
   for (int i = 0; i < kLinkParamCount; ++i) {
@@ -108,6 +120,18 @@ std::vector<ParamInfo> makeTable(SweepShape shape) {
 
 }  // namespace
 
+const ParamInfo& modelFactorInfo(const std::string& vehicle_type, int i) {
+  static const std::vector<std::pair<std::string, std::vector<ParamInfo>>> tables = [] {
+    std::vector<std::pair<std::string, std::vector<ParamInfo>>> t;
+    aurora_sim::forEachVehicle([&](auto v) { t.emplace_back(v.name(), factorRows<decltype(v)>()); });
+    return t;
+  }();
+  for (const auto& t : tables) {
+    if (t.first == vehicle_type) return t.second[static_cast<size_t>(i)];
+  }
+  return tables.front().second[static_cast<size_t>(i)];  // not reached: a sweep's vehicle type is known
+}
+
 const char* sweepShapeName(SweepShape shape) {
   static const char* const names[kSweepShapeCount] = {"none", "line", "uav_ugv_line", "triangle"};
   return names[static_cast<int>(shape)];
@@ -122,7 +146,6 @@ const ParamInfo& paramInfo(int id, SweepShape shape) {
 
 bool paramApplies(const ParamInfo& info, const std::string& controller, SweepShape shape) {
   const ParamGroup group = info.group;
-  aurora_control::LawType ardrone_law;
   if (shape != SweepShape::kNone) {
     return group == ParamGroup::kDroneDelay || group == ParamGroup::kFormationGain || group == ParamGroup::kLink ||
            group == ParamGroup::kDroneLink || group == ParamGroup::kFormationLaw || group == ParamGroup::kRobotGain;
@@ -131,7 +154,7 @@ bool paramApplies(const ParamInfo& info, const std::string& controller, SweepSha
     case ParamGroup::kPdGain:
     case ParamGroup::kUnderactuatedGain:
     case ParamGroup::kLawGain: return info.law == controller;
-    case ParamGroup::kModelFactor: return lawFromName(controller, ardrone_law);  // the AR.Drone's factors
+    case ParamGroup::kModelFactor: return true;  // the sweep's vehicle's (SweepSpec::param names them)
     case ParamGroup::kRepeat: return false;  // sweep.repeats, not a parameter
     case ParamGroup::kDroneDelay:
     case ParamGroup::kFormationGain:

@@ -244,10 +244,11 @@ void writeSummaryJson(const std::string& path, const SweepSpec& spec, const RunI
   json order = json::array();
   for (const Axis& a : spec.axes) order.push_back(spec.paramNameOf(a.param));
   // The result rows' parameter columns, and the values of those not varied.
-  json parameters = json::array(), fixed = json::object();
+  json parameters = json::array(), fixed = json::object(), factors = json::array();
   for (int id : spec.columns()) {
     parameters.push_back(spec.paramNameOf(id));
     if (!spec.varies(id)) fixed[spec.paramNameOf(id)] = spec.fixed[id];
+    if (spec.param(id).group == ParamGroup::kModelFactor) factors.push_back(spec.paramNameOf(id));
   }
   const auto list = [&](const long* v) { return json(std::vector<long>(v, v + counts.checks)); };
   json j = {
@@ -260,6 +261,7 @@ void writeSummaryJson(const std::string& path, const SweepSpec& spec, const RunI
       {"controller", spec.controller},
       {"predictor", predictorJson(spec)},
       {"parameters", parameters},
+      {"model_factors", factors},  // those of `parameters` that scale the vehicle file's values
       {"result_columns", resultColumnsJson(spec.formation())},
       {"link", spec.linkIdeal() ? json("ideal") : spec.link_file.empty() ? json("the link parameters") : json(spec.link_file)},
       {"repeats", spec.repeats},

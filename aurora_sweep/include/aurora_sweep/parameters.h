@@ -40,12 +40,17 @@ struct ParamInfo {
 // Parameter id's row in a sweep of `shape` (a formation's robot gains are
 // the sweep's own rows: SweepSpec::param, SweepSpec::paramId by name).
 const ParamInfo& paramInfo(int id, SweepShape shape);
+// Factor slot i (0 .. kModelFactorCount - 1) of a single-robot sweep of a
+// vehicle of type `vehicle_type`: its factorName(i) (the AR.Drone's m, Ixx,
+// ...; the Bebop 2's Ku_x ... Kv_yaw; the Pioneer's theta1 ... theta6), or
+// an unused row where it has fewer factors.
+const ParamInfo& modelFactorInfo(const std::string& vehicle_type, int i);
 // A short name; "kp", "k1_theta", "m", ...
 inline const char* paramName(int id, SweepShape shape) { return paramInfo(id, shape).name.c_str(); }
 
 // Whether a sweep of controller `controller` (a law's name) accepts the
-// parameter of row `info` (its gains, the delay, the model factors of the
-// AR.Drone, the link); a formation sweep (shape not kNone) accepts its
+// parameter of row `info` (its gains, the delay, its vehicle's model
+// factors, the link); a formation sweep (shape not kNone) accepts its
 // robots' delays, the formation's gains (a triangle's law), the link's
 // values and its robots' own gains instead (SweepSpec::accepts; its
 // acceptedNames lists them).

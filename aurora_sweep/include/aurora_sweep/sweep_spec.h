@@ -122,11 +122,13 @@ struct SweepSpec {
   // a robot's room its law does not use has no name. Set with the
   // formation (readSweepFormation).
   std::vector<ParamInfo> robot_gains;
-  // Parameter id's name and rules in this sweep (its shape's, its robots').
+  // Parameter id's name and rules in this sweep (its shape's, its robots',
+  // its vehicle's model factors).
   const ParamInfo& param(int id) const {
-    const int row = id - kParamFirstRobotGain;
-    return row >= 0 && row < static_cast<int>(robot_gains.size()) ? robot_gains[static_cast<size_t>(row)]
-                                                                  : paramInfo(id, shape);
+    const int row = id - kParamFirstRobotGain, factor = id - kParamFirstModelFactor;
+    if (row >= 0 && row < static_cast<int>(robot_gains.size())) return robot_gains[static_cast<size_t>(row)];
+    if (!formation() && factor >= 0 && factor < kModelFactorCount) return modelFactorInfo(vehicle_type, factor);
+    return paramInfo(id, shape);
   }
   const char* paramNameOf(int id) const { return param(id).name.c_str(); }
   // Whether this sweep accepts parameter `id` (parameters.h).

@@ -88,12 +88,18 @@ def share(np, idx, feasible, n):
 
 
 # The model parameters a sweep varies are factors of the vehicle file's
-# values ("m" would read as metres): their axes say so.
-MODEL_FACTORS = ("m", "Ixx", "Iyy", "Izz", "Cf", "Ct", "Km", "Jm")
+# values ("m" would read as metres): their axes say so. summary.json names
+# them (model_factors); a summary written before it did: the AR.Drone's, the
+# only vehicle whose factors a sweep took then.
+ARDRONE_FACTORS = ("m", "Ixx", "Iyy", "Izz", "Cf", "Ct", "Km", "Jm")
 
 
-def axis_label(name):
-    if name in MODEL_FACTORS:
+def model_factors(summary):
+    return tuple(summary.get("model_factors", ARDRONE_FACTORS))
+
+
+def axis_label(name, summary):
+    if name in model_factors(summary):
         return "%s factor (x vehicle file's %s)" % (name, name)
     return "delay [samples]" if name == "delay" else name
 
@@ -111,7 +117,7 @@ def marginals(np, plt, params, feasible, summary, out):
     for ax, name in zip(axes.flat, names):
         idx, centres = binned(np, params[name])
         ax.plot(centres, share(np, idx, feasible, len(centres)), "o-", ms=3)
-        ax.set_xlabel(axis_label(name))
+        ax.set_xlabel(axis_label(name, summary))
         ax.set_ylabel("feasible share")
         ax.set_ylim(-0.02, 1.02)
         ax.grid(alpha=0.3)
@@ -142,8 +148,8 @@ def pairs(np, plt, params, feasible, summary, out):
         grid = share(np, ib * len(ca) + ia, feasible, len(ca) * len(cb)).reshape(len(cb), len(ca))
         im = ax.pcolormesh(cell_edges(np, ca), cell_edges(np, cb), grid, cmap="viridis", vmin=0, vmax=1)
         fig.colorbar(im, ax=ax, label="feasible share")
-        ax.set_xlabel(axis_label(a))
-        ax.set_ylabel(axis_label(b))
+        ax.set_xlabel(axis_label(a, summary))
+        ax.set_ylabel(axis_label(b, summary))
     fig.suptitle("%s: feasible share over pairs of the most influential parameters" % summary.get("name", "sweep"))
     fig.tight_layout(rect=(0, 0, 1, 0.96))  # room for the title
     fig.savefig(os.path.join(out, "feasible_pairs.png"), dpi=100)
@@ -380,7 +386,7 @@ def compare_shares(np, plt, runs, out, scales):
     (what model error leaves of a remedy)."""
     scale, unit = scales
     axes_of = [("delay", "delay [%s]" % unit, lambda cols, i: cols["delay"] * scale[i])]
-    factors = [f for f in MODEL_FACTORS if all(f in names for _, names, _, _ in runs)]
+    factors = [f for f in model_factors(runs[0][0]) if all(f in names for _, names, _, _ in runs)]
     if factors:
         axes_of.append(("model error", "largest model factor error max |f - 1| over " + ", ".join(factors),
                         lambda cols, i: np.max(np.abs(np.stack([cols[f] for f in factors]) - 1.0), axis=0)))
