@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "aurora_control/law/law_yaml.h"
+#include "aurora_control/loop/law_yaml.h"
 #include "aurora_control/link/link_yaml.h"
 #include "aurora_control/task/task_yaml.h"
 #include "param_tree.h"

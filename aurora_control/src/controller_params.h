@@ -11,7 +11,7 @@
 #include "aurora_control/params/parameter_table.h"
 #include "aurora_control/robot/flight_supervisor.h"
 #include "aurora_control/robot/joystick.h"
-#include "aurora_control/law/law_settings_yaml.h"
+#include "aurora_control/loop/law_settings_yaml.h"
 #include "aurora_control/loop/delayed_controller.h"
 #include "aurora_sim/ros/vehicle_params.h"
 #include "param_tree.h"

@@ -9,7 +9,7 @@
 #include "aurora_common/number_text.h"
 #include "aurora_control/formation/formation_judge.h"
 #include "aurora_control/formation/formation_yaml.h"
-#include "aurora_sim/vehicle_yaml.h"
+#include "aurora_sim/vehicle/vehicle_yaml.h"
 
 namespace aurora_control {
 

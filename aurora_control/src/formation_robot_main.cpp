@@ -14,7 +14,7 @@
 #include <string>
 
 #include "aurora_control/formation/formation_crew.h"
-#include "aurora_sim/vehicle_yaml.h"
+#include "aurora_sim/vehicle/vehicle_yaml.h"
 
 namespace po = boost::program_options;
 using namespace aurora_control;

@@ -18,7 +18,7 @@
 #include "aurora_control/formation/formation_runner.h"
 #include "aurora_control/formation/formation_yaml.h"
 #include "aurora_control/formation/line_formation.h"
-#include "aurora_sim/vehicle_yaml.h"
+#include "aurora_sim/vehicle/vehicle_yaml.h"
 
 using namespace aurora_control;
 using Line = LineFormation<double>;

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <limits>
 
-#include "aurora_control/params/live_settings.h"
+#include "aurora_control/loop/live_settings.h"
 #include "aurora_control/task/tracking.h"
 
 using namespace aurora_control;

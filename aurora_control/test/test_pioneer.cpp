@@ -11,7 +11,7 @@
 #include "aurora_control/law/pioneer_laws.h"
 #include "aurora_control/loop/flight_setup.h"
 #include "aurora_sim/vehicle/sim_profile.h"
-#include "aurora_sim/vehicle_yaml.h"
+#include "aurora_sim/vehicle/vehicle_yaml.h"
 
 namespace {
 

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "aurora_control/law/law_yaml.h"
+#include "aurora_control/loop/law_yaml.h"
 #include "aurora_control/params/limits.h"
 #include "aurora_control/params/parameter_table.h"
 

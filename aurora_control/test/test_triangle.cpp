@@ -18,7 +18,7 @@
 #include "aurora_control/formation/triangle_reference.h"
 #include "aurora_control/formation/triangle_yaml.h"
 #include "aurora_control/law/control_law.h"
-#include "aurora_sim/vehicle_yaml.h"
+#include "aurora_sim/vehicle/vehicle_yaml.h"
 #include "edited_file.h"
 
 namespace {

@@ -20,7 +20,7 @@
 #include "aurora_control/formation/uav_ugv_yaml.h"
 #include "aurora_control/law/control_law.h"
 #include "aurora_control/law/pioneer_laws.h"
-#include "aurora_sim/vehicle_yaml.h"
+#include "aurora_sim/vehicle/vehicle_yaml.h"
 #include "edited_file.h"
 #include "yaml-cpp/yaml.h"
 

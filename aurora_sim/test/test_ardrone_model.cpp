@@ -11,7 +11,7 @@
 #include "aurora_sim/ardrone_model.h"
 #include "aurora_sim/command_mapping.h"
 #include "aurora_sim/vehicle_keys.h"
-#include "aurora_sim/vehicle_yaml.h"
+#include "aurora_sim/vehicle/vehicle_yaml.h"
 
 using namespace aurora_sim;
 using namespace aurora_common;

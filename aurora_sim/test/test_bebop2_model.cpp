@@ -10,7 +10,7 @@
 
 #include "aurora_sim/vehicle/bebop2.h"
 #include "aurora_sim/vehicle/pioneer3dx.h"
-#include "aurora_sim/vehicle_yaml.h"
+#include "aurora_sim/vehicle/vehicle_yaml.h"
 
 namespace {
 

@@ -13,7 +13,7 @@
 
 #include <vector>
 
-#include "aurora_control/predictor/predicted_loop.h"
+#include "aurora_control/loop/predicted_loop.h"
 #include "gather_lanes.h"
 #include "lane_history.h"
 

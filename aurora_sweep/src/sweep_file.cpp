@@ -17,7 +17,7 @@
 #include "aurora_sweep/backends.h"
 #include "aurora_sweep/design.h"
 #include "sweep_file_formation.h"
-#include "aurora_sim/vehicle_yaml.h"
+#include "aurora_sim/vehicle/vehicle_yaml.h"
 
 namespace aurora_sweep {
 

@@ -20,7 +20,7 @@
 #include "aurora_control/formation/triangle_formation.h"
 #include "aurora_control/formation/triangle_reference.h"
 #include "aurora_control/law/either_law.h"
-#include "aurora_sim/vehicle_yaml.h"
+#include "aurora_sim/vehicle/vehicle_yaml.h"
 #include "aurora_sweep/kernel_entry.h"
 #include "sweep_test_support.h"
 #include "point_mass.h"

@@ -132,7 +132,7 @@ TEST(SweepPredictor, BadInputIsRefusedNamingTheKey) {
 #ifdef AURORA_SWEEP_LANES  // xsimd >= 8
 #include <cmath>
 
-#include "aurora_sim/vehicle_yaml.h"
+#include "aurora_sim/vehicle/vehicle_yaml.h"
 #include "../src/lane_predictor.h"
 
 // The lanes' predictor across long outages (no newer state for longer

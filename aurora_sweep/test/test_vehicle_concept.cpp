@@ -19,7 +19,7 @@
 #endif
 #include "aurora_control/law/bebop2_compensator.h"
 #include "aurora_control/law/pioneer_laws.h"
-#include "aurora_sim/vehicle_yaml.h"
+#include "aurora_sim/vehicle/vehicle_yaml.h"
 #include "aurora_sweep/parameters.h"
 #include "aurora_sweep/kernel_entry.h"
 #include "point_mass.h"

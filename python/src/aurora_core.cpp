@@ -17,7 +17,7 @@
 #include "aurora_control/params/shipped_files.h"
 #include "aurora_sim/vehicle/sim_profile.h"
 #include "aurora_sim/vehicle/vehicle_type.h"
-#include "aurora_sim/vehicle_yaml.h"
+#include "aurora_sim/vehicle/vehicle_yaml.h"
 
 namespace py = pybind11;
 using namespace aurora_control;

@@ -11,7 +11,7 @@
 #include "aurora_sweep/formation_simulation.h"
 #include "aurora_sweep/simulation.h"
 #include "aurora_sweep/sweep_spec.h"
-#include "aurora_sim/vehicle_yaml.h"
+#include "aurora_sim/vehicle/vehicle_yaml.h"
 
 namespace aurora_sweep {
 

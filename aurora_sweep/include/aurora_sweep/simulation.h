@@ -7,7 +7,7 @@
 #include <type_traits>
 
 #include "aurora_control/loop/positioning_runner.h"
-#include "aurora_control/predictor/predicted_loop.h"
+#include "aurora_control/loop/predicted_loop.h"
 #include "aurora_sweep/combination.h"
 #include "aurora_sweep/sweep_gains.h"
 

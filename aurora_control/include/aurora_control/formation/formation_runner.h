@@ -15,8 +15,8 @@
 #include "aurora_control/formation/formation_layer.h"
 #include "aurora_control/formation/formation_reference.h"
 #include "aurora_control/formation/uav_ugv_line.h"
-#include "aurora_control/link/loop_link.h"
-#include "aurora_control/predictor/predicted_loop.h"
+#include "aurora_control/loop/loop_link.h"
+#include "aurora_control/loop/predicted_loop.h"
 
 namespace aurora_control {
 

@@ -16,7 +16,7 @@
 #include "aurora_common/yaml_file.h"
 #include "aurora_control/formation/formation_checks.h"
 #include "aurora_control/formation/formation_runner.h"
-#include "aurora_control/law/law_yaml.h"
+#include "aurora_control/loop/law_yaml.h"
 #include "aurora_control/params/limits.h"
 #include "aurora_control/link/link_yaml.h"
 #include "aurora_control/params/yaml_reader.h"

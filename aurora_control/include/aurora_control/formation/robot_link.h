@@ -8,7 +8,7 @@
 #include <memory>
 
 #include "aurora_control/link/link.h"
-#include "aurora_control/link/loop_link.h"
+#include "aurora_control/loop/loop_link.h"
 #include "aurora_control/params/limits.h"
 
 namespace aurora_control {

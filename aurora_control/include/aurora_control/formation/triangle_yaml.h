@@ -25,7 +25,7 @@
 
 #include "aurora_control/formation/formation_yaml.h"
 #include "aurora_control/formation/triangle_run.h"
-#include "aurora_sim/vehicle_yaml.h"
+#include "aurora_sim/vehicle/vehicle_yaml.h"
 
 namespace aurora_control {
 

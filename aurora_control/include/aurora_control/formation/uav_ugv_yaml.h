@@ -21,7 +21,7 @@
 #include "aurora_control/formation/formation_yaml.h"
 #include "aurora_control/formation/uav_ugv_run.h"
 #include "aurora_control/law/pioneer_yaml.h"
-#include "aurora_sim/vehicle_yaml.h"
+#include "aurora_sim/vehicle/vehicle_yaml.h"
 
 namespace aurora_control {
 

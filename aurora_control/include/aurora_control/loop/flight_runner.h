@@ -11,7 +11,7 @@
 #include <string>
 
 #include "aurora_control/loop/delayed_controller.h"
-#include "aurora_control/predictor/predicted_loop.h"
+#include "aurora_control/loop/predicted_loop.h"
 #include "aurora_control/task/tracking.h"
 
 namespace aurora_control {

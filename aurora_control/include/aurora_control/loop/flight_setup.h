@@ -9,14 +9,14 @@
 
 #include "aurora_control/loop/flight_runner.h"
 #include "aurora_control/law/compensator_yaml.h"
-#include "aurora_control/law/law_yaml.h"
+#include "aurora_control/loop/law_yaml.h"
 #include "aurora_control/law/other_laws.h"
 #include "aurora_control/law/pioneer_yaml.h"
 #include "aurora_control/params/limits.h"
 #include "aurora_control/predictor/predictor_yaml.h"
 #include "aurora_control/link/link_yaml.h"
 #include "aurora_control/task/task_yaml.h"
-#include "aurora_sim/vehicle_yaml.h"
+#include "aurora_sim/vehicle/vehicle_yaml.h"
 
 namespace aurora_control {
 

@@ -12,7 +12,7 @@
 #include "aurora_control/loop/delay_buffer.h"
 #include "aurora_control/params/limits.h"
 #include "aurora_control/loop/closed_loop.h"
-#include "aurora_control/link/loop_link.h"
+#include "aurora_control/loop/loop_link.h"
 #include "aurora_common/refusal_text.h"
 
 namespace aurora_control {

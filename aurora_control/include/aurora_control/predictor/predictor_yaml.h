@@ -13,9 +13,9 @@
 
 #include "aurora_control/params/limits.h"
 #include "aurora_control/params/yaml_reader.h"
-#include "aurora_control/predictor/predicted_loop.h"
+#include "aurora_control/predictor/state_predictor.h"
 #include "aurora_common/yaml_file.h"
-#include "aurora_sim/vehicle_yaml.h"
+#include "aurora_sim/vehicle/vehicle_yaml.h"
 
 namespace aurora_control {
 

@@ -173,4 +173,20 @@ class StatePredictor {
   long k_ = 0;
 };
 
+// The predictor's settings for a run (docs/predictor.md, "Configuration"):
+// its form, its model of the vehicle (the nominal vehicle file; the plant
+// may differ) and the command path it predicts over.
+template <class Vehicle, typename T>
+struct PredictorRun {
+  PredictorForm form = PredictorForm::kOff;
+  typename Vehicle::template Params<T> model;
+  CommandPath path;
+  AURORA_HD bool on() const { return form != PredictorForm::kOff; }
+  // The same predictor in precision U (a sweep's).
+  template <typename U>
+  PredictorRun<Vehicle, U> cast() const {
+    return PredictorRun<Vehicle, U>{form, model.template cast<U>(), path};
+  }
+};
+
 }  // namespace aurora_control

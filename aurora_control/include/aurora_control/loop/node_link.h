@@ -9,7 +9,7 @@
 
 #include <memory>
 
-#include "aurora_control/link/loop_link.h"
+#include "aurora_control/loop/loop_link.h"
 
 namespace aurora_control {
 

@@ -67,22 +67,6 @@ struct PredictedLink {
   }
 };
 
-// The predictor's settings for a run (docs/predictor.md, "Configuration"):
-// its form, its model of the vehicle (the nominal vehicle file; the plant
-// may differ) and the command path it predicts over.
-template <class Vehicle, typename T>
-struct PredictorRun {
-  PredictorForm form = PredictorForm::kOff;
-  typename Vehicle::template Params<T> model;
-  CommandPath path;
-  AURORA_HD bool on() const { return form != PredictorForm::kOff; }
-  // The same predictor in precision U (a sweep's).
-  template <typename U>
-  PredictorRun<Vehicle, U> cast() const {
-    return PredictorRun<Vehicle, U>{form, model.template cast<U>(), path};
-  }
-};
-
 // Runs loopIteration with `predictor` over `link` (host, scalar loop and
 // CUDA thread alike: nothing allocated here).
 template <class Law, typename T, int Capacity, typename Observer, class Predictor, typename Link>

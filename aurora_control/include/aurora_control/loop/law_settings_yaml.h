@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "aurora_control/law/compensator_yaml.h"
-#include "aurora_control/law/law_yaml.h"
+#include "aurora_control/loop/law_yaml.h"
 #include "aurora_control/law/pioneer_yaml.h"
 #include "aurora_control/loop/delayed_controller.h"
 
