@@ -21,6 +21,7 @@
 #include "aurora_control/formation/formation_flight.h"
 #include "aurora_control/formation/uav_ugv_yaml.h"
 #include "aurora_control/formation/triangle_yaml.h"
+#include "aurora_control/law/other_laws.h"
 #include "aurora_control/params/shipped_files.h"
 #include "option_values.h"
 
@@ -70,14 +71,14 @@ bool parse(int argc, char** argv, Options& o) {
   const std::string config = o.config = aurora_common::configDir();  // throws: says what to source
   po::options_description d("usage: flight [options]\n\nFlies one task offline with the controller node's core and prints its tracking error.\n\noptions");
   d.add_options()("help,h", "this text")
-      ("controller", po::value(&o.controller)->default_value(config + "/controllers/pd_saturated.yaml"), "controller YAML (law and gains), or a shipped NAME (config/controllers/NAME.yaml: pd_saturated, underactuated, bebop2_compensator, pioneer_dynamic, pioneer_kinematic); its law chooses the vehicle")
+      ("controller", po::value(&o.controller)->default_value(config + "/controllers/pd_saturated.yaml"), ("controller YAML (law and gains), or a shipped NAME (config/controllers/NAME.yaml; laws: " + knownLawNames() + "); its law chooses the vehicle").c_str())
       ("task", po::value(&o.task)->default_value(config + "/tasks/mission4.yaml"), "task YAML (waypoints, circle, lemniscate), or a shipped NAME (config/tasks/NAME.yaml)")
       ("rate", po::value(&o.rate), "the Bebop 2 compensator's rate [Hz] instead of its file's: the vehicle's 30 Hz divided by whole steps (30, 15, 10, 7.5, 6, 5, ...)")
-      ("vehicle", po::value(&o.vehicle), "vehicle YAML or a shipped NAME (default: the controller's vehicle, config/vehicles/NAME.yaml: ardrone2, bebop2 for bebop2_compensator, pioneer3dx for the pioneer_ laws)")
+      ("vehicle", po::value(&o.vehicle), ("vehicle YAML or a shipped NAME (default: the controller's vehicle, config/vehicles/NAME.yaml: " + lawVehicleNames() + ")").c_str())
       ("delay", po::value(&o.delays)->multitoken()->composing(), "feedback delay [samples of Ts], 0 to 2047 (limits.h); with --formation one per robot (default: the file's)")
       ("no-clamp", po::bool_switch(&o.no_clamp), "do not clamp the law's commands (an AR.Drone's sim still does, as its driver; a Bebop is clamped nowhere; refused for the Pioneer, whose laws saturate)")
       ("formation", po::value(&o.formation), "formation YAML or a shipped NAME (config/formations/*.yaml, docs/formation.md): fly its robots and formation layer instead of --controller and --task")
-      ("law", po::value(&o.law), "with --formation, a triangle's law instead of its file's: N, PSO, SPO, OSP, S-PO (docs/formation.md)")
+      ("law", po::value(&o.law), ("with --formation, a triangle's law instead of its file's: " + triangleLawNames() + " (docs/formation.md)").c_str())
       ("link", po::value(&o.link), "link YAML or a shipped NAME (config/links/*.yaml, docs/links.md): jitter, losses, a command-path delay; its uplink delay unless --delay is given")
       ("csv", po::value(&o.csv), "write one row per step k = 0..N at round-trip precision: step, t, the vehicle's state after k model steps (x, y, z, phi, theta, psi, dx, dy, dz, dphi, dtheta, dpsi; the Pioneer also u, omega), its commands u1..uN applied at step k (model order), the reference of step k and the tracking error (with --formation: each robot's state and commands, Q and Qd; docs/formation.md)");
   po::variables_map vm;
@@ -92,8 +93,8 @@ bool parse(int argc, char** argv, Options& o) {
                       "is its --controller file's");
   }
   if (vm.count("law") && o.law.empty()) {
-    throw ConfigError("--law '' is refused: give a triangle law's name (N, PSO, SPO, OSP, S-PO), or leave --law out "
-                      "to fly the formation file's");
+    throw ConfigError("--law '' is refused: give a triangle law's name (" + triangleLawNames() + "), or leave --law "
+                      "out to fly the formation file's");
   }
   if (o.formation.empty() && o.delays.size() > 1) {
     throw ConfigError("--delay takes one value for a flight (one per drone with --formation): got " + std::to_string(o.delays.size()));
@@ -230,7 +231,7 @@ int main(int argc, char** argv) {
       const std::string shape = formationShapeOf(o.formation);
       if (!o.law.empty() && shape != "triangle") {
         throw ConfigError("--law is refused for a formation of shape '" + shape + "': it chooses a triangle's law "
-                          "(N, PSO, SPO, OSP, S-PO); " +
+                          "(" + triangleLawNames() + "); " +
                           (shape == "line" ? "the line's law is its file's formation.law"
                                            : "the UAV-UGV line has one law (docs/formation.md, \"The UAV-UGV line\")"));
       }

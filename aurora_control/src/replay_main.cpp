@@ -160,8 +160,8 @@ po::options_description describe(Arguments& args, Given& g) {
       ("kp", po::value(&g.kp)->value_name("X"), "gain of the PD law")
       ("kd", po::value(&g.kd)->value_name("X"), "gain of the PD law")
       ("vehicle", po::value(&args.vehicle_path)->value_name("FILE"),
-       "vehicle YAML the law flies and inverts (default: vehicles/NAME.yaml of the aurora_config package, NAME the "
-       "law's vehicle: ardrone2, bebop2, pioneer3dx)")
+       ("vehicle YAML the law flies and inverts (default: vehicles/NAME.yaml of the aurora_config package, NAME the "
+        "law's vehicle: " + lawVehicleNames() + ")").c_str())
       ("delay", po::value(&g.delay)->value_name("N"), "delay in samples")
       ("link", po::value(&args.link_path)->value_name("FILE"),
        "link YAML (config/links/*.yaml, docs/links.md), or a shipped NAME (config/links/NAME.yaml: wifi_lab, ...): "

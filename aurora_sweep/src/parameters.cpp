@@ -4,6 +4,7 @@
 
 #include "aurora_control/formation/formation_layer.h"
 #include "aurora_control/formation/triangle_formation.h"
+#include "aurora_control/formation/triangle_yaml.h"
 #include "aurora_control/params/limits.h"
 #include "aurora_control/link/link.h"
 #include "aurora_control/params/parameter_table.h"
@@ -113,7 +114,7 @@ std::vector<ParamInfo> makeTable(SweepShape shape) {
   forEachOtherLaw([&](auto law) { addLawGains<decltype(law)>(t); });
   if (shape == SweepShape::kTriangle) {
     t[kParamFormationLaw] = {"formation_law", ParamGroup::kFormationLaw, 0.0, 4.0,
-                             "the triangle's law by name (N, PSO, SPO, OSP, S-PO) or its index 0 .. 4", true};
+                             "the triangle's law by name (" + aurora_control::triangleLawNames() + ") or its index 0 .. 4", true};
   }
   return t;
 }
@@ -167,11 +168,8 @@ bool paramApplies(const ParamInfo& info, const std::string& controller, SweepSha
 }
 
 std::string sweepControllerNames() {
-  using namespace aurora_control;
   std::string names;
-  std::vector<std::string> all = {lawName(LawType::kPdSaturated), lawName(LawType::kUnderactuated)};
-  forEachOtherLaw([&](auto law) { all.push_back(law.name()); });
-  for (const std::string& n : all) names += (names.empty() ? "'" : ", '") + n + "'";
+  aurora_control::forEachLaw([&](auto law) { names += (names.empty() ? "'" : ", '") + std::string(law.name()) + "'"; });
   return names;
 }
 

@@ -13,6 +13,8 @@
 #include "aurora_control/loop/flight_setup.h"
 #include "aurora_control/formation/formation_flight.h"
 #include "aurora_control/formation/triangle_formation.h"
+#include "aurora_control/formation/triangle_yaml.h"
+#include "aurora_control/law/other_laws.h"
 #include "aurora_control/formation/uav_ugv_yaml.h"
 #include "aurora_control/params/shipped_files.h"
 #include "aurora_sim/vehicle/sim_profile.h"
@@ -216,7 +218,7 @@ std::vector<double> formationError(const std::string& shape, const std::vector<d
   if (shape == "uav_ugv_line") return shapeError<UavUgvLine<double>>(X, Qd, Q);
   if (shape == "line") return shapeError<LineFormation<double>>(X, Qd, Q);
   throw aurora_common::ConfigError("formation_error: shape '" + shape + "' is unknown: accepted line, uav_ugv_line, "
-                                   "triangle");
+                                   "triangle");  // the shapes shapeError is instantiated for above
 }
 
 
@@ -309,6 +311,9 @@ PYBIND11_MODULE(_core, m) {
   // The delay rule's constants, for aurora/arguments.py (limits.h, link_yaml.h).
   m.attr("MAX_DELAY_SAMPLES") = kMaxDelaySamples;
   m.attr("DELAY_NOT_GIVEN") = kDelayNotGiven;
+  // The names a choice takes, from the lists (for aurora/simulation.py's refusals).
+  m.attr("TRIANGLE_LAWS") = triangleLawNames();
+  m.attr("LAWS") = knownLawNames();
   m.def("simulate_files", &simulateFiles, py::arg("controller"), py::arg("task"), py::arg("vehicle"), py::arg("delay"),
         py::arg("link"), py::arg("clamp"), py::arg("rate"),
         "One flight from YAML files, as the flight tool flies it: a dict of numpy arrays and metrics.");

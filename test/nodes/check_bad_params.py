@@ -54,7 +54,7 @@ class BadParamsTest(unittest.TestCase):
 
     def test_unknown_controller(self):
         rc, out = self.controller_case("/bad_name", lambda p: rospy.set_param(p + "controller/name", "lqr"))
-        self.assert_refused(rc, out, "/bad_name/controller/controller/name", "accepted controllers: 'pd_saturated'")
+        self.assert_refused(rc, out, "/bad_name/controller/controller/name", "accepted controllers: pd_saturated, underactuated, bebop2_compensator")
         self.assertIn("'lqr'", out)
 
     def test_unknown_controller_key(self):

@@ -167,7 +167,7 @@ def simulate_formation(formation, vehicle=None, delays=None, law=None):
             robots = 3 if shape == "triangle" else 2
             given = [] if delays is None else per_drone(delays, "delays", robots, "robot")
             if law is not None and (not isinstance(law, str) or not law):
-                raise ValueError("law: expected a triangle law's name (N, PSO, SPO, OSP, S-PO), got %r; "
+                raise ValueError("law: expected a triangle law's name (" + _core.TRIANGLE_LAWS + "), got %r; "
                                  "law=None flies the file's" % (law,))
             return ShapedFormationFlight(_core.simulate_shaped_formation_files(
                 formation_file, given, "" if law is None else law, config_dir()))

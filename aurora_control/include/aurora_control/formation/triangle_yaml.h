@@ -35,12 +35,23 @@ inline const char* triangleLawName(TriangleLaw law) {
   return names[static_cast<int>(law)];
 }
 
+// The triangle's laws, in their index order.
+constexpr TriangleLaw kTriangleLaws[] = {TriangleLaw::kN, TriangleLaw::kPSO, TriangleLaw::kSPO, TriangleLaw::kOSP,
+                                         TriangleLaw::kSdashPO};
+
+// Their names, comma separated ("N, PSO, SPO, OSP, S-PO").
+inline std::string triangleLawNames() {
+  std::string names;
+  for (TriangleLaw l : kTriangleLaws) names += (names.empty() ? "" : ", ") + std::string(triangleLawName(l));
+  return names;
+}
+
 // `name` as a law, or a refusal naming `key` and the accepted names.
 inline TriangleLaw triangleLawOf(const std::string& name, const std::string& key) {
-  for (TriangleLaw l : {TriangleLaw::kN, TriangleLaw::kPSO, TriangleLaw::kSPO, TriangleLaw::kOSP, TriangleLaw::kSdashPO}) {
+  for (TriangleLaw l : kTriangleLaws) {
     if (name == triangleLawName(l)) return l;
   }
-  throw ConfigError(key + " = '" + name + "' is not a triangle law: accepted N, PSO, SPO, OSP, S-PO");
+  throw ConfigError(key + " = '" + name + "' is not a triangle law: accepted " + triangleLawNames());
 }
 
 namespace triangle_yaml_detail {
@@ -148,7 +159,7 @@ inline TriangleSetup readTriangleFile(const std::string& path, const std::string
   const YAML::Node n = formation_detail::formationSection(
       r, path, {"shape", "law", "period", "duration", "gains", "reference", "robots"});
   TriangleSetup s;
-  const std::string file_law = r.text(r.require(n, "formation", "law", "N, PSO, SPO, OSP, S-PO"), "formation.law");
+  const std::string file_law = r.text(r.require(n, "formation", "law", triangleLawNames()), "formation.law");
   try {
     s.law = law.empty() ? triangleLawOf(file_law, "'formation.law'") : triangleLawOf(law, "--law");
   } catch (const ConfigError& e) {

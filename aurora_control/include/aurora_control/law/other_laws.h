@@ -33,6 +33,36 @@ bool withOtherLaw(const std::string& name, F&& f) {
   return found;
 }
 
+// Calls f(Law()) for every law, the AR.Drone's two first: the one list the
+// help texts and refusals that name the laws read (knownLawNames,
+// lawVehicleNames).
+template <class F>
+void forEachLaw(F&& f) {
+  f(ArdroneLaw<LawType::kPdSaturated>());
+  f(ArdroneLaw<LawType::kUnderactuated>());
+  forEachOtherLaw(f);
+}
+
+// Every law's name, comma separated ("pd_saturated, underactuated, ...").
+inline std::string knownLawNames() {
+  std::string names;
+  forEachLaw([&](auto law) { names += (names.empty() ? "" : ", ") + std::string(law.name()); });
+  return names;
+}
+
+// Each vehicle with the laws that fly it ("ardrone2 for pd_saturated,
+// underactuated; bebop2 for bebop2_compensator; ...").
+inline std::string lawVehicleNames() {
+  std::string text, vehicle;
+  forEachLaw([&](auto law) {
+    const std::string v = decltype(law)::Vehicle::name();
+    text += v == vehicle ? ", " : (text.empty() ? "" : "; ") + v + " for ";
+    text += law.name();
+    vehicle = v;
+  });
+  return text;
+}
+
 // The vehicle law `name` flies, by name (the AR.Drone's for a name not in
 // the list: its two laws, or a name the law's reader refuses).
 inline std::string vehicleOfLaw(const std::string& name) {

@@ -37,12 +37,10 @@ inline double lawGain(const ControllerSettings& set, int i) {
 inline void readLaw(const YamlReader& r, const YAML::Node& node, const std::string& key,
                     ControllerSettings& set) {
   if (!node || !node.IsMap()) r.fail(key, "is missing or not a mapping: load a controller file such as config/controllers/pd_saturated.yaml");
-  const std::string name =
-      r.text(r.require(node, key, "name", "'pd_saturated' or 'underactuated'"), r.key(key, "name"));
+  const std::string name = r.text(r.require(node, key, "name", knownLawNames()), r.key(key, "name"));
   if (!lawFromName(name, set.law)) {
-    std::string others;
-    forEachOtherLaw([&](auto law) { others += std::string(", '") + law.name() + "' (" + decltype(law)::Vehicle::name() + ")"; });
-    r.fail(r.key(key, "name"), "= '" + name + "' is unknown: accepted controllers: 'pd_saturated', 'underactuated' (ardrone2)" + others);
+    r.fail(r.key(key, "name"), "= '" + name + "' is unknown: accepted controllers: " + knownLawNames() +
+                                   " (by vehicle: " + lawVehicleNames() + ")");
   }
   std::vector<std::string> accepted{"name"};
   const std::vector<std::string> gains = lawGainNames(set.law);
