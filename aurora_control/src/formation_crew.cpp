@@ -154,9 +154,9 @@ std::vector<std::string> namedVehicleFiles(const CrewRequest& q, int robots) {
 
 std::unique_ptr<FormationCrew> lineCrew(const CrewRequest& q) {
   const FormationFile f = readFormationFile(q.file, q.config_dir);
-  FormationRun<double, LineFormation<double>> run = formationRun(f, q.line_vehicle);
+  ArdroneLineRun run = formationRun(f, q.line_vehicle);
   const double Ts = q.line_vehicle.Ts;
-  requestedDelays(q, 2, Ts, formationTicks(run.reference.duration, Ts), [&](int r) -> FormationDrone<double>& {
+  requestedDelays(q, 2, Ts, formationTicks(run.reference.duration, Ts), [&](int r) -> FormationDrone<double, aurora_control::ArdroneLawData>& {
     return run.drone[r];
   });
   const LawType law = f.drones[0].controller.law;
@@ -191,7 +191,7 @@ std::unique_ptr<FormationCrew> triangleCrew(const CrewRequest& q) {
   }
   TriangleRun<TriangleDroneLaw> run = triangleRun<TriangleDroneLaw>(setup);
   const long steps = triangleSteps(setup);
-  requestedDelays(q, 3, setup.drone.Ts, steps, [&](int r) -> FormationDrone<double>& { return run.drone[r]; });
+  requestedDelays(q, 3, setup.drone.Ts, steps, [&](int r) -> FormationDrone<double, aurora_control::ArdroneLawData>& { return run.drone[r]; });
   return std::unique_ptr<FormationCrew>(new CrewOf<Triangle, ControllerSettings>(
       run, flyingLaw(LawType::kUnderactuated), "triangle",
       std::string(triangleLawName(setup.law)) + ", drones: underactuated", {setup.name_space[0], setup.name_space[1], setup.name_space[2]},

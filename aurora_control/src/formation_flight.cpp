@@ -22,9 +22,9 @@ using Line = LineFormation<double>;
 // RMS of rho, alpha, beta, the formation's horizontal position and height.
 class FormationErrors {
  public:
-  void add(const FormationObservation<double, Line>& o, double Ts) {
+  void add(const ArdroneLineObservation& o, double Ts) {
     double X[Line::kVariables];
-    dronePositions<Line>(o.X_before, X);
+    dronePositions<Line, aurora_control::ArdroneLawData::Vehicle>(o.X_before, X);
     if (double(o.k) * Ts < 10.0) return;
     double Q[6];
     Line::variables(X, Q);
@@ -64,7 +64,7 @@ class FormationCsv {
   ~FormationCsv() {
     if (f_) std::fclose(f_);
   }
-  void add(const FormationObservation<double, Line>& o, double Ts) {
+  void add(const ArdroneLineObservation& o, double Ts) {
     if (!f_) return;
     using aurora_common::writeNumber;
     std::fprintf(f_, "%ld", o.k);
@@ -74,7 +74,7 @@ class FormationCsv {
       for (int i = 0; i < aurora_sim::kStateSize; ++i) writeNumber(f_, o.X_before[d][i]);
       for (int i = 0; i < 4; ++i) writeNumber(f_, o.steps[d].U[i]);
     }
-    dronePositions<Line>(o.X_before, P);
+    dronePositions<Line, aurora_control::ArdroneLawData::Vehicle>(o.X_before, P);
     Line::variables(P, Q);
     for (int i = 0; i < 6; ++i) writeNumber(f_, Q[i]);
     for (int i = 0; i < 6; ++i) writeNumber(f_, o.layer.Qd()[i]);
@@ -86,9 +86,9 @@ class FormationCsv {
 };
 
 // The file's run with --delay's per-drone delays, checked.
-FormationRun<double, Line> loadRun(const FormationFlightOptions& o, const LawVehicleParams& p,
+ArdroneLineRun loadRun(const FormationFlightOptions& o, const LawVehicleParams& p,
                                    const FormationFile& f, long ticks) {
-  FormationRun<double, Line> run = formationRun(f, p);
+  ArdroneLineRun run = formationRun(f, p);
   const std::vector<long> delays = robotDelays(o.delays, 2, "the line", p.Ts, ticks, {0, 0}, "drone");
   for (size_t d = 0; d < o.delays.size(); ++d) {
     run.drone[d].delay = delays[d];  // replaces the file's, and its link's uplink delay (docs/links.md)
@@ -161,7 +161,7 @@ std::vector<long> robotDelays(const std::vector<long>& given, size_t robots, con
 FormationFlight flyFormationFiles(const FormationFlightOptions& o, const FormationObserver& observe) {
   const auto p = aurora_sim::loadVehicleFile<ArdroneLawData::Vehicle>(o.vehicle, "the formation's drones' laws");
   FormationFlight r{readFormationFile(o.formation, o.config_dir), {}, p.Ts, 0, 0.0, {},
-                    FormationJudge<double>{FormationCriteria<double>::study(), false, p.Ts, {}, {}}};
+                    ArdroneLineJudge{FormationCriteria<double>::study(), false, p.Ts, {}, {}}};
   r.ticks = formationTicks(r.file.reference.duration, p.Ts);
   r.run = loadRun(o, p, r.file, r.ticks);
   r.judge.metrics.reset();
@@ -172,7 +172,7 @@ FormationFlight flyFormationFiles(const FormationFlightOptions& o, const Formati
   }
   FormationErrors errors;
   const auto t0 = std::chrono::steady_clock::now();
-  auto each = [&](const FormationObservation<double, Line>& obs) {
+  auto each = [&](const ArdroneLineObservation& obs) {
     observe(obs, p.Ts);
     errors.add(obs, p.Ts);
     r.judge(obs);
@@ -188,7 +188,7 @@ FormationFlight flyFormationFiles(const FormationFlightOptions& o, const Formati
 
 void flyFormation(const FormationFlightOptions& o) {
   std::unique_ptr<FormationCsv> csv;  // opened at tick 0: a refused file writes nothing
-  const FormationFlight r = flyFormationFiles(o, [&](const FormationObservation<double, Line>& obs, double Ts) {
+  const FormationFlight r = flyFormationFiles(o, [&](const ArdroneLineObservation& obs, double Ts) {
     if (!csv) csv.reset(new FormationCsv(o.csv));
     csv->add(obs, Ts);
   });

@@ -51,7 +51,7 @@ void FormationNode::loadCrew() {
   q.file = aurora_common::requireParam<std::string>(pnh_, "formation_file", "a formation file (config/formations/NAME.yaml)");
   q.config_dir = aurora_common::paramOr<std::string>(pnh_, "config_dir", "");
   const std::string shape = formationShapeOf(q.file);
-  if (shape != "triangle" && shape != "uav_ugv_line") q.line_vehicle = aurora_sim::loadVehicleParams(pnh_, "vehicle");
+  if (shape != "triangle" && shape != "uav_ugv_line") q.line_vehicle = aurora_sim::loadVehicleParams<aurora_sim::Ardrone2>(pnh_, "vehicle");
   for (int d = 0; d < kMaxCrew; ++d) {
     const std::string key = "delay_" + std::to_string(d + 1);
     const double given = aurora_common::rangedParam(pnh_, key, -1, -1, double(kMaxDelaySamples), "samples (-1: the file's)");

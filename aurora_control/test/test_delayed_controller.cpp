@@ -18,7 +18,7 @@ const double kDesired[3] = {2.0, 1.0, 2.0};
 }  // namespace
 
 TEST(DelayedController, UsesTheStateDSamplesOld) {
-  DelayedController<16> c;
+  ArdroneController<16> c;
   c.settings.gains = {0.5, 0.85};
   c.settings.delay = 3;
   for (long k = 0; k < 10; ++k) {
@@ -32,7 +32,7 @@ TEST(DelayedController, UsesTheStateDSamplesOld) {
 }
 
 TEST(DelayedController, ResentStateIsNotAddedAndMetricsCountOnce) {
-  DelayedController<16> c;
+  ArdroneController<16> c;
   c.settings.gains = {0.5, 0.85};
   c.push(sample(0, 0.0));
   const ControlOutput a = c.compute(kDesired);
@@ -45,7 +45,7 @@ TEST(DelayedController, ResentStateIsNotAddedAndMetricsCountOnce) {
 }
 
 TEST(DelayedController, StepGoingBackRestarts) {
-  DelayedController<16> c;
+  ArdroneController<16> c;
   c.settings.delay = 2;
   for (long k = 0; k < 5; ++k) c.push(sample(k, 0.0)), c.compute(kDesired);
   c.push(sample(0, 0.5));
@@ -55,7 +55,7 @@ TEST(DelayedController, StepGoingBackRestarts) {
 }
 
 TEST(DelayedController, ClampsWhenConfigured) {
-  DelayedController<16> c;
+  ArdroneController<16> c;
   c.settings.gains = {5.0, 5.0};
   c.push(sample(0, -10.0));
   c.settings.clamp_commands = true;
@@ -68,7 +68,7 @@ TEST(DelayedController, ClampsWhenConfigured) {
 }
 
 TEST(DelayedController, HoverCommandsZero) {
-  DelayedController<16> c;
+  ArdroneController<16> c;
   c.settings.gains = {0.5, 0.85};
   c.push(sample(0, 0.0));
   const ControlOutput out = c.hover();

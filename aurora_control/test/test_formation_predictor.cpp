@@ -27,7 +27,7 @@ const std::string kConfig = AURORA_CONFIG_DIR;
 template <class Shape>
 struct Trajectory {
   std::vector<double> X;
-  void operator()(const FormationObservation<double, Shape>& o) {
+  void operator()(const FormationObservation<double, Shape, aurora_control::ArdroneLawData>& o) {
     for (int d = 0; d < Shape::kDrones; ++d) X.insert(X.end(), o.X_before[d], o.X_before[d] + 12);
   }
 };
@@ -63,7 +63,7 @@ TEST(FormationPredictor, TheTrianglesDronesFlyTheirControllerFilesPredictor) {
 // The two-drone line: each drone's controller file, each its own delay,
 // over links (drone 2's jittery and lossy: the predictor anchors on late
 // and lost states too), and a command delay on drone 1's downlink.
-FormationRun<double, Line> line(bool predictor, long delay_1, long delay_2, bool links) {
+ArdroneLineRun line(bool predictor, long delay_1, long delay_2, bool links) {
   std::string text;
   {
     FILE* f = std::fopen((kConfig + "/formations/line_lemniscate_ik.yaml").c_str(), "r");
@@ -92,7 +92,7 @@ FormationRun<double, Line> line(bool predictor, long delay_1, long delay_2, bool
 }
 
 TEST(FormationPredictor, TheLinesDronesFlyTheirControllerFilesPredictor) {
-  const FormationRun<double, Line> with = line(true, 4, 9, false);
+  const ArdroneLineRun with = line(true, 4, 9, false);
   EXPECT_EQ(with.drone[0].predictor.form, PredictorForm::kResimulate);
   EXPECT_EQ(with.drone[1].predictor.form, PredictorForm::kResimulate);
   const long ticks = 1200;
@@ -120,12 +120,12 @@ TEST(FormationPredictor, OverLinksThePredictorStaysCloserToTheUndelayedFlight) {
 // The formation node's core answers every tick with the runner's commands
 // and layer, bit for bit, with the predictor on each drone over its link.
 TEST(FormationPredictor, TheNodesCoreIsTheRunnersTick) {
-  const FormationRun<double, Line> run = line(true, 3, 7, true);
+  const ArdroneLineRun run = line(true, 3, 7, true);
   struct Tick {
     double X[2][12], U[2][4], Q[6];
   };
   std::vector<Tick> offline;
-  auto observe = [&](const FormationObservation<double, Line>& o) {
+  auto observe = [&](const ArdroneLineObservation& o) {
     Tick t;
     for (int d = 0; d < 2; ++d) {
       std::memcpy(t.X[d], o.X_before[d], sizeof t.X[d]);
@@ -136,7 +136,7 @@ TEST(FormationPredictor, TheNodesCoreIsTheRunnersTick) {
   };
   const long ticks = 900;
   runFormation<Underactuated, double, Line, kShortHistory>(run, ticks, observe);
-  FormationController<kShortHistory> core(run, flyingLaw(LawType::kUnderactuated));
+  FormationController<kShortHistory, aurora_control::LineFormation<double>, aurora_control::ControllerSettings> core(run, flyingLaw(LawType::kUnderactuated));
   long mismatches = 0, predicted = 0;
   for (long k = 0; k < ticks; ++k) {
     for (int d = 0; d < 2; ++d) {

@@ -285,7 +285,7 @@ TEST(Link, TheNodesCoreOverALinkIsTheRunners) {
   set.link = readLinkFile(std::string(AURORA_CONFIG_DIR) + "/links/wifi_congested.yaml");
   set.delay = set.link.uplink.delay;
   const Task<double> task = positioningTask(2.0, 1.0, 2.0, 30.0);
-  std::unique_ptr<DelayedController<kDelayHistory>> node(new DelayedController<kDelayHistory>());
+  std::unique_ptr<ArdroneController<kDelayHistory>> node(new ArdroneController<kDelayHistory>());
   node->settings = set;
   node->configureLink();
   long differ = 0, hovered = 0;
@@ -314,7 +314,7 @@ TEST(Link, ALossBurstLongerThanTheNodesHistoryKeepsTheLastStateDelivered) {
   set.link.uplink.loss = 0.5;
   set.link.uplink.burst = 300.0;
   set.link.seed = 7;
-  std::unique_ptr<DelayedController<kShort>> node(new DelayedController<kShort>());
+  std::unique_ptr<ArdroneController<kShort>> node(new ArdroneController<kShort>());
   node->settings = set;
   node->configureLink();
   const double desired[3] = {1.0, 1.0, 1.0};

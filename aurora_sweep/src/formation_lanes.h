@@ -21,8 +21,7 @@ namespace aurora_sweep {
 
 namespace {
 
-template <typename T, class Arch, class Law, template <typename> class Shape = aurora_control::LineFormation,
-          bool Predicted = false>
+template <typename T, class Arch, class Law, template <typename> class Shape, bool Predicted = false>
 class FormationBatch {
  public:
   using LaneOps = Lanes<T, Arch>;

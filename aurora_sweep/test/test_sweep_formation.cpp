@@ -46,11 +46,11 @@ SimResult flightToolRecord(const std::string& file, long d1, long d2, double k1_
   auto run = aurora_control::formationRun(aurora_control::readFormationFile(file, configDir()), vehicle);
   run.drone[0].delay = d1, run.drone[1].delay = d2;
   run.gains.k1[3] = k1_rho;
-  aurora_control::FormationJudge<double> judge{aurora_control::FormationCriteria<double>::study(), false,
+  aurora_control::ArdroneLineJudge judge{aurora_control::FormationCriteria<double>::study(), false,
                                                vehicle.Ts, {}, {}};
   judge.metrics.reset();
   double end = 0;
-  auto observe = [&](const aurora_control::FormationObservation<double, Line>& o) {
+  auto observe = [&](const aurora_control::ArdroneLineObservation& o) {
     double X[6];
     for (int d = 0; d < 2; ++d) {
       for (int i = 0; i < 3; ++i) X[3 * d + i] = o.drones[d].model.X[i];
@@ -129,7 +129,7 @@ TEST(FormationSweep, TheKernelsPerThreadEntryIsTheScalarLoop) {
     std::vector<SimResult> scalar;
     Progress progress{0};
     runScalar(spec, scalar, progress);
-    const FormationSetup<double> setup = makeFormationSetup<double>(spec, spec.formation_run);
+    const FormationSetup<double, aurora_control::LineFormation, aurora_control::ArdroneLawData> setup = makeFormationSetup<double>(spec, spec.formation_run);
     const GridView grid = spec.view();
     const long n = spec.rangeSize();
     std::vector<SimResult> out(static_cast<size_t>(n));
@@ -163,7 +163,7 @@ TEST(FormationSweep, EachDroneFliesItsOwnLinkValues) {
     EXPECT_NE(std::find(names.begin(), names.end(), want), names.end()) << want;
   }
   EXPECT_EQ(std::find(names.begin(), names.end(), "uplink_loss_1"), names.end());
-  const FormationSetup<double> setup = makeFormationSetup<double>(spec, spec.formation_run);
+  const FormationSetup<double, aurora_control::LineFormation, aurora_control::ArdroneLawData> setup = makeFormationSetup<double>(spec, spec.formation_run);
   EXPECT_FALSE(setup.ideal_link);
   const GridView grid = spec.view();
   for (long i = 0; i < spec.size(); ++i) {

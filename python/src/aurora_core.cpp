@@ -131,7 +131,7 @@ py::dict simulateFormationFiles(const std::string& formation, const std::string&
   FormationFlight r;
   {
     py::gil_scoped_release unlocked;
-    r = flyFormationFiles(o, [&](const FormationObservation<double, LineFormation<double>>& obs, double Ts) {
+    r = flyFormationFiles(o, [&](const ArdroneLineObservation& obs, double Ts) {
       t.push_back(taskTime(double(obs.k), Ts));
       double P[6], q[6];
       for (int d = 0; d < 2; ++d) {
@@ -139,7 +139,7 @@ py::dict simulateFormationFiles(const std::string& formation, const std::string&
         U.insert(U.end(), obs.steps[d].U, obs.steps[d].U + 4);
         R.insert(R.end(), obs.steps[d].ref.pos, obs.steps[d].ref.pos + 3);
       }
-      dronePositions<LineFormation<double>>(obs.X_before, P);
+      dronePositions<LineFormation<double>, aurora_control::ArdroneLawData::Vehicle>(obs.X_before, P);
       LineFormation<double>::variables(P, q);
       Q.insert(Q.end(), q, q + 6);
       Qd.insert(Qd.end(), obs.layer.Qd(), obs.layer.Qd() + 6);

@@ -70,7 +70,7 @@ Offline offlineOf(const std::string& file, const std::string& config, const long
   }
   ros::NodeHandle d1("/ardrone1");
   const FormationFile f = readFormationFile(file, config);
-  FormationRun<double, LineFormation<double>> run = formationRun(f, aurora_sim::loadVehicleParams(d1, "vehicle"));
+  ArdroneLineRun run = formationRun(f, aurora_sim::loadVehicleParams<aurora_sim::Ardrone2>(d1, "vehicle"));
   run.drone[0].delay = delay[0], run.drone[1].delay = delay[1];
   robots = 2;
   Offline out;

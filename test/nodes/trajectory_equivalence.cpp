@@ -43,7 +43,7 @@ TEST(TrajectoryEquivalence, RosLoopEqualsOfflineRunnerBitForBit) {
   ASSERT_GE(flown.size(), static_cast<size_t>(steps + 1)) << "ROS loop did not complete in time";
 
   // The offline runner with the same vehicle file, task, gains and delay.
-  const auto params = aurora_sim::loadVehicleParams(nh, "vehicle");
+  const auto params = aurora_sim::loadVehicleParams<aurora_sim::Ardrone2>(nh, "vehicle");
   RunnerConfig<double> cfg;
   cfg.task.waypoints = taskFromParams(pnh);
   cfg.clamp_commands = true;

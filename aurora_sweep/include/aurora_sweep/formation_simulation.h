@@ -21,17 +21,14 @@
 
 namespace aurora_sweep {
 
-// A shape's run in precision T, its robots flying laws of data `Data`
-// (the AR.Drone's by default).
-template <typename T, template <typename> class Shape = aurora_control::LineFormation,
-          class Data = aurora_control::ArdroneLawData>
+// A shape's run in precision T, its robots flying laws of data `Data`.
+template <typename T, template <typename> class Shape, class Data>
 using ShapeRun = aurora_control::FormationRun<T, Shape<T>, Data>;
 template <typename T>
-using LineRun = ShapeRun<T>;
+using LineRun = ShapeRun<T, aurora_control::LineFormation, aurora_control::ArdroneLawData>;  // AuRoRA's line of AR.Drones
 
 // Everything a formation of the sweep needs besides its combination.
-template <typename T, template <typename> class Shape = aurora_control::LineFormation,
-          class Data = aurora_control::ArdroneLawData>
+template <typename T, template <typename> class Shape, class Data>
 struct FormationSetup {
   ShapeRun<T, Shape, Data> run;  // the formation file's, in T
   aurora_control::FormationCriteria<T> criteria;
@@ -163,7 +160,7 @@ AURORA_HD inline SimResult formationResult(const aurora_control::FormationMetric
 
 // The closest two drones' distance at the end of a run (positions after
 // its last tick).
-template <typename T, class Shape, class Observer, class Data = aurora_control::ArdroneLawData>
+template <typename T, class Shape, class Observer, class Data>
 struct EndDistance {
   Observer& judge;
   T distance = T(0);

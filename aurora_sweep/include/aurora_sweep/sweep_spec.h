@@ -77,7 +77,7 @@ struct SweepSpec {
   // triangle's (three AR.Drones on the underactuated law).
   std::string formation_file;
   SweepShape shape = SweepShape::kNone;
-  aurora_control::FormationRun<double, aurora_control::LineFormation<double>> formation_run;
+  aurora_control::ArdroneLineRun formation_run;
   aurora_control::UavUgvRun uav_ugv_run;
   aurora_control::TriangleRun<aurora_control::TriangleDroneLaw> triangle_run;
   double formation_duration = 0.0;  // [s] its flights'

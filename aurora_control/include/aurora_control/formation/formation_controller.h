@@ -40,7 +40,7 @@ inline ControllerSettings flyingLaw(LawType law) {
 
 // Settings: ControllerSettings (AR.Drones, the law chosen at run time) or
 // LawSettings<Law> (a law type: a mixed crew's EitherLaw).
-template <int Capacity, class Shape = LineFormation<double>, class Settings = ControllerSettings>
+template <int Capacity, class Shape, class Settings>
 class FormationController {
  public:
   using Data = typename Settings::Data;

@@ -63,19 +63,19 @@ std::string checksText(const FormationCriteria<double>& c, const FormationMetric
 }
 
 // Each tick, with the drones' sample time Ts [s].
-using FormationObserver = std::function<void(const FormationObservation<double, LineFormation<double>>&, double Ts)>;
+using FormationObserver = std::function<void(const ArdroneLineObservation&, double Ts)>;
 
 // What a formation flight gives besides its ticks.
 struct FormationFlight {
   FormationFile file;
-  FormationRun<double, LineFormation<double>> run;  // with the delays in force
+  ArdroneLineRun run;  // with the delays in force
   double Ts = 0.0;
   long ticks = 0;
   double seconds = 0.0;  // wall time of the run
   // RMS after 10 s (docs/formation.md, "Formation errors"): rho [m], alpha,
   // beta [rad], the formation's horizontal position and height [m].
   double rms[5] = {};
-  FormationJudge<double> judge;  // the formation checks, as a sweep judges them
+  ArdroneLineJudge judge;  // the formation checks, as a sweep judges them
 };
 
 // Loads the files (refusals as ConfigError naming the key) and flies every

@@ -11,7 +11,7 @@ namespace aurora_control {
 // The formation's checks as the runner's observer: tick k's positions X_k
 // against the positions of the layer's held Qd (computed when the layer
 // runs); false (stop) at the first failed check with early_stop.
-template <typename T, class Shape = LineFormation<T>, class Data = ArdroneLawData>
+template <typename T, class Shape, class Data>
 struct FormationJudge {
   static constexpr int kN = Shape::kVariables;
   FormationCriteria<T> criteria;
@@ -29,5 +29,8 @@ struct FormationJudge {
     return !(early_stop && !metrics.feasible());
   }
 };
+
+// The judge of AuRoRA's line of two AR.Drones (formation_runner.h's ArdroneLineRun).
+using ArdroneLineJudge = FormationJudge<double, LineFormation<double>, ArdroneLawData>;
 
 }  // namespace aurora_control

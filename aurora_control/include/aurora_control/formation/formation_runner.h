@@ -26,7 +26,7 @@ namespace aurora_control {
 // by default) with its uplink delay [samples], where it starts [m], and the
 // state predictor its controller file gives (docs/predictor.md; off by
 // default; its command path the run's: dronePredictor).
-template <typename T, class Data = ArdroneLawData>
+template <typename T, class Data>
 struct FormationDrone {
   typename Data::Vehicle::template Params<T> plant, model;
   typename Data::template Gains<T> gains;
@@ -37,11 +37,11 @@ struct FormationDrone {
 };
 
 // A formation's robots' loops: their parameters, states and steps.
-template <typename T, class Data = ArdroneLawData>
+template <typename T, class Data>
 using DroneParams = LoopParams<Data, T>;
-template <typename T, typename Mask, class Data = ArdroneLawData>
+template <typename T, typename Mask, class Data>
 using DroneState = LoopState<Data, T, Mask>;
-template <typename T, class Data = ArdroneLawData>
+template <typename T, class Data>
 using DroneStep = LoopStep<T, Data::Vehicle::kInputs>;
 
 // A shape's layer and desired formation: the integrating layer
@@ -59,7 +59,7 @@ struct FormationParts<T, UavUgvLine<U>> {
 template <typename T, class Shape>
 using LayerOf = typename FormationParts<T, Shape>::Layer;
 
-template <typename T, class Shape, class Data = ArdroneLawData>
+template <typename T, class Shape, class Data>
 struct FormationRun {
   static constexpr int kDrones = Shape::kDrones, kN = Shape::kVariables;
   FormationDrone<T, Data> drone[kDrones];
@@ -84,7 +84,7 @@ struct HeldReference {
 
 // What an observer sees after each tick k (0-based: the drones' states went
 // from X_k to X_(k+1)).
-template <typename T, class Shape, class Data = ArdroneLawData>
+template <typename T, class Shape, class Data>
 struct FormationObservation {
   using Vehicle = typename Data::Vehicle;
   long k;
@@ -98,13 +98,13 @@ struct FormationObservation {
 
 // The robots' stacked positions (3 per robot, the shape's X) of their
 // states X (each Vehicle::kStates), and of their loops' models.
-template <class Shape, class Vehicle = ArdroneLawData::Vehicle, typename T, class States>
+template <class Shape, class Vehicle, typename T, class States>
 AURORA_HD inline void dronePositions(const States& X, T positions[Shape::kVariables]) {
   for (int d = 0; d < Shape::kDrones; ++d) {
     for (int i = 0; i < 3; ++i) positions[3 * d + i] = X[d][Vehicle::kPosition + i];
   }
 }
-template <class Shape, class Vehicle = ArdroneLawData::Vehicle, typename T, class Loops>
+template <class Shape, class Vehicle, typename T, class Loops>
 AURORA_HD inline void modelPositions(const Loops& state, T positions[Shape::kVariables]) {
   for (int d = 0; d < Shape::kDrones; ++d) {
     for (int i = 0; i < 3; ++i) positions[3 * d + i] = state[d].model.X[Vehicle::kPosition + i];
@@ -354,5 +354,11 @@ long formationHistory(const FormationRun<T, Shape, Data>& run) {
   }
   return longest;
 }
+
+// AuRoRA's line formation of two AR.Drones (its formation files, flight's
+// and the sweep's line), spelled once: no default argument names a vehicle
+// or a shape.
+using ArdroneLineRun = FormationRun<double, LineFormation<double>, ArdroneLawData>;
+using ArdroneLineObservation = FormationObservation<double, LineFormation<double>, ArdroneLawData>;
 
 }  // namespace aurora_control

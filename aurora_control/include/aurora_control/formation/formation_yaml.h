@@ -310,7 +310,7 @@ inline void refuseShortFormation(const YamlReader& r, double duration, const std
 
 // Each drone's delay in force shorter than the run, as one drone's
 // (limits.h, delayShorterThanRun); `keys[d]` names where drone d's came from.
-inline void refuseFormationDelays(const FormationRun<double, LineFormation<double>>& run, double Ts,
+inline void refuseFormationDelays(const ArdroneLineRun& run, double Ts,
                                   const std::vector<std::string>& keys) {
   const long ticks = formationTicks(run.reference.duration, Ts);
   for (int d = 0; d < LineFormation<double>::kDrones; ++d) {
@@ -332,9 +332,9 @@ PredictorRun<typename Law::Vehicle, double> formationPredictor(const PredictorFi
 
 // The run of a formation file with the drones' vehicle `vehicle`, its
 // period in whole drone steps (refused otherwise).
-inline FormationRun<double, LineFormation<double>> formationRun(const FormationFile& f,
+inline ArdroneLineRun formationRun(const FormationFile& f,
                                                                 const LawVehicleParams& vehicle) {
-  FormationRun<double, LineFormation<double>> run;
+  ArdroneLineRun run;
   run.law = f.law;
   run.gains = f.gains;
   run.reference = f.reference;

@@ -111,7 +111,7 @@ struct GivenReference {
 };
 
 // Settings: ControllerSettings (the AR.Drone's laws) or LawSettings<Law>.
-template <int Capacity, class Settings = ControllerSettings>
+template <int Capacity, class Settings>
 class DelayedController {
  public:
   static constexpr long kMaxDelay = Capacity - 1;
@@ -324,5 +324,10 @@ class DelayedController {
   PredictorRun<Vehicle, double> predictor_run_;
   std::unique_ptr<HostPredictor<Vehicle, double>> predictor_;
 };
+
+// The controller core of the AR.Drone's laws (ControllerSettings: the law
+// chosen at run time), spelled once.
+template <int Capacity>
+using ArdroneController = DelayedController<Capacity, ControllerSettings>;
 
 }  // namespace aurora_control

@@ -55,7 +55,7 @@ inline geometry_msgs::Twist twistMsgOf(const TwistCommand& c) {
 }
 
 // Vehicle's command U as its driver's cmd_vel (Vehicle::toDriver).
-template <class Vehicle = Ardrone2>
+template <class Vehicle>
 geometry_msgs::Twist twistMsgFromModelCommand(const double U[Vehicle::kInputs]) {
   return twistMsgOf(Vehicle::toDriver(U));
 }

@@ -19,7 +19,7 @@ namespace aurora_sim {
 // Reads a vehicle's parameters under `ns` (e.g. "vehicle", a vehicle file
 // loaded there): its `type` must be `Vehicle`'s, every key of its file is
 // required and checked against its range.
-template <class Vehicle = Ardrone2>
+template <class Vehicle>
 typename Vehicle::template Params<double> loadVehicleParams(const ros::NodeHandle& nh, const std::string& ns,
                                                             const std::string& flown_by = "this node") {
   const std::string prefix = aurora_common::fullKey(nh, ns) + "/";
