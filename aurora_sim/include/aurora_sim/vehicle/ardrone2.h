@@ -31,11 +31,12 @@
 
 #include "aurora_sim/ardrone_model.h"
 #include "aurora_sim/command_mapping.h"
+#include "aurora_sim/vehicle/vehicle_defaults.h"
 #include "aurora_sim/vehicle_keys.h"
 
 namespace aurora_sim {
 
-struct Ardrone2 {
+struct Ardrone2 : VehicleDefaults {
   template <typename T>
   using Params = ArdroneParams<T>;
   template <typename T>
@@ -47,17 +48,11 @@ struct Ardrone2 {
   static constexpr int kFactors = 8;
   static constexpr bool kOnGround = false;
 
-  static const char* stateName(int i) { return stateName12(i); }
   // Its commands with their units (Control.command_names, a report's labels).
   static const char* inputName(int i) {
     static const char* const names[kInputs] = {"u_phi (roll) [-1, 1]", "u_theta (pitch, + = negative theta) [-1, 1]",
                                                "u_zdot (climb) [-1, 1]", "u_psidot (yaw rate, + = negative) [-1, 1]"};
     return names[i];
-  }
-
-  template <typename T>
-  AURORA_HD static void start(const Params<T>&, State<T>& s) {
-    s.reset();
   }
 
   // One step of docs/model.md, "One model step", without disturbances.
@@ -66,11 +61,8 @@ struct Ardrone2 {
     ardroneStep(p, s, U, Disturbance<T>::zero());
   }
 
-  // The AR.Drone's driver (and the sim node) clamp each command to [-1, 1].
-  template <typename T>
-  AURORA_HD static T limitInput(const Params<T>&, int, const T& u) {
-    return aurora_common::clampUnit(u);
-  }
+  // stateName, start and limitInput (the driver and the sim node clamp
+  // each command to [-1, 1]): VehicleDefaults'.
 
   // The factors' parameters, in factor order (the sweep's m_factor ...).
   static const char* factorName(int i) {

@@ -10,6 +10,7 @@
 
 #include "aurora_sim/bebop2_model.h"
 #include "aurora_sim/command_mapping.h"
+#include "aurora_sim/vehicle/vehicle_defaults.h"
 #include "aurora_sim/vehicle_keys.h"
 
 namespace aurora_sim {
@@ -19,7 +20,7 @@ namespace aurora_sim {
 enum class Bebop2Field { kSampleTime, kInputGain, kDamping, kRotatedDrag };
 using Bebop2Key = FileKey<Bebop2Field>;
 
-struct Bebop2 {
+struct Bebop2 : VehicleDefaults {
   template <typename T>
   using Params = Bebop2Params<T>;
   template <typename T>
@@ -31,7 +32,6 @@ struct Bebop2 {
   static constexpr int kFactors = 2 * kBebopAxes;
   static constexpr bool kOnGround = false;
 
-  static const char* stateName(int i) { return stateName12(i); }
   static const char* inputName(int i) {  // bebop_autonomy's cmd_vel components
     static const char* const names[kInputs] = {"cmd_vel x (forward) [-1, 1]", "cmd_vel y (left) [-1, 1]",
                                                "cmd_vel z (up) [-1, 1]", "cmd_vel yaw (left turn) [-1, 1]"};
@@ -39,20 +39,12 @@ struct Bebop2 {
   }
 
   template <typename T>
-  AURORA_HD static void start(const Params<T>&, State<T>& s) {
-    s.reset();
-  }
-
-  template <typename T>
   AURORA_HD static void step(const Params<T>& p, State<T>& s, const T U[kInputs]) {
     bebop2Step(p, s, U);
   }
 
-  // bebop_autonomy clamps each cmd_vel component to [-1, 1].
-  template <typename T>
-  AURORA_HD static T limitInput(const Params<T>&, int, const T& u) {
-    return aurora_common::clampUnit(u);
-  }
+  // stateName, start and limitInput (bebop_autonomy clamps each cmd_vel
+  // component to [-1, 1]): VehicleDefaults'.
 
   static const char* factorName(int i) {
     static const char* const names[kFactors] = {"Ku_x", "Ku_y", "Ku_z", "Ku_yaw", "Kv_x", "Kv_y", "Kv_z", "Kv_yaw"};

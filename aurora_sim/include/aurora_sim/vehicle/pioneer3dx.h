@@ -9,6 +9,7 @@
 
 #include "aurora_sim/command_mapping.h"
 #include "aurora_sim/pioneer3dx_model.h"
+#include "aurora_sim/vehicle/vehicle_defaults.h"
 #include "aurora_sim/vehicle_keys.h"
 
 namespace aurora_sim {
@@ -18,7 +19,7 @@ namespace aurora_sim {
 enum class PioneerField { kSampleTime, kControlPoint, kTheta, kKinematic, kOmegaGainBug };
 using PioneerKey = FileKey<PioneerField>;
 
-struct Pioneer3dx {
+struct Pioneer3dx : VehicleDefaults {  // its own start, state names and limitInput
   template <typename T>
   using Params = PioneerParams<T>;
   template <typename T>
