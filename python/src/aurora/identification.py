@@ -374,7 +374,7 @@ def write_files(d, result):
     if result["vehicle_file"] is not None:
         with open(os.path.join(d, "vehicle.yaml"), "w") as f:
             f.write("# %s identified from bag %s (rosrun aurora identify; docs/identify.md): the nominal file's\n"
-                    "# values where a parameter was not identified (report.md says why) or is not fitted\n"
+                    "# values where a parameter was not identified (the report says why) or is not fitted\n"
                     % (j["vehicle"], j["bag"]))
             yaml.safe_dump(result["vehicle_file"], f, sort_keys=False)
     figures(d, result)
