@@ -135,7 +135,7 @@ def timing(loop):
     older = np.flatnonzero(ages > 0)
     start = older[0] if older.size else 0
     steady = (loop["pending"] == 0) & loop["law_ran"] & (np.arange(len(ages)) >= start)
-    delays = core.feedback_delays(loop["control_steps"][steady], loop["used_steps"][steady])
+    delays = ages[steady]
     t = {"feedback_delay_samples": core.percentiles(delays), "feedback_delays": delays,
          "state_stream": core.stream_timing(loop["state_steps"], loop["state_stamps"], loop["Ts"]),
          "command_stream": core.stream_timing(loop["control_steps"], loop["control_stamps"], loop["Ts"]),
@@ -158,8 +158,8 @@ def uplink(on_arrival, used):
     n = int(seen_steps.max() - seen_steps.min()) + 1
     seen = seen_steps.size / n
     loss = core.link_loss(seen, jitter)
-    slope = (core.seen_share(min(loss + 1e-4, 1.0), jitter) - core.seen_share(max(loss - 1e-4, 0.0), jitter)) / (
-        min(loss + 1e-4, 1.0) - max(loss - 1e-4, 0.0))
+    lo, hi = max(loss - 1e-4, 0.0), min(loss + 1e-4, 1.0)
+    slope = (core.seen_share(hi, jitter) - core.seen_share(lo, jitter)) / (hi - lo)
     stderr = float(np.sqrt(seen * (1.0 - seen) / n) / abs(slope)) if slope else None
     return {"uplink_delay": base, "uplink_jitter": jitter, "uplink_loss": loss, "uplink_loss_stderr": stderr,
             "states_seen": seen}
@@ -184,28 +184,34 @@ def contiguous(loop):
     while the law flew the robot (before, a real drone's driver takes off by
     itself and the commands sent are not what it flies)."""
     s = loop["state_steps"]
-    flown = set(loop["control_steps"][loop["law_ran"]].tolist())
-    breaks = np.flatnonzero((np.diff(s) != 1) | ~np.isin(s[1:], list(flown)) | ~np.isin(s[:-1], list(flown)))
+    flown = np.isin(s, loop["control_steps"][loop["law_ran"]])
+    breaks = np.flatnonzero((np.diff(s) != 1) | ~flown[1:] | ~flown[:-1])
     starts = np.concatenate([[0], breaks + 1])
     ends = np.concatenate([breaks + 1, [len(s)]])
     i = int(np.argmax(ends - starts))
     return slice(int(starts[i]), int(ends[i]))
 
 
-def fitted_model(loop, max_delay, window):
-    """The vehicle's model (eqs. I3-I5) at the best actuation delay, or why
-    this tool does not fit this vehicle."""
+def known_vehicle(loop):
+    """The bag's vehicle, refused when this tool fits no model of it."""
     vehicle = loop["vehicle"]
     if vehicle not in MODELS:
         raise IdentifyError("vehicle '%s' (the bag's Control.vehicle) is unknown to identify: accepted %s"
                             % (vehicle, ", ".join(sorted(MODELS))))
+    return vehicle
+
+
+def fitted_model(loop, max_delay, window, nominal_path, nominal):
+    """The vehicle's model (eqs. I3-I7) at the best actuation delay, around
+    its nominal file (its path and content)."""
+    vehicle = known_vehicle(loop)
     run = contiguous(loop)
     X, U = loop["X"][run], commands_by_step(loop)[run]
     if len(X) < MIN_STEPS:
         raise IdentifyError("the bag's longest run of consecutive states is %d steps (%.1f s): identify needs %d "
                             "(%.0f s); record a longer flight" % (len(X), len(X) * loop["Ts"], MIN_STEPS,
                                                                    MIN_STEPS * loop["Ts"]))
-    fit = MODELS[vehicle](*nominal_vehicle(vehicle))
+    fit = MODELS[vehicle](nominal_path, nominal)
     delay, tried = core.best_delay(lambda d: fit(X, U, loop["Ts"], d, window), max_delay)
     result = tried[delay]
     result["actuation_delay_samples"] = delay
@@ -223,11 +229,19 @@ def nominal_vehicle(vehicle):
         return path, yaml.safe_load(f)
 
 
+def key_parent(tree, key):
+    """The mapping of a vehicle file's tree that holds a parameter's key
+    ("mass", "input_gain.x"), and the key's last name."""
+    *groups, name = key.split(".")
+    for g in groups:
+        tree = tree[g]
+    return tree, name
+
+
 def key_value(tree, key):
-    """The value at a parameter's key ("mass", "input_gain.x") in a vehicle file's tree."""
-    for part in key.split("."):
-        tree = tree[part]
-    return float(tree)
+    """The value at a parameter's key in a vehicle file's tree."""
+    parent, name = key_parent(tree, key)
+    return float(parent[name])
 
 
 def parameter_table(model, nominal):
@@ -282,7 +296,8 @@ def identify(bag, ns=None, max_delay=15, window=1, out=None):
 
 def summary(bag, name, loop, max_delay, window):
     t = timing(loop)
-    model = fitted_model(loop, max_delay, window)
+    nominal_path, nominal = nominal_vehicle(known_vehicle(loop))
+    model = fitted_model(loop, max_delay, window, nominal_path, nominal)
     j = {"vehicle": loop["vehicle"], "bag": os.path.abspath(bag), "namespace": name, "sample_time_s": loop["Ts"],
          "feedback_delay_samples": int(round(t["feedback_delay_samples"]["median"])),
          "feedback_delay_distribution": t["feedback_delay_samples"], "actuation_delay_samples": None,
@@ -290,7 +305,6 @@ def summary(bag, name, loop, max_delay, window):
          "uplink_loss_stderr": t["uplink_loss_stderr"], "states_seen": t["states_seen"],
          "parameters": {}, "fit": {}, "model": "identified"}
     vehicle_file = None
-    nominal_path, nominal = nominal_vehicle(loop["vehicle"])
     j["parameters"] = parameter_table(model, nominal)
     j["fit"] = {axis: f["nrmse"] for axis, f in model["fit"].items()}
     j["nominal_vehicle_file"] = nominal_path
@@ -313,11 +327,8 @@ def vehicle_yaml(nominal, parameters):
     import copy
     v = copy.deepcopy(nominal)
     for key, p in parameters.items():
-        *groups, name = key.split(".")
-        tree = v
-        for g in groups:
-            tree = tree[g]
-        tree[name] = p["value"]
+        parent, name = key_parent(v, key)
+        parent[name] = p["value"]
     return v
 
 
@@ -331,7 +342,7 @@ def open_loop_comparison(vehicle, nominal_path, identified, model):
     Ua = core.applied(U, model["actuation_delay_samples"])
     starts = core.segment_starts(len(X))
     X_model = MODEL_STATE[vehicle](X, model["Ts"]) if vehicle in MODEL_STATE else X
-    measured = np.stack([X[s + 1:s + 1 + core.SEGMENT, :6] for s in starts])
+    measured = core.segment_poses(X, starts)
     with tempfile.NamedTemporaryFile("w", suffix=".yaml") as f:
         yaml.safe_dump(identified, f)
         f.flush()

@@ -197,17 +197,22 @@ def fit_bebop2(X, U, Ts, delay, window=1):
     return fit_rows(rows, BEBOP2_AXES, spread)
 
 
-def pioneer_rows(X, U, Ts, delay, window=1):
-    """Eq. I6's regressors of a Pioneer P3-DX flight (docs/pioneer3dx.md):
-    its forward speed and turn rate from the control point's positions and
-    heading (omega_(k+1) = (psi_(k+1) - psi_k) / Ts, u_(k+1) = (dx cos psi_k +
-    dy sin psi_k) / Ts: the model's step), their differences, and the
-    commands sent U (u_ref, omega_ref) `delay` samples before. (The control
-    point's offset cancels: dx cos psi + dy sin psi is the forward speed.)"""
+def pioneer_speeds(X, Ts):
+    """The Pioneer's forward speed and turn rate after each step j + 1 (j =
+    0 .. n - 2) from the control point's positions and heading, as its model
+    steps: u_(j+1) = (dx cos psi_j + dy sin psi_j) / Ts, omega_(j+1) =
+    (psi_(j+1) - psi_j) / Ts. (The control point's offset cancels: dx cos
+    psi + dy sin psi is the forward speed.)"""
     psi = np.unwrap(X[:, 5])
     d = np.diff(np.column_stack([X[:, 0], X[:, 1], psi]), axis=0)
-    u_next = (d[:, 0] * np.cos(psi[:-1]) + d[:, 1] * np.sin(psi[:-1])) / Ts  # u_(j+1)
-    w_next = d[:, 2] / Ts
+    return (d[:, 0] * np.cos(psi[:-1]) + d[:, 1] * np.sin(psi[:-1])) / Ts, d[:, 2] / Ts
+
+
+def pioneer_rows(X, U, Ts, delay, window=1):
+    """Eq. I6's regressors of a Pioneer P3-DX flight (docs/pioneer3dx.md):
+    its forward speed and turn rate (pioneer_speeds), their differences, and
+    the commands sent U (u_ref, omega_ref) `delay` samples before."""
+    u_next, w_next = pioneer_speeds(X, Ts)  # u_(j+1), omega_(j+1)
     k = np.arange(1, len(X) - 1)
     keep = k - delay >= 0
     k = k[keep]
@@ -221,15 +226,11 @@ def pioneer_rows(X, U, Ts, delay, window=1):
 
 def pioneer_state(X, Ts):
     """The Pioneer's model state (docs/pioneer3dx.md): the control point's
-    recorded 12-state and its forward speed and turn rate after each step,
-    from the positions and heading as eq. I6 takes them (u_k = (dx cos
-    psi_(k-1) + dy sin psi_(k-1)) / Ts, omega_k = dpsi / Ts; 0 at the first),
-    which the open-loop flights start from (eq. I7)."""
-    psi = np.unwrap(X[:, 5])
-    d = np.diff(np.column_stack([X[:, 0], X[:, 1], psi]), axis=0)
-    u = np.concatenate([[0.0], (d[:, 0] * np.cos(psi[:-1]) + d[:, 1] * np.sin(psi[:-1])) / Ts])
-    w = np.concatenate([[0.0], d[:, 2] / Ts])
-    return np.column_stack([X[:, :12], u, w])
+    recorded 12-state and its forward speed and turn rate after each step
+    (pioneer_speeds, as eq. I6 takes them; 0 at the first), which the
+    open-loop flights start from (eq. I7)."""
+    u, w = pioneer_speeds(X, Ts)
+    return np.column_stack([X[:, :12], np.concatenate([[0.0], u]), np.concatenate([[0.0], w])])
 
 
 def fit_pioneer(X, U, Ts, delay, window=1):
@@ -276,6 +277,12 @@ def segment_starts(n, segment=SEGMENT, forced=FORCED):
     return list(range(forced, n - segment, segment))
 
 
+def segment_poses(X, starts, segment=SEGMENT):
+    """The recorded poses each segment's flight is compared with: the states
+    after its steps (starts, segment, 6)."""
+    return np.stack([X[s + 1:s + 1 + segment, :6] for s in starts])
+
+
 def pose_error(flown, measured):
     """Flown minus measured poses (..., 6), yaw wrapped to (-pi, pi]."""
     with np.errstate(invalid="ignore", over="ignore"):
@@ -299,7 +306,7 @@ def fit_output_error(fly, names, free, X, U, delay, segment=SEGMENT, forced=FORC
     starts = segment_starts(len(X), segment, forced)
     if not starts:
         raise ValueError("%d steps hold no open-loop segment of %d steps after %d forced" % (len(X), segment, forced))
-    measured = np.stack([X[s + 1:s + 1 + segment, :6] for s in starts])
+    measured = segment_poses(X, starts, segment)
     index = [names.index(f) for f in free]
 
     def residual(theta):
