@@ -8,6 +8,7 @@
 // flies a formation file instead (formation_flight.h).
 #include <boost/program_options.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -19,8 +20,7 @@
 #include "aurora_control/loop/flight_setup.h"
 #include "aurora_common/ros/config_dir.h"
 #include "aurora_control/formation/formation_flight.h"
-#include "aurora_control/formation/uav_ugv_yaml.h"
-#include "aurora_control/formation/triangle_yaml.h"
+#include "aurora_control/formation/shapes.h"
 #include "aurora_control/law/other_laws.h"
 #include "aurora_control/params/shipped_files.h"
 #include "option_values.h"
@@ -38,31 +38,34 @@ struct Options {
   std::string flown_law;     // the controller file's law (its controller.name; a flight's)
   std::string flown;         // the vehicle it flies (vehicleOfLaw)
   bool no_clamp = false;
+  std::vector<std::string> given;  // the flight-only options given (refused with --formation)
 };
-
-// Where a formation file of `shape` gives each robot's `what` (link,
-// controller): each shape's reader names its robots its own way.
-std::string robotKey(const std::string& shape, const std::string& what) {
-  if (shape == "triangle") return "formation.robots." + what + (what == "link" ? "s (one file per drone)" : " (one for the three)");
-  if (shape == "uav_ugv_line") return "formation.robots[i]." + what;
-  return "formation.drones[i]." + what;
-}
 
 // A formation file gives each robot's link and controller and never clamps
 // (AuRoRA's formation scripts do not): the flight's --link, --no-clamp,
 // --controller and --task would be ignored, so they are refused, naming the
-// file's key for the file's shape.
-void refuseFlightOnlyOptions(const po::variables_map& vm, const std::string& shape) {
+// file's key for the file's shape (its entry's robotKey).
+template <class ShapeEntry>
+void refuseFlightOnlyOptions(const std::vector<std::string>& given, ShapeEntry) {
   const std::string why[][2] = {
-      {"link", "give each robot's link in the formation file (" + robotKey(shape, "link") + ": links/NAME.yaml)"},
+      {"link", "give each robot's link in the formation file (" + ShapeEntry::robotKey("link") + ": links/NAME.yaml)"},
       {"no-clamp", "a formation's commands are never clamped (AuRoRA's formation scripts do not clamp)"},
-      {"controller", "give the robots' controllers in the formation file (" + robotKey(shape, "controller") + ")"},
+      {"controller", "give the robots' controllers in the formation file (" + ShapeEntry::robotKey("controller") + ")"},
       {"task", "the formation file's reference is the task"}};
   for (const auto& w : why) {
-    if (vm.count(w[0]) && !vm[w[0]].defaulted()) {
+    if (std::find(given.begin(), given.end(), w[0]) != given.end()) {
       throw ConfigError("--" + w[0] + " is refused with --formation: " + w[1]);
     }
   }
+}
+
+// Flies the formation file with the options: its shape's entry's flight
+// (shapes.h), the file read once.
+void flyFormationFile(const Options& o) {
+  const FormationFlightOptions f{o.formation, o.vehicle, o.csv, o.config, o.delays, o.law};
+  const FormationDocument doc = loadFormationDocument(o.formation, o.config);
+  withShapeNamed(doc.shape, [&](auto e) { refuseFlightOnlyOptions(o.given, e); });  // an unknown shape: refused next
+  withFormationDocument(doc, o.law, [&](auto e, const auto& file) { decltype(e)::fly(file, f); });
 }
 
 void resolve(const po::variables_map& vm, const std::string& config, Options& o);
@@ -77,7 +80,7 @@ bool parse(int argc, char** argv, Options& o) {
       ("vehicle", po::value(&o.vehicle), ("vehicle YAML or a shipped NAME (default: the controller's vehicle, config/vehicles/NAME.yaml: " + lawVehicleNames() + ")").c_str())
       ("delay", po::value(&o.delays)->multitoken()->composing(), "feedback delay [samples of Ts], 0 to 2047 (limits.h); with --formation one per robot (default: the file's)")
       ("no-clamp", po::bool_switch(&o.no_clamp), "do not clamp the law's commands (an AR.Drone's sim still does, as its driver; a Bebop is clamped nowhere; refused for the Pioneer, whose laws saturate)")
-      ("formation", po::value(&o.formation), "formation YAML or a shipped NAME (config/formations/*.yaml, docs/formation.md): fly its robots and formation layer instead of --controller and --task")
+      ("formation", po::value(&o.formation), ("formation YAML or a shipped NAME (config/formations/*.yaml, docs/formation.md; shapes: " + knownShapeNames() + "): fly its robots and formation layer instead of --controller and --task").c_str())
       ("law", po::value(&o.law), ("with --formation, a triangle's law instead of its file's: " + triangleLawNames() + " (docs/formation.md)").c_str())
       ("link", po::value(&o.link), "link YAML or a shipped NAME (config/links/*.yaml, docs/links.md): jitter, losses, a command-path delay; its uplink delay unless --delay is given")
       ("csv", po::value(&o.csv), "write one row per step k = 0..N at round-trip precision: step, t, the vehicle's state after k model steps (x, y, z, phi, theta, psi, dx, dy, dz, dphi, dtheta, dpsi; the Pioneer also u, omega), its commands u1..uN applied at step k (model order), the reference of step k and the tracking error (with --formation: each robot's state and commands, Q and Qd; docs/formation.md)");
@@ -125,7 +128,9 @@ void resolve(const po::variables_map& vm, const std::string& config, Options& o)
     }
     refuseRateFor(o.flown, o.rate, "--rate");
   }
-  if (!o.formation.empty()) refuseFlightOnlyOptions(vm, formationShapeOf(o.formation));
+  for (const char* only : {"link", "no-clamp", "controller", "task"}) {
+    if (vm.count(only) && !vm[only].defaulted()) o.given.push_back(only);
+  }
   if (o.vehicle.empty()) {
     o.vehicle = config + "/vehicles/" + (o.formation.empty() ? o.flown : LawVehicle::name()) + ".yaml";
   }
@@ -227,17 +232,7 @@ int main(int argc, char** argv) {
     if (o.formation.empty()) {
       run(o);
     } else {
-      const FormationFlightOptions f{o.formation, o.vehicle, o.csv, o.config, o.delays, o.law};
-      const std::string shape = formationShapeOf(o.formation);
-      if (!o.law.empty() && shape != "triangle") {
-        throw ConfigError("--law is refused for a formation of shape '" + shape + "': it chooses a triangle's law "
-                          "(" + triangleLawNames() + "); " +
-                          (shape == "line" ? "the line's law is its file's formation.law"
-                                           : "the UAV-UGV line has one law (docs/formation.md, \"The UAV-UGV line\")"));
-      }
-      if (shape == "uav_ugv_line") flyUavUgvLine(f);
-      else if (shape == "triangle") flyTriangle(f);
-      else flyFormation(f);
+      flyFormationFile(o);
     }
   } catch (const std::exception& e) {
     std::fprintf(stderr, "flight: %s\n", e.what());

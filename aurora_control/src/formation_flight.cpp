@@ -99,29 +99,6 @@ ArdroneLineRun loadRun(const FormationFlightOptions& o, const LawVehicleParams& 
 
 }  // namespace
 
-namespace {
-
-// The tool's form of a shaped flight: its CSV (o.csv) and its printed line.
-void flyShapedToCsv(const FormationFlightOptions& o,
-                    ShapedFlight (*fly)(const FormationFlightOptions&, FlightTable&)) {
-  FILE* csv = o.csv.empty() ? nullptr : std::fopen(o.csv.c_str(), "w");
-  if (!o.csv.empty() && !csv) throw std::runtime_error("cannot write '" + o.csv + "'");
-  FlightTable table = csvTable(csv);
-  ShapedFlight f;
-  try {
-    f = fly(o, table);
-  } catch (...) {
-    if (csv) std::fclose(csv), std::remove(o.csv.c_str());  // nothing half-written
-    throw;
-  }
-  if (csv) std::fclose(csv);
-  std::printf("%s", f.summary.c_str());
-}
-
-}  // namespace
-
-void flyUavUgvLine(const FormationFlightOptions& o) { flyShapedToCsv(o, &flyUavUgvLine); }
-void flyTriangle(const FormationFlightOptions& o) { flyShapedToCsv(o, &flyTriangle); }
 
 void refuseRobotLink(const LinkParams& link, long delay, int r, long ticks, double Ts) {
   const std::string robot = "robot " + std::to_string(r + 1) + "'s link";
@@ -159,8 +136,13 @@ std::vector<long> robotDelays(const std::vector<long>& given, size_t robots, con
 }
 
 FormationFlight flyFormationFiles(const FormationFlightOptions& o, const FormationObserver& observe) {
+  return flyFormationFiles(readFormationFile(o.formation, o.config_dir), o, observe);
+}
+
+FormationFlight flyFormationFiles(const FormationFile& file, const FormationFlightOptions& o,
+                                  const FormationObserver& observe) {
   const auto p = aurora_sim::loadVehicleFile<ArdroneLawData::Vehicle>(o.vehicle, "the formation's drones' laws");
-  FormationFlight r{readFormationFile(o.formation, o.config_dir), {}, p.Ts, 0, 0.0, {},
+  FormationFlight r{file, {}, p.Ts, 0, 0.0, {},
                     ArdroneLineJudge{FormationCriteria<double>::study(), false, p.Ts, {}, {}}};
   r.ticks = formationTicks(r.file.reference.duration, p.Ts);
   r.run = loadRun(o, p, r.file, r.ticks);
@@ -186,9 +168,9 @@ FormationFlight flyFormationFiles(const FormationFlightOptions& o, const Formati
   return r;
 }
 
-void flyFormation(const FormationFlightOptions& o) {
+void LineShapeEntry::fly(const File& file, const FormationFlightOptions& o) {
   std::unique_ptr<FormationCsv> csv;  // opened at tick 0: a refused file writes nothing
-  const FormationFlight r = flyFormationFiles(o, [&](const ArdroneLineObservation& obs, double Ts) {
+  const FormationFlight r = flyFormationFiles(file, o, [&](const ArdroneLineObservation& obs, double Ts) {
     if (!csv) csv.reset(new FormationCsv(o.csv));
     csv->add(obs, Ts);
   });

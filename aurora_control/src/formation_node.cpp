@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <limits>
 
-#include "aurora_control/formation/formation_yaml.h"
+#include "aurora_control/formation/shapes.h"
 #include "aurora_control/params/parameter_table.h"
 #include "formation_markers.h"
 #include "param_tree.h"
@@ -50,8 +50,10 @@ void FormationNode::loadCrew() {
   CrewRequest q;
   q.file = aurora_common::requireParam<std::string>(pnh_, "formation_file", "a formation file (config/formations/NAME.yaml)");
   q.config_dir = aurora_common::paramOr<std::string>(pnh_, "config_dir", "");
-  const std::string shape = formationShapeOf(q.file);
-  if (shape != "triangle" && shape != "uav_ugv_line") q.line_vehicle = aurora_sim::loadVehicleParams<aurora_sim::Ardrone2>(pnh_, "vehicle");
+  const FormationDocument file = loadFormationDocument(q.file, q.config_dir);
+  withShapeNamed(file.shape, [&](auto e) {  // a shape whose file names no vehicle flies ~vehicle's
+    if (!decltype(e)::kNamesItsVehicles) q.line_vehicle = aurora_sim::loadVehicleParams<aurora_sim::Ardrone2>(pnh_, "vehicle");
+  });
   for (int d = 0; d < kMaxCrew; ++d) {
     const std::string key = "delay_" + std::to_string(d + 1);
     const double given = aurora_common::rangedParam(pnh_, key, -1, -1, double(kMaxDelaySamples), "samples (-1: the file's)");
@@ -62,7 +64,7 @@ void FormationNode::loadCrew() {
     q.delays.push_back(static_cast<long>(given));  // a delay given replaces the robot's, its link's uplink delay included
     q.delay_keys.push_back(aurora_common::fullKey(pnh_, key));
   }
-  crew_ = loadFormationCrew(q);
+  crew_ = loadFormationCrew(q, file);
   for (int d = 0; d < crew_->robots(); ++d) drones_.push_back(crew_->robot(d).name_space);
   std::vector<std::string> launched;
   if (pnh_.getParam("drones", launched) && launched != drones_) {

@@ -73,8 +73,8 @@ struct TriangleErrors {
 
 }  // namespace
 
-ShapedFlight flyTriangle(const FormationFlightOptions& o, FlightTable& table) {
-  TriangleSetup setup = readTriangleFile(o.formation, o.config_dir, o.law);
+ShapedFlight TriangleShapeEntry::flyTable(const File& file, const FormationFlightOptions& o, FlightTable& table) {
+  TriangleSetup setup = file;
   // Delays in drone steps (kinematic robots: in layer periods), shorter than
   // the run's steps (triangleSteps: what runTriangle flies, the node's rule).
   const double unit = setup.kinematic ? setup.period : setup.drone.Ts;
@@ -115,5 +115,7 @@ ShapedFlight flyTriangle(const FormationFlightOptions& o, FlightTable& table) {
   for (int r = 0; r < 3; ++r) f.errors.emplace_back("delay_" + std::to_string(r + 1), double(setup.delay[r]));
   return f;
 }
+
+void TriangleShapeEntry::fly(const File& file, const FormationFlightOptions& o) { flyShapedToCsv<TriangleShapeEntry>(file, o); }
 
 }  // namespace aurora_control

@@ -77,8 +77,8 @@ struct LineErrors {
 
 }  // namespace
 
-ShapedFlight flyUavUgvLine(const FormationFlightOptions& o, FlightTable& table) {
-  UavUgvLineSetup setup = readUavUgvLineFile(o.formation, o.config_dir);
+ShapedFlight UavUgvShapeEntry::flyTable(const File& file, const FormationFlightOptions& o, FlightTable& table) {
+  UavUgvLineSetup setup = file;
   // --delay replaces the file's delays (its links' uplink delays, else 0).
   const std::vector<long> delays =
       robotDelays(o.delays, 2, "the UAV-UGV line", setup.tick, setup.ticks(), {setup.delay[0], setup.delay[1]});
@@ -122,5 +122,7 @@ ShapedFlight flyUavUgvLine(const FormationFlightOptions& o, FlightTable& table) 
   f.errors.emplace_back("ground_command", m.ground_command);
   return f;
 }
+
+void UavUgvShapeEntry::fly(const File& file, const FormationFlightOptions& o) { flyShapedToCsv<UavUgvShapeEntry>(file, o); }
 
 }  // namespace aurora_control

@@ -18,6 +18,7 @@
 #include "aurora_control/formation/formation_runner.h"
 #include "aurora_control/formation/formation_yaml.h"
 #include "aurora_control/formation/line_formation.h"
+#include "aurora_control/formation/shapes.h"
 #include "aurora_sim/vehicle/vehicle_yaml.h"
 
 using namespace aurora_control;
@@ -265,7 +266,15 @@ TEST(FormationFile, MistakesAreRefusedNamingTheKey) {
     const std::string why = refusal(from, to);
     EXPECT_NE(why.find(text), std::string::npos) << to << " -> " << why;
   };
-  says("shape: line", "shape: hexagon", "'formation.shape' = 'hexagon' is unknown: accepted line");
+  // The shapes' list reads the shape first and names every shape it knows.
+  const std::string hexagon = aurora_tests::refusalOfEditedFile(
+      "formations/line_lemniscate.yaml", "shape: line", "shape: hexagon",
+      [](const std::string& path, const std::string& config) {
+        withFormationFile(path, config, "", [](auto, const auto&) {});
+      });
+  EXPECT_NE(hexagon.find("'formation.shape' = 'hexagon' is unknown: accepted line, uav_ugv_line, triangle"),
+            std::string::npos) << hexagon;
+  says("shape: line", "shape: hexagon", "'formation.shape' = 'hexagon' is not the two-drone line this reader reads");
   // AuRoRA's shapes have readers of their own; this one says so.
   for (const char* name : {"triangle_ardrones", "line_pioneer_ardrone"}) {
     try {

@@ -13,7 +13,7 @@
 #include "aurora_control/loop/flight_runner.h"
 #include "aurora_control/link/link_yaml.h"
 #include "aurora_control/loop/loop_link.h"
-#include "aurora_sim/ardrone_params.h"
+#include "aurora_sim/vehicle/ardrone2/ardrone_params.h"
 
 using namespace aurora_control;
 

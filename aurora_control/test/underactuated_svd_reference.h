@@ -8,7 +8,7 @@
 #include <Eigen/Dense>
 #include <cmath>
 
-#include "aurora_sim/ardrone_model.h"
+#include "aurora_sim/vehicle/ardrone2/ardrone_model.h"
 
 namespace aurora_control {
 

@@ -8,8 +8,8 @@
 #include <iterator>
 #include <string>
 
-#include "aurora_sim/vehicle/bebop2.h"
-#include "aurora_sim/vehicle/pioneer3dx.h"
+#include "aurora_sim/vehicle/bebop2/bebop2.h"
+#include "aurora_sim/vehicle/pioneer3dx/pioneer3dx.h"
 #include "aurora_sim/vehicle/vehicle_yaml.h"
 
 namespace {

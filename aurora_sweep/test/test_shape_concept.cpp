@@ -13,7 +13,7 @@
 #include <vector>
 
 #ifdef AURORA_SWEEP_LANES  // xsimd >= 8 (Ubuntu 20.04's xsimd 7: no SIMD engine to test)
-#include "../src/batch_engine.h"
+#include "../src/lanes/batch_engine.h"
 #else
 #include "aurora_sweep/backends.h"
 #endif

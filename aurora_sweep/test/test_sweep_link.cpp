@@ -15,8 +15,8 @@
 #include "aurora_sweep/kernel_entry.h"
 #include "sweep_test_support.h"
 #ifdef AURORA_SWEEP_LANES  // xsimd >= 8
-#include "../src/lane_history.h"
-#include "../src/lane_links.h"
+#include "../src/lanes/lane_history.h"
+#include "../src/lanes/lane_links.h"
 #endif
 
 using namespace aurora_sweep;

@@ -133,7 +133,7 @@ TEST(SweepPredictor, BadInputIsRefusedNamingTheKey) {
 #include <cmath>
 
 #include "aurora_sim/vehicle/vehicle_yaml.h"
-#include "../src/lane_predictor.h"
+#include "../src/lanes/lane_predictor.h"
 
 // The lanes' predictor across long outages (no newer state for longer
 // than its rings), each lane its own: the prediction of rings of 16 slots

@@ -13,7 +13,7 @@
 #include <vector>
 
 #ifdef AURORA_SWEEP_LANES  // xsimd >= 8 (Ubuntu 20.04's xsimd 7: no SIMD engine to test)
-#include "../src/batch_engine.h"
+#include "../src/lanes/batch_engine.h"
 #else
 #include "aurora_sweep/backends.h"
 #endif
@@ -213,7 +213,7 @@ TEST(VehicleConcept, TheBebop2FliesEveryBackend) {
   expectEveryBackendAgrees<BebopLaw>(bebopSetup<float>(lossyLink()), grid.view, 2e-3);
 }
 
-// The Pioneer P3-DX (aurora_sim/vehicle/pioneer3dx.h, law/pioneer_laws.h):
+// The Pioneer P3-DX (aurora_sim/vehicle/pioneer3dx/pioneer3dx.h, law/pioneer_laws.h):
 // 14 states, 2 inputs, Ts 0.1 s, on the floor; every backend, its delay and
 // model factor (theta1) reaching its runs.
 TEST(VehicleConcept, ThePioneerFliesEveryBackend) {

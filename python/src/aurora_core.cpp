@@ -12,10 +12,8 @@
 
 #include "aurora_control/loop/flight_setup.h"
 #include "aurora_control/formation/formation_flight.h"
-#include "aurora_control/formation/triangle_formation.h"
-#include "aurora_control/formation/triangle_yaml.h"
+#include "aurora_control/formation/shapes.h"
 #include "aurora_control/law/other_laws.h"
-#include "aurora_control/formation/uav_ugv_yaml.h"
 #include "aurora_control/params/shipped_files.h"
 #include "aurora_sim/vehicle/sim_profile.h"
 #include "aurora_sim/vehicle/vehicle_type.h"
@@ -163,6 +161,17 @@ py::dict simulateFormationFiles(const std::string& formation, const std::string&
   return out;
 }
 
+// A shape's flight as a table (its entry's flyTable, shapes.h); the line
+// has none: its flights are simulate_formation_files'.
+template <class Entry>
+ShapedFlight tableFlight(Entry, const typename Entry::File& file, const FormationFlightOptions& o, FlightTable& table) {
+  return Entry::flyTable(file, o, table);
+}
+inline ShapedFlight tableFlight(LineShapeEntry, const FormationFile&, const FormationFlightOptions&, FlightTable&) {
+  throw aurora_common::ConfigError("simulate_shaped_formation_files flies a shape with a table flight: the two-drone "
+                                   "line's flight is simulate_formation_files'");
+}
+
 // A UAV-UGV line or triangle file flown as flight --formation flies it (the
 // options' delays and the triangle's law; "" keeps the file's): its CSV's
 // columns and rows as one array, its printed summary and errors by name.
@@ -170,7 +179,7 @@ py::dict simulateShapedFormationFiles(const std::string& formation, const std::v
                                       const std::string& law, const std::string& config_dir) {
   FormationFlightOptions o;
   o.formation = formation, o.delays = delays, o.law = law, o.config_dir = config_dir;
-  const std::string shape = formationShapeOf(formation);
+  std::string shape;
   std::vector<std::string> columns;
   std::vector<double> values;
   FlightTable table;
@@ -179,7 +188,10 @@ py::dict simulateShapedFormationFiles(const std::string& formation, const std::v
   ShapedFlight f;
   {
     py::gil_scoped_release unlocked;
-    f = shape == "triangle" ? flyTriangle(o, table) : flyUavUgvLine(o, table);
+    withFormationFile(formation, config_dir, law, [&](auto e, const auto& file) {
+      shape = e.name();
+      f = tableFlight(e, file, o, table);
+    });
   }
   const py::ssize_t m = static_cast<py::ssize_t>(columns.size()), n = m > 0 ? py::ssize_t(values.size()) / m : 0;
   py::array_t<double> rows({n, m});
@@ -192,8 +204,15 @@ py::dict simulateShapedFormationFiles(const std::string& formation, const std::v
   return out;
 }
 
-// The shape of a formation file ("line", "uav_ugv_line", "triangle").
-std::string shapeOf(const std::string& formation) { return formationShapeOf(formation); }
+// The shape of a formation file (its formation.shape; "" when it gives none).
+std::string shapeOf(const std::string& formation) { return loadFormationDocument(formation, "").shape; }
+
+// Each shape this build knows (shapes.h) and its robots.
+py::dict formationShapes() {
+  py::dict out;
+  forEachShape([&](auto e) { out[py::str(e.name())] = int(decltype(e)::kRobots); });
+  return out;
+}
 
 // Q~ = Qd - Q of a shape's variables as its layer and checks take it (the
 // shape's own angle wraps: the triangle's, the UAV-UGV line's; the line's
@@ -214,11 +233,10 @@ std::vector<double> shapeError(const std::vector<double>& X, const std::vector<d
 
 std::vector<double> formationError(const std::string& shape, const std::vector<double>& X,
                                    const std::vector<double>& Qd, const std::vector<double>& Q) {
-  if (shape == "triangle") return shapeError<TriangleFormation<double>>(X, Qd, Q);
-  if (shape == "uav_ugv_line") return shapeError<UavUgvLine<double>>(X, Qd, Q);
-  if (shape == "line") return shapeError<LineFormation<double>>(X, Qd, Q);
-  throw aurora_common::ConfigError("formation_error: shape '" + shape + "' is unknown: accepted line, uav_ugv_line, "
-                                   "triangle");  // the shapes shapeError is instantiated for above
+  std::vector<double> e;
+  const bool known = withShapeNamed(shape, [&](auto entry) { e = shapeError<typename decltype(entry)::Shape>(X, Qd, Q); });
+  if (!known) throw aurora_common::ConfigError("formation_error: shape '" + shape + "' is unknown: accepted " + knownShapeNames());
+  return e;
 }
 
 
@@ -340,6 +358,7 @@ PYBIND11_MODULE(_core, m) {
         "Open-loop flights through the vehicle's model from recorded states X and commands U: "
         "(starts, length, states) after each step (docs/identify.md, eq. I7).");
   m.def("formation_shape", &shapeOf, py::arg("formation"), "The shape of a formation file.");
+  m.def("formation_shapes", &formationShapes, "The shapes this build knows, each with its robots.");
   m.def("formation_error", &formationError, py::arg("shape"), py::arg("X"), py::arg("Qd"), py::arg("Q"),
         "Qd - Q of a shape's variables with the shape's own angle wraps, at positions X (3 per robot).");
 }

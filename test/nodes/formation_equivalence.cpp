@@ -15,9 +15,7 @@
 #include <map>
 #include <vector>
 
-#include "aurora_control/formation/formation_yaml.h"
-#include "aurora_control/formation/triangle_yaml.h"
-#include "aurora_control/formation/uav_ugv_yaml.h"
+#include "aurora_control/formation/shapes.h"
 #include "aurora_sim/ros/vehicle_params.h"
 #include "lockstep_states.h"
 
@@ -51,30 +49,33 @@ Offline flyOffline(const Run& run, int steps) {
   return f;
 }
 
-// The file's run with the test's delays, flown offline.
-Offline offlineOf(const std::string& file, const std::string& config, const long delay[3], int steps, int& robots) {
-  const std::string shape = formationShapeOf(file);
-  if (shape == "uav_ugv_line") {
-    UavUgvLineSetup s = readUavUgvLineFile(file, config);
-    s.delay[0] = delay[0], s.delay[1] = delay[1];
-    robots = 2;
-    Offline f = flyOffline<UavUgvRobots, UavUgvShape>(uavUgvRun(s), steps);
-    f.states[0] = aurora_sim::Pioneer3dx::kStates;  // the Pioneer's u and omega in extra
-    return f;
-  }
-  if (shape == "triangle") {
-    TriangleSetup s = readTriangleFile(file, config);
-    for (int r = 0; r < 3; ++r) s.delay[r] = delay[r];
-    robots = 3;
-    return flyOffline<TriangleDroneLaw, Triangle>(triangleRun<TriangleDroneLaw>(s), steps);
-  }
+// Each shape's run with the test's delays, flown offline.
+Offline offlineRun(UavUgvLineSetup s, const long delay[3], int steps, int& robots) {
+  s.delay[0] = delay[0], s.delay[1] = delay[1];
+  robots = 2;
+  Offline f = flyOffline<UavUgvRobots, UavUgvShape>(uavUgvRun(s), steps);
+  f.states[0] = aurora_sim::Pioneer3dx::kStates;  // the Pioneer's u and omega in extra
+  return f;
+}
+Offline offlineRun(TriangleSetup s, const long delay[3], int steps, int& robots) {
+  for (int r = 0; r < 3; ++r) s.delay[r] = delay[r];
+  robots = 3;
+  return flyOffline<TriangleDroneLaw, Triangle>(triangleRun<TriangleDroneLaw>(s), steps);
+}
+Offline offlineRun(const FormationFile& f, const long delay[3], int steps, int& robots) {
   ros::NodeHandle d1("/ardrone1");
-  const FormationFile f = readFormationFile(file, config);
   ArdroneLineRun run = formationRun(f, aurora_sim::loadVehicleParams<aurora_sim::Ardrone2>(d1, "vehicle"));
   run.drone[0].delay = delay[0], run.drone[1].delay = delay[1];
   robots = 2;
   Offline out;
   withLaw(f.drones[0].controller.law, [&](auto law) { out = flyOffline<decltype(law), LineFormation<double>>(run, steps); });
+  return out;
+}
+
+// The file's run with the test's delays, flown offline.
+Offline offlineOf(const std::string& file, const std::string& config, const long delay[3], int steps, int& robots) {
+  Offline out;
+  withFormationFile(file, config, "", [&](auto, const auto& setup) { out = offlineRun(setup, delay, steps, robots); });
   return out;
 }
 

@@ -55,9 +55,6 @@ inline const char* paramName(int id, SweepShape shape) { return paramInfo(id, sh
 // values and its robots' own gains instead (SweepSpec::accepts; its
 // acceptedNames lists them).
 bool paramApplies(const ParamInfo& info, const std::string& controller, SweepShape shape);
-// The controllers a sweep flies, comma separated, quoted: the AR.Drone's
-// two, the Bebop 2 compensator, the Pioneer's two.
-std::string sweepControllerNames();
 // "pd_saturated" / "underactuated" (control_law.h).
 using aurora_control::lawFromName;
 using aurora_control::lawName;

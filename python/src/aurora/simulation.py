@@ -164,7 +164,7 @@ def simulate_formation(formation, vehicle=None, delays=None, law=None):
             if vehicle is not None:
                 raise ValueError("vehicle= is refused for a formation of shape %r: its robots' vehicle files are "
                                  "in the formation file" % shape)
-            robots = 3 if shape == "triangle" else 2
+            robots = _core.formation_shapes().get(shape, 2)  # an unknown shape: the reader refuses it
             given = [] if delays is None else per_drone(delays, "delays", robots, "robot")
             if law is not None and (not isinstance(law, str) or not law):
                 raise ValueError("law: expected a triangle law's name (" + _core.TRIANGLE_LAWS + "), got %r; "

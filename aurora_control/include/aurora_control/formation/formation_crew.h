@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "aurora_control/formation/formation_controller.h"
+#include "aurora_control/formation/formation_document.h"
 #include "aurora_sim/command_mapping.h"
 
 namespace aurora_control {
@@ -99,6 +100,9 @@ struct CrewRequest {
 // The file's robots as a crew; refuses (ConfigError, naming the key) a
 // file that cannot fly in the ROS loop (the triangle's kinematic robots),
 // a delay for a robot the shape has not, or a delay the run cannot hold.
+// The second form reads request.file; the first takes it read (the node
+// reads its shape first: formation_document.h).
+std::unique_ptr<FormationCrew> loadFormationCrew(const CrewRequest& request, const FormationDocument& file);
 std::unique_ptr<FormationCrew> loadFormationCrew(const CrewRequest& request);
 
 }  // namespace aurora_control

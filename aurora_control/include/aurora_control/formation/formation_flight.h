@@ -78,12 +78,14 @@ struct FormationFlight {
   ArdroneLineJudge judge;  // the formation checks, as a sweep judges them
 };
 
-// Loads the files (refusals as ConfigError naming the key) and flies every
-// tick through `observe`.
+// Flies the line's `file` with the options' vehicle file and delays
+// (refusals as ConfigError naming the key), every tick through `observe`;
+// the second form reads o.formation first. The tool's form
+// (LineShapeEntry::fly) writes its CSV (o.csv) and prints its errors and
+// checks.
+FormationFlight flyFormationFiles(const FormationFile& file, const FormationFlightOptions& o,
+                                  const FormationObserver& observe);
 FormationFlight flyFormationFiles(const FormationFlightOptions& o, const FormationObserver& observe);
-
-// The tool: the flight, its CSV (o.csv) and its printed errors and checks.
-void flyFormation(const FormationFlightOptions& o);
 
 // AuRoRA's formations' flights (the UAV-UGV line, the triangle) as a table:
 // its columns (the CSV's header: `step, t`, each robot's, Q_, Qd_), then one
@@ -132,14 +134,25 @@ inline std::string rmsLine(long samples, double end_s, const std::string& values
   return "  RMS after " + YamlReader::fmt(kRmsFrom) + " s: " + measured + "; " + rest + "\n";
 }
 
-// Flies a UAV-UGV line file (shape: uav_ugv_line; uav_ugv_yaml.h) or a
-// triangle file (shape: triangle; triangle_yaml.h) with the options' delays
-// (and the triangle's law), filling `table` (its columns first, then a row
-// per step). The tool's forms write o.csv and print the summary.
-ShapedFlight flyUavUgvLine(const FormationFlightOptions& o, FlightTable& table);
-ShapedFlight flyTriangle(const FormationFlightOptions& o, FlightTable& table);
-void flyUavUgvLine(const FormationFlightOptions& o);
-void flyTriangle(const FormationFlightOptions& o);
+// A UAV-UGV line's or a triangle's flight fills a FlightTable (its columns
+// first, then a row per step): its entry's flyTable (shapes.h), defined
+// in the shape's own flight file. Its tool form (the entry's fly) writes
+// o.csv from it and prints the summary: flyShapedToCsv.
+template <class Entry>
+void flyShapedToCsv(const typename Entry::File& file, const FormationFlightOptions& o) {
+  FILE* csv = o.csv.empty() ? nullptr : std::fopen(o.csv.c_str(), "w");
+  if (!o.csv.empty() && !csv) throw std::runtime_error("cannot write '" + o.csv + "'");
+  FlightTable table = csvTable(csv);
+  ShapedFlight f;
+  try {
+    f = Entry::flyTable(file, o, table);
+  } catch (...) {
+    if (csv) std::fclose(csv), std::remove(o.csv.c_str());  // nothing half-written
+    throw;
+  }
+  if (csv) std::fclose(csv);
+  std::printf("%s", f.summary.c_str());
+}
 
 // Flies steps k = 0 .. steps - 1 (fly(k)), adding row(k) to the table when
 // it wants rows; returns the wall time [s].

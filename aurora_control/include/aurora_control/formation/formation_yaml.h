@@ -10,11 +10,13 @@
 
 #include <cctype>
 #include <cmath>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "aurora_common/yaml_file.h"
 #include "aurora_control/formation/formation_checks.h"
+#include "aurora_control/formation/formation_document.h"
 #include "aurora_control/formation/formation_runner.h"
 #include "aurora_control/loop/law_yaml.h"
 #include "aurora_control/params/limits.h"
@@ -239,41 +241,21 @@ inline void readDrones(const YamlReader& r, const YAML::Node& n, const std::stri
   }
 }
 
-// The file's 'formation:' mapping, its keys among `accepted`.
-inline YAML::Node formationSection(const YamlReader& r, const std::string& path,
-                                   const std::vector<std::string>& accepted) {
-  const YAML::Node root = loadYamlFile("formation file", path);
-  r.onlyKeys(root, "", {"formation"});
-  std::string keys;
-  for (const std::string& k : accepted) keys += (keys.empty() ? "" : ", ") + k;
-  const YAML::Node n = r.require(root, "", "formation", keys);
-  r.onlyKeys(n, "formation", accepted);
-  return n;
-}
-
 }  // namespace formation_detail
 
-// The `shape:` of a formation file ("" when it has none): which reader reads it.
-inline std::string formationShapeOf(const std::string& path) {
-  return aurora_common::yamlFileWord("formation file", path, "formation", "shape");
-}
-
-// The two-drone line's file (shape: line). AuRoRA's triangle and UAV-UGV
-// line have readers of their own (triangle_yaml.h, uav_ugv_yaml.h), which
-// every entry point chooses by formationShapeOf (flight, the formation
-// node's formation_crew.cpp, the sweep).
-inline FormationFile readFormationFile(const std::string& path, const std::string& config_dir) {
+// The two-drone line's file (shape: line), read from its document
+// (formation_document.h); the shapes' list (shapes.h) hands each document to
+// its shape's reader, so this one reads only a line.
+inline FormationFile readFormationFile(const FormationDocument& d) {
   using namespace formation_detail;
-  const YamlReader r("formation file '" + path + "': ");
-  const std::string named = formationShapeOf(path);
-  if (named == "triangle" || named == "uav_ugv_line") {
-    r.fail("formation.shape", "= '" + named + "' is not the two-drone line this reader reads (its own reader: "
-                              "triangle_yaml.h, uav_ugv_yaml.h)");
+  const YamlReader r = formationReader(d);
+  if (d.shape.empty()) r.fail("formation.shape", "is missing: accepted 'shape: line' (the two-drone line this reader reads)");
+  if (d.shape != "line") {
+    r.fail("formation.shape", "= '" + d.shape + "' is not the two-drone line this reader reads (shapes.h chooses "
+                              "a file's reader by its shape)");
   }
-  const YAML::Node n = formationSection(r, path, {"shape", "law", "period", "gains", "reference", "drones"});
+  const YAML::Node n = formationSection(r, d, {"shape", "law", "period", "gains", "reference", "drones"});
   FormationFile f;
-  const std::string shape = r.text(r.require(n, "formation", "shape", "line"), "formation.shape");
-  if (shape != "line") r.fail("formation.shape", "= '" + shape + "' is unknown: accepted line, triangle, uav_ugv_line");
   const std::string law = r.text(r.require(n, "formation", "law", "inverse_kinematics, position_priority, shape_priority"), "formation.law");
   bool known = false;
   for (FormationLaw l : {FormationLaw::kInverseKinematics, FormationLaw::kPositionPriority, FormationLaw::kShapePriority}) {
@@ -283,9 +265,29 @@ inline FormationFile readFormationFile(const std::string& path, const std::strin
   if (n["period"]) f.period = r.numberIn(n["period"], "formation.period", 0.0, 60.0, "s", false);
   if (n["gains"]) readGains(r, n["gains"], "formation.gains", f.gains);
   readReference(r, r.require(n, "formation", "reference", "{path, duration, position, shape}"), "formation.reference", f.reference);
-  readDrones(r, r.require(n, "formation", "drones", "the 2 drones"), config_dir, f);
+  readDrones(r, r.require(n, "formation", "drones", "the 2 drones"), d.config_dir, f);
   return f;
 }
+
+inline FormationFile readFormationFile(const std::string& path, const std::string& config_dir) {
+  return readFormationFile(loadFormationDocument(path, config_dir));
+}
+
+// The two-drone line's entry in the shapes' list (shapes.h): AuRoRA's line
+// of two AR.Drones, their vehicle file the flight's or the node's (the
+// formation file names none).
+struct LineShapeEntry {
+  using Shape = LineFormation<double>;
+  using File = FormationFile;
+  static constexpr int kRobots = 2;
+  static constexpr bool kNamesItsVehicles = false;
+  static const char* name() { return "line"; }
+  static std::string robotKey(const std::string& what) { return "formation.drones[i]." + what; }
+  static std::string lawRefusal() { return "the line's law is its file's formation.law"; }
+  static File read(const FormationDocument& d, const std::string&) { return readFormationFile(d); }
+  static void fly(const File& file, const FormationFlightOptions& o);              // formation_flight.cpp
+  static std::unique_ptr<FormationCrew> crew(const File& file, const CrewRequest& q);  // formation_crew.cpp
+};
 
 // A formation is judged from the checks' settling time on
 // (formation_checks.h): a shorter one would be judged on nothing and pass,

@@ -30,6 +30,7 @@ struct TriangleSetup {
   bool kinematic = true;     // the robots are their references (no vehicles)
   double start[9] = {1, 0, 0, -1, 0, 0, 0, 1, 0};  // [m] the robots' positions
   LawVehicleParams drone{};  // flying: each drone's (its Ts the robots' step)
+  std::string drone_file;    // flying: the drones' vehicle file (robots.vehicle), in the config folder
   LawGains<double> drone_gains{{0.0, 0.0}, UnderactuatedGains<double>::defaults()};
   long layer_ticks = 1, drone_ticks = 1;  // the base tick's divisors: period / tick, Ts / tick
   long delay[3] = {0, 0, 0};  // each robot's feedback delay [drone steps; kinematic robots: layer periods]

@@ -140,8 +140,8 @@ inline void readRobots(const YamlReader& r, const YAML::Node& n, const std::stri
     return;
   }
   readLinks(r, n, key, config_dir, s);
-  s.drone = aurora_sim::loadVehicleFile<LawVehicle>(
-      formation_detail::inConfig(r.text(n["vehicle"], r.key(key, "vehicle")), config_dir), "the triangle's drones");
+  s.drone_file = formation_detail::inConfig(r.text(n["vehicle"], r.key(key, "vehicle")), config_dir);
+  s.drone = aurora_sim::loadVehicleFile<LawVehicle>(s.drone_file, "the triangle's drones");
   const YAML::Node c = r.require(n, key, "controller", "an underactuated mapping or controllers/underactuated.yaml");
   const ControllerSettings set = formation_detail::controllerAt(r, c, r.key(key, "controller"), config_dir);
   if (set.law != LawType::kUnderactuated) r.fail(r.key(key, "controller"), "is refused: the drones fly the underactuated law");
@@ -153,11 +153,11 @@ inline void readRobots(const YamlReader& r, const YAML::Node& n, const std::stri
 }  // namespace triangle_yaml_detail
 
 // The file's setup; `law` (not empty: flight's --law) replaces the file's.
-inline TriangleSetup readTriangleFile(const std::string& path, const std::string& config_dir,
-                                      const std::string& law = "") {
-  const YamlReader r("formation file '" + path + "': ");
+inline TriangleSetup readTriangleFile(const FormationDocument& d, const std::string& law = "") {
+  const YamlReader r = formationReader(d);
+  const std::string& config_dir = d.config_dir;
   const YAML::Node n = formation_detail::formationSection(
-      r, path, {"shape", "law", "period", "duration", "gains", "reference", "robots"});
+      r, d, {"shape", "law", "period", "duration", "gains", "reference", "robots"});
   TriangleSetup s;
   const std::string file_law = r.text(r.require(n, "formation", "law", triangleLawNames()), "formation.law");
   try {
@@ -176,5 +176,28 @@ inline TriangleSetup readTriangleFile(const std::string& path, const std::string
   if (!s.kinematic) triangle_yaml_detail::baseTick(r, s.period, s.drone.Ts, s);
   return s;
 }
+
+inline TriangleSetup readTriangleFile(const std::string& path, const std::string& config_dir,
+                                      const std::string& law = "") {
+  return readTriangleFile(loadFormationDocument(path, config_dir), law);
+}
+
+// AuRoRA's triangle's entry in the shapes' list (shapes.h): three robots,
+// its own laws (flight's --law chooses one).
+struct TriangleShapeEntry {
+  using Shape = Triangle;
+  using File = TriangleSetup;
+  static constexpr int kRobots = 3;
+  static constexpr bool kNamesItsVehicles = true;
+  static const char* name() { return "triangle"; }
+  static std::string robotKey(const std::string& what) {
+    return "formation.robots." + what + (what == "link" ? "s (one file per drone)" : " (one for the three)");
+  }
+  static std::string lawRefusal() { return ""; }  // --law chooses its law
+  static File read(const FormationDocument& d, const std::string& law) { return readTriangleFile(d, law); }
+  static ShapedFlight flyTable(const File& file, const FormationFlightOptions& o, FlightTable& table);  // triangle_flight.cpp
+  static void fly(const File& file, const FormationFlightOptions& o);                                 // formation_flight.cpp
+  static std::unique_ptr<FormationCrew> crew(const File& file, const CrewRequest& q);                 // formation_crew.cpp
+};
 
 }  // namespace aurora_control

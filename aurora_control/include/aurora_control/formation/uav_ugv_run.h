@@ -34,6 +34,7 @@ struct UavUgvLineSetup {
   LinkParams link[2];                    // each robot's link (docs/links.md; ideal unless its file gives one)
   double duration = 130.0;               // [s]: ticks k = 0 .. round(duration / tick) - 1
   std::string name_space[2] = {"pioneer1", "ardrone2"};  // each robot's ROS namespace (robots[i].namespace)
+  std::string vehicle_file[2];           // each robot's vehicle file (robots[i].vehicle), in the config folder
   long ticks() const { return std::lround(duration / tick); }
 };
 

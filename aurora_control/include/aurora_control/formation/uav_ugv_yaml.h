@@ -62,6 +62,7 @@ inline void readPioneer(const YamlReader& r, const YAML::Node& n, const std::str
   const std::string file = formation_detail::inConfig(r.text(r.require(n, key, "vehicle", "vehicles/pioneer3dx.yaml"),
                                                              r.key(key, "vehicle")), config_dir);
   s.pioneer = aurora_sim::loadVehicleFile<aurora_sim::Pioneer3dx>(file, "the UAV-UGV line's robot 1");
+  s.vehicle_file[0] = file;
   if (n["kinematic_model"]) s.pioneer.kinematic = r.boolean(n["kinematic_model"], r.key(key, "kinematic_model")) ? 1 : 0;
   readPioneerGains(r, controllerOf(r, n, key, PioneerDynamic::name()), r.key(key, "controller"), s.pioneer_gains);
   readStart(r, n, key, 0.0, 0.0, "accepted z = 0 (a ground robot's control point lies on the floor)", s.pioneer_start);
@@ -75,6 +76,7 @@ inline void readDrone(const YamlReader& r, const YAML::Node& n, const std::strin
   const std::string file = formation_detail::inConfig(r.text(r.require(n, key, "vehicle", "vehicles/ardrone2.yaml"),
                                                              r.key(key, "vehicle")), config_dir);
   s.drone = aurora_sim::loadVehicleFile<LawVehicle>(file, "the UAV-UGV line's robot 2");
+  s.vehicle_file[1] = file;
   ControllerSettings set;
   readLaw(r, controllerOf(r, n, key, lawName(LawType::kUnderactuated)), r.key(key, "controller"), set);
   s.drone_gains.underactuated = set.underactuated;
@@ -84,10 +86,11 @@ inline void readDrone(const YamlReader& r, const YAML::Node& n, const std::strin
 
 }  // namespace uav_ugv_detail
 
-inline UavUgvLineSetup readUavUgvLineFile(const std::string& path, const std::string& config_dir) {
+inline UavUgvLineSetup readUavUgvLineFile(const FormationDocument& d) {
   using namespace uav_ugv_detail;
-  const YamlReader r("formation file '" + path + "': ");
-  const YAML::Node n = formation_detail::formationSection(r, path, {"shape", "tick", "duration", "gains", "robots"});
+  const YamlReader r = formationReader(d);
+  const std::string& config_dir = d.config_dir;
+  const YAML::Node n = formation_detail::formationSection(r, d, {"shape", "tick", "duration", "gains", "robots"});
   UavUgvLineSetup s;
   UavUgvLine<double>::defaultGains(s.k1, s.k2);
   s.tick = r.numberIn(r.require(n, "formation", "tick", "s (AuRoRA's 1/30)"), "formation.tick", 0.0, 1.0, "s", false);
@@ -121,5 +124,25 @@ inline UavUgvLineSetup readUavUgvLineFile(const std::string& path, const std::st
   s.drone.Ts = s.tick;
   return s;
 }
+
+inline UavUgvLineSetup readUavUgvLineFile(const std::string& path, const std::string& config_dir) {
+  return readUavUgvLineFile(loadFormationDocument(path, config_dir));
+}
+
+// AuRoRA's UAV-UGV line's entry in the shapes' list (shapes.h): a Pioneer
+// and an AR.Drone, one law each.
+struct UavUgvShapeEntry {
+  using Shape = UavUgvShape;
+  using File = UavUgvLineSetup;
+  static constexpr int kRobots = 2;
+  static constexpr bool kNamesItsVehicles = true;
+  static const char* name() { return "uav_ugv_line"; }
+  static std::string robotKey(const std::string& what) { return "formation.robots[i]." + what; }
+  static std::string lawRefusal() { return "the UAV-UGV line has one law (docs/formation.md, \"The UAV-UGV line\")"; }
+  static File read(const FormationDocument& d, const std::string&) { return readUavUgvLineFile(d); }
+  static ShapedFlight flyTable(const File& file, const FormationFlightOptions& o, FlightTable& table);  // uav_ugv_flight.cpp
+  static void fly(const File& file, const FormationFlightOptions& o);                                 // formation_flight.cpp
+  static std::unique_ptr<FormationCrew> crew(const File& file, const CrewRequest& q);                 // formation_crew.cpp
+};
 
 }  // namespace aurora_control

@@ -13,7 +13,7 @@
 #include "aurora_common/scalar_math.h"
 #include "aurora_control/law/law_of.h"
 #include "aurora_control/task/task.h"
-#include "aurora_sim/vehicle/bebop2.h"
+#include "aurora_sim/vehicle/bebop2/bebop2.h"
 
 namespace aurora_control {
 

@@ -13,10 +13,10 @@
 #include "aurora_control/law/pd_controller.h"
 #include "aurora_control/task/trajectory_task.h"
 #include "aurora_control/law/underactuated_law.h"
-#include "aurora_sim/ardrone_params.h"
+#include "aurora_sim/vehicle/ardrone2/ardrone_params.h"
 #include "aurora_common/host_device.h"
 #include "aurora_sim/state_index.h"
-#include "aurora_sim/vehicle/ardrone2.h"
+#include "aurora_sim/vehicle/ardrone2/ardrone2.h"
 
 namespace aurora_control {
 

@@ -7,6 +7,8 @@
 
 #include <string>
 
+#include "aurora_common/named_list.h"
+
 #include "aurora_control/law/bebop2_compensator.h"
 #include "aurora_control/law/control_law.h"
 #include "aurora_control/law/pioneer_laws.h"
@@ -26,11 +28,7 @@ void forEachOtherLaw(F&& f) {
 // law by name, for a flight, the controller node and replay.
 template <class F>
 bool withOtherLaw(const std::string& name, F&& f) {
-  bool found = false;
-  forEachOtherLaw([&](auto law) {
-    if (!found && name == law.name()) found = true, f(law);
-  });
-  return found;
+  return aurora_common::withEntryNamed([](auto&& g) { forEachOtherLaw(g); }, name, f);
 }
 
 // Calls f(Law()) for every law, the AR.Drone's two first: the one list the
@@ -43,11 +41,14 @@ void forEachLaw(F&& f) {
   forEachOtherLaw(f);
 }
 
-// Every law's name, comma separated ("pd_saturated, underactuated, ...").
-inline std::string knownLawNames() {
-  std::string names;
-  forEachLaw([&](auto law) { names += (names.empty() ? "" : ", ") + std::string(law.name()); });
-  return names;
+// Every law's name, comma separated ("pd_saturated, underactuated, ..."),
+// each between `quote`s when given ("'pd_saturated', ...").
+inline std::string knownLawNames(const std::string& quote = "") {
+  return aurora_common::entryNames([](auto&& f) { forEachLaw(f); }, quote);
+}
+
+inline bool isKnownLawName(const std::string& name) {
+  return aurora_common::isEntryName([](auto&& f) { forEachLaw(f); }, name);
 }
 
 // Each vehicle with the laws that fly it ("ardrone2 for pd_saturated,

@@ -11,7 +11,7 @@
 #include "aurora_common/scalar_math.h"
 #include "aurora_control/law/law_of.h"
 #include "aurora_control/task/task.h"
-#include "aurora_sim/vehicle/pioneer3dx.h"
+#include "aurora_sim/vehicle/pioneer3dx/pioneer3dx.h"
 
 namespace aurora_control {
 

@@ -9,7 +9,7 @@
 // the controller node and replay call its controller half
 // (controllerCommand, through DelayedController), the sim node the drone's.
 // Generic in the law and its vehicle (control_law.h's ArdroneLaw,
-// aurora_sim/vehicle/ardrone2.h).
+// aurora_sim/vehicle/ardrone2/ardrone2.h).
 #pragma once
 
 #include "aurora_control/law/control_law.h"

@@ -22,7 +22,7 @@
 #include "aurora_control/task/trajectory_task.h"
 #include "aurora_control/law/underactuated_law.h"
 #include "aurora_control/loop/predicted_loop.h"
-#include "aurora_sim/ardrone_params.h"
+#include "aurora_sim/vehicle/ardrone2/ardrone_params.h"
 #include "aurora_common/scalar_math.h"
 #include "aurora_sim/state_index.h"
 

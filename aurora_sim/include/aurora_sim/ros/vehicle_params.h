@@ -10,7 +10,7 @@
 #include <string>
 
 #include "aurora_common/ros/params.h"
-#include "aurora_sim/vehicle/ardrone2.h"
+#include "aurora_sim/vehicle/ardrone2/ardrone2.h"
 #include "aurora_sim/vehicle/sim_profile.h"
 #include "aurora_sim/vehicle/vehicle_type.h"
 

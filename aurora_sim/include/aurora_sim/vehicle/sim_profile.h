@@ -10,9 +10,9 @@
 
 #include "aurora_common/rotation.h"
 #include "aurora_sim/state_index.h"
-#include "aurora_sim/vehicle/ardrone2.h"
-#include "aurora_sim/vehicle/bebop2.h"
-#include "aurora_sim/vehicle/pioneer3dx.h"
+#include "aurora_sim/vehicle/ardrone2/ardrone2.h"
+#include "aurora_sim/vehicle/bebop2/bebop2.h"
+#include "aurora_sim/vehicle/pioneer3dx/pioneer3dx.h"
 
 namespace aurora_sim {
 

@@ -5,10 +5,11 @@
 
 #include <string>
 
+#include "aurora_common/named_list.h"
 #include "aurora_common/refusal_text.h"
-#include "aurora_sim/vehicle/ardrone2.h"
-#include "aurora_sim/vehicle/bebop2.h"
-#include "aurora_sim/vehicle/pioneer3dx.h"
+#include "aurora_sim/vehicle/ardrone2/ardrone2.h"
+#include "aurora_sim/vehicle/bebop2/bebop2.h"
+#include "aurora_sim/vehicle/pioneer3dx/pioneer3dx.h"
 
 namespace aurora_sim {
 
@@ -22,9 +23,7 @@ void forEachVehicle(F&& f) {
 
 // The names a vehicle file's `type:` accepts, comma separated.
 inline std::string knownVehicleTypes() {
-  std::string names;
-  forEachVehicle([&](auto v) { names += (names.empty() ? "" : ", ") + std::string(v.name()); });
-  return names;
+  return aurora_common::entryNames([](auto&& f) { forEachVehicle(f); });
 }
 
 // Calls f(Vehicle()) for the vehicle of `type` (a vehicle file's), else
@@ -33,17 +32,11 @@ inline std::string knownVehicleTypes() {
 // and the fake driver.
 template <class F>
 void withVehicleOfType(const std::string& type, F&& f) {
-  bool found = false;
-  forEachVehicle([&](auto vehicle) {
-    if (!found && type == vehicle.name()) found = true, f(vehicle);
-  });
-  if (!found) f(Ardrone2());
+  if (!aurora_common::withEntryNamed([](auto&& g) { forEachVehicle(g); }, type, f)) f(Ardrone2());
 }
 
 inline bool isKnownVehicleType(const std::string& type) {
-  bool known = false;
-  forEachVehicle([&](auto v) { known = known || type == v.name(); });
-  return known;
+  return aurora_common::isEntryName([](auto&& f) { forEachVehicle(f); }, type);
 }
 
 // Empty when a vehicle file of type `type` is one `flown_by` (which flies a

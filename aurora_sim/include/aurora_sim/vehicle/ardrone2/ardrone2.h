@@ -29,10 +29,10 @@
 
 #include <vector>
 
-#include "aurora_sim/ardrone_model.h"
+#include "aurora_sim/vehicle/ardrone2/ardrone_model.h"
 #include "aurora_sim/command_mapping.h"
 #include "aurora_sim/vehicle/vehicle_defaults.h"
-#include "aurora_sim/vehicle_keys.h"
+#include "aurora_sim/vehicle/vehicle_keys.h"
 
 namespace aurora_sim {
 

@@ -8,10 +8,10 @@
 #include <string>
 #include <vector>
 
-#include "aurora_sim/bebop2_model.h"
+#include "aurora_sim/vehicle/bebop2/bebop2_model.h"
 #include "aurora_sim/command_mapping.h"
 #include "aurora_sim/vehicle/vehicle_defaults.h"
-#include "aurora_sim/vehicle_keys.h"
+#include "aurora_sim/vehicle/vehicle_keys.h"
 
 namespace aurora_sim {
 

@@ -167,12 +167,6 @@ bool paramApplies(const ParamInfo& info, const std::string& controller, SweepSha
   }
 }
 
-std::string sweepControllerNames() {
-  std::string names;
-  aurora_control::forEachLaw([&](auto law) { names += (names.empty() ? "'" : ", '") + std::string(law.name()) + "'"; });
-  return names;
-}
-
 double paramDefault(int id, SweepShape shape) {
   const ParamInfo& info = paramInfo(id, shape);
   switch (info.group) {

@@ -11,7 +11,7 @@
 
 #include "aurora_sweep/results.h"
 #include "aurora_sweep/sweep_spec.h"
-#include "mpi_ranks.h"
+#include "../chunks/mpi_ranks.h"
 #include "sweep_options.h"
 
 namespace aurora_sweep {

@@ -3,18 +3,19 @@
 #include <limits>
 #include <stdexcept>
 
-#include "aurora_control/formation/formation_yaml.h"
-#include "aurora_control/formation/triangle_yaml.h"
-#include "aurora_control/formation/uav_ugv_yaml.h"
+#include "aurora_control/formation/shapes.h"
 #include "aurora_sweep/robot_gains.h"
 
 namespace aurora_sweep {
 
 namespace {
 
+// Each shape's file as the sweep flies it: an overload per entry of the
+// shapes' list (shapes.h), chosen by its file's type.
+//
 // The two-drone line's file (shape: line) with the sweep's vehicle.
-void readLine(const std::string& file, const std::string& config_dir, SweepSpec& spec) {
-  const aurora_control::FormationFile f = aurora_control::readFormationFile(file, config_dir);
+void readShape(const aurora_control::YamlReader&, const std::string&, const aurora_control::FormationFile& f,
+               SweepSpec& spec) {
   spec.shape = SweepShape::kLine;
   spec.formation_run = aurora_control::formationRun(f, spec.vehicle);
   spec.formation_duration = spec.formation_run.reference.duration;
@@ -23,8 +24,8 @@ void readLine(const std::string& file, const std::string& config_dir, SweepSpec&
 }
 
 // AuRoRA's UAV-UGV line (shape: uav_ugv_line): a Pioneer and an AR.Drone.
-void readUavUgvLine(const std::string& file, const std::string& config_dir, SweepSpec& spec) {
-  const aurora_control::UavUgvLineSetup s = aurora_control::readUavUgvLineFile(file, config_dir);
+void readShape(const aurora_control::YamlReader&, const std::string&, const aurora_control::UavUgvLineSetup& s,
+               SweepSpec& spec) {
   spec.shape = SweepShape::kUavUgvLine;
   spec.uav_ugv_run = aurora_control::uavUgvRun(s);
   spec.formation_duration = s.duration;
@@ -32,9 +33,8 @@ void readUavUgvLine(const std::string& file, const std::string& config_dir, Swee
 }
 
 // AuRoRA's triangle (shape: triangle) of three flying AR.Drones.
-void readTriangle(const aurora_control::YamlReader& r, const std::string& file, const std::string& config_dir,
-                  SweepSpec& spec) {
-  const aurora_control::TriangleSetup s = aurora_control::readTriangleFile(file, config_dir);
+void readShape(const aurora_control::YamlReader& r, const std::string& file, const aurora_control::TriangleSetup& s,
+               SweepSpec& spec) {
   if (s.kinematic) {
     r.fail("sweep.formation", "= '" + file + "' has kinematic robots (no formation.robots.vehicle): a sweep flies "
                               "robots with a law; give its robots a vehicle (config/formations/triangle_ardrones.yaml)");
@@ -92,10 +92,9 @@ void readSweepFormation(const aurora_control::YamlReader& r, const YAML::Node& s
                                               "' gives it (per drone; docs/formation.md, \"Formation sweeps\")");
     }
   }
-  const std::string shape = aurora_control::formationShapeOf(file);
-  if (shape == "triangle") readTriangle(r, file, config_dir, spec);
-  else if (shape == "uav_ugv_line") readUavUgvLine(file, config_dir, spec);
-  else readLine(file, config_dir, spec);
+  aurora_control::withFormationFile(file, config_dir, "", [&](auto, const auto& shape_file) {
+    readShape(r, file, shape_file, spec);
+  });
   spec.formation_file = file;
   refusePredictorHorizon(r, spec);
   nameRobotGains(spec);

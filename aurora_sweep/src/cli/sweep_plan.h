@@ -9,7 +9,7 @@
 #include <string>
 
 #include "aurora_sweep/sweep_spec.h"
-#include "chunk_runner.h"
+#include "../chunks/chunk_runner.h"
 
 namespace aurora_sweep {
 

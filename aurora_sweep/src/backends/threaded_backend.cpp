@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "aurora_sweep/backends.h"
-#include "batch_isa.h"
+#include "../lanes/batch_isa.h"
 
 namespace aurora_sweep {
 

@@ -7,7 +7,7 @@
 
 #include <cmath>
 
-#include "aurora_sim/ardrone_params.h"
+#include "aurora_sim/vehicle/ardrone2/ardrone_params.h"
 #include "aurora_common/host_device.h"
 #include "aurora_common/rotation.h"
 #include "aurora_common/scalar_math.h"

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "aurora_sim/ardrone_params.h"
+#include "aurora_sim/vehicle/ardrone2/ardrone_params.h"
 
 namespace aurora_sim {
 

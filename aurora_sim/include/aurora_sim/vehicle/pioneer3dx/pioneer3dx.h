@@ -8,9 +8,9 @@
 #include <vector>
 
 #include "aurora_sim/command_mapping.h"
-#include "aurora_sim/pioneer3dx_model.h"
+#include "aurora_sim/vehicle/pioneer3dx/pioneer3dx_model.h"
 #include "aurora_sim/vehicle/vehicle_defaults.h"
-#include "aurora_sim/vehicle_keys.h"
+#include "aurora_sim/vehicle/vehicle_keys.h"
 
 namespace aurora_sim {
 

@@ -30,8 +30,8 @@
 #include "aurora_sweep/results.h"
 #include "aurora_sweep/rviz_markers.h"
 #include "aurora_sweep/sweep_file.h"
-#include "chunk_runner.h"
-#include "mpi_ranks.h"
+#include "../chunks/chunk_runner.h"
+#include "../chunks/mpi_ranks.h"
 #include "sweep_plan.h"
 #include "sweep_start.h"
 

@@ -1,0 +1,74 @@
+// The formation shapes this build knows (docs/architecture.md, "Shapes"):
+// the one list every entry point that takes a formation file chooses from
+// (flight, the formation node, the sweep, aurora._core). Each entry (its
+// reader's header) gives its name, its robots, its file's reader, the keys
+// its refusals name, and declares what the entry points that fly it define
+// in their own files (fly, crew, flyTable). A file is loaded once
+// (formation_document.h) and handed to its shape's reader. Host only.
+#pragma once
+
+#include <string>
+
+#include "aurora_common/named_list.h"
+#include "aurora_common/refusal_text.h"
+#include "aurora_control/formation/formation_document.h"
+#include "aurora_control/formation/formation_yaml.h"
+#include "aurora_control/formation/triangle_yaml.h"
+#include "aurora_control/formation/uav_ugv_yaml.h"
+
+namespace aurora_control {
+
+// Calls f(Entry()) for each shape this build knows: the one list.
+template <class F>
+void forEachShape(F&& f) {
+  f(LineShapeEntry());
+  f(UavUgvShapeEntry());
+  f(TriangleShapeEntry());
+}
+
+// The list as a callable (aurora_common/named_list.h reads it by name).
+struct EachShape {
+  template <class F>
+  void operator()(F&& f) const { forEachShape(f); }
+};
+
+// The shapes' names, comma separated (what a `shape:` accepts).
+inline std::string knownShapeNames() { return aurora_common::entryNames(EachShape()); }
+
+// Calls f(Entry()) for the shape named `shape`; false when none is.
+template <class F>
+bool withShapeNamed(const std::string& shape, F&& f) {
+  return aurora_common::withEntryNamed(EachShape(), shape, f);
+}
+
+// Why `shape` is no shape this build knows ("" when it is one), after
+// its key's name: "is missing: accepted ...", "= 'x' is unknown: ...".
+inline std::string unknownShapeRefusal(const std::string& shape) {
+  if (aurora_common::isEntryName(EachShape(), shape)) return "";
+  if (shape.empty()) return "is missing: accepted " + knownShapeNames();
+  return "= '" + shape + "' is unknown: accepted " + knownShapeNames();
+}
+
+// The shape's entry and its file, read once from `d`: f(Entry(), file).
+// `law` (flight's --law; "" the file's) goes to the
+// reader of a shape with laws of its own (its entry's lawRefusal() is
+// empty); another shape refuses it. An unknown or missing shape is refused
+// naming the file and the shapes there are.
+template <class F>
+void withFormationDocument(const FormationDocument& d, const std::string& law, F&& f) {
+  const std::string refusal = unknownShapeRefusal(d.shape);
+  if (!refusal.empty()) formationReader(d).fail("formation.shape", refusal);
+  withShapeNamed(d.shape, [&](auto e) {
+    if (!law.empty() && !e.lawRefusal().empty()) {
+      throw ConfigError("--law is refused for a formation of shape '" + d.shape + "': " + e.lawRefusal());
+    }
+    f(e, decltype(e)::read(d, law));
+  });
+}
+
+template <class F>
+void withFormationFile(const std::string& path, const std::string& config_dir, const std::string& law, F&& f) {
+  withFormationDocument(loadFormationDocument(path, config_dir), law, f);
+}
+
+}  // namespace aurora_control
