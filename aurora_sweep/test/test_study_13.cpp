@@ -156,13 +156,13 @@ std::vector<std::vector<double>> flightStates(const SweepSpec& spec, aurora_cont
   aurora_control::ControllerSettings set;
   set.law = spec.law;
   set.gains = {spec.fixed[kParamKp], spec.fixed[kParamKd]};
-  set.vehicle = spec.vehicle;
+  set.vehicle = spec.ardrone();
   set.delay = static_cast<long>(spec.fixed[kParamDelay]);
   set.clamp_commands = spec.clamp_commands;
-  set.Ts = spec.vehicle.Ts;
+  set.Ts = spec.ardrone().Ts;
   std::vector<std::vector<double>> states;
   result = aurora_control::runFlight(
-      spec.vehicle, set, spec.task, aurora_control::studyIterationCount(spec.duration(), spec.vehicle.Ts),
+      spec.ardrone(), set, spec.task, aurora_control::studyIterationCount(spec.duration(), spec.ardrone().Ts),
       [&](const aurora_control::FlightObservation& o, double) {
         states.emplace_back(o.after.model.X, o.after.model.X + aurora_sim::kStateSize);
       });

@@ -142,13 +142,13 @@ void expectEveryBackendAgrees(SweepSpec spec, const ShapeRun<double, Shape, type
 
 TEST(AuRoRAsFormationSweep, TheTriangleFliesEveryBackend) {
   const SweepSpec grid = sweepOf("triangle_grid", "triangle_ardrones", kTriangleGrid);
-  ASSERT_EQ(grid.shape, SweepShape::kTriangle);
+  ASSERT_EQ(grid.shape, sweepShapeOf<aurora_control::TriangleShapeEntry>());
   ASSERT_EQ(grid.size(), 16);
   EXPECT_EQ(grid.iterations(), 1500);  // 50 s of 1/30 s
-  expectEveryBackendAgrees<aurora_control::TriangleDroneLaw>(grid, grid.triangle_run, 8, 5e-2);
+  expectEveryBackendAgrees<aurora_control::TriangleDroneLaw>(grid, grid.run<aurora_control::TriangleShapeEntry>(), 8, 5e-2);
   const SweepSpec lossy = sweepOf("triangle_lossy", "triangle_ardrones", kTriangleLossy);
   EXPECT_FALSE(lossy.linkIdeal());
-  expectEveryBackendAgrees<aurora_control::TriangleDroneLaw>(lossy, lossy.triangle_run, 2, 5e-2);
+  expectEveryBackendAgrees<aurora_control::TriangleDroneLaw>(lossy, lossy.run<aurora_control::TriangleShapeEntry>(), 2, 5e-2);
 }
 
 // Issue 51 (1): the triangle's drones fly the predictor of their
@@ -162,9 +162,9 @@ TEST(AuRoRAsFormationSweep, ThePredictorFliesEveryBackend) {
   const SweepSpec grid = sweepOf("triangle_predictor_grid", "triangle_ardrones_predictor", kTriangleGrid);
   ASSERT_TRUE(grid.formationPredicting());
   EXPECT_FALSE(sweepOf("triangle_plain_grid", "triangle_ardrones", kTriangleGrid).formationPredicting());
-  expectEveryBackendAgrees<aurora_control::TriangleDroneLaw>(grid, grid.triangle_run, 8, 5e-2);
+  expectEveryBackendAgrees<aurora_control::TriangleDroneLaw>(grid, grid.run<aurora_control::TriangleShapeEntry>(), 8, 5e-2);
   const SweepSpec lossy = sweepOf("triangle_predictor_lossy", "triangle_ardrones_predictor", kTriangleLossy);
-  expectEveryBackendAgrees<aurora_control::TriangleDroneLaw>(lossy, lossy.triangle_run, 2, 5e-2);
+  expectEveryBackendAgrees<aurora_control::TriangleDroneLaw>(lossy, lossy.run<aurora_control::TriangleShapeEntry>(), 2, 5e-2);
   const auto undelayedDiffer = [](const SweepSpec& spec, const std::string& backend) {
     const std::vector<SimResult> r = runOn(backend, spec);
     int differ = 0;
@@ -178,18 +178,18 @@ TEST(AuRoRAsFormationSweep, ThePredictorFliesEveryBackend) {
 
 TEST(AuRoRAsFormationSweep, TheUavUgvLineFliesEveryBackend) {
   const SweepSpec grid = sweepOf("uav_ugv_grid", "line_pioneer_ardrone", kLineGrid);
-  ASSERT_EQ(grid.shape, SweepShape::kUavUgvLine);
+  ASSERT_EQ(grid.shape, sweepShapeOf<aurora_control::UavUgvShapeEntry>());
   EXPECT_EQ(grid.iterations(), 3900);  // 130 s of 1/30 s
-  expectEveryBackendAgrees<aurora_control::UavUgvRobots>(grid, grid.uav_ugv_run, 8, 2e-3);
+  expectEveryBackendAgrees<aurora_control::UavUgvRobots>(grid, grid.run<aurora_control::UavUgvShapeEntry>(), 8, 2e-3);
   const SweepSpec lossy = sweepOf("uav_ugv_lossy", "line_pioneer_ardrone_kinematic", kLineLossy);
   EXPECT_FALSE(lossy.linkIdeal());
-  expectEveryBackendAgrees<aurora_control::UavUgvRobots>(lossy, lossy.uav_ugv_run, 2, 2e-3);
+  expectEveryBackendAgrees<aurora_control::UavUgvRobots>(lossy, lossy.run<aurora_control::UavUgvShapeEntry>(), 2, 2e-3);
   // Check 5 held and failed in one grid: the Pioneer's law saturates its
   // turn rate command at 1 rad/s when it is 20 ticks late, and sends at most
   // 0.71 rad/s (and 0.38 m/s) when it is on time or 10 ticks late.
   const SweepSpec tight = sweepOf("uav_ugv_tight", "line_pioneer_ardrone",
                                   std::string(kLineGrid) + "  criteria: {max_ground_turn_rate: 0.99}\n");
-  expectEveryBackendAgrees<aurora_control::UavUgvRobots>(tight, tight.uav_ugv_run, 8, 2e-3);
+  expectEveryBackendAgrees<aurora_control::UavUgvRobots>(tight, tight.run<aurora_control::UavUgvShapeEntry>(), 8, 2e-3);
   int held = 0, failed = 0;
   for (const SimResult& r : runOn("scalar", tight)) {
     (checkHeld(r, 4) ? held : failed) += 1;
@@ -213,7 +213,7 @@ TEST(AuRoRAsFormationSweep, ADivergedTrianglesClosestDistanceIsNaNOnEveryBuild) 
   SweepSpec spec = sweepOf("triangle_diverged", "triangle_ardrones",
                            "  precision: float\n  early_stop: false\n  parameters:\n    delay_1: {values: [1, 9, 11]}\n"
                            "    delay_2: {values: [4, 5, 12]}\n    formation_law: N\n");
-  for (int i = 0; i < 3; ++i) spec.triangle_run.drone[2].start[i] = spec.triangle_run.drone[1].start[i];
+  for (int i = 0; i < 3; ++i) spec.run<aurora_control::TriangleShapeEntry>().drone[2].start[i] = spec.run<aurora_control::TriangleShapeEntry>().drone[1].start[i];
   const std::vector<SimResult> scalar = runOn("scalar", spec);
   int diverged = 0;
   for (const SimResult& r : scalar) diverged += std::isnan(r.iasc);
@@ -239,7 +239,7 @@ TEST(AuRoRAsFormationSweep, ADivergedTrianglesClosestDistanceIsNaNOnEveryBuild) 
 // the results name them; the delays differ the flights.
 TEST(AuRoRAsFormationSweep, EachCombinationsValuesReachItsRun) {
   const SweepSpec spec = sweepOf("triangle_values", "triangle_ardrones", kTriangleGrid);
-  const auto setup = makeFormationSetup<double>(spec, spec.triangle_run);
+  const auto setup = makeFormationSetup<double>(spec, spec.run<aurora_control::TriangleShapeEntry>());
   const aurora_control::TriangleLaw laws[4] = {aurora_control::TriangleLaw::kN, aurora_control::TriangleLaw::kPSO,
                                                aurora_control::TriangleLaw::kOSP, aurora_control::TriangleLaw::kSdashPO};
   for (long i = 0; i < spec.size(); ++i) {
@@ -253,7 +253,7 @@ TEST(AuRoRAsFormationSweep, EachCombinationsValuesReachItsRun) {
   for (int id : spec.columns()) names.push_back(spec.paramNameOf(id));
   EXPECT_EQ(names, (std::vector<std::string>{"delay_1", "delay_2", "delay_3", "formation_law"}));
   const SweepSpec lossy = sweepOf("triangle_values_lossy", "triangle_ardrones", kTriangleLossy);
-  const auto run = formationCombination<aurora_control::TriangleDroneLaw>(makeFormationSetup<double>(lossy, lossy.triangle_run), lossy.view().decode(1));
+  const auto run = formationCombination<aurora_control::TriangleDroneLaw>(makeFormationSetup<double>(lossy, lossy.run<aurora_control::TriangleShapeEntry>()), lossy.view().decode(1));
   EXPECT_EQ(run.drone[2].link.uplink.loss, 0.2);
   EXPECT_EQ(run.drone[0].link.uplink.loss, 0.0);
   // The laws fly differently (N against PSO, no delay).
@@ -273,7 +273,7 @@ TEST(AuRoRAsFormationSweep, EachRobotsOwnGainsAreParameters) {
   auto accepted = [&](const char* name) { return spec.paramId(name) >= 0 && spec.accepts(spec.paramId(name)); };
   for (const char* name : {"kc1_1", "kd2_omega_1", "k1_x_2", "k2_psi_2"}) EXPECT_TRUE(accepted(name)) << name;
   for (const char* name : {"kc1_2", "k1_x_1", "kp_1", "k1_x_3", "kc1"}) EXPECT_FALSE(accepted(name)) << name;
-  const aurora_control::UavUgvRun& file = spec.uav_ugv_run;
+  const aurora_control::UavUgvRun& file = spec.run<aurora_control::UavUgvShapeEntry>();
   const auto setup = makeFormationSetup<double>(spec, file);
   constexpr int kK1z = 4, kK1x = 0;  // underactuatedGainName order
   for (long i = 0; i < spec.size(); ++i) {
@@ -304,9 +304,9 @@ TEST(AuRoRAsFormationSweep, EachRobotsOwnGainsAreParameters) {
   // Robot 3 of the triangle: its own, robots 1 and 2 keep theirs.
   const SweepSpec triangle = sweepOf("triangle_gains", "triangle_ardrones", "  parameters:\n    k1_x_3: 0.3\n");
   const auto t = formationCombination<aurora_control::TriangleDroneLaw>(
-      makeFormationSetup<double>(triangle, triangle.triangle_run), triangle.view().decode(0));
+      makeFormationSetup<double>(triangle, triangle.run<aurora_control::TriangleShapeEntry>()), triangle.view().decode(0));
   EXPECT_EQ(t.drone[2].gains.underactuated.k1[0], 0.3);
-  EXPECT_EQ(t.drone[1].gains.underactuated.k1[0], triangle.triangle_run.drone[1].gains.underactuated.k1[0]);
+  EXPECT_EQ(t.drone[1].gains.underactuated.k1[0], triangle.run<aurora_control::TriangleShapeEntry>().drone[1].gains.underactuated.k1[0]);
   EXPECT_NE(t.drone[1].gains.underactuated.k1[0], 0.3);
 }
 

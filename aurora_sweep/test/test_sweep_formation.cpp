@@ -129,7 +129,7 @@ TEST(FormationSweep, TheKernelsPerThreadEntryIsTheScalarLoop) {
     std::vector<SimResult> scalar;
     Progress progress{0};
     runScalar(spec, scalar, progress);
-    const FormationSetup<double, aurora_control::LineFormation, aurora_control::ArdroneLawData> setup = makeFormationSetup<double>(spec, spec.formation_run);
+    const FormationSetup<double, aurora_control::LineFormation, aurora_control::ArdroneLawData> setup = makeFormationSetup<double>(spec, spec.run<aurora_control::LineShapeEntry>());
     const GridView grid = spec.view();
     const long n = spec.rangeSize();
     std::vector<SimResult> out(static_cast<size_t>(n));
@@ -163,7 +163,7 @@ TEST(FormationSweep, EachDroneFliesItsOwnLinkValues) {
     EXPECT_NE(std::find(names.begin(), names.end(), want), names.end()) << want;
   }
   EXPECT_EQ(std::find(names.begin(), names.end(), "uplink_loss_1"), names.end());
-  const FormationSetup<double, aurora_control::LineFormation, aurora_control::ArdroneLawData> setup = makeFormationSetup<double>(spec, spec.formation_run);
+  const FormationSetup<double, aurora_control::LineFormation, aurora_control::ArdroneLawData> setup = makeFormationSetup<double>(spec, spec.run<aurora_control::LineShapeEntry>());
   EXPECT_FALSE(setup.ideal_link);
   const GridView grid = spec.view();
   for (long i = 0; i < spec.size(); ++i) {

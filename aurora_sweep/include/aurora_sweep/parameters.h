@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "aurora_control/formation/shapes.h"
 #include "aurora_control/law/control_law.h"
 #include "aurora_sweep/combination.h"
 
@@ -19,13 +20,27 @@ enum class ParamGroup {
   kRobotGain,     // a formation robot's own law's gain (robot_gains.h)
 };
 
-// A sweep's shape (sweep file `formation:`; single-robot sweeps: kNone).
-// The shapes' parameters share one room (combination.h, ShapeLayout), so
-// a parameter's name is its shape's: the line's and the UAV-UGV line's are
-// the same (2 robots, 6 variables), the triangle's its own.
-enum class SweepShape : int { kNone = 0, kLine, kUavUgvLine, kTriangle };
-constexpr int kSweepShapeCount = 4;
+// A sweep's shape (sweep file `formation:`; single-robot sweeps: kNone):
+// 1 + its entry's place in the shapes' list (aurora_control/formation/
+// shapes.h), sweepShapeOf<Entry>(). The shapes' parameters share one room
+// (combination.h, ShapeLayout), so a parameter's name is its shape's (its
+// entry's ParamShape's): the line's and the UAV-UGV line's are the same (2
+// robots, 6 variables), the triangle's its own.
+enum class SweepShape : int { kNone = 0 };
+constexpr int kSweepShapeCount = 1 + aurora_control::KnownShapes::kCount;
+template <class Entry>
+constexpr SweepShape sweepShapeOf() {
+  return static_cast<SweepShape>(1 + aurora_control::shapeIndex<Entry>());
+}
+// "none", else its entry's name.
 const char* sweepShapeName(SweepShape shape);
+// f(Entry()) for the entry of `shape`; none for kNone.
+template <class F>
+void withSweepShape(SweepShape shape, F&& f) {
+  aurora_control::forEachShape([&](auto e) {
+    if (shape == sweepShapeOf<decltype(e)>()) f(e);
+  });
+}
 
 struct ParamInfo {
   std::string name;

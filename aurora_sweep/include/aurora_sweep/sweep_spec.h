@@ -8,8 +8,7 @@
 #include "aurora_control/loop/feasibility.h"
 #include "aurora_control/formation/formation_checks.h"
 #include "aurora_control/formation/formation_runner.h"
-#include "aurora_control/formation/triangle_run.h"
-#include "aurora_control/formation/uav_ugv_run.h"
+#include "aurora_control/formation/shapes.h"
 #include "aurora_control/link/link.h"
 #include "aurora_control/predictor/state_predictor.h"
 #include "aurora_control/task/task.h"
@@ -34,29 +33,33 @@ struct Axis {
 // The AR.Drone: the vehicle of the AR.Drone's laws and of formation sweeps.
 using SweepVehicle = aurora_control::ArdroneLawData::Vehicle;
 
+template <class ShapeEntry>
+using SweepRunOf = typename ShapeEntry::SweepRun;
+
 struct SweepSpec {
   std::string file;                 // the sweep file it came from
   std::string name;
   std::string controller = "pd_saturated";                               // the law's name
   aurora_control::LawType law = aurora_control::LawType::kPdSaturated;  // an AR.Drone law's
   // The vehicle the controller flies (its file: `vehicle:`, of that
-  // `type:`): the AR.Drone's parameters in `vehicle`, another vehicle's in
-  // its own member (paramsOf).
+  // `type:`): its parameters in its type's place of `vehicles`
+  // (paramsOf); the AR.Drone's are a formation sweep's drones' too.
   std::string vehicle_file;
   std::string vehicle_type = aurora_sim::Ardrone2::name();
-  SweepVehicle::Params<double> vehicle{};
-  aurora_sim::Bebop2::Params<double> bebop2{};
-  aurora_sim::Pioneer3dx::Params<double> pioneer3dx{};
-  const SweepVehicle::Params<double>& paramsOf(aurora_sim::Ardrone2) const { return vehicle; }
-  const aurora_sim::Bebop2::Params<double>& paramsOf(aurora_sim::Bebop2) const { return bebop2; }
-  const aurora_sim::Pioneer3dx::Params<double>& paramsOf(aurora_sim::Pioneer3dx) const { return pioneer3dx; }
-  SweepVehicle::Params<double>& paramsOf(aurora_sim::Ardrone2) { return vehicle; }
-  aurora_sim::Bebop2::Params<double>& paramsOf(aurora_sim::Bebop2) { return bebop2; }
-  aurora_sim::Pioneer3dx::Params<double>& paramsOf(aurora_sim::Pioneer3dx) { return pioneer3dx; }
+  aurora_sim::VehicleParamsSet vehicles{};
+  template <class Vehicle>
+  const typename Vehicle::template Params<double>& paramsOf(Vehicle) const {
+    return vehicles.template of<Vehicle>();
+  }
+  template <class Vehicle>
+  typename Vehicle::template Params<double>& paramsOf(Vehicle) {
+    return vehicles.template of<Vehicle>();
+  }
+  const SweepVehicle::Params<double>& ardrone() const { return paramsOf(aurora_sim::Ardrone2()); }
   double Ts() const {
-    return vehicle_type == aurora_sim::Bebop2::name()       ? bebop2.Ts
-           : vehicle_type == aurora_sim::Pioneer3dx::name() ? pioneer3dx.Ts
-                                                            : vehicle.Ts;
+    double Ts = ardrone().Ts;
+    vehicles.withType(vehicle_type, [&](const auto& p) { Ts = p.Ts; });
+    return Ts;
   }
   // The state predictor (sweep file 'predictor:', docs/predictor.md,
   // "In a sweep"): its form and its model's vehicle file (the sweep's
@@ -72,14 +75,22 @@ struct SweepSpec {
   // "Formation sweeps"): the formation file's run is every combination's,
   // with its robots' delays (delay_1, ...), the formation's gains (a
   // triangle's law) and the link values the sweep gives; judged by the
-  // formation's checks. Its shape's run: the two-drone line's
-  // (formation_run; `law` is its drones'), the UAV-UGV line's or the
-  // triangle's (three AR.Drones on the underactuated law).
+  // formation's checks. Its shape's run: its entry's (the two-drone
+  // line's, `law` its drones'; the UAV-UGV line's; the triangle's, three
+  // AR.Drones on the underactuated law).
   std::string formation_file;
   SweepShape shape = SweepShape::kNone;
-  aurora_control::ArdroneLineRun formation_run;
-  aurora_control::UavUgvRun uav_ugv_run;
-  aurora_control::TriangleRun<aurora_control::TriangleDroneLaw> triangle_run;
+  // Each shape's run (its entry's SweepRun), the sweep's shape's read from
+  // its file: run<Entry>().
+  typename aurora_control::PerShape<SweepRunOf, aurora_control::KnownShapes>::type runs;
+  template <class Entry>
+  const typename Entry::SweepRun& run() const {
+    return std::get<aurora_control::shapeIndex<Entry>()>(runs);
+  }
+  template <class Entry>
+  typename Entry::SweepRun& run() {
+    return std::get<aurora_control::shapeIndex<Entry>()>(runs);
+  }
   double formation_duration = 0.0;  // [s] its flights'
   aurora_control::FormationCriteria<double> formation_criteria =
       aurora_control::FormationCriteria<double>::study();
@@ -91,15 +102,31 @@ struct SweepSpec {
     return on;
   }
   // f(run, law) with the formation's run and its robots' law type (a
-  // default value); the one place a formation sweep's types are chosen.
+  // default value: its entry's withRobotLaw); the one place a formation
+  // sweep's types are chosen. (A single-robot sweep's: the first shape's,
+  // never flown.)
   template <class F>
   void withFormation(F&& f) const {
-    if (shape == SweepShape::kTriangle) return f(triangle_run, aurora_control::TriangleDroneLaw());
-    if (shape == SweepShape::kUavUgvLine) return f(uav_ugv_run, aurora_control::UavUgvRobots());
-    aurora_control::withLaw(law, [&](auto l) { f(formation_run, l); });
+    if (!formation()) return withFormationOf(aurora_control::FirstShape<aurora_control::KnownShapes>::type(), f);
+    withSweepShape(shape, [&](auto e) { withFormationOf(e, f); });
   }
-  // Where its parameters sit (combination.h).
-  ShapeLayout layout() const { return shape == SweepShape::kTriangle ? shapeLayout<aurora_control::Triangle>() : kLineLayout; }
+  template <class Entry, class F>
+  void withFormationOf(Entry, F&& f) const {
+    Entry::withRobotLaw(law, [&](auto l) { f(run<Entry>(), l); });
+  }
+  // Where its parameters sit (combination.h): its entry's ParamShape's
+  // (a single-robot sweep's: the line's).
+  ShapeLayout layout() const {
+    ShapeLayout at = kLineLayout;
+    withSweepShape(shape, [&](auto e) { at = shapeLayout<typename decltype(e)::ParamShape>(); });
+    return at;
+  }
+  // Whether its shape has laws a sweep varies (formation_law: the triangle's).
+  bool variesFormationLaw() const {
+    bool varies = false;
+    withSweepShape(shape, [&](auto e) { varies = decltype(e)::kSweepLaws > 0; });
+    return varies;
+  }
   // Its robots' step [s] (every robot's: the files make them one).
   double formationTs() const {
     double Ts = 0.0;

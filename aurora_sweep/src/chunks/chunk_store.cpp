@@ -133,8 +133,7 @@ void addOtherVehicle(Crc& crc, const SweepSpec& spec) {
     static_assert(sizeof(params) % sizeof(double) == 0, "vehicle constants are doubles");
     crc.add(params);
   };
-  if (spec.vehicle_type == aurora_sim::Bebop2::name()) add(spec.bebop2);
-  if (spec.vehicle_type == aurora_sim::Pioneer3dx::name()) add(spec.pioneer3dx);
+  spec.vehicles.withType(spec.vehicle_type, add);
   for (int id = kParamFirstLawGain; id < kParamLawGainEnd; ++id) {
     if (spec.accepts(id)) crc.add(id), crc.add(spec.fixed[id]);
   }
@@ -167,11 +166,11 @@ void addPredictor(Crc& crc, const SweepSpec& spec) {
 }  // namespace
 
 uint32_t definitionHash(const SweepSpec& spec) {
-  static_assert(sizeof(spec.vehicle) % sizeof(double) == 0, "vehicle constants are doubles");
+  static_assert(sizeof(spec.ardrone()) % sizeof(double) == 0, "vehicle constants are doubles");
   Crc crc;
   crc.add(std::string("aurora_sweep definition v2"));
   crc.add(spec.controller);
-  crc.add(spec.vehicle);
+  crc.add(spec.ardrone());  // every sweep's, as before the other vehicles (older hashes stay)
   addTask(crc, spec.task);
   crc.add(spec.criteria);
   for (const Axis& a : spec.axes) {
@@ -198,7 +197,7 @@ uint32_t definitionHash(const SweepSpec& spec) {
     for (int id = at.linkValue(0, 0); id < at.count(); ++id) {  // only those given: older hashes stay
       if (spec.given(id)) crc.add(id), crc.add(spec.fixed[id]);
     }
-    if (spec.shape == SweepShape::kTriangle) crc.add(spec.fixed[kParamFormationLaw]);
+    if (spec.variesFormationLaw()) crc.add(spec.fixed[kParamFormationLaw]);
     addFormationPredictors(crc, spec);
     for (int id = kParamFirstRobotGain; id < kParamCount; ++id) {  // the robots' gains it gives (older hashes stay)
       if (spec.given(id)) crc.add(id), crc.add(spec.fixed[id]);

@@ -62,12 +62,27 @@ void addLawGains(std::vector<ParamInfo>& t) {
   }
 }
 
-// The shape whose parameters a sweep of `shape` names (single-robot
-// sweeps: the line's, which none of them accepts).
+// f(Shape()) with the shape whose parameters a sweep of `shape` names (its
+// entry's ParamShape; single-robot sweeps: the first shape's, which none of
+// them accepts).
 template <class F>
-void withShapeParams(SweepShape shape, F&& f) {
-  if (shape == SweepShape::kTriangle) return f(aurora_control::TriangleFormation<double>());
-  f(aurora_control::LineFormation<double>());
+void withParamShape(SweepShape shape, F&& f) {
+  using First = aurora_control::FirstShape<aurora_control::KnownShapes>::type;
+  if (shape == SweepShape::kNone) return f(typename First::ParamShape());
+  withSweepShape(shape, [&](auto e) { f(typename decltype(e)::ParamShape()); });
+}
+
+// The shape's parameters, and the laws its formation_law chooses (its
+// entry's, if it has any).
+void addShape(SweepShape shape, std::vector<ParamInfo>& t) {
+  withParamShape(shape, [&](auto s) { addShapeParams<decltype(s)>(t); });
+  withSweepShape(shape, [&](auto e) {
+    using E = decltype(e);
+    if (E::kSweepLaws == 0) return;
+    t[kParamFormationLaw] = {"formation_law", ParamGroup::kFormationLaw, 0.0, double(E::kSweepLaws - 1),
+                             std::string("the ") + E::name() + "'s law by name (" + E::sweepLawNames() +
+                                 ") or its index 0 .. " + std::to_string(E::kSweepLaws - 1), true};
+  });
 }
 
 // Vehicle V's model factors in the sweep's slots (V::factorName order;
@@ -110,12 +125,8 @@ std::vector<ParamInfo> makeTable(SweepShape shape) {
                                    row.kind == ParamKind::kWholeSamples};
   }
   t[kParamRepeat] = {"repeat", ParamGroup::kRepeat, 0.0, 1e9, "which link seed (sweep.repeats)", true};
-  withShapeParams(shape, [&](auto s) { addShapeParams<decltype(s)>(t); });
   forEachOtherLaw([&](auto law) { addLawGains<decltype(law)>(t); });
-  if (shape == SweepShape::kTriangle) {
-    t[kParamFormationLaw] = {"formation_law", ParamGroup::kFormationLaw, 0.0, 4.0,
-                             "the triangle's law by name (" + aurora_control::triangleLawNames() + ") or its index 0 .. 4", true};
-  }
+  addShape(shape, t);
   return t;
 }
 
@@ -134,15 +145,18 @@ const ParamInfo& modelFactorInfo(const std::string& vehicle_type, int i) {
 }
 
 const char* sweepShapeName(SweepShape shape) {
-  static const char* const names[kSweepShapeCount] = {"none", "line", "uav_ugv_line", "triangle"};
-  return names[static_cast<int>(shape)];
+  const char* name = "none";
+  withSweepShape(shape, [&](auto e) { name = e.name(); });
+  return name;
 }
 
 const ParamInfo& paramInfo(int id, SweepShape shape) {
-  static const std::vector<ParamInfo> tables[kSweepShapeCount] = {
-      makeTable(SweepShape::kNone), makeTable(SweepShape::kLine), makeTable(SweepShape::kUavUgvLine),
-      makeTable(SweepShape::kTriangle)};
-  return tables[static_cast<int>(shape)][static_cast<size_t>(id)];
+  static const std::vector<std::vector<ParamInfo>> tables = [] {
+    std::vector<std::vector<ParamInfo>> t;
+    for (int s = 0; s < kSweepShapeCount; ++s) t.push_back(makeTable(static_cast<SweepShape>(s)));
+    return t;
+  }();
+  return tables[static_cast<size_t>(shape)][static_cast<size_t>(id)];
 }
 
 bool paramApplies(const ParamInfo& info, const std::string& controller, SweepShape shape) {
@@ -180,7 +194,7 @@ double paramDefault(int id, SweepShape shape) {
     case ParamGroup::kRepeat: return 0.0;
     case ParamGroup::kFormationGain: {
       double value = 0.0;
-      withShapeParams(shape, [&](auto s) {
+      withParamShape(shape, [&](auto s) {
         using Shape = decltype(s);
         constexpr ShapeLayout at = shapeLayout<Shape>();
         const auto g = aurora_control::FormationGains<double, at.variables>::template of<Shape>();

@@ -11,14 +11,14 @@ namespace aurora_sweep {
 namespace {
 
 // Each shape's file as the sweep flies it: an overload per entry of the
-// shapes' list (shapes.h), chosen by its file's type.
+// shapes' list (shapes.h), chosen by its file's type, setting the run of
+// its entry (SweepSpec::run) and what the sweep's records name.
 //
 // The two-drone line's file (shape: line) with the sweep's vehicle.
 void readShape(const aurora_control::YamlReader&, const std::string&, const aurora_control::FormationFile& f,
                SweepSpec& spec) {
-  spec.shape = SweepShape::kLine;
-  spec.formation_run = aurora_control::formationRun(f, spec.vehicle);
-  spec.formation_duration = spec.formation_run.reference.duration;
+  auto& run = spec.run<aurora_control::LineShapeEntry>() = aurora_control::formationRun(f, spec.ardrone());
+  spec.formation_duration = run.reference.duration;
   spec.law = f.drones[0].controller.law;
   spec.controller = aurora_sweep::lawName(spec.law);
 }
@@ -26,8 +26,7 @@ void readShape(const aurora_control::YamlReader&, const std::string&, const auro
 // AuRoRA's UAV-UGV line (shape: uav_ugv_line): a Pioneer and an AR.Drone.
 void readShape(const aurora_control::YamlReader&, const std::string&, const aurora_control::UavUgvLineSetup& s,
                SweepSpec& spec) {
-  spec.shape = SweepShape::kUavUgvLine;
-  spec.uav_ugv_run = aurora_control::uavUgvRun(s);
+  spec.run<aurora_control::UavUgvShapeEntry>() = aurora_control::uavUgvRun(s);
   spec.formation_duration = s.duration;
   spec.controller = "pioneer_dynamic + underactuated";
 }
@@ -39,8 +38,7 @@ void readShape(const aurora_control::YamlReader& r, const std::string& file, con
     r.fail("sweep.formation", "= '" + file + "' has kinematic robots (no formation.robots.vehicle): a sweep flies "
                               "robots with a law; give its robots a vehicle (config/formations/triangle_ardrones.yaml)");
   }
-  spec.shape = SweepShape::kTriangle;
-  spec.triangle_run = aurora_control::triangleRun<aurora_control::TriangleDroneLaw>(s);
+  spec.run<aurora_control::TriangleShapeEntry>() = aurora_control::triangleRun<aurora_control::TriangleDroneLaw>(s);
   spec.formation_duration = s.duration;
   spec.law = aurora_control::LawType::kUnderactuated;
   spec.controller = aurora_sweep::lawName(spec.law);
@@ -92,7 +90,8 @@ void readSweepFormation(const aurora_control::YamlReader& r, const YAML::Node& s
                                               "' gives it (per drone; docs/formation.md, \"Formation sweeps\")");
     }
   }
-  aurora_control::withFormationFile(file, config_dir, "", [&](auto, const auto& shape_file) {
+  aurora_control::withFormationFile(file, config_dir, "", [&](auto entry, const auto& shape_file) {
+    spec.shape = sweepShapeOf<decltype(entry)>();
     readShape(r, file, shape_file, spec);
   });
   spec.formation_file = file;
@@ -106,8 +105,8 @@ void readSweepFormation(const aurora_control::YamlReader& r, const YAML::Node& s
   spec.withFormation([&](const auto& run, auto) {
     for (int d = 0; d < at.robots; ++d) spec.fixed[at.delay(d)] = double(run.drone[d].delay);
     for (int i = 0; i < at.variables; ++i) spec.fixed[at.k1(i)] = double(run.gains.k1[i]), spec.fixed[at.k2(i)] = double(run.gains.k2[i]);
+    if (spec.variesFormationLaw()) spec.fixed[kParamFormationLaw] = double(static_cast<int>(run.law));
   });
-  if (spec.shape == SweepShape::kTriangle) spec.fixed[kParamFormationLaw] = double(static_cast<int>(spec.triangle_run.law));
   for (int i = 0; i < kLinkParamCount; ++i) spec.fixed[kParamFirstLinkValue + i] = std::numeric_limits<double>::quiet_NaN();
 }
 

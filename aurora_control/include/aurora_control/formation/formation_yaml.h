@@ -285,6 +285,15 @@ struct LineShapeEntry {
   static std::string robotKey(const std::string& what) { return "formation.drones[i]." + what; }
   static std::string lawRefusal() { return "the line's law is its file's formation.law"; }
   static File read(const FormationDocument& d, const std::string&) { return readFormationFile(d); }
+  // A sweep's: its run, its robots' law type (f(Law()); the drones' law,
+  // chosen by the file), the shape its parameters are named by, its laws a
+  // sweep may vary (formation_law; none: the file's formation.law).
+  using SweepRun = ArdroneLineRun;
+  template <class F>
+  static void withRobotLaw(LawType law, F&& f) { withLaw(law, f); }
+  using ParamShape = Shape;
+  static constexpr int kSweepLaws = 0;
+  static std::string sweepLawNames() { return ""; }
   static void fly(const File& file, const FormationFlightOptions& o);              // formation_flight.cpp
   static std::unique_ptr<FormationCrew> crew(const File& file, const CrewRequest& q);  // formation_crew.cpp
 };

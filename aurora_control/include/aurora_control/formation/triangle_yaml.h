@@ -195,6 +195,14 @@ struct TriangleShapeEntry {
   }
   static std::string lawRefusal() { return ""; }  // --law chooses its law
   static File read(const FormationDocument& d, const std::string& law) { return readTriangleFile(d, law); }
+  // A sweep's (LineShapeEntry's): three AR.Drones on the underactuated
+  // law; its five laws a sweep's formation_law (0 .. 4).
+  using SweepRun = TriangleRun<TriangleDroneLaw>;
+  template <class F>
+  static void withRobotLaw(LawType, F&& f) { f(TriangleDroneLaw()); }
+  using ParamShape = Shape;
+  static constexpr int kSweepLaws = 5;
+  static std::string sweepLawNames() { return triangleLawNames(); }
   static ShapedFlight flyTable(const File& file, const FormationFlightOptions& o, FlightTable& table);  // triangle_flight.cpp
   static void fly(const File& file, const FormationFlightOptions& o);                                 // formation_flight.cpp
   static std::unique_ptr<FormationCrew> crew(const File& file, const CrewRequest& q);                 // formation_crew.cpp

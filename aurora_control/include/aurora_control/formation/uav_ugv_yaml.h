@@ -140,6 +140,14 @@ struct UavUgvShapeEntry {
   static std::string robotKey(const std::string& what) { return "formation.robots[i]." + what; }
   static std::string lawRefusal() { return "the UAV-UGV line has one law (docs/formation.md, \"The UAV-UGV line\")"; }
   static File read(const FormationDocument& d, const std::string&) { return readUavUgvLineFile(d); }
+  // A sweep's (LineShapeEntry's): its parameters are named as the line's
+  // (2 robots, 6 variables of the same names).
+  using SweepRun = UavUgvRun;
+  template <class F>
+  static void withRobotLaw(LawType, F&& f) { f(UavUgvRobots()); }
+  using ParamShape = LineFormation<double>;
+  static constexpr int kSweepLaws = 0;
+  static std::string sweepLawNames() { return ""; }
   static ShapedFlight flyTable(const File& file, const FormationFlightOptions& o, FlightTable& table);  // uav_ugv_flight.cpp
   static void fly(const File& file, const FormationFlightOptions& o);                                 // formation_flight.cpp
   static std::unique_ptr<FormationCrew> crew(const File& file, const CrewRequest& q);                 // formation_crew.cpp

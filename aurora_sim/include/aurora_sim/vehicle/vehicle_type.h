@@ -4,6 +4,7 @@
 #pragma once
 
 #include <string>
+#include <tuple>
 
 #include "aurora_common/named_list.h"
 #include "aurora_common/refusal_text.h"
@@ -13,13 +14,53 @@
 
 namespace aurora_sim {
 
-// Calls f(Vehicle()) for each vehicle this build knows: the one list.
+// The vehicles of a list, as types.
+template <class... V>
+struct VehicleList {};
+
+// The vehicles this build knows: the one list (forEachVehicle,
+// VehicleParamsSet and every choice by a vehicle file's type read it).
+using KnownVehicles = VehicleList<Ardrone2, Bebop2, Pioneer3dx>;
+
+// Calls f(Vehicle()) for each vehicle of the list, in its order.
+template <class... V, class F>
+void forEachVehicleOf(VehicleList<V...>, F&& f) {
+  const int each[] = {0, (f(V()), 0)...};
+  (void)each;
+}
+
 template <class F>
 void forEachVehicle(F&& f) {
-  f(Ardrone2());
-  f(Bebop2());
-  f(Pioneer3dx());
+  forEachVehicleOf(KnownVehicles(), f);
 }
+
+// One set of parameters of each vehicle of a list, by its type (a sweep
+// keeps its vehicle file's in its type's): of<Vehicle>(), and
+// withType(name, f), f(its parameters) for the vehicle of that name.
+template <class List>
+struct VehicleParamsOf;
+template <class... V>
+struct VehicleParamsOf<VehicleList<V...>> {
+  std::tuple<typename V::template Params<double>...> params;
+
+  template <class W>
+  const typename W::template Params<double>& of() const {
+    return std::get<typename W::template Params<double>>(params);
+  }
+  template <class W>
+  typename W::template Params<double>& of() {
+    return std::get<typename W::template Params<double>>(params);
+  }
+  template <class F>
+  bool withType(const std::string& type, F&& f) const {
+    bool found = false;
+    forEachVehicleOf(VehicleList<V...>(), [&](auto vehicle) {
+      if (!found && type == vehicle.name()) found = true, f(of<decltype(vehicle)>());
+    });
+    return found;
+  }
+};
+using VehicleParamsSet = VehicleParamsOf<KnownVehicles>;
 
 // The names a vehicle file's `type:` accepts, comma separated.
 inline std::string knownVehicleTypes() {
