@@ -11,6 +11,7 @@
 #include <limits>
 
 #include "aurora_sim/command_mapping.h"
+#include "aurora_sim/vehicle/vehicle_half.h"
 #include "aurora_sim/ros/conversions.h"
 #include "aurora_sim/ros/vehicle_params.h"
 #include "aurora_sim/sim_parameters.h"
@@ -196,7 +197,7 @@ void SimNode<Vehicle>::takeCommand(const geometry_msgs::Twist& msg) {
     for (double& u : command_) u = 0.0;
   } else {
     nan_burst_.accepted();
-    for (int i = 0; i < Vehicle::kInputs; ++i) command_[i] = Vehicle::limitInput(params_, i, U[i]);  // as the driver
+    for (int i = 0; i < Vehicle::kInputs; ++i) command_[i] = U[i];  // clamped as the driver does, by vehicleHalf
   }
   have_command_ = true;
   command_time_ = ros::Time::now();
@@ -314,7 +315,11 @@ void SimNode<Vehicle>::stepAndPublish(const ros::Time& now, bool command_fresh) 
       }
       break;
   }
-  if (!resting) Vehicle::step(params_, model_, U);  // the vehicle's step, as every offline loop's
+  // The vehicle's half of every loop (vehicle_half.h): a flying vehicle's
+  // commands clamped as its driver does (the climb of a take-off or a
+  // landing is the node's own), then its model's step.
+  double applied[Vehicle::kInputs];
+  if (!resting) vehicleHalf<Vehicle>(params_, flight_ == Flight::kFlying, U, model_, applied);
   ++step_;
   // The ground holds the drone while its rotors spin up or it touches down.
   // (In flight there is no ground, as in the study's model, so a flight

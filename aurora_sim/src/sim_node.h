@@ -74,7 +74,7 @@ class SimNode {
   ros::WallTime last_step_wall_, lockstep_start_wall_;
   ros::Time start_time_;
 
-  double command_[Vehicle::kInputs] = {};  // last valid user command, model order, clamped
+  double command_[Vehicle::kInputs] = {};  // last valid user command, model order (clamped when applied)
   ros::Time command_time_;
   bool have_command_ = false;
   RejectionBurst nan_burst_;   // NaN/Inf cmd_vel: one warning per burst, summaries

@@ -57,15 +57,12 @@ FormationSetup<T, Shape, Data> makeFormationSetup(const SweepSpec& spec, const S
 }
 
 // Calls f(Law()) with the law type of a single-robot sweep's controller:
-// one of the AR.Drone's two (spec.law), the Bebop 2 compensator or one of
-// the Pioneer's laws (the one place a sweep's law is chosen by name).
+// the law of the list (other_laws.h) of that name, else the AR.Drone's
+// spec.law (the one place a sweep's law is chosen by name).
 template <class F>
 void withSweepLaw(const SweepSpec& spec, F&& f) {
-  bool other = false;
-  forEachOtherLaw([&](auto law) {
-    if (spec.controller == law.name()) other = true, f(law);
-  });
-  if (!other) aurora_control::withLaw(spec.law, f);
+  const auto each = [](auto&& g) { aurora_control::forEachLaw(g); };
+  if (!aurora_common::withEntryNamed(each, spec.controller, f)) aurora_control::withLaw(spec.law, f);  // spec.law's
 }
 
 // Calls f(T(), capacity, law): the sweep's precision, history capacity

@@ -110,21 +110,17 @@ class FormationController {
     t.k = k;
     double time = 0.0, Qd[kN];
     t.layer_ran = desiredBefore(run_, k, time, Qd);
-    if (t.layer_ran) {
-      // The states each robot's law flies on (its predictor's, when its
-      // controller file has one), as the offline runner's layer reads them.
-      double seen[kN];
-      StateSample flown[kDrones];
-      const double* flown_X[kDrones];
-      for (int d = 0; d < kDrones; ++d) flown[d] = core_[d].flownState(), flown_X[d] = flown[d].X;
-      dronePositions<Shape, Vehicle>(flown_X, seen);
-      layer_.update(seen, Qd, time);
-    }
-    for (int d = 0; d < kDrones; ++d) {
-      t.ref[d] = heldReference(layer_, d);
-      t.out[d] = core_[d].compute(t.ref[d]);
+    // The states each robot's law flies on (its predictor's, when its
+    // controller file has one), as the offline runner's layer reads them;
+    // then each robot's core towards its held reference.
+    StateSample flown[kDrones];
+    const double* flown_X[kDrones] = {};
+    for (int d = 0; t.layer_ran && d < kDrones; ++d) flown[d] = core_[d].flownState(), flown_X[d] = flown[d].X;
+    layerThenRobots<Vehicle>(layer_, t.layer_ran ? Qd : nullptr, time, flown_X, [&](int d, const Reference<double>& ref) {
+      t.ref[d] = ref;
+      t.out[d] = core_[d].compute(ref);
       if (t.not_finite < 0 && !aurora_sim::allFinite(t.out[d].U, Vehicle::kInputs)) t.not_finite = d;
-    }
+    });
     // A NaN or infinite command never reaches a robot (the line is singular
     // where the drones are level, line_formation.h): all hover, as the
     // flight sequence does when any must.

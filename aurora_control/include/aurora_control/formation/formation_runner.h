@@ -186,29 +186,38 @@ struct DroneDownlink {
   }
 };
 
-// Steps 2-3 of tick k (docs/formation.md, "One tick") on the states xc the
-// drones' uplinks delivered: the layer when `Qd` is given (a period is
-// due), then each drone's law towards its held reference, its command
-// through downlink(d, U) and one model step. Scalars or SIMD batches (one
-// formation per lane, every lane at the same tick).
+// The skeleton of steps 2-3 of tick k (docs/formation.md, "One tick"),
+// written once for the offline runner (formationTick below) and the
+// formation node (FormationController::tick): the layer on the positions
+// of the states X the robots fly on when `Qd` is given (a period is due),
+// then act(d, ref) for each robot towards its held reference.
+template <class Vehicle, typename T, class Layer, class States, class Act>
+AURORA_HD inline void layerThenRobots(Layer& layer, const T* Qd, const T& t, const States& X, Act&& act) {
+  using Shape = typename Layer::Shape;
+  if (Qd) {
+    T seen[Shape::kVariables];
+    dronePositions<Shape, Vehicle>(X, seen);
+    layer.update(seen, Qd, t);
+  }
+  for (int d = 0; d < Shape::kDrones; ++d) act(d, heldReference(layer, d));
+}
+
+// Steps 2-3 of tick k on the states xc the drones' uplinks delivered: the
+// layer when `Qd` is given, then each drone's law towards its held
+// reference, its command through downlink(d, U) and one model step.
+// Scalars or SIMD batches (one formation per lane, every lane at the same
+// tick).
 template <class Law, typename T, typename Mask, class Layer, class Downlink>
 AURORA_HD inline void formationTick(const DroneParams<T, typename Law::Data>* params, const ClampPolicy& clamp,
                                     Layer& layer, const T* Qd, const T& t, const T& k,
                                     const T (*xc)[Law::Vehicle::kStates], DroneState<T, Mask, typename Law::Data>* state,
                                     DroneStep<T, typename Law::Data>* step, Downlink&& downlink) {
-  using Shape = typename Layer::Shape;
-  constexpr int D = Shape::kDrones;
-  if (Qd) {
-    T seen[Shape::kVariables];
-    dronePositions<Shape, typename Law::Vehicle>(xc, seen);
-    layer.update(seen, Qd, t);
-  }
-  for (int d = 0; d < D; ++d) {
+  layerThenRobots<typename Law::Vehicle>(layer, Qd, t, xc, [&](int d, const Reference<T>& ref) {
     HeldReference<T> held;
-    held.ref = heldReference(layer, d);
+    held.ref = ref;
     DroneDownlink<Downlink> link{downlink, d};
     step[d] = actOn<Law>(params[d], held, clamp, k, xc[d], link, state[d]);
-  }
+  });
 }
 
 // An observer may return whether to go on (false: stop the run, an early

@@ -1,11 +1,11 @@
-// The laws of the vehicles other than the AR.Drone (the AR.Drone's two are
-// control_law.h's, chosen with withLaw), the one list of them: a flight
-// (flight_setup.h's withFlight), a controller file's vehicle and a sweep
-// (the sweep file's controller names, its parameter table, withSweepLaw)
-// read it. Host only.
+// The laws this build knows, the one list of them (docs/architecture.md,
+// "Vehicles"): a flight (flight_setup.h's withFlight), the controller node
+// and replay, a controller file's vehicle and a sweep (the sweep file's
+// controller names, its parameter table, withSweepLaw) read it. Host only.
 #pragma once
 
 #include <string>
+#include <type_traits>
 
 #include "aurora_common/named_list.h"
 
@@ -15,30 +15,53 @@
 
 namespace aurora_control {
 
-// Calls f(Law()) for each of them.
-template <class F>
-void forEachOtherLaw(F&& f) {
-  f(Bebop2Compensator());
-  f(PioneerDynamic());
-  f(PioneerKinematic());
+// The laws of a list, as types.
+template <class... L>
+struct LawList {};
+
+// Every law, the AR.Drone's two first: the one list.
+using KnownLaws = LawList<ArdroneLaw<LawType::kPdSaturated>, ArdroneLaw<LawType::kUnderactuated>, Bebop2Compensator,
+                          PioneerDynamic, PioneerKinematic>;
+
+// Calls f(Law()) for each law of the list, in its order.
+template <class... L, class F>
+void forEachLawOf(LawList<L...>, F&& f) {
+  const int each[] = {0, (f(L()), 0)...};
+  (void)each;
 }
 
-// Calls f(Law()) for the law of the list named `name`; false when none is
-// (an AR.Drone law's name, or one its reader refuses): the one choice of a
-// law by name, for a flight, the controller node and replay.
+template <class F>
+void forEachLaw(F&& f) {
+  forEachLawOf(KnownLaws(), f);
+}
+
+// The AR.Drone's laws are chosen among themselves at run time: one
+// controller node, flight and sweep loop of ControllerSettings and withLaw
+// switch between them (a live change of controller/name). Every other law
+// has a node, a flight and a sweep loop of its own type.
+template <class Law>
+struct ChosenAtRunTime : std::is_base_of<ArdroneLawData, Law> {};
+
+namespace law_list_detail {
+template <class F, class Law>
+void callFor(std::false_type /*chosen at run time*/, F& f, Law law) { f(law); }
+template <class F, class Law>
+void callFor(std::true_type, F&, Law) {}
+}  // namespace law_list_detail
+
+// Calls f(Law()) for each law of the list not ChosenAtRunTime (f is not
+// instantiated for those).
+template <class F>
+void forEachOtherLaw(F&& f) {
+  forEachLaw([&](auto law) { law_list_detail::callFor(ChosenAtRunTime<decltype(law)>(), f, law); });
+}
+
+// Calls f(Law()) for the law of forEachOtherLaw named `name`; false when
+// none is (an AR.Drone law's name, or one its reader refuses): the one
+// choice of a law by name, for a flight, the controller node and replay.
 template <class F>
 bool withOtherLaw(const std::string& name, F&& f) {
   return aurora_common::withEntryNamed([](auto&& g) { forEachOtherLaw(g); }, name, f);
-}
-
-// Calls f(Law()) for every law, the AR.Drone's two first: the one list the
-// help texts and refusals that name the laws read (knownLawNames,
-// lawVehicleNames).
-template <class F>
-void forEachLaw(F&& f) {
-  f(ArdroneLaw<LawType::kPdSaturated>());
-  f(ArdroneLaw<LawType::kUnderactuated>());
-  forEachOtherLaw(f);
 }
 
 // Every law's name, comma separated ("pd_saturated, underactuated, ..."),

@@ -7,7 +7,9 @@
 // (positioning_runner.h: the sweep's scalar backend, the flight tool, each
 // CUDA thread) and the SIMD engine (on lane batches) run loopIteration;
 // the controller node and replay call its controller half
-// (controllerCommand, through DelayedController), the sim node the drone's.
+// (controllerCommand, through DelayedController), the sim node the drone's
+// (aurora_sim/vehicle/vehicle_half.h, its clamp and step, which droneHalf
+// calls).
 // Generic in the law and its vehicle (control_law.h's ArdroneLaw,
 // aurora_sim/vehicle/ardrone2/ardrone2.h).
 #pragma once
@@ -16,6 +18,7 @@
 #include "aurora_control/loop/delay_buffer.h"
 #include "aurora_control/loop/feasibility.h"
 #include "aurora_control/task/task.h"
+#include "aurora_sim/vehicle/vehicle_half.h"
 #include "aurora_common/scalar_math.h"
 
 namespace aurora_control {
@@ -157,10 +160,7 @@ AURORA_HD inline void droneHalf(const LoopParams<Data, T>& p, const ClampPolicy&
                                 const T received[Data::Vehicle::kInputs], LoopState<Data, T, Mask>& s,
                                 T applied[Data::Vehicle::kInputs]) {
   using Vehicle = typename Data::Vehicle;
-  for (int i = 0; i < Vehicle::kInputs; ++i) {
-    applied[i] = clamp.at_drone ? Vehicle::limitInput(p.plant, i, received[i]) : received[i];
-  }
-  Vehicle::step(p.plant, s.model, applied);
+  aurora_sim::vehicleHalf<Vehicle>(p.plant, clamp.at_drone, received, s.model, applied);  // the simulator node's too
   T e[3];
   for (int i = 0; i < 3; ++i) e[i] = ref.pos[i] - s.model.X[Vehicle::kPosition + i];
   s.metrics.check(p.criteria, norm3(e), s.initial_error);
