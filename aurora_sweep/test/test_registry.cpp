@@ -25,7 +25,7 @@ struct FourInARowEntry {
 };
 
 TEST(Registry, AVehicleListWithATestVehicleKeepsItsParametersByName) {
-  using Vehicles = aurora_sim::VehicleList<aurora_sim::Ardrone2, point_mass::PointMass>;
+  using Vehicles = aurora_common::TypeList<aurora_sim::Ardrone2, point_mass::PointMass>;
   aurora_sim::VehicleParamsOf<Vehicles> set{};
   set.of<point_mass::PointMass>().Ts = 0.5;
   set.of<aurora_sim::Ardrone2>().Ts = 0.2;
@@ -36,16 +36,16 @@ TEST(Registry, AVehicleListWithATestVehicleKeepsItsParametersByName) {
   EXPECT_DOUBLE_EQ(Ts, 0.2);
   EXPECT_FALSE(set.withType("bebop2", [](const auto&) { ADD_FAILURE() << "bebop2 is not in the test's list"; }));
   std::string names;
-  aurora_sim::forEachVehicleOf(Vehicles(), [&](auto v) { names += std::string(v.name()) + " "; });
+  aurora_common::forEachType(Vehicles(), [&](auto v) { names += std::string(v.name()) + " "; });
   EXPECT_EQ(names, "ardrone2 point_mass ");
 }
 
 TEST(Registry, AShapeListWithATestShapeNamesAndPlacesIt) {
-  using Shapes = aurora_control::ShapeList<aurora_control::LineShapeEntry, FourInARowEntry>;
-  EXPECT_EQ(aurora_control::shapeIndexIn<FourInARowEntry>(Shapes()), 1);
-  EXPECT_EQ(aurora_control::shapeIndexIn<aurora_control::LineShapeEntry>(Shapes()), 0);
-  EXPECT_EQ(aurora_control::shapeIndexIn<aurora_control::TriangleShapeEntry>(Shapes()), -1);
-  const auto each = [](auto&& f) { aurora_control::forEachShapeOf(Shapes(), f); };
+  using Shapes = aurora_common::TypeList<aurora_control::LineShapeEntry, FourInARowEntry>;
+  EXPECT_EQ(aurora_common::typeIndexIn<FourInARowEntry>(Shapes()), 1);
+  EXPECT_EQ(aurora_common::typeIndexIn<aurora_control::LineShapeEntry>(Shapes()), 0);
+  EXPECT_EQ(aurora_common::typeIndexIn<aurora_control::TriangleShapeEntry>(Shapes()), -1);
+  const auto each = [](auto&& f) { aurora_common::forEachType(Shapes(), f); };
   EXPECT_EQ(aurora_common::entryNames(each), "line, four_in_a_row");
   int robots = 0;
   EXPECT_TRUE(aurora_common::withEntryNamed(each, "four_in_a_row", [&](auto e) { robots = decltype(e)::kRobots; }));

@@ -1,14 +1,46 @@
 // The project's lists of named entries (docs/architecture.md, "Vehicles",
-// "Shapes"): the vehicles (forEachVehicle), the laws (forEachLaw) and the
-// formation shapes (forEachShape) are each one function calling f(Entry())
-// for every entry, each Entry giving a static name(). What every list is
-// asked by name is written once here, for any of them: `each` is the list
-// as a callable, e.g. [](auto&& f) { forEachShape(f); }. Host only.
+// "Shapes"): the vehicles (KnownVehicles), the laws (KnownLaws) and the
+// formation shapes (KnownShapes) are each a TypeList of entries, each
+// Entry giving a static name(), walked by forEachType (forEachVehicle,
+// forEachLaw, forEachShape). What every list is asked by name is written
+// once here, for any of them: `each` is the list as a callable, e.g.
+// [](auto&& f) { forEachShape(f); }. Host only.
 #pragma once
 
 #include <string>
+#include <type_traits>
 
 namespace aurora_common {
+
+// A list's entries, as types.
+template <class... T>
+struct TypeList {
+  static constexpr int kCount = sizeof...(T);
+};
+
+// Calls f(Entry()) for each entry of the list, in its order.
+template <class... T, class F>
+void forEachType(TypeList<T...>, F&& f) {
+  const int each[] = {0, (f(T()), 0)...};
+  (void)each;
+}
+
+// X's place in the list (0, 1, ...; -1 when it is none of its entries).
+template <class X, class... T>
+constexpr int typeIndexIn(TypeList<T...>) {
+  int index = 0, found = -1;
+  const bool is[] = {false, std::is_same<X, T>::value...};
+  for (bool b : is) found = found < 0 && b ? index - 1 : found, ++index;
+  return found;
+}
+
+// A list's first entry.
+template <class List>
+struct FirstType;
+template <class T0, class... T>
+struct FirstType<TypeList<T0, T...>> {
+  using type = T0;
+};
 
 // The entries' names, comma separated, each between `quote`s when given.
 template <class Each>

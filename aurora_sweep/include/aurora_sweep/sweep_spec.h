@@ -107,7 +107,7 @@ struct SweepSpec {
   // never flown.)
   template <class F>
   void withFormation(F&& f) const {
-    if (!formation()) return withFormationOf(aurora_control::FirstShape<aurora_control::KnownShapes>::type(), f);
+    if (!formation()) return withFormationOf(aurora_common::FirstType<aurora_control::KnownShapes>::type(), f);
     withSweepShape(shape, [&](auto e) { withFormationOf(e, f); });
   }
   template <class Entry, class F>

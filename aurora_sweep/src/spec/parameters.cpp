@@ -67,7 +67,7 @@ void addLawGains(std::vector<ParamInfo>& t) {
 // them accepts).
 template <class F>
 void withParamShape(SweepShape shape, F&& f) {
-  using First = aurora_control::FirstShape<aurora_control::KnownShapes>::type;
+  using First = aurora_common::FirstType<aurora_control::KnownShapes>::type;
   if (shape == SweepShape::kNone) return f(typename First::ParamShape());
   withSweepShape(shape, [&](auto e) { f(typename decltype(e)::ParamShape()); });
 }

@@ -20,54 +20,26 @@
 
 namespace aurora_control {
 
-// The shapes of a list, as types.
-template <class... E>
-struct ShapeList {
-  static constexpr int kCount = sizeof...(E);
-};
-
 // The shapes this build knows: the one list (forEachShape, the sweep's
 // SweepShape and its runs read it).
-using KnownShapes = ShapeList<LineShapeEntry, UavUgvShapeEntry, TriangleShapeEntry>;
-
-// Calls f(Entry()) for each shape of the list, in its order.
-template <class... E, class F>
-void forEachShapeOf(ShapeList<E...>, F&& f) {
-  const int each[] = {0, (f(E()), 0)...};
-  (void)each;
-}
+using KnownShapes = aurora_common::TypeList<LineShapeEntry, UavUgvShapeEntry, TriangleShapeEntry>;
 
 template <class F>
 void forEachShape(F&& f) {
-  forEachShapeOf(KnownShapes(), f);
+  aurora_common::forEachType(KnownShapes(), f);
 }
 
 // Entry's place in the list (0, 1, ...).
-template <class Entry, class... E>
-constexpr int shapeIndexIn(ShapeList<E...>) {
-  int index = 0, found = -1;
-  const bool is[] = {std::is_same<Entry, E>::value...};
-  for (bool b : is) found = found < 0 && b ? index : found, ++index;
-  return found;
-}
 template <class Entry>
 constexpr int shapeIndex() {
-  return shapeIndexIn<Entry>(KnownShapes());
+  return aurora_common::typeIndexIn<Entry>(KnownShapes());
 }
-
-// A list's first shape.
-template <class List>
-struct FirstShape;
-template <class E0, class... E>
-struct FirstShape<ShapeList<E0, E...>> {
-  using type = E0;
-};
 
 // One value of Part<Entry> for each shape of a list (a sweep's runs).
 template <template <class> class Part, class List>
 struct PerShape;
 template <template <class> class Part, class... E>
-struct PerShape<Part, ShapeList<E...>> {
+struct PerShape<Part, aurora_common::TypeList<E...>> {
   using type = std::tuple<Part<E>...>;
 };
 

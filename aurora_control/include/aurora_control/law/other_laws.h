@@ -15,24 +15,13 @@
 
 namespace aurora_control {
 
-// The laws of a list, as types.
-template <class... L>
-struct LawList {};
-
 // Every law, the AR.Drone's two first: the one list.
-using KnownLaws = LawList<ArdroneLaw<LawType::kPdSaturated>, ArdroneLaw<LawType::kUnderactuated>, Bebop2Compensator,
-                          PioneerDynamic, PioneerKinematic>;
-
-// Calls f(Law()) for each law of the list, in its order.
-template <class... L, class F>
-void forEachLawOf(LawList<L...>, F&& f) {
-  const int each[] = {0, (f(L()), 0)...};
-  (void)each;
-}
+using KnownLaws = aurora_common::TypeList<ArdroneLaw<LawType::kPdSaturated>, ArdroneLaw<LawType::kUnderactuated>,
+                                          Bebop2Compensator, PioneerDynamic, PioneerKinematic>;
 
 template <class F>
 void forEachLaw(F&& f) {
-  forEachLawOf(KnownLaws(), f);
+  aurora_common::forEachType(KnownLaws(), f);
 }
 
 // The AR.Drone's laws are chosen among themselves at run time: one

@@ -14,24 +14,13 @@
 
 namespace aurora_sim {
 
-// The vehicles of a list, as types.
-template <class... V>
-struct VehicleList {};
-
 // The vehicles this build knows: the one list (forEachVehicle,
 // VehicleParamsSet and every choice by a vehicle file's type read it).
-using KnownVehicles = VehicleList<Ardrone2, Bebop2, Pioneer3dx>;
-
-// Calls f(Vehicle()) for each vehicle of the list, in its order.
-template <class... V, class F>
-void forEachVehicleOf(VehicleList<V...>, F&& f) {
-  const int each[] = {0, (f(V()), 0)...};
-  (void)each;
-}
+using KnownVehicles = aurora_common::TypeList<Ardrone2, Bebop2, Pioneer3dx>;
 
 template <class F>
 void forEachVehicle(F&& f) {
-  forEachVehicleOf(KnownVehicles(), f);
+  aurora_common::forEachType(KnownVehicles(), f);
 }
 
 // One set of parameters of each vehicle of a list, by its type (a sweep
@@ -40,7 +29,7 @@ void forEachVehicle(F&& f) {
 template <class List>
 struct VehicleParamsOf;
 template <class... V>
-struct VehicleParamsOf<VehicleList<V...>> {
+struct VehicleParamsOf<aurora_common::TypeList<V...>> {
   std::tuple<typename V::template Params<double>...> params;
 
   template <class W>
@@ -54,7 +43,7 @@ struct VehicleParamsOf<VehicleList<V...>> {
   template <class F>
   bool withType(const std::string& type, F&& f) const {
     bool found = false;
-    forEachVehicleOf(VehicleList<V...>(), [&](auto vehicle) {
+    aurora_common::forEachType(aurora_common::TypeList<V...>(), [&](auto vehicle) {
       if (!found && type == vehicle.name()) found = true, f(of<decltype(vehicle)>());
     });
     return found;
