@@ -69,18 +69,27 @@ class ReplayRealtimeTest(unittest.TestCase):
 
     def check_states_before_the_controllers_first(self, bag, early, ns):
         """Three states before the controller's first, as a recorder listening to `state` early records
-        them (copies of the first state, stepped and stamped back): replay leaves them out of the
-        controller's history (its first cycle says it held one state of the delay's), so the delay comes
-        into force at the recorded cycle and every command is identical (it came 3 cycles early)."""
+        them (copies of the first state, stepped and stamped back to just before the controller's
+        history began, or before the bag's first state if that is earlier): replay leaves them out of
+        the controller's history (its first cycle says it held one state of the delay's), so the delay
+        comes into force at the recorded cycle and every command is identical (it came 3 cycles early).
+        (Stepped back from the bag's first state alone, they took the steps of the controller's first
+        states where a loaded recorder had missed those: copies standing for states it used, 3 commands
+        differed.)"""
         with rosbag.Bag(bag) as b:
             first = next(m for _, m, _ in b.read_messages(topics=[ns + "/state"]))
+            control = next(m for _, m, _ in b.read_messages(topics=[ns + "/control"]))
             start = b.get_start_time()
+            held = control.delay_samples + 1 - control.delay_pending  # the states its first cycle held
+            begin = min(first.step, control.step - held + 1)  # the controller's history's first step
+            self.assertGreaterEqual(begin, 3, "the controller's history began at step %d: no room for 3 earlier states" % begin)
             with rosbag.Bag(early, "w") as out:
                 for back in (3, 2, 1):
                     m = copy.deepcopy(first)
-                    m.step -= back
-                    m.header.stamp -= rospy.Duration(back / 30.0)
-                    out.write(ns + "/state", m, rospy.Time.from_sec(start - back / 30.0))
+                    m.step = begin - back
+                    ahead = (first.step - m.step) / 30.0
+                    m.header.stamp -= rospy.Duration(ahead)
+                    out.write(ns + "/state", m, rospy.Time.from_sec(start - ahead))
                 for topic, msg, t in b.read_messages():
                     out.write(topic, msg, t)
         self.replays_identically(early)
