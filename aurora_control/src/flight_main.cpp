@@ -38,7 +38,7 @@ struct Options {
   std::string flown_law;     // the controller file's law (its controller.name; a flight's)
   std::string flown;         // the vehicle it flies (vehicleOfLaw)
   bool no_clamp = false;
-  std::vector<std::string> given;  // the flight-only options given (refused with --formation)
+  std::vector<std::string> given;  // the options given on the command line (refuseFlightOnlyOptions)
 };
 
 // A formation file gives each robot's link and controller and never clamps
@@ -128,8 +128,8 @@ void resolve(const po::variables_map& vm, const std::string& config, Options& o)
     }
     refuseRateFor(o.flown, o.rate, "--rate");
   }
-  for (const char* only : {"link", "no-clamp", "controller", "task"}) {
-    if (vm.count(only) && !vm[only].defaulted()) o.given.push_back(only);
+  for (const auto& option : vm) {
+    if (!option.second.defaulted()) o.given.push_back(option.first);
   }
   if (o.vehicle.empty()) {
     o.vehicle = config + "/vehicles/" + (o.formation.empty() ? o.flown : LawVehicle::name()) + ".yaml";

@@ -318,8 +318,7 @@ void SimNode<Vehicle>::stepAndPublish(const ros::Time& now, bool command_fresh) 
   // The vehicle's half of every loop (vehicle_half.h): a flying vehicle's
   // commands clamped as its driver does (the climb of a take-off or a
   // landing is the node's own), then its model's step.
-  double applied[Vehicle::kInputs];
-  if (!resting) vehicleHalf<Vehicle>(params_, flight_ == Flight::kFlying, U, model_, applied);
+  if (!resting) vehicleHalf<Vehicle>(params_, flight_ == Flight::kFlying, U, model_, U);  // U: as applied
   ++step_;
   // The ground holds the drone while its rotors spin up or it touches down.
   // (In flight there is no ground, as in the study's model, so a flight

@@ -3,8 +3,8 @@
 // formation shapes (KnownShapes) are each a TypeList of entries, each
 // Entry giving a static name(), walked by forEachType (forEachVehicle,
 // forEachLaw, forEachShape). What every list is asked by name is written
-// once here, for any of them: `each` is the list as a callable, e.g.
-// [](auto&& f) { forEachShape(f); }. Host only.
+// once here, for any of them: `each` is the list, a TypeList (KnownShapes())
+// or any callable that calls its argument with each entry. Host only.
 #pragma once
 
 #include <string>
@@ -12,17 +12,21 @@
 
 namespace aurora_common {
 
-// A list's entries, as types.
+// A list's entries, as types; called with f, it calls f(Entry()) for each
+// entry, in its order.
 template <class... T>
 struct TypeList {
   static constexpr int kCount = sizeof...(T);
+  template <class F>
+  void operator()(F&& f) const {
+    const int each[] = {0, (f(T()), 0)...};
+    (void)each;
+  }
 };
 
-// Calls f(Entry()) for each entry of the list, in its order.
 template <class... T, class F>
-void forEachType(TypeList<T...>, F&& f) {
-  const int each[] = {0, (f(T()), 0)...};
-  (void)each;
+void forEachType(TypeList<T...> list, F&& f) {
+  list(f);
 }
 
 // X's place in the list (0, 1, ...; -1 when it is none of its entries).

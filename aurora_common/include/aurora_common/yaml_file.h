@@ -72,13 +72,17 @@ inline YAML::Node loadYamlFile(const std::string& what, const std::string& path)
   return root;
 }
 
-// The word under `top`.`key` of the YAML file at `path` ("" when there is
-// none): what chooses a reader or a vehicle before the file is read in full
-// (a controller file's controller.name, a formation file's formation.shape).
-inline std::string yamlFileWord(const std::string& what, const std::string& path, const char* top, const char* key) {
-  const YAML::Node root = loadYamlFile(what, path);
+// The word under `top`.`key` of a YAML root ("" when there is none): what
+// chooses a reader or a vehicle (a controller file's controller.name, a
+// formation file's formation.shape).
+inline std::string yamlWord(const YAML::Node& root, const char* top, const char* key) {
   const YAML::Node word = root.IsMap() && root[top] && root[top].IsMap() ? root[top][key] : YAML::Node();
   return word && word.IsScalar() ? word.as<std::string>() : "";
+}
+
+// The same of the YAML file at `path`, before the file is read in full.
+inline std::string yamlFileWord(const std::string& what, const std::string& path, const char* top, const char* key) {
+  return yamlWord(loadYamlFile(what, path), top, key);
 }
 
 }  // namespace aurora_common

@@ -61,8 +61,7 @@ FormationSetup<T, Shape, Data> makeFormationSetup(const SweepSpec& spec, const S
 // spec.law (the one place a sweep's law is chosen by name).
 template <class F>
 void withSweepLaw(const SweepSpec& spec, F&& f) {
-  const auto each = [](auto&& g) { aurora_control::forEachLaw(g); };
-  if (!aurora_common::withEntryNamed(each, spec.controller, f)) aurora_control::withLaw(spec.law, f);  // spec.law's
+  if (!aurora_common::withEntryNamed(aurora_control::KnownLaws(), spec.controller, f)) aurora_control::withLaw(spec.law, f);  // spec.law's
 }
 
 // Calls f(T(), capacity, law): the sweep's precision, history capacity

@@ -23,9 +23,7 @@ struct FormationDocument {
 
 inline FormationDocument loadFormationDocument(const std::string& path, const std::string& config_dir) {
   FormationDocument d{path, config_dir, aurora_common::loadYamlFile("formation file", path), ""};
-  const YAML::Node top = d.root.IsMap() ? d.root["formation"] : YAML::Node();
-  const YAML::Node word = top && top.IsMap() ? top["shape"] : YAML::Node();
-  if (word && word.IsScalar()) d.shape = word.as<std::string>();
+  d.shape = aurora_common::yamlWord(d.root, "formation", "shape");
   return d;
 }
 

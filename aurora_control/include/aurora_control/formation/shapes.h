@@ -43,25 +43,19 @@ struct PerShape<Part, aurora_common::TypeList<E...>> {
   using type = std::tuple<Part<E>...>;
 };
 
-// The list as a callable (aurora_common/named_list.h reads it by name).
-struct EachShape {
-  template <class F>
-  void operator()(F&& f) const { forEachShape(f); }
-};
-
 // The shapes' names, comma separated (what a `shape:` accepts).
-inline std::string knownShapeNames() { return aurora_common::entryNames(EachShape()); }
+inline std::string knownShapeNames() { return aurora_common::entryNames(KnownShapes()); }
 
 // Calls f(Entry()) for the shape named `shape`; false when none is.
 template <class F>
 bool withShapeNamed(const std::string& shape, F&& f) {
-  return aurora_common::withEntryNamed(EachShape(), shape, f);
+  return aurora_common::withEntryNamed(KnownShapes(), shape, f);
 }
 
 // Why `shape` is no shape this build knows ("" when it is one), after
 // its key's name: "is missing: accepted ...", "= 'x' is unknown: ...".
 inline std::string unknownShapeRefusal(const std::string& shape) {
-  if (aurora_common::isEntryName(EachShape(), shape)) return "";
+  if (aurora_common::isEntryName(KnownShapes(), shape)) return "";
   if (shape.empty()) return "is missing: accepted " + knownShapeNames();
   return "= '" + shape + "' is unknown: accepted " + knownShapeNames();
 }

@@ -56,11 +56,11 @@ bool withOtherLaw(const std::string& name, F&& f) {
 // Every law's name, comma separated ("pd_saturated, underactuated, ..."),
 // each between `quote`s when given ("'pd_saturated', ...").
 inline std::string knownLawNames(const std::string& quote = "") {
-  return aurora_common::entryNames([](auto&& f) { forEachLaw(f); }, quote);
+  return aurora_common::entryNames(KnownLaws(), quote);
 }
 
 inline bool isKnownLawName(const std::string& name) {
-  return aurora_common::isEntryName([](auto&& f) { forEachLaw(f); }, name);
+  return aurora_common::isEntryName(KnownLaws(), name);
 }
 
 // Each vehicle with the laws that fly it ("ardrone2 for pd_saturated,

@@ -42,18 +42,15 @@ struct VehicleParamsOf<aurora_common::TypeList<V...>> {
   }
   template <class F>
   bool withType(const std::string& type, F&& f) const {
-    bool found = false;
-    aurora_common::forEachType(aurora_common::TypeList<V...>(), [&](auto vehicle) {
-      if (!found && type == vehicle.name()) found = true, f(of<decltype(vehicle)>());
-    });
-    return found;
+    return aurora_common::withEntryNamed(aurora_common::TypeList<V...>(), type,
+                                         [&](auto vehicle) { f(of<decltype(vehicle)>()); });
   }
 };
 using VehicleParamsSet = VehicleParamsOf<KnownVehicles>;
 
 // The names a vehicle file's `type:` accepts, comma separated.
 inline std::string knownVehicleTypes() {
-  return aurora_common::entryNames([](auto&& f) { forEachVehicle(f); });
+  return aurora_common::entryNames(KnownVehicles());
 }
 
 // Calls f(Vehicle()) for the vehicle of `type` (a vehicle file's), else
@@ -62,11 +59,11 @@ inline std::string knownVehicleTypes() {
 // and the fake driver.
 template <class F>
 void withVehicleOfType(const std::string& type, F&& f) {
-  if (!aurora_common::withEntryNamed([](auto&& g) { forEachVehicle(g); }, type, f)) f(Ardrone2());
+  if (!aurora_common::withEntryNamed(KnownVehicles(), type, f)) f(Ardrone2());
 }
 
 inline bool isKnownVehicleType(const std::string& type) {
-  return aurora_common::isEntryName([](auto&& f) { forEachVehicle(f); }, type);
+  return aurora_common::isEntryName(KnownVehicles(), type);
 }
 
 // Empty when a vehicle file of type `type` is one `flown_by` (which flies a
