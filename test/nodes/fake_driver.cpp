@@ -13,7 +13,15 @@
 // ~start [x, y] (m, world frame): where it stands on the ground at first.
 // ~command_latency, ~command_jitter [s]: each cmd_vel takes effect that
 // long after it arrives, plus a uniform 0 .. jitter (the driver's and the
-// radio's delay, which no message declares: what identify must find).
+// radio's delay, which no message declares: what identify must find),
+// counted from the message's receipt (not from when its callback runs).
+// The model steps at its own nominal times t0 + m Ts, caught up to the
+// current time whenever a timer runs (a late callback steps the steps due
+// with the commands in force at their times), so a loaded machine delays
+// the messages, as a real robot's radio would, and not the robot's physics;
+// each step [t - Ts, t] flies the commands in force over it, averaged (a
+// command acts from its due time, not from the model's next step), and a
+// pose between steps lies on the way to the next one (not a staircase).
 // The vehicle is the one of the file loaded under ~vehicle (its type: an
 // AR.Drone 2.0 or a Bebop 2, each with its own model and cmd_vel mapping;
 // or a Pioneer P3-DX behind RosAria: RosAria/cmd_vel, no take-off or
@@ -120,20 +128,38 @@ class FakeDriver {
     m.data = s;
     status_pub_.publish(m);
   }
-  void onCmd(const geometry_msgs::Twist::ConstPtr& msg) {
+  void onCmd(const ros::MessageEvent<geometry_msgs::Twist const>& event) {
     double U[Vehicle::kInputs];
-    Vehicle::fromDriver(twistCommandFromMsg(*msg), U);
+    Vehicle::fromDriver(twistCommandFromMsg(*event.getConstMessage()), U);
     if (!allFinite(U, Vehicle::kInputs)) return;
     Pending p;
     for (int i = 0; i < Vehicle::kInputs; ++i) p.U[i] = Vehicle::limitInput(params_, i, U[i]);
     std::uniform_real_distribution<double> late(0.0, jitter_);
-    p.due = ros::Time::now() + ros::Duration(latency_ + (jitter_ > 0.0 ? late(rng_) : 0.0));
+    p.due = event.getReceiptTime() + ros::Duration(latency_ + (jitter_ > 0.0 ? late(rng_) : 0.0));
     pending_.push_back(p);
   }
-  // The commands whose latency has passed take effect in the order they
-  // arrived (a driver's queue: never out of order), the last one stays.
-  void takeDueCommands(const ros::Time& now) {
-    while (!pending_.empty() && pending_.front().due <= now) {
+  // The commands in force over [from, to], averaged over it: each takes
+  // effect at its due time, in the order they arrived (a driver's queue:
+  // never out of order), the last one stays; `newest` the due time of the
+  // last one in force by `to`. (A real robot answers a command when it takes
+  // effect, not at the model's next step: the average is one Euler step's
+  // exact share of each.)
+  void averageOver(ros::Time from, const ros::Time& to, double U[], ros::Time& newest) const {
+    const double span = (to - from).toSec();
+    const double* held = cmd_;
+    newest = cmd_time_;
+    std::fill(U, U + Vehicle::kInputs, 0.0);
+    for (const Pending& p : pending_) {
+      if (p.due > to) break;
+      const ros::Time at = std::max(p.due, from);
+      for (int i = 0; i < Vehicle::kInputs; ++i) U[i] += held[i] * (at - from).toSec();
+      held = p.U, from = at, newest = p.due;
+    }
+    for (int i = 0; i < Vehicle::kInputs; ++i) U[i] = (U[i] + held[i] * (to - from).toSec()) / span;
+  }
+  // The commands due by t become the one in force.
+  void takeDueCommands(const ros::Time& t) {
+    while (!pending_.empty() && pending_.front().due <= t) {
       std::copy(pending_.front().U, pending_.front().U + Vehicle::kInputs, cmd_);
       cmd_time_ = pending_.front().due;
       pending_.pop_front();
@@ -173,60 +199,92 @@ class FakeDriver {
   }
 
   // The model steps on its own clock (time passes at the real rate whatever
-  // the command rate); the newest command applies at each step.
-  void onStep(const ros::TimerEvent&) {
-    double U[Vehicle::kInputs] = {};
-    takeDueCommands(ros::Time::now());
-    switch (phase_) {
-      case Phase::kLanded:
-        break;
-      case Phase::kTakingOff:  // the drivers' automatic take-off: climb, then hover
-        U[Profile::kClimbInput] = 0.5;
-        if (model_.X[kZ] >= 0.75) phase_ = Phase::kFlying, status("flying");
-        break;
-      case Phase::kFlying:  // cmd_vel, or hover when it stops (bebop: 0.2 s)
-        if ((ros::Time::now() - cmd_time_).toSec() <= 0.2) {
-          for (int i = 0; i < Vehicle::kInputs; ++i) U[i] = cmd_[i];
-        }
-        break;
-      case Phase::kLanding:
-        U[Profile::kClimbInput] = -0.5;
-        break;
+  // the command rate).
+  void onStep(const ros::TimerEvent&) { advanceTo(ros::Time::now()); }
+
+  // Every step whose nominal time has come, each at that time.
+  void advanceTo(const ros::Time& now) {
+    if (next_step_time_.isZero()) next_step_time_ = last_step_time_ = now;
+    while (next_step_time_ <= now) {
+      stepAt(next_step_time_);
+      next_step_time_ += ros::Duration(params_.Ts);
     }
+  }
+
+  // What the robot flies over [from, to] in its phase: the drivers'
+  // automatic climb or descent, the commands in force, or a hover when they
+  // stop (bebop: 0.2 s).
+  void flownOver(const ros::Time& from, const ros::Time& to, double U[]) const {
+    std::fill(U, U + Vehicle::kInputs, 0.0);
+    if (phase_ == Phase::kTakingOff) U[Profile::kClimbInput] = 0.5;
+    if (phase_ == Phase::kLanding) U[Profile::kClimbInput] = -0.5;
+    if (phase_ != Phase::kFlying) return;
+    ros::Time newest;
+    averageOver(from, to, U, newest);
+    if ((to - newest).toSec() > 0.2) std::fill(U, U + Vehicle::kInputs, 0.0);
+  }
+
+  // One model step of `model` with U, on the ground at most.
+  void fly(typename Vehicle::template State<double>& model, const double U[]) const {
+    Vehicle::step(params_, model, U);
+    if (model.X[kZ] < 0.0) {  // the ground
+      model.X[kZ] = 0.0;
+      if (model.X[kVz] < 0.0) model.X[kVz] = 0.0;
+    }
+  }
+
+  // The step [t - Ts, t].
+  void stepAt(const ros::Time& t) {
+    double U[Vehicle::kInputs];
+    flownOver(t - ros::Duration(params_.Ts), t, U);
+    takeDueCommands(t);
+    if (phase_ == Phase::kTakingOff && model_.X[kZ] >= 0.75) phase_ = Phase::kFlying, status("flying");
     if (phase_ != Phase::kLanded) {
-      Vehicle::step(params_, model_, U);
-      if (model_.X[kZ] < 0.0) {  // the ground
-        model_.X[kZ] = 0.0;
-        if (model_.X[kVz] < 0.0) model_.X[kVz] = 0.0;
-      }
+      fly(model_, U);
       if (phase_ == Phase::kLanding && model_.X[kZ] <= 0.05) {
         phase_ = Phase::kLanded;
         touchDown();
         status("landed");
       }
     }
-    last_step_time_ = ros::Time::now();
+    last_step_time_ = t;
     aurora_msgs::DroneState s;
-    s.header.stamp = last_step_time_;
+    s.header.stamp = t;
     s.header.frame_id = "world";
     s.step = step_++;
     stateToMsg(model_.X, s);
     true_pub_.publish(s);
   }
 
+  // The pose at `now`, between steps: from the last step's toward the
+  // next one's, flown with the commands in force so far (a real robot moves
+  // between the model's steps, so the mocap stream is continuous, not a
+  // staircase; a step of a fraction of Ts is no model's: the AR.Drone's
+  // inner loops step at Ts).
+  void poseNow(const ros::Time& now, double X[]) const {
+    std::copy(model_.X, model_.X + kStateSize, X);
+    const double dt = (now - last_step_time_).toSec();
+    if (phase_ == Phase::kLanded || dt <= 0.0) return;
+    auto next = model_;
+    double U[Vehicle::kInputs];
+    flownOver(last_step_time_, now, U);
+    fly(next, U);
+    const double share = std::min(dt / params_.Ts, 1.0);
+    for (int i = 0; i < 6; ++i) {
+      const double change = next.X[i] - X[i];
+      X[i] += share * (i >= kRoll ? std::remainder(change, 2.0 * kPi) : change);
+    }
+  }
+
   void onMocap(const ros::TimerEvent&) {
     const ros::Time now = ros::Time::now();
+    advanceTo(now);  // the pose of now, whichever timer ran late
     if (now < paused_until_) return;
     std::uniform_real_distribution<double> u(0.0, 1.0);
     std::normal_distribution<double> np(0.0, noise_pos_), na(0.0, noise_ang_);
     if (u(rng_) < dropout_) return;
-    // A real drone moves between the model's steps: the pose advances with
-    // the current velocities since the last step (what the model's next
-    // integration does), so the mocap stream is smooth, not a 30 Hz staircase.
-    const double dt = phase_ == Phase::kLanded ? 0.0 : std::min((now - last_step_time_).toSec(), params_.Ts);
     double X[kStateSize];
-    for (int i = 0; i < kStateSize; ++i) X[i] = model_.X[i];
-    for (int i = 0; i < 6; ++i) X[i] += X[i + 6] * dt;
+    poseNow(now, X);
     double body[3];  // where the markers are: a Pioneer's centre, behind its control point
     Profile::bodyPosition(params_, X, body);
     tf2::Quaternion q;
@@ -265,7 +323,7 @@ class FakeDriver {
   };
   std::deque<Pending> pending_;  // commands received, in arrival order, not yet in effect
   double latency_ = 0.0, jitter_ = 0.0;
-  ros::Time cmd_time_, paused_until_, last_step_time_;
+  ros::Time cmd_time_, paused_until_, last_step_time_, next_step_time_;
   unsigned long step_ = 0;
   std::mt19937 rng_;
   double noise_pos_, noise_ang_, dropout_, reorder_;

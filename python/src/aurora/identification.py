@@ -26,6 +26,8 @@ from aurora import report
 
 # Fewer state steps than this identify nothing (10 s at 30 Hz).
 MIN_STEPS = 300
+# Control.mode in the supervisor's take-off phase (its first word).
+TAKEOFF_MODE = "takeoff"
 
 
 def open_loop_flyer(vehicle, vehicle_file):
@@ -40,19 +42,29 @@ def ardrone_fit(nominal_path, nominal):
     """The AR.Drone's output-error fit (eq. I7) around its nominal file."""
     from aurora import _core
     values = {key: key_value(nominal, key) for key in core.ARDRONE_FACTORS}
-    return lambda X, U, Ts, delay, window: core.fit_ardrone(
+    return lambda X, U, Ts, delay, window, first=0: core.fit_ardrone(
         open_loop_flyer("ardrone2", nominal_path), _core.vehicle_factor_names("ardrone2"), values, X, U, Ts, delay,
         window)
 
 
-# What a vehicle's model state holds beyond the recorded 12-state, from the
-# recording (the Pioneer's speeds), for its open-loop flights.
-MODEL_STATE = {"pioneer3dx": core.pioneer_state}
+class Model:
+    """How identify fits one vehicle's model: fit(nominal_path, nominal) gives
+    fit(X, U, Ts, delay, window, first) (eqs. I3-I7); state(X, Ts), its
+    model state from the recorded 12-state (the Pioneer's speeds too), for
+    the open-loop flights; phases, the grid phases it tries (I4b)."""
 
-# The vehicles whose model this tool fits: fit(X, U, Ts, delay, window) of
-# the vehicle's nominal file (its path and content).
-MODELS = {"bebop2": lambda path, nominal: core.fit_bebop2, "pioneer3dx": lambda path, nominal: core.fit_pioneer,
-          "ardrone2": ardrone_fit}
+    def __init__(self, fit, state=None, phases=None):
+        self.fit = fit
+        self.state = state or (lambda X, Ts: X)
+        self.phases = np.arange(core.GRID_PHASES) / core.GRID_PHASES if phases is None else phases
+
+
+# The vehicles whose model this tool fits, one entry each. The AR.Drone's
+# output-error fit tries only the states' own grid phase (each phase costs a
+# fit per delay).
+MODELS = {"bebop2": Model(lambda path, nominal: core.fit_bebop2),
+          "pioneer3dx": Model(lambda path, nominal: core.fit_pioneer, state=core.pioneer_state),
+          "ardrone2": Model(ardrone_fit, phases=[0.0])}
 
 
 class IdentifyError(Exception):
@@ -120,6 +132,9 @@ def loop_arrays(d):
         "pending": np.array([c.delay_pending for c in controls], dtype=np.int64),
         "arrived": np.array([c.state_arrived for c in controls], dtype=bool),
         "law_ran": np.array([c.law_ran for c in controls], dtype=bool),
+        # The supervisor's take-off phase (flight_supervisor.h): the law holds the start while a real drone's
+        # driver climbs by itself, so the commands sent are not what it flies.
+        "taking_off": np.array([c.mode.startswith(TAKEOFF_MODE) for c in controls], dtype=bool),
         "sent": np.array([list(c.command_sent)[:len(first.command_names)] for c in controls], dtype=float),
         "control_stamps": np.array([c.header.stamp.to_sec() for c in controls]),
     }
@@ -181,10 +196,11 @@ def commands_by_step(loop):
 
 def contiguous(loop):
     """The longest run of consecutive state steps (the differences need them)
-    while the law flew the robot (before, a real drone's driver takes off by
-    itself and the commands sent are not what it flies)."""
+    while the law flew the robot past its take-off (until then, a real
+    drone's driver takes off by itself and the commands sent are not what it
+    flies)."""
     s = loop["state_steps"]
-    flown = np.isin(s, loop["control_steps"][loop["law_ran"]])
+    flown = np.isin(s, loop["control_steps"][loop["law_ran"] & ~loop["taking_off"]])
     breaks = np.flatnonzero((np.diff(s) != 1) | ~flown[1:] | ~flown[:-1])
     starts = np.concatenate([[0], breaks + 1])
     ends = np.concatenate([breaks + 1, [len(s)]])
@@ -201,21 +217,43 @@ def known_vehicle(loop):
     return vehicle
 
 
+def series_of(loop, run, phases):
+    """The run's states and commands on uniform grids (eq. I4b), one per
+    grid phase: [(phase, X, U)]; a run whose stamps are already on one
+    (lockstep) as it is, its phase None."""
+    stamps = loop["state_stamps"][run]
+    if core.on_uniform_grid(loop["state_steps"][run], stamps, loop["Ts"]):
+        return [(None, loop["X"][run], commands_by_step(loop)[run])]
+    series = []
+    for phase in phases:
+        grid = core.time_grid(stamps, loop["Ts"], phase)
+        series.append((phase, core.states_on_grid(stamps, loop["X"][run], grid),
+                       core.commands_on_grid(grid, loop["Ts"], loop["control_stamps"], loop["sent"])))
+    return series
+
+
 def fitted_model(loop, max_delay, window, nominal_path, nominal):
-    """The vehicle's model (eqs. I3-I7) at the best actuation delay, around
-    its nominal file (its path and content)."""
+    """The vehicle's model (eqs. I3-I7) at the best actuation delay (and,
+    on a realtime loop, grid phase: eq. I4b), around its nominal file (its
+    path and content)."""
     vehicle = known_vehicle(loop)
     run = contiguous(loop)
-    X, U = loop["X"][run], commands_by_step(loop)[run]
-    if len(X) < MIN_STEPS:
+    steps = run.stop - run.start
+    if steps < MIN_STEPS:
         raise IdentifyError("the bag's longest run of consecutive states is %d steps (%.1f s): identify needs %d "
-                            "(%.0f s); record a longer flight" % (len(X), len(X) * loop["Ts"], MIN_STEPS,
+                            "(%.0f s); record a longer flight" % (steps, steps * loop["Ts"], MIN_STEPS,
                                                                    MIN_STEPS * loop["Ts"]))
-    fit = MODELS[vehicle](nominal_path, nominal)
-    delay, tried = core.best_delay(lambda d: fit(X, U, loop["Ts"], d, window), max_delay)
+    fit = MODELS[vehicle].fit(nominal_path, nominal)
+    best = None
+    for phase, X, U in series_of(loop, run, MODELS[vehicle].phases):
+        delay, tried = core.best_delay(lambda d: fit(X, U, loop["Ts"], d, window, max_delay), max_delay)
+        if best is None or tried[delay]["rss"] < best[1][delay]["rss"]:
+            best = (delay, tried, phase, X, U)
+    delay, tried, phase, X, U = best
     result = tried[delay]
     result["actuation_delay_samples"] = delay
     result["residual_by_delay"] = {d: tried[d]["rss"] for d in tried}
+    result["grid_phase"] = phase
     result["series"] = (X, U)
     result["Ts"] = loop["Ts"]
     return result
@@ -314,6 +352,7 @@ def summary(bag, name, loop, max_delay, window):
         j["open_loop_rms"] = {which: r["rms"] for which, r in model["open_loop"]["models"].items()}
         j["actuation_delay_samples"] = model["actuation_delay_samples"]  # measured by a fit that fits
         j["residual_by_actuation_delay"] = {str(d): r for d, r in model["residual_by_delay"].items()}
+        j["grid_phase"] = model["grid_phase"]  # eq. I4b: null where the states were on a uniform grid
     else:
         j["model"] = "nothing identifiable: " + "; ".join(
             "%s: %s" % (k, p["why_not"]) for k, p in j["parameters"].items())
@@ -341,7 +380,7 @@ def open_loop_comparison(vehicle, nominal_path, identified, model):
     X, U = model["series"]
     Ua = core.applied(U, model["actuation_delay_samples"])
     starts = core.segment_starts(len(X))
-    X_model = MODEL_STATE[vehicle](X, model["Ts"]) if vehicle in MODEL_STATE else X
+    X_model = MODELS[vehicle].state(X, model["Ts"])
     measured = core.segment_poses(X, starts)
     with tempfile.NamedTemporaryFile("w", suffix=".yaml") as f:
         yaml.safe_dump(identified, f)
@@ -438,6 +477,8 @@ def markdown(j):
              "| feedback delay (median) | %d samples |" % j["feedback_delay_samples"],
              "| actuation delay (best fit) | %s |" % ("%d samples" % j["actuation_delay_samples"]
                                                      if j["actuation_delay_samples"] is not None else "not measured"),
+             "| states' grid (I4b) | %s |" % ("as recorded (stamps on a uniform grid)" if j.get("grid_phase") is None
+                                               else "resampled from the stamps, phase %.1f of Ts" % j["grid_phase"]),
              "| state stream | %.2f Hz, %d lost of %d steps (longest burst %d) |" % (
                  j["state_stream"]["rate_hz"] or 0.0, j["state_stream"]["lost"], j["state_stream"]["steps_spanned"],
                  j["state_stream"]["longest_burst"]),

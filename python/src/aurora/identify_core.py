@@ -9,7 +9,8 @@ returns plain values; nothing reads a clock or a file.
   stamps (eq. I2).
 - The Bebop 2's model (docs/bebop2.md) is linear in its input gains and
   damping: a = F(psi) Ku U - Kv v, least squares per axis (eq. I3) over
-  velocities and accelerations differenced from positions (eq. I4), the
+  velocities and accelerations differenced from positions (eq. I4) on a
+  uniform time grid (a realtime loop's states resampled there, eq. I4b), the
   actuation delay the whole samples that fit best (eq. I5).
 - The Pioneer's theta1..theta6 enter its commands linearly: least squares
   (eq. I6).
@@ -104,6 +105,66 @@ def differences(positions, Ts):
     return v[:-1], a
 
 
+# Stamps within this of the uniform grid [s] are on it (a lockstep bag's, to the nanosecond).
+ON_GRID = 1e-6
+# Grid phases tried on a realtime loop's states (eq. I4b): tenths of a sample.
+GRID_PHASES = 10
+
+
+def on_uniform_grid(steps, stamps, Ts):
+    """Eq. I4b: whether each state's stamp is its step's time on one
+    uniform grid of Ts (a lockstep or offline flight's: its states are
+    taken as they are)."""
+    steps = np.asarray(steps, dtype=np.int64)
+    stamps = np.asarray(stamps, dtype=float)
+    return bool(np.all(np.abs(stamps - stamps[0] - (steps - steps[0]) * Ts) < ON_GRID))
+
+
+def time_grid(stamps, Ts, phase):
+    """Eq. I4b: the uniform grid of Ts from the first stamp plus `phase`
+    (a fraction of Ts) up to the last stamp."""
+    stamps = np.asarray(stamps, dtype=float)
+    n = int(np.floor((stamps[-1] - stamps[0] - phase * Ts) / Ts)) + 1
+    return stamps[0] + (phase + np.arange(max(n, 0))) * Ts
+
+
+ANGLES = (3, 4, 5)  # the state's roll, pitch, yaw: interpolated unwrapped, wrapped again
+
+
+def states_on_grid(stamps, X, grid):
+    """Eq. I4b: the states at the grid's times, each column interpolated
+    linearly between the recorded states' stamps (angles unwrapped)."""
+    X = np.asarray(X, dtype=float)
+    columns = []
+    for i in range(X.shape[1]):
+        if i in ANGLES:
+            columns.append(np.angle(np.exp(1j * np.interp(grid, stamps, np.unwrap(X[:, i])))))
+        else:
+            columns.append(np.interp(grid, stamps, X[:, i]))
+    return np.column_stack(columns)
+
+
+def commands_on_grid(grid, Ts, command_stamps, sent):
+    """Eq. I4b: row k, the commands in force over the grid's step [grid[k],
+    grid[k] + Ts], averaged over it (each from its stamp until the next;
+    zero before the first): what a vehicle flies over the step when each
+    command acts at once. Shifting these rows by j samples (I5) is the
+    commands in force j Ts earlier; on a lockstep loop's grid, row k is
+    step k's command."""
+    order = np.argsort(command_stamps, kind="stable")
+    stamps, sent = np.asarray(command_stamps, dtype=float)[order], np.asarray(sent, dtype=float)[order]
+    # The integral of the held commands at each stamp (exact: they are constant between stamps).
+    integral = np.vstack([np.zeros((1, sent.shape[1])), np.cumsum(sent[:-1] * np.diff(stamps)[:, None], axis=0)])
+
+    def integral_at(t):
+        i = np.searchsorted(stamps, t, side="right") - 1
+        held = np.where(i[:, None] >= 0, sent[np.maximum(i, 0)], 0.0)
+        return np.where(i[:, None] >= 0, integral[np.maximum(i, 0)] + held * (t - stamps[np.maximum(i, 0)])[:, None],
+                        0.0)
+    grid = np.asarray(grid, dtype=float)
+    return (integral_at(grid + Ts) - integral_at(grid)) / Ts
+
+
 def windowed(A, y, window):
     """Eq. I4's sums over blocks of `window` steps: sum a_k = (v_(k+N) -
     v_k) / Ts telescopes, so a position's noise enters each block twice
@@ -131,16 +192,18 @@ def least_squares(A, y):
     return theta, stderr, rms, (rms / spread if spread > 0 else float("inf")), rank
 
 
-def bebop2_rows(X, U, Ts, delay, window=1):
+def bebop2_rows(X, U, Ts, delay, window=1, first=0):
     """Eq. I3's regressors and outputs of a Bebop 2 flight: states X (n x
     12, docs/bebop2.md), the commands sent U (n x 4, row k sent at step k),
     the actuation delay `delay` [samples]: step k applies U_(k - delay).
     Returns {axis: (A, y)} for 'xy' (Ku_x, Ku_y, Kv_x, Kv_y), 'z', 'yaw',
-    each summed over blocks of `window` steps (eq. I4), and the commands."""
+    each summed over blocks of `window` steps (eq. I4) from step `first`
+    on (at least `delay`: I5 compares the delays on the same steps), and the
+    commands."""
     p = np.column_stack([X[:, 0], X[:, 1], X[:, 2], np.unwrap(X[:, 5])])
     v, a = differences(p, Ts)                       # k = 1 .. n - 2
     k = np.arange(1, len(X) - 1)
-    keep = k - delay >= 0
+    keep = k >= max(delay, first)
     k, v, a = k[keep], v[keep], a[keep]
     u = U[k - delay]
     psi = p[k, 3]
@@ -189,9 +252,10 @@ def fit_rows(rows, axes, spread):
     return {"parameters": params, "fit": fit, "rss": rss, "spread": spread}
 
 
-def fit_bebop2(X, U, Ts, delay, window=1):
-    """The Bebop 2's eight parameters at actuation delay `delay` (eq. I3)."""
-    rows, u = bebop2_rows(X, U, Ts, delay, window)
+def fit_bebop2(X, U, Ts, delay, window=1, first=0):
+    """The Bebop 2's eight parameters at actuation delay `delay` (eq. I3)
+    over the steps from `first` on."""
+    rows, u = bebop2_rows(X, U, Ts, delay, window, first)
     spread = {"x": float(np.std(u[:, 0])), "y": float(np.std(u[:, 1])), "z": float(np.std(u[:, 2])),
               "yaw": float(np.std(u[:, 3]))}
     return fit_rows(rows, BEBOP2_AXES, spread)
@@ -208,14 +272,13 @@ def pioneer_speeds(X, Ts):
     return (d[:, 0] * np.cos(psi[:-1]) + d[:, 1] * np.sin(psi[:-1])) / Ts, d[:, 2] / Ts
 
 
-def pioneer_rows(X, U, Ts, delay, window=1):
+def pioneer_rows(X, U, Ts, delay, window=1, first=0):
     """Eq. I6's regressors of a Pioneer P3-DX flight (docs/pioneer3dx.md):
     its forward speed and turn rate (pioneer_speeds), their differences, and
     the commands sent U (u_ref, omega_ref) `delay` samples before."""
     u_next, w_next = pioneer_speeds(X, Ts)  # u_(j+1), omega_(j+1)
     k = np.arange(1, len(X) - 1)
-    keep = k - delay >= 0
-    k = k[keep]
+    k = k[k >= max(delay, first)]  # from step `first` on, as bebop2_rows
     u, w = u_next[k - 1], w_next[k - 1]                    # u_k, omega_k
     du, dw = (u_next[k] - u) / Ts, (w_next[k] - w) / Ts    # their steps' rates
     cmd = U[k - delay]
@@ -233,11 +296,11 @@ def pioneer_state(X, Ts):
     return np.column_stack([X[:, :12], np.concatenate([[0.0], u]), np.concatenate([[0.0], w])])
 
 
-def fit_pioneer(X, U, Ts, delay, window=1):
+def fit_pioneer(X, U, Ts, delay, window=1, first=0):
     """The Pioneer's theta1..theta6 at actuation delay `delay` (eq. I6):
     u_ref = theta1 du + theta4 u - theta3 omega^2, omega_ref = theta2 domega +
     theta5 u omega + theta6 omega."""
-    rows, cmd = pioneer_rows(X, U, Ts, delay, window)
+    rows, cmd = pioneer_rows(X, U, Ts, delay, window, first)
     return fit_rows(rows, PIONEER_AXES, {"u": float(np.std(cmd[:, 0])), "omega": float(np.std(cmd[:, 1]))})
 
 
@@ -328,13 +391,14 @@ def fit_output_error(fly, names, free, X, U, delay, segment=SEGMENT, forced=FORC
             "rss": float(2.0 * r.cost)}
 
 
-def fit_ardrone(fly, names, nominal, X, U, Ts, delay, window=1):
+def fit_ardrone(fly, names, nominal, X, U, Ts, delay, window=1, first=0):
     """The AR.Drone's factors of ARDRONE_FACTORS at actuation delay `delay`
     (eq. I7), as the other fits give theirs: each parameter's value and
     standard error (the factor times its `nominal` value), each pose's fit,
     the commands' spread. (`Ts` and `window` are the linear fits'; the
     model steps at its vehicle file's Ts, and a segment's open-loop flight
-    averages noise as eq. I4's blocks do.)"""
+    averages noise as eq. I4's blocks do; its segments start after FORCED
+    steps whatever the delay, so `first` is the linear fits'.)"""
     free = [f for f, _ in ARDRONE_FACTORS.values()]
     r = fit_output_error(fly, names, free, X, U, delay)
     params = {key: (r["factors"][f][0] * nominal[key], r["factors"][f][1] * nominal[key])
