@@ -81,7 +81,7 @@ bool parse(int argc, char** argv, Options& o) {
       ("delay", po::value(&o.delays)->multitoken()->composing(), "feedback delay [samples of Ts], 0 to 2047 (limits.h); with --formation one per robot (default: the file's)")
       ("no-clamp", po::bool_switch(&o.no_clamp), "do not clamp the law's commands (an AR.Drone's sim still does, as its driver; a Bebop is clamped nowhere; refused for the Pioneer, whose laws saturate)")
       ("formation", po::value(&o.formation), ("formation YAML or a shipped NAME (config/formations/*.yaml, docs/formation.md; shapes: " + knownShapeNames() + "): fly its robots and formation layer instead of --controller and --task").c_str())
-      ("law", po::value(&o.law), ("with --formation, a triangle's law instead of its file's: " + triangleLawNames() + " (docs/formation.md)").c_str())
+      ("law", po::value(&o.law), ("with --formation, the shape's law instead of its file's, for a shape with laws of its own (" + shapeLawNames() + "; docs/formation.md)").c_str())
       ("link", po::value(&o.link), "link YAML or a shipped NAME (config/links/*.yaml, docs/links.md): jitter, losses, a command-path delay; its uplink delay unless --delay is given")
       ("csv", po::value(&o.csv), "write one row per step k = 0..N at round-trip precision: step, t, the vehicle's state after k model steps (x, y, z, phi, theta, psi, dx, dy, dz, dphi, dtheta, dpsi; the Pioneer also u, omega), its commands u1..uN applied at step k (model order), the reference of step k and the tracking error (with --formation: each robot's state and commands, Q and Qd; docs/formation.md)");
   po::variables_map vm;
@@ -92,11 +92,11 @@ bool parse(int argc, char** argv, Options& o) {
   }
   po::notify(vm);
   if (o.formation.empty() && vm.count("law")) {
-    throw ConfigError("--law " + o.law + " is refused without --formation: it chooses a triangle's law; a flight's law "
+    throw ConfigError("--law " + o.law + " is refused without --formation: it chooses a formation shape's law; a flight's law "
                       "is its --controller file's");
   }
   if (vm.count("law") && o.law.empty()) {
-    throw ConfigError("--law '' is refused: give a triangle law's name (" + triangleLawNames() + "), or leave --law "
+    throw ConfigError("--law '' is refused: give a shape law's name (" + shapeLawNames() + "), or leave --law "
                       "out to fly the formation file's");
   }
   if (o.formation.empty() && o.delays.size() > 1) {

@@ -503,7 +503,7 @@ class FormationAndLinkArgumentsTest(unittest.TestCase):
         self.refused(["--formation", "triangle_kinematic", "--law", "NSB"], "--law = 'NSB' is not a triangle law")
         self.refused(["--formation", "line_lemniscate", "--law", "N"], "--law is refused for a formation of shape 'line'")
         self.refused(["--law", "N"], "--law N is refused without --formation")
-        self.refused(["--formation", "triangle_kinematic", "--law", ""], "--law '' is refused: give a triangle law's name")
+        self.refused(["--formation", "triangle_kinematic", "--law", ""], "--law '' is refused: give a shape law's name (triangle: ")
 
     def test_a_compensator_period_longer_than_the_task_is_refused(self):
         """Issue 51 (8): --rate 1e-9 ran the law once and held its command for the whole task."""

@@ -13,22 +13,26 @@
 
 #include "sweep_options.h"
 
+#include "aurora_control/formation/shapes.h"
+
 namespace po = boost::program_options;
 
 namespace aurora_sweep {
 
 namespace {
 
-const char* kAbout =
-    "usage: sweep --config FILE|NAME --out DIR [options]\n"
-    "\n"
-    "Runs every combination of a sweep file (a law's gains x delay x model factors x\n"
-    "link values, on any task; or a formation's robots' delays x formation gains x link\n"
-    "values (a triangle's law) with `formation:` (the two-drone line, AuRoRA's UAV-UGV\n"
-    "line, its triangle); a grid, a sampling design or a points file) and writes\n"
-    "DIR/results.csv (one row per combination), DIR/summary.json and DIR/*.png.\n"
-    "\n"
-    "options";
+// The shapes' names come from their list (aurora_control/formation/shapes.h).
+std::string about() {
+  return "usage: sweep --config FILE|NAME --out DIR [options]\n"
+         "\n"
+         "Runs every combination of a sweep file (a law's gains x delay x model factors x\n"
+         "link values, on any task; or a formation's robots' delays x formation gains x link\n"
+         "values (a shape's law) with `formation:` (" + aurora_control::knownShapeNames() + "); a\n"
+         "grid, a sampling design or a points file) and writes DIR/results.csv (one row per\n"
+         "combination), DIR/summary.json and DIR/*.png.\n"
+         "\n"
+         "options";
+}
 
 const char* kNotes =
     "\n"
@@ -41,7 +45,7 @@ struct Numbers {
 };
 
 po::options_description describe(Options& o, Numbers& n) {
-  po::options_description d(kAbout, 100, 50);
+  po::options_description d(about(), 100, 50);
   d.add_options()
       ("config", po::value(&o.config)->value_name("FILE"),
        "sweep file (YAML), or a shipped NAME (config/sweeps/NAME.yaml), e.g. positioning_delay (the thesis "

@@ -10,40 +10,6 @@ namespace aurora_sweep {
 
 namespace {
 
-// Each shape's file as the sweep flies it: an overload per entry of the
-// shapes' list (shapes.h), chosen by its file's type, setting the run of
-// its entry (SweepSpec::run) and what the sweep's records name.
-//
-// The two-drone line's file (shape: line) with the sweep's vehicle.
-void readShape(const aurora_control::YamlReader&, const std::string&, const aurora_control::FormationFile& f,
-               SweepSpec& spec) {
-  auto& run = spec.run<aurora_control::LineShapeEntry>() = aurora_control::formationRun(f, spec.ardrone());
-  spec.formation_duration = run.reference.duration;
-  spec.law = f.drones[0].controller.law;
-  spec.controller = aurora_sweep::lawName(spec.law);
-}
-
-// AuRoRA's UAV-UGV line (shape: uav_ugv_line): a Pioneer and an AR.Drone.
-void readShape(const aurora_control::YamlReader&, const std::string&, const aurora_control::UavUgvLineSetup& s,
-               SweepSpec& spec) {
-  spec.run<aurora_control::UavUgvShapeEntry>() = aurora_control::uavUgvRun(s);
-  spec.formation_duration = s.duration;
-  spec.controller = "pioneer_dynamic + underactuated";
-}
-
-// AuRoRA's triangle (shape: triangle) of three flying AR.Drones.
-void readShape(const aurora_control::YamlReader& r, const std::string& file, const aurora_control::TriangleSetup& s,
-               SweepSpec& spec) {
-  if (s.kinematic) {
-    r.fail("sweep.formation", "= '" + file + "' has kinematic robots (no formation.robots.vehicle): a sweep flies "
-                              "robots with a law; give its robots a vehicle (config/formations/triangle_ardrones.yaml)");
-  }
-  spec.run<aurora_control::TriangleShapeEntry>() = aurora_control::triangleRun<aurora_control::TriangleDroneLaw>(s);
-  spec.formation_duration = s.duration;
-  spec.law = aurora_control::LawType::kUnderactuated;
-  spec.controller = aurora_sweep::lawName(spec.law);
-}
-
 // A sweep's robots are simulated: the latency a predictor's horizon stands
 // for on a real robot is their links' (docs/predictor.md); their predictors'
 // rings are twice the sweep's history, which a horizon would pass.
@@ -90,9 +56,17 @@ void readSweepFormation(const aurora_control::YamlReader& r, const YAML::Node& s
                                               "' gives it (per drone; docs/formation.md, \"Formation sweeps\")");
     }
   }
+  // The shape's file as the sweep flies it: its entry's run (SweepSpec::run)
+  // and what the sweep's records name (shapes.h's entries, sweepFacts).
   aurora_control::withFormationFile(file, config_dir, "", [&](auto entry, const auto& shape_file) {
-    spec.shape = sweepShapeOf<decltype(entry)>();
-    readShape(r, file, shape_file, spec);
+    using Entry = decltype(entry);
+    const aurora_control::ShapeSweepFacts facts = Entry::sweepFacts(shape_file);
+    if (!facts.refusal.empty()) r.fail("sweep.formation", "= '" + file + "' " + facts.refusal);
+    spec.shape = sweepShapeOf<Entry>();
+    spec.run<Entry>() = Entry::sweepRun(shape_file, spec.ardrone());
+    spec.formation_duration = facts.duration;
+    if (facts.names_law) spec.law = facts.law;
+    spec.controller = facts.controller;
   });
   spec.formation_file = file;
   refusePredictorHorizon(r, spec);

@@ -273,6 +273,18 @@ inline FormationFile readFormationFile(const std::string& path, const std::strin
   return readFormationFile(loadFormationDocument(path, config_dir));
 }
 
+// What a sweep of a shape's file records beside its run (aurora_sweep's
+// file reader): how long it flies, the controller its records name, its
+// robots' law where one law type flies them all (`names_law`), and why a
+// sweep refuses the file ("" where it flies it).
+struct ShapeSweepFacts {
+  double duration = 0.0;  // [s]
+  std::string controller;
+  bool names_law = false;
+  LawType law = LawType::kPdSaturated;
+  std::string refusal;
+};
+
 // The two-drone line's entry in the shapes' list (shapes.h): AuRoRA's line
 // of two AR.Drones, their vehicle file the flight's or the node's (the
 // formation file names none).
@@ -289,6 +301,15 @@ struct LineShapeEntry {
   // chosen by the file), the shape its parameters are named by, its laws a
   // sweep may vary (formation_law; none: the file's formation.law).
   using SweepRun = ArdroneLineRun;
+  static SweepRun sweepRun(const File& f, const LawVehicleParams& vehicle);  // the sweep's vehicle's drones
+  static ShapeSweepFacts sweepFacts(const File& f) {
+    ShapeSweepFacts facts;
+    facts.duration = f.reference.duration;
+    facts.names_law = true;
+    facts.law = f.drones[0].controller.law;
+    facts.controller = lawName(facts.law);
+    return facts;
+  }
   template <class F>
   static void withRobotLaw(LawType law, F&& f) { withLaw(law, f); }
   using ParamShape = Shape;
@@ -369,6 +390,10 @@ inline ArdroneLineRun formationRun(const FormationFile& f,
   refuseShortFormation(run.reference.duration, "formation.reference.duration");
   refuseFormationDelays(run, vehicle.Ts, {"formation.drones[0].delay", "formation.drones[1].delay"});
   return run;
+}
+
+inline ArdroneLineRun LineShapeEntry::sweepRun(const File& f, const LawVehicleParams& vehicle) {
+  return formationRun(f, vehicle);
 }
 
 }  // namespace aurora_control

@@ -46,6 +46,17 @@ struct PerShape<Part, aurora_common::TypeList<E...>> {
 // The shapes' names, comma separated (what a `shape:` accepts).
 inline std::string knownShapeNames() { return aurora_common::entryNames(KnownShapes()); }
 
+// The laws of the shapes that have their own (flight's --law): "triangle:
+// N, PD, ...", one shape after another ("; ").
+inline std::string shapeLawNames() {
+  std::string names;
+  forEachShape([&](auto e) {
+    if (!e.lawRefusal().empty()) return;
+    names += (names.empty() ? "" : "; ") + std::string(e.name()) + ": " + e.sweepLawNames();
+  });
+  return names;
+}
+
 // Calls f(Entry()) for the shape named `shape`; false when none is.
 template <class F>
 bool withShapeNamed(const std::string& shape, F&& f) {

@@ -198,6 +198,19 @@ struct TriangleShapeEntry {
   // A sweep's (LineShapeEntry's): three AR.Drones on the underactuated
   // law; its five laws a sweep's formation_law (0 .. 4).
   using SweepRun = TriangleRun<TriangleDroneLaw>;
+  static SweepRun sweepRun(const File& s, const LawVehicleParams&) { return triangleRun<TriangleDroneLaw>(s); }
+  static ShapeSweepFacts sweepFacts(const File& s) {
+    ShapeSweepFacts facts;
+    facts.duration = s.duration;
+    facts.names_law = true;
+    facts.law = LawType::kUnderactuated;
+    facts.controller = lawName(facts.law);
+    if (s.kinematic) {
+      facts.refusal = "has kinematic robots (no formation.robots.vehicle): a sweep flies robots with a law; give its "
+                      "robots a vehicle (config/formations/triangle_ardrones.yaml)";
+    }
+    return facts;
+  }
   template <class F>
   static void withRobotLaw(LawType, F&& f) { f(TriangleDroneLaw()); }
   using ParamShape = Shape;

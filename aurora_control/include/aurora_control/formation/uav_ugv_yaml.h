@@ -143,6 +143,13 @@ struct UavUgvShapeEntry {
   // A sweep's (LineShapeEntry's): its parameters are named as the line's
   // (2 robots, 6 variables of the same names).
   using SweepRun = UavUgvRun;
+  static SweepRun sweepRun(const File& s, const LawVehicleParams&) { return uavUgvRun(s); }
+  static ShapeSweepFacts sweepFacts(const File& s) {
+    ShapeSweepFacts facts;
+    facts.duration = s.duration;
+    facts.controller = "pioneer_dynamic + underactuated";
+    return facts;
+  }
   template <class F>
   static void withRobotLaw(LawType, F&& f) { f(UavUgvRobots()); }
   using ParamShape = LineFormation<double>;
