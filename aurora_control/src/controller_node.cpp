@@ -14,7 +14,7 @@
 #include "aurora_sim/command_mapping.h"
 #include "aurora_sim/ros/conversions.h"
 #include "aurora_sim/ros/vehicle_params.h"
-#include "aurora_sim/vehicle/sim_profile.h"
+#include "aurora_sim/vehicle/vehicle_type.h"  // every vehicle with its SimProfile
 #include "aurora_control/loop/law_settings_yaml.h"
 #include "aurora_control/law/other_laws.h"
 #include "aurora_control/loop/live_settings.h"

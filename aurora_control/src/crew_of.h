@@ -14,7 +14,7 @@
 #include "aurora_control/formation/formation_crew.h"
 #include "aurora_control/formation/formation_flight.h"
 #include "aurora_control/params/limits.h"
-#include "aurora_sim/vehicle/sim_profile.h"
+#include "aurora_sim/vehicle/vehicle_type.h"  // every vehicle with its SimProfile
 
 namespace aurora_control {
 

@@ -10,7 +10,7 @@
 
 #include "aurora_control/law/pioneer_laws.h"
 #include "aurora_control/loop/flight_setup.h"
-#include "aurora_sim/vehicle/sim_profile.h"
+#include "aurora_sim/vehicle/pioneer3dx/pioneer3dx_profile.h"
 #include "aurora_sim/vehicle/vehicle_yaml.h"
 
 namespace {

@@ -17,7 +17,7 @@
 
 #include "aurora_common/ros/node_main.h"
 #include "aurora_sim/rejection_burst.h"
-#include "aurora_sim/vehicle/sim_profile.h"
+#include "aurora_sim/vehicle/vehicle_type.h"  // every vehicle with its SimProfile
 
 namespace aurora_sim {
 

@@ -15,7 +15,6 @@
 #include "aurora_control/formation/shapes.h"
 #include "aurora_control/law/other_laws.h"
 #include "aurora_control/params/shipped_files.h"
-#include "aurora_sim/vehicle/sim_profile.h"
 #include "aurora_sim/vehicle/vehicle_type.h"
 #include "aurora_sim/vehicle/vehicle_yaml.h"
 
@@ -214,6 +213,22 @@ py::dict formationShapes() {
   return out;
 }
 
+// Each shape's entry as Python chooses by it: its robots, whether its file
+// names their vehicles (the two-drone line's does not: the flight's vehicle
+// file flies both), its own laws ("" none).
+py::dict formationShapeInfo() {
+  py::dict out;
+  forEachShape([&](auto e) {
+    using E = decltype(e);
+    py::dict info;
+    info["robots"] = int(E::kRobots);
+    info["names_its_vehicles"] = bool(E::kNamesItsVehicles);
+    info["laws"] = E::lawRefusal().empty() ? E::sweepLawNames() : std::string();
+    out[py::str(E::name())] = info;
+  });
+  return out;
+}
+
 // Q~ = Qd - Q of a shape's variables as its layer and checks take it (the
 // shape's own angle wraps: the triangle's, the UAV-UGV line's; the line's
 // none), at positions X: for the formation report.
@@ -330,7 +345,7 @@ PYBIND11_MODULE(_core, m) {
   m.attr("MAX_DELAY_SAMPLES") = kMaxDelaySamples;
   m.attr("DELAY_NOT_GIVEN") = kDelayNotGiven;
   // The names a choice takes, from the lists (for aurora/simulation.py's refusals).
-  m.attr("TRIANGLE_LAWS") = triangleLawNames();
+  m.attr("SHAPE_LAWS") = shapeLawNames();
   m.attr("LAWS") = knownLawNames();
   m.def("simulate_files", &simulateFiles, py::arg("controller"), py::arg("task"), py::arg("vehicle"), py::arg("delay"),
         py::arg("link"), py::arg("clamp"), py::arg("rate"),
@@ -359,6 +374,8 @@ PYBIND11_MODULE(_core, m) {
         "(starts, length, states) after each step (docs/identify.md, eq. I7).");
   m.def("formation_shape", &shapeOf, py::arg("formation"), "The shape of a formation file.");
   m.def("formation_shapes", &formationShapes, "The shapes this build knows, each with its robots.");
+  m.def("formation_shape_info", &formationShapeInfo,
+        "The shapes this build knows: each one's robots, names_its_vehicles, laws (its own; '' none).");
   m.def("formation_error", &formationError, py::arg("shape"), py::arg("X"), py::arg("Qd"), py::arg("Q"),
         "Qd - Q of a shape's variables with the shape's own angle wraps, at positions X (3 per robot).");
 }

@@ -147,6 +147,16 @@ class GridTest(unittest.TestCase):
             self.assertLess(e, 0.01, key)
         self.assertGreater(max(by_steps.values()), 0.05)
 
+    def test_states_stamped_out_of_order_are_refused(self):
+        n = 400
+        stamps = self.T0 + np.arange(n) * TS + np.where(np.arange(n) % 7 == 0, 0.004, 0.0)
+        stamps[200] = stamps[199] - 0.001
+        loop = {"vehicle": "bebop2", "Ts": TS, "state_steps": np.arange(n), "state_stamps": stamps,
+                "X": np.zeros((n, 12)), "control_steps": np.arange(n), "law_ran": np.ones(n, dtype=bool),
+                "taking_off": np.zeros(n, dtype=bool), "sent": np.zeros((n, 4)), "control_stamps": stamps}
+        with self.assertRaisesRegex(identification.IdentifyError, "the state of step 200 is stamped .* not after"):
+            identification.fitted_model(loop, 3, 1, None, None)
+
     def test_the_take_off_is_left_out(self):
         steps = np.arange(400)
         loop = {"state_steps": steps, "control_steps": steps, "law_ran": steps >= 10,

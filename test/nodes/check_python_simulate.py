@@ -240,8 +240,8 @@ class ShapedFormationTest(unittest.TestCase):
             (lambda: aurora.simulate_formation("triangle_kinematic", delays=(1, 2)), "one delay per robot (3)"),
             (lambda: aurora.simulate_formation("line_pioneer_ardrone", delays=(1, 5000)), "(robot 2)"),
             (lambda: aurora.simulate_formation("triangle_kinematic", law="NSB"), "'NSB' is not a triangle law"),
-            (lambda: aurora.simulate_formation("triangle_kinematic", law=3), "law: expected a triangle law"),
-            (lambda: aurora.simulate_formation("triangle_kinematic", law=""), "law: expected a triangle law's name"),
+            (lambda: aurora.simulate_formation("triangle_kinematic", law=3), "law: expected a shape law's name (triangle: "),
+            (lambda: aurora.simulate_formation("triangle_kinematic", law=""), "law: expected a shape law's name (triangle: "),
             (lambda: aurora.simulate_formation("line_lemniscate", law="N"), "law= is refused for the line"),
             (lambda: aurora.simulate_formation("line_pioneer_ardrone", vehicle="ardrone2"), "vehicle= is refused"),
         ])

@@ -42,7 +42,6 @@
 #include <string>
 #include <vector>
 
-#include "aurora_sim/vehicle/sim_profile.h"
 #include "aurora_sim/vehicle/vehicle_type.h"
 #include "aurora_sim/command_mapping.h"
 #include "aurora_sim/ros/conversions.h"

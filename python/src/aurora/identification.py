@@ -224,6 +224,13 @@ def series_of(loop, run, phases):
     stamps = loop["state_stamps"][run]
     if core.on_uniform_grid(loop["state_steps"][run], stamps, loop["Ts"]):
         return [(None, loop["X"][run], commands_by_step(loop)[run])]
+    back = np.flatnonzero(np.diff(stamps) <= 0)
+    if back.size:
+        k = int(loop["state_steps"][run][back[0] + 1])
+        raise IdentifyError("the state of step %d is stamped %.6f s, not after the step before it (%.6f s): identify "
+                            "reads a realtime loop's states by their stamps (docs/identify.md, eq. I4b), so they must "
+                            "increase with the steps; record the estimator's states as they are published"
+                            % (k, stamps[back[0] + 1], stamps[back[0]]))
     series = []
     for phase in phases:
         grid = core.time_grid(stamps, loop["Ts"], phase)

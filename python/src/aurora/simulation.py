@@ -155,19 +155,21 @@ def simulate_formation(formation, vehicle=None, delays=None, law=None):
     (`delays`: one per robot in samples, in the file's order; None keeps
     the file's). The two-drone line gives a FormationFlight; AuRoRA's
     UAV-UGV line and triangle (their files' `shape`) a ShapedFormationFlight
-    with flight --formation's CSV as an array; `law` is a triangle's
-    (N, PSO, SPO, OSP, S-PO; None: the file's)."""
+    with flight --formation's CSV as an array; `law` is the shape's own,
+    for a shape with laws (_core.SHAPE_LAWS: the triangle's N, PSO, SPO,
+    OSP, S-PO; None: the file's)."""
     with tempfile.TemporaryDirectory() as tmp:
         formation_file = _as_file(formation, "formation", tmp)
         shape = _core.formation_shape(formation_file)
-        if shape != "line":
+        info = _core.formation_shape_info().get(shape)  # None: an unknown shape, which the reader refuses
+        if info is None or info["names_its_vehicles"]:
             if vehicle is not None:
                 raise ValueError("vehicle= is refused for a formation of shape %r: its robots' vehicle files are "
                                  "in the formation file" % shape)
-            robots = _core.formation_shapes().get(shape, 2)  # an unknown shape: the reader refuses it
+            robots = 2 if info is None else info["robots"]
             given = [] if delays is None else per_drone(delays, "delays", robots, "robot")
             if law is not None and (not isinstance(law, str) or not law):
-                raise ValueError("law: expected a triangle law's name (" + _core.TRIANGLE_LAWS + "), got %r; "
+                raise ValueError("law: expected a shape law's name (" + _core.SHAPE_LAWS + "), got %r; "
                                  "law=None flies the file's" % (law,))
             return ShapedFormationFlight(_core.simulate_shaped_formation_files(
                 formation_file, given, "" if law is None else law, config_dir()))

@@ -11,7 +11,6 @@
 
 #include "aurora_common/ros/params.h"
 #include "aurora_sim/vehicle/ardrone2/ardrone2.h"
-#include "aurora_sim/vehicle/sim_profile.h"
 #include "aurora_sim/vehicle/vehicle_type.h"
 
 namespace aurora_sim {

@@ -8,14 +8,16 @@
 
 #include "aurora_common/named_list.h"
 #include "aurora_common/refusal_text.h"
-#include "aurora_sim/vehicle/ardrone2/ardrone2.h"
-#include "aurora_sim/vehicle/bebop2/bebop2.h"
-#include "aurora_sim/vehicle/pioneer3dx/pioneer3dx.h"
+#include "aurora_sim/vehicle/ardrone2/ardrone2_profile.h"
+#include "aurora_sim/vehicle/bebop2/bebop2_profile.h"
+#include "aurora_sim/vehicle/pioneer3dx/pioneer3dx_profile.h"
 
 namespace aurora_sim {
 
 // The vehicles this build knows: the one list (forEachVehicle,
-// VehicleParamsSet and every choice by a vehicle file's type read it).
+// VehicleParamsSet and every choice by a vehicle file's type read it),
+// each included above with its simulator profile (its folder's
+// <name>_profile.h, which includes its model).
 using KnownVehicles = aurora_common::TypeList<Ardrone2, Bebop2, Pioneer3dx>;
 
 template <class F>
