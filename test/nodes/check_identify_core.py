@@ -132,7 +132,7 @@ class GridTest(unittest.TestCase):
             X_rec[:, i] = np.interp(stamps, tau, np.unwrap(X[:, i]) if i >= 3 else X[:, i])
         loop = {"vehicle": "bebop2", "Ts": TS, "state_steps": np.arange(n), "state_stamps": stamps, "X": X_rec,
                 "control_steps": np.arange(n), "law_ran": np.ones(n, dtype=bool),
-                "taking_off": np.zeros(n, dtype=bool), "sent": U, "control_stamps": tau - 2 * TS}
+                "taking_off": np.zeros(n, dtype=bool), "applied": U, "control_stamps": tau - 2 * TS}
         model = identification.fitted_model(loop, 5, 1, None, None)
         self.assertEqual(model["actuation_delay_samples"], 2)
         want = modified()
@@ -153,7 +153,7 @@ class GridTest(unittest.TestCase):
         stamps[200] = stamps[199] - 0.001
         loop = {"vehicle": "bebop2", "Ts": TS, "state_steps": np.arange(n), "state_stamps": stamps,
                 "X": np.zeros((n, 12)), "control_steps": np.arange(n), "law_ran": np.ones(n, dtype=bool),
-                "taking_off": np.zeros(n, dtype=bool), "sent": np.zeros((n, 4)), "control_stamps": stamps}
+                "taking_off": np.zeros(n, dtype=bool), "applied": np.zeros((n, 4)), "control_stamps": stamps}
         with self.assertRaisesRegex(identification.IdentifyError, "the state of step 200 is stamped .* not after"):
             identification.fitted_model(loop, 3, 1, None, None)
 
@@ -260,12 +260,36 @@ class TimingTest(unittest.TestCase):
             core.stream_timing([5], [0.0], TS)
 
     def test_the_link_file_of_a_timing(self):
-        t = identification.uplink(np.array([3] * 95 + [4] * 3 + [5] * 2), np.arange(1000))
-        self.assertEqual((t["uplink_delay"], t["uplink_jitter"]), (3, 2))
-        t["uplink_loss"] = 0.02
+        up = identification.link_direction(np.array([3] * 95 + [4] * 3 + [5] * 2), np.arange(1000))
+        self.assertEqual((up["delay"], up["jitter"]), (3, 2))
+        t = {"uplink_delay": up["delay"], "uplink_jitter": up["jitter"], "uplink_loss": 0.02,
+             "downlink_delay": 1, "downlink_jitter": 0, "downlink_loss": 0.0}
         link = identification.link_of(t, 2)["link"]
         self.assertEqual(link["uplink"], {"delay": 3, "jitter": {"kind": "uniform", "max": 2}, "loss": 0.02})
-        self.assertEqual(link["downlink"], {"delay": 2})
+        self.assertEqual(link["downlink"], {"delay": 2})  # the actuation delay: the link's 1 and 1 beyond it
+        t.update(downlink_jitter=1, downlink_loss=0.05)
+        self.assertEqual(identification.link_of(t, None)["link"]["downlink"],
+                         {"delay": 1, "jitter": {"kind": "uniform", "max": 1}, "loss": 0.05})
+
+    @staticmethod
+    def received(n, base, jitter, loss, seed):
+        """links.md's receiver rule played out over n steps: each packet sent at step j arrives at j + base +
+        a uniform 0 .. jitter, or is lost; at each step the receiver keeps the newest-sent among those arrived.
+        Returns the steps k from base + jitter on, the step of the packet kept at each, and whether it took
+        effect there."""
+        rng = np.random.default_rng(seed)
+        arrive = np.arange(n) + base + rng.integers(0, jitter + 1, n)
+        arrive[rng.random(n) < loss] = -1
+        used, arrived, newest = [], [], -1
+        by_step = {}
+        for j in np.flatnonzero(arrive >= 0):
+            by_step.setdefault(int(arrive[j]), []).append(int(j))
+        for k in range(base + jitter, n):
+            candidate = max(by_step.get(k, [-1]))
+            arrived.append(candidate > newest)
+            newest = max(newest, candidate)
+            used.append(newest)
+        return np.arange(base + jitter, n), np.array(used), np.array(arrived)
 
     def test_a_jittery_lossy_links_loss_from_the_states_used(self):
         """Eq. I2b on links.md's receiver rule played out (the newest-sent packet among those arrived): with
@@ -274,27 +298,27 @@ class TimingTest(unittest.TestCase):
         self.assertAlmostEqual(core.seen_share(0.3, 0), 0.7)
         self.assertAlmostEqual(core.seen_share(0.1, 1), 0.9 / 2 * (1 + (1 - 0.9 / 2)))
         for jitter, loss, seed in ((2, 0.05, 1), (4, 0.2, 2), (0, 0.1, 3), (2, 0.0, 4)):
-            rng = np.random.default_rng(seed)
-            n, base = 30000, 3
-            arrive = np.arange(n) + base + rng.integers(0, jitter + 1, n)
-            arrive[rng.random(n) < loss] = -1
-            used, arrived, newest = [], [], -1
-            by_step = {}
-            for j in np.flatnonzero(arrive >= 0):
-                by_step.setdefault(int(arrive[j]), []).append(int(j))
-            for k in range(base + jitter, n):
-                candidate = max(by_step.get(k, [-1]))
-                arrived.append(candidate > newest)
-                newest = max(newest, candidate)
-                used.append(newest)
-            ages = np.arange(base + jitter, n) - np.array(used)
-            t = identification.uplink(ages[np.array(arrived)], np.array(used))
-            self.assertEqual((t["uplink_delay"], t["uplink_jitter"]), (base, jitter))
-            self.assertLess(abs(t["uplink_loss"] - loss), 2 * t["uplink_loss_stderr"] + 1e-9, (jitter, loss, t))
+            base = 3
+            steps, used, arrived = self.received(30000, base, jitter, loss, seed)
+            t = identification.link_direction((steps - used)[arrived], used)
+            self.assertEqual((t["delay"], t["jitter"]), (base, jitter))
+            self.assertLess(abs(t["loss"] - loss), 2 * t["loss_stderr"] + 1e-9, (jitter, loss, t))
+
+    def test_the_controllers_own_downlink_from_the_commands_ages(self):
+        """Eq. I2c: the same rule for the commands, from each cycle's Control.command_age (-1 before the first
+        command took effect): the delay and jitter exactly, the loss within two standard errors."""
+        for jitter, loss, seed in ((1, 0.05, 5), (0, 0.0, 6), (2, 0.1, 7)):
+            base = 1
+            steps, used, _ = self.received(20000, base, jitter, loss, seed)
+            loop = {"control_steps": np.arange(20000), "command_age": np.full(20000, -1, dtype=np.int64)}
+            loop["command_age"][steps] = np.where(used >= 0, steps - used, -1)
+            t = identification.downlink(loop)
+            self.assertEqual((t["downlink_delay"], t["downlink_jitter"]), (base, jitter))
+            self.assertLess(abs(t["downlink_loss"] - loss), 2 * (t["downlink_loss_stderr"] or 0) + 1e-9, t)
 
 
-class IdentifyCoreTests(FitTest, PioneerFitTest, ArdroneFitTest, TimingTest):
-    """Both, for rostest (which runs one TestCase class)."""
+class IdentifyCoreTests(FitTest, PioneerFitTest, ArdroneFitTest, TimingTest, GridTest):
+    """All of them, for rostest (which runs one TestCase class)."""
 
 
 if __name__ == "__main__":

@@ -37,8 +37,9 @@ def edited(bag, folder, name, last_step=None, vehicle=None, formation=False, dro
             if topic.endswith("/control"):
                 if vehicle:
                     msg.vehicle = vehicle
-                if zero_commands:
+                if zero_commands:  # as sent and as applied
                     msg.command_sent = [0.0] * 4
+                    msg.command = [0.0] * 4
             dst.write(topic, msg, t)
             if formation:
                 dst.write("/formation/formation", Formation(), t)
@@ -73,6 +74,12 @@ class IdentifySimTest(unittest.TestCase):
             self.assertGreater(rms["nominal"][axis], 1e-4, (axis, rms))
         self.assertEqual(j["link"]["uplink"]["delay"], p("feedback"))
         self.assertEqual(j["link"]["downlink"]["delay"], p("actuation"))
+        # The controller's own downlink (eq. I2c, from the commands' ages): its jitter exactly, its loss within
+        # two standard errors (none: an ideal one's).
+        jitter, loss = rospy.get_param("~downlink_jitter", 0), rospy.get_param("~downlink_loss", 0.0)
+        self.assertEqual(j["link"]["downlink"].get("jitter", {"max": 0})["max"], jitter, j["link"])
+        self.assertLessEqual(abs(j["downlink_loss"] - loss), 2 * (j["downlink_loss_stderr"] or 0.0) + 1e-9,
+                             (j["downlink_loss"], j["downlink_loss_stderr"]))
         for f in ("link.yaml", "vehicle.yaml", "report.md", "timing.png", "fit.png"):
             self.assertTrue(os.path.isfile(os.path.join(out, f)), f)
         # The files are the product's own: flight takes them as they are.

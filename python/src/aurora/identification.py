@@ -118,7 +118,8 @@ def read_loop(path, ns=None):
 
 def loop_arrays(d):
     """States (steps, stamps, X) and controls (steps, used steps, pending,
-    arrived, commands sent, stamps) of one robot's bag data."""
+    arrived, law ran, taking off, commands as applied and their ages,
+    stamps) of one robot's bag data."""
     states = sorted({s.step: s for s in d["states"]}.values(), key=lambda s: s.step)
     controls = [d["controls"][k] for k in sorted(d["controls"])]
     first = controls[0]
@@ -135,7 +136,9 @@ def loop_arrays(d):
         # The supervisor's take-off phase (flight_supervisor.h): the law holds the start while a real drone's
         # driver climbs by itself, so the commands sent are not what it flies.
         "taking_off": np.array([c.mode.startswith(TAKEOFF_MODE) for c in controls], dtype=bool),
-        "sent": np.array([list(c.command_sent)[:len(first.command_names)] for c in controls], dtype=float),
+        # As the robot applies them: after the controller's own link (docs/links.md), the command's age.
+        "applied": np.array([list(c.command)[:len(first.command_names)] for c in controls], dtype=float),
+        "command_age": np.array([c.command_age for c in controls], dtype=np.int64),
         "control_stamps": np.array([c.header.stamp.to_sec() for c in controls]),
     }
 
@@ -155,18 +158,21 @@ def timing(loop):
          "state_stream": core.stream_timing(loop["state_steps"], loop["state_stamps"], loop["Ts"]),
          "command_stream": core.stream_timing(loop["control_steps"], loop["control_stamps"], loop["Ts"]),
          "state_intervals": np.diff(loop["state_stamps"])}
-    t.update(uplink(delays[loop["arrived"][steady]], loop["used_steps"][steady]))
+    up = link_direction(delays[loop["arrived"][steady]], loop["used_steps"][steady])
+    t.update({"uplink_delay": up["delay"], "uplink_jitter": up["jitter"], "uplink_loss": up["loss"],
+              "uplink_loss_stderr": up["loss_stderr"], "states_seen": up["seen"]})
+    t.update(downlink(loop))
     return t
 
 
-def uplink(on_arrival, used):
-    """Eq. I2b: the uplink's base delay and uniform jitter from the ages of
-    states on the cycle they arrived (D + J each: a held state's age is not
-    its packet's), its loss from the share of states ever used (inverting
-    seen_share, with its standard error by the delta method)."""
+def link_direction(on_arrival, used):
+    """Eq. I2b, either direction: its base delay and uniform jitter from the
+    ages of packets on the cycle they took effect (D + J each: a held one's
+    age is not its packet's), its loss from the share of the steps sent
+    that ever took effect (`used`; inverting seen_share, with its standard
+    error by the delta method)."""
     if on_arrival.size == 0:
-        return {"uplink_delay": 0, "uplink_jitter": 0, "uplink_loss": 0.0, "uplink_loss_stderr": None,
-                "states_seen": None}
+        return {"delay": 0, "jitter": 0, "loss": 0.0, "loss_stderr": None, "seen": None}
     base = int(on_arrival.min())
     jitter = int(on_arrival.max()) - base
     seen_steps = np.unique(used)
@@ -176,20 +182,35 @@ def uplink(on_arrival, used):
     lo, hi = max(loss - 1e-4, 0.0), min(loss + 1e-4, 1.0)
     slope = (core.seen_share(hi, jitter) - core.seen_share(lo, jitter)) / (hi - lo)
     stderr = float(np.sqrt(seen * (1.0 - seen) / n) / abs(slope)) if slope else None
-    return {"uplink_delay": base, "uplink_jitter": jitter, "uplink_loss": loss, "uplink_loss_stderr": stderr,
-            "states_seen": seen}
+    return {"delay": base, "jitter": jitter, "loss": loss, "loss_stderr": stderr, "seen": seen}
+
+
+def downlink(loop):
+    """Eq. I2c: the controller's own downlink (its link file's, docs/links.md)
+    from the commands' ages (Control.command_age: steps since the command the
+    robot applies was sent; -1 before the first): the command of step k -
+    age took effect on the cycles it replaced an older one. A real radio's
+    own losses beyond it are not in a bag."""
+    ok = loop["command_age"] >= 0
+    age = loop["command_age"][ok]
+    applied = (loop["control_steps"] - loop["command_age"])[ok]
+    took_effect = np.concatenate([[True], np.diff(applied) > 0]) if applied.size else np.zeros(0, dtype=bool)
+    d = link_direction(age[took_effect], applied)
+    return {"downlink_delay": d["delay"], "downlink_jitter": d["jitter"], "downlink_loss": d["loss"],
+            "downlink_loss_stderr": d["loss_stderr"]}
 
 
 def commands_by_step(loop):
-    """The commands sent, one row per state step (a step the controller did
-    not answer holds the command before it, as the vehicle does)."""
+    """The commands as the robot applies them (after the controller's own
+    link: I2c), one row per state step (a step the controller did not
+    answer holds the command before it, as the vehicle does)."""
     X_steps = loop["state_steps"]
-    U = np.zeros((len(X_steps), loop["sent"].shape[1]))
+    U = np.zeros((len(X_steps), loop["applied"].shape[1]))
     at = {int(s): i for i, s in enumerate(loop["control_steps"])}
     last = np.zeros(U.shape[1])
     for i, s in enumerate(X_steps):
         if int(s) in at:
-            last = loop["sent"][at[int(s)]]
+            last = loop["applied"][at[int(s)]]
         U[i] = last
     return U
 
@@ -235,7 +256,7 @@ def series_of(loop, run, phases):
     for phase in phases:
         grid = core.time_grid(stamps, loop["Ts"], phase)
         series.append((phase, core.states_on_grid(stamps, loop["X"][run], grid),
-                       core.commands_on_grid(grid, loop["Ts"], loop["control_stamps"], loop["sent"])))
+                       core.commands_on_grid(grid, loop["Ts"], loop["control_stamps"], loop["applied"])))
     return series
 
 
@@ -311,14 +332,19 @@ def parameter_table(model, nominal):
 def link_of(t, actuation_delay):
     """The link file's content (docs/links.md): the uplink's base delay,
     uniform jitter and loss of eq. I2b; the downlink's delay the actuation
-    delay (0 where it was not measured). Downlink losses are not in a bag."""
-    base, jitter = t["uplink_delay"], t["uplink_jitter"]
-    up = {"delay": base}
-    if jitter > 0:
-        up["jitter"] = {"kind": "uniform", "max": jitter}
-    if t["uplink_loss"] > 0:
-        up["loss"] = round(t["uplink_loss"], 6)
-    down = {"delay": int(actuation_delay)} if actuation_delay is not None else {"delay": 0}
+    delay (I5; the controller's own downlink's where it was not measured),
+    its jitter and loss the controller's own downlink's (I2c; a real
+    radio's own losses are not in a bag)."""
+    def direction(delay, jitter, loss):
+        d = {"delay": int(delay)}
+        if jitter > 0:
+            d["jitter"] = {"kind": "uniform", "max": int(jitter)}
+        if loss > 0:
+            d["loss"] = round(loss, 6)
+        return d
+    up = direction(t["uplink_delay"], t["uplink_jitter"], t["uplink_loss"])
+    down = direction(t["downlink_delay"] if actuation_delay is None else actuation_delay, t["downlink_jitter"],
+                     t["downlink_loss"])
     return {"link": {"uplink": up, "downlink": down, "seed": 1}}
 
 
@@ -348,6 +374,7 @@ def summary(bag, name, loop, max_delay, window):
          "feedback_delay_distribution": t["feedback_delay_samples"], "actuation_delay_samples": None,
          "state_stream": t["state_stream"], "command_stream": t["command_stream"], "uplink_loss": t["uplink_loss"],
          "uplink_loss_stderr": t["uplink_loss_stderr"], "states_seen": t["states_seen"],
+         "downlink_loss": t["downlink_loss"], "downlink_loss_stderr": t["downlink_loss_stderr"],
          "parameters": {}, "fit": {}, "model": "identified"}
     vehicle_file = None
     j["parameters"] = parameter_table(model, nominal)
@@ -357,8 +384,11 @@ def summary(bag, name, loop, max_delay, window):
         vehicle_file = vehicle_yaml(nominal, j["parameters"])
         model["open_loop"] = open_loop_comparison(loop["vehicle"], nominal_path, vehicle_file, model)
         j["open_loop_rms"] = {which: r["rms"] for which, r in model["open_loop"]["models"].items()}
-        j["actuation_delay_samples"] = model["actuation_delay_samples"]  # measured by a fit that fits
-        j["residual_by_actuation_delay"] = {str(d): r for d, r in model["residual_by_delay"].items()}
+        # I5: the controller's own downlink's base delay (I2c) and what the fit finds beyond it.
+        beyond = model["actuation_delay_samples"]
+        j["actuation_delay_samples"] = t["downlink_delay"] + beyond
+        j["command_path_samples"] = {"link": t["downlink_delay"], "beyond_link": beyond}
+        j["residual_by_actuation_delay"] = {str(t["downlink_delay"] + d): r for d, r in model["residual_by_delay"].items()}
         j["grid_phase"] = model["grid_phase"]  # eq. I4b: null where the states were on a uniform grid
     else:
         j["model"] = "nothing identifiable: " + "; ".join(
