@@ -375,6 +375,7 @@ def summary(bag, name, loop, max_delay, window):
          "state_stream": t["state_stream"], "command_stream": t["command_stream"], "uplink_loss": t["uplink_loss"],
          "uplink_loss_stderr": t["uplink_loss_stderr"], "states_seen": t["states_seen"],
          "downlink_loss": t["downlink_loss"], "downlink_loss_stderr": t["downlink_loss_stderr"],
+         "command_path_samples": {"link": t["downlink_delay"], "beyond_link": None},  # the fit's: below
          "parameters": {}, "fit": {}, "model": "identified"}
     vehicle_file = None
     j["parameters"] = parameter_table(model, nominal)
@@ -508,6 +509,14 @@ def fit_figure(plt, d, result):
     fig.tight_layout(), fig.savefig(os.path.join(d, "fit.png")), plt.close(fig)
 
 
+def downlink_row(j):
+    """report.md's row of the controller's own downlink (eq. I2c)."""
+    loss = " +- %.4f" % j["downlink_loss_stderr"] if j["downlink_loss_stderr"] else ""
+    return "| the controller's own downlink (eq. I2c) | delay %d, jitter up to %d samples, loss %.4f%s |" % (
+        j["command_path_samples"]["link"], j["link"]["downlink"].get("jitter", {"max": 0})["max"], j["downlink_loss"],
+        loss)
+
+
 def markdown(j):
     lines = ["# Identified loop: %s (%s)" % (j["namespace"], j["vehicle"]), "", "Bag: `%s`" % j["bag"], "",
              "## Timing", "", "| quantity | value |", "|---|---|",
@@ -520,7 +529,8 @@ def markdown(j):
                  j["state_stream"]["rate_hz"] or 0.0, j["state_stream"]["lost"], j["state_stream"]["steps_spanned"],
                  j["state_stream"]["longest_burst"]),
              "| uplink loss (states never used, eq. I2b) | %.4f%s |" % (
-                 j["uplink_loss"], " +- %.4f" % j["uplink_loss_stderr"] if j["uplink_loss_stderr"] else ""), "",
+                 j["uplink_loss"], " +- %.4f" % j["uplink_loss_stderr"] if j["uplink_loss_stderr"] else ""),
+             downlink_row(j), "",
              "`link.yaml`: `%s`" % json.dumps(j["link"]), "", "## Model", "", j["model"], ""]
     if j["parameters"]:
         lines += ["| parameter | identified | stderr | nominal |", "|---|---|---|---|"]
