@@ -206,13 +206,6 @@ py::dict simulateShapedFormationFiles(const std::string& formation, const std::v
 // The shape of a formation file (its formation.shape; "" when it gives none).
 std::string shapeOf(const std::string& formation) { return loadFormationDocument(formation, "").shape; }
 
-// Each shape this build knows (shapes.h) and its robots.
-py::dict formationShapes() {
-  py::dict out;
-  forEachShape([&](auto e) { out[py::str(e.name())] = int(decltype(e)::kRobots); });
-  return out;
-}
-
 // Each shape's entry as Python chooses by it: its robots, whether its file
 // names their vehicles (the two-drone line's does not: the flight's vehicle
 // file flies both), its own laws ("" none).
@@ -223,7 +216,7 @@ py::dict formationShapeInfo() {
     py::dict info;
     info["robots"] = int(E::kRobots);
     info["names_its_vehicles"] = bool(E::kNamesItsVehicles);
-    info["laws"] = E::lawRefusal().empty() ? E::sweepLawNames() : std::string();
+    info["laws"] = ownLawNames(e);
     out[py::str(E::name())] = info;
   });
   return out;
@@ -373,7 +366,6 @@ PYBIND11_MODULE(_core, m) {
         "Open-loop flights through the vehicle's model from recorded states X and commands U: "
         "(starts, length, states) after each step (docs/identify.md, eq. I7).");
   m.def("formation_shape", &shapeOf, py::arg("formation"), "The shape of a formation file.");
-  m.def("formation_shapes", &formationShapes, "The shapes this build knows, each with its robots.");
   m.def("formation_shape_info", &formationShapeInfo,
         "The shapes this build knows: each one's robots, names_its_vehicles, laws (its own; '' none).");
   m.def("formation_error", &formationError, py::arg("shape"), py::arg("X"), py::arg("Qd"), py::arg("Q"),

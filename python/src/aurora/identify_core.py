@@ -144,7 +144,7 @@ def states_on_grid(stamps, X, grid):
     return np.column_stack(columns)
 
 
-def commands_on_grid(grid, Ts, command_stamps, sent):
+def commands_on_grid(grid, Ts, command_stamps, commands):
     """Eq. I4b: row k, the commands in force over the grid's step [grid[k],
     grid[k] + Ts], averaged over it (each from its stamp until the next;
     zero before the first): what a vehicle flies over the step when each
@@ -152,15 +152,17 @@ def commands_on_grid(grid, Ts, command_stamps, sent):
     commands in force j Ts earlier; on a lockstep loop's grid, row k is
     step k's command."""
     order = np.argsort(command_stamps, kind="stable")
-    stamps, sent = np.asarray(command_stamps, dtype=float)[order], np.asarray(sent, dtype=float)[order]
+    stamps, commands = np.asarray(command_stamps, dtype=float)[order], np.asarray(commands, dtype=float)[order]
     # The integral of the held commands at each stamp (exact: they are constant between stamps).
-    integral = np.vstack([np.zeros((1, sent.shape[1])), np.cumsum(sent[:-1] * np.diff(stamps)[:, None], axis=0)])
+    integral = np.vstack([np.zeros((1, commands.shape[1])),
+                          np.cumsum(commands[:-1] * np.diff(stamps)[:, None], axis=0)])
 
     def integral_at(t):
-        i = np.searchsorted(stamps, t, side="right") - 1
-        held = np.where(i[:, None] >= 0, sent[np.maximum(i, 0)], 0.0)
-        return np.where(i[:, None] >= 0, integral[np.maximum(i, 0)] + held * (t - stamps[np.maximum(i, 0)])[:, None],
-                        0.0)
+        i = np.searchsorted(stamps, t, side="right") - 1  # the command in force at t (-1: none yet)
+        j = np.maximum(i, 0)
+        value = integral[j] + commands[j] * (t - stamps[j])[:, None]
+        value[i < 0] = 0.0
+        return value
     grid = np.asarray(grid, dtype=float)
     return (integral_at(grid + Ts) - integral_at(grid)) / Ts
 
@@ -194,7 +196,7 @@ def least_squares(A, y):
 
 def bebop2_rows(X, U, Ts, delay, window=1, first=0):
     """Eq. I3's regressors and outputs of a Bebop 2 flight: states X (n x
-    12, docs/bebop2.md), the commands sent U (n x 4, row k sent at step k),
+    12, docs/bebop2.md), the commands U (n x 4, row k given at step k),
     the actuation delay `delay` [samples]: step k applies U_(k - delay).
     Returns {axis: (A, y)} for 'xy' (Ku_x, Ku_y, Kv_x, Kv_y), 'z', 'yaw',
     each summed over blocks of `window` steps (eq. I4) from step `first`
@@ -275,7 +277,7 @@ def pioneer_speeds(X, Ts):
 def pioneer_rows(X, U, Ts, delay, window=1, first=0):
     """Eq. I6's regressors of a Pioneer P3-DX flight (docs/pioneer3dx.md):
     its forward speed and turn rate (pioneer_speeds), their differences, and
-    the commands sent U (u_ref, omega_ref) `delay` samples before."""
+    the commands U (u_ref, omega_ref) given `delay` samples before."""
     u_next, w_next = pioneer_speeds(X, Ts)  # u_(j+1), omega_(j+1)
     k = np.arange(1, len(X) - 1)
     k = k[k >= max(delay, first)]  # from step `first` on, as bebop2_rows

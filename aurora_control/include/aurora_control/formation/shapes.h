@@ -46,13 +46,20 @@ struct PerShape<Part, aurora_common::TypeList<E...>> {
 // The shapes' names, comma separated (what a `shape:` accepts).
 inline std::string knownShapeNames() { return aurora_common::entryNames(KnownShapes()); }
 
+// A shape's own laws, comma separated ("" for a shape whose law is its
+// file's: its lawRefusal() says why --law is refused).
+template <class Entry>
+std::string ownLawNames(Entry) {
+  return Entry::lawRefusal().empty() ? Entry::sweepLawNames() : std::string();
+}
+
 // The laws of the shapes that have their own (flight's --law): "triangle:
 // N, PD, ...", one shape after another ("; ").
 inline std::string shapeLawNames() {
   std::string names;
   forEachShape([&](auto e) {
-    if (!e.lawRefusal().empty()) return;
-    names += (names.empty() ? "" : "; ") + std::string(e.name()) + ": " + e.sweepLawNames();
+    const std::string laws = ownLawNames(e);
+    if (!laws.empty()) names += (names.empty() ? "" : "; ") + std::string(e.name()) + ": " + laws;
   });
   return names;
 }
