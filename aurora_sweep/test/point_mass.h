@@ -93,6 +93,15 @@ struct PointPd {
     static constexpr int kWidth = 6;
     AURORA_HD static constexpr int state(int j) { return j; }
   };
+  static const char* name() { return "point_pd"; }
+  // Its gains a sweep varies (law_gain_rows.h): kp, kd.
+  static constexpr int kGainCount = 2;
+  static aurora_control::GainRow gainRow(int i) { return {i == 0 ? "kp" : "kd", 0.0, 0.0, 100.0, false}; }
+  template <typename T>
+  AURORA_HD static void giveGains(Gains<T>& g, const double* v) {
+    aurora_control::giveGain(g.kp, v[0]);
+    aurora_control::giveGain(g.kd, v[1]);
+  }
 
   template <typename T>
   AURORA_HD static void command(const Params<T>& model, const Gains<T>& g, Memory<T>&,
@@ -117,22 +126,7 @@ struct SweepGains<point_mass::PointPd> {
   }
 };
 
-// Its gains as a formation robot's (robot_gains.h): kp, kd.
-template <>
-struct RobotGains<point_mass::PointPd> {
-  template <class Params>
-  static const char* law(const Params&) {
-    return "point_pd";
-  }
-  template <class Params>
-  static std::vector<LawGainRow> rows(const Params&) {
-    return {{"kp", 0.0, 0.0, 100.0, false}, {"kd", 0.0, 0.0, 100.0, false}};
-  }
-  template <typename T, class Params>
-  AURORA_HD static void set(point_mass::Gains<T>& g, const Params&, const double* v) {
-    giveGain(g.kp, v[0]);
-    giveGain(g.kd, v[1]);
-  }
-};
+// As a formation robot it takes the generic RobotGains (robot_gains.h):
+// its declaration's kp, kd.
 
 }  // namespace aurora_sweep

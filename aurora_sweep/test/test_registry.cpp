@@ -6,11 +6,13 @@
 // one per entry of the shapes' list.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 
 #include "aurora_control/formation/shapes.h"
 #include "aurora_sim/vehicle/vehicle_type.h"
 #include "aurora_sweep/parameters.h"
+#include "aurora_sweep/robot_gains.h"
 #include "aurora_sweep/sweep_spec.h"
 #include "point_mass.h"
 
@@ -81,6 +83,55 @@ TEST(Registry, TheSweepsShapesAreTheShapesList) {
     EXPECT_TRUE(flown) << E::name() << ": withFormation flies another entry's run";
   });
   EXPECT_EQ(entries, int(aurora_control::KnownShapes::kCount));
+}
+
+// A law appended to the laws' list (here the test's point-mass law) takes
+// its gains' block after every parameter there was: no law's block, no
+// formation parameter, no robot gain moves (records and definition hashes
+// stay); its rows as a formation robot are its own declaration's.
+template <class... L>
+using Appended = aurora_common::TypeList<L..., point_mass::PointPd>;
+template <class... L>
+Appended<L...> appendTo(aurora_common::TypeList<L...>) {
+  return {};
+}
+using LawsAndPoint = decltype(appendTo(aurora_control::KnownLaws()));
+
+TEST(Registry, ALawAppendedToTheListTakesItsGainsAfterEveryOlderParameter) {
+  const int offset = lawGainOffset<point_mass::PointPd>(LawsAndPoint());
+  EXPECT_EQ(offset, kLawGainCount);
+  EXPECT_EQ(lawGainTotal(LawsAndPoint()), kLawGainCount + point_mass::PointPd::kGainCount);
+  EXPECT_GE(lawGainParamAt(offset), kParamRobotGainEnd);  // after the robots' gains
+  EXPECT_EQ(lawGainParamAt(offset), kParamCount);         // the room a build with it would add
+  aurora_control::forEachOtherLaw([&](auto law) {
+    using Law = decltype(law);
+    EXPECT_EQ(lawGainOffset<Law>(LawsAndPoint()), LawGainBlock<Law>::kOffset) << Law::name();
+    for (int i = 0; i < Law::kGainCount; ++i) {  // each row where the table names it
+      EXPECT_EQ(paramInfo(LawGainBlock<Law>::kFirst + i, SweepShape::kNone).name, Law::gainRow(i).name);
+      EXPECT_EQ(paramInfo(LawGainBlock<Law>::kFirst + i, SweepShape::kNone).law, Law::name());
+    }
+  });
+  EXPECT_EQ(lawGainOffset<point_mass::PointPd>(aurora_control::KnownLaws()), -1);
+  const auto rows = RobotGains<point_mass::PointPd>::rows(point_mass::Params<double>{});
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_STREQ(rows[0].name, "kp");
+  EXPECT_STREQ(rows[1].name, "kd");
+  point_mass::Gains<double> g{1.0, 2.0};
+  const double block[2] = {5.0, std::nan("")};  // a gain the sweep does not give keeps its value
+  RobotGains<point_mass::PointPd>::set(g, point_mass::Params<double>{}, block);
+  EXPECT_EQ(g.kp, 5.0);
+  EXPECT_EQ(g.kd, 2.0);
+}
+
+// The laws' own blocks where the records of every shipped study have them
+// (the Bebop 2 compensator's from the first law gain, then the Pioneer's).
+TEST(Registry, TheListedLawsBlocksAreWhereTheirRecordsHaveThem) {
+  EXPECT_EQ(LawGainBlock<aurora_control::Bebop2Compensator>::kFirst, kParamFirstLawGain);
+  EXPECT_EQ(LawGainBlock<aurora_control::PioneerDynamic>::kFirst, kParamFirstLawGain + 10);
+  EXPECT_EQ(LawGainBlock<aurora_control::PioneerKinematic>::kFirst, kParamFirstLawGain + 16);
+  EXPECT_EQ(kParamFormationLaw, kParamFirstLawGain + 18);
+  EXPECT_EQ(kParamFirstRobotGain, 92);
+  EXPECT_EQ(kParamCount, 128);
 }
 
 }  // namespace

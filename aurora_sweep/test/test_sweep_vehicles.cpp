@@ -70,8 +70,10 @@ TEST(SweepVehicles, TheShippedStudiesFlyTheirOwnVehicle) {
   EXPECT_EQ(p.size(), 16 * 16 * 32);
   EXPECT_EQ(b30.iterations(), 1801);  // 60 s of 1/30 s
   EXPECT_EQ(p.iterations(), 600);     // while t < 60 s, t += 0.1 s (t accumulated: 60.000000000000085 after 600)
-  EXPECT_EQ(b30.fixed[kParamCompensatorPeriod], 1.0);
-  EXPECT_EQ(b5.fixed[kParamCompensatorPeriod], 6.0);  // 5 Hz
+  const int period = b30.paramId("period_steps");
+  EXPECT_EQ(period, LawGainBlock<aurora_control::Bebop2Compensator>::kFirst + 9);
+  EXPECT_EQ(b30.fixed[period], 1.0);
+  EXPECT_EQ(b5.fixed[period], 6.0);  // 5 Hz
   const std::vector<std::string> bebop = {"delay", "ksp_xy", "ksp_z", "ksp_yaw", "ksd_xy", "ksd_z",
                                           "ksd_yaw", "kp_xy", "kp_z", "kp_yaw", "period_steps"};
   EXPECT_EQ(columnNames(b30), bebop);

@@ -39,7 +39,7 @@ struct PointGrid {
   PointGrid() {
     const int params[4] = {kParamKp, kParamKd, kParamDelay, kParamFirstModelFactor};
     for (int i = 0; i < kParamCount; ++i) view.fixed[i] = 0.0;
-    for (int i = kParamFirstLawGain; i < kParamLawGainEnd; ++i) view.fixed[i] = paramDefault(i, SweepShape::kNone);  // the laws' own
+    forEachLawGainParam([&](int i) { view.fixed[i] = paramDefault(i, SweepShape::kNone); });  // the laws' own
     for (int i = 0; i < kModelFactorCount; ++i) view.fixed[kParamFirstModelFactor + i] = 1.0;
     for (int i = 0; i < kLinkParamCount; ++i) view.fixed[kParamFirstLinkValue + i] = std::nan("");
     test::setAxes(view, params, axes);

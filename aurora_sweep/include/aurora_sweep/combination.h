@@ -4,7 +4,11 @@
 // table of every combination is ever built.
 #pragma once
 
+#include <type_traits>
+
 #include "aurora_common/host_device.h"
+#include "aurora_common/named_list.h"
+#include "aurora_control/law/other_laws.h"
 
 namespace aurora_sweep {
 
@@ -62,19 +66,19 @@ AURORA_HD constexpr ShapeLayout shapeLayout() {
   return layoutOf<Shape>();
 }
 
-// The gains of the other vehicles' laws (sweep_gains.h: each law's names,
-// from kParamFirstLawGain on): the Bebop 2 compensator's 9 and its period,
-// the Pioneer's dynamic law's 6, its kinematic law's 2.
+// The laws' own gains (each law's kGainCount rows, law_gain_rows.h), in the
+// order of the laws' list (aurora_control/law/other_laws.h; the AR.Drone's
+// two, whose gains are the rows above, have none here). The room of
+// kLawGainRoom holds the first laws' blocks where their records have them
+// (the Bebop 2 compensator's 10, the Pioneer's dynamic law's 6, its
+// kinematic law's 2); a law appended to the list takes its block after the
+// robots' gains, so no parameter moves (records, hashes stay).
+constexpr int kLawGainRoom = 18;
 enum LawGainId : int {
-  kParamFirstCompensatorGain = kParamFirstLawGain,   // ksp, ksd, kp: each xy, z, yaw
-  kParamCompensatorPeriod = kParamFirstCompensatorGain + 9,
-  kParamFirstPioneerDynamicGain,                     // kc1, kc2, kd1_u, kd1_omega, kd2_u, kd2_omega
-  kParamFirstPioneerKinematicGain = kParamFirstPioneerDynamicGain + 6,  // k1, k2
-  kParamLawGainEnd = kParamFirstPioneerKinematicGain + 2,
   // A triangle sweep's law (its index: N, PSO, SPO, OSP, S-PO;
   // aurora_control::TriangleLaw), after the laws' gains: older records and
   // hashes keep theirs.
-  kParamFormationLaw = kParamLawGainEnd,
+  kParamFormationLaw = kParamFirstLawGain + kLawGainRoom,
   // Each formation robot's own law's gains (robot_gains.h names them by
   // the robot's law): a block of kRobotGainRoom per robot, the most any law
   // has (the underactuated law's 12), for the largest shape's robots; after
@@ -84,7 +88,64 @@ enum LawGainId : int {
 constexpr int kRobotGainRoom = 12;
 constexpr int kRobotGainRobots = kLargestShape.robots;
 AURORA_HD constexpr int robotGainParam(int robot, int i) { return kParamFirstRobotGain + robot * kRobotGainRoom + i; }
-constexpr int kParamCount = robotGainParam(kRobotGainRobots, 0);
+constexpr int kParamRobotGainEnd = robotGainParam(kRobotGainRobots, 0);
+
+namespace law_gain_detail {
+template <class Law, bool = aurora_control::ChosenAtRunTime<Law>::value>
+struct OwnGains {
+  static constexpr int kCount = Law::kGainCount;
+};
+template <class Law>
+struct OwnGains<Law, true> {  // the AR.Drone's: the rows above
+  static constexpr int kCount = 0;
+};
+}  // namespace law_gain_detail
+
+// Where Law's block starts among the laws' own gains of `list` (0, 10, ...;
+// -1: not in it), and how many they are in all.
+template <class Law, class... L>
+constexpr int lawGainOffset(aurora_common::TypeList<L...>) {
+  const int counts[] = {0, law_gain_detail::OwnGains<L>::kCount...};
+  const bool is[] = {false, std::is_same<Law, L>::value...};
+  int offset = 0;
+  for (int i = 1; i <= int(sizeof...(L)); ++i) {
+    if (is[i]) return offset;
+    offset += counts[i];
+  }
+  return -1;
+}
+template <class... L>
+constexpr int lawGainTotal(aurora_common::TypeList<L...>) {
+  const int counts[] = {0, law_gain_detail::OwnGains<L>::kCount...};
+  int total = 0;
+  for (int c : counts) total += c;
+  return total;
+}
+// The parameter of the laws' own gain at `offset`: in the room, else after
+// the robots' gains.
+AURORA_HD constexpr int lawGainParamAt(int offset) {
+  return offset < kLawGainRoom ? kParamFirstLawGain + offset : kParamRobotGainEnd + offset - kLawGainRoom;
+}
+constexpr int kLawGainCount = lawGainTotal(aurora_control::KnownLaws());
+
+// Law's block of sweep parameters: kFirst .. kFirst + kCount.
+template <class Law>
+struct LawGainBlock {
+  static constexpr int kOffset = lawGainOffset<Law>(aurora_control::KnownLaws());
+  static_assert(kOffset >= 0, "a law of the laws' list (other_laws.h)");
+  static constexpr int kCount = law_gain_detail::OwnGains<Law>::kCount;
+  static_assert(kOffset >= kLawGainRoom || kOffset + kCount <= kLawGainRoom, "a law's block within one room");
+  static constexpr int kFirst = lawGainParamAt(kOffset);
+};
+// Their definitions (C++14: a test's EXPECT_EQ takes them by reference).
+template <class Law>
+constexpr int LawGainBlock<Law>::kOffset;
+template <class Law>
+constexpr int LawGainBlock<Law>::kCount;
+template <class Law>
+constexpr int LawGainBlock<Law>::kFirst;
+
+constexpr int kParamCount = kParamRobotGainEnd + (kLawGainCount > kLawGainRoom ? kLawGainCount - kLawGainRoom : 0);
 
 // The line of two drones (the shape a sweep file flies today).
 constexpr ShapeLayout kLineLayout{2, 6};

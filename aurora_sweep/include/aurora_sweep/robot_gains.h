@@ -14,14 +14,32 @@
 #include "aurora_common/host_device.h"
 #include "aurora_control/law/control_law.h"
 #include "aurora_control/law/either_law.h"
+#include "aurora_control/law/law_gain_rows.h"
 #include "aurora_control/params/limits.h"
 #include "aurora_sweep/sweep_gains.h"
 
 namespace aurora_sweep {
 
+// Every other law (the laws' list): the rows its own declaration gives
+// (law_gain_rows.h), its block.
 template <class Law>
-struct RobotGains;
-
+struct RobotGains {
+  static_assert(Law::kGainCount <= kRobotGainRoom, "a robot's law whose gains exceed a robot's block");
+  template <class Params>
+  static const char* law(const Params&) {
+    return Law::name();
+  }
+  template <class Params>
+  static std::vector<LawGainRow> rows(const Params&) {
+    std::vector<LawGainRow> r;
+    for (int i = 0; i < Law::kGainCount; ++i) r.push_back(Law::gainRow(i));
+    return r;
+  }
+  template <class Gains, class Params>
+  AURORA_HD static void set(Gains& g, const Params&, const double* v) {
+    Law::giveGains(g, v);
+  }
+};
 // The AR.Drone's laws: the PD law's kp, kd; the underactuated law's 12
 // gains (underactuatedGainName order).
 template <aurora_control::LawType L>
@@ -47,32 +65,6 @@ struct RobotGains<aurora_control::ArdroneLaw<L>> {
     }
   }
 };
-
-// The laws SweepGains lists (the Bebop 2 compensator, the Pioneer's two):
-// their rows, their block.
-template <class Law>
-struct ListedRobotGains {
-  template <class Params>
-  static const char* law(const Params&) {
-    return Law::name();
-  }
-  template <class Params>
-  static std::vector<LawGainRow> rows(const Params&) {
-    std::vector<LawGainRow> r;
-    for (int i = 0; i < SweepGains<Law>::kCount; ++i) r.push_back(SweepGains<Law>::row(i));
-    return r;
-  }
-  template <class Gains, class Params>
-  AURORA_HD static void set(Gains& g, const Params&, const double* v) {
-    SweepGains<Law>::set(g, v);
-  }
-};
-template <>
-struct RobotGains<aurora_control::Bebop2Compensator> : ListedRobotGains<aurora_control::Bebop2Compensator> {};
-template <>
-struct RobotGains<aurora_control::PioneerDynamic> : ListedRobotGains<aurora_control::PioneerDynamic> {};
-template <>
-struct RobotGains<aurora_control::PioneerKinematic> : ListedRobotGains<aurora_control::PioneerKinematic> {};
 
 // A mixed crew's robot: the law its parameters choose.
 template <class First, class Second>

@@ -134,9 +134,9 @@ void addOtherVehicle(Crc& crc, const SweepSpec& spec) {
     crc.add(params);
   };
   spec.vehicles.withType(spec.vehicle_type, add);
-  for (int id = kParamFirstLawGain; id < kParamLawGainEnd; ++id) {
+  forEachLawGainParam([&](int id) {
     if (spec.accepts(id)) crc.add(id), crc.add(spec.fixed[id]);
-  }
+  });
 }
 
 }  // namespace
@@ -199,7 +199,7 @@ uint32_t definitionHash(const SweepSpec& spec) {
     }
     if (spec.variesFormationLaw()) crc.add(spec.fixed[kParamFormationLaw]);
     addFormationPredictors(crc, spec);
-    for (int id = kParamFirstRobotGain; id < kParamCount; ++id) {  // the robots' gains it gives (older hashes stay)
+    for (int id = kParamFirstRobotGain; id < kParamRobotGainEnd; ++id) {  // the robots' gains it gives (older hashes stay)
       if (spec.given(id)) crc.add(id), crc.add(spec.fixed[id]);
     }
   }

@@ -49,16 +49,16 @@ void addShapeParams(std::vector<ParamInfo>& t) {
   }
 }
 
-// Law `Law`'s own gains where SweepGains<Law> puts them (its rows).
+// Law `Law`'s own gains (its declaration's rows) where its block is.
 template <class Law>
 void addLawGains(std::vector<ParamInfo>& t) {
-  using Gains = SweepGains<Law>;
-  for (int i = 0; i < Gains::kCount; ++i) {
-    const LawGainRow row = Gains::row(i);
+  using Block = LawGainBlock<Law>;
+  for (int i = 0; i < Block::kCount; ++i) {
+    const LawGainRow row = Law::gainRow(i);
     const std::string limit = row.whole ? "whole model steps between the law's runs (1: every step)"
                                         : "the range of the law's controller file";
     ParamInfo info{row.name, ParamGroup::kLawGain, row.min, row.max, limit, row.whole, Law::name(), row.preset};
-    t[Gains::kFirst + i] = info;
+    t[Block::kFirst + i] = info;
   }
 }
 

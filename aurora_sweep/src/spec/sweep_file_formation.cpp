@@ -30,7 +30,7 @@ void refusePredictorHorizon(const aurora_control::YamlReader& r, const SweepSpec
 // (k1_x_2); their values NaN: each robot keeps its file's gains unless the
 // sweep gives one.
 void nameRobotGains(SweepSpec& spec) {
-  spec.robot_gains.assign(kParamCount - kParamFirstRobotGain, ParamInfo{"", ParamGroup::kUnused, 0.0, 0.0, "", false});
+  spec.robot_gains.assign(kParamRobotGainEnd - kParamFirstRobotGain, ParamInfo{"", ParamGroup::kUnused, 0.0, 0.0, "", false});
   spec.withFormation([&](const auto& run, auto law) {
     using Gains = RobotGains<decltype(law)>;
     for (int d = 0; d < spec.layout().robots; ++d) {

@@ -11,6 +11,7 @@
 
 #include "aurora_common/host_device.h"
 #include "aurora_common/scalar_math.h"
+#include "aurora_control/law/law_gain_rows.h"
 #include "aurora_control/law/law_of.h"
 #include "aurora_control/task/task.h"
 #include "aurora_sim/vehicle/bebop2/bebop2.h"
@@ -94,6 +95,27 @@ struct Bebop2Compensator : LawOf<Bebop2Compensator, aurora_sim::Bebop2, Compensa
     }
   };
   static const char* name() { return "bebop2_compensator"; }
+
+  // The gains a sweep varies (law_gain_rows.h): ksp, ksd, kp on xy, z,
+  // yaw (x and y as one, as AuRoRA's are equal), then period_steps (1:
+  // 30 Hz, 6: 5 Hz). Its unread kd group keeps AuRoRA's values.
+  static constexpr int kGainCount = 10;
+  static GainRow gainRow(int i) {
+    static const char* const names[kGainCount] = {"ksp_xy", "ksp_z", "ksp_yaw", "ksd_xy", "ksd_z",
+                                                  "ksd_yaw", "kp_xy", "kp_z", "kp_yaw", "period_steps"};
+    const auto d = CompensatorGains<double>::defaults();
+    const double* group[3] = {d.ksp, d.ksd, d.kp};
+    if (i == 9) return GainRow{names[i], d.period_steps, 1.0, 30.0, true};
+    return GainRow{names[i], group[i / 3][i % 3 == 0 ? 0 : i % 3 + 1], 0.0, kCompensatorGainMax, false};
+  }
+  template <typename T>
+  AURORA_HD static void giveGains(Gains<T>& g, const double* v) {
+    T* group[3] = {g.ksp, g.ksd, g.kp};
+    for (int j = 0; j < 3; ++j) {
+      for (int axis = 0; axis < 4; ++axis) giveGain(group[j][axis], v[3 * j + (axis < 2 ? 0 : axis - 1)]);
+    }
+    giveGain(g.period_steps, v[9]);
+  }
 
   // Every period_steps calls it runs on the state X it received towards
   // ref, with dt = period_steps Ts; in between it gives the held command.

@@ -143,4 +143,17 @@ inline long compensatorPeriod(const std::string& given, double rate, double Ts) 
   return whole;
 }
 
+// The compensator's gains from a controller mapping (a controller file's
+// 'controller:', or the node's ~controller) for a vehicle of sample time Ts:
+// its period from its rate (each law's readLawGains, which
+// law_settings_yaml.h's readLawMapping calls).
+inline void readLawGains(const YamlReader& r, const YAML::Node& c, const std::string& key, CompensatorGains<double>& g,
+                         double Ts) {
+  CompensatorFile f;
+  readCompensator(r, c, key, f);
+  g = f.gains;
+  const std::string given = "parameter '" + r.key(key, "rate") + "' = " + YamlReader::fmt(f.rate);
+  g.period_steps = double(compensatorPeriod(given, f.rate, Ts));
+}
+
 }  // namespace aurora_control

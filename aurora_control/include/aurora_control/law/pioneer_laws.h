@@ -9,6 +9,7 @@
 
 #include "aurora_common/host_device.h"
 #include "aurora_common/scalar_math.h"
+#include "aurora_control/law/law_gain_rows.h"
 #include "aurora_control/law/law_of.h"
 #include "aurora_control/task/task.h"
 #include "aurora_sim/vehicle/pioneer3dx/pioneer3dx.h"
@@ -96,6 +97,18 @@ struct PioneerKinematic
   using Input = PioneerInput<3>;
   static const char* name() { return "pioneer_kinematic"; }
 
+  // The gains a sweep varies (law_gain_rows.h): k1, k2, x and y as one.
+  static constexpr int kGainCount = 2;
+  static GainRow gainRow(int i) {
+    const auto d = PioneerKinematicGains<double>::defaults();
+    return GainRow{i == 0 ? "k1" : "k2", i == 0 ? d.k1[0] : d.k2[0], 0.0, kPioneerGainMax, false};
+  }
+  template <typename T>
+  AURORA_HD static void giveGains(Gains<T>& g, const double* v) {
+    giveGain(g.k1[0], v[0]), giveGain(g.k1[1], v[0]);
+    giveGain(g.k2[0], v[1]), giveGain(g.k2[1], v[1]);
+  }
+
   template <typename T>
   AURORA_HD static void command(const aurora_sim::PioneerParams<T>& model, const Gains<T>& g, Memory<T>&,
                                 const Reference<T>& ref, const T X[Vehicle::kStates], T U[Vehicle::kInputs],
@@ -111,6 +124,23 @@ struct PioneerKinematic
 struct PioneerDynamic : LawOf<PioneerDynamic, aurora_sim::Pioneer3dx, PioneerDynamicGains, PioneerDynamicMemory> {
   using Input = PioneerInput<5>;
   static const char* name() { return "pioneer_dynamic"; }
+
+  // The gains a sweep varies (law_gain_rows.h): kc1, kc2 (x and y as one),
+  // kd1 and kd2 on u and omega.
+  static constexpr int kGainCount = 6;
+  static GainRow gainRow(int i) {
+    static const char* const names[kGainCount] = {"kc1", "kc2", "kd1_u", "kd1_omega", "kd2_u", "kd2_omega"};
+    const auto d = PioneerDynamicGains<double>::defaults();
+    const double preset[kGainCount] = {d.kc1[0], d.kc2[0], d.kd1[0], d.kd1[1], d.kd2[0], d.kd2[1]};
+    return GainRow{names[i], preset[i], 0.0, kPioneerGainMax, false};
+  }
+  template <typename T>
+  AURORA_HD static void giveGains(Gains<T>& g, const double* v) {
+    giveGain(g.kc1[0], v[0]), giveGain(g.kc1[1], v[0]);
+    giveGain(g.kc2[0], v[1]), giveGain(g.kc2[1], v[1]);
+    giveGain(g.kd1[0], v[2]), giveGain(g.kd1[1], v[3]);
+    giveGain(g.kd2[0], v[4]), giveGain(g.kd2[1], v[5]);
+  }
 
   template <typename T>
   AURORA_HD static void command(const aurora_sim::PioneerParams<T>& model, const Gains<T>& g, Memory<T>& m,

@@ -45,6 +45,17 @@ inline void readPioneerGains(const YamlReader& r, const YAML::Node& c, const std
   }
 }
 
+// Each law's gains from a controller mapping (law_settings_yaml.h's
+// readLawMapping): both run every model step, whatever the vehicle's Ts.
+inline void readLawGains(const YamlReader& r, const YAML::Node& c, const std::string& key,
+                         PioneerKinematicGains<double>& g, double /*Ts*/) {
+  readPioneerGains(r, c, key, g);
+}
+inline void readLawGains(const YamlReader& r, const YAML::Node& c, const std::string& key,
+                         PioneerDynamicGains<double>& g, double /*Ts*/) {
+  readPioneerGains(r, c, key, g);
+}
+
 // Law's gains from its controller file (controller.name is Law::name()).
 template <class Law>
 typename Law::template Gains<double> readPioneerFile(const std::string& path) {

@@ -22,18 +22,11 @@ inline void readLawMapping(const YamlReader& r, const YAML::Node& c, const std::
   readLaw(r, c, key, set);
 }
 
-inline void readLawMapping(const YamlReader& r, const YAML::Node& c, const std::string& key,
-                           LawSettings<Bebop2Compensator>& set) {
-  CompensatorFile f;
-  readCompensator(r, c, key, f);
-  set.gains = f.gains;
-  const std::string given = "parameter '" + r.key(key, "rate") + "' = " + YamlReader::fmt(f.rate);
-  set.gains.period_steps = double(compensatorPeriod(given, f.rate, set.Ts));
-}
-
+// Every other law: the reader its controller-file header gives
+// (readLawGains(reader, mapping, key, gains, Ts), found by its gains' type).
 template <class Law>
 void readLawMapping(const YamlReader& r, const YAML::Node& c, const std::string& key, LawSettings<Law>& set) {
-  readPioneerGains(r, c, key, set.gains);
+  readLawGains(r, c, key, set.gains, set.Ts);
 }
 
 // The law's name and its gains in force by name (Control.gain_names).

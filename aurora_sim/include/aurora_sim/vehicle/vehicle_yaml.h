@@ -51,11 +51,14 @@ inline void vehicleFileLeaves(const YAML::Node& node, const std::string& at, std
 
 // A key a `Vehicle` file does not have (a typo, another vehicle's key) is
 // refused naming it and the accepted ones: it would be silently ignored.
+// Every file may say how rviz draws the vehicle (rviz_body: the
+// simulator's drone_marker reads it; no model does).
 template <class Vehicle>
 void refuseUnknownVehicleKeys(const YAML::Node& root, const std::string& path) {
   std::vector<std::string> leaves, accepted{"type"};
   vehicleFileLeaves(root, "", leaves);
   for (const auto& key : Vehicle::fileKeys()) accepted.push_back(key.name);
+  accepted.insert(accepted.end(), {"rviz_body/form", "rviz_body/size"});  // drone_marker's, not the model's
   for (const std::string& leaf : leaves) {
     if (std::find(accepted.begin(), accepted.end(), leaf) != accepted.end()) continue;
     std::string names;

@@ -1,0 +1,34 @@
+// What a law declares of the gains a sweep may vary (docs/architecture.md,
+// "Laws"; docs/delay-and-study.md, "Sweeping any parameter"): each law
+// listed in other_laws.h gives, in its own header,
+//
+//   static constexpr int kGainCount;          // its sweep parameters
+//   static GainRow gainRow(int i);            // name, default, range (host)
+//   template <typename T> AURORA_HD
+//   static void giveGains(Gains<T>& g, const double* v);  // a block into g
+//
+// and the sweep places the block (aurora_sweep/sweep_gains.h), names its
+// rows in the parameter table, records them and hashes them: nothing of a
+// law's gains is written outside its own files.
+#pragma once
+
+#include "aurora_common/host_device.h"
+
+namespace aurora_control {
+
+// One gain a sweep may vary: its name, its default (the law's defaults()),
+// its accepted range, whole values only.
+struct GainRow {
+  const char* name;
+  double preset, min, max;
+  bool whole;
+};
+
+// A swept value into a gain; NaN (a formation sweep's robot gain it does
+// not give) keeps the gain's value.
+template <typename T>
+AURORA_HD inline void giveGain(T& gain, double v) {
+  if (v == v) gain = T(v);
+}
+
+}  // namespace aurora_control
