@@ -211,6 +211,40 @@ TEST(Pioneer3dx, TheShippedFilesFlyTheStandardScenario) {
   expectRel(x[1], 0.15109471049556722, 1e-13, "x after one step");
 }
 
+// The flight any law gets from its controller file without options of its
+// own (loadLawFlight: a new law's, until it needs its own) reads the same
+// gains from the Pioneer's files and flies the same steps as the Pioneer's
+// own loader; it clamps (as drivers do) where the Pioneer's laws saturate.
+TEST(Pioneer3dx, AnyLawsFlightReadsItsGainsByItsOwnReader) {
+  const std::string c = AURORA_CONFIG_DIR;
+  const aurora_control::FlightFiles files{c + "/controllers/pioneer_dynamic.yaml",
+                                          c + "/tasks/pioneer_lemniscate.yaml", c + "/vehicles/pioneer3dx.yaml", ""};
+  const auto own = aurora_control::loadPioneerFlight<PioneerDynamic>(files);
+  const auto any = aurora_control::loadLawFlight<PioneerDynamic>(files);
+  EXPECT_EQ(any.steps, own.steps);
+  for (int i = 0; i < 2; ++i) {
+    EXPECT_EQ(any.run.gains.kc1[i], own.run.gains.kc1[i]);
+    EXPECT_EQ(any.run.gains.kd2[i], own.run.gains.kd2[i]);
+  }
+  EXPECT_TRUE(any.cfg.clamp_commands);
+  EXPECT_FALSE(own.cfg.clamp_commands);
+  std::vector<double> x_own, x_any;
+  aurora_control::flyLaw<PioneerDynamic>(own.run, own.cfg, 50, [&](const auto& o, double) { x_own.push_back(o.X_before[aurora_sim::kX]); });
+  aurora_control::flyLaw<PioneerDynamic>(any.run, any.cfg, 50, [&](const auto& o, double) { x_any.push_back(o.X_before[aurora_sim::kX]); });
+  EXPECT_EQ(x_any, x_own);  // its commands are within the unit range: the clamp changes nothing
+  aurora_control::FlightFiles unclamped = files;
+  unclamped.no_clamp = true;
+  EXPECT_FALSE(aurora_control::loadLawFlight<PioneerDynamic>(unclamped).cfg.clamp_at_drone);
+  aurora_control::FlightFiles wrong = files;
+  wrong.controller = c + "/controllers/pioneer_kinematic.yaml";  // k1, k2: not the dynamic law's keys
+  try {
+    aurora_control::loadLawFlight<PioneerDynamic>(wrong);
+    ADD_FAILURE() << "a kinematic law's file read as the dynamic law's";
+  } catch (const aurora_common::ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("controller.k1"), std::string::npos) << e.what();
+  }
+}
+
 namespace {
 
 // The ConfigError a Pioneer dynamic controller file of `text` is refused with.

@@ -8,10 +8,9 @@
 #include <type_traits>
 
 #include "aurora_control/loop/flight_runner.h"
-#include "aurora_control/law/compensator_yaml.h"
 #include "aurora_control/loop/law_yaml.h"
 #include "aurora_control/law/other_laws.h"
-#include "aurora_control/law/pioneer_yaml.h"
+#include "aurora_control/loop/law_settings_yaml.h"  // every law's controller-file reader
 #include "aurora_control/params/limits.h"
 #include "aurora_control/predictor/predictor_yaml.h"
 #include "aurora_control/link/link_yaml.h"
@@ -147,20 +146,41 @@ LawFlight<Law> loadPioneerFlight(const FlightFiles& f, const std::string& no_cla
   return lawFlight<Law>(f, readPioneerFile<Law>(f.controller));
 }
 
-// The flight of law `law` from the files: the compensator's with its rate,
-// a Pioneer law's without a clamp to leave out (withFlight's, per law).
+// Any law's flight from its controller file: its gains by its own reader
+// (readLawGains, given the vehicle's Ts), its commands clamped to the unit
+// range, as the drivers clamp, unless no_clamp. A law with options of its
+// own has a loadFlightOf of its own (below).
+template <class Law>
+LawFlight<Law> loadLawFlight(const FlightFiles& f) {
+  const YAML::Node root = loadYamlFile("controller file", f.controller);
+  const YamlReader r("controller file '" + f.controller + "': ");
+  r.onlyKeys(root, "", {"controller", "predictor"});  // predictor: predictor_yaml.h
+  LawFlight<Law> s = lawFlight<Law>(f, Law::template Gains<double>::defaults());
+  readLawGains(r, root["controller"], "controller", s.run.gains, s.run.plant.Ts);
+  s.cfg.clamp_commands = s.cfg.clamp_at_drone = !f.no_clamp;
+  return s;
+}
+
+// The flight of law `law` from the files (withFlight's, per law): the
+// compensator's with its rate, a Pioneer law's without a clamp to leave
+// out, any other law's loadLawFlight.
 struct FlightOptionNames {
   double rate;                  // [Hz] the compensator's instead of its file's (0: the file's)
   std::string rate_option;      // how the rate was given, for a refusal ("--rate ", "rate=")
   std::string no_clamp_option;  // how no clamp was asked for ("--no-clamp", "clamp=False")
 };
+template <class Law>
+LawFlight<Law> loadFlightOf(Law, const FlightFiles& f, const FlightOptionNames&) {
+  return loadLawFlight<Law>(f);
+}
 inline LawFlight<Bebop2Compensator> loadFlightOf(Bebop2Compensator, const FlightFiles& f, const FlightOptionNames& o) {
   return loadCompensatorFlight(f, o.rate, o.rate_option);
 }
-template <class Law>
-LawFlight<Law> loadFlightOf(Law, const FlightFiles& f, const FlightOptionNames& o) {
-  static_assert(std::is_same<typename Law::Vehicle, aurora_sim::Pioneer3dx>::value, "a Pioneer law's flight");
-  return loadPioneerFlight<Law>(f, o.no_clamp_option);
+inline LawFlight<PioneerDynamic> loadFlightOf(PioneerDynamic, const FlightFiles& f, const FlightOptionNames& o) {
+  return loadPioneerFlight<PioneerDynamic>(f, o.no_clamp_option);
+}
+inline LawFlight<PioneerKinematic> loadFlightOf(PioneerKinematic, const FlightFiles& f, const FlightOptionNames& o) {
+  return loadPioneerFlight<PioneerKinematic>(f, o.no_clamp_option);
 }
 
 // The controller file's predictor (predictor_yaml.h) put into flight `s`:

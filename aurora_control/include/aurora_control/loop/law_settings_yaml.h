@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-#include "aurora_control/law/compensator_yaml.h"
+#include "aurora_control/law/compensator_yaml.h"  // each law's controller-file reader, one line each
 #include "aurora_control/loop/law_yaml.h"
 #include "aurora_control/law/pioneer_yaml.h"
 #include "aurora_control/loop/delayed_controller.h"
