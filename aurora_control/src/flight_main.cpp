@@ -126,7 +126,7 @@ void resolve(const po::variables_map& vm, const std::string& config, Options& o)
       throw ConfigError("--rate " + YamlReader::fmt(o.rate) + " is refused: accepted a rate above 0 Hz that divides "
                         "the vehicle's (30 Hz: 30, 15, 10, 7.5, 6, 5, ...)");
     }
-    refuseRateFor(o.flown, o.rate, "--rate");
+    refuseRateFor(o.flown_law, o.rate, "--rate");
   }
   for (const auto& option : vm) {
     if (!option.second.defaulted()) o.given.push_back(option.first);

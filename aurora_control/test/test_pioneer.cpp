@@ -280,3 +280,23 @@ TEST(Pioneer3dx, ABadControllerFileIsRefusedNamingTheKey) {
   e = refusalOf(good.substr(0, good.size() - 1) + ", accel_interval: -1}");
   EXPECT_NE(e.find("'controller.accel_interval' = -1 is outside the accepted range [0, 10]"), std::string::npos) << e;
 }
+
+// A rate given for a law is accepted only for the laws that declare one of
+// their own (lawHasRate): the Pioneer's laws and the AR.Drone's run every
+// model step, and the refusal names the laws that have a rate.
+TEST(Pioneer3dx, ARateIsRefusedForALawThatHasNoneOfItsOwn) {
+  EXPECT_TRUE(aurora_control::lawHasRate<aurora_control::Bebop2Compensator>());
+  EXPECT_FALSE(aurora_control::lawHasRate<PioneerDynamic>());
+  EXPECT_EQ(aurora_control::lawsWithARate(), std::vector<std::string>{"bebop2_compensator"});
+  EXPECT_NO_THROW(aurora_control::refuseRateFor("bebop2_compensator", 10.0, "--rate"));
+  EXPECT_NO_THROW(aurora_control::refuseRateFor("pioneer_dynamic", 0.0, "--rate"));  // none given
+  try {
+    aurora_control::refuseRateFor("pioneer_kinematic", 5.0, "--rate");
+    ADD_FAILURE() << "a rate for the Pioneer's kinematic law accepted";
+  } catch (const aurora_common::ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("--rate is refused here: it sets the rate of a law that runs at one of its "
+                                         "own (bebop2_compensator); 'pioneer_kinematic'"),
+              std::string::npos)
+        << e.what();
+  }
+}

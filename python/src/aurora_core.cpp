@@ -74,13 +74,13 @@ py::dict flightArrays(const Flight& f) {
 }
 
 // One flight from its files, as the flight tool flies it: the controller
-// file's law chooses the vehicle; `rate` [Hz] (0: the file's) is the Bebop
-// 2 compensator's.
+// file's law chooses the vehicle; `rate` [Hz] (0: the file's) is its law's,
+// for a law that runs at a rate of its own (lawHasRate).
 py::dict simulateFiles(const std::string& controller, const std::string& task, const std::string& vehicle, long delay,
                        const std::string& link, bool clamp, double rate) {
   const FlightFiles files{controller, task, vehicle, link, delay, !clamp};
   const std::string law = controllerFileName(controller);
-  refuseRateFor(vehicleOfLaw(law), rate, "rate=" + YamlReader::fmt(rate));
+  refuseRateFor(law, rate, "rate=" + YamlReader::fmt(rate));
   py::dict out;
   withFlight(files, law, {rate, "rate=", "clamp=False"}, [&](const auto& f) { out = flightArrays(f); });
   return out;

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 #include <type_traits>
 
 #include "aurora_common/named_list.h"
@@ -51,6 +52,33 @@ void forEachOtherLaw(F&& f) {
 template <class F>
 bool withOtherLaw(const std::string& name, F&& f) {
   return aurora_common::withEntryNamed([](auto&& g) { forEachOtherLaw(g); }, name, f);
+}
+
+namespace law_list_detail {
+template <class Law>
+constexpr bool hasRate(decltype(Law::kHasRate)*) {
+  return Law::kHasRate;
+}
+template <class Law>
+constexpr bool hasRate(...) {
+  return false;
+}
+}  // namespace law_list_detail
+
+// Whether law `Law` runs at a rate of its own (its declaration's kHasRate;
+// without one, every model step).
+template <class Law>
+constexpr bool lawHasRate() {
+  return law_list_detail::hasRate<Law>(nullptr);
+}
+
+// The names of the laws that run at a rate of their own ("bebop2_compensator").
+inline std::vector<std::string> lawsWithARate() {
+  std::vector<std::string> names;
+  forEachLaw([&](auto law) {
+    if (lawHasRate<decltype(law)>()) names.push_back(law.name());
+  });
+  return names;
 }
 
 // Every law's name, comma separated ("pd_saturated, underactuated, ..."),

@@ -4,6 +4,7 @@
 // files, refused with the node's messages (ConfigError naming the key).
 #pragma once
 
+#include <algorithm>
 #include <string>
 #include <type_traits>
 
@@ -78,14 +79,16 @@ inline std::string controllerVehicle(const std::string& controller_file) {
   return vehicleOfLaw(controllerFileName(controller_file));
 }
 
-// A rate given (`given`, e.g. "--rate", non-zero `rate`) for a law that has
-// none of its own (one flying `vehicle`, controllerVehicle's) is refused.
-inline void refuseRateFor(const std::string& vehicle, double rate, const std::string& given) {
-  if (rate != 0.0 && vehicle != aurora_sim::Bebop2::name()) {
-    throw ConfigError(given + " is refused here: it sets the Bebop 2 compensator's rate (controller "
-                      "bebop2_compensator); the AR.Drone's and the Pioneer's laws and a formation run at the "
-                      "vehicle's rate");
-  }
+// A rate given (`given`, e.g. "--rate", non-zero `rate`) for law `law` (a
+// controller file's law name) that has none of its own (lawHasRate) is
+// refused, naming the laws that have one.
+inline void refuseRateFor(const std::string& law, double rate, const std::string& given) {
+  const std::vector<std::string> with = lawsWithARate();
+  if (rate == 0.0 || std::find(with.begin(), with.end(), law) != with.end()) return;
+  std::string names;
+  for (const std::string& n : with) names += (names.empty() ? "" : ", ") + n;
+  throw ConfigError(given + " is refused here: it sets the rate of a law that runs at one of its own (" + names +
+                    "); '" + law + "' and a formation run at the vehicle's rate");
 }
 
 // A flight of `Law` with `gains` on the vehicle file (as plant and as the
