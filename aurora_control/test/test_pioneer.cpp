@@ -287,7 +287,7 @@ TEST(Pioneer3dx, ABadControllerFileIsRefusedNamingTheKey) {
 TEST(Pioneer3dx, ARateIsRefusedForALawThatHasNoneOfItsOwn) {
   EXPECT_TRUE(aurora_control::lawHasRate<aurora_control::Bebop2Compensator>());
   EXPECT_FALSE(aurora_control::lawHasRate<PioneerDynamic>());
-  EXPECT_EQ(aurora_control::lawsWithARate(), std::vector<std::string>{"bebop2_compensator"});
+  EXPECT_EQ(aurora_common::entryNames([](auto&& f) { aurora_control::forEachLawWithARate(f); }), "bebop2_compensator");
   EXPECT_NO_THROW(aurora_control::refuseRateFor("bebop2_compensator", 10.0, "--rate"));
   EXPECT_NO_THROW(aurora_control::refuseRateFor("pioneer_dynamic", 0.0, "--rate"));  // none given
   try {

@@ -96,7 +96,7 @@ struct Bebop2Compensator : LawOf<Bebop2Compensator, aurora_sim::Bebop2, Compensa
   };
   static const char* name() { return "bebop2_compensator"; }
   // It runs at a rate of its own (its file's `rate`, flight's --rate): a
-  // whole number of model steps (other_laws.h, lawsWithARate).
+  // whole number of model steps (other_laws.h, lawHasRate).
   static constexpr bool kHasRate = true;
 
   // The gains a sweep varies (law_gain_rows.h): ksp, ksd, kp on xy, z,

@@ -156,4 +156,17 @@ inline void readLawGains(const YamlReader& r, const YAML::Node& c, const std::st
   g.period_steps = double(compensatorPeriod(given, f.rate, Ts));
 }
 
+// Law's gains from its controller file (controller.name is Law::name()),
+// for a vehicle of sample time Ts, by the law's own readLawGains; the file
+// holds its 'controller:' and may hold a 'predictor:' (predictor_yaml.h).
+template <class Law>
+typename Law::template Gains<double> readLawFile(const std::string& path, double Ts) {
+  const YAML::Node root = loadYamlFile("controller file", path);
+  const YamlReader r("controller file '" + path + "': ");
+  r.onlyKeys(root, "", {"controller", "predictor"});
+  typename Law::template Gains<double> g = Law::template Gains<double>::defaults();
+  readLawGains(r, root["controller"], "controller", g, Ts);
+  return g;
+}
+
 }  // namespace aurora_control

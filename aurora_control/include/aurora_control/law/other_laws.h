@@ -5,7 +5,6 @@
 #pragma once
 
 #include <string>
-#include <vector>
 #include <type_traits>
 
 #include "aurora_common/named_list.h"
@@ -72,13 +71,12 @@ constexpr bool lawHasRate() {
   return law_list_detail::hasRate<Law>(nullptr);
 }
 
-// The names of the laws that run at a rate of their own ("bebop2_compensator").
-inline std::vector<std::string> lawsWithARate() {
-  std::vector<std::string> names;
+// Calls f(Law()) for each law of the list that runs at a rate of its own.
+template <class F>
+void forEachLawWithARate(F&& f) {
   forEachLaw([&](auto law) {
-    if (lawHasRate<decltype(law)>()) names.push_back(law.name());
+    if (lawHasRate<decltype(law)>()) f(law);
   });
-  return names;
 }
 
 // Every law's name, comma separated ("pd_saturated, underactuated, ..."),

@@ -56,15 +56,11 @@ inline void readLawGains(const YamlReader& r, const YAML::Node& c, const std::st
   readPioneerGains(r, c, key, g);
 }
 
-// Law's gains from its controller file (controller.name is Law::name()).
+// Law's gains from its controller file (controller.name is Law::name()):
+// readLawFile's, whatever the vehicle's Ts (they run every model step).
 template <class Law>
 typename Law::template Gains<double> readPioneerFile(const std::string& path) {
-  const YAML::Node root = loadYamlFile("controller file", path);
-  const YamlReader r("controller file '" + path + "': ");
-  r.onlyKeys(root, "", {"controller", "predictor"});  // predictor: predictor_yaml.h
-  typename Law::template Gains<double> g;
-  readPioneerGains(r, root["controller"], "controller", g);
-  return g;
+  return readLawFile<Law>(path, 0.0);
 }
 
 }  // namespace aurora_control

@@ -4,7 +4,6 @@
 // files, refused with the node's messages (ConfigError naming the key).
 #pragma once
 
-#include <algorithm>
 #include <string>
 #include <type_traits>
 
@@ -83,12 +82,10 @@ inline std::string controllerVehicle(const std::string& controller_file) {
 // controller file's law name) that has none of its own (lawHasRate) is
 // refused, naming the laws that have one.
 inline void refuseRateFor(const std::string& law, double rate, const std::string& given) {
-  const std::vector<std::string> with = lawsWithARate();
-  if (rate == 0.0 || std::find(with.begin(), with.end(), law) != with.end()) return;
-  std::string names;
-  for (const std::string& n : with) names += (names.empty() ? "" : ", ") + n;
-  throw ConfigError(given + " is refused here: it sets the rate of a law that runs at one of its own (" + names +
-                    "); '" + law + "' and a formation run at the vehicle's rate");
+  const auto with = [](auto&& f) { forEachLawWithARate(f); };
+  if (rate == 0.0 || aurora_common::isEntryName(with, law)) return;
+  throw ConfigError(given + " is refused here: it sets the rate of a law that runs at one of its own (" +
+                    aurora_common::entryNames(with) + "); '" + law + "' and a formation run at the vehicle's rate");
 }
 
 // A flight of `Law` with `gains` on the vehicle file (as plant and as the
@@ -155,11 +152,8 @@ LawFlight<Law> loadPioneerFlight(const FlightFiles& f, const std::string& no_cla
 // own has a loadFlightOf of its own (below).
 template <class Law>
 LawFlight<Law> loadLawFlight(const FlightFiles& f) {
-  const YAML::Node root = loadYamlFile("controller file", f.controller);
-  const YamlReader r("controller file '" + f.controller + "': ");
-  r.onlyKeys(root, "", {"controller", "predictor"});  // predictor: predictor_yaml.h
   LawFlight<Law> s = lawFlight<Law>(f, Law::template Gains<double>::defaults());
-  readLawGains(r, root["controller"], "controller", s.run.gains, s.run.plant.Ts);
+  s.run.gains = readLawFile<Law>(f.controller, s.run.plant.Ts);
   s.cfg.clamp_commands = s.cfg.clamp_at_drone = !f.no_clamp;
   return s;
 }
