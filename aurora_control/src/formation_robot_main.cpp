@@ -5,7 +5,10 @@
 //                      (every robot's sample_time is the formation's tick; a
 //                      Pioneer's kinematic_model), for <param type="yaml">;
 //   --print start      its start [x, y, z] in m;
-//   --print namespace  its namespace.
+//   --print namespace  its namespace;
+//   --print ground     true when it drives on the floor (its vehicle's
+//                      kOnGround: formation.launch sends its commands to a
+//                      ground robot's driver).
 #include <yaml-cpp/yaml.h>
 
 #include <boost/program_options.hpp>
@@ -29,11 +32,11 @@ struct Options {
 
 bool parse(int argc, char** argv, Options& o) {
   po::options_description d(
-      "usage: formation_robot FORMATION_FILE --robot N --print vehicle|start|namespace [options]\n\n"
+      "usage: formation_robot FORMATION_FILE --robot N --print vehicle|start|namespace|ground [options]\n\n"
       "Prints what formation.launch gives robot N's sim (docs/formation.md, \"In the ROS loop\").\n\noptions");
   d.add_options()("help,h", "this text")("formation", po::value(&o.formation)->required(), "formation YAML")
       ("robot", po::value(&o.robot)->required(), "the robot, 1-based, in the file's order")
-      ("print", po::value(&o.print)->required(), "vehicle, start or namespace")
+      ("print", po::value(&o.print)->required(), "vehicle, start, namespace or ground")
       ("config-dir", po::value(&o.config_dir)->default_value(""), "the folder the file's paths are in (aurora_config)")
       ("vehicle", po::value(&o.vehicle)->default_value(""), "the two-drone line's drones' vehicle YAML (its file names none)");
   po::positional_options_description positional;
@@ -45,8 +48,8 @@ bool parse(int argc, char** argv, Options& o) {
     return false;
   }
   po::notify(vm);
-  if (o.print != "vehicle" && o.print != "start" && o.print != "namespace") {
-    throw ConfigError("--print " + o.print + " is refused: accepted vehicle, start or namespace");
+  if (o.print != "vehicle" && o.print != "start" && o.print != "namespace" && o.print != "ground") {
+    throw ConfigError("--print " + o.print + " is refused: accepted vehicle, start, namespace or ground");
   }
   return true;
 }
@@ -71,6 +74,7 @@ int run(const Options& o) {
   }
   const CrewRobot& r = crew->robot(o.robot - 1);
   if (o.print == "namespace") std::printf("%s\n", r.name_space.c_str());
+  if (o.print == "ground") std::printf("%s\n", r.ground ? "true" : "false");
   if (o.print == "start") {
     std::printf("[%s, %s, %s]\n", aurora_common::roundTripText(r.start[0]).c_str(),
                 aurora_common::roundTripText(r.start[1]).c_str(), aurora_common::roundTripText(r.start[2]).c_str());
