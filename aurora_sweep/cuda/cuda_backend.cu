@@ -381,7 +381,7 @@ long cudaMaxDelay() { return aurora_control::kMediumHistory - 1; }
 
 std::string cudaDelayProblem(const SweepSpec& spec) {
   bool other_vehicle = false;  // withSweepLaw's choice: another vehicle's law, not the AR.Drone's
-  forEachOtherLaw([&](auto law) { other_vehicle = other_vehicle || spec.controller == law.name(); });
+  aurora_control::forEachOtherLaw([&](auto law) { other_vehicle = other_vehicle || spec.controller == law.name(); });
   if (spec.predicting() && other_vehicle) {
     return "the state predictor (sweep.predictor) has CUDA kernels for the AR.Drone's laws only, not " +
            spec.controller + "'s: use --backend cpu";

@@ -98,20 +98,19 @@ Appended<L...> appendTo(aurora_common::TypeList<L...>) {
 using LawsAndPoint = decltype(appendTo(aurora_control::KnownLaws()));
 
 TEST(Registry, ALawAppendedToTheListTakesItsGainsAfterEveryOlderParameter) {
-  const int offset = lawGainOffset<point_mass::PointPd>(LawsAndPoint());
-  EXPECT_EQ(offset, kLawGainCount);
-  EXPECT_EQ(lawGainTotal(LawsAndPoint()), kLawGainCount + point_mass::PointPd::kGainCount);
-  EXPECT_GE(lawGainParamAt(offset), kParamRobotGainEnd);  // after the robots' gains
-  EXPECT_EQ(lawGainParamAt(offset), kParamCount);         // the room a build with it would add
-  aurora_control::forEachOtherLaw([&](auto law) {
+  const int first = lawGainFirst<point_mass::PointPd>(LawsAndPoint());
+  EXPECT_GE(first, kParamRobotGainEnd);  // after the robots' gains
+  EXPECT_EQ(first, kParamCount);         // the room a build with it would add
+  EXPECT_EQ(lawGainPlace(LawsAndPoint(), 0), kParamCount + point_mass::PointPd::kGainCount);
+  aurora_control::forEachLaw([&](auto law) {  // the AR.Drone's two as every other
     using Law = decltype(law);
-    EXPECT_EQ(lawGainOffset<Law>(LawsAndPoint()), LawGainBlock<Law>::kOffset) << Law::name();
+    EXPECT_EQ(lawGainFirst<Law>(LawsAndPoint()), LawGainBlock<Law>::kFirst) << Law::name();
     for (int i = 0; i < Law::kGainCount; ++i) {  // each row where the table names it
       EXPECT_EQ(paramInfo(LawGainBlock<Law>::kFirst + i, SweepShape::kNone).name, Law::gainRow(i).name);
       EXPECT_EQ(paramInfo(LawGainBlock<Law>::kFirst + i, SweepShape::kNone).law, Law::name());
     }
   });
-  EXPECT_EQ(lawGainOffset<point_mass::PointPd>(aurora_control::KnownLaws()), -1);
+  EXPECT_EQ(lawGainFirst<point_mass::PointPd>(aurora_control::KnownLaws()), -1);
   const auto rows = RobotGains<point_mass::PointPd>::rows(point_mass::Params<double>{});
   ASSERT_EQ(rows.size(), 2u);
   EXPECT_STREQ(rows[0].name, "kp");
@@ -124,8 +123,16 @@ TEST(Registry, ALawAppendedToTheListTakesItsGainsAfterEveryOlderParameter) {
 }
 
 // The laws' own blocks where the records of every shipped study have them
-// (the Bebop 2 compensator's from the first law gain, then the Pioneer's).
+// (the AR.Drone's kp, kd before the delay and its underactuated law's 12
+// after it; the Bebop 2 compensator's from the first law gain, then the
+// Pioneer's).
 TEST(Registry, TheListedLawsBlocksAreWhereTheirRecordsHaveThem) {
+  using aurora_control::ArdroneLaw;
+  using aurora_control::LawType;
+  EXPECT_EQ(LawGainBlock<ArdroneLaw<LawType::kPdSaturated>>::kFirst, kParamKp);
+  EXPECT_EQ(LawGainBlock<ArdroneLaw<LawType::kPdSaturated>>::kFirst + 1, kParamKd);
+  EXPECT_EQ(LawGainBlock<ArdroneLaw<LawType::kUnderactuated>>::kFirst, kParamFirstUnderactuatedGain);
+  EXPECT_EQ(LawGainBlock<ArdroneLaw<LawType::kUnderactuated>>::kCount, kUnderactuatedGainCount);
   EXPECT_EQ(LawGainBlock<aurora_control::Bebop2Compensator>::kFirst, kParamFirstLawGain);
   EXPECT_EQ(LawGainBlock<aurora_control::PioneerDynamic>::kFirst, kParamFirstLawGain + 10);
   EXPECT_EQ(LawGainBlock<aurora_control::PioneerKinematic>::kFirst, kParamFirstLawGain + 16);

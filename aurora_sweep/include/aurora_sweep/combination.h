@@ -66,13 +66,14 @@ AURORA_HD constexpr ShapeLayout shapeLayout() {
   return layoutOf<Shape>();
 }
 
-// The laws' own gains (each law's kGainCount rows, law_gain_rows.h), in the
-// order of the laws' list (aurora_control/law/other_laws.h; the AR.Drone's
-// two, whose gains are the rows above, have none here). The room of
-// kLawGainRoom holds the first laws' blocks where their records have them
-// (the Bebop 2 compensator's 10, the Pioneer's dynamic law's 6, its
-// kinematic law's 2); a law appended to the list takes its block after the
-// robots' gains, so no parameter moves (records, hashes stay).
+// The laws' own gains (each law's kGainCount rows, law_gain_rows.h), in
+// the order of the laws' list (aurora_control/law/other_laws.h), fill the
+// record's rooms for them, each block within one room: the first law's
+// (the PD law's kp, kd) before the delay, the second's (the underactuated
+// law's 12) after it, kLawGainRoom after the formation parameters (the
+// Bebop 2 compensator's 10, the Pioneer's dynamic law's 6, its kinematic
+// law's 2). A law appended to the list takes its block after the robots'
+// gains, so no parameter moves (records, hashes stay).
 constexpr int kLawGainRoom = 18;
 enum LawGainId : int {
   // A triangle sweep's law (its index: N, PSO, SPO, OSP, S-PO;
@@ -90,62 +91,56 @@ constexpr int kRobotGainRobots = kLargestShape.robots;
 AURORA_HD constexpr int robotGainParam(int robot, int i) { return kParamFirstRobotGain + robot * kRobotGainRoom + i; }
 constexpr int kParamRobotGainEnd = robotGainParam(kRobotGainRobots, 0);
 
-namespace law_gain_detail {
-template <class Law, bool = aurora_control::ChosenAtRunTime<Law>::value>
-struct OwnGains {
-  static constexpr int kCount = Law::kGainCount;
+struct GainRoom {
+  int first, size;
 };
-template <class Law>
-struct OwnGains<Law, true> {  // the AR.Drone's: the rows above
-  static constexpr int kCount = 0;
-};
-}  // namespace law_gain_detail
+constexpr int kLawGainRooms = 3;
+constexpr GainRoom lawGainRoom(int r) {
+  return r == 0 ? GainRoom{kParamKp, 2}
+                : r == 1 ? GainRoom{kParamFirstUnderactuatedGain, kUnderactuatedGainCount}
+                         : GainRoom{kParamFirstLawGain, kLawGainRoom};
+}
 
-// Where Law's block starts among the laws' own gains of `list` (0, 10, ...;
-// -1: not in it), and how many they are in all.
-template <class Law, class... L>
-constexpr int lawGainOffset(aurora_common::TypeList<L...>) {
-  const int counts[] = {0, law_gain_detail::OwnGains<L>::kCount...};
-  const bool is[] = {false, std::is_same<Law, L>::value...};
-  int offset = 0;
+// Where the block of the law at `place` (1-based) of the list starts, the
+// laws filling the rooms in order; place 0: the end of the blocks past the
+// rooms (kParamRobotGainEnd when every block is in a room).
+template <class... L>
+constexpr int lawGainPlace(aurora_common::TypeList<L...>, int place) {
+  const int counts[] = {0, L::kGainCount...};
+  int room = 0, used = 0, beyond = kParamRobotGainEnd;
   for (int i = 1; i <= int(sizeof...(L)); ++i) {
-    if (is[i]) return offset;
-    offset += counts[i];
+    while (room < kLawGainRooms && used + counts[i] > lawGainRoom(room).size) ++room, used = 0;
+    const int first = room < kLawGainRooms ? lawGainRoom(room).first + used : beyond;
+    if (room < kLawGainRooms) used += counts[i];
+    else beyond += counts[i];
+    if (i == place) return first;
+  }
+  return beyond;
+}
+// Where Law's block starts among `list`'s (-1: not in it).
+template <class Law, class... L>
+constexpr int lawGainFirst(aurora_common::TypeList<L...> list) {
+  const bool is[] = {false, std::is_same<Law, L>::value...};
+  for (int i = 1; i <= int(sizeof...(L)); ++i) {
+    if (is[i]) return lawGainPlace(list, i);
   }
   return -1;
 }
-template <class... L>
-constexpr int lawGainTotal(aurora_common::TypeList<L...>) {
-  const int counts[] = {0, law_gain_detail::OwnGains<L>::kCount...};
-  int total = 0;
-  for (int c : counts) total += c;
-  return total;
-}
-// The parameter of the laws' own gain at `offset`: in the room, else after
-// the robots' gains.
-AURORA_HD constexpr int lawGainParamAt(int offset) {
-  return offset < kLawGainRoom ? kParamFirstLawGain + offset : kParamRobotGainEnd + offset - kLawGainRoom;
-}
-constexpr int kLawGainCount = lawGainTotal(aurora_control::KnownLaws());
 
 // Law's block of sweep parameters: kFirst .. kFirst + kCount.
 template <class Law>
 struct LawGainBlock {
-  static constexpr int kOffset = lawGainOffset<Law>(aurora_control::KnownLaws());
-  static_assert(kOffset >= 0, "a law of the laws' list (other_laws.h)");
-  static constexpr int kCount = law_gain_detail::OwnGains<Law>::kCount;
-  static_assert(kOffset >= kLawGainRoom || kOffset + kCount <= kLawGainRoom, "a law's block within one room");
-  static constexpr int kFirst = lawGainParamAt(kOffset);
+  static constexpr int kCount = Law::kGainCount;
+  static constexpr int kFirst = lawGainFirst<Law>(aurora_control::KnownLaws());
+  static_assert(kFirst >= 0, "a law of the laws' list (other_laws.h)");
 };
 // Their definitions (C++14: a test's EXPECT_EQ takes them by reference).
-template <class Law>
-constexpr int LawGainBlock<Law>::kOffset;
 template <class Law>
 constexpr int LawGainBlock<Law>::kCount;
 template <class Law>
 constexpr int LawGainBlock<Law>::kFirst;
 
-constexpr int kParamCount = kParamRobotGainEnd + (kLawGainCount > kLawGainRoom ? kLawGainCount - kLawGainRoom : 0);
+constexpr int kParamCount = lawGainPlace(aurora_control::KnownLaws(), 0);
 
 // The line of two drones (the shape a sweep file flies today).
 constexpr ShapeLayout kLineLayout{2, 6};

@@ -14,8 +14,8 @@
 namespace aurora_sweep {
 
 enum class ParamGroup {
-  kPdGain, kDelay, kUnderactuatedGain, kModelFactor, kLink, kRepeat, kDroneDelay, kFormationGain, kDroneLink, kUnused,
-  kLawGain,       // another vehicle's law's (sweep_gains.h)
+  kDelay, kModelFactor, kLink, kRepeat, kDroneDelay, kFormationGain, kDroneLink, kUnused,
+  kLawGain,       // a law's own gain, its declaration's (law_gain_rows.h, sweep_gains.h)
   kFormationLaw,  // a triangle's law (kParamFormationLaw)
   kRobotGain,     // a formation robot's own law's gain (robot_gains.h)
 };

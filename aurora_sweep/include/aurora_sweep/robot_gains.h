@@ -20,7 +20,7 @@
 
 namespace aurora_sweep {
 
-// Every other law (the laws' list): the rows its own declaration gives
+// Every law of the list: the rows its own declaration gives
 // (law_gain_rows.h), its block.
 template <class Law>
 struct RobotGains {
@@ -40,32 +40,6 @@ struct RobotGains {
     Law::giveGains(g, v);
   }
 };
-// The AR.Drone's laws: the PD law's kp, kd; the underactuated law's 12
-// gains (underactuatedGainName order).
-template <aurora_control::LawType L>
-struct RobotGains<aurora_control::ArdroneLaw<L>> {
-  static constexpr bool kPd = L == aurora_control::LawType::kPdSaturated;
-  static const char* law(const aurora_sim::Ardrone2::Params<double>&) { return aurora_control::lawName(L); }
-  static std::vector<LawGainRow> rows(const aurora_sim::Ardrone2::Params<double>&) {
-    using namespace aurora_control;
-    if (kPd) return {{"kp", 0.0, kPdGainMin, kPdGainMax, false}, {"kd", 0.0, kPdGainMin, kPdGainMax, false}};
-    std::vector<LawGainRow> r;
-    for (int i = 0; i < kUnderactuatedGainCount; ++i) {
-      r.push_back({underactuatedGainName(i), 0.0, kUnderactuatedGainMin, kUnderactuatedGainMax, false});
-    }
-    return r;
-  }
-  template <typename T>
-  AURORA_HD static void set(aurora_control::LawGains<T>& g, const aurora_sim::Ardrone2::Params<T>&, const double* v) {
-    if (kPd) {
-      giveGain(g.pd.kp, v[0]);
-      giveGain(g.pd.kd, v[1]);
-    } else {
-      for (int i = 0; i < kUnderactuatedGainCount; ++i) giveGain(aurora_control::underactuatedGain(g.underactuated, i), v[i]);
-    }
-  }
-};
-
 // A mixed crew's robot: the law its parameters choose.
 template <class First, class Second>
 struct RobotGains<aurora_control::EitherLaw<First, Second>> {

@@ -104,7 +104,7 @@ DelayMonotony::DelayMonotony(const SweepSpec& spec) : grid_(spec.view()) {
   int gains = 0;
   for (const Axis& a : spec.axes) {
     const ParamGroup g = spec.param(a.param).group;
-    const bool gain = g == ParamGroup::kPdGain || g == ParamGroup::kUnderactuatedGain || g == ParamGroup::kLawGain;
+    const bool gain = g == ParamGroup::kLawGain;
     if (a.param != kParamDelay && !gain) return;
     std::vector<double>& v = a.param == kParamDelay ? delays_ : values_[gains];
     if (a.param != kParamDelay) gain_[gains++] = a.param;

@@ -55,8 +55,9 @@ void addLawGains(std::vector<ParamInfo>& t) {
   using Block = LawGainBlock<Law>;
   for (int i = 0; i < Block::kCount; ++i) {
     const LawGainRow row = Law::gainRow(i);
-    const std::string limit = row.whole ? "whole model steps between the law's runs (1: every step)"
-                                        : "the range of the law's controller file";
+    const std::string limit = row.range ? row.range
+                              : row.whole ? "whole model steps between the law's runs (1: every step)"
+                                          : "the range of the law's controller file";
     ParamInfo info{row.name, ParamGroup::kLawGain, row.min, row.max, limit, row.whole, Law::name(), row.preset};
     t[Block::kFirst + i] = info;
   }
@@ -102,18 +103,8 @@ std::vector<ParamInfo> makeTable(SweepShape shape) {
   using namespace aurora_control;
   // Room no shape of the sweep uses: no name, applies to no sweep.
   std::vector<ParamInfo> t(kParamCount, ParamInfo{"", ParamGroup::kUnused, 0.0, 0.0, "", false});
-  const std::string pd = "the controller node's PD gain range";
-  const char* pd_law = lawName(LawType::kPdSaturated);
-  t[kParamKp] = {"kp", ParamGroup::kPdGain, kPdGainMin, kPdGainMax, pd, false, pd_law};
-  t[kParamKd] = {"kd", ParamGroup::kPdGain, kPdGainMin, kPdGainMax, pd, false, pd_law};
   t[kParamDelay] = {"delay", ParamGroup::kDelay, 0.0, double(kMaxDelaySamples),
                     "whole samples of Ts, the histories' limit", true};
-  for (int i = 0; i < kUnderactuatedGainCount; ++i) {
-    t[kParamFirstUnderactuatedGain + i] = {underactuatedGainName(i), ParamGroup::kUnderactuatedGain,
-                                           kUnderactuatedGainMin, kUnderactuatedGainMax,
-                                           "the controller node's underactuated gain range (positive)", false,
-                                           lawName(LawType::kUnderactuated)};
-  }
   for (int i = 0; i < kModelFactorCount; ++i) {
     t[kParamFirstModelFactor + i] = modelFactorInfo(aurora_sim::Ardrone2::name(), i);
   }
@@ -125,7 +116,7 @@ std::vector<ParamInfo> makeTable(SweepShape shape) {
                                    row.kind == ParamKind::kWholeSamples};
   }
   t[kParamRepeat] = {"repeat", ParamGroup::kRepeat, 0.0, 1e9, "which link seed (sweep.repeats)", true};
-  forEachOtherLaw([&](auto law) { addLawGains<decltype(law)>(t); });
+  forEachLaw([&](auto law) { addLawGains<decltype(law)>(t); });
   addShape(shape, t);
   return t;
 }
@@ -166,8 +157,6 @@ bool paramApplies(const ParamInfo& info, const std::string& controller, SweepSha
            group == ParamGroup::kDroneLink || group == ParamGroup::kFormationLaw || group == ParamGroup::kRobotGain;
   }
   switch (group) {
-    case ParamGroup::kPdGain:
-    case ParamGroup::kUnderactuatedGain:
     case ParamGroup::kLawGain: return info.law == controller;
     case ParamGroup::kModelFactor: return true;  // the sweep's vehicle's (SweepSpec::param names them)
     case ParamGroup::kRepeat: return false;  // sweep.repeats, not a parameter
@@ -184,10 +173,6 @@ bool paramApplies(const ParamInfo& info, const std::string& controller, SweepSha
 double paramDefault(int id, SweepShape shape) {
   const ParamInfo& info = paramInfo(id, shape);
   switch (info.group) {
-    case ParamGroup::kUnderactuatedGain: {
-      const auto g = aurora_control::UnderactuatedGains<double>::defaults();
-      return aurora_control::underactuatedGain(g, id - kParamFirstUnderactuatedGain);
-    }
     case ParamGroup::kModelFactor: return 1.0;
     case ParamGroup::kLawGain: return info.preset;
     case ParamGroup::kLink: return aurora_control::linkValueOf(aurora_control::LinkParams(), id - kParamFirstLinkValue);

@@ -39,7 +39,21 @@ template <typename T>
 struct LawGains {
   PdGains<T> pd;
   UnderactuatedGains<T> underactuated;
+
+  // Before a sweep's blocks (aurora_sweep/sweep_gains.h): the PD gains 0
+  // (a sweep of the PD law names both), the underactuated law's defaults.
+  AURORA_HD static LawGains defaults() { return LawGains{PdGains<T>{T(0), T(0)}, UnderactuatedGains<T>::defaults()}; }
 };
+
+// Each AR.Drone law's own part of the gains, by its gain rows' type.
+template <typename T>
+AURORA_HD PdGains<T>& gainsOf(LawGains<T>& g, const PdGainRows*) {
+  return g.pd;
+}
+template <typename T>
+AURORA_HD UnderactuatedGains<T>& gainsOf(LawGains<T>& g, const UnderactuatedGainRows*) {
+  return g.underactuated;
+}
 
 // The gains in precision T (a formation sweep casts each robot's; every
 // law's data gives its castGains, found by argument-dependent lookup).
@@ -157,6 +171,16 @@ struct ArdroneLaw : ArdroneLawData {
   using Input = LawInput<L>;
   static const char* name() { return lawName(L); }
 
+  // The gains a sweep may vary (law_gain_rows.h): its own of the two laws'
+  // gains (PdGainRows, UnderactuatedGainRows beside each law).
+  using GainRows = typename std::conditional<L == LawType::kPdSaturated, PdGainRows, UnderactuatedGainRows>::type;
+  static constexpr int kGainCount = GainRows::kGainCount;
+  static GainRow gainRow(int i) { return GainRows::gainRow(i); }
+  template <typename T>
+  AURORA_HD static void giveGains(LawGains<T>& g, const double* v) {
+    GainRows::giveGains(gainsOf(g, static_cast<const GainRows*>(nullptr)), v);
+  }
+
   template <typename T>
   AURORA_HD static void command(const aurora_sim::ArdroneParams<T>& model, const Gains<T>& g, Memory<T>& memory,
                                 const Reference<T>& ref, const T X[Vehicle::kStates], T U[Vehicle::kInputs],
@@ -167,6 +191,8 @@ struct ArdroneLaw : ArdroneLawData {
 
 template <LawType L>
 constexpr LawType ArdroneLaw<L>::value;
+template <LawType L>
+constexpr int ArdroneLaw<L>::kGainCount;
 
 // Calls f(ArdroneLaw<law>()): a loop instantiated per law, chosen once at
 // run time (decltype(f's argument) is the law's type, ::value its LawType).

@@ -7,7 +7,8 @@
 //   template <typename T> AURORA_HD
 //   static void giveGains(Gains<T>& g, const double* v);  // a block into g
 //
-// and the sweep places the block (aurora_sweep/sweep_gains.h), names its
+// (the AR.Drone's two: PdGainRows, UnderactuatedGainRows beside their
+// laws), and the sweep places the block (aurora_sweep/sweep_gains.h), names its
 // rows in the parameter table, records them and hashes them: nothing of a
 // law's gains is written outside its own files.
 #pragma once
@@ -16,12 +17,15 @@
 
 namespace aurora_control {
 
-// One gain a sweep may vary: its name, its default (the law's defaults()),
-// its accepted range, whole values only.
+// One gain a sweep may vary: its name, its default (the law's defaults();
+// NaN: none, a sweep of the law names it), its accepted range, whole values
+// only, and what the range is (a refusal says it; null: the range of the
+// law's controller file).
 struct GainRow {
   const char* name;
   double preset, min, max;
   bool whole;
+  const char* range = nullptr;
 };
 
 // A swept value into a gain; NaN (a formation sweep's robot gain it does

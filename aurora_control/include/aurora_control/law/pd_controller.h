@@ -5,8 +5,11 @@
 #pragma once
 
 #include <cmath>
+#include <limits>
 
 #include "aurora_common/host_device.h"
+#include "aurora_control/law/law_gain_rows.h"
+#include "aurora_control/params/limits.h"
 
 namespace aurora_control {
 
@@ -35,5 +38,21 @@ AURORA_HD inline void pdSaturatedLaw(const PdGains<T>& g, const T desired_pos[3]
   U[2] = a[2];
   U[3] = T(0);
 }
+
+// The gains a sweep may vary (law_gain_rows.h): kp and kd, in the
+// controller node's range, without a preset (a sweep of the PD law names
+// both: the thesis's grid).
+struct PdGainRows {
+  static constexpr int kGainCount = 2;
+  static GainRow gainRow(int i) {
+    return {i == 0 ? "kp" : "kd", std::numeric_limits<double>::quiet_NaN(), kPdGainMin, kPdGainMax, false,
+            "the controller node's PD gain range"};
+  }
+  template <typename T>
+  AURORA_HD static void giveGains(PdGains<T>& g, const double* v) {
+    giveGain(g.kp, v[0]);
+    giveGain(g.kd, v[1]);
+  }
+};
 
 }  // namespace aurora_control

@@ -21,6 +21,8 @@
 #include "aurora_common/host_device.h"
 #include "aurora_common/rotation.h"
 #include "aurora_common/scalar_math.h"
+#include "aurora_control/law/law_gain_rows.h"
+#include "aurora_control/params/limits.h"
 #include "aurora_sim/state_index.h"
 
 namespace aurora_control {
@@ -265,5 +267,20 @@ template <typename T>
 AURORA_HD const T& underactuatedGain(const UnderactuatedGains<T>& g, int i) {
   return i % 2 == 0 ? g.k1[i / 2] : g.k2[i / 2];
 }
+
+// The gains a sweep may vary (law_gain_rows.h): the 12, in
+// underactuatedGainName's order, in the controller node's range.
+struct UnderactuatedGainRows {
+  static constexpr int kGainCount = 2 * kAxes;
+  static GainRow gainRow(int i) {
+    return {underactuatedGainName(i), underactuatedGain(UnderactuatedGains<double>::defaults(), i),
+            kUnderactuatedGainMin, kUnderactuatedGainMax, false,
+            "the controller node's underactuated gain range (positive)"};
+  }
+  template <typename T>
+  AURORA_HD static void giveGains(UnderactuatedGains<T>& g, const double* v) {
+    for (int i = 0; i < kGainCount; ++i) giveGain(underactuatedGain(g, i), v[i]);
+  }
+};
 
 }  // namespace aurora_control
