@@ -4,4 +4,4 @@ from setuptools import setup
 
 from catkin_pkg.python_setup import generate_distutils_setup
 
-setup(**generate_distutils_setup(packages=["aurora"], package_dir={"": "src"}))
+setup(**generate_distutils_setup(packages=["aurora", "aurora.identify_vehicles"], package_dir={"": "src"}))

@@ -12,6 +12,7 @@ import rostest
 
 import aurora
 from aurora import identification, identify_core as core
+from aurora.identify_vehicles import MODELS, bebop2, pioneer3dx
 
 HERE = os.path.dirname(os.path.realpath(__file__))
 MODIFIED = os.path.join(HERE, "..", "config", "identify", "bebop2_modified.yaml")
@@ -32,7 +33,7 @@ def flown(vehicle=MODIFIED, task="bebop2_waypoints"):
 class FitTest(unittest.TestCase):
     def test_the_bebop2s_parameters_are_found_exactly_without_noise(self):
         X, U = flown()
-        fit = core.fit_bebop2(X, U, TS, 0)
+        fit = bebop2.fit(X, U, TS, 0)
         want = modified()
         for key, (value, stderr) in fit["parameters"].items():
             group, name = key.split(".")
@@ -43,7 +44,7 @@ class FitTest(unittest.TestCase):
         X, U = flown()
         for delay in (0, 2, 5):
             sent = np.vstack([U[delay:], np.zeros((delay, 4))])  # sent at k, applied at k + delay
-            best, tried = core.best_delay(lambda d: core.fit_bebop2(X, sent, TS, d), 8)
+            best, tried = core.best_delay(lambda d: bebop2.fit(X, sent, TS, d), 8)
             self.assertEqual(best, delay)
             self.assertEqual(len(tried), 9)
 
@@ -61,7 +62,7 @@ class FitTest(unittest.TestCase):
         want = modified()
 
         def errors(window):
-            fit = core.fit_bebop2(noisy, U, TS, 0, window=window)["parameters"]
+            fit = bebop2.fit(noisy, U, TS, 0, window=window)["parameters"]
             return {k: abs(fit[k][0] / want[k.split(".")[0]][k.split(".")[1]] - 1.0) for k in fit}
         blocks = errors(15)
         print("1 mm noise, blocks of 15 steps: parameter errors %s" % {k: round(e, 4) for k, e in blocks.items()})
@@ -74,7 +75,7 @@ class FitTest(unittest.TestCase):
         U = U.copy()
         U[:, 3] = 0.0  # no yaw command: the yaw's parameters are not identifiable
         nominal = {"input_gain": {"x": 1, "y": 1, "z": 1, "yaw": 9.8524}, "damping": {"x": 1, "y": 1, "z": 1, "yaw": 4.7295}}
-        table = identification.parameter_table(core.fit_bebop2(X, U, TS, 0), nominal)
+        table = identification.parameter_table(bebop2.fit(X, U, TS, 0), nominal, bebop2.MODEL)
         for key in ("input_gain.yaw", "damping.yaw"):
             self.assertFalse(table[key]["identified"], key)
             self.assertEqual(table[key]["value"], table[key]["nominal"])
@@ -140,7 +141,7 @@ class GridTest(unittest.TestCase):
         def errors(parameters):
             return {k: abs(v[0] / want[k.split(".")[0]][k.split(".")[1]] - 1.0) for k, v in parameters.items()}
         on_grid = errors(model["parameters"])
-        by_steps = errors(core.fit_bebop2(X_rec, U, TS, 2)["parameters"])
+        by_steps = errors(bebop2.fit(X_rec, U, TS, 2)["parameters"])
         print("realtime stamps: parameter errors on the grid %s, by steps %s" % (
             {k: round(e, 4) for k, e in on_grid.items()}, {k: round(e, 4) for k, e in by_steps.items()}))
         for key, e in on_grid.items():
@@ -176,13 +177,13 @@ class PioneerFitTest(unittest.TestCase):
         X, U, Ts = f.states, f.commands, f.sample_time
         for delay in (0, 3):
             sent = np.vstack([U[delay:], np.zeros((delay, 2))])
-            best, tried = core.best_delay(lambda d: core.fit_pioneer(X, sent, Ts, d), 6)
+            best, tried = core.best_delay(lambda d: pioneer3dx.fit(X, sent, Ts, d), 6)
             self.assertEqual(best, delay)
             for key, (value, _) in tried[best]["parameters"].items():
                 name = key.split(".")[1]
                 self.assertAlmostEqual(value, want[name], delta=1e-9 * abs(want[name]), msg=key)
         nominal = {"dynamics": {"theta%d" % i: 1.0 for i in range(1, 7)}}
-        table = identification.parameter_table(core.fit_pioneer(X, U, Ts, 0), nominal)
+        table = identification.parameter_table(pioneer3dx.fit(X, U, Ts, 0), nominal, pioneer3dx.MODEL)
         self.assertTrue(all(p["identified"] for p in table.values()), table)
         self.assertLess(table["dynamics.theta3"]["value"], 0.0)  # signed: no positivity asked
 
@@ -197,7 +198,7 @@ class ArdroneFitTest(unittest.TestCase):
         import yaml
         self.want = yaml.safe_load(open(self.PATH))
         self.nominal_path, self.nominal = identification.nominal_vehicle("ardrone2")
-        self.fit = identification.MODELS["ardrone2"].fit(self.nominal_path, self.nominal)
+        self.fit = MODELS["ardrone2"].fit(self.nominal_path, self.nominal)
 
     def flown(self, law="underactuated"):
         f = aurora.simulate(law, "ardrone_identification", vehicle=self.PATH)
@@ -213,12 +214,12 @@ class ArdroneFitTest(unittest.TestCase):
                 want = identification.key_value(self.want, key)
                 self.assertAlmostEqual(value, want, delta=1e-6 * want, msg=key)  # the solver's tolerance
                 self.assertGreater(abs(identification.key_value(self.nominal, key) - want), 0.15 * want, key)
-        table = identification.parameter_table(tried[best], self.nominal)
+        table = identification.parameter_table(tried[best], self.nominal, MODELS["ardrone2"])
         self.assertTrue(all(p["identified"] for p in table.values()), table)
 
     def test_without_yaw_commands_izz_keeps_its_nominal_value(self):
         X, U = self.flown("pd_saturated")  # the PD law commands no yaw
-        table = identification.parameter_table(self.fit(X, U, TS, 0, 1), self.nominal)
+        table = identification.parameter_table(self.fit(X, U, TS, 0, 1), self.nominal, MODELS["ardrone2"])
         self.assertFalse(table["inertia.zz"]["identified"])
         self.assertEqual(table["inertia.zz"]["value"], table["inertia.zz"]["nominal"])
         self.assertIn("not excited", table["inertia.zz"]["why_not"])

@@ -23,48 +23,13 @@ import numpy as np
 
 from aurora import formation_report, identify_core as core
 from aurora import report
+from aurora.identify_model import key_parent, key_value, open_loop_flyer
+from aurora.identify_vehicles import MODELS
 
 # Fewer state steps than this identify nothing (10 s at 30 Hz).
 MIN_STEPS = 300
 # Control.mode in the supervisor's take-off phase (its first word).
 TAKEOFF_MODE = "takeoff"
-
-
-def open_loop_flyer(vehicle, vehicle_file):
-    """fly(factors, X, U, starts, length, forced): the vehicle's own model
-    (aurora._core.open_loop) of `vehicle_file`, open loop (eq. I7)."""
-    from aurora import _core
-    return lambda factors, X, U, starts, length, forced: _core.open_loop(
-        vehicle, vehicle_file, [float(f) for f in factors], X, U, starts, length, forced)
-
-
-def ardrone_fit(nominal_path, nominal):
-    """The AR.Drone's output-error fit (eq. I7) around its nominal file."""
-    from aurora import _core
-    values = {key: key_value(nominal, key) for key in core.ARDRONE_FACTORS}
-    return lambda X, U, Ts, delay, window, first=0: core.fit_ardrone(
-        open_loop_flyer("ardrone2", nominal_path), _core.vehicle_factor_names("ardrone2"), values, X, U, Ts, delay,
-        window)
-
-
-class Model:
-    """How identify fits one vehicle's model: fit(nominal_path, nominal) gives
-    fit(X, U, Ts, delay, window, first) (eqs. I3-I7); state(X, Ts), its
-    model state from the recorded 12-state (the Pioneer's speeds too), for
-    the open-loop flights; phases, the grid phases it tries (I4b)."""
-
-    def __init__(self, fit, state=None, phases=None):
-        self.fit = fit
-        self.state = state or (lambda X, Ts: X)
-        self.phases = np.arange(core.GRID_PHASES) / core.GRID_PHASES if phases is None else phases
-
-
-# The vehicles whose model this tool fits, one entry each. The AR.Drone's
-# output-error fit tries only the states' own grid phase (each phase costs a
-# fit per delay).
-MODELS = {"bebop2": Model(lambda path, nominal: core.fit_bebop2),
-          "pioneer3dx": Model(lambda path, nominal: core.fit_pioneer, state=core.pioneer_state),
-          "ardrone2": Model(ardrone_fit, phases=[0.0])}
 
 
 class IdentifyError(Exception):
@@ -295,31 +260,18 @@ def nominal_vehicle(vehicle):
         return path, yaml.safe_load(f)
 
 
-def key_parent(tree, key):
-    """The mapping of a vehicle file's tree that holds a parameter's key
-    ("mass", "input_gain.x"), and the key's last name."""
-    *groups, name = key.split(".")
-    for g in groups:
-        tree = tree[g]
-    return tree, name
-
-
-def key_value(tree, key):
-    """The value at a parameter's key in a vehicle file's tree."""
-    parent, name = key_parent(tree, key)
-    return float(parent[name])
-
-
-def parameter_table(model, nominal):
-    """Each parameter by key: value, stderr, nominal, identified (excited
-    axis, positive, standard error below a tenth of the value) and why not."""
+def parameter_table(model, nominal, vehicle):
+    """Each parameter of the fit `model` of `vehicle` (its Model, MODELS) by
+    key: value, stderr, nominal, identified (excited axis, positive unless
+    signed, within eq. I7's bounds where bounded, standard error below a
+    tenth of the value) and why not."""
     table = {}
     for key in model["parameters"]:  # the regression's order
         value, stderr = model["parameters"][key]
-        axis = core.excited_by(key)
+        axis = vehicle.excited_by(key)
         excited = model["spread"][axis] >= core.MIN_EXCITATION
-        inside = key not in core.ARDRONE_FACTORS or 0.1 < value / key_value(nominal, key) < 10.0  # eq. I7's bounds
-        ok = excited and inside and (value > 0 or key in core.SIGNED) and stderr < 0.1 * abs(value)
+        inside = key not in vehicle.bounded or 0.1 < value / key_value(nominal, key) < 10.0  # eq. I7's bounds
+        ok = excited and inside and (value > 0 or key in vehicle.signed) and stderr < 0.1 * abs(value)
         why = ("" if ok else "its axis was not excited (command spread %.3g < %g)" % (model["spread"][axis],
                core.MIN_EXCITATION) if not excited else "the fit is not determined (%.4g +- %.2g)" % (value, stderr))
         table[key] = {"value": value if ok else key_value(nominal, key), "stderr": stderr if ok else None,
@@ -378,7 +330,7 @@ def summary(bag, name, loop, max_delay, window):
          "command_path_samples": {"link": t["downlink_delay"], "beyond_link": None},  # the fit's: below
          "parameters": {}, "fit": {}, "model": "identified"}
     vehicle_file = None
-    j["parameters"] = parameter_table(model, nominal)
+    j["parameters"] = parameter_table(model, nominal, MODELS[loop["vehicle"]])
     j["fit"] = {axis: f["nrmse"] for axis, f in model["fit"].items()}
     j["nominal_vehicle_file"] = nominal_path
     if any(p["identified"] for p in j["parameters"].values()):

@@ -7,16 +7,13 @@ returns plain values; nothing reads a clock or a file.
   the step the controller had minus the step of the state it used (eq. I1);
   a stream's rate, jitter and losses come from its messages' steps and
   stamps (eq. I2).
-- The Bebop 2's model (docs/bebop2.md) is linear in its input gains and
-  damping: a = F(psi) Ku U - Kv v, least squares per axis (eq. I3) over
-  velocities and accelerations differenced from positions (eq. I4) on a
-  uniform time grid (a realtime loop's states resampled there, eq. I4b), the
-  actuation delay the whole samples that fit best (eq. I5).
-- The Pioneer's theta1..theta6 enter its commands linearly: least squares
-  (eq. I6).
-- The AR.Drone's model is nonlinear: its factors are fitted by output error
-  (eq. I7), the recorded commands flown open loop through the product's
-  own simulator (a callable given in) over short segments."""
+- What every vehicle's fit uses: velocities and accelerations differenced
+  from positions (eq. I4) on a uniform time grid (a realtime loop's states
+  resampled there, eq. I4b), least squares per axis (eqs. I3, I6), the
+  actuation delay the whole samples that fit best (eq. I5), and the output
+  error of open-loop segments (eq. I7) through the product's own simulator
+  (a callable given in).
+Each vehicle's own regression is its module of aurora.identify_vehicles."""
 import math
 
 import numpy as np
@@ -194,53 +191,6 @@ def least_squares(A, y):
     return theta, stderr, rms, (rms / spread if spread > 0 else float("inf")), rank
 
 
-def bebop2_rows(X, U, Ts, delay, window=1, first=0):
-    """Eq. I3's regressors and outputs of a Bebop 2 flight: states X (n x
-    12, docs/bebop2.md), the commands U (n x 4, row k given at step k),
-    the actuation delay `delay` [samples]: step k applies U_(k - delay).
-    Returns {axis: (A, y)} for 'xy' (Ku_x, Ku_y, Kv_x, Kv_y), 'z', 'yaw',
-    each summed over blocks of `window` steps (eq. I4) from step `first`
-    on (at least `delay`: I5 compares the delays on the same steps), and the
-    commands."""
-    p = np.column_stack([X[:, 0], X[:, 1], X[:, 2], np.unwrap(X[:, 5])])
-    v, a = differences(p, Ts)                       # k = 1 .. n - 2
-    k = np.arange(1, len(X) - 1)
-    keep = k >= max(delay, first)
-    k, v, a = k[keep], v[keep], a[keep]
-    u = U[k - delay]
-    psi = p[k, 3]
-    c, s = np.cos(psi), np.sin(psi)
-    zero = np.zeros_like(c)
-    # a_x = c Ku_x u1 - s Ku_y u2 - Kv_x v_x ; a_y = s Ku_x u1 + c Ku_y u2 - Kv_y v_y
-    rows_x = windowed(np.column_stack([c * u[:, 0], -s * u[:, 1], -v[:, 0], zero]), a[:, 0], window)
-    rows_y = windowed(np.column_stack([s * u[:, 0], c * u[:, 1], zero, -v[:, 1]]), a[:, 1], window)
-    xy = (np.vstack([rows_x[0], rows_y[0]]), np.concatenate([rows_x[1], rows_y[1]]))
-    return {"xy": xy, "z": windowed(np.column_stack([u[:, 2], -v[:, 2]]), a[:, 2], window),
-            "yaw": windowed(np.column_stack([u[:, 3], -v[:, 3]]), a[:, 3], window)}, u
-
-
-# Each vehicle's regression (its axes' parameters in their columns' order),
-# the command that excites each parameter's axis, and the parameters that
-# may be negative (the others are physical gains, time constants or damping).
-BEBOP2_AXES = {"xy": ("input_gain.x", "input_gain.y", "damping.x", "damping.y"),
-               "z": ("input_gain.z", "damping.z"), "yaw": ("input_gain.yaw", "damping.yaw")}
-PIONEER_KEYS = ("dynamics.theta1", "dynamics.theta2", "dynamics.theta3", "dynamics.theta4", "dynamics.theta5",
-                "dynamics.theta6")
-PIONEER_AXES = {"u": ("dynamics.theta1", "dynamics.theta3", "dynamics.theta4"),
-                "omega": ("dynamics.theta2", "dynamics.theta5", "dynamics.theta6")}
-SIGNED = {"dynamics.theta3", "dynamics.theta5"}
-
-
-def excited_by(key):
-    """The command axis that excites parameter `key` (the spread's name)."""
-    for axis, keys in PIONEER_AXES.items():  # the Pioneer's: its regression's axis
-        if key in keys:
-            return axis
-    if key in ARDRONE_FACTORS:  # the AR.Drone's: the command that turns it
-        return ARDRONE_FACTORS[key][1]
-    return key.split(".")[1]  # the Bebop's: the key's own axis (x, y, z, yaw)
-
-
 def fit_rows(rows, axes, spread):
     """Least squares of each axis's rows: {key: (value, stderr)}, each axis's
     NRMSE and RMS, the total residual, the commands' spread."""
@@ -254,58 +204,6 @@ def fit_rows(rows, axes, spread):
     return {"parameters": params, "fit": fit, "rss": rss, "spread": spread}
 
 
-def fit_bebop2(X, U, Ts, delay, window=1, first=0):
-    """The Bebop 2's eight parameters at actuation delay `delay` (eq. I3)
-    over the steps from `first` on."""
-    rows, u = bebop2_rows(X, U, Ts, delay, window, first)
-    spread = {"x": float(np.std(u[:, 0])), "y": float(np.std(u[:, 1])), "z": float(np.std(u[:, 2])),
-              "yaw": float(np.std(u[:, 3]))}
-    return fit_rows(rows, BEBOP2_AXES, spread)
-
-
-def pioneer_speeds(X, Ts):
-    """The Pioneer's forward speed and turn rate after each step j + 1 (j =
-    0 .. n - 2) from the control point's positions and heading, as its model
-    steps: u_(j+1) = (dx cos psi_j + dy sin psi_j) / Ts, omega_(j+1) =
-    (psi_(j+1) - psi_j) / Ts. (The control point's offset cancels: dx cos
-    psi + dy sin psi is the forward speed.)"""
-    psi = np.unwrap(X[:, 5])
-    d = np.diff(np.column_stack([X[:, 0], X[:, 1], psi]), axis=0)
-    return (d[:, 0] * np.cos(psi[:-1]) + d[:, 1] * np.sin(psi[:-1])) / Ts, d[:, 2] / Ts
-
-
-def pioneer_rows(X, U, Ts, delay, window=1, first=0):
-    """Eq. I6's regressors of a Pioneer P3-DX flight (docs/pioneer3dx.md):
-    its forward speed and turn rate (pioneer_speeds), their differences, and
-    the commands U (u_ref, omega_ref) given `delay` samples before."""
-    u_next, w_next = pioneer_speeds(X, Ts)  # u_(j+1), omega_(j+1)
-    k = np.arange(1, len(X) - 1)
-    k = k[k >= max(delay, first)]  # from step `first` on, as bebop2_rows
-    u, w = u_next[k - 1], w_next[k - 1]                    # u_k, omega_k
-    du, dw = (u_next[k] - u) / Ts, (w_next[k] - w) / Ts    # their steps' rates
-    cmd = U[k - delay]
-    rows = {"u": windowed(np.column_stack([du, -w * w, u]), cmd[:, 0], window),
-            "omega": windowed(np.column_stack([dw, u * w, w]), cmd[:, 1], window)}
-    return rows, cmd
-
-
-def pioneer_state(X, Ts):
-    """The Pioneer's model state (docs/pioneer3dx.md): the control point's
-    recorded 12-state and its forward speed and turn rate after each step
-    (pioneer_speeds, as eq. I6 takes them; 0 at the first), which the
-    open-loop flights start from (eq. I7)."""
-    u, w = pioneer_speeds(X, Ts)
-    return np.column_stack([X[:, :12], np.concatenate([[0.0], u]), np.concatenate([[0.0], w])])
-
-
-def fit_pioneer(X, U, Ts, delay, window=1, first=0):
-    """The Pioneer's theta1..theta6 at actuation delay `delay` (eq. I6):
-    u_ref = theta1 du + theta4 u - theta3 omega^2, omega_ref = theta2 domega +
-    theta5 u omega + theta6 omega."""
-    rows, cmd = pioneer_rows(X, U, Ts, delay, window, first)
-    return fit_rows(rows, PIONEER_AXES, {"u": float(np.std(cmd[:, 0])), "omega": float(np.std(cmd[:, 1]))})
-
-
 def best_delay(fit_at, max_delay):
     """Eq. I5: the actuation delay [samples] in 0 .. max_delay whose fit
     leaves the smallest residual, with every delay's residual."""
@@ -314,16 +212,6 @@ def best_delay(fit_at, max_delay):
     return best, tried
 
 
-# The AR.Drone's fitted model factors (eq. I7), by their vehicle file's keys:
-# the factor's name (aurora._core.vehicle_factor_names, a sweep's) and the
-# command that excites it. Its mass is weighed, not fitted: with it free,
-# scaling the mass, inertias and thrust coefficient together flies nearly
-# alike and a fit with millimetres of noise wanders along that direction;
-# the motor's constants (Ct, Km, Jm) keep the vehicle file's values: with
-# them free, two directions of the eight factors fly identically.
-ARDRONE_FACTORS = {"inertia.xx": ("Ixx", "roll"), "inertia.yy": ("Iyy", "pitch"), "inertia.zz": ("Izz", "yaw"),
-                   "rotor.thrust_coefficient": ("Cf", "climb")}
-ARDRONE_COMMANDS = ("roll", "pitch", "climb", "yaw")  # the command's components, in order
 POSE = ("x", "y", "z", "roll", "pitch", "yaw")         # the outputs compared: the state's first six
 SEGMENT = 30   # steps each open-loop segment flies (1 s at 30 Hz: longer ones carry more of the noise in their start)
 FORCED = 30    # steps each segment's model is forced along the recording before it
@@ -393,18 +281,3 @@ def fit_output_error(fly, names, free, X, U, delay, segment=SEGMENT, forced=FORC
             "rss": float(2.0 * r.cost)}
 
 
-def fit_ardrone(fly, names, nominal, X, U, Ts, delay, window=1, first=0):
-    """The AR.Drone's factors of ARDRONE_FACTORS at actuation delay `delay`
-    (eq. I7), as the other fits give theirs: each parameter's value and
-    standard error (the factor times its `nominal` value), each pose's fit,
-    the commands' spread. (`Ts` and `window` are the linear fits'; the
-    model steps at its vehicle file's Ts, and a segment's open-loop flight
-    averages noise as eq. I4's blocks do; its segments start after FORCED
-    steps whatever the delay, so `first` is the linear fits'.)"""
-    free = [f for f, _ in ARDRONE_FACTORS.values()]
-    r = fit_output_error(fly, names, free, X, U, delay)
-    params = {key: (r["factors"][f][0] * nominal[key], r["factors"][f][1] * nominal[key])
-              for key, (f, _) in ARDRONE_FACTORS.items()}
-    u = applied(U, delay)
-    return {"parameters": params, "fit": r["fit"], "rss": r["rss"],
-            "spread": {axis: float(np.std(u[:, i])) for i, axis in enumerate(ARDRONE_COMMANDS)}}
