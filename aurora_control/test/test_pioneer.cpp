@@ -4,9 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <string>
-
 #include <fstream>
+#include <string>
 
 #include "aurora_control/law/pioneer_laws.h"
 #include "aurora_control/loop/flight_setup.h"
@@ -198,7 +197,7 @@ TEST(Pioneer3dx, TheShippedFilesFlyTheStandardScenario) {
   }
   const aurora_control::FlightFiles files{c + "/controllers/pioneer_dynamic.yaml",
                                           c + "/tasks/pioneer_lemniscate.yaml", c + "/vehicles/pioneer3dx.yaml", ""};
-  const auto f = aurora_control::loadPioneerFlight<PioneerDynamic>(files);
+  const auto f = aurora_control::loadLawFlight<PioneerDynamic>(files);
   EXPECT_EQ(f.steps, 1258);  // k = 0..1257
   std::vector<double> x, u;
   aurora_control::flyLaw<PioneerDynamic>(f.run, f.cfg, 2, [&](const auto& o, double) {
@@ -212,29 +211,46 @@ TEST(Pioneer3dx, TheShippedFilesFlyTheStandardScenario) {
 }
 
 // The flight any law gets from its controller file without options of its
-// own (loadLawFlight: a new law's, until it needs its own) reads the same
-// gains from the Pioneer's files and flies the same steps as the Pioneer's
-// own loader; it clamps (as drivers do) where the Pioneer's laws saturate.
+// own (loadLawFlight) reads its gains by its own reader; a law that
+// saturates its own commands (the Pioneer's: lawSaturation) has no clamp and
+// refuses to leave one out, another law (the compensator's) clamps as the
+// drivers do unless asked not to.
 TEST(Pioneer3dx, AnyLawsFlightReadsItsGainsByItsOwnReader) {
   const std::string c = AURORA_CONFIG_DIR;
   const aurora_control::FlightFiles files{c + "/controllers/pioneer_dynamic.yaml",
                                           c + "/tasks/pioneer_lemniscate.yaml", c + "/vehicles/pioneer3dx.yaml", ""};
-  const auto own = aurora_control::loadPioneerFlight<PioneerDynamic>(files);
   const auto any = aurora_control::loadLawFlight<PioneerDynamic>(files);
-  EXPECT_EQ(any.steps, own.steps);
+  const auto file = aurora_control::readPioneerFile<PioneerDynamic>(files.controller);
   for (int i = 0; i < 2; ++i) {
-    EXPECT_EQ(any.run.gains.kc1[i], own.run.gains.kc1[i]);
-    EXPECT_EQ(any.run.gains.kd2[i], own.run.gains.kd2[i]);
+    EXPECT_EQ(any.run.gains.kc1[i], file.kc1[i]);
+    EXPECT_EQ(any.run.gains.kd2[i], file.kd2[i]);
   }
-  EXPECT_TRUE(any.cfg.clamp_commands);
-  EXPECT_FALSE(own.cfg.clamp_commands);
-  std::vector<double> x_own, x_any;
-  aurora_control::flyLaw<PioneerDynamic>(own.run, own.cfg, 50, [&](const auto& o, double) { x_own.push_back(o.X_before[aurora_sim::kX]); });
-  aurora_control::flyLaw<PioneerDynamic>(any.run, any.cfg, 50, [&](const auto& o, double) { x_any.push_back(o.X_before[aurora_sim::kX]); });
-  EXPECT_EQ(x_any, x_own);  // its commands are within the unit range: the clamp changes nothing
+  EXPECT_FALSE(any.cfg.clamp_commands);
+  EXPECT_NE(aurora_control::lawSaturation<PioneerDynamic>(), nullptr);
+  EXPECT_EQ(aurora_control::lawSaturation<aurora_control::Bebop2Compensator>(), nullptr);
   aurora_control::FlightFiles unclamped = files;
   unclamped.no_clamp = true;
-  EXPECT_FALSE(aurora_control::loadLawFlight<PioneerDynamic>(unclamped).cfg.clamp_at_drone);
+  try {
+    aurora_control::loadLawFlight<PioneerDynamic>(unclamped, "clamp=False");
+    ADD_FAILURE() << "a Pioneer flight left out a clamp it does not have";
+  } catch (const aurora_common::ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("clamp=False is refused for the Pioneer P3-DX: its laws saturate"),
+              std::string::npos) << e.what();
+  }
+  // The compensator's file without its own reader's key (clamp_commands).
+  const std::string compensator = ::testing::TempDir() + "compensator_gains_only.yaml";
+  {
+    std::ifstream in(c + "/controllers/bebop2_compensator.yaml");
+    std::ofstream out(compensator);
+    for (std::string line; std::getline(in, line);) {
+      if (line.rfind("clamp_commands", 0) != 0) out << line << "\n";
+    }
+  }
+  const aurora_control::FlightFiles bebop{compensator, c + "/tasks/bebop2_waypoints.yaml", c + "/vehicles/bebop2.yaml", ""};
+  EXPECT_TRUE(aurora_control::loadLawFlight<aurora_control::Bebop2Compensator>(bebop).cfg.clamp_commands);
+  aurora_control::FlightFiles bebop_unclamped = bebop;
+  bebop_unclamped.no_clamp = true;
+  EXPECT_FALSE(aurora_control::loadLawFlight<aurora_control::Bebop2Compensator>(bebop_unclamped).cfg.clamp_at_drone);
   aurora_control::FlightFiles wrong = files;
   wrong.controller = c + "/controllers/pioneer_kinematic.yaml";  // k1, k2: not the dynamic law's keys
   try {

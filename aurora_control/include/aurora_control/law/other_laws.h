@@ -71,6 +71,25 @@ constexpr bool lawHasRate() {
   return law_list_detail::hasRate<Law>(nullptr);
 }
 
+namespace law_list_detail {
+template <class Law>
+const char* saturation(decltype(&Law::saturatesItself)) {
+  return Law::saturatesItself();
+}
+template <class Law>
+const char* saturation(...) {
+  return nullptr;
+}
+}  // namespace law_list_detail
+
+// Why law `Law` has no clamp to leave out, where it saturates its own
+// commands and its driver clamps nothing (its declaration's
+// saturatesItself(), e.g. "for the Pioneer P3-DX: ..."); else null.
+template <class Law>
+const char* lawSaturation() {
+  return law_list_detail::saturation<Law>(nullptr);
+}
+
 // Calls f(Law()) for each law of the list that runs at a rate of its own.
 template <class F>
 void forEachLawWithARate(F&& f) {

@@ -91,11 +91,18 @@ struct PioneerInput {
   }
 };
 
+// Why a flight of a Pioneer law has no clamp to leave out (its laws'
+// declaration saturatesItself(), other_laws.h).
+constexpr const char* kPioneerSaturation =
+    "for the Pioneer P3-DX: its laws saturate their commands (u within 0.75 or 1 m/s, omega within 1 rad/s) as "
+    "AuRoRA's do, and RosAria clamps nothing";
+
 // cKinematicController: Ud = Ur, u within 0.75 m/s, omega within 1 rad/s.
 struct PioneerKinematic
     : LawOf<PioneerKinematic, aurora_sim::Pioneer3dx, PioneerKinematicGains, NoPioneerMemory> {
   using Input = PioneerInput<3>;
   static const char* name() { return "pioneer_kinematic"; }
+  static const char* saturatesItself() { return kPioneerSaturation; }
 
   // The gains a sweep varies (law_gain_rows.h): k1, k2, x and y as one.
   static constexpr int kGainCount = 2;
@@ -124,6 +131,7 @@ struct PioneerKinematic
 struct PioneerDynamic : LawOf<PioneerDynamic, aurora_sim::Pioneer3dx, PioneerDynamicGains, PioneerDynamicMemory> {
   using Input = PioneerInput<5>;
   static const char* name() { return "pioneer_dynamic"; }
+  static const char* saturatesItself() { return kPioneerSaturation; }
 
   // The gains a sweep varies (law_gain_rows.h): kc1, kc2 (x and y as one),
   // kd1 and kd2 on u and omega.

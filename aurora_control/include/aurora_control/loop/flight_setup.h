@@ -134,50 +134,36 @@ inline LawFlight<Bebop2Compensator> loadCompensatorFlight(const FlightFiles& f, 
   return s;
 }
 
-// A Pioneer flight of `Law` (docs/pioneer3dx.md): the laws saturate their
-// commands as AuRoRA's do and RosAria passes them on, so there is no clamp
-// to leave out.
-template <class Law>
-LawFlight<Law> loadPioneerFlight(const FlightFiles& f, const std::string& no_clamp_option = "--no-clamp") {
-  if (f.no_clamp) {
-    throw ConfigError(no_clamp_option + " is refused for the Pioneer P3-DX: its laws saturate their commands "
-                      "(u within 0.75 or 1 m/s, omega within 1 rad/s) as AuRoRA's do, and RosAria clamps nothing");
-  }
-  return lawFlight<Law>(f, readPioneerFile<Law>(f.controller));
-}
-
 // Any law's flight from its controller file: its gains by its own reader
 // (readLawGains, given the vehicle's Ts), its commands clamped to the unit
-// range, as the drivers clamp, unless no_clamp. A law with options of its
+// range, as the drivers clamp, unless no_clamp. A law that saturates its
+// own commands (lawSaturation: the Pioneer's, whose driver clamps nothing)
+// has no clamp, and no clamp to leave out: no_clamp is refused, named
+// `no_clamp_option` ("--no-clamp", "clamp=False"). A law with options of its
 // own has a loadFlightOf of its own (below).
 template <class Law>
-LawFlight<Law> loadLawFlight(const FlightFiles& f) {
+LawFlight<Law> loadLawFlight(const FlightFiles& f, const std::string& no_clamp_option = "--no-clamp") {
+  const char* saturation = lawSaturation<Law>();
+  if (saturation && f.no_clamp) throw ConfigError(no_clamp_option + " is refused " + saturation);
   LawFlight<Law> s = lawFlight<Law>(f, Law::template Gains<double>::defaults());
   s.run.gains = readLawFile<Law>(f.controller, s.run.plant.Ts);
-  s.cfg.clamp_commands = s.cfg.clamp_at_drone = !f.no_clamp;
+  if (!saturation) s.cfg.clamp_commands = s.cfg.clamp_at_drone = !f.no_clamp;
   return s;
 }
 
 // The flight of law `law` from the files (withFlight's, per law): the
-// compensator's with its rate, a Pioneer law's without a clamp to leave
-// out, any other law's loadLawFlight.
+// compensator's with its rate, any other law's loadLawFlight.
 struct FlightOptionNames {
   double rate;                  // [Hz] the compensator's instead of its file's (0: the file's)
   std::string rate_option;      // how the rate was given, for a refusal ("--rate ", "rate=")
   std::string no_clamp_option;  // how no clamp was asked for ("--no-clamp", "clamp=False")
 };
 template <class Law>
-LawFlight<Law> loadFlightOf(Law, const FlightFiles& f, const FlightOptionNames&) {
-  return loadLawFlight<Law>(f);
+LawFlight<Law> loadFlightOf(Law, const FlightFiles& f, const FlightOptionNames& o) {
+  return loadLawFlight<Law>(f, o.no_clamp_option);
 }
 inline LawFlight<Bebop2Compensator> loadFlightOf(Bebop2Compensator, const FlightFiles& f, const FlightOptionNames& o) {
   return loadCompensatorFlight(f, o.rate, o.rate_option);
-}
-inline LawFlight<PioneerDynamic> loadFlightOf(PioneerDynamic, const FlightFiles& f, const FlightOptionNames& o) {
-  return loadPioneerFlight<PioneerDynamic>(f, o.no_clamp_option);
-}
-inline LawFlight<PioneerKinematic> loadFlightOf(PioneerKinematic, const FlightFiles& f, const FlightOptionNames& o) {
-  return loadPioneerFlight<PioneerKinematic>(f, o.no_clamp_option);
 }
 
 // The controller file's predictor (predictor_yaml.h) put into flight `s`:
