@@ -20,19 +20,23 @@ namespace aurora_control {
 
 namespace crew_detail {
 
-// A robot's vehicle as the launch starts it, and its driver's command.
-// What a robot's vehicle file says beyond its vehicle's constants: a
-// Pioneer's model choice, which the formation file may change.
-inline void fileChoices(const aurora_sim::Pioneer3dx::Params<double>& p, CrewRobot& r) {
-  r.vehicle_overrides.emplace_back("kinematic_model", p.kinematic != 0.0 ? "true" : "false");
+// What a robot's vehicle file says beyond its vehicle's constants, which
+// the formation file may change: its vehicle's fileChoices (a Pioneer's
+// model), where it declares them.
+template <class Vehicle>
+auto fileChoices(const typename Vehicle::template Params<double>& p, CrewRobot& r, int)
+    -> decltype(Vehicle::fileChoices(p), void()) {
+  for (const auto& choice : Vehicle::fileChoices(p)) r.vehicle_overrides.push_back(choice);
 }
-template <class Params>
-void fileChoices(const Params&, CrewRobot&) {}
+template <class Vehicle>
+void fileChoices(const typename Vehicle::template Params<double>&, CrewRobot&, long) {}
+
+// A robot's vehicle as the launch starts it, and its driver's command.
 
 template <class Vehicle>
 struct RobotVehicle {
   static void describe(const typename Vehicle::template Params<double>& p, CrewRobot& r) {
-    fileChoices(p, r);
+    fileChoices<Vehicle>(p, r, 0);
     r.vehicle = Vehicle::name();
     r.ground = !aurora_sim::SimProfile<Vehicle>::kFlies;
   }

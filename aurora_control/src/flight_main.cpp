@@ -76,14 +76,14 @@ bool parse(int argc, char** argv, Options& o) {
   d.add_options()("help,h", "this text")
       ("controller", po::value(&o.controller)->default_value(config + "/controllers/pd_saturated.yaml"), ("controller YAML (law and gains), or a shipped NAME (config/controllers/NAME.yaml; laws: " + knownLawNames() + "); its law chooses the vehicle").c_str())
       ("task", po::value(&o.task)->default_value(config + "/tasks/mission4.yaml"), "task YAML (waypoints, circle, lemniscate), or a shipped NAME (config/tasks/NAME.yaml)")
-      ("rate", po::value(&o.rate), "the Bebop 2 compensator's rate [Hz] instead of its file's: the vehicle's 30 Hz divided by whole steps (30, 15, 10, 7.5, 6, 5, ...)")
+      ("rate", po::value(&o.rate), ("the rate [Hz] of a law that runs at one of its own (" + aurora_common::entryNames([](auto&& f) { forEachLawWithARate(f); }) + ") instead of its file's: the vehicle's rate divided by whole steps (at 30 Hz: 30, 15, 10, 7.5, 6, 5, ...)").c_str())
       ("vehicle", po::value(&o.vehicle), ("vehicle YAML or a shipped NAME (default: the controller's vehicle, config/vehicles/NAME.yaml: " + lawVehicleNames() + ")").c_str())
       ("delay", po::value(&o.delays)->multitoken()->composing(), "feedback delay [samples of Ts], 0 to 2047 (limits.h); with --formation one per robot (default: the file's)")
-      ("no-clamp", po::bool_switch(&o.no_clamp), "do not clamp the law's commands (an AR.Drone's sim still does, as its driver; a Bebop is clamped nowhere; refused for the Pioneer, whose laws saturate)")
+      ("no-clamp", po::bool_switch(&o.no_clamp), ("do not clamp the law's commands, nor the vehicle's sim (an AR.Drone's still clamps, as its driver does); refused for a law that saturates its own commands (" + aurora_common::entryNames([](auto&& f) { forEachLawThatSaturates(f); }) + ")").c_str())
       ("formation", po::value(&o.formation), ("formation YAML or a shipped NAME (config/formations/*.yaml, docs/formation.md; shapes: " + knownShapeNames() + "): fly its robots and formation layer instead of --controller and --task").c_str())
       ("law", po::value(&o.law), ("with --formation, the shape's law instead of its file's, for a shape with laws of its own (" + shapeLawNames() + "; docs/formation.md)").c_str())
       ("link", po::value(&o.link), "link YAML or a shipped NAME (config/links/*.yaml, docs/links.md): jitter, losses, a command-path delay; its uplink delay unless --delay is given")
-      ("csv", po::value(&o.csv), "write one row per step k = 0..N at round-trip precision: step, t, the vehicle's state after k model steps (x, y, z, phi, theta, psi, dx, dy, dz, dphi, dtheta, dpsi; the Pioneer also u, omega), its commands u1..uN applied at step k (model order), the reference of step k and the tracking error (with --formation: each robot's state and commands, Q and Qd; docs/formation.md)");
+      ("csv", po::value(&o.csv), "write one row per step k = 0..N at round-trip precision: step, t, the vehicle's state after k model steps (x, y, z, phi, theta, psi, dx, dy, dz, dphi, dtheta, dpsi, then its own: a ground robot's u, omega), its commands u1..uN applied at step k (model order), the reference of step k and the tracking error (with --formation: each robot's state and commands, Q and Qd; docs/formation.md)");
   po::variables_map vm;
   po::store(po::command_line_parser(joinOptionValues(argc, argv, d)).options(d).run(), vm);
   if (vm.count("help")) {

@@ -56,7 +56,7 @@ constexpr aurora_common::ParameterSpec kSimParameterTable[kSimParameterRows] = {
     {"start", sim_rows::ParamKind::kPoint, sim_rows::kNoValue, sim_rows::kNoValue, sim_rows::kNoValue, "m",
      "the start point [x, y, z] (world frame)", nullptr, nullptr, false, "[0, 0, 0.75]"},
     {"start_at_state_point", sim_rows::ParamKind::kBool, 0, 0, 1, "",
-     "~start is the point the state gives (a Pioneer's control point, a ahead of its centre), as a formation "
+     "~start is the point the state gives (a ground robot's control point, ahead of its centre), as a formation "
      "file's starts are (formation.launch); false: the body's centre", nullptr, nullptr, false, nullptr},
     {"frame_id", sim_rows::ParamKind::kText, sim_rows::kNoValue, sim_rows::kNoValue, sim_rows::kNoValue, "",
      "the world frame of odom, path and tf", nullptr, nullptr, false, "world"},

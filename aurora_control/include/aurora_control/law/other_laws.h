@@ -90,6 +90,14 @@ const char* lawSaturation() {
   return law_list_detail::saturation<Law>(nullptr);
 }
 
+// Calls f(Law()) for each law of the list that saturates its own commands.
+template <class F>
+void forEachLawThatSaturates(F&& f) {
+  forEachLaw([&](auto law) {
+    if (lawSaturation<decltype(law)>()) f(law);
+  });
+}
+
 // Calls f(Law()) for each law of the list that runs at a rate of its own.
 template <class F>
 void forEachLawWithARate(F&& f) {

@@ -5,6 +5,8 @@
 // RosAria's cmd_vel (linear.x = u_ref [m/s], angular.z = omega_ref [rad/s]).
 #pragma once
 
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "aurora_sim/command_mapping.h"
@@ -54,6 +56,12 @@ struct Pioneer3dx : VehicleDefaults {  // its own start, state names and limitIn
   template <typename T>
   AURORA_HD static T limitInput(const Params<T>&, int, const T& u) {
     return u;
+  }
+
+  // What its vehicle file says beyond its constants, which a formation file
+  // may change (the robot's vehicle file formation_robot writes): its model.
+  static std::vector<std::pair<std::string, std::string>> fileChoices(const Params<double>& p) {
+    return {{"kinematic_model", p.kinematic != 0.0 ? "true" : "false"}};
   }
 
   static const char* factorName(int i) {
