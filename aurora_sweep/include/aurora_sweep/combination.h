@@ -91,13 +91,14 @@ constexpr int kRobotGainRobots = kLargestShape.robots;
 AURORA_HD constexpr int robotGainParam(int robot, int i) { return kParamFirstRobotGain + robot * kRobotGainRoom + i; }
 constexpr int kParamRobotGainEnd = robotGainParam(kRobotGainRobots, 0);
 
+// The rooms, as the record lays them out.
 struct GainRoom {
   int first, size;
 };
 constexpr int kLawGainRooms = 3;
 constexpr GainRoom lawGainRoom(int r) {
-  return r == 0 ? GainRoom{kParamKp, 2}
-                : r == 1 ? GainRoom{kParamFirstUnderactuatedGain, kUnderactuatedGainCount}
+  return r == 0 ? GainRoom{kParamKp, kParamDelay - kParamKp}
+                : r == 1 ? GainRoom{kParamFirstUnderactuatedGain, kParamFirstModelFactor - kParamFirstUnderactuatedGain}
                          : GainRoom{kParamFirstLawGain, kLawGainRoom};
 }
 
