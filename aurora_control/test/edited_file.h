@@ -1,5 +1,5 @@
-// Tests of a file reader's refusals: a shipped config file with one edit,
-// read by the reader under test; what it refuses, or "" when it loads.
+// Tests of refusals: what a call is refused with, and a shipped config
+// file with one edit read by the reader under test; "" when it loads.
 #pragma once
 
 #include <gtest/gtest.h>
@@ -12,6 +12,17 @@
 
 namespace aurora_tests {
 
+// What `run()` is refused with (its ConfigError's text), or "" when it runs.
+template <class Run>
+std::string configRefusal(Run&& run) {
+  try {
+    run();
+  } catch (const aurora_common::ConfigError& e) {
+    return e.what();
+  }
+  return "";
+}
+
 // config/`file` with `from` replaced by `to`, read by read(path, config dir).
 template <class Read>
 std::string refusalOfEditedFile(const std::string& file, const std::string& from, const std::string& to, Read&& read) {
@@ -23,12 +34,7 @@ std::string refusalOfEditedFile(const std::string& file, const std::string& from
   text.replace(at, from.size(), to);
   const std::string path = ::testing::TempDir() + "/edited.yaml";
   std::ofstream(path) << text;
-  try {
-    read(path, config);
-  } catch (const aurora_common::ConfigError& e) {
-    return e.what();
-  }
-  return "";
+  return configRefusal([&] { read(path, config); });
 }
 
 }  // namespace aurora_tests

@@ -30,7 +30,7 @@ std::string strip(const std::string& s, const std::string& chars = " \t\r") {
 
 // What the launch files' one-line reader gives: each line with a ':' not
 // starting with '#', split at the first ':', the value cut at '#', blanks
-// and quotes stripped (launch/sim.launch, `vehicle_defaults`).
+// and quotes stripped (each launch file's `read_flat`).
 std::map<std::string, std::string> launchReading(const std::string& path) {
   std::map<std::string, std::string> read;
   std::ifstream in(path);

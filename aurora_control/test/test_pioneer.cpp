@@ -8,11 +8,17 @@
 #include <string>
 
 #include "aurora_control/law/pioneer_laws.h"
+#include "aurora_control/law/pioneer_yaml.h"
 #include "aurora_control/loop/flight_setup.h"
 #include "aurora_sim/vehicle/pioneer3dx/pioneer3dx_profile.h"
 #include "aurora_sim/vehicle/vehicle_yaml.h"
+#include "edited_file.h"
 
 namespace {
+
+// The Pioneer's sample time [s], which its laws' file reader is given
+// (readLawFile; they run every model step and read none).
+constexpr double kPioneerTs = 0.1;
 
 using aurora_control::PioneerDynamic;
 using aurora_control::PioneerKinematic;
@@ -167,15 +173,11 @@ TEST(Pioneer3dx, TheVehicleFileIsTheReference) {
   for (int i = 0; i < 6; ++i) EXPECT_EQ(file.theta[i], ref.theta[i]) << i;
   EXPECT_EQ(file.kinematic, 0.0);
   EXPECT_EQ(file.omega_gain_bug, 0.0);
-  try {
-    aurora_sim::loadVehicleFile<aurora_sim::Bebop2>(path, "the controller 'bebop2_compensator'");
-    ADD_FAILURE() << "a Bebop loop loaded a Pioneer file";
-  } catch (const aurora_common::ConfigError& e) {
-    EXPECT_NE(std::string(e.what()).find("is of type 'pioneer3dx', but the controller 'bebop2_compensator' flies "
-                                         "type 'bebop2'"),
-              std::string::npos)
-        << e.what();
-  }
+  const std::string refusal = aurora_tests::configRefusal(
+      [&] { aurora_sim::loadVehicleFile<aurora_sim::Bebop2>(path, "the controller 'bebop2_compensator'"); });
+  EXPECT_NE(refusal.find("is of type 'pioneer3dx', but the controller 'bebop2_compensator' flies type 'bebop2'"),
+            std::string::npos)
+      << "a Bebop loop loaded a Pioneer file: '" << refusal << "'";
 }
 
 // The shipped controller files are AuRoRA's default gains; the standard
@@ -183,9 +185,9 @@ TEST(Pioneer3dx, TheVehicleFileIsTheReference) {
 // starts with the control point a ahead and gives the spec's first step.
 TEST(Pioneer3dx, TheShippedFilesFlyTheStandardScenario) {
   const std::string c = AURORA_CONFIG_DIR;
-  const auto kin = aurora_control::readPioneerFile<PioneerKinematic>(c + "/controllers/pioneer_kinematic.yaml");
+  const auto kin = aurora_control::readLawFile<PioneerKinematic>(c + "/controllers/pioneer_kinematic.yaml", kPioneerTs);
   const auto kin_default = PioneerKinematic::Gains<double>::defaults();
-  const auto dyn = aurora_control::readPioneerFile<PioneerDynamic>(c + "/controllers/pioneer_dynamic.yaml");
+  const auto dyn = aurora_control::readLawFile<PioneerDynamic>(c + "/controllers/pioneer_dynamic.yaml", kPioneerTs);
   const auto dyn_default = PioneerDynamic::Gains<double>::defaults();
   for (int i = 0; i < 2; ++i) {
     EXPECT_EQ(kin.k1[i], kin_default.k1[i]);
@@ -220,7 +222,7 @@ TEST(Pioneer3dx, AnyLawsFlightReadsItsGainsByItsOwnReader) {
   const aurora_control::FlightFiles files{c + "/controllers/pioneer_dynamic.yaml",
                                           c + "/tasks/pioneer_lemniscate.yaml", c + "/vehicles/pioneer3dx.yaml", ""};
   const auto any = aurora_control::loadLawFlight<PioneerDynamic>(files);
-  const auto file = aurora_control::readPioneerFile<PioneerDynamic>(files.controller);
+  const auto file = aurora_control::readLawFile<PioneerDynamic>(files.controller, kPioneerTs);
   for (int i = 0; i < 2; ++i) {
     EXPECT_EQ(any.run.gains.kc1[i], file.kc1[i]);
     EXPECT_EQ(any.run.gains.kd2[i], file.kd2[i]);
@@ -230,13 +232,10 @@ TEST(Pioneer3dx, AnyLawsFlightReadsItsGainsByItsOwnReader) {
   EXPECT_EQ(aurora_control::lawSaturation<aurora_control::Bebop2Compensator>(), nullptr);
   aurora_control::FlightFiles unclamped = files;
   unclamped.no_clamp = true;
-  try {
-    aurora_control::loadLawFlight<PioneerDynamic>(unclamped, "clamp=False");
-    ADD_FAILURE() << "a Pioneer flight left out a clamp it does not have";
-  } catch (const aurora_common::ConfigError& e) {
-    EXPECT_NE(std::string(e.what()).find("clamp=False is refused for the Pioneer P3-DX: its laws saturate"),
-              std::string::npos) << e.what();
-  }
+  const std::string unclamped_refusal =
+      aurora_tests::configRefusal([&] { aurora_control::loadLawFlight<PioneerDynamic>(unclamped, "clamp=False"); });
+  EXPECT_NE(unclamped_refusal.find("clamp=False is refused for the Pioneer P3-DX: its laws saturate"), std::string::npos)
+      << "a Pioneer flight left out a clamp it does not have: '" << unclamped_refusal << "'";
   // The compensator's file without its own reader's key (clamp_commands).
   const std::string compensator = ::testing::TempDir() + "compensator_gains_only.yaml";
   {
@@ -253,12 +252,9 @@ TEST(Pioneer3dx, AnyLawsFlightReadsItsGainsByItsOwnReader) {
   EXPECT_FALSE(aurora_control::loadLawFlight<aurora_control::Bebop2Compensator>(bebop_unclamped).cfg.clamp_at_drone);
   aurora_control::FlightFiles wrong = files;
   wrong.controller = c + "/controllers/pioneer_kinematic.yaml";  // k1, k2: not the dynamic law's keys
-  try {
-    aurora_control::loadLawFlight<PioneerDynamic>(wrong);
-    ADD_FAILURE() << "a kinematic law's file read as the dynamic law's";
-  } catch (const aurora_common::ConfigError& e) {
-    EXPECT_NE(std::string(e.what()).find("controller.k1"), std::string::npos) << e.what();
-  }
+  const std::string wrong_refusal = aurora_tests::configRefusal([&] { aurora_control::loadLawFlight<PioneerDynamic>(wrong); });
+  EXPECT_NE(wrong_refusal.find("controller.k1"), std::string::npos)
+      << "a kinematic law's file read as the dynamic law's: '" << wrong_refusal << "'";
 }
 
 namespace {
@@ -267,12 +263,7 @@ namespace {
 std::string refusalOf(const std::string& text) {
   const std::string path = testing::TempDir() + "/pioneer_controller.yaml";
   std::ofstream(path) << text;
-  try {
-    aurora_control::readPioneerFile<PioneerDynamic>(path);
-  } catch (const aurora_common::ConfigError& e) {
-    return e.what();
-  }
-  return "";
+  return aurora_tests::configRefusal([&] { aurora_control::readLawFile<PioneerDynamic>(path, kPioneerTs); });
 }
 
 }  // namespace
@@ -306,13 +297,9 @@ TEST(Pioneer3dx, ARateIsRefusedForALawThatHasNoneOfItsOwn) {
   EXPECT_EQ(aurora_common::entryNames([](auto&& f) { aurora_control::forEachLawWithARate(f); }), "bebop2_compensator");
   EXPECT_NO_THROW(aurora_control::refuseRateFor("bebop2_compensator", 10.0, "--rate"));
   EXPECT_NO_THROW(aurora_control::refuseRateFor("pioneer_dynamic", 0.0, "--rate"));  // none given
-  try {
-    aurora_control::refuseRateFor("pioneer_kinematic", 5.0, "--rate");
-    ADD_FAILURE() << "a rate for the Pioneer's kinematic law accepted";
-  } catch (const aurora_common::ConfigError& e) {
-    EXPECT_NE(std::string(e.what()).find("--rate is refused here: it sets the rate of a law that runs at one of its "
-                                         "own (bebop2_compensator); 'pioneer_kinematic'"),
-              std::string::npos)
-        << e.what();
-  }
+  const std::string refusal = aurora_tests::configRefusal([] { aurora_control::refuseRateFor("pioneer_kinematic", 5.0, "--rate"); });
+  EXPECT_NE(refusal.find("--rate is refused here: it sets the rate of a law that runs at one of its own "
+                         "(bebop2_compensator); 'pioneer_kinematic'"),
+            std::string::npos)
+      << "a rate for the Pioneer's kinematic law: '" << refusal << "'";
 }

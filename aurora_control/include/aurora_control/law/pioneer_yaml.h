@@ -56,11 +56,4 @@ inline void readLawGains(const YamlReader& r, const YAML::Node& c, const std::st
   readPioneerGains(r, c, key, g);
 }
 
-// Law's gains from its controller file (controller.name is Law::name()):
-// readLawFile's, whatever the vehicle's Ts (they run every model step).
-template <class Law>
-typename Law::template Gains<double> readPioneerFile(const std::string& path) {
-  return readLawFile<Law>(path, 0.0);
-}
-
 }  // namespace aurora_control
