@@ -19,8 +19,7 @@ int main() {
   const auto p = aurora_sim::referenceArdrone2Params();
   Task<double> task;
   task.waypoints = WaypointTask<double>::singlePoint(2.0, 1.0, 2.0, 60.0);
-  ControllerSettings set;
-  set.law = LawType::kUnderactuated;
+  auto set = LawSettings<ArdroneLawData>::flying<ArdroneLaw<LawType::kUnderactuated>>();
   set.vehicle = p;
   std::vector<std::array<double, aurora_sim::kStateSize>> states;
   runFlight(p, set, task, studyIterationCount(60.0, p.Ts),

@@ -191,11 +191,10 @@ template <class Settings>
 void ControllerNodeOf<Settings>::refuseUnknownTopLevelKeys() {
   // The node's own keys and those the reconfigure server writes beside them.
   std::vector<std::string> accepted{"controller", "task", "safety", "joystick", "mode", "trigger",
-                                    "delay", "clamp_commands", "lockstep_subscribers", "record_subscribers", "kp", "kd",
+                                    "delay", "clamp_commands", "lockstep_subscribers", "record_subscribers",
                                     "delay_samples", "link", "link_name", "yaml_files", "predictor",
                                     "controller_file"};
-  const std::vector<std::string> gains = lawGainNames(LawType::kUnderactuated);
-  accepted.insert(accepted.end(), gains.begin(), gains.end());
+  for (const auto& gain : liveGainsShown(core_->settings)) accepted.push_back(gain.first);
   refuseUnknownParams(pnh_, "", accepted, "a typo, or a key of another file");
   refuseUnknownParams(pnh_, "delay", {"samples", "seconds"}, "");
 }
@@ -227,14 +226,10 @@ long ControllerNodeOf<Settings>::readDelaySamples() {
 }
 
 template <class Settings>
-ControllerConfig ControllerNodeOf<Settings>::liveConfig() const {
+dynamic_reconfigure::Config ControllerNodeOf<Settings>::liveConfig() const {
   const Settings& set = core_->settings;
   ControllerConfig config = ControllerConfig::__getDefault__();
-  const ControllerSettings& gains = ardroneGainsShown(set);
-  config.kp = gains.gains.kp;
-  config.kd = gains.gains.kd;
   config.delay_samples = static_cast<double>(set.delay);
-  writeUnderactuatedGains(gains.underactuated, config);
   config.uplink_jitter = static_cast<double>(set.link.uplink.jitter_max);
   config.uplink_loss = set.link.uplink.loss;
   config.uplink_burst = set.link.uplink.burst;
@@ -243,7 +238,15 @@ ControllerConfig ControllerNodeOf<Settings>::liveConfig() const {
   config.downlink_loss = set.link.downlink.loss;
   config.downlink_burst = set.link.downlink.burst;
   config.predictor = predictorFormName(set.predictor);
-  return config;
+  dynamic_reconfigure::Config message;
+  config.__toMessage__(message);
+  // The live laws' gains, by their rows' names (the server's fields of the same names).
+  for (const auto& gain : liveGainsShown(set)) {
+    for (auto& d : message.doubles) {
+      if (d.name == gain.first) d.value = gain.second;
+    }
+  }
+  return message;
 }
 
 template <class Settings>
@@ -251,9 +254,7 @@ void ControllerNodeOf<Settings>::advertiseLiveSettings() {
   descriptions_pub_ = pnh_.advertise<dynamic_reconfigure::ConfigDescription>("parameter_descriptions", 1, true);
   descriptions_pub_.publish(ControllerConfig::__getDescriptionMessage__());
   updates_pub_ = pnh_.advertise<dynamic_reconfigure::Config>("parameter_updates", 1, true);
-  dynamic_reconfigure::Config update;
-  liveConfig().__toMessage__(update);
-  updates_pub_.publish(update);
+  updates_pub_.publish(liveConfig());
   set_parameters_ = pnh_.advertiseService("set_parameters", &ControllerNodeOf::onSetParameters, this);
 }
 
@@ -296,8 +297,7 @@ bool ControllerNodeOf<Settings>::onSetParameters(dynamic_reconfigure::Reconfigur
     shown.uplink.delay = set.delay;  // the node's delay is the uplink's
     ROS_INFO("controller: link changed live (docs/links.md): %s", linkText(shown).c_str());
   }
-  const ControllerConfig config = liveConfig();
-  config.__toMessage__(rsp.config);
+  rsp.config = liveConfig();
   updates_pub_.publish(rsp.config);
   return true;
 }
@@ -491,7 +491,7 @@ void ControllerNodeOf<Settings>::cycle(const ros::Time& now, double age) {
     mission_reported_ = false;
   }
   const Reference<double> ref =
-      decision.hold ? Core::restingAt(decision.hold_point) : task_.at(task_time);
+      decision.hold ? restingAt(decision.hold_point) : task_.at(task_time);
   ControlOutput out = decision.run_law ? core_->compute(ref) : core_->hover();
   std::string mode = decision.mode;
   if (joy_.deadman) {
@@ -605,10 +605,12 @@ void ControllerNodeOf<Settings>::fillLaw(aurora_msgs::Control& control) const {
   control.gain_names.clear();
   control.gains.clear();
   for (const auto& gain : gainsInForce(set)) control.gain_names.push_back(gain.first), control.gains.push_back(gain.second);
-  const ControllerSettings& shown = ardroneGainsShown(set);  // another law's: kp = kd = 0
-  const bool pd = shown.law == LawType::kPdSaturated;
-  control.kp = pd ? shown.gains.kp : 0.0;
-  control.kd = pd ? shown.gains.kd : 0.0;
+  // The thesis's PD gains, where the law has them (0 otherwise).
+  control.kp = control.kd = 0.0;
+  for (const auto& gain : gainsInForce(set)) {
+    if (gain.first == "kp") control.kp = gain.second;
+    if (gain.first == "kd") control.kd = gain.second;
+  }
 }
 
 template <class Settings>
@@ -618,13 +620,15 @@ void ControllerNodeOf<Settings>::publishTaskMarkers() {
 }
 
 std::shared_ptr<void> ControllerOfLaw::make(ros::NodeHandle nh, ros::NodeHandle private_nh) {
-  std::string name;
-  private_nh.getParam("controller/name", name);
+  // The node of the family of the law ~controller names (its vehicle's);
+  // a missing mapping or an unknown name is refused here.
+  const std::string name = lawNameIn(YamlReader("parameter ", "/"), paramAsYaml(private_nh, "controller"),
+                                     fullKey(private_nh, "controller"));
   std::shared_ptr<void> node;
-  const bool other = withOtherLaw(name, [&](auto law) {
-    node = std::make_shared<ControllerNodeOf<LawSettings<decltype(law)>>>(nh, private_nh);
+  withLawNamed(name, [&](auto law) {
+    node = std::make_shared<ControllerNodeOf<LawSettings<typename decltype(law)::Data>>>(nh, private_nh);
   });
-  return other ? node : std::make_shared<ControllerNodeOf<ControllerSettings>>(nh, private_nh);  // refuses an unknown name
+  return node;
 }
 
 }  // namespace aurora_control

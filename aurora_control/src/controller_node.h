@@ -26,9 +26,9 @@
 
 namespace aurora_control {
 
-// The node for one kind of law: Settings is ControllerSettings (the
-// AR.Drone's two laws) or LawSettings<Law> (another vehicle's law,
-// other_laws.h); its vehicle's commands go out as its driver's cmd_vel.
+// The node for one family of laws: Settings is LawSettings<Data> (the law
+// of Data's family its controller mapping names, other_laws.h); its
+// vehicle's commands go out as its driver's cmd_vel.
 template <class Settings>
 class ControllerNodeOf {
  public:
@@ -51,7 +51,7 @@ class ControllerNodeOf {
   bool onSetParameters(dynamic_reconfigure::Reconfigure::Request& req,
                        dynamic_reconfigure::Reconfigure::Response& rsp);
   void advertiseLiveSettings();
-  ControllerConfig liveConfig() const;  // the settings in force, as the server shows them
+  dynamic_reconfigure::Config liveConfig() const;  // the settings in force, as the server shows them
   // age: of the newest state [s] (stateAge)
   void cycle(const ros::Time& now, double age);
   void logEvent(const std::string& event) const;

@@ -57,22 +57,6 @@ std::string gainsText(const Settings& settings) {
 }
 const char* taskTypeName(TaskType type);
 
-// The underactuated gains to / from the reconfigure server's config.
-template <typename Config>
-void writeUnderactuatedGains(const UnderactuatedGains<double>& g, Config& c) {
-  c.k1_x = g.k1[kAxisX], c.k2_x = g.k2[kAxisX], c.k1_y = g.k1[kAxisY], c.k2_y = g.k2[kAxisY];
-  c.k1_z = g.k1[kAxisZ], c.k2_z = g.k2[kAxisZ], c.k1_phi = g.k1[kAxisPhi], c.k2_phi = g.k2[kAxisPhi];
-  c.k1_theta = g.k1[kAxisTheta], c.k2_theta = g.k2[kAxisTheta];
-  c.k1_psi = g.k1[kAxisPsi], c.k2_psi = g.k2[kAxisPsi];
-}
-template <typename Config>
-void readUnderactuatedGains(const Config& c, UnderactuatedGains<double>& g) {
-  g.k1[kAxisX] = c.k1_x, g.k2[kAxisX] = c.k2_x, g.k1[kAxisY] = c.k1_y, g.k2[kAxisY] = c.k2_y;
-  g.k1[kAxisZ] = c.k1_z, g.k2[kAxisZ] = c.k2_z, g.k1[kAxisPhi] = c.k1_phi, g.k2[kAxisPhi] = c.k2_phi;
-  g.k1[kAxisTheta] = c.k1_theta, g.k2[kAxisTheta] = c.k2_theta;
-  g.k1[kAxisPsi] = c.k1_psi, g.k2[kAxisPsi] = c.k2_psi;
-}
-
 // ~task through the one task schema (task_yaml.h).
 // `heights`: the vehicle's (TaskHeights::of<Vehicle>(): a ground robot's task lies on the floor).
 Task<double> loadTask(const ros::NodeHandle& pnh, const TaskHeights& heights = TaskHeights::flying());

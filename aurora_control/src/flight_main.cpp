@@ -23,6 +23,7 @@
 #include "aurora_control/formation/shapes.h"
 #include "aurora_control/law/other_laws.h"
 #include "aurora_control/params/shipped_files.h"
+#include "aurora_sim/vehicle/vehicle_type.h"
 #include "option_values.h"
 
 namespace po = boost::program_options;
@@ -68,6 +69,15 @@ void flyFormationFile(const Options& o) {
   withFormationDocument(doc, o.law, [&](auto e, const auto& file) { decltype(e)::fly(file, f); });
 }
 
+// The vehicles whose sim clamps in every flight (kAlwaysClamps), by name.
+std::string alwaysClamping() {
+  return aurora_common::entryNames([](auto&& f) {
+    aurora_sim::forEachVehicle([&](auto v) {
+      if (decltype(v)::kAlwaysClamps) f(v);
+    });
+  });
+}
+
 void resolve(const po::variables_map& vm, const std::string& config, Options& o);
 
 bool parse(int argc, char** argv, Options& o) {
@@ -79,7 +89,7 @@ bool parse(int argc, char** argv, Options& o) {
       ("rate", po::value(&o.rate), ("the rate [Hz] of a law that runs at one of its own (" + aurora_common::entryNames([](auto&& f) { forEachLawWithARate(f); }) + ") instead of its file's: the vehicle's rate divided by whole steps (at 30 Hz: 30, 15, 10, 7.5, 6, 5, ...)").c_str())
       ("vehicle", po::value(&o.vehicle), ("vehicle YAML or a shipped NAME (default: the controller's vehicle, config/vehicles/NAME.yaml: " + lawVehicleNames() + ")").c_str())
       ("delay", po::value(&o.delays)->multitoken()->composing(), "feedback delay [samples of Ts], 0 to 2047 (limits.h); with --formation one per robot (default: the file's)")
-      ("no-clamp", po::bool_switch(&o.no_clamp), ("do not clamp the law's commands, nor the vehicle's sim (an AR.Drone's still clamps, as its driver does); refused for a law that saturates its own commands (" + aurora_common::entryNames([](auto&& f) { forEachLawThatSaturates(f); }) + ")").c_str())
+      ("no-clamp", po::bool_switch(&o.no_clamp), ("do not clamp the law's commands, nor the vehicle's sim (except " + alwaysClamping() + "'s, which clamps as its driver does); refused for a law that saturates its own commands (" + aurora_common::entryNames([](auto&& f) { forEachLawThatSaturates(f); }) + ")").c_str())
       ("formation", po::value(&o.formation), ("formation YAML or a shipped NAME (config/formations/*.yaml, docs/formation.md; shapes: " + knownShapeNames() + "): fly its robots and formation layer instead of --controller and --task").c_str())
       ("law", po::value(&o.law), ("with --formation, the shape's law instead of its file's, for a shape with laws of its own (" + shapeLawNames() + "; docs/formation.md)").c_str())
       ("link", po::value(&o.link), "link YAML or a shipped NAME (config/links/*.yaml, docs/links.md): jitter, losses, a command-path delay; its uplink delay unless --delay is given")

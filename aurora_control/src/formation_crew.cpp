@@ -17,9 +17,9 @@ std::unique_ptr<FormationCrew> LineShapeEntry::crew(const File& f, const CrewReq
   requestedDelays(q, 2, Ts, formationTicks(run.reference.duration, Ts), [&](int r) -> FormationDrone<double, aurora_control::ArdroneLawData>& {
     return run.drone[r];
   });
-  const LawType law = f.drones[0].controller.law;
-  return std::unique_ptr<FormationCrew>(new CrewOf<LineFormation<double>, ControllerSettings>(
-      run, flyingLaw(law), name(), std::string(formationLawName(f.law)) + ", drones: " + aurora_control::lawName(law),
+  const LawSettings<ArdroneLawData>& law = f.drones[0].controller;
+  return std::unique_ptr<FormationCrew>(new CrewOf<LineFormation<double>, LawSettings<ArdroneLawData>>(
+      run, flyingLaw<ArdroneLawData>(law.law), name(), std::string(formationLawName(f.law)) + ", drones: " + lawNameOf(law),
       {f.drones[0].name_space, f.drones[1].name_space}, {q.line_vehicle_file, q.line_vehicle_file},
       formationTicks(run.reference.duration, Ts)));
 }

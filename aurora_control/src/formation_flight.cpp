@@ -160,7 +160,7 @@ FormationFlight flyFormationFiles(const FormationFile& file, const FormationFlig
     r.judge(obs);
   };
   // The full history, as the other shapes' flights (a run does not depend on it).
-  withLaw(r.file.drones[0].controller.law, [&](auto law) {
+  r.file.drones[0].controller.withLawType([&](auto law) {
     runFormation<decltype(law), double, Line, kDelayHistory>(r.run, r.ticks, each);
   });
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -176,7 +176,7 @@ void LineShapeEntry::fly(const File& file, const FormationFlightOptions& o) {
   });
   std::printf("flight: formation '%s' (line, %s, %s law on each drone), %.1f s, delays %ld and %ld samples: "
               "%ld ticks in %.3f s\n", o.formation.c_str(), formationLawName(r.file.law),
-              lawName(r.file.drones[0].controller.law), r.file.reference.duration, r.run.drone[0].delay,
+              lawNameOf(r.file.drones[0].controller), r.file.reference.duration, r.run.drone[0].delay,
               r.run.drone[1].delay, r.ticks, r.seconds);
   std::printf("  RMS formation error after 10 s: rho %.4f m, alpha %.4f rad, beta %.4f rad, position (x, y) %.4f m, "
               "height %.4f m\n", r.rms[0], r.rms[1], r.rms[2], r.rms[3], r.rms[4]);

@@ -117,7 +117,7 @@ CrewTick FormationNode::holdOrHover(const Supervisor::Decision& c) {
     if (!crew_->ready(d)) continue;  // zero command, reference at the origin
     if (f.run_law && f.hold) {
       t.out[d] = crew_->hold(d, f.hold_point);
-      t.ref[d] = ArdroneController<kDelayHistory>::restingAt(f.hold_point);
+      t.ref[d] = restingAt(f.hold_point);
     } else {
       t.out[d] = crew_->hover(d);
     }

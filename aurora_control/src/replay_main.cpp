@@ -90,10 +90,9 @@ struct Overrides {
   double kp_value = 0, kd_value = 0, delay_seconds_value = 0;
   long delay_value = 0;
   bool clamp_value = true;
-  // --controller FILE: its law's name and mapping; an AR.Drone law's gains read.
+  // --controller FILE: its law's name and mapping (read with its vehicle's sample time: fileLaw).
   std::string controller_path, controller_name;
   YAML::Node controller_mapping;
-  ControllerSettings law_settings;
   bool any() const { return kp || kd || delay || delay_seconds || clamp || law; }
 };
 
@@ -107,32 +106,27 @@ void loadControllerFile(const std::string& path, Overrides& o) {
     }
     o.controller_name = controllerFileName(path);
     o.law = true;
-    if (vehicleOfLaw(o.controller_name) == LawVehicle::name()) {
-      const ControllerFile f = readControllerFile(path);
-      o.law_settings = f.settings;
-      if (f.has_clamp) o.clamp = true, o.clamp_value = f.clamp;
-      return;
-    }
-    // Another vehicle's law: read with its vehicle's sample time (cycleLaw).
     const YAML::Node root = loadYamlFile("controller file", path);
     const YamlReader r("controller file '" + path + "': ");
-    r.onlyKeys(root, "", {"controller", "clamp_commands"});
+    r.onlyKeys(root, "", {"controller", "clamp_commands", "predictor"});  // an 'off' predictor: refused above otherwise
     o.controller_mapping = root["controller"];
+    lawNameIn(r, o.controller_mapping, "controller");
     if (root["clamp_commands"]) o.clamp = true, o.clamp_value = r.boolean(root["clamp_commands"], "clamp_commands");
   } catch (const ConfigError& e) {
     fail(e.what());
   }
 }
 
-// The law and gains recorded in a control message (the node writes them
-// each cycle, so a live reconfiguration replays too).
-void recordedLaw(const aurora_msgs::Control& c, ControllerSettings& set) {
-  set.law = c.controller == "underactuated" ? LawType::kUnderactuated : LawType::kPdSaturated;
-  const std::vector<std::string> names = lawGainNames(set.law);
-  for (size_t i = 0; i < names.size() && i < c.gains.size(); ++i) {
-    if (c.gain_names[i] != names[i]) fail("control message of step " + std::to_string(c.step) + ": gain '" + c.gain_names[i] + "' where '" + names[i] + "' was expected");
-    lawGain(set, static_cast<int>(i)) = c.gains[i];
+// The gains recorded in a control message (the node writes them each
+// cycle, so a live reconfiguration replays too); one law per bag.
+template <class Data>
+void recordedLaw(const aurora_msgs::Control& c, LawSettings<Data>& set) {
+  if (c.controller != lawNameOf(set)) {
+    fail("control message of step " + std::to_string(c.step) + ": controller '" + c.controller + "' where '" +
+         lawNameOf(set) + "' was recorded before: one law per bag");
   }
+  const std::string missing = setGainsNamed(set, c.gain_names, c.gains);
+  if (!missing.empty()) fail("control message of step " + std::to_string(c.step) + ": gain '" + missing + "' missing");
 }
 
 // The command line (a mistake ends the program with status 2 and the usage).
@@ -287,31 +281,10 @@ std::string droneNamespace(rosbag::Bag& bag, std::string ns) {
   return ns;
 }
 
-// The AR.Drone's law and gains of the cycle of `c`: recorded, or the
-// --controller file's, with --kp, --kd.
-void cycleLaw(const aurora_msgs::Control& c, const Overrides& o, ControllerSettings& set) {
-  if (o.law) {
-    set.law = o.law_settings.law, set.gains = o.law_settings.gains;
-    set.underactuated = o.law_settings.underactuated;
-  } else {
-    recordedLaw(c, set);
-  }
-  if ((o.kp || o.kd) && set.law != LawType::kPdSaturated) {
-    fail(std::string(o.kp ? "--kp" : "--kd") + " is a gain of the pd_saturated law, but the " +
-         (o.law ? "--controller file's" : "bag's") + " controller is " + lawName(set.law) +
-         " (step " + std::to_string(c.step) + "): give its gains in a controller file with "
-         "--controller FILE (e.g. config/controllers/underactuated.yaml)");
-  }
-  if (o.kp) set.gains.kp = o.kp_value;
-  if (o.kd) set.gains.kd = o.kd_value;
-}
-
-// The --controller file's gains of another vehicle's law, read once with
-// its vehicle's sample time (the compensator's rate must divide it); the
-// AR.Drone's were read with the file (cycleLaw copies them).
-void fileLaw(const Overrides&, ControllerSettings&) {}
-template <class Law>
-void fileLaw(const Overrides& o, LawSettings<Law>& set) {
+// The --controller file's law and gains, read once with its vehicle's
+// sample time (the compensator's rate must divide it).
+template <class Data>
+void fileLaw(const Overrides& o, LawSettings<Data>& set) {
   if (!o.law) return;
   try {
     readLawMapping(YamlReader("controller file '" + o.controller_path + "': "), o.controller_mapping, "controller", set);
@@ -320,22 +293,47 @@ void fileLaw(const Overrides& o, LawSettings<Law>& set) {
   }
 }
 
-// Another vehicle's law: its gains as recorded (Control.gain_names), or the
-// --controller file's (fileLaw's, kept); --kp, --kd are the AR.Drone's.
-template <class Law>
-void cycleLaw(const aurora_msgs::Control& c, const Overrides& o, LawSettings<Law>& set) {
-  if (o.kp || o.kd) {
-    fail(std::string(o.kp ? "--kp" : "--kd") + " is a gain of the pd_saturated law, but the " +
-         (o.law ? "--controller file's" : "bag's") + " controller is " + Law::name() + ": give its gains in a "
-         "controller file with --controller FILE (e.g. config/controllers/" + Law::name() + ".yaml)");
+// The PD law's gain `name` of the law in force set to v; false when the
+// law has no gain of that name.
+template <class Data>
+bool setGain(LawSettings<Data>& set, const std::string& name, double v) {
+  bool found = false;
+  set.withLawType([&](auto law) {
+    for (const auto& slot : lawGainSlots(law, set.gains)) {
+      if (slot.first == name) *slot.second = v, found = true;
+    }
+  });
+  return found;
+}
+
+// The law whose gain `name` is (the first of the list with one).
+inline std::string lawWithGain(const std::string& name) {
+  std::string law;
+  forEachLaw([&](auto l) {
+    for (int i = 0; i < decltype(l)::kGainCount && law.empty(); ++i) {
+      if (name == decltype(l)::gainRow(i).name) law = l.name();
+    }
+  });
+  return law;
+}
+
+// The law and gains of the cycle of `c`: recorded, or the --controller
+// file's (fileLaw's, kept), with --kp, --kd.
+template <class Data>
+void cycleLaw(const aurora_msgs::Control& c, const Overrides& o, LawSettings<Data>& set) {
+  if (!o.law) recordedLaw(c, set);
+  struct Given {
+    bool on;
+    const char* name;
+    double value;
+  };
+  for (const Given& g : {Given{o.kp, "kp", o.kp_value}, Given{o.kd, "kd", o.kd_value}}) {
+    if (!g.on || setGain(set, g.name, g.value)) continue;
+    fail(std::string("--") + g.name + " is a gain of the " + lawWithGain(g.name) + " law, but the " +
+         (o.law ? "--controller file's" : "bag's") + " controller is " + lawNameOf(set) + " (step " +
+         std::to_string(c.step) + "): give its gains in a controller file with --controller FILE (e.g. "
+         "config/controllers/" + lawNameOf(set) + ".yaml)");
   }
-  if (o.law) return;
-  if (c.controller != Law::name()) {
-    fail("control message of step " + std::to_string(c.step) + ": controller '" + c.controller + "' where '" +
-         Law::name() + "' was recorded before: one law per bag");
-  }
-  const std::string missing = setNamedGains(set.gains, c.gain_names, c.gains);
-  if (!missing.empty()) fail("control message of step " + std::to_string(c.step) + ": gain '" + missing + "' missing");
 }
 
 // The settings of the cycle of `c`: the recorded law, gains, delay and
@@ -462,6 +460,7 @@ std::unique_ptr<DelayedController<kCapacity, Settings>> makeCore(const Arguments
          YamlReader::fmt(recorded.sample_time) + " s: give the flight's vehicle file with --vehicle FILE");
   }
   core->settings.Ts = recorded.sample_time;
+  core->settings.law = lawIndexOf<typename Settings::Data>(recorded.controller);
   fileLaw(args.o, core->settings);
   cycleSettings(recorded, args.o, iterations, recorded.task_duration, core->settings);
   if (!args.link_path.empty()) {
@@ -728,11 +727,11 @@ int run(const Arguments& args) {
   if (controls.empty() || states.by_step.empty()) fail("no " + ns + "/control or " + ns + "/state messages");
   // The law: the --controller file's, else the recorded one (its vehicle's core).
   const std::string law = args.o.law ? args.o.controller_name : controls.front().controller;
-  int status = 0;
-  const bool other = withOtherLaw(law, [&](auto l) {
-    status = replayCycles<LawSettings<decltype(l)>>(args, ns, states, controls);
-  });
-  return other ? status : replayCycles<ControllerSettings>(args, ns, states, controls);
+  int status = 2;
+  if (!withLawNamed(law, [&](auto l) { status = replayCycles<LawSettings<typename decltype(l)::Data>>(args, ns, states, controls); })) {
+    fail("controller '" + law + "' is unknown: accepted controllers: " + knownLawNames());
+  }
+  return status;
 }
 
 }  // namespace

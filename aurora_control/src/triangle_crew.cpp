@@ -19,8 +19,8 @@ std::unique_ptr<FormationCrew> TriangleShapeEntry::crew(const File& setup, const
   TriangleRun<TriangleDroneLaw> run = triangleRun<TriangleDroneLaw>(setup);
   const long steps = triangleSteps(setup);
   requestedDelays(q, 3, setup.drone.Ts, steps, [&](int r) -> FormationDrone<double, aurora_control::ArdroneLawData>& { return run.drone[r]; });
-  return std::unique_ptr<FormationCrew>(new CrewOf<Triangle, ControllerSettings>(
-      run, flyingLaw(LawType::kUnderactuated), name(),
+  return std::unique_ptr<FormationCrew>(new CrewOf<Triangle, LawSettings<ArdroneLawData>>(
+      run, flyingLaw<ArdroneLawData>(int(LawType::kUnderactuated)), name(),
       std::string(triangleLawName(setup.law)) + ", drones: underactuated", {setup.name_space[0], setup.name_space[1], setup.name_space[2]},
       {setup.drone_file, setup.drone_file, setup.drone_file}, steps));
 }

@@ -6,6 +6,11 @@
 
 using namespace aurora_control;
 
+// The AR.Drone's laws' settings and controller core (their family, other_laws.h).
+using ControllerSettings = aurora_control::LawSettings<aurora_control::ArdroneLawData>;
+template <int Capacity>
+using ArdroneController = aurora_control::DelayedController<Capacity, ControllerSettings>;
+
 namespace {
 StateSample sample(long step, double x) {
   StateSample s;
@@ -19,7 +24,7 @@ const double kDesired[3] = {2.0, 1.0, 2.0};
 
 TEST(DelayedController, UsesTheStateDSamplesOld) {
   ArdroneController<16> c;
-  c.settings.gains = {0.5, 0.85};
+  c.settings.gains.pd = {0.5, 0.85};
   c.settings.delay = 3;
   for (long k = 0; k < 10; ++k) {
     ASSERT_TRUE(c.push(sample(k, 0.1 * k)));
@@ -33,7 +38,7 @@ TEST(DelayedController, UsesTheStateDSamplesOld) {
 
 TEST(DelayedController, ResentStateIsNotAddedAndMetricsCountOnce) {
   ArdroneController<16> c;
-  c.settings.gains = {0.5, 0.85};
+  c.settings.gains.pd = {0.5, 0.85};
   c.push(sample(0, 0.0));
   const ControlOutput a = c.compute(kDesired);
   EXPECT_FALSE(c.push(sample(0, 0.0)));
@@ -56,7 +61,7 @@ TEST(DelayedController, StepGoingBackRestarts) {
 
 TEST(DelayedController, ClampsWhenConfigured) {
   ArdroneController<16> c;
-  c.settings.gains = {5.0, 5.0};
+  c.settings.gains.pd = {5.0, 5.0};
   c.push(sample(0, -10.0));
   c.settings.clamp_commands = true;
   ControlOutput out = c.compute(kDesired);
@@ -69,7 +74,7 @@ TEST(DelayedController, ClampsWhenConfigured) {
 
 TEST(DelayedController, HoverCommandsZero) {
   ArdroneController<16> c;
-  c.settings.gains = {0.5, 0.85};
+  c.settings.gains.pd = {0.5, 0.85};
   c.push(sample(0, 0.0));
   const ControlOutput out = c.hover();
   for (double u : out.U) EXPECT_EQ(u, 0.0);

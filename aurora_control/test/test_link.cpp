@@ -17,6 +17,11 @@
 
 using namespace aurora_control;
 
+// The AR.Drone's laws' settings and controller core (their family, other_laws.h).
+using ControllerSettings = aurora_control::LawSettings<aurora_control::ArdroneLawData>;
+template <int Capacity>
+using ArdroneController = aurora_control::DelayedController<Capacity, ControllerSettings>;
+
 namespace {
 
 // The arrivals the channel decides for steps 0..n-1 of one direction.
@@ -212,8 +217,8 @@ TEST(Link, DroneHoversWhenTheNewestCommandIsTooOld) {
 TEST(Link, AnIdealLinkThroughTheModelIsTodaysLoopBitForBit) {
   const auto p = aurora_sim::referenceArdrone2Params();
   ControllerSettings set;
-  set.law = LawType::kPdSaturated;
-  set.gains = {0.5, 0.85};
+  set.law = int(LawType::kPdSaturated);
+  set.gains.pd = {0.5, 0.85};
   set.vehicle = p;
   set.delay = 7;
   Task<double> task = positioningTask(2.0, 1.0, 2.0, 20.0);
@@ -238,7 +243,7 @@ TEST(Link, AnIdealLinkThroughTheModelIsTodaysLoopBitForBit) {
 TEST(Link, ALossyLinkChangesTheFlightAndIsRepeatable) {
   const auto p = aurora_sim::referenceArdrone2Params();
   ControllerSettings set;
-  set.gains = {0.5, 0.85};
+  set.gains.pd = {0.5, 0.85};
   set.vehicle = p;
   Task<double> task = positioningTask(2.0, 1.0, 2.0, 20.0);
   set.link = readLinkFile(std::string(AURORA_CONFIG_DIR) + "/links/wifi_congested.yaml");
@@ -279,7 +284,7 @@ TEST(LinkFile, ShippedPresetsLoad) {
 TEST(Link, TheNodesCoreOverALinkIsTheRunners) {
   const auto p = aurora_sim::referenceArdrone2Params();
   ControllerSettings set;
-  set.gains = {0.5, 0.85};
+  set.gains.pd = {0.5, 0.85};
   set.vehicle = p;
   set.Ts = p.Ts;
   set.link = readLinkFile(std::string(AURORA_CONFIG_DIR) + "/links/wifi_congested.yaml");

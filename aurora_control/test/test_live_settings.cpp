@@ -10,11 +10,16 @@
 
 using namespace aurora_control;
 
+// The AR.Drone's laws' settings and controller core (their family, other_laws.h).
+using ControllerSettings = aurora_control::LawSettings<aurora_control::ArdroneLawData>;
+template <int Capacity>
+using ArdroneController = aurora_control::DelayedController<Capacity, ControllerSettings>;
+
 namespace {
 
 ControllerSettings pd() {
   ControllerSettings s;
-  s.gains = {0.5, 0.85};
+  s.gains.pd = {0.5, 0.85};
   s.delay = 10;
   return s;
 }
@@ -33,7 +38,7 @@ TEST(LiveSettings, AcceptsWhatStartUpAccepts) {
   EXPECT_EQ(check(s, "delay_samples", 1800), "");
   applyLiveChange(s, LiveChange{"kp", 0.6});
   applyLiveChange(s, LiveChange{"delay_samples", 6});
-  EXPECT_EQ(s.gains.kp, 0.6);
+  EXPECT_EQ(s.gains.pd.kp, 0.6);
   EXPECT_EQ(s.delay, 6);
 }
 
@@ -72,10 +77,10 @@ TEST(LiveSettings, AGainOfTheOtherLawIsRefusedUnlessUnchanged) {
   EXPECT_NE(check(s, "k1_x", 0.7).find("(accepted: kp, kd, delay_samples, the link's uplink_jitter, uplink_loss"),
             std::string::npos) << check(s, "k1_x", 0.7);
   // dynparam load of a dump sends every key: the unchanged ones pass.
-  EXPECT_EQ(check(s, "k1_x", s.underactuated.k1[kAxisX]), "");
-  applyLiveChange(s, LiveChange{"k1_x", s.underactuated.k1[kAxisX]});
-  EXPECT_EQ(s.gains.kp, 0.5);
-  s.law = LawType::kUnderactuated;
+  EXPECT_EQ(check(s, "k1_x", s.gains.underactuated.k1[kAxisX]), "");
+  applyLiveChange(s, LiveChange{"k1_x", s.gains.underactuated.k1[kAxisX]});
+  EXPECT_EQ(s.gains.pd.kp, 0.5);
+  s.law = int(LawType::kUnderactuated);
   EXPECT_NE(check(s, "kp", 0.9).find("a gain of the pd_saturated law"), std::string::npos);
   EXPECT_EQ(check(s, "k2_z", 100.0), "");
   EXPECT_NE(check(s, "k2_z", 0.0).find("accepted a gain in [0.001, 100]"), std::string::npos);

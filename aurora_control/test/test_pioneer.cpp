@@ -185,9 +185,9 @@ TEST(Pioneer3dx, TheVehicleFileIsTheReference) {
 // starts with the control point a ahead and gives the spec's first step.
 TEST(Pioneer3dx, TheShippedFilesFlyTheStandardScenario) {
   const std::string c = AURORA_CONFIG_DIR;
-  const auto kin = aurora_control::readLawFile<PioneerKinematic>(c + "/controllers/pioneer_kinematic.yaml", kPioneerTs);
+  const auto kin = aurora_control::readLawFile<PioneerKinematic>(c + "/controllers/pioneer_kinematic.yaml", kPioneerTs).gains;
   const auto kin_default = PioneerKinematic::Gains<double>::defaults();
-  const auto dyn = aurora_control::readLawFile<PioneerDynamic>(c + "/controllers/pioneer_dynamic.yaml", kPioneerTs);
+  const auto dyn = aurora_control::readLawFile<PioneerDynamic>(c + "/controllers/pioneer_dynamic.yaml", kPioneerTs).gains;
   const auto dyn_default = PioneerDynamic::Gains<double>::defaults();
   for (int i = 0; i < 2; ++i) {
     EXPECT_EQ(kin.k1[i], kin_default.k1[i]);
@@ -222,7 +222,7 @@ TEST(Pioneer3dx, AnyLawsFlightReadsItsGainsByItsOwnReader) {
   const aurora_control::FlightFiles files{c + "/controllers/pioneer_dynamic.yaml",
                                           c + "/tasks/pioneer_lemniscate.yaml", c + "/vehicles/pioneer3dx.yaml", ""};
   const auto any = aurora_control::loadLawFlight<PioneerDynamic>(files);
-  const auto file = aurora_control::readLawFile<PioneerDynamic>(files.controller, kPioneerTs);
+  const auto file = aurora_control::readLawFile<PioneerDynamic>(files.controller, kPioneerTs).gains;
   for (int i = 0; i < 2; ++i) {
     EXPECT_EQ(any.run.gains.kc1[i], file.kc1[i]);
     EXPECT_EQ(any.run.gains.kd2[i], file.kd2[i]);

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "aurora_control/loop/law_yaml.h"
+#include "aurora_control/loop/live_settings.h"
 #include "aurora_control/params/limits.h"
 #include "aurora_control/params/parameter_table.h"
 
@@ -28,9 +28,9 @@ TEST(ReconfigureLimits, ControllerCfgEqualsTheParameterTable) {
   // Every live setting the node takes is in the description, and no other.
   std::vector<std::string> described;
   for (const auto& p : ControllerConfig::__getDescriptionMessage__().groups[0].parameters) described.push_back(p.name);
-  std::vector<std::string> live{"kp", "kd", "delay_samples", "uplink_jitter", "uplink_loss", "uplink_burst",
+  std::vector<std::string> live{"delay_samples", "uplink_jitter", "uplink_loss", "uplink_burst",
                                 "downlink_delay", "downlink_jitter", "downlink_loss", "downlink_burst", "predictor"};
-  for (const std::string& g : lawGainNames(LawType::kUnderactuated)) live.push_back(g);
+  for (const auto& g : liveGainsShown(LawSettings<ArdroneLawData>())) live.push_back(g.first);
   std::sort(described.begin(), described.end());
   std::sort(live.begin(), live.end());
   EXPECT_EQ(described, live);

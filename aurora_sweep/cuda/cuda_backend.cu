@@ -380,8 +380,10 @@ CudaDevice probeCudaDevice() {
 long cudaMaxDelay() { return aurora_control::kMediumHistory - 1; }
 
 std::string cudaDelayProblem(const SweepSpec& spec) {
-  bool other_vehicle = false;  // withSweepLaw's choice: another vehicle's law, not the AR.Drone's
-  aurora_control::forEachOtherLaw([&](auto law) { other_vehicle = other_vehicle || spec.controller == law.name(); });
+  bool other_vehicle = false;  // withSweepLaw's choice: a law of another family than the AR.Drone's
+  aurora_control::withLawNamed(spec.controller, [&](auto law) {
+    other_vehicle = !std::is_same<typename decltype(law)::Data, aurora_control::ArdroneLawData>::value;
+  });
   if (spec.predicting() && other_vehicle) {
     return "the state predictor (sweep.predictor) has CUDA kernels for the AR.Drone's laws only, not " +
            spec.controller + "'s: use --backend cpu";

@@ -153,9 +153,9 @@ std::vector<std::vector<double>> sweepStates(const SweepSpec& spec, aurora_contr
 // The same flight with the offline runner of the `flight` tool (the
 // controller node's core), with the law's defaults from the controller file.
 std::vector<std::vector<double>> flightStates(const SweepSpec& spec, aurora_control::FlightResult& result) {
-  aurora_control::ControllerSettings set;
-  set.law = spec.law;
-  set.gains = {spec.fixed[kParamKp], spec.fixed[kParamKd]};
+  aurora_control::LawSettings<aurora_control::ArdroneLawData> set;
+  set.law = int(spec.law);
+  set.gains.pd = {spec.fixed[kParamKp], spec.fixed[kParamKd]};
   set.vehicle = spec.ardrone();
   set.delay = static_cast<long>(spec.fixed[kParamDelay]);
   set.clamp_commands = spec.clamp_commands;

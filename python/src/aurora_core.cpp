@@ -155,7 +155,7 @@ py::dict simulateFormationFiles(const std::string& formation, const std::string&
   out["metrics"] = formationMetrics(r);
   out["sample_time"] = r.Ts;
   out["law"] = formationLawName(r.file.law);
-  out["drone_law"] = lawName(r.file.drones[0].controller.law);
+  out["drone_law"] = lawNameOf(r.file.drones[0].controller);
   out["drones"] = py::make_tuple(r.file.drones[0].name_space, r.file.drones[1].name_space);
   return out;
 }

@@ -68,7 +68,7 @@ Offline offlineRun(const FormationFile& f, const long delay[3], int steps, int& 
   run.drone[0].delay = delay[0], run.drone[1].delay = delay[1];
   robots = 2;
   Offline out;
-  withLaw(f.drones[0].controller.law, [&](auto law) { out = flyOffline<decltype(law), LineFormation<double>>(run, steps); });
+  f.drones[0].controller.withLawType([&](auto law) { out = flyOffline<decltype(law), LineFormation<double>>(run, steps); });
   return out;
 }
 

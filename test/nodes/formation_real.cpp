@@ -126,7 +126,7 @@ std::vector<std::vector<double>> offlineRun(const Recording& r, const aurora_msg
   auto observe = [&](const ArdroneLineObservation& o) {
     states.emplace_back(o.drones[d].model.X, o.drones[d].model.X + 3);
   };
-  withLaw(f.drones[0].controller.law, [&](auto law) {
+  f.drones[0].controller.withLawType([&](auto law) {
     runFormation<decltype(law), double, Line, 64>(run, ticks, observe);
   });
   return states;

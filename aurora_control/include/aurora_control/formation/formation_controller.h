@@ -18,28 +18,24 @@
 namespace aurora_control {
 
 // Robot r's controller settings from the run: its gains and the model its
-// law inverts (the AR.Drone's two laws, or one law type's).
-inline void robotSettings(const FormationDrone<double, ArdroneLawData>& robot, ControllerSettings& s) {
-  s.gains = robot.gains.pd;
-  s.underactuated = robot.gains.underactuated;
-  s.vehicle = robot.model;
-}
-template <class Law>
-void robotSettings(const FormationDrone<double, typename Law::Data>& robot, LawSettings<Law>& s) {
+// law inverts.
+template <class Data>
+void robotSettings(const FormationDrone<double, Data>& robot, LawSettings<Data>& s) {
   s.gains = robot.gains;
   s.vehicle = robot.model;
 }
 
-// The AR.Drone's settings flying `law` (the two-drone line's and the
-// triangle's robots; the rest of each robot's comes from the run).
-inline ControllerSettings flyingLaw(LawType law) {
-  ControllerSettings s;
-  s.law = law;
+// The settings of Data's family flying law `index` (a shape's robots; the
+// rest of each robot's comes from the run).
+template <class Data>
+LawSettings<Data> flyingLaw(int index) {
+  LawSettings<Data> s;
+  s.law = index;
   return s;
 }
 
-// Settings: ControllerSettings (AR.Drones, the law chosen at run time) or
-// LawSettings<Law> (a law type: a mixed crew's EitherLaw).
+// Settings: LawSettings<Data> (the robots' law chosen at run time among
+// Data's family; a mixed crew's EitherLaw is its own).
 template <int Capacity, class Shape, class Settings>
 class FormationController {
  public:

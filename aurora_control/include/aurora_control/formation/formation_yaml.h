@@ -29,7 +29,7 @@ namespace aurora_control {
 struct FormationDroneFile {
   std::string name_space;        // its ROS namespace (ardrone1, ...)
   double start[3];               // [m]
-  ControllerSettings controller;  // its law and gains
+  LawSettings<ArdroneLawData> controller;  // its law and gains
   long delay = 0;                // its uplink delay [samples]
   LinkParams link;               // its link (docs/links.md; ideal unless given)
   PredictorFile predictor;       // its controller file's predictor (off for a mapping; docs/predictor.md)
@@ -119,11 +119,11 @@ inline void readReference(const YamlReader& r, const YAML::Node& n, const std::s
 // controller file (controllers/NAME.yaml, in the config folder). A file's
 // predictor block is read by predictorAt: formation robots fly it
 // (formation_runner.h, dronePredictor).
-inline ControllerSettings controllerAt(const YamlReader& r, const YAML::Node& c, const std::string& key,
-                                       const std::string& config_dir) {
-  if (c.IsScalar()) return readControllerFile(inConfig(r.text(c, key), config_dir)).settings;
-  ControllerSettings set;
-  readLaw(r, c, key, set);
+inline LawSettings<ArdroneLawData> controllerAt(const YamlReader& r, const YAML::Node& c, const std::string& key,
+                                                const std::string& config_dir) {
+  if (c.IsScalar()) return readControllerFile<ArdroneLawData>(inConfig(r.text(c, key), config_dir)).settings;
+  LawSettings<ArdroneLawData> set;
+  readLawMapping(r, c, key, set);
   return set;
 }
 
@@ -306,7 +306,7 @@ struct LineShapeEntry {
     ShapeSweepFacts facts;
     facts.duration = f.reference.duration;
     facts.names_law = true;
-    facts.law = f.drones[0].controller.law;
+    facts.law = LawType(f.drones[0].controller.law);
     facts.controller = lawName(facts.law);
     return facts;
   }
@@ -378,12 +378,11 @@ inline ArdroneLineRun formationRun(const FormationFile& f,
   }
   for (int d = 0; d < 2; ++d) {
     run.drone[d].plant = run.drone[d].model = vehicle;
-    run.drone[d].gains.pd = f.drones[d].controller.gains;
-    run.drone[d].gains.underactuated = f.drones[d].controller.underactuated;
+    run.drone[d].gains = f.drones[d].controller.gains;
     run.drone[d].delay = f.drones[d].delay;
     run.drone[d].link = f.drones[d].link;
     for (int i = 0; i < 3; ++i) run.drone[d].start[i] = f.drones[d].start[i];
-    withLaw(f.drones[d].controller.law, [&](auto law) {
+    f.drones[d].controller.withLawType([&](auto law) {
       run.drone[d].predictor = formationPredictor<decltype(law)>(f.drones[d].predictor, vehicle.Ts);
     });
   }

@@ -143,9 +143,9 @@ inline void readRobots(const YamlReader& r, const YAML::Node& n, const std::stri
   s.drone_file = formation_detail::inConfig(r.text(n["vehicle"], r.key(key, "vehicle")), config_dir);
   s.drone = aurora_sim::loadVehicleFile<LawVehicle>(s.drone_file, "the triangle's drones");
   const YAML::Node c = r.require(n, key, "controller", "an underactuated mapping or controllers/underactuated.yaml");
-  const ControllerSettings set = formation_detail::controllerAt(r, c, r.key(key, "controller"), config_dir);
-  if (set.law != LawType::kUnderactuated) r.fail(r.key(key, "controller"), "is refused: the drones fly the underactuated law");
-  s.drone_gains.underactuated = set.underactuated;
+  const LawSettings<ArdroneLawData> set = formation_detail::controllerAt(r, c, r.key(key, "controller"), config_dir);
+  if (set.law != int(LawType::kUnderactuated)) r.fail(r.key(key, "controller"), "is refused: the drones fly the underactuated law");
+  s.drone_gains.underactuated = set.gains.underactuated;
   s.predictor = formationPredictor<TriangleDroneLaw>(formation_detail::predictorAt(r, c, r.key(key, "controller"), config_dir),
                                                      s.drone.Ts);
 }

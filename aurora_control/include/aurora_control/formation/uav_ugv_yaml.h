@@ -77,9 +77,9 @@ inline void readDrone(const YamlReader& r, const YAML::Node& n, const std::strin
                                                              r.key(key, "vehicle")), config_dir);
   s.drone = aurora_sim::loadVehicleFile<LawVehicle>(file, "the UAV-UGV line's robot 2");
   s.vehicle_file[1] = file;
-  ControllerSettings set;
-  readLaw(r, controllerOf(r, n, key, lawName(LawType::kUnderactuated)), r.key(key, "controller"), set);
-  s.drone_gains.underactuated = set.underactuated;
+  LawSettings<ArdroneLawData> set;
+  readLawMapping(r, controllerOf(r, n, key, lawName(LawType::kUnderactuated)), r.key(key, "controller"), set);
+  s.drone_gains.underactuated = set.gains.underactuated;
   readStart(r, n, key, 0.0, formation_detail::kHighestStart, "", s.drone_start);
   readRobotLink(r, n, key, config_dir, 1, s);
 }

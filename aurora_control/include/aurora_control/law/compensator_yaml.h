@@ -76,7 +76,7 @@ inline std::vector<std::pair<const char*, double*>> gainExtras(CompensatorGains<
 
 // Every gain of a law by name, `<key>_<axis>` (ksp_x ... kd_yaw) in its
 // file's order, then its extras: the controller node's Control.gain_names
-// and its log; replay reads them back (setNamedGains).
+// and its log; replay reads them back (law_settings_yaml.h's setGainsNamed).
 template <class Gains>
 std::vector<std::pair<std::string, double*>> gainSlots(Gains& g) {
   std::vector<std::pair<std::string, double*>> out;
@@ -94,19 +94,6 @@ std::vector<std::pair<std::string, double>> namedGains(Gains g) {
   std::vector<std::pair<std::string, double>> out;
   for (const auto& slot : gainSlots(g)) out.emplace_back(slot.first, *slot.second);
   return out;
-}
-
-// Sets every gain of g from names and values (Control.gain_names, gains);
-// "" when all were there, else the first missing name.
-template <class Gains>
-std::string setNamedGains(Gains& g, const std::vector<std::string>& names, const std::vector<double>& values) {
-  for (const auto& slot : gainSlots(g)) {
-    size_t i = 0;
-    while (i < names.size() && names[i] != slot.first) ++i;
-    if (i >= names.size() || i >= values.size()) return slot.first;
-    *slot.second = values[i];
-  }
-  return "";
 }
 
 // A compensator mapping (a controller file's 'controller:', or the node's
@@ -154,19 +141,6 @@ inline void readLawGains(const YamlReader& r, const YAML::Node& c, const std::st
   g = f.gains;
   const std::string given = "parameter '" + r.key(key, "rate") + "' = " + YamlReader::fmt(f.rate);
   g.period_steps = double(compensatorPeriod(given, f.rate, Ts));
-}
-
-// Law's gains from its controller file (controller.name is Law::name()),
-// for a vehicle of sample time Ts, by the law's own readLawGains; the file
-// holds its 'controller:' and may hold a 'predictor:' (predictor_yaml.h).
-template <class Law>
-typename Law::template Gains<double> readLawFile(const std::string& path, double Ts) {
-  const YAML::Node root = loadYamlFile("controller file", path);
-  const YamlReader r("controller file '" + path + "': ");
-  r.onlyKeys(root, "", {"controller", "predictor"});
-  typename Law::template Gains<double> g = Law::template Gains<double>::defaults();
-  readLawGains(r, root["controller"], "controller", g, Ts);
-  return g;
 }
 
 }  // namespace aurora_control

@@ -145,6 +145,7 @@ AURORA_HD inline void lawCommand(const aurora_sim::ArdroneParams<T>& model, cons
 // Loop parameters and states are typed by a law's Data, so that a loop that
 // picks its law at run time keeps one type of state.
 struct ArdroneLawData {
+  using Data = ArdroneLawData;
   using Vehicle = aurora_sim::Ardrone2;
   template <typename T>
   using Gains = LawGains<T>;
@@ -179,6 +180,11 @@ struct ArdroneLaw : ArdroneLawData {
   template <typename T>
   AURORA_HD static void giveGains(LawGains<T>& g, const double* v) {
     GainRows::giveGains(gainsOf(g, static_cast<const GainRows*>(nullptr)), v);
+  }
+  // Every gain of the law is one of its rows (law_gain_rows.h, gainAt):
+  // row i's gain in g.
+  static double& gainAt(LawGains<double>& g, int i) {
+    return GainRows::gainAt(gainsOf(g, static_cast<const GainRows*>(nullptr)), i);
   }
 
   template <typename T>

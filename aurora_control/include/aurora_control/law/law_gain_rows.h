@@ -8,7 +8,12 @@
 //   static void giveGains(Gains<T>& g, const double* v);  // a block into g
 //
 // (the AR.Drone's two: PdGainRows, UnderactuatedGainRows beside their
-// laws), and the sweep places the block (aurora_sweep/sweep_gains.h), names its
+// laws), and, where every gain of the law is one of its rows,
+//
+//   static double& gainAt(Gains<double>& g, int i);  // row i's gain in g
+//
+// (the AR.Drone's two: loop/law_yaml.h then reads its controller file by
+// its rows, and the controller node changes them live); the sweep places the block (aurora_sweep/sweep_gains.h), names its
 // rows in the parameter table, records them and hashes them: nothing of a
 // law's gains is written outside its own files.
 #pragma once

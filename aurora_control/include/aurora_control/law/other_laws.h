@@ -24,34 +24,99 @@ void forEachLaw(F&& f) {
   aurora_common::forEachType(KnownLaws(), f);
 }
 
-// The AR.Drone's laws are chosen among themselves at run time: one
-// controller node, flight and sweep loop of ControllerSettings and withLaw
-// switch between them (a live change of controller/name). Every other law
-// has a node, a flight and a sweep loop of its own type.
-template <class Law>
-struct ChosenAtRunTime : std::is_base_of<ArdroneLawData, Law> {};
+// Calls f(Law()) for the law of the list named `name`; false when none is:
+// the one choice of a law by name, for a flight, the controller node and
+// replay.
+template <class F>
+bool withLawNamed(const std::string& name, F&& f) {
+  return aurora_common::withEntryNamed(KnownLaws(), name, f);
+}
 
+// A law's family: the laws of the list that share its Data (the AR.Drone's
+// two, whose loop state and gains are one type; any other law alone). One
+// loop of a Data (a node, a replay, a formation's robot) flies any law of
+// its family, chosen at run time by its index among them (LawSettings.law).
 namespace law_list_detail {
 template <class F, class Law>
-void callFor(std::false_type /*chosen at run time*/, F& f, Law law) { f(law); }
+void callIf(std::true_type, F& f, Law law) { f(law); }
 template <class F, class Law>
-void callFor(std::true_type, F&, Law) {}
+void callIf(std::false_type, F&, Law) {}
+
+template <class Data, class... L>
+constexpr int countOf(aurora_common::TypeList<L...>) {
+  int n = 0;
+  const bool is[] = {false, std::is_same<typename L::Data, Data>::value...};
+  for (bool b : is) n += b;
+  return n;
+}
+template <class Data, class Law, class... L>
+constexpr int indexOf(aurora_common::TypeList<L...>) {
+  int n = 0, found = -1;
+  const bool data[] = {false, std::is_same<typename L::Data, Data>::value...};
+  const bool is[] = {false, std::is_same<L, Law>::value...};
+  for (int i = 1; i <= int(sizeof...(L)); ++i) found = found < 0 && is[i] ? n : found, n += data[i];
+  return found;
+}
 }  // namespace law_list_detail
 
-// Calls f(Law()) for each law of the list not ChosenAtRunTime (f is not
-// instantiated for those).
-template <class F>
-void forEachOtherLaw(F&& f) {
-  forEachLaw([&](auto law) { law_list_detail::callFor(ChosenAtRunTime<decltype(law)>(), f, law); });
+// How many laws of the list fly on Data (0: a Data no listed law has, such
+// as a mixed crew's EitherLaw, which is its own one law).
+template <class Data>
+constexpr int lawCountOf() {
+  return law_list_detail::countOf<Data>(KnownLaws());
 }
 
-// Calls f(Law()) for the law of forEachOtherLaw named `name`; false when
-// none is (an AR.Drone law's name, or one its reader refuses): the one
-// choice of a law by name, for a flight, the controller node and replay.
-template <class F>
-bool withOtherLaw(const std::string& name, F&& f) {
-  return aurora_common::withEntryNamed([](auto&& g) { forEachOtherLaw(g); }, name, f);
+// Law's index in its family (-1: not listed).
+template <class Law>
+constexpr int familyIndex() {
+  return law_list_detail::indexOf<typename Law::Data, Law>(KnownLaws());
 }
+
+// Calls f(Law()) for each law of the list whose Data is Data, in the list's
+// order (f is not instantiated for the others).
+template <class Data, class F>
+void forEachLawOf(F&& f) {
+  forEachLaw([&](auto law) { law_list_detail::callIf(std::is_same<typename decltype(law)::Data, Data>(), f, law); });
+}
+
+namespace law_list_detail {
+template <class Data, class F>
+void withIndex(std::true_type /*listed*/, int index, F& f) {
+  int i = 0;
+  forEachLawOf<Data>([&](auto law) {
+    if (i++ == index) f(law);
+  });
+}
+template <class Data, class F>
+void withIndex(std::false_type, int, F& f) {
+  f(Data());
+}
+}  // namespace law_list_detail
+
+// Calls f(Law()) for law `index` of Data's family (a Data no listed law has:
+// itself).
+template <class Data, class F>
+void withLawOf(int index, F&& f) {
+  law_list_detail::withIndex<Data>(std::integral_constant<bool, (lawCountOf<Data>() > 0)>(), index, f);
+}
+
+// The index of law `name` in Data's family; -1 when it has none of that
+// name (or is no listed law's).
+template <class Data>
+int lawIndexOf(const std::string& name) {
+  int i = 0, found = -1;
+  forEachLawOf<Data>([&](auto law) {
+    if (found < 0 && name == law.name()) found = i;
+    ++i;
+  });
+  return found;
+}
+
+// The AR.Drone's two laws are its family in LawType's order (the line
+// formation's and the sweep's code that picks one by LawType).
+static_assert(familyIndex<ArdroneLaw<LawType::kPdSaturated>>() == int(LawType::kPdSaturated) &&
+                  familyIndex<ArdroneLaw<LawType::kUnderactuated>>() == int(LawType::kUnderactuated),
+              "the AR.Drone's laws listed in LawType's order");
 
 namespace law_list_detail {
 template <class Law>
@@ -129,11 +194,11 @@ inline std::string lawVehicleNames() {
   return text;
 }
 
-// The vehicle law `name` flies, by name (the AR.Drone's for a name not in
-// the list: its two laws, or a name the law's reader refuses).
+// The vehicle law `name` flies, by name (the list's first law's for a name
+// not in the list, which the law's reader then refuses).
 inline std::string vehicleOfLaw(const std::string& name) {
-  std::string vehicle = LawVehicle::name();
-  withOtherLaw(name, [&](auto law) { vehicle = decltype(law)::Vehicle::name(); });
+  std::string vehicle = aurora_common::FirstType<KnownLaws>::type::Vehicle::name();
+  withLawNamed(name, [&](auto law) { vehicle = decltype(law)::Vehicle::name(); });
   return vehicle;
 }
 

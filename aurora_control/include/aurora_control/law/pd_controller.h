@@ -53,6 +53,7 @@ struct PdGainRows {
     giveGain(g.kp, v[0]);
     giveGain(g.kd, v[1]);
   }
+  static double& gainAt(PdGains<double>& g, int i) { return i == 0 ? g.kp : g.kd; }
 };
 
 }  // namespace aurora_control

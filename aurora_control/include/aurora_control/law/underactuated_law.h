@@ -281,6 +281,7 @@ struct UnderactuatedGainRows {
   AURORA_HD static void giveGains(UnderactuatedGains<T>& g, const double* v) {
     for (int i = 0; i < kGainCount; ++i) giveGain(underactuatedGain(g, i), v[i]);
   }
+  static double& gainAt(UnderactuatedGains<double>& g, int i) { return underactuatedGain(g, i); }
 };
 
 }  // namespace aurora_control

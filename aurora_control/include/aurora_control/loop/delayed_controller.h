@@ -10,6 +10,7 @@
 // both call this class, so a replay of a bag reproduces every command.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <memory>
 
@@ -18,11 +19,9 @@
 #include "aurora_control/link/link.h"
 #include "aurora_control/loop/node_link.h"
 #include "aurora_control/loop/feasibility.h"
-#include "aurora_control/law/pd_controller.h"
+#include "aurora_control/law/other_laws.h"
 #include "aurora_control/task/trajectory_task.h"
-#include "aurora_control/law/underactuated_law.h"
 #include "aurora_control/loop/predicted_loop.h"
-#include "aurora_sim/vehicle/ardrone2/ardrone_params.h"
 #include "aurora_common/scalar_math.h"
 #include "aurora_sim/state_index.h"
 
@@ -44,41 +43,60 @@ struct LoopSettings {
   PredictorForm predictor = PredictorForm::kOff;  // the state predictor's form (apply with configurePredictor)
 };
 
-// The AR.Drone's settings: its two laws (chosen at run time, and live),
-// the gains of both and the model the underactuated law inverts.
-struct ControllerSettings : LoopSettings {
-  using Data = ArdroneLawData;
-  LawType law = LawType::kPdSaturated;
-  PdGains<double> gains{0.0, 0.0};
-  UnderactuatedGains<double> underactuated = UnderactuatedGains<double>::defaults();
-  LawVehicleParams vehicle{};  // the model the underactuated law inverts
+namespace settings_detail {
+template <class Gains>
+Gains preset(decltype(Gains::defaults())*) {
+  return Gains::defaults();
+}
+template <class Gains>
+Gains preset(...) {
+  return Gains{};
+}
+}  // namespace settings_detail
 
+// The gains a law's loop starts with before its controller file's (its
+// Gains' defaults(), where it has one).
+template <class Data>
+typename Data::template Gains<double> presetGains() {
+  return settings_detail::preset<typename Data::template Gains<double>>(nullptr);
+}
+
+// The settings of a loop of laws of one Data (other_laws.h, "family"): the
+// law that flies (its index in the family, chosen by name at start-up:
+// the AR.Drone's PD or underactuated law; any other law alone), its gains
+// and the model it inverts (its vehicle file).
+template <class D>
+struct LawSettings : LoopSettings {
+  using Data = D;
+  int law = 0;  // the law that flies: withLawOf<Data>'s index
+  typename Data::template Gains<double> gains = presetGains<Data>();
+  typename Data::Vehicle::template Params<double> vehicle{};
+
+  // Settings flying Law (a law of Data's family).
+  template <class Law>
+  static LawSettings flying() {
+    static_assert(std::is_same<typename Law::Data, Data>::value, "a law of this loop's family");
+    LawSettings s;
+    s.law = std::max(familyIndex<Law>(), 0);
+    return s;
+  }
   LoopParams<Data, double> loopParams(const FeasibilityCriteria<double>& criteria) const {
-    return LoopParams<Data, double>{vehicle, vehicle, LawGains<double>{gains, underactuated}, criteria};
+    return LoopParams<Data, double>{vehicle, vehicle, gains, criteria};
   }
   // Calls f(the law in force as a type).
   template <class F>
   void withLawType(F&& f) const {
-    withLaw(law, f);
+    withLawOf<Data>(law, f);
   }
 };
 
-// Another vehicle's law (other_laws.h): its gains and the model it inverts
-// (its vehicle file), fixed for a run.
-template <class Law>
-struct LawSettings : LoopSettings {
-  using Data = typename Law::Data;
-  typename Data::template Gains<double> gains;
-  typename Law::Vehicle::template Params<double> vehicle;
-
-  LoopParams<Data, double> loopParams(const FeasibilityCriteria<double>& criteria) const {
-    return LoopParams<Data, double>{vehicle, vehicle, gains, criteria};
-  }
-  template <class F>
-  void withLawType(F&& f) const {
-    f(Law());
-  }
-};
+// The name of the law the settings fly.
+template <class Data>
+const char* lawNameOf(const LawSettings<Data>& set) {
+  const char* name = "";
+  set.withLawType([&](auto law) { name = law.name(); });
+  return name;
+}
 
 // The commands of any vehicle: its kInputs first (at most 4), the rest 0.
 constexpr int kMaxInputs = aurora_sim::kCommandSize;
@@ -110,7 +128,15 @@ struct GivenReference {
   Reference<double> at(double) const { return ref; }
 };
 
-// Settings: ControllerSettings (the AR.Drone's laws) or LawSettings<Law>.
+// A reference at rest at point `desired` (positioning, a hold).
+inline Reference<double> restingAt(const double desired[3]) {
+  Reference<double> r;
+  for (int i = 0; i < 3; ++i) r.pos[i] = desired[i], r.vel[i] = 0.0, r.acc[i] = 0.0;
+  r.yaw = r.yaw_rate = r.yaw_acc = 0.0;
+  return r;
+}
+
+// Settings: LawSettings<Data> (any law of Data's family).
 template <int Capacity, class Settings>
 class DelayedController {
  public:
@@ -210,13 +236,6 @@ class DelayedController {
     overLink(out);
     if (predictor_) predictor_->sent(newest().step, out.U_sent);
     return out;
-  }
-
-  static Reference<double> restingAt(const double desired[3]) {
-    Reference<double> r;
-    for (int i = 0; i < 3; ++i) r.pos[i] = desired[i], r.vel[i] = 0.0, r.acc[i] = 0.0;
-    r.yaw = r.yaw_rate = r.yaw_acc = 0.0;
-    return r;
   }
 
   // The command while the state is stale: hover (all zero); the metrics
@@ -324,10 +343,5 @@ class DelayedController {
   PredictorRun<Vehicle, double> predictor_run_;
   std::unique_ptr<HostPredictor<Vehicle, double>> predictor_;
 };
-
-// The controller core of the AR.Drone's laws (ControllerSettings: the law
-// chosen at run time), spelled once.
-template <int Capacity>
-using ArdroneController = DelayedController<Capacity, ControllerSettings>;
 
 }  // namespace aurora_control

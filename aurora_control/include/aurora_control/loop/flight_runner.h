@@ -82,13 +82,14 @@ FlightResult flyLaw(const LawFlight<L>& f, Observer&& observe) {
   return flyLaw(f, f.steps, observe);
 }
 
-// An AR.Drone flight of `Law` with the node's settings on drone `p`.
+// A flight of `Law` with a loop's settings (its gains, the model it
+// inverts, clamp, link, delay) on plant `p`, which clamps what it receives
+// (the sim's clamp).
 template <class Law>
-LawFlight<Law> ardroneFlight(const LawVehicleParams& p, const ControllerSettings& settings, const Task<double>& task,
-                             long iterations) {
+LawFlight<Law> settingsFlight(const typename Law::Vehicle::template Params<double>& p,
+                              const LawSettings<typename Law::Data>& settings, const Task<double>& task, long iterations) {
   LawFlight<Law> f;
-  f.run = ArdroneRun<double>{p, settings.vehicle, LawGains<double>{settings.gains, settings.underactuated},
-                             settings.delay};
+  f.run = StudyRun<typename Law::Data, double>{p, settings.vehicle, settings.gains, settings.delay};
   f.cfg.task = task;
   f.cfg.clamp_commands = settings.clamp_commands;
   f.cfg.clamp_at_drone = true;  // the sim's clamp
@@ -97,14 +98,14 @@ LawFlight<Law> ardroneFlight(const LawVehicleParams& p, const ControllerSettings
   return f;
 }
 
-// The same with the AR.Drone's law chosen at run time.
-template <typename Observer>
-FlightResult runFlight(const LawVehicleParams& p, const ControllerSettings& settings,
+// The same with the settings' law (chosen at run time).
+template <class Data, typename Observer>
+FlightResult runFlight(const typename Data::Vehicle::template Params<double>& p, const LawSettings<Data>& settings,
                        const Task<double>& task, long iterations, Observer observe) {
   FlightResult r;
-  withLaw(settings.law, [&](auto law) {
+  settings.withLawType([&](auto law) {
     using Law = decltype(law);
-    const LawFlight<Law> f = ardroneFlight<Law>(p, settings, task, iterations);
+    const LawFlight<Law> f = settingsFlight<Law>(p, settings, task, iterations);
     r = flyLaw(f, observe);
   });
   return r;

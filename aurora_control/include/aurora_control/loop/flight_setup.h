@@ -25,13 +25,6 @@ struct FlightFiles {
   bool no_clamp = false;                        // do not clamp the law's commands (the sim still does)
 };
 
-struct FlightSetup {
-  LawVehicleParams vehicle;
-  ControllerSettings settings;
-  Task<double> task;
-  long steps = 0;  // steps 0..N of the task (taskStepCount), as the node and report
-};
-
 // What every flight reads besides its vehicle and law, for a vehicle of
 // sample time Ts: the task (its steps 0..N, at the vehicle's heights), the
 // link and the delay in force, each checked.
@@ -56,20 +49,6 @@ inline FlightCourse loadCourse(const FlightFiles& f, double Ts, const TaskHeight
   const std::string late = latestPacketRefusal(c.link, c.delay, c.steps, Ts);
   if (!late.empty()) throw ConfigError("--link " + f.link + ": " + late);
   return c;
-}
-
-inline FlightSetup loadFlight(const FlightFiles& f) {
-  FlightSetup s;
-  s.settings = readControllerFile(f.controller).settings;
-  // The vehicle its law flies (both AR.Drone laws: ArdroneLawData::Vehicle).
-  s.vehicle = aurora_sim::loadVehicleFile<ArdroneLawData::Vehicle>(
-      f.vehicle, std::string("the controller '") + lawName(s.settings.law) + "'");
-  s.settings.clamp_commands = !f.no_clamp;
-  s.settings.vehicle = s.vehicle;
-  s.settings.Ts = s.vehicle.Ts;
-  const FlightCourse c = loadCourse(f, s.vehicle.Ts);
-  s.settings.link = c.link, s.settings.delay = c.delay, s.task = c.task, s.steps = c.steps;
-  return s;
 }
 
 // The vehicle a controller file's law flies, by name (its file:
@@ -145,9 +124,12 @@ template <class Law>
 LawFlight<Law> loadLawFlight(const FlightFiles& f, const std::string& no_clamp_option = "--no-clamp") {
   const char* saturation = lawSaturation<Law>();
   if (saturation && f.no_clamp) throw ConfigError(no_clamp_option + " is refused " + saturation);
-  LawFlight<Law> s = lawFlight<Law>(f, Law::template Gains<double>::defaults());
-  s.run.gains = readLawFile<Law>(f.controller, s.run.plant.Ts);
-  if (!saturation) s.cfg.clamp_commands = s.cfg.clamp_at_drone = !f.no_clamp;
+  LawFlight<Law> s = lawFlight<Law>(f, presetGains<typename Law::Data>());
+  const LawFile<Law> file = readLawFile<Law>(f.controller, s.run.plant.Ts);
+  s.run.gains = file.gains;
+  if (saturation) return s;
+  s.cfg.clamp_commands = !f.no_clamp && file.clamp;
+  s.cfg.clamp_at_drone = Law::Vehicle::kAlwaysClamps || !f.no_clamp;
   return s;
 }
 
@@ -183,11 +165,11 @@ LawFlight<Law> withPredictor(LawFlight<Law> s, const std::string& controller_fil
 // the flight tool and Python.
 template <class Fly>
 void withFlight(const FlightFiles& f, const std::string& law, const FlightOptionNames& o, Fly&& fly) {
-  if (withOtherLaw(law, [&](auto l) { fly(withPredictor(loadFlightOf(l, f, o), f.controller)); })) return;
-  const FlightSetup s = loadFlight(f);
-  withLaw(s.settings.law, [&](auto l) {
-    fly(withPredictor(ardroneFlight<decltype(l)>(s.vehicle, s.settings, s.task, s.steps), f.controller));
-  });
+  const bool known = withLawNamed(law, [&](auto l) { fly(withPredictor(loadFlightOf(l, f, o), f.controller)); });
+  if (!known) {  // refused as the node refuses it, naming the file
+    lawNameIn(YamlReader("controller file '" + f.controller + "': "),
+              loadYamlFile("controller file", f.controller)["controller"], "controller");
+  }
 }
 
 }  // namespace aurora_control

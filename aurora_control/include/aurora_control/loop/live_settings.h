@@ -6,6 +6,8 @@
 
 #include <cmath>
 #include <string>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "aurora_control/loop/law_yaml.h"
@@ -24,15 +26,6 @@ struct LiveChange {
 };
 
 namespace live_detail {
-
-// The index of `name` among `law`'s gains, or -1.
-inline int gainIndex(LawType law, const std::string& name) {
-  const std::vector<std::string> names = lawGainNames(law);
-  for (size_t i = 0; i < names.size(); ++i) {
-    if (names[i] == name) return static_cast<int>(i);
-  }
-  return -1;
-}
 
 inline std::string rangeProblem(const LiveChange& c, double lo, double hi, const std::string& what) {
   if (std::isfinite(c.value) && c.value >= lo && c.value <= hi) return "";
@@ -108,31 +101,6 @@ inline bool loopSettingProblem(const LoopSettings& now, const LiveChange& c, lon
   return true;
 }
 
-inline std::string checkLiveChange(const ControllerSettings& now, const LiveChange& c, long task_steps) {
-  using namespace live_detail;
-  std::string problem;
-  if (loopSettingProblem(now, c, task_steps, problem)) return problem;
-  const bool pd = gainIndex(LawType::kPdSaturated, c.name) >= 0;
-  const bool ua = gainIndex(LawType::kUnderactuated, c.name) >= 0;
-  if (!pd && !ua) {
-    return "'" + c.name + "' is not a live setting: accepted delay_samples, " +
-           joinKeys(lawGainNames(now.law)) + " (the " + lawName(now.law) + " law's gains), the link's " +
-           linkSettingNames() + ", predictor";
-  }
-  const LawType law = pd ? LawType::kPdSaturated : LawType::kUnderactuated;
-  if (law != now.law) {
-    const int i = gainIndex(law, c.name);
-    ControllerSettings other = now;
-    other.law = law;
-    if (c.value == lawGain(other, i)) return "";  // a dump of the whole server loaded back: no change
-    return c.name + " = " + YamlReader::fmt(c.value) + " is refused: a gain of the " + lawName(law) +
-           " law, but this node flies the " + lawName(now.law) + " law (accepted: " +
-           joinKeys(lawGainNames(now.law)) + ", delay_samples, the link's " + linkSettingNames() + ")";
-  }
-  return pd ? rangeProblem(c, kPdGainMin, kPdGainMax, "a gain")
-            : rangeProblem(c, kUnderactuatedGainMin, kUnderactuatedGainMax, "a gain");
-}
-
 // Applies a delay, link or predictor change checkLiveChange() accepted;
 // false for a gain.
 inline bool applyLoopChange(LoopSettings& set, const LiveChange& c) {
@@ -149,36 +117,142 @@ inline bool applyLoopChange(LoopSettings& set, const LiveChange& c) {
   return true;
 }
 
-// Applies a change checkLiveChange() accepted.
-inline void applyLiveChange(ControllerSettings& set, const LiveChange& c) {
-  if (applyLoopChange(set, c)) return;
-  const int i = live_detail::gainIndex(set.law, c.name);
-  if (i >= 0) lawGain(set, i) = c.value;  // the other law's unchanged gain: nothing to do
+namespace live_detail {
+
+// The row of Law named `name`, or -1.
+template <class Law>
+int rowIndex(const std::string& name) {
+  for (int i = 0; i < Law::kGainCount; ++i) {
+    if (name == Law::gainRow(i).name) return i;
+  }
+  return -1;
 }
 
-// Another vehicle's law (other_laws.h): its delay and link change live; its
-// gains come from its controller file. The AR.Drone's gains the server shows
-// (their defaults: ardroneGainsShown) load back unchanged.
 template <class Law>
-std::string checkLiveChange(const LawSettings<Law>& now, const LiveChange& c, long task_steps) {
-  using namespace live_detail;
-  std::string problem;
-  if (loopSettingProblem(now, c, task_steps, problem)) return problem;
-  const ControllerSettings shown;
-  for (LawType law : {LawType::kPdSaturated, LawType::kUnderactuated}) {
-    ControllerSettings as = shown;
-    as.law = law;
-    const int i = gainIndex(law, c.name);
-    if (i >= 0 && c.value == lawGain(as, i)) return "";  // a dump of the whole server loaded back
-  }
+std::vector<std::string> rowNames() {
+  std::vector<std::string> names;
+  for (int i = 0; i < Law::kGainCount; ++i) names.push_back(Law::gainRow(i).name);
+  return names;
+}
+
+// Calls f(Law()) for each law of the list whose gains are its rows
+// (gainsAreRows: the gains the reconfigure server shows).
+template <class F>
+void forEachLiveGainLaw(F&& f) {
+  forEachLaw([&](auto law) {
+    if (gainsAreRows<decltype(law)>()) f(law);
+  });
+}
+
+template <class Law>
+double rowGain(std::true_type, typename Law::template Gains<double> g, int i) {
+  return Law::gainAt(g, i);
+}
+template <class Law>
+double rowGain(std::false_type, typename Law::template Gains<double>, int) {
+  return 0.0;
+}
+// Row i's gain of Law in g (a law whose gains are its rows).
+template <class Law>
+double rowGain(const typename Law::template Gains<double>& g, int i) {
+  return rowGain<Law>(std::integral_constant<bool, gainsAreRows<Law>()>(), g, i);
+}
+
+template <class Law>
+void setRowGain(std::true_type, typename Law::template Gains<double>& g, int i, double v) {
+  Law::gainAt(g, i) = v;
+}
+template <class Law>
+void setRowGain(std::false_type, typename Law::template Gains<double>&, int, double) {}
+
+// The gains the server shows for live law Live: this loop's, where Live is
+// of its family; else Live's preset.
+template <class Live, class Data>
+typename Live::template Gains<double> shownGains(std::true_type, const LawSettings<Data>& set) {
+  return set.gains;
+}
+template <class Live, class Data>
+typename Live::template Gains<double> shownGains(std::false_type, const LawSettings<Data>&) {
+  return presetGains<typename Live::Data>();
+}
+
+// A law whose gains change live: its own gain in its row's range; a gain
+// of another law of its family the server shows, unchanged (a dump of the
+// whole server loaded back), or refused; any other name refused.
+template <class Data, class Law>
+std::string liveGainProblem(const LawSettings<Data>& now, Law, const LiveChange& c) {
+  const int own = rowIndex<Law>(c.name);
+  if (own >= 0) return rangeProblem(c, Law::gainRow(own).min, Law::gainRow(own).max, "a gain");
+  std::string problem = "'" + c.name + "' is not a live setting: accepted delay_samples, " + joinKeys(rowNames<Law>()) +
+                        " (the " + Law::name() + " law's gains), the link's " + linkSettingNames() + ", predictor";
+  forEachLawOf<Data>([&](auto other) {
+    using Other = decltype(other);
+    const int i = gainsAreRows<Other>() ? rowIndex<Other>(c.name) : -1;
+    if (i < 0) return;
+    if (c.value == rowGain<Other>(now.gains, i)) problem = "";
+    else problem = c.name + " = " + YamlReader::fmt(c.value) + " is refused: a gain of the " + Other::name() +
+                   " law, but this node flies the " + Law::name() + " law (accepted: " + joinKeys(rowNames<Law>()) +
+                   ", delay_samples, the link's " + linkSettingNames() + ")";
+  });
+  return problem;
+}
+
+// A law whose gains come from its controller file: only the values the
+// server shows for the live laws' gains (each law's preset gains) load
+// back, unchanged.
+template <class Law>
+std::string fixedGainProblem(Law, const LiveChange& c) {
+  bool shown = false;
+  forEachLiveGainLaw([&](auto live) {
+    using Live = decltype(live);
+    const int i = rowIndex<Live>(c.name);
+    shown = shown || (i >= 0 && c.value == rowGain<Live>(presetGains<typename Live::Data>(), i));
+  });
+  if (shown) return "";
   return "'" + c.name + "' = " + YamlReader::fmt(c.value) + " is refused: this node flies the " + Law::name() +
          " law, whose gains come from its controller file (restart with another); live: delay_samples, the link's " +
          linkSettingNames() + ", predictor";
 }
 
-template <class Law>
-void applyLiveChange(LawSettings<Law>& set, const LiveChange& c) {
-  applyLoopChange(set, c);
+}  // namespace live_detail
+
+// "" when `c` may be applied to `now`, else the refusal: the delay, the
+// link and the predictor for every law; the gains of a law whose gains are
+// its rows (the AR.Drone's two), in their rows' ranges.
+template <class Data>
+std::string checkLiveChange(const LawSettings<Data>& now, const LiveChange& c, long task_steps) {
+  using namespace live_detail;
+  std::string problem;
+  if (loopSettingProblem(now, c, task_steps, problem)) return problem;
+  now.withLawType([&](auto law) {
+    problem = gainsAreRows<decltype(law)>() ? liveGainProblem(now, law, c) : fixedGainProblem(law, c);
+  });
+  return problem;
+}
+
+// Applies a change checkLiveChange() accepted (another law's unchanged
+// gain: nothing to do).
+template <class Data>
+void applyLiveChange(LawSettings<Data>& set, const LiveChange& c) {
+  if (applyLoopChange(set, c)) return;
+  set.withLawType([&](auto law) {
+    using Law = decltype(law);
+    const int i = gainsAreRows<Law>() ? live_detail::rowIndex<Law>(c.name) : -1;
+    if (i >= 0) live_detail::setRowGain<Law>(std::integral_constant<bool, gainsAreRows<Law>()>(), set.gains, i, c.value);
+  });
+}
+
+// What the reconfigure server shows of the live laws' gains, by name: the
+// gains of this loop's family as set, every other live law's preset.
+template <class Data>
+std::vector<std::pair<std::string, double>> liveGainsShown(const LawSettings<Data>& set) {
+  std::vector<std::pair<std::string, double>> out;
+  live_detail::forEachLiveGainLaw([&](auto live) {
+    using Live = decltype(live);
+    const auto g = live_detail::shownGains<Live>(std::is_same<typename Live::Data, Data>(), set);
+    for (int i = 0; i < Live::kGainCount; ++i) out.emplace_back(Live::gainRow(i).name, live_detail::rowGain<Live>(g, i));
+  });
+  return out;
 }
 
 }  // namespace aurora_control

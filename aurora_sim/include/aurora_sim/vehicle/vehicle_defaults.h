@@ -26,6 +26,11 @@ struct VehicleDefaults {
   AURORA_HD static T limitInput(const Params&, int, const T& u) {
     return aurora_common::clampUnit(u);
   }
+
+  // Whether the simulated vehicle clamps what it receives even in a flight
+  // asked to clamp nowhere (flight --no-clamp): no; such a flight clamps
+  // neither the law's commands nor the vehicle's (AuRoRA's simulation).
+  static constexpr bool kAlwaysClamps = false;
 };
 
 }  // namespace aurora_sim

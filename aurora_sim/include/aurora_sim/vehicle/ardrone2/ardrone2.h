@@ -64,6 +64,10 @@ struct Ardrone2 : VehicleDefaults {
   // stateName, start and limitInput (the driver and the sim node clamp
   // each command to [-1, 1]): VehicleDefaults'.
 
+  // Its simulation clamps what it receives in every flight (a flight's
+  // --no-clamp leaves the law's commands unclamped, not the drone's).
+  static constexpr bool kAlwaysClamps = true;
+
   // The factors' parameters, in factor order (the sweep's m_factor ...).
   static const char* factorName(int i) {
     static const char* const names[kFactors] = {"m", "Ixx", "Iyy", "Izz", "Cf", "Ct", "Km", "Jm"};
