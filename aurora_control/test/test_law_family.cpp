@@ -142,3 +142,28 @@ TEST(LawFamily, AnArdroneFlightIsAnyLawsFlight) {
   f.no_clamp = false, f.controller = path;
   EXPECT_FALSE(loadLawFlight<ArdroneLaw<LawType::kPdSaturated>>(f).cfg.clamp_commands);
 }
+
+// A law with a rate of its own (lawHasRate) flies at its file's rate or the
+// one given, as its period in model steps; refused when it does not divide
+// the vehicle's.
+TEST(LawFamily, ALawWithARateFliesAtTheFilesOrTheGivenRate) {
+  const std::string c = AURORA_CONFIG_DIR;
+  const FlightFiles f{c + "/controllers/bebop2_compensator.yaml", c + "/tasks/bebop2_waypoints.yaml",
+                      c + "/vehicles/bebop2.yaml", ""};
+  const auto file_rate = loadLawFlight<Bebop2Compensator>(f);
+  EXPECT_EQ(file_rate.rate, 30.0);
+  EXPECT_EQ(file_rate.run.gains.period_steps, 1.0);
+  FlightOptionNames o;
+  o.rate = 10.0;
+  const auto given = loadLawFlight<Bebop2Compensator>(f, o);
+  EXPECT_EQ(given.rate, 10.0);
+  EXPECT_EQ(given.run.gains.period_steps, 3.0);
+  o.rate = 7.0, o.rate_option = "rate=";
+  EXPECT_NE(aurora_tests::configRefusal([&] { loadLawFlight<Bebop2Compensator>(f, o); })
+                .find("rate=7 Hz does not divide the vehicle's 30 Hz"),
+            std::string::npos);
+  EXPECT_EQ(loadLawFlight<ArdroneLaw<LawType::kPdSaturated>>(
+                FlightFiles{c + "/controllers/pd_saturated.yaml", c + "/tasks/mission4.yaml", c + "/vehicles/ardrone2.yaml", ""})
+                .rate,
+            0.0);  // no rate of its own
+}

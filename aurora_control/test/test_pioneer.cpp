@@ -232,8 +232,10 @@ TEST(Pioneer3dx, AnyLawsFlightReadsItsGainsByItsOwnReader) {
   EXPECT_EQ(aurora_control::lawSaturation<aurora_control::Bebop2Compensator>(), nullptr);
   aurora_control::FlightFiles unclamped = files;
   unclamped.no_clamp = true;
+  aurora_control::FlightOptionNames python;
+  python.no_clamp_option = "clamp=False";
   const std::string unclamped_refusal =
-      aurora_tests::configRefusal([&] { aurora_control::loadLawFlight<PioneerDynamic>(unclamped, "clamp=False"); });
+      aurora_tests::configRefusal([&] { aurora_control::loadLawFlight<PioneerDynamic>(unclamped, python); });
   EXPECT_NE(unclamped_refusal.find("clamp=False is refused for the Pioneer P3-DX: its laws saturate"), std::string::npos)
       << "a Pioneer flight left out a clamp it does not have: '" << unclamped_refusal << "'";
   // The compensator's file without its own reader's key (clamp_commands).

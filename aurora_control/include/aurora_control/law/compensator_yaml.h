@@ -17,8 +17,6 @@ namespace aurora_control {
 struct CompensatorFile {
   CompensatorGains<double> gains;  // period_steps set by compensatorPeriod
   double rate = 30.0;              // [Hz] the law's
-  bool has_clamp = false;          // the file sets clamp_commands
-  bool clamp = true;
 };
 
 // The name under 'controller:' of a controller file ("" when it has none):
@@ -105,16 +103,6 @@ inline void readCompensator(const YamlReader& r, const YAML::Node& c, const std:
                       r.key(at, "rate"), 0.0, 1000.0, "Hz", false);
 }
 
-inline CompensatorFile readCompensatorFile(const std::string& path) {
-  const YAML::Node root = loadYamlFile("controller file", path);
-  const YamlReader r("controller file '" + path + "': ");
-  r.onlyKeys(root, "", {"controller", "clamp_commands", "predictor"});  // predictor: predictor_yaml.h
-  CompensatorFile f;
-  readCompensator(r, root["controller"], "controller", f);
-  if (root["clamp_commands"]) f.has_clamp = true, f.clamp = r.boolean(root["clamp_commands"], "clamp_commands");
-  return f;
-}
-
 // The law's period in model steps of Ts: its rate must divide the
 // vehicle's (1/Ts) into a whole number of steps. `given` names where the
 // rate came from in a refusal (e.g. "--rate 7").
@@ -130,6 +118,16 @@ inline long compensatorPeriod(const std::string& given, double rate, double Ts) 
   return whole;
 }
 
+// What a law with a rate of its own gives (other_laws.h, lawHasRate; a
+// flight's --rate): its rate [Hz] in a controller mapping, its period set
+// from a rate (`given` names where it came from in a refusal), and that
+// period in model steps.
+inline double mappingRate(const YAML::Node& c, const CompensatorGains<double>&) { return c["rate"].as<double>(); }
+inline void setLawRate(CompensatorGains<double>& g, double rate, double Ts, const std::string& given) {
+  g.period_steps = double(compensatorPeriod(given, rate, Ts));
+}
+inline long lawPeriodSteps(const CompensatorGains<double>& g) { return long(g.period_steps); }
+
 // The compensator's gains from a controller mapping (a controller file's
 // 'controller:', or the node's ~controller) for a vehicle of sample time Ts:
 // its period from its rate (each law's readLawGains, which
@@ -139,8 +137,7 @@ inline void readLawGains(const YamlReader& r, const YAML::Node& c, const std::st
   CompensatorFile f;
   readCompensator(r, c, key, f);
   g = f.gains;
-  const std::string given = "parameter '" + r.key(key, "rate") + "' = " + YamlReader::fmt(f.rate);
-  g.period_steps = double(compensatorPeriod(given, f.rate, Ts));
+  setLawRate(g, f.rate, Ts, r.context() + "'" + r.key(key, "rate") + "' = " + YamlReader::fmt(f.rate));
 }
 
 }  // namespace aurora_control

@@ -83,69 +83,63 @@ LawFlight<Law> lawFlight(const FlightFiles& f, const typename Law::template Gain
   return s;
 }
 
-// A Bebop 2 flight with its compensator (docs/bebop2.md). Its driver clamps
-// what it receives, and so does the controller unless the file says
-// otherwise; no_clamp clamps nowhere (AuRoRA's simulation). `rate` [Hz]:
-// instead of the file's (0: the file's), named `rate_option` in a refusal
-// ("--rate " for the tool, "rate=" for Python).
-inline LawFlight<Bebop2Compensator> loadCompensatorFlight(const FlightFiles& f, double rate = 0.0,
-                                                          const std::string& rate_option = "--rate ") {
-  CompensatorFile file = readCompensatorFile(f.controller);
-  const std::string given = rate != 0.0 ? rate_option + YamlReader::fmt(rate)
-                                        : "controller file '" + f.controller + "': 'controller.rate' = " +
-                                              YamlReader::fmt(file.rate);
-  if (rate != 0.0) file.rate = rate;
-  LawFlight<Bebop2Compensator> s = lawFlight<Bebop2Compensator>(f, file.gains);
-  s.rate = file.rate;
-  s.run.gains.period_steps = double(compensatorPeriod(given, file.rate, s.run.plant.Ts));
-  // The task's steps 0 .. steps - 1 span steps - 1 periods of Ts: a law
-  // period that long would run at step 0 alone and its command hold for the
-  // whole task.
-  if (long(s.run.gains.period_steps) >= s.steps - 1) {
+// What a flight is asked besides its files, named as its caller names them
+// in a refusal: the rate of a law with one of its own, no clamp.
+struct FlightOptionNames {
+  double rate = 0.0;                       // [Hz] instead of its file's (0: the file's)
+  std::string rate_option = "--rate ";     // how the rate was given ("--rate ", "rate=")
+  std::string no_clamp_option = "--no-clamp";  // how no clamp was asked for ("--no-clamp", "clamp=False")
+};
+
+namespace flight_detail {
+// A law with a rate of its own (lawHasRate: the compensator's) runs at the
+// file's or the given one, a whole number of model steps, shorter than the
+// task: the task's steps 0 .. steps - 1 span steps - 1 periods of Ts, and a
+// law period that long would run at step 0 alone and its command hold for
+// the whole task.
+template <class Law>
+void applyRate(std::true_type, LawFlight<Law>& s, const YAML::Node& mapping, const FlightFiles& f,
+               const FlightOptionNames& o) {
+  const double file_rate = mappingRate(mapping, s.run.gains);
+  const std::string given = o.rate != 0.0 ? o.rate_option + YamlReader::fmt(o.rate)
+                                          : "controller file '" + f.controller + "': 'controller.rate' = " +
+                                                YamlReader::fmt(file_rate);
+  s.rate = o.rate != 0.0 ? o.rate : file_rate;
+  const double Ts = s.run.plant.Ts;
+  setLawRate(s.run.gains, s.rate, Ts, given);
+  const long period = lawPeriodSteps(s.run.gains);
+  if (period >= s.steps - 1) {
     const double task = s.cfg.task.duration();
-    throw ConfigError(given + " Hz is refused: the law would run every " + YamlReader::fmt(s.run.gains.period_steps) +
-                      " steps (" + YamlReader::fmt(s.run.gains.period_steps * s.run.plant.Ts) + " s), as long as the task (" +
+    throw ConfigError(given + " Hz is refused: the law would run every " + YamlReader::fmt(double(period)) +
+                      " steps (" + YamlReader::fmt(double(period) * Ts) + " s), as long as the task (" +
                       YamlReader::fmt(task) + " s) or longer: its first command would be held for the whole flight; "
                       "accepted rates above " + YamlReader::fmt(1.0 / task) + " Hz");
   }
-  s.cfg.clamp_commands = !f.no_clamp && (!file.has_clamp || file.clamp);
-  s.cfg.clamp_at_drone = !f.no_clamp;
-  return s;
 }
+template <class Law>
+void applyRate(std::false_type, LawFlight<Law>&, const YAML::Node&, const FlightFiles&, const FlightOptionNames&) {}
+}  // namespace flight_detail
 
 // Any law's flight from its controller file: its gains by its own reader
-// (readLawGains, given the vehicle's Ts), its commands clamped to the unit
-// range, as the drivers clamp, unless no_clamp. A law that saturates its
-// own commands (lawSaturation: the Pioneer's, whose driver clamps nothing)
-// has no clamp, and no clamp to leave out: no_clamp is refused, named
-// `no_clamp_option` ("--no-clamp", "clamp=False"). A law with options of its
-// own has a loadFlightOf of its own (below).
+// (given the vehicle's Ts), at its rate where it has one of its own (the
+// file's, or o.rate), its commands clamped to the unit range, as the
+// drivers clamp, unless the file says clamp_commands: false or o asks for
+// no clamp (which the vehicle's sim ignores where it clamps anyway:
+// kAlwaysClamps). A law that saturates its own commands (lawSaturation: the
+// Pioneer's, whose driver clamps nothing) has no clamp, and no clamp to
+// leave out: no clamp is refused, named o.no_clamp_option.
 template <class Law>
-LawFlight<Law> loadLawFlight(const FlightFiles& f, const std::string& no_clamp_option = "--no-clamp") {
+LawFlight<Law> loadLawFlight(const FlightFiles& f, const FlightOptionNames& o = FlightOptionNames()) {
   const char* saturation = lawSaturation<Law>();
-  if (saturation && f.no_clamp) throw ConfigError(no_clamp_option + " is refused " + saturation);
+  if (saturation && f.no_clamp) throw ConfigError(o.no_clamp_option + " is refused " + saturation);
   LawFlight<Law> s = lawFlight<Law>(f, presetGains<typename Law::Data>());
   const LawFile<Law> file = readLawFile<Law>(f.controller, s.run.plant.Ts);
   s.run.gains = file.gains;
+  flight_detail::applyRate(std::integral_constant<bool, lawHasRate<Law>()>(), s, file.mapping, f, o);
   if (saturation) return s;
   s.cfg.clamp_commands = !f.no_clamp && file.clamp;
   s.cfg.clamp_at_drone = Law::Vehicle::kAlwaysClamps || !f.no_clamp;
   return s;
-}
-
-// The flight of law `law` from the files (withFlight's, per law): the
-// compensator's with its rate, any other law's loadLawFlight.
-struct FlightOptionNames {
-  double rate;                  // [Hz] the compensator's instead of its file's (0: the file's)
-  std::string rate_option;      // how the rate was given, for a refusal ("--rate ", "rate=")
-  std::string no_clamp_option;  // how no clamp was asked for ("--no-clamp", "clamp=False")
-};
-template <class Law>
-LawFlight<Law> loadFlightOf(Law, const FlightFiles& f, const FlightOptionNames& o) {
-  return loadLawFlight<Law>(f, o.no_clamp_option);
-}
-inline LawFlight<Bebop2Compensator> loadFlightOf(Bebop2Compensator, const FlightFiles& f, const FlightOptionNames& o) {
-  return loadCompensatorFlight(f, o.rate, o.rate_option);
 }
 
 // The controller file's predictor (predictor_yaml.h) put into flight `s`:
@@ -165,7 +159,7 @@ LawFlight<Law> withPredictor(LawFlight<Law> s, const std::string& controller_fil
 // the flight tool and Python.
 template <class Fly>
 void withFlight(const FlightFiles& f, const std::string& law, const FlightOptionNames& o, Fly&& fly) {
-  const bool known = withLawNamed(law, [&](auto l) { fly(withPredictor(loadFlightOf(l, f, o), f.controller)); });
+  const bool known = withLawNamed(law, [&](auto l) { fly(withPredictor(loadLawFlight<decltype(l)>(f, o), f.controller)); });
   if (!known) {  // refused as the node refuses it, naming the file
     lawNameIn(YamlReader("controller file '" + f.controller + "': "),
               loadYamlFile("controller file", f.controller)["controller"], "controller");

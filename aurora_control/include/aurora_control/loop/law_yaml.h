@@ -129,7 +129,8 @@ void readLawMapping(const YamlReader& r, const YAML::Node& c, const std::string&
 template <class Law>
 struct LawFile {
   typename Law::template Gains<double> gains = presetGains<typename Law::Data>();
-  bool clamp = true;  // clamp_commands, true when not given
+  bool clamp = true;     // clamp_commands, true when not given
+  YAML::Node mapping;    // its 'controller:' (a rate of its own: mappingRate)
 };
 
 template <class Law>
@@ -139,7 +140,8 @@ LawFile<Law> readLawFile(const std::string& path, double Ts) {
   if (lawSaturation<Law>()) r.onlyKeys(root, "", {"controller", "predictor"});
   else r.onlyKeys(root, "", {"controller", "clamp_commands", "predictor"});
   LawFile<Law> f;
-  readGainsOf(Law(), r, root["controller"], "controller", f.gains, Ts);
+  f.mapping = root["controller"];
+  readGainsOf(Law(), r, f.mapping, "controller", f.gains, Ts);
   if (root["clamp_commands"]) f.clamp = r.boolean(root["clamp_commands"], "clamp_commands");
   return f;
 }

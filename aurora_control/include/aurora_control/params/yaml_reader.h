@@ -47,6 +47,7 @@ class YamlReader {
   // A message that already names its key.
   [[noreturn]] void failWith(const std::string& message) const { throw ConfigError(context_ + message); }
   const std::string& separator() const { return sep_; }
+  const std::string& context() const { return context_; }
 
   void onlyKeys(const YAML::Node& node, const std::string& key,
                 const std::vector<std::string>& accepted) const {
