@@ -66,7 +66,7 @@ std::string vehicleYaml(const CrewRobot& r) {
 int run(const Options& o) {
   CrewRequest q;
   q.file = o.formation, q.config_dir = o.config_dir;
-  if (!o.vehicle.empty()) q.line_vehicle = aurora_sim::loadVehicleYaml(o.vehicle), q.line_vehicle_file = o.vehicle;
+  if (!o.vehicle.empty()) q.line_vehicle = aurora_sim::loadVehicleFile<LawVehicle>(o.vehicle), q.line_vehicle_file = o.vehicle;
   const auto crew = loadFormationCrew(q);
   if (o.robot < 1 || o.robot > crew->robots()) {
     throw ConfigError("--robot " + std::to_string(o.robot) + " is refused: the " + crew->shape() + " formation has robots 1 to " +

@@ -28,7 +28,7 @@ namespace {
 
 // The lab's scenario (docs/formation.md, "The lab's two-drone scenario").
 ArdroneLineRun labScenario(FormationLaw law) {
-  const auto vehicle = aurora_sim::loadVehicleYaml(std::string(AURORA_CONFIG_DIR) + "/vehicles/ardrone2.yaml");
+  const auto vehicle = aurora_sim::loadVehicleFile<aurora_sim::Ardrone2>(std::string(AURORA_CONFIG_DIR) + "/vehicles/ardrone2.yaml");
   ArdroneLineRun run;
   const double starts[2][3] = {{-1.0, 0.0, 0.75}, {1.0, 0.0, 1.0}};
   const double k1[6] = {0.1, 0.1, 5.0, 1.0, 1.0, 1.0}, k2[6] = {2.0, 2.0, 2.0, 20.0, 15.0, 2.5};
@@ -231,7 +231,7 @@ TEST(LineFormation, TheLayerSeesEachDroneThroughItsOwnDelay) {
 // files are refused naming the key and what is accepted.
 TEST(FormationFile, ShippedFilesAreTheLabScenario) {
   const std::string config = AURORA_CONFIG_DIR;
-  const auto vehicle = aurora_sim::loadVehicleYaml(config + "/vehicles/ardrone2.yaml");
+  const auto vehicle = aurora_sim::loadVehicleFile<aurora_sim::Ardrone2>(config + "/vehicles/ardrone2.yaml");
   const std::pair<const char*, FormationLaw> files[2] = {{"line_lemniscate", FormationLaw::kPositionPriority},
                                                          {"line_lemniscate_ik", FormationLaw::kInverseKinematics}};
   for (const auto& f : files) {
@@ -305,7 +305,7 @@ TEST(FormationFile, MistakesAreRefusedNamingTheKey) {
   } catch (const aurora_common::ConfigError& e) {
     EXPECT_NE(std::string(e.what()).find("'formation.drones' must list the line's 2 drones (it lists 1)"), std::string::npos) << e.what();
   }
-  const auto vehicle = aurora_sim::loadVehicleYaml(config + "/vehicles/ardrone2.yaml");
+  const auto vehicle = aurora_sim::loadVehicleFile<aurora_sim::Ardrone2>(config + "/vehicles/ardrone2.yaml");
   FormationFile f = readFormationFile(config + "/formations/line_lemniscate.yaml", config);
   f.period = 0.25;
   try {

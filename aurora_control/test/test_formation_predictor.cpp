@@ -88,7 +88,7 @@ ArdroneLineRun line(bool predictor, long delay_1, long delay_2, bool links) {
   }
   file.drones[0].delay = delay_1, file.drones[1].delay = delay_2;
   if (links) file.drones[0].link.uplink.delay = delay_1, file.drones[1].link.uplink.delay = delay_2;
-  return formationRun(file, aurora_sim::loadVehicleYaml(kConfig + "/vehicles/ardrone2.yaml"));
+  return formationRun(file, aurora_sim::loadVehicleFile<aurora_sim::Ardrone2>(kConfig + "/vehicles/ardrone2.yaml"));
 }
 
 TEST(FormationPredictor, TheLinesDronesFlyTheirControllerFilesPredictor) {

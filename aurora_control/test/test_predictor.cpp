@@ -205,7 +205,7 @@ TEST(Predictor, ABadBlockIsRefusedNamingTheKey) {
 // up to 1.05 (resimulate) and 0.80 (smith) after 50 steps without a state.
 TEST(Predictor, ALongOutageDoesNotWrapItsRings) {
   using Vehicle = aurora_sim::Ardrone2;
-  const auto model = aurora_sim::loadVehicleYaml(kConfig + "/vehicles/ardrone2.yaml");
+  const auto model = aurora_sim::loadVehicleFile<aurora_sim::Ardrone2>(kConfig + "/vehicles/ardrone2.yaml");
   for (const PredictorForm form : {PredictorForm::kResimulate, PredictorForm::kSmith}) {
     for (const long delay : {0L, 3L, 7L}) {
       const aurora_control::CommandPath path{delay, delay == 3 ? 2L : 0L, delay == 7};

@@ -116,7 +116,7 @@ TEST(ArdroneModel, FloatInstantiationTracksDouble) {
 
 TEST(VehicleFile, ShippedArdrone2MatchesSpecExactly) {
   const ArdroneParams<double> p =
-      loadVehicleYaml(std::string(AURORA_CONFIG_DIR) + "/vehicles/ardrone2.yaml");
+      aurora_sim::loadVehicleFile<aurora_sim::Ardrone2>(std::string(AURORA_CONFIG_DIR) + "/vehicles/ardrone2.yaml");
   const ArdroneParams<double> ref = referenceArdrone2Params();
   // Bitwise equal: the ROS loop reads the file, the runner may use either.
   EXPECT_EQ(p.Ts, ref.Ts);
@@ -146,7 +146,7 @@ TEST(VehicleFile, MissingKeyIsNamed) {
     f << "type: ardrone2\nsample_time: 0.03333333333333333\ngravity: 9.8\n";
   }
   try {
-    loadVehicleYaml(path);
+    aurora_sim::loadVehicleFile<aurora_sim::Ardrone2>(path);
     FAIL() << "accepted a file without mass";
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find("'mass'"), std::string::npos) << e.what();
@@ -163,7 +163,7 @@ std::string typeRefusal(const std::string& type_line, const std::string& flown_b
   const std::string path = ::testing::TempDir() + "/vehicle_type.yaml";
   std::ofstream(path) << text;
   try {
-    loadVehicleYaml(path, flown_by);
+    aurora_sim::loadVehicleFile<aurora_sim::Ardrone2>(path, flown_by);
   } catch (const ConfigError& e) {
     return e.what();
   }

@@ -78,7 +78,7 @@ TEST(Bebop2Model, TheVehicleFileIsTheReference) {
   EXPECT_EQ(file.rotated_drag, 0.0);
   // An AR.Drone loop refuses the Bebop's file, naming both.
   try {
-    aurora_sim::loadVehicleYaml(path, "the controller 'pd_saturated'");
+    aurora_sim::loadVehicleFile<aurora_sim::Ardrone2>(path, "the controller 'pd_saturated'");
     ADD_FAILURE() << "an AR.Drone loop loaded a Bebop 2 file";
   } catch (const aurora_common::ConfigError& e) {
     EXPECT_NE(std::string(e.what()).find("is of type 'bebop2', but the controller 'pd_saturated' flies type "

@@ -65,7 +65,7 @@ Run3<double, Data> threeRobots(const typename Data::Vehicle::template Params<dou
 
 // The AR.Drone (the vehicle file's) with the lab's formation gains.
 aurora_sim::Ardrone2::Params<double> ardrone() {
-  return aurora_sim::loadVehicleYaml(test::configDir() + "/vehicles/ardrone2.yaml");
+  return aurora_sim::loadVehicleFile<aurora_sim::Ardrone2>(test::configDir() + "/vehicles/ardrone2.yaml");
 }
 aurora_control::LawGains<double> droneGains() {
   aurora_control::LawGains<double> gains;

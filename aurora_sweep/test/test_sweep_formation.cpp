@@ -42,7 +42,7 @@ const char* kGrid =
 // The flight tool's run of the file with drone delays d1, d2 and the
 // formation's K1 of rho, judged as a sweep judges it: its record.
 SimResult flightToolRecord(const std::string& file, long d1, long d2, double k1_rho, long ticks) {
-  const auto vehicle = aurora_sim::loadVehicleYaml(configDir() + "/vehicles/ardrone2.yaml");
+  const auto vehicle = aurora_sim::loadVehicleFile<aurora_sim::Ardrone2>(configDir() + "/vehicles/ardrone2.yaml");
   auto run = aurora_control::formationRun(aurora_control::readFormationFile(file, configDir()), vehicle);
   run.drone[0].delay = d1, run.drone[1].delay = d2;
   run.gains.k1[3] = k1_rho;

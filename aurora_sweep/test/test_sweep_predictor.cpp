@@ -145,7 +145,7 @@ TEST(SweepPredictor, ALongOutageDoesNotWrapTheLanesRings) {
   using B = Lanes::B;
   using I = Lanes::I;
   constexpr int L = Lanes::L, S = Vehicle::kStates;
-  const auto model = aurora_sim::loadVehicleYaml(std::string(AURORA_CONFIG_DIR) + "/vehicles/ardrone2.yaml");
+  const auto model = aurora_sim::loadVehicleFile<aurora_sim::Ardrone2>(std::string(AURORA_CONFIG_DIR) + "/vehicles/ardrone2.yaml");
   Vehicle::State<double> start;
   Vehicle::start(model, start);
   for (const auto form : {aurora_control::PredictorForm::kResimulate, aurora_control::PredictorForm::kSmith}) {

@@ -6,7 +6,6 @@
 #include <geometry_msgs/Twist.h>
 
 #include "aurora_sim/command_mapping.h"
-#include "aurora_sim/vehicle/ardrone2/ardrone2.h"
 #include "aurora_sim/state_index.h"
 
 namespace aurora_sim {

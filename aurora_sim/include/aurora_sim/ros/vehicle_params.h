@@ -10,7 +10,6 @@
 #include <string>
 
 #include "aurora_common/ros/params.h"
-#include "aurora_sim/vehicle/ardrone2/ardrone2.h"
 #include "aurora_sim/vehicle/vehicle_type.h"
 
 namespace aurora_sim {

@@ -56,12 +56,12 @@ inline std::string knownVehicleTypes() {
 }
 
 // Calls f(Vehicle()) for the vehicle of `type` (a vehicle file's), else
-// f(Ardrone2()), whose loader then refuses the type naming it: the one
+// f(the list's first), whose loader then refuses the type naming it: the one
 // choice of a vehicle by its file, for the simulator, the mocap estimator
 // and the fake driver.
 template <class F>
 void withVehicleOfType(const std::string& type, F&& f) {
-  if (!aurora_common::withEntryNamed(KnownVehicles(), type, f)) f(Ardrone2());
+  if (!aurora_common::withEntryNamed(KnownVehicles(), type, f)) f(aurora_common::FirstType<KnownVehicles>::type());
 }
 
 inline bool isKnownVehicleType(const std::string& type) {

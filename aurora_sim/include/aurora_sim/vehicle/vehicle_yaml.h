@@ -87,9 +87,4 @@ typename Vehicle::template Params<double> loadVehicleFile(const std::string& pat
   return params;
 }
 
-// The AR.Drone 2.0's (every loop of this build flies it).
-inline Ardrone2::Params<double> loadVehicleYaml(const std::string& path, const std::string& flown_by = "this loop") {
-  return loadVehicleFile<Ardrone2>(path, flown_by);
-}
-
 }  // namespace aurora_sim
