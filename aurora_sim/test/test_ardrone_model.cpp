@@ -10,7 +10,7 @@
 
 #include "aurora_sim/vehicle/ardrone2/ardrone_model.h"
 #include "aurora_sim/command_mapping.h"
-#include "aurora_sim/vehicle/vehicle_keys.h"
+#include "aurora_sim/vehicle/ardrone2/ardrone_keys.h"
 #include "aurora_sim/vehicle/vehicle_yaml.h"
 
 using namespace aurora_sim;

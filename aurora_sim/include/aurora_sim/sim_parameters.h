@@ -3,7 +3,7 @@
 // node reads every row through it, and docs/parameters.md's simulator
 // reference is simParameterReference() (test_ardrone_model compares). The
 // vehicle's constants are not here: they come from its vehicle file, every
-// key required (vehicle_keys.h).
+// key required (each vehicle's fileKeys(), vehicle_keys.h).
 #pragma once
 
 #include <limits>

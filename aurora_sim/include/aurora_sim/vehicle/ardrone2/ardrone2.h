@@ -32,7 +32,7 @@
 #include "aurora_sim/vehicle/ardrone2/ardrone_model.h"
 #include "aurora_sim/command_mapping.h"
 #include "aurora_sim/vehicle/vehicle_defaults.h"
-#include "aurora_sim/vehicle/vehicle_keys.h"
+#include "aurora_sim/vehicle/ardrone2/ardrone_keys.h"
 
 namespace aurora_sim {
 
@@ -93,7 +93,7 @@ struct Ardrone2 : VehicleDefaults {
   static const char* name() { return "ardrone2"; }
 
   // The vehicle file (config/vehicles/ardrone2.yaml): every key of
-  // vehicle_keys.h, required; angles in degrees there.
+  // ardrone_keys.h, required; angles in degrees there.
   static const std::vector<VehicleKey>& fileKeys() { return vehicleKeys(); }
   static void setFileValue(Params<double>& p, const VehicleKey& key, double value) { setVehicleValue(p, key, value); }
   static void finishFile(Params<double>& p) { p.updateDerived(); }
