@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <vector>
 
+#include "aurora_control/loop/ardrone_study.h"
 #include "aurora_control/loop/flight_runner.h"
 #include "aurora_control/law/pd_controller.h"
 #include "aurora_control/loop/closed_loop.h"

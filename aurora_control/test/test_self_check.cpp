@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "aurora_control/loop/ardrone_study.h"
 #include "aurora_control/loop/positioning_runner.h"
 
 using namespace aurora_control;
