@@ -604,10 +604,9 @@ void ControllerNodeOf<Settings>::fillLaw(aurora_msgs::Control& control) const {
   for (int i = aurora_sim::kStateSize; i < Vehicle::kStates; ++i) control.extra_state_names.push_back(Vehicle::stateName(i));
   control.gain_names.clear();
   control.gains.clear();
-  for (const auto& gain : gainsInForce(set)) control.gain_names.push_back(gain.first), control.gains.push_back(gain.second);
-  // The thesis's PD gains, where the law has them (0 otherwise).
-  control.kp = control.kd = 0.0;
+  control.kp = control.kd = 0.0;  // the thesis's PD gains, where the law has them
   for (const auto& gain : gainsInForce(set)) {
+    control.gain_names.push_back(gain.first), control.gains.push_back(gain.second);
     if (gain.first == "kp") control.kp = gain.second;
     if (gain.first == "kd") control.kd = gain.second;
   }

@@ -17,9 +17,9 @@ std::unique_ptr<FormationCrew> LineShapeEntry::crew(const File& f, const CrewReq
   requestedDelays(q, 2, Ts, formationTicks(run.reference.duration, Ts), [&](int r) -> FormationDrone<double, aurora_control::ArdroneLawData>& {
     return run.drone[r];
   });
-  const LawSettings<ArdroneLawData>& law = f.drones[0].controller;
+  const LawSettings<ArdroneLawData>& law = f.drones[0].controller;  // the robots' law; gains and models: the run's
   return std::unique_ptr<FormationCrew>(new CrewOf<LineFormation<double>, LawSettings<ArdroneLawData>>(
-      run, flyingLaw<ArdroneLawData>(law.law), name(), std::string(formationLawName(f.law)) + ", drones: " + lawNameOf(law),
+      run, law, name(), std::string(formationLawName(f.law)) + ", drones: " + lawNameOf(law),
       {f.drones[0].name_space, f.drones[1].name_space}, {q.line_vehicle_file, q.line_vehicle_file},
       formationTicks(run.reference.duration, Ts)));
 }

@@ -293,17 +293,14 @@ void fileLaw(const Overrides& o, LawSettings<Data>& set) {
   }
 }
 
-// The PD law's gain `name` of the law in force set to v; false when the
-// law has no gain of that name.
+// The gain `name` of the law in force set to v; false when the law has no
+// gain of that name.
 template <class Data>
 bool setGain(LawSettings<Data>& set, const std::string& name, double v) {
-  bool found = false;
-  set.withLawType([&](auto law) {
-    for (const auto& slot : lawGainSlots(law, set.gains)) {
-      if (slot.first == name) *slot.second = v, found = true;
-    }
-  });
-  return found;
+  double* gain = nullptr;
+  set.withLawType([&](auto law) { gain = gainNamed(law, set.gains, name); });
+  if (gain != nullptr) *gain = v;
+  return gain != nullptr;
 }
 
 // The law whose gain `name` is (the first of the list with one).

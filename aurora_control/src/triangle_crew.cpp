@@ -20,7 +20,7 @@ std::unique_ptr<FormationCrew> TriangleShapeEntry::crew(const File& setup, const
   const long steps = triangleSteps(setup);
   requestedDelays(q, 3, setup.drone.Ts, steps, [&](int r) -> FormationDrone<double, aurora_control::ArdroneLawData>& { return run.drone[r]; });
   return std::unique_ptr<FormationCrew>(new CrewOf<Triangle, LawSettings<ArdroneLawData>>(
-      run, flyingLaw<ArdroneLawData>(int(LawType::kUnderactuated)), name(),
+      run, LawSettings<ArdroneLawData>::flying<TriangleDroneLaw>(), name(),
       std::string(triangleLawName(setup.law)) + ", drones: underactuated", {setup.name_space[0], setup.name_space[1], setup.name_space[2]},
       {setup.drone_file, setup.drone_file, setup.drone_file}, steps));
 }

@@ -371,7 +371,7 @@ TEST(FormationController, IsTheRunnersTickOverDelaysAndLinks) {
     offline.push_back(t);
   };
   runFormation<aurora_control::ArdroneLaw<LawType::kUnderactuated>, double, Line, 64>(run, 900, observe);
-  FormationController<64, aurora_control::LineFormation<double>, aurora_control::LawSettings<aurora_control::ArdroneLawData>> core(run, flyingLaw<aurora_control::ArdroneLawData>(int(LawType::kUnderactuated)));
+  FormationController<64, aurora_control::LineFormation<double>, aurora_control::LawSettings<aurora_control::ArdroneLawData>> core(run, aurora_control::LawSettings<aurora_control::ArdroneLawData>::flying<aurora_control::ArdroneLaw<LawType::kUnderactuated>>());
   long mismatches = 0, hovers = 0;
   for (long k = 0; k < 900; ++k) {
     for (int d = 0; d < 2; ++d) {
@@ -446,7 +446,7 @@ TEST(FormationChecks, TheClosestPairIsNaNWhicheverRobotIsNaN) {
 TEST(FormationController, ANonFiniteCommandMakesEveryDroneHover) {
   ArdroneLineRun run = labScenario(FormationLaw::kPositionPriority);
   run.drone[1].start[2] = run.drone[0].start[2];  // level: the layer commands NaN
-  FormationController<64, aurora_control::LineFormation<double>, aurora_control::LawSettings<aurora_control::ArdroneLawData>> core(run, flyingLaw<aurora_control::ArdroneLawData>(int(LawType::kUnderactuated)));
+  FormationController<64, aurora_control::LineFormation<double>, aurora_control::LawSettings<aurora_control::ArdroneLawData>> core(run, aurora_control::LawSettings<aurora_control::ArdroneLawData>::flying<aurora_control::ArdroneLaw<LawType::kUnderactuated>>());
   for (int d = 0; d < 2; ++d) {
     StateSample s;
     s.step = 0;
@@ -460,7 +460,7 @@ TEST(FormationController, ANonFiniteCommandMakesEveryDroneHover) {
     for (int i = 0; i < 4; ++i) EXPECT_EQ(t.out[d].U[i], 0.0) << "drone " << d + 1 << " does not hover";
   }
   // The shipped start (drone 2 0.25 m above) flies finite commands.
-  FormationController<64, aurora_control::LineFormation<double>, aurora_control::LawSettings<aurora_control::ArdroneLawData>> fine(labScenario(FormationLaw::kPositionPriority), flyingLaw<aurora_control::ArdroneLawData>(int(LawType::kUnderactuated)));
+  FormationController<64, aurora_control::LineFormation<double>, aurora_control::LawSettings<aurora_control::ArdroneLawData>> fine(labScenario(FormationLaw::kPositionPriority), aurora_control::LawSettings<aurora_control::ArdroneLawData>::flying<aurora_control::ArdroneLaw<LawType::kUnderactuated>>());
   for (int d = 0; d < 2; ++d) {
     StateSample s;
     s.step = 0;

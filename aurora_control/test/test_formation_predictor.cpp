@@ -136,7 +136,7 @@ TEST(FormationPredictor, TheNodesCoreIsTheRunnersTick) {
   };
   const long ticks = 900;
   runFormation<Underactuated, double, Line, kShortHistory>(run, ticks, observe);
-  FormationController<kShortHistory, aurora_control::LineFormation<double>, aurora_control::LawSettings<aurora_control::ArdroneLawData>> core(run, flyingLaw<aurora_control::ArdroneLawData>(int(LawType::kUnderactuated)));
+  FormationController<kShortHistory, aurora_control::LineFormation<double>, aurora_control::LawSettings<aurora_control::ArdroneLawData>> core(run, aurora_control::LawSettings<aurora_control::ArdroneLawData>::flying<aurora_control::ArdroneLaw<LawType::kUnderactuated>>());
   long mismatches = 0, predicted = 0;
   for (long k = 0; k < ticks; ++k) {
     for (int d = 0; d < 2; ++d) {

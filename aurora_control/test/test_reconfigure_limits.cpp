@@ -28,12 +28,18 @@ TEST(ReconfigureLimits, ControllerCfgEqualsTheParameterTable) {
   // Every live setting the node takes is in the description, and no other.
   std::vector<std::string> described;
   for (const auto& p : ControllerConfig::__getDescriptionMessage__().groups[0].parameters) described.push_back(p.name);
+  std::vector<std::string> gains{"kp", "kd"};
+  for (int i = 0; i < 2 * kAxes; ++i) gains.push_back(underactuatedGainName(i));
   std::vector<std::string> live{"delay_samples", "uplink_jitter", "uplink_loss", "uplink_burst",
                                 "downlink_delay", "downlink_jitter", "downlink_loss", "downlink_burst", "predictor"};
-  for (const auto& g : liveGainsShown(LawSettings<ArdroneLawData>())) live.push_back(g.first);
+  live.insert(live.end(), gains.begin(), gains.end());
   std::sort(described.begin(), described.end());
   std::sort(live.begin(), live.end());
   EXPECT_EQ(described, live);
+  // ... and the gains the node shows and takes live are those (every law with row gains: the AR.Drone's two).
+  std::vector<std::string> shown;
+  for (const auto& g : liveGainsShown(LawSettings<Bebop2Compensator>())) shown.push_back(g.first);
+  EXPECT_EQ(shown, gains);
 }
 
 // The predictor's form is the table's word row: a string setting, its

@@ -25,15 +25,6 @@ void robotSettings(const FormationDrone<double, Data>& robot, LawSettings<Data>&
   s.vehicle = robot.model;
 }
 
-// The settings of Data's family flying law `index` (a shape's robots; the
-// rest of each robot's comes from the run).
-template <class Data>
-LawSettings<Data> flyingLaw(int index) {
-  LawSettings<Data> s;
-  s.law = index;
-  return s;
-}
-
 // Settings: LawSettings<Data> (the robots' law chosen at run time among
 // Data's family; a mixed crew's EitherLaw is its own).
 template <int Capacity, class Shape, class Settings>

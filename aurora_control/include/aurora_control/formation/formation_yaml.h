@@ -121,7 +121,7 @@ inline void readReference(const YamlReader& r, const YAML::Node& n, const std::s
 // (formation_runner.h, dronePredictor).
 inline LawSettings<ArdroneLawData> controllerAt(const YamlReader& r, const YAML::Node& c, const std::string& key,
                                                 const std::string& config_dir) {
-  if (c.IsScalar()) return readControllerFile<ArdroneLawData>(inConfig(r.text(c, key), config_dir)).settings;
+  if (c.IsScalar()) return readControllerFile<ArdroneLawData>(inConfig(r.text(c, key), config_dir));
   LawSettings<ArdroneLawData> set;
   readLawMapping(r, c, key, set);
   return set;

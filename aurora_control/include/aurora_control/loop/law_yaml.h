@@ -60,6 +60,15 @@ std::vector<std::pair<std::string, double*>> lawGainSlots(Law, Gains& g) {
   return law_yaml_detail::slots<Law>(std::integral_constant<bool, gainsAreRows<Law>()>(), g);
 }
 
+// Law's gain named `name` in g (nullptr: the law has none of that name).
+template <class Law, class Gains>
+double* gainNamed(Law law, Gains& g, const std::string& name) {
+  for (const auto& slot : lawGainSlots(law, g)) {
+    if (slot.first == name) return slot.second;
+  }
+  return nullptr;
+}
+
 // A gain's accepted range as a refusal gives it ("a number in [0, 10]").
 inline std::string gainRangeText(const GainRow& row) {
   return "a number in [" + YamlReader::fmt(row.min) + ", " + YamlReader::fmt(row.max) + "]";
@@ -146,26 +155,19 @@ LawFile<Law> readLawFile(const std::string& path, double Ts) {
   return f;
 }
 
-// A controller file (config/controllers/*.yaml) of a law of Data's family:
-// 'controller:' (the law and its gains) and an optional 'clamp_commands'.
-// Read by replay, the flight tool, a formation's robots and the tests that
-// fly a file's law offline.
+// The law and gains of a controller file (config/controllers/*.yaml) of a
+// law of Data's family: its 'controller:'; an optional 'clamp_commands'
+// (checked: a formation's robots never clamp) and 'predictor:'
+// (predictor_yaml.h). A formation's robots' (formation_yaml.h).
 template <class Data>
-struct ControllerFile {
-  LawSettings<Data> settings;  // law and gains
-  bool has_clamp = false;      // the file sets clamp_commands
-  bool clamp = true;
-};
-
-template <class Data>
-ControllerFile<Data> readControllerFile(const std::string& path) {
+LawSettings<Data> readControllerFile(const std::string& path) {
   const YAML::Node root = loadYamlFile("controller file", path);
   const YamlReader r("controller file '" + path + "': ");
-  r.onlyKeys(root, "", {"controller", "clamp_commands", "predictor"});  // predictor: predictor_yaml.h
-  ControllerFile<Data> f;
-  readLawMapping(r, root["controller"], "controller", f.settings);
-  if (root["clamp_commands"]) f.has_clamp = true, f.clamp = r.boolean(root["clamp_commands"], "clamp_commands");
-  return f;
+  r.onlyKeys(root, "", {"controller", "clamp_commands", "predictor"});
+  LawSettings<Data> set;
+  readLawMapping(r, root["controller"], "controller", set);
+  if (root["clamp_commands"]) r.boolean(root["clamp_commands"], "clamp_commands");
+  return set;
 }
 
 }  // namespace aurora_control

@@ -144,27 +144,6 @@ void forEachLiveGainLaw(F&& f) {
   });
 }
 
-template <class Law>
-double rowGain(std::true_type, typename Law::template Gains<double> g, int i) {
-  return Law::gainAt(g, i);
-}
-template <class Law>
-double rowGain(std::false_type, typename Law::template Gains<double>, int) {
-  return 0.0;
-}
-// Row i's gain of Law in g (a law whose gains are its rows).
-template <class Law>
-double rowGain(const typename Law::template Gains<double>& g, int i) {
-  return rowGain<Law>(std::integral_constant<bool, gainsAreRows<Law>()>(), g, i);
-}
-
-template <class Law>
-void setRowGain(std::true_type, typename Law::template Gains<double>& g, int i, double v) {
-  Law::gainAt(g, i) = v;
-}
-template <class Law>
-void setRowGain(std::false_type, typename Law::template Gains<double>&, int, double) {}
-
 // The gains the server shows for live law Live: this loop's, where Live is
 // of its family; else Live's preset.
 template <class Live, class Data>
@@ -185,11 +164,12 @@ std::string liveGainProblem(const LawSettings<Data>& now, Law, const LiveChange&
   if (own >= 0) return rangeProblem(c, Law::gainRow(own).min, Law::gainRow(own).max, "a gain");
   std::string problem = "'" + c.name + "' is not a live setting: accepted delay_samples, " + joinKeys(rowNames<Law>()) +
                         " (the " + Law::name() + " law's gains), the link's " + linkSettingNames() + ", predictor";
+  auto gains = now.gains;
   forEachLawOf<Data>([&](auto other) {
     using Other = decltype(other);
-    const int i = gainsAreRows<Other>() ? rowIndex<Other>(c.name) : -1;
-    if (i < 0) return;
-    if (c.value == rowGain<Other>(now.gains, i)) problem = "";
+    const double* gain = gainsAreRows<Other>() ? gainNamed(other, gains, c.name) : nullptr;
+    if (gain == nullptr) return;
+    if (c.value == *gain) problem = "";
     else problem = c.name + " = " + YamlReader::fmt(c.value) + " is refused: a gain of the " + Other::name() +
                    " law, but this node flies the " + Law::name() + " law (accepted: " + joinKeys(rowNames<Law>()) +
                    ", delay_samples, the link's " + linkSettingNames() + ")";
@@ -204,9 +184,9 @@ template <class Law>
 std::string fixedGainProblem(Law, const LiveChange& c) {
   bool shown = false;
   forEachLiveGainLaw([&](auto live) {
-    using Live = decltype(live);
-    const int i = rowIndex<Live>(c.name);
-    shown = shown || (i >= 0 && c.value == rowGain<Live>(presetGains<typename Live::Data>(), i));
+    auto preset = presetGains<typename decltype(live)::Data>();
+    const double* gain = gainNamed(live, preset, c.name);
+    shown = shown || (gain != nullptr && c.value == *gain);
   });
   if (shown) return "";
   return "'" + c.name + "' = " + YamlReader::fmt(c.value) + " is refused: this node flies the " + Law::name() +
@@ -236,9 +216,8 @@ template <class Data>
 void applyLiveChange(LawSettings<Data>& set, const LiveChange& c) {
   if (applyLoopChange(set, c)) return;
   set.withLawType([&](auto law) {
-    using Law = decltype(law);
-    const int i = gainsAreRows<Law>() ? live_detail::rowIndex<Law>(c.name) : -1;
-    if (i >= 0) live_detail::setRowGain<Law>(std::integral_constant<bool, gainsAreRows<Law>()>(), set.gains, i, c.value);
+    double* gain = gainsAreRows<decltype(law)>() ? gainNamed(law, set.gains, c.name) : nullptr;
+    if (gain != nullptr) *gain = c.value;
   });
 }
 
@@ -249,8 +228,8 @@ std::vector<std::pair<std::string, double>> liveGainsShown(const LawSettings<Dat
   std::vector<std::pair<std::string, double>> out;
   live_detail::forEachLiveGainLaw([&](auto live) {
     using Live = decltype(live);
-    const auto g = live_detail::shownGains<Live>(std::is_same<typename Live::Data, Data>(), set);
-    for (int i = 0; i < Live::kGainCount; ++i) out.emplace_back(Live::gainRow(i).name, live_detail::rowGain<Live>(g, i));
+    auto g = live_detail::shownGains<Live>(std::is_same<typename Live::Data, Data>(), set);
+    for (const auto& slot : lawGainSlots(live, g)) out.emplace_back(slot.first, *slot.second);
   });
   return out;
 }
