@@ -38,6 +38,14 @@ constexpr int typeIndexIn(TypeList<T...>) {
   return found;
 }
 
+// List A's entries, then B's (a shipped list and a build's own entries).
+template <class A, class B>
+struct Joined;
+template <class... A, class... B>
+struct Joined<TypeList<A...>, TypeList<B...>> {
+  using type = TypeList<A..., B...>;
+};
+
 // A list's first entry.
 template <class List>
 struct FirstType;

@@ -13,11 +13,26 @@
 #include "aurora_control/law/control_law.h"
 #include "aurora_control/law/pioneer_laws.h"
 
+// A build may add laws of its own after the shipped ones without editing
+// this file: AURORA_EXTRA_LAWS names a header that defines
+// aurora_control::ExtraLaws, a TypeList (the registry test's build of the
+// nodes, test/registry/extra_laws.h). Every file of such a build is
+// compiled with it (one list per program).
+#ifdef AURORA_EXTRA_LAWS
+#include AURORA_EXTRA_LAWS
+#else
+namespace aurora_control {
+using ExtraLaws = aurora_common::TypeList<>;
+}
+#endif
+
 namespace aurora_control {
 
 // Every law, the AR.Drone's two first: the one list.
-using KnownLaws = aurora_common::TypeList<ArdroneLaw<LawType::kPdSaturated>, ArdroneLaw<LawType::kUnderactuated>,
-                                          Bebop2Compensator, PioneerDynamic, PioneerKinematic>;
+using KnownLaws = aurora_common::Joined<
+    aurora_common::TypeList<ArdroneLaw<LawType::kPdSaturated>, ArdroneLaw<LawType::kUnderactuated>, Bebop2Compensator,
+                            PioneerDynamic, PioneerKinematic>,
+    ExtraLaws>::type;
 
 template <class F>
 void forEachLaw(F&& f) {

@@ -12,13 +12,27 @@
 #include "aurora_sim/vehicle/bebop2/bebop2_profile.h"
 #include "aurora_sim/vehicle/pioneer3dx/pioneer3dx_profile.h"
 
+// A build may add vehicles of its own after the shipped ones without
+// editing this file: AURORA_EXTRA_VEHICLES names a header that defines
+// aurora_sim::ExtraVehicles, a TypeList (the registry test's build of the
+// nodes, test/registry/extra_vehicles.h; docs/architecture.md, "Vehicles").
+// Every file of such a build is compiled with it (one list per program).
+#ifdef AURORA_EXTRA_VEHICLES
+#include AURORA_EXTRA_VEHICLES
+#else
+namespace aurora_sim {
+using ExtraVehicles = aurora_common::TypeList<>;
+}
+#endif
+
 namespace aurora_sim {
 
 // The vehicles this build knows: the one list (forEachVehicle,
 // VehicleParamsSet and every choice by a vehicle file's type read it),
 // each included above with its simulator profile (its folder's
 // <name>_profile.h, which includes its model).
-using KnownVehicles = aurora_common::TypeList<Ardrone2, Bebop2, Pioneer3dx>;
+using KnownVehicles =
+    aurora_common::Joined<aurora_common::TypeList<Ardrone2, Bebop2, Pioneer3dx>, ExtraVehicles>::type;
 
 template <class F>
 void forEachVehicle(F&& f) {
