@@ -150,9 +150,8 @@ std::vector<SimResult> simdLanes(const Setup3<T, Law>& setup, const GridView& gr
   std::vector<SimResult> out(static_cast<size_t>(grid.size()));
   std::atomic<long> next{0};
   Progress progress{0};
-  FormationBatch<T, xsimd::default_arch, Law, ThreeAbreast>(setup, kCapacity, grid, 0, grid.size(), out, next,
-                                                             progress)
-      .run();
+  LaneWork work(grid, 0, grid.size(), out, next, progress);
+  FormationBatch<T, xsimd::default_arch, Law, ThreeAbreast>(setup, kCapacity, work).run();
   EXPECT_EQ(progress.load(), grid.size());
   return out;
 }

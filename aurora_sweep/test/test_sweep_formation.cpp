@@ -117,6 +117,37 @@ TEST(FormationSweep, EveryCpuBackendAgreesWithTheScalarLoop) {
   }
 }
 
+// A lane whose formation ended early (a failed check, early stop) takes the
+// next combination at once (formation_lanes.h): on every build each record
+// is the one the lane engine gives its combination run alone, bit for bit,
+// and the generic build's the scalar loop's; most of the triangle's runs
+// stop early at these delays, some fly to the end.
+TEST(FormationSweep, ALaneWhoseRunStoppedTakesTheNextCombination) {
+  SweepSpec spec = formationSweep("triangle_refill",
+                                  "  formation: formations/triangle_ardrones.yaml\n  early_stop: true\n  parameters:\n"
+                                  "    delay_1: {from: 0, to: 14, count: 8}\n    delay_2: {values: [0, 6, 15]}\n"
+                                  "    delay_3: {values: [0, 15]}\n");
+  const std::vector<SimResult> scalar = runOn("scalar", spec);
+  int stopped = 0;
+  for (const SimResult& r : scalar) stopped += r.steps < spec.iterations();
+  EXPECT_GT(stopped, 8);
+  EXPECT_LT(stopped, int(scalar.size()) - 4);
+  EXPECT_EQ(differing(scalar, runOn("none", spec, 1)), 0);
+  for (Precision precision : {Precision::kDouble, Precision::kFloat}) {
+    spec.precision = precision;
+    for (const CpuIsa& isa : cpuBatchIsas()) {
+      if (!isa.supported) continue;
+      const std::vector<SimResult> all = runOn(isa.key, spec, 1);
+      for (long i = 0; i < spec.size(); ++i) {
+        SweepSpec one = spec;
+        one.range_begin = i, one.range_end = i + 1;
+        const SimResult alone = runOn(isa.key, one, 1).at(0);
+        EXPECT_EQ(std::memcmp(&alone, &all[size_t(i)], sizeof alone), 0) << isa.key << " combination " << i;
+      }
+    }
+  }
+}
+
 // The CUDA kernel's per-thread entry (formationThread), called for every
 // (block, thread) of a launch of a range, is the scalar loop, ideal and
 // over links.

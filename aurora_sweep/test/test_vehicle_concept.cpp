@@ -98,7 +98,8 @@ std::vector<SimResult> simdLanes(const SimSetup<typename L::Vehicle, T>& setup, 
   std::vector<SimResult> out(static_cast<size_t>(grid.size()));
   std::atomic<long> next{0};
   Progress progress{0};
-  BatchWorker<T, xsimd::default_arch, L>(setup, 64, grid, 0, grid.size(), out, next, progress).run();
+  LaneWork work(grid, 0, grid.size(), out, next, progress);
+  BatchWorker<T, xsimd::default_arch, L>(setup, 64, work).run();
   EXPECT_EQ(progress.load(), grid.size());
   return out;
 }

@@ -56,6 +56,79 @@ namespace {
 // combinations run for similar lengths).
 constexpr long kChunk = 64;
 
+// What every lane engine's thread shares with the others (BatchWorker
+// below, FormationBatch in formation_lanes.h): the range [first, total) of
+// the grid's combinations, handed out in chunks of consecutive indices from
+// `next`, and each run's result, stored at its index and counted in
+// `progress`. One per thread (its chunk is its own).
+class LaneWork {
+ public:
+  LaneWork(const GridView& grid, long first, long total, std::vector<SimResult>& out, std::atomic<long>& next,
+           Progress& progress)
+      : grid_(grid), first_(first), total_(total), out_(out), next_(next), progress_(progress) {}
+
+  // The next combination this thread runs (false: none is left), left for
+  // take() (a formation batch takes only those of its law).
+  bool peek(long& index) {
+    if (chunk_next_ >= chunk_end_) {
+      chunk_next_ = next_.fetch_add(kChunk, std::memory_order_relaxed);
+      chunk_end_ = std::min(chunk_next_ + kChunk, total_);
+      if (chunk_next_ >= total_) return false;
+    }
+    index = chunk_next_;
+    return true;
+  }
+  bool take(long& index) {
+    if (!peek(index)) return false;
+    ++chunk_next_;
+    return true;
+  }
+  Combination decode(long index) const { return grid_.decode(index); }
+  long first() const { return first_; }  // a lane without work reruns it, its result dropped
+  void record(long index, const SimResult& result) {
+    out_[index - first_] = result;
+    progress_.fetch_add(1, std::memory_order_relaxed);
+  }
+
+ private:
+  const GridView grid_;
+  const long first_, total_;
+  std::vector<SimResult>& out_;
+  std::atomic<long>& next_;
+  Progress& progress_;
+  long chunk_next_ = 0, chunk_end_ = 0;
+};
+
+// Lane l of a loop state of batches set from one of scalars (a lane's
+// fresh run: BatchWorker's next combination, FormationBatch's robots).
+template <class LaneOps, class Data, typename T>
+void setLoopLane(aurora_control::LoopState<Data, typename LaneOps::B, typename LaneOps::M>& to, int l,
+                 const aurora_control::LoopState<Data, T, bool>& from) {
+  LaneOps::setFields(to.model, l, from.model);
+  LaneOps::setFields(to.memory, l, from.memory);
+  for (int i = 0; i < aurora_control::kPositioningChecks; ++i) LaneOps::set(to.metrics.ok[i], l, from.metrics.ok[i]);
+  LaneOps::set(to.metrics.iae, l, from.metrics.iae);
+  LaneOps::set(to.metrics.itae, l, from.metrics.itae);
+  LaneOps::set(to.metrics.iasc, l, from.metrics.iasc);
+  LaneOps::set(to.t, l, from.t);
+  LaneOps::set(to.initial_error, l, from.initial_error);
+}
+
+// Lane l of a loop state of batches, as one of scalars.
+template <class LaneOps, class Data>
+aurora_control::LoopState<Data, typename LaneOps::B::value_type, bool> loopLane(
+    const aurora_control::LoopState<Data, typename LaneOps::B, typename LaneOps::M>& from, int l) {
+  aurora_control::LoopState<Data, typename LaneOps::B::value_type, bool> to;
+  LaneOps::getFields(from.model, l, to.model);
+  LaneOps::getFields(from.memory, l, to.memory);
+  for (int i = 0; i < aurora_control::kPositioningChecks; ++i) to.metrics.ok[i] = LaneOps::get(from.metrics.ok[i], l);
+  to.metrics.iae = LaneOps::get(from.metrics.iae, l);
+  to.metrics.itae = LaneOps::get(from.metrics.itae, l);
+  to.metrics.iasc = LaneOps::get(from.metrics.iasc, l);
+  to.t = LaneOps::get(from.t, l);
+  to.initial_error = LaneOps::get(from.initial_error, l);
+  return to;
+}
 
 // Runs the combinations [first, total) of `grid` on the lanes of batches of
 // instruction set Arch, law `Law` on its vehicle (setup), histories of
@@ -77,10 +150,8 @@ class BatchWorker {
   using Int = typename History::Int;
   using I = typename History::I;
 
-  BatchWorker(const SimSetup<Vehicle, T>& setup, int capacity, const GridView& grid, long first, long total,
-              std::vector<SimResult>& out, std::atomic<long>& next, Progress& progress)
-      : grid_(grid), first_(first), total_(total), out_(out), next_(next), progress_(progress), setup_(setup),
-        capacity_(capacity) {
+  BatchWorker(const SimSetup<Vehicle, T>& setup, int capacity, LaneWork& work)
+      : work_(work), setup_(setup), capacity_(capacity) {
     history_.allocate(capacity_);
     if (!setup_.ideal_link) {
       links_.reset(new LaneModelLinks<Reader, T, Arch>(setup_.config.link, double(setup_.model.Ts), history_));
@@ -107,16 +178,6 @@ class BatchWorker {
   }
 
  private:
-  bool takeIndex(long& index) {
-    if (chunk_next_ >= chunk_end_) {
-      chunk_next_ = next_.fetch_add(kChunk, std::memory_order_relaxed);
-      chunk_end_ = std::min(chunk_next_ + kChunk, total_);
-      if (chunk_next_ >= total_) return false;
-    }
-    index = chunk_next_++;
-    return true;
-  }
-
   bool anyActive() const {
     for (int l = 0; l < L; ++l) {
       if (active_[l]) return true;
@@ -127,9 +188,9 @@ class BatchWorker {
   // Puts the next combination into lane l (or leaves it idle, rerunning the
   // range's first combination, when the work is done).
   void startLane(int l) {
-    long index = first_;
-    const bool have = takeIndex(index);
-    const Combination c = grid_.decode(have ? index : first_);
+    long index = work_.first();
+    const bool have = work_.take(index);
+    const Combination c = work_.decode(have ? index : work_.first());
     const aurora_control::StudyRun<Data, T> run = studyRun<Law>(setup_, c);
     long command_delay = 0;  // over the ideal link none
     if (links_) {
@@ -144,14 +205,7 @@ class BatchWorker {
     history_.startLane(l);
     LaneOps::setFields(loop_.gains, l, run.gains);
     if (setup_.varies_model) LaneOps::setFields(loop_.plant, l, run.plant);
-    LaneOps::setFields(sim_.model, l, fresh_.model);
-    LaneOps::setFields(sim_.memory, l, fresh_.memory);
-    for (int i = 0; i < aurora_control::kPositioningChecks; ++i) LaneOps::set(sim_.metrics.ok[i], l, true);
-    LaneOps::set(sim_.metrics.iae, l, T(0));
-    LaneOps::set(sim_.metrics.itae, l, T(0));
-    LaneOps::set(sim_.metrics.iasc, l, T(0));
-    LaneOps::set(sim_.t, l, T(0));
-    LaneOps::set(sim_.initial_error, l, fresh_.initial_error);
+    setLoopLane<LaneOps>(sim_, l, fresh_);
   }
 
   // Lane l's run as a scalar sim, assembled into its result by the runner's
@@ -164,8 +218,7 @@ class BatchWorker {
     lane.metrics.iasc = LaneOps::get(sim_.metrics.iasc, l);
     for (int i = 0; i < Vehicle::kStates; ++i) lane.model.X[i] = LaneOps::get(sim_.model.X[i], l);
     const long steps = LaneOps::get(history_.size(), l);
-    out_[index_[l] - first_] = compactResult(aurora_control::runnerResult(lane, steps));
-    progress_.fetch_add(1, std::memory_order_relaxed);
+    work_.record(index_[l], compactResult(aurora_control::runnerResult(lane, steps)));
   }
 
   // Each lane's iteration k (loopIteration), over the delay rule or its
@@ -209,14 +262,7 @@ class BatchWorker {
     }
   }
 
-  const GridView grid_;
-  const long first_;  // the range computed: [first_, total_)
-  const long total_;
-  std::vector<SimResult>& out_;
-  std::atomic<long>& next_;
-  Progress& progress_;
-  long chunk_next_ = 0, chunk_end_ = 0;
-
+  LaneWork& work_;
   const SimSetup<Vehicle, T> setup_;
   const int capacity_;  // the history's (limits.h, historyCapacity)
   // Each lane's vehicle and gains; the nominal model the law inverts.
@@ -254,24 +300,27 @@ void onThreads(int threads, Work&& work) {
   for (auto& th : pool) th.join();
 }
 
-// work(grid, first, total, next) on each of `threads` threads: the spec's
-// range [first, total), `next` the combination the next free chunk starts at.
+// work(lanes) on each of `threads` threads, each with its LaneWork of the
+// spec's range.
 template <class Work>
-void onRange(const SweepSpec& spec, int threads, std::vector<SimResult>& out, Work&& work) {
+void onRange(const SweepSpec& spec, int threads, std::vector<SimResult>& out, Progress& progress, Work&& work) {
   out.resize(spec.rangeSize());
   std::atomic<long> next{spec.rangeBegin()};
   const GridView grid = spec.view();
-  onThreads(threads, [&] { work(grid, spec.rangeBegin(), spec.rangeEnd(), next); });
+  onThreads(threads, [&] {
+    LaneWork lanes(grid, spec.rangeBegin(), spec.rangeEnd(), out, next, progress);
+    work(lanes);
+  });
 }
 
 template <typename T, class Arch, class Law>
 void runBatchWith(const SweepSpec& spec, int capacity, int threads, std::vector<SimResult>& out, Progress& progress) {
   const auto setup = makeSetup<typename Law::Vehicle, T>(spec);
-  onRange(spec, threads, out, [&](const GridView& grid, long first, long total, std::atomic<long>& next) {
+  onRange(spec, threads, out, progress, [&](LaneWork& lanes) {
     if (spec.predicting()) {
-      BatchWorker<T, Arch, Law, true>(setup, capacity, grid, first, total, out, next, progress).run();
+      BatchWorker<T, Arch, Law, true>(setup, capacity, lanes).run();
     } else {
-      BatchWorker<T, Arch, Law>(setup, capacity, grid, first, total, out, next, progress).run();
+      BatchWorker<T, Arch, Law>(setup, capacity, lanes).run();
     }
   });
 }
@@ -281,10 +330,8 @@ void runFormationBatchWith(const SweepSpec& spec, const ShapeRun<double, Shape, 
                            int threads, std::vector<SimResult>& out, Progress& progress) {
   const FormationSetup<T, Shape, typename Law::Data> setup = makeFormationSetup<T>(spec, run);
   withFormationPredictor(run, [&](auto predicted) {
-    onRange(spec, threads, out, [&](const GridView& grid, long first, long total, std::atomic<long>& next) {
-      FormationBatch<T, Arch, Law, Shape, decltype(predicted)::value>(setup, capacity, grid, first, total, out, next,
-                                                                      progress)
-          .run();
+    onRange(spec, threads, out, progress, [&](LaneWork& lanes) {
+      FormationBatch<T, Arch, Law, Shape, decltype(predicted)::value>(setup, capacity, lanes).run();
     });
   });
 }

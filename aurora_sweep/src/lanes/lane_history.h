@@ -5,6 +5,7 @@
 // batch_engine.h only.
 #pragma once
 
+#include <cstring>
 #include <stdexcept>
 #include <type_traits>
 
@@ -64,6 +65,30 @@ struct Lanes {
     B* to = reinterpret_cast<B*>(&batches);
     const T* from = reinterpret_cast<const T*>(&scalars);
     for (size_t i = 0; i < n; ++i) set(to[i], lane, from[i]);
+  }
+  // Lane `lane` of every field of a struct of batches, into the same struct
+  // of scalars.
+  template <class Batches, class Scalars>
+  static void getFields(const Batches& batches, int lane, Scalars& scalars) {
+    constexpr bool kEmpty = std::is_empty<Scalars>::value;
+    constexpr size_t n = kEmpty ? 0 : sizeof(Scalars) / sizeof(T);
+    static_assert(kEmpty || (sizeof(Scalars) == n * sizeof(T) && sizeof(Batches) == n * sizeof(B)),
+                  "a struct of T only");
+    const B* from = reinterpret_cast<const B*>(&batches);
+    T* to = reinterpret_cast<T*>(&scalars);
+    for (size_t i = 0; i < n; ++i) to[i] = get(from[i], lane);
+  }
+  // Lane `lane` of every batch of a struct copied from another of its type,
+  // where the struct holds batches and values every lane shares (a formation
+  // layer: its law; FormationBatch restarts one lane's). Byte by byte within
+  // each batch-sized slot: a shared value's bytes are the same in both.
+  template <class S>
+  static void copyLane(S& to, const S& from, int lane) {
+    static_assert(std::is_trivially_copyable<S>::value && sizeof(S) % sizeof(B) == 0 && alignof(B) == sizeof(B),
+                  "batches and shared values only");
+    unsigned char* dst = reinterpret_cast<unsigned char*>(&to);
+    const unsigned char* src = reinterpret_cast<const unsigned char*>(&from);
+    for (size_t at = size_t(lane) * sizeof(T); at < sizeof(S); at += sizeof(B)) std::memcpy(dst + at, src + at, sizeof(T));
   }
 };
 
