@@ -15,8 +15,10 @@
 // runPredictedFormationOver. Included by batch_engine.h only.
 #pragma once
 
+#include <algorithm>
 #include <memory>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 #include "aurora_sweep/formation_simulation.h"
@@ -83,7 +85,7 @@ class FormationBatch {
     aurora_control::DroneParams<B, Data> params[D];
     aurora_control::DroneState<B, M, Data> state[D];
     Metrics metrics;
-    // Every lane `lane`'s formation, started (each lane's own set by startLane).
+    // Every lane flying `lane`'s formation, started (each lane's own then set by startLane).
     Flights(const Lane& lane, const T& period) : run(broadcast(lane)), layer(run.law, run.gains, B(period)) {
       aurora_control::startFormation(run, params, state, layer);
       metrics.reset();
