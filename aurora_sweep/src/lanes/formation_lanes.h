@@ -110,15 +110,15 @@ class FormationBatch {
     return s.period_ticks / a;
   }
 
-  typename OneLane::Law lawOf(long index) const {
-    return formationCombination<Law>(setup_, work_.decode(index)).law;
-  }
+  Lane laneOf(long index) const { return formationCombination<Law>(setup_, work_.decode(index)); }
 
-  // The batch of law lawOf(first): its lanes refilled with combinations of
-  // that law until the next is another's; then each lane runs out.
+  // The batch of the layer law of combination `first`: its lanes refilled
+  // with combinations of that law until the next is another's; then each
+  // lane runs out.
   void runBatch(long first) {
-    const auto law = lawOf(first);
-    Flights f(formationCombination<Law>(setup_, work_.decode(first)), period_);
+    const Lane start = laneOf(first);
+    const auto law = start.law;
+    Flights f(start, period_);
     for (int d = 0; d < D; ++d) fresh_[d] = loopLane<LaneOps>(f.state[d], 0);
     for (int l = 0; l < L; ++l) start_[l] = 0, offset_[l] = 0, active_[l] = false;
     starts_ = I(Int(0));
@@ -144,32 +144,32 @@ class FormationBatch {
     for (int l = 0; l < L; ++l) {
       if (active_[l]) continue;
       long index = first;
-      if (work_.peek(index) && lawOf(index) == law) {
-        work_.take(index);
-        startLane(l, f, index, true);
-      } else if (g_ == start_[l] || g_ - start_[l] >= setup_.iterations) {
-        startLane(l, f, first, false);
+      if (work_.peek(index)) {
+        const Lane lane = laneOf(index);
+        if (lane.law == law) {
+          work_.take(index);
+          startLane(l, f, index, lane, true);
+          continue;
+        }
       }
+      if (g_ == start_[l] || g_ - start_[l] >= setup_.iterations) startLane(l, f, first, laneOf(first), false);
     }
   }
 
-  // Lane l starts the formation of combination `index`: its robots' gains,
-  // delays, links and predictors, its layer and robots as a batch of its
-  // own would start them, its metrics reset, its tick 0.
-  void startLane(int l, Flights& f, long index, bool active) {
+  // Lane l starts `lane`, the formation of combination `index`: its
+  // robots' gains, delays, links and predictors, its layer and robots as a
+  // batch of its own would start them, its metrics reset, its tick 0. (The
+  // batch's run keeps what every lane shares: the layer's and the robots'
+  // gains in force are the layer's and params'.)
+  void startLane(int l, Flights& f, long index, const Lane& lane, bool active) {
     const Combination c = work_.decode(index);
-    const Lane lane = formationCombination<Law>(setup_, c);
     aurora_control::FormationGains<B, N> gains;
-    for (int i = 0; i < N; ++i) {
-      LaneOps::set(f.run.gains.k1[i], l, lane.gains.k1[i]), LaneOps::set(f.run.gains.k2[i], l, lane.gains.k2[i]);
-      gains.k1[i] = B(lane.gains.k1[i]), gains.k2[i] = B(lane.gains.k2[i]);
-    }
+    for (int i = 0; i < N; ++i) gains.k1[i] = B(lane.gains.k1[i]), gains.k2[i] = B(lane.gains.k2[i]);
     Layer layer(f.run.law, gains, B(period_));
     aurora_control::startLayer(f.run, layer);
     LaneOps::copyLane(f.layer, layer, l);
     for (int d = 0; d < D; ++d) {
-      LaneOps::setFields(f.run.drone[d].gains, l, lane.drone[d].gains);  // the robot gains the sweep gives
-      LaneOps::setFields(f.params[d].gains, l, lane.drone[d].gains);
+      LaneOps::setFields(f.params[d].gains, l, lane.drone[d].gains);  // the robot gains the sweep gives
       setLoopLane<LaneOps>(f.state[d], l, fresh_[d]);
       LaneOps::set(ideal_[d].delay, l, static_cast<Int>(lane.drone[d].delay));
       history_[d].startLane(l);
@@ -228,8 +228,7 @@ class FormationBatch {
       Period p{T(0), {}, {}};
       if (!aurora_control::desiredBefore(setup.run, k, p.t, p.qd)) continue;
       OneLane::positions(p.qd, p.xd);
-      periods.resize(std::max<size_t>(periods.size(), size_t(setup.run.schedule.periodBefore(k)) + 1));
-      periods[size_t(setup.run.schedule.periodBefore(k))] = p;
+      periods.push_back(p);  // each period falls before one step (q <= p): period n is entry n
     }
     return periods;
   }
