@@ -18,6 +18,10 @@ struct ThreeAbreast {
   static constexpr Law kDefaultLaw = aurora_control::FormationLaw::kInverseKinematics;
   static constexpr int kDrones = 3;
   static constexpr int kVariables = 9;
+  static const char* variableName(int i) {
+    static const char* const names[kVariables] = {"x1", "y1", "z1", "dx2", "dy2", "dz2", "dx3", "dy3", "dz3"};
+    return names[i];
+  }
 
   AURORA_HD static void defaultGains(T k1[9], T k2[9]) {
     for (int i = 0; i < 9; ++i) k1[i] = T(0.5), k2[i] = T(0.5);

@@ -18,11 +18,26 @@
 #include "aurora_control/formation/triangle_yaml.h"
 #include "aurora_control/formation/uav_ugv_yaml.h"
 
+// A build may add shapes of its own after the shipped ones without editing
+// this file: AURORA_EXTRA_SHAPES names a header that defines
+// aurora_control::ExtraShapes, a TypeList (the registry test's build of the
+// formation node, test/registry/extra_shapes.h; docs/architecture.md,
+// "Shapes"). Every file of such a build is compiled with it (one list per
+// program).
+#ifdef AURORA_EXTRA_SHAPES
+#include AURORA_EXTRA_SHAPES
+#else
+namespace aurora_control {
+using ExtraShapes = aurora_common::TypeList<>;
+}
+#endif
+
 namespace aurora_control {
 
 // The shapes this build knows: the one list (forEachShape, the sweep's
 // SweepShape and its runs read it).
-using KnownShapes = aurora_common::TypeList<LineShapeEntry, UavUgvShapeEntry, TriangleShapeEntry>;
+using KnownShapes =
+    aurora_common::Joined<aurora_common::TypeList<LineShapeEntry, UavUgvShapeEntry, TriangleShapeEntry>, ExtraShapes>::type;
 
 template <class F>
 void forEachShape(F&& f) {
