@@ -52,7 +52,7 @@ void FormationNode::loadCrew() {
   q.config_dir = aurora_common::paramOr<std::string>(pnh_, "config_dir", "");
   const FormationDocument file = loadFormationDocument(q.file, q.config_dir);
   withShapeNamed(file.shape, [&](auto e) {  // a shape whose file names no vehicle flies ~vehicle's
-    if (!decltype(e)::kNamesItsVehicles) q.line_vehicle = aurora_sim::loadVehicleParams<aurora_sim::Ardrone2>(pnh_, "vehicle");
+    if (!decltype(e)::kNamesItsVehicles) q.line_vehicle = aurora_sim::loadVehicleParams<LawVehicle>(pnh_, "vehicle");
   });
   for (int d = 0; d < kMaxCrew; ++d) {
     const std::string key = "delay_" + std::to_string(d + 1);

@@ -157,13 +157,13 @@ std::vector<std::vector<double>> flightStates(const SweepSpec& spec, aurora_cont
   aurora_control::LawSettings<aurora_control::ArdroneLawData> set;
   set.law = int(spec.law);
   set.gains.pd = {spec.fixed[kParamKp], spec.fixed[kParamKd]};
-  set.vehicle = spec.ardrone();
+  set.vehicle = spec.paramsOf(aurora_sim::Ardrone2());
   set.delay = static_cast<long>(spec.fixed[kParamDelay]);
   set.clamp_commands = spec.clamp_commands;
-  set.Ts = spec.ardrone().Ts;
+  set.Ts = spec.paramsOf(aurora_sim::Ardrone2()).Ts;
   std::vector<std::vector<double>> states;
   result = aurora_control::runFlight(
-      spec.ardrone(), set, spec.task, aurora_control::studyIterationCount(spec.duration(), spec.ardrone().Ts),
+      spec.paramsOf(aurora_sim::Ardrone2()), set, spec.task, aurora_control::studyIterationCount(spec.duration(), spec.paramsOf(aurora_sim::Ardrone2()).Ts),
       [&](const aurora_control::FlightObservation& o, double) {
         states.emplace_back(o.after.model.X, o.after.model.X + aurora_sim::kStateSize);
       });

@@ -403,7 +403,7 @@ TEST(SweepCounts, EarlyStopChecksAreNotReached) {
       "sweep:\n  parameters:\n    kp: 0.5\n    kd: 0.85\n    delay: {values: [0, 53]}\n  early_stop: true\n";
   const SweepSpec spec = load(writeTemp("early_counts.yaml", yaml));
   const std::vector<SimResult> results = runOn("scalar", spec);
-  const Counts c = countResults(results, aurora_control::studyIterationCount(spec.duration(), spec.ardrone().Ts));
+  const Counts c = countResults(results, aurora_control::studyIterationCount(spec.duration(), spec.paramsOf(aurora_sim::Ardrone2()).Ts));
   ASSERT_EQ(c.combinations, 2);
   EXPECT_EQ(c.feasible, 1);  // delay 0 flies; delay 53 fails early
   for (int i = 0; i < 4; ++i) {

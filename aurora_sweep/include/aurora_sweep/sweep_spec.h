@@ -45,7 +45,7 @@ struct SweepSpec {
   // `type:`): its parameters in its type's place of `vehicles`
   // (paramsOf); the AR.Drone's are a formation sweep's drones' too.
   std::string vehicle_file;
-  std::string vehicle_type = aurora_sim::Ardrone2::name();
+  std::string vehicle_type = aurora_sim::DefaultVehicle::name();
   aurora_sim::VehicleParamsSet vehicles{};
   template <class Vehicle>
   const typename Vehicle::template Params<double>& paramsOf(Vehicle) const {
@@ -55,9 +55,12 @@ struct SweepSpec {
   typename Vehicle::template Params<double>& paramsOf(Vehicle) {
     return vehicles.template of<Vehicle>();
   }
-  const SweepVehicle::Params<double>& ardrone() const { return paramsOf(aurora_sim::Ardrone2()); }
+  // The default vehicle's (vehicle_type.h): a sweep's that names none.
+  const aurora_sim::DefaultVehicle::Params<double>& defaultVehicle() const {
+    return paramsOf(aurora_sim::DefaultVehicle());
+  }
   double Ts() const {
-    double Ts = ardrone().Ts;
+    double Ts = defaultVehicle().Ts;
     vehicles.withType(vehicle_type, [&](const auto& p) { Ts = p.Ts; });
     return Ts;
   }

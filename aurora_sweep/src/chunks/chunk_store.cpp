@@ -166,11 +166,11 @@ void addPredictor(Crc& crc, const SweepSpec& spec) {
 }  // namespace
 
 uint32_t definitionHash(const SweepSpec& spec) {
-  static_assert(sizeof(spec.ardrone()) % sizeof(double) == 0, "vehicle constants are doubles");
+  static_assert(sizeof(spec.defaultVehicle()) % sizeof(double) == 0, "vehicle constants are doubles");
   Crc crc;
   crc.add(std::string("aurora_sweep definition v2"));
   crc.add(spec.controller);
-  crc.add(spec.ardrone());  // every sweep's, as before the other vehicles (older hashes stay)
+  crc.add(spec.defaultVehicle());  // every sweep's, as before the other vehicles (older hashes stay)
   addTask(crc, spec.task);
   crc.add(spec.criteria);
   for (const Axis& a : spec.axes) {
@@ -203,7 +203,7 @@ uint32_t definitionHash(const SweepSpec& spec) {
       if (spec.given(id)) crc.add(id), crc.add(spec.fixed[id]);
     }
   }
-  if (spec.vehicle_type != aurora_sim::Ardrone2::name()) addOtherVehicle(crc, spec);
+  if (spec.vehicle_type != aurora_sim::DefaultVehicle::name()) addOtherVehicle(crc, spec);
   if (spec.predicting()) addPredictor(crc, spec);  // only with one: the hashes of sweeps without stay
   return crc.value();
 }

@@ -106,7 +106,7 @@ std::vector<ParamInfo> makeTable(SweepShape shape) {
   t[kParamDelay] = {"delay", ParamGroup::kDelay, 0.0, double(kMaxDelaySamples),
                     "whole samples of Ts, the histories' limit", true};
   for (int i = 0; i < kModelFactorCount; ++i) {
-    t[kParamFirstModelFactor + i] = modelFactorInfo(aurora_sim::Ardrone2::name(), i);
+    t[kParamFirstModelFactor + i] = modelFactorInfo(aurora_sim::DefaultVehicle::name(), i);
   }
   // The link's values: the parameter table's rows (their live names, ranges).
   for (int i = 0; i < kLinkParamCount; ++i) {

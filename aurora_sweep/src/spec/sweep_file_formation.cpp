@@ -63,7 +63,7 @@ void readSweepFormation(const aurora_control::YamlReader& r, const YAML::Node& s
     const aurora_control::ShapeSweepFacts facts = Entry::sweepFacts(shape_file);
     if (!facts.refusal.empty()) r.fail("sweep.formation", "= '" + file + "' " + facts.refusal);
     spec.shape = sweepShapeOf<Entry>();
-    spec.run<Entry>() = Entry::sweepRun(shape_file, spec.ardrone());
+    spec.run<Entry>() = Entry::sweepRun(shape_file, spec.vehicles);
     spec.formation_duration = facts.duration;
     if (facts.names_law) spec.law = facts.law;
     spec.controller = facts.controller;

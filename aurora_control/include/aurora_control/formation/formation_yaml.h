@@ -301,7 +301,12 @@ struct LineShapeEntry {
   // chosen by the file), the shape its parameters are named by, its laws a
   // sweep may vary (formation_law; none: the file's formation.law).
   using SweepRun = ArdroneLineRun;
-  static SweepRun sweepRun(const File& f, const LawVehicleParams& vehicle);  // the sweep's vehicle's drones
+  // The sweep's set of vehicle parameters (its file's, each vehicle's
+  // nominal else): its drones are AR.Drones of the set's.
+  template <class VehicleSet>
+  static SweepRun sweepRun(const File& f, const VehicleSet& vehicles) {
+    return formationRun(f, vehicles.template of<LawVehicle>());
+  }
   static ShapeSweepFacts sweepFacts(const File& f) {
     ShapeSweepFacts facts;
     facts.duration = f.reference.duration;
@@ -389,10 +394,6 @@ inline ArdroneLineRun formationRun(const FormationFile& f,
   refuseShortFormation(run.reference.duration, "formation.reference.duration");
   refuseFormationDelays(run, vehicle.Ts, {"formation.drones[0].delay", "formation.drones[1].delay"});
   return run;
-}
-
-inline ArdroneLineRun LineShapeEntry::sweepRun(const File& f, const LawVehicleParams& vehicle) {
-  return formationRun(f, vehicle);
 }
 
 }  // namespace aurora_control

@@ -198,7 +198,8 @@ struct TriangleShapeEntry {
   // A sweep's (LineShapeEntry's): three AR.Drones on the underactuated
   // law; its five laws a sweep's formation_law (0 .. 4).
   using SweepRun = TriangleRun<TriangleDroneLaw>;
-  static SweepRun sweepRun(const File& s, const LawVehicleParams&) { return triangleRun<TriangleDroneLaw>(s); }
+  template <class VehicleSet>
+  static SweepRun sweepRun(const File& s, const VehicleSet&) { return triangleRun<TriangleDroneLaw>(s); }
   static ShapeSweepFacts sweepFacts(const File& s) {
     ShapeSweepFacts facts;
     facts.duration = s.duration;

@@ -143,7 +143,8 @@ struct UavUgvShapeEntry {
   // A sweep's (LineShapeEntry's): its parameters are named as the line's
   // (2 robots, 6 variables of the same names).
   using SweepRun = UavUgvRun;
-  static SweepRun sweepRun(const File& s, const LawVehicleParams&) { return uavUgvRun(s); }
+  template <class VehicleSet>
+  static SweepRun sweepRun(const File& s, const VehicleSet&) { return uavUgvRun(s); }
   static ShapeSweepFacts sweepFacts(const File& s) {
     ShapeSweepFacts facts;
     facts.duration = s.duration;

@@ -56,7 +56,7 @@ inline PredictorFile readPredictorBlock(const YamlReader& r, const YAML::Node& n
   p.form = predictorFormNamed(r, r.require(n, key, "form", "resimulate, smith, off"), r.key(key, "form"));
   if (p.form == PredictorForm::kOff) return p;
   const std::string model_key = r.key(key, "model");
-  p.model = r.text(r.require(n, key, "model", "a vehicle file, e.g. ../vehicles/ardrone2.yaml"), model_key);
+  p.model = r.text(r.require(n, key, "model", "a vehicle file, e.g. ../vehicles/NAME.yaml"), model_key);
   if (!p.model.empty() && p.model[0] != '/') {
     if (folder.empty()) {
       r.fail(model_key, "= '" + p.model + "' is relative, but no ~controller_file says to what: give an absolute "

@@ -34,6 +34,11 @@ namespace aurora_sim {
 using KnownVehicles =
     aurora_common::Joined<aurora_common::TypeList<Ardrone2, Bebop2, Pioneer3dx>, ExtraVehicles>::type;
 
+// The vehicle of a file that names none (a sweep file without `vehicle:`;
+// a sweep's definition hash adds its constants, and another vehicle's
+// only when it flies one): the thesis's AR.Drone.
+using DefaultVehicle = Ardrone2;
+
 template <class F>
 void forEachVehicle(F&& f) {
   aurora_common::forEachType(KnownVehicles(), f);
