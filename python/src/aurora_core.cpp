@@ -216,6 +216,8 @@ py::dict formationShapeInfo() {
     py::dict info;
     info["robots"] = int(E::kRobots);
     info["names_its_vehicles"] = bool(E::kNamesItsVehicles);
+    // A shape whose file names no vehicle flies the caller's: the type the crew takes (its default).
+    info["vehicle"] = E::kNamesItsVehicles ? std::string() : std::string(aurora_control::LawVehicle::name());
     info["laws"] = ownLawNames(e);
     out[py::str(E::name())] = info;
   });
@@ -367,7 +369,8 @@ PYBIND11_MODULE(_core, m) {
         "(starts, length, states) after each step (docs/identify.md, eq. I7).");
   m.def("formation_shape", &shapeOf, py::arg("formation"), "The shape of a formation file.");
   m.def("formation_shape_info", &formationShapeInfo,
-        "The shapes this build knows: each one's robots, names_its_vehicles, laws (its own; '' none).");
+        "The shapes this build knows: each one's robots, names_its_vehicles, vehicle (the type its robots fly "
+        "where its file names none; '' else), laws (its own; '' none).");
   m.def("formation_error", &formationError, py::arg("shape"), py::arg("X"), py::arg("Qd"), py::arg("Q"),
         "Qd - Q of a shape's variables with the shape's own angle wraps, at positions X (3 per robot).");
 }

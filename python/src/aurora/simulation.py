@@ -176,5 +176,5 @@ def simulate_formation(formation, vehicle=None, delays=None, law=None):
         if law is not None:
             raise ValueError("law= is refused for the line: its law is its file's formation.law")
         delays = [] if delays is None else per_drone(delays, "delays")
-        vehicle_file = _as_file("ardrone2" if vehicle is None else vehicle, "vehicle", tmp)
+        vehicle_file = _as_file(info["vehicle"] if vehicle is None else vehicle, "vehicle", tmp)
         return FormationFlight(_core.simulate_formation_files(formation_file, vehicle_file, delays, config_dir()))
