@@ -29,7 +29,10 @@ class RegistryFormationTest(unittest.TestCase):
         bag = record_until(rospy.get_param("~steps"), rospy.get_param("~bag_dir"), rospy.get_param("~prefix"),
                            state="/quad1/state", recorder="/recorder")
         with rosbag.Bag(bag) as b:
-            formation = [m for _, m, _ in b.read_messages(topics=["/formation/formation"])]
+            # By tick: a bag orders messages by their arrival on its clock, and
+            # two that arrive on one /clock value may swap.
+            formation = sorted((m for _, m, _ in b.read_messages(topics=["/formation/formation"])),
+                               key=lambda m: m.step)
             states = {r: {m.step: m for _, m, _ in b.read_messages(topics=["/%s/state" % r])} for r in ROBOTS}
         self.check_names(formation)
         self.check_delays(formation, states)

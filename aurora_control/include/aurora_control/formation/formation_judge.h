@@ -30,7 +30,4 @@ struct FormationJudge {
   }
 };
 
-// The judge of AuRoRA's line of two AR.Drones (formation_runner.h's ArdroneLineRun).
-using ArdroneLineJudge = FormationJudge<double, LineFormation<double>, ArdroneLawData>;
-
 }  // namespace aurora_control

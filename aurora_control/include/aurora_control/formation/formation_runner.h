@@ -364,10 +364,4 @@ long formationHistory(const FormationRun<T, Shape, Data>& run) {
   return longest;
 }
 
-// AuRoRA's line formation of two AR.Drones (its formation files, flight's
-// and the sweep's line), spelled once: no default argument names a vehicle
-// or a shape.
-using ArdroneLineRun = FormationRun<double, LineFormation<double>, ArdroneLawData>;
-using ArdroneLineObservation = FormationObservation<double, LineFormation<double>, ArdroneLawData>;
-
 }  // namespace aurora_control

@@ -17,7 +17,7 @@
 #include "aurora_common/yaml_file.h"
 #include "aurora_control/formation/formation_checks.h"
 #include "aurora_control/formation/formation_document.h"
-#include "aurora_control/formation/formation_runner.h"
+#include "aurora_control/formation/line_run.h"
 #include "aurora_control/loop/law_yaml.h"
 #include "aurora_control/params/limits.h"
 #include "aurora_control/link/link_yaml.h"
