@@ -98,7 +98,10 @@ class RegistryFormationTest(unittest.TestCase):
                       last.shape_error)
         self.assertLess(last.position_error, tol)
         self.assertLess(last.shape_error, tol)
-        desired = [[0.5, 0.5, 1.5], [2.0, 0.5, 1.5], [0.5, 2.0, 1.5]]  # its file's position and offsets
+        with open(rospy.get_param("~formation_file")) as f:
+            held = yaml.safe_load(f)["formation"]
+        p1 = held["position"]  # robot 1's place; the others' its plus their offsets
+        desired = [p1] + [[p1[i] + o[i] for i in range(3)] for o in held["offsets"]]
         for r, robot in enumerate(ROBOTS):
             p = states[robot][last.step].position
             for i, x in enumerate((p.x, p.y, p.z)):
