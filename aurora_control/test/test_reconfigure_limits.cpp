@@ -1,6 +1,8 @@
 // The limits Controller.cfg gives dynamic_reconfigure (rqt sliders, the
-// server's description) equal the parameter table's (parameter_table.h),
-// which the node enforces (limits.h, live_settings.h): kept equal by this test.
+// server's description) are the controller's parameters' (the live laws'
+// gain rows and parameter_table.h, joined in loop/controller_parameters.h),
+// which the node enforces (live_settings.h): generated from them at build
+// time, checked here as the generated header has them.
 #include <aurora_control/ControllerConfig.h>
 #include <gtest/gtest.h>
 
@@ -8,19 +10,20 @@
 #include <string>
 #include <vector>
 
+#include "aurora_control/loop/controller_parameters.h"
 #include "aurora_control/loop/live_settings.h"
 #include "aurora_control/params/limits.h"
 #include "aurora_control/params/parameter_table.h"
 
 using namespace aurora_control;
 
-TEST(ReconfigureLimits, ControllerCfgEqualsTheParameterTable) {
+TEST(ReconfigureLimits, ControllerCfgEqualsTheControllersParameters) {
   const dynamic_reconfigure::ConfigDescription d = ControllerConfig::__getDescriptionMessage__();
   ASSERT_EQ(d.min.doubles.size(), d.max.doubles.size());
   for (size_t i = 0; i < d.min.doubles.size(); ++i) {
     const std::string name = d.min.doubles[i].name;
-    const ParameterSpec* row = rowOfLiveSetting(name);
-    ASSERT_NE(row, nullptr) << name << " of Controller.cfg is not in parameter_table.h";
+    const ParameterSpec* row = controllerLiveSetting(name);
+    ASSERT_NE(row, nullptr) << name << " of Controller.cfg is not a controller parameter";
     EXPECT_EQ(d.min.doubles[i].value, row->min) << name;
     EXPECT_EQ(d.max.doubles[i].value, row->max) << name;
   }

@@ -3,11 +3,16 @@
 known only to a test build of the nodes, fly the mission in lockstep with
 their delay, are recorded as any vehicle is, and replay of the bag (the test
 build's) reproduces every command; the shipped replay refuses the law by
-name."""
+name. The law's gains, declared by its header alone, are live settings of
+the test build's Controller.cfg rows (controller_live_settings built with the
+test's lists), and of no shipped build's."""
 import math
 import os
 import sys
+import tempfile
 import unittest
+
+import yaml
 
 import rosbag
 import rospy
@@ -68,6 +73,27 @@ class RegistryTest(unittest.TestCase):
         rc, log = run(["rosrun", "aurora_control", "replay", bag])
         self.assertEqual(rc, 2, log)
         self.assertIn("test_quad_pd", log)
+
+    def live_settings(self, package, tool):
+        """The rows with a live name a build's Controller.cfg is generated from, by name."""
+        with tempfile.TemporaryDirectory() as d:
+            path = os.path.join(d, "live_settings.yaml")
+            rc, log = run(["rosrun", package, tool, path])
+            self.assertEqual(rc, 0, log)
+            with open(path) as f:
+                return {s["name"]: s for s in yaml.safe_load(f)}
+
+    def test_the_test_laws_gains_are_live_settings(self):
+        test_build = self.live_settings("aurora_tests", "registry_live_settings")
+        shipped = self.live_settings("aurora_control", "controller_live_settings")
+        for name, preset in (("k_position", 1.5), ("k_heading", 1.0)):
+            row = test_build[name]
+            self.assertEqual((row["type"], row["default"], row["min"], row["max"]), ("double", preset, 0.0, 20.0))
+            self.assertEqual(row["description"], "test_quad_pd law: gain " + name)
+            self.assertNotIn(name, shipped)
+        # Every shipped setting is the test build's too, alike (its laws come first, then the table).
+        for name, row in shipped.items():
+            self.assertEqual(test_build[name], row)
 
 
 if __name__ == "__main__":

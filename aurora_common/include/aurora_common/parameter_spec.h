@@ -88,9 +88,10 @@ inline std::string referenceRow(const ParameterSpec& p) {
          lo + " | " + hi + " | " + p.unit + " | " + p.doc + " |\n";
 }
 
-// A table as docs/parameters.md's markdown (between its markers).
-template <size_t N>
-std::string parameterReference(const ParameterSpec (&table)[N]) {
+// A table (an array or a vector of rows) as docs/parameters.md's markdown
+// (between its markers).
+template <class Rows>
+std::string parameterReference(const Rows& table) {
   std::string md = "| parameter | live setting | kind | default | min | max | unit | meaning |\n"
                    "|---|---|---|---|---|---|---|---|\n";
   for (const ParameterSpec& p : table) md += referenceRow(p);

@@ -24,13 +24,16 @@ namespace aurora_control {
 
 // One gain a sweep may vary: its name, its default (the law's defaults();
 // NaN: none, a sweep of the law names it), its accepted range, whole values
-// only, and what the range is (a refusal says it; null: the range of the
-// law's controller file).
+// only, what the range is (a refusal says it; null: the range of the
+// law's controller file), and what the gain does (the controller node's
+// parameter reference and live setting, for a law whose gains are its rows;
+// null: "gain NAME").
 struct GainRow {
   const char* name;
   double preset, min, max;
   bool whole;
   const char* range = nullptr;
+  const char* meaning = nullptr;
 };
 
 // A swept value into a gain; NaN (a formation sweep's robot gain it does

@@ -9,9 +9,12 @@
 
 #include "aurora_common/host_device.h"
 #include "aurora_control/law/law_gain_rows.h"
-#include "aurora_control/params/limits.h"
 
 namespace aurora_control {
+
+// The gains' accepted range, one for both (every entry point: the
+// controller file, the live settings, the sweep, replay's --kp/--kd).
+constexpr double kPdGainMin = 0.0, kPdGainMax = 10.0;
 
 template <typename T>
 struct PdGains {
@@ -46,7 +49,8 @@ struct PdGainRows {
   static constexpr int kGainCount = 2;
   static GainRow gainRow(int i) {
     return {i == 0 ? "kp" : "kd", std::numeric_limits<double>::quiet_NaN(), kPdGainMin, kPdGainMax, false,
-            "the controller node's PD gain range"};
+            "the controller node's PD gain range",
+            i == 0 ? "gain on the tanh-saturated position error (eq. 3.1)" : "gain on the tanh-saturated velocity error"};
   }
   template <typename T>
   AURORA_HD static void giveGains(PdGains<T>& g, const double* v) {

@@ -22,13 +22,16 @@
 #include "aurora_common/rotation.h"
 #include "aurora_common/scalar_math.h"
 #include "aurora_control/law/law_gain_rows.h"
-#include "aurora_control/params/limits.h"
 #include "aurora_sim/state_index.h"
 
 namespace aurora_control {
 
 // Gains (k1, k2) per axis, axes in the order x, y, z, phi, theta, psi.
 enum UnderactuatedAxis : int { kAxisX = 0, kAxisY, kAxisZ, kAxisPhi, kAxisTheta, kAxisPsi, kAxes };
+
+// Every gain's accepted range (positive: the law divides by none, but a zero
+// gain leaves its axis unregulated).
+constexpr double kUnderactuatedGainMin = 0.001, kUnderactuatedGainMax = 100.0;
 
 template <typename T>
 struct UnderactuatedGains {
@@ -258,6 +261,14 @@ inline const char* underactuatedGainName(int i) {
   return kNames[i];
 }
 
+// What gain i does (the controller node's parameter reference).
+inline const char* underactuatedGainMeaning(int i) {
+  static const char* const kMeanings[2 * kAxes] = {"k1 of x",     "k2 of x",     "k1 of y",    "k2 of y",
+                                                   "k1 of z",     "k2 of z",     "k1 of roll", "k2 of roll",
+                                                   "k1 of pitch", "k2 of pitch", "k1 of yaw",  "k2 of yaw"};
+  return kMeanings[i];
+}
+
 template <typename T>
 AURORA_HD T& underactuatedGain(UnderactuatedGains<T>& g, int i) {
   return i % 2 == 0 ? g.k1[i / 2] : g.k2[i / 2];
@@ -275,7 +286,7 @@ struct UnderactuatedGainRows {
   static GainRow gainRow(int i) {
     return {underactuatedGainName(i), underactuatedGain(UnderactuatedGains<double>::defaults(), i),
             kUnderactuatedGainMin, kUnderactuatedGainMax, false,
-            "the controller node's underactuated gain range (positive)"};
+            "the controller node's underactuated gain range (positive)", underactuatedGainMeaning(i)};
   }
   template <typename T>
   AURORA_HD static void giveGains(UnderactuatedGains<T>& g, const double* v) {

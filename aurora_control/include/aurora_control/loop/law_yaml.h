@@ -4,8 +4,8 @@
 // may be missing), nothing else. A law whose every gain is one of its sweep
 // rows (law_gain_rows.h, gainAt: the AR.Drone's two) is read by its rows,
 // each in its row's range:
-//   pd_saturated:   kp, kd in [kPdGainMin, kPdGainMax] = [0, 10]
-//   underactuated:  k1_x, k2_x, ..., k1_psi, k2_psi in [0.001, 100] (limits.h)
+//   pd_saturated:   kp, kd in [kPdGainMin, kPdGainMax] = [0, 10] (pd_controller.h)
+//   underactuated:  k1_x, k2_x, ..., k1_psi, k2_psi in [0.001, 100] (underactuated_law.h)
 // any other law by the reader its controller-file header gives
 // (readLawGains, found by its gains' type).
 #pragma once

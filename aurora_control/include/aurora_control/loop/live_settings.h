@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "aurora_control/loop/controller_parameters.h"
 #include "aurora_control/loop/law_yaml.h"
 #include "aurora_control/params/limits.h"
 #include "aurora_control/link/link_yaml.h"
@@ -20,7 +21,7 @@
 namespace aurora_control {
 
 struct LiveChange {
-  std::string name;  // kp, kd, delay_samples, k1_x ... k2_psi, the link's, predictor (parameter_table.h)
+  std::string name;  // a live law's gain, delay_samples, the link's, predictor (controller_parameters.h)
   double value;
   std::string word;  // a word setting's value (predictor: off, resimulate, smith)
 };
@@ -135,15 +136,6 @@ std::vector<std::string> rowNames() {
   return names;
 }
 
-// Calls f(Law()) for each law of the list whose gains are its rows
-// (gainsAreRows: the gains the reconfigure server shows).
-template <class F>
-void forEachLiveGainLaw(F&& f) {
-  forEachLaw([&](auto law) {
-    if (gainsAreRows<decltype(law)>()) f(law);
-  });
-}
-
 // The gains the server shows for live law Live: this loop's, where Live is
 // of its family; else Live's preset.
 template <class Live, class Data>
@@ -226,7 +218,7 @@ void applyLiveChange(LawSettings<Data>& set, const LiveChange& c) {
 template <class Data>
 std::vector<std::pair<std::string, double>> liveGainsShown(const LawSettings<Data>& set) {
   std::vector<std::pair<std::string, double>> out;
-  live_detail::forEachLiveGainLaw([&](auto live) {
+  forEachLiveGainLaw([&](auto live) {
     using Live = decltype(live);
     auto g = live_detail::shownGains<Live>(std::is_same<typename Live::Data, Data>(), set);
     for (const auto& slot : lawGainSlots(live, g)) out.emplace_back(slot.first, *slot.second);

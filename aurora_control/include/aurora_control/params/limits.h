@@ -35,12 +35,6 @@ void withHistoryCapacity(long max_delay, F&& f) {
   }
 }
 
-// Gains of the two laws (one range for both PD gains, one for the 12
-// underactuated gains: test_parameter_table checks every row keeps it).
-constexpr double kPdGainMin = kParameterTable[kRowKp].min, kPdGainMax = kParameterTable[kRowKp].max;
-constexpr double kUnderactuatedGainMin = kParameterTable[kRowFirstUnderactuatedGain].min;
-constexpr double kUnderactuatedGainMax = kParameterTable[kRowFirstUnderactuatedGain].max;
-
 // A delay must be shorter than the run: the delay rule sends the current
 // state while k <= d, so with d at least the run's iteration count the
 // delayed state never reaches the controller and the run equals one without

@@ -1,9 +1,11 @@
-// The loop's parameters, written once (docs/architecture.md, "The parameter
-// table"): each one's name, kind, default, accepted range, unit and meaning.
-// The controller node, replay, flight, the sweep and the live settings
-// (dynamic_reconfigure) take their limits from here through limits.h; a test
-// checks Controller.cfg's limits against it and another that docs/parameters.md's
-// parameter reference is parameterReference() of this table.
+// The loop's and the controller nodes' own parameters, written once
+// (docs/architecture.md, "The parameter table"): each one's name, kind,
+// default, accepted range, unit and meaning. A law's gains are not here: each
+// law declares its own (its gainRow, law_gain_rows.h), and
+// loop/controller_parameters.h joins both into the controller's parameters,
+// whose reference is docs/parameters.md's and whose live rows are
+// Controller.cfg's. The controller node, replay, flight, the sweep and the
+// live settings take these limits from here through limits.h.
 #pragma once
 
 #include <string>
@@ -19,13 +21,10 @@ using aurora_common::paramChoices;
 
 // The rows, named.
 enum ParameterRow : int {
-  kRowKp,
-  kRowKd,
   kRowDelaySamples,
   kRowDelaySeconds,
   kRowClampCommands,
-  kRowFirstUnderactuatedGain,  // k1_x, k2_x, k1_y, ... k2_psi (underactuatedGainName order)
-  kRowMode = kRowFirstUnderactuatedGain + 12,
+  kRowMode,
   kRowTrigger,
   kRowLockstepCmdSubscribers,
   kRowLockstepControlSubscribers,
@@ -42,10 +41,6 @@ enum ParameterRow : int {
 };
 
 constexpr ParameterSpec kParameterTable[kParameterRows] = {
-    {"kp", ParamKind::kReal, kNoValue, 0.0, 10.0, "",
-     "PD law (pd_saturated): gain on the tanh-saturated position error (eq. 3.1)", nullptr, "kp"},
-    {"kd", ParamKind::kReal, kNoValue, 0.0, 10.0, "",
-     "PD law: gain on the tanh-saturated velocity error", nullptr, "kd"},
     {"delay/samples", ParamKind::kWholeSamples, 0.0, 0.0, 2047.0, "samples of Ts",
      "feedback delay, the link's uplink delay (sweep: delay); also shorter than the task's steps", nullptr,
      "delay_samples"},
@@ -53,18 +48,6 @@ constexpr ParameterSpec kParameterTable[kParameterRows] = {
      "the delay in seconds instead, rounded once to whole samples, which then meet delay/samples' range"},
     {"clamp_commands", ParamKind::kBool, 1.0, 0.0, 1.0, "",
      "the controller clamps its commands to [-1, 1] as the drivers do (sweep files: default false, the study's)"},
-    {"k1_x", ParamKind::kReal, 0.5, 0.001, 100.0, "", "underactuated law: k1 of x", nullptr, "k1_x"},
-    {"k2_x", ParamKind::kReal, 2.0, 0.001, 100.0, "", "underactuated law: k2 of x", nullptr, "k2_x"},
-    {"k1_y", ParamKind::kReal, 0.5, 0.001, 100.0, "", "underactuated law: k1 of y", nullptr, "k1_y"},
-    {"k2_y", ParamKind::kReal, 2.0, 0.001, 100.0, "", "underactuated law: k2 of y", nullptr, "k2_y"},
-    {"k1_z", ParamKind::kReal, 5.0, 0.001, 100.0, "", "underactuated law: k1 of z", nullptr, "k1_z"},
-    {"k2_z", ParamKind::kReal, 2.0, 0.001, 100.0, "", "underactuated law: k2 of z", nullptr, "k2_z"},
-    {"k1_phi", ParamKind::kReal, 1.0, 0.001, 100.0, "", "underactuated law: k1 of roll", nullptr, "k1_phi"},
-    {"k2_phi", ParamKind::kReal, 20.0, 0.001, 100.0, "", "underactuated law: k2 of roll", nullptr, "k2_phi"},
-    {"k1_theta", ParamKind::kReal, 1.0, 0.001, 100.0, "", "underactuated law: k1 of pitch", nullptr, "k1_theta"},
-    {"k2_theta", ParamKind::kReal, 20.0, 0.001, 100.0, "", "underactuated law: k2 of pitch", nullptr, "k2_theta"},
-    {"k1_psi", ParamKind::kReal, 1.0, 0.001, 100.0, "", "underactuated law: k1 of yaw", nullptr, "k1_psi"},
-    {"k2_psi", ParamKind::kReal, 2.5, 0.001, 100.0, "", "underactuated law: k2 of yaw", nullptr, "k2_psi"},
     {"mode", ParamKind::kWord, 0, 0, 1, "",
      "controller node: realtime (30 Hz timer, states as they come) or lockstep (one command per simulated step)",
      "realtime|lockstep"},
@@ -99,15 +82,13 @@ constexpr ParameterSpec kParameterTable[kParameterRows] = {
      "is taken before they are connected, so a bag holds the loop from its first cycle (record:=true sets 1)"},
 };
 
-// The row of a live setting's name, or nullptr.
+// The row of this table with live setting `live`, or nullptr (a law's gain:
+// loop/controller_parameters.h).
 inline const ParameterSpec* rowOfLiveSetting(const std::string& live) {
   for (const ParameterSpec& p : kParameterTable) {
     if (p.live != nullptr && live == p.live) return &p;
   }
   return nullptr;
 }
-
-// The table as docs/parameters.md's markdown (between its markers).
-inline std::string parameterReference() { return aurora_common::parameterReference(kParameterTable); }
 
 }  // namespace aurora_control
