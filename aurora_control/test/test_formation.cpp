@@ -12,6 +12,7 @@
 
 #include <fstream>
 #include <iterator>
+#include <type_traits>
 
 #include "edited_file.h"
 #include "aurora_control/formation/formation_controller.h"
@@ -19,6 +20,7 @@
 #include "aurora_control/formation/formation_yaml.h"
 #include "aurora_control/formation/line_formation.h"
 #include "aurora_control/formation/shapes.h"
+#include "aurora_control/formation/uav_ugv_line.h"
 #include "aurora_sim/vehicle/vehicle_yaml.h"
 
 using namespace aurora_control;
@@ -469,4 +471,39 @@ TEST(FormationController, ANonFiniteCommandMakesEveryDroneHover) {
     ASSERT_TRUE(fine.push(d, s));
   }
   EXPECT_EQ(fine.tick(0).not_finite, -1);
+}
+
+// A shape's own parts are its members, found by the generic runner with no
+// list of shapes: a moving reference (ownReference, FormationPath::kOwn) and
+// a layer (Layer); a shape without them keeps the integrating layer, and
+// never a reference of its own (NaN: no check passes).
+namespace {
+struct RisingLine : LineFormation<double> {
+  template <typename V>
+  static void ownReference(const V& t, V Qd[kVariables]) {
+    for (int i = 0; i < kVariables; ++i) Qd[i] = V(i) + t;
+  }
+  template <typename V>
+  using Layer = FormationLayer<V, LineFormation<V>>;  // a stand-in: any type the shape names
+};
+}  // namespace
+
+TEST(FormationParts, AShapesOwnReferenceAndLayerAreItsMembers) {
+  FormationReference<double, RisingLine> own;
+  own.path = FormationPath::kOwn;
+  double Qd[6];
+  own.at(2.0, Qd);
+  for (int i = 0; i < 6; ++i) EXPECT_EQ(Qd[i], i + 2.0);
+  FormationReference<double, Line> none;
+  none.path = FormationPath::kOwn;
+  none.at(2.0, Qd);
+  for (double q : Qd) EXPECT_TRUE(std::isnan(q));
+  none.path = FormationPath::kFixed;
+  none.Q[2] = 1.5;
+  none.at(2.0, Qd);
+  EXPECT_EQ(Qd[2], 1.5);
+  static_assert(std::is_same<LayerOf<float, RisingLine>, FormationLayer<float, LineFormation<float>>>::value,
+                "the shape's own layer, in the asked precision");
+  static_assert(std::is_same<LayerOf<double, Line>, FormationLayer<double, Line>>::value, "the integrating layer");
+  static_assert(std::is_same<LayerOf<double, UavUgvLine<double>>, UavUgvLayer<double>>::value, "the UAV-UGV line's");
 }

@@ -24,7 +24,7 @@ const std::string kData = std::string(AURORA_SWEEP_TEST_DIR) + "/data";
 // as the GPU would run them; `grid` may hold only the chunk's rows of a design.
 template <LawType Law, int Capacity>
 std::vector<SimResult> launchOnHost(const SweepSpec& spec, const GridView& grid, long first, long n, int block) {
-  const SweepSetup<double> setup = makeSetup<SweepVehicle, double>(spec);
+  const auto setup = makeSetup<aurora_sim::Ardrone2, double>(spec);
   std::vector<SimResult> out(static_cast<size_t>(n) + block);  // room a bad index would write into
   std::memset(out.data(), 0xAB, out.size() * sizeof(SimResult));
   const long blocks = blocksFor(n, block);

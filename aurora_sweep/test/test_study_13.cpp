@@ -35,7 +35,7 @@ using test::writeTemp;
 // The kernel's per-thread function (simulateCombination) on the host.
 std::vector<SimResult> runKernelBody(const SweepSpec& spec) {
   std::vector<SimResult> out;
-  const SweepSetup<double> setup = makeSetup<SweepVehicle, double>(spec);
+  const auto setup = makeSetup<aurora_sim::Ardrone2, double>(spec);
   const GridView grid = spec.view();
   for (long i = 0; i < spec.size(); ++i) {
     out.push_back(spec.law == LawType::kPdSaturated
@@ -141,7 +141,7 @@ SweepSpec single(const std::string& name, const std::string& body) {
 // The states the sweep's simulation of combination 0 flies (studyRun and
 // runClosedLoop: what simulateCombination runs in every backend).
 std::vector<std::vector<double>> sweepStates(const SweepSpec& spec, aurora_control::RunnerResult& result) {
-  const SweepSetup<double> setup = makeSetup<SweepVehicle, double>(spec);
+  const auto setup = makeSetup<aurora_sim::Ardrone2, double>(spec);
   const aurora_control::ArdroneRun<double> run = studyRun<aurora_control::ArdroneLaw<LawType::kPdSaturated>>(setup, spec.view().decode(0));
   std::vector<std::vector<double>> states;
   auto observe = [&](const aurora_control::FlightObservation& o) {

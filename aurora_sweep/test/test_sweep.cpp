@@ -101,7 +101,7 @@ TEST(Backends, ScalarAndCpuAgreeInDouble) {
 TEST(Backends, KernelBodyOnTheHostMatchesTheCpuBackend) {
   // simulateCombination() is what each CUDA thread runs; here it runs on the CPU.
   const SweepSpec spec = load(kData + "/small_grid.yaml");
-  const SweepSetup<double> setup = makeSetup<SweepVehicle, double>(spec);
+  const auto setup = makeSetup<aurora_sim::Ardrone2, double>(spec);
   const GridView grid = spec.view();
   const auto cpu = runOn("cpu", spec);
   for (long i = 0; i < spec.size(); ++i) {

@@ -176,7 +176,7 @@ TEST(SweepLink, TheKernelsPerThreadEntryOverALinkIsTheScalarLoop) {
   Progress progress{0};
   runScalar(lossy, scalar, progress);
   ASSERT_LT(lossy.historyNeeded(), aurora_control::kMediumHistory);
-  const SweepSetup<double> setup = makeSetup<SweepVehicle, double>(lossy);
+  const auto setup = makeSetup<aurora_sim::Ardrone2, double>(lossy);
   ASSERT_FALSE(setup.ideal_link);
   const GridView grid = lossy.view();
   const long n = lossy.rangeSize();
@@ -205,7 +205,7 @@ TEST(SweepLink, ALossBurstLongerThanTheHistoryDoesNotDependOnItsSize) {
   ASSERT_LT(spec.historyNeeded(), aurora_control::kShortHistory) << "the sweep's loops take the short tier";
   const std::vector<SimResult> scalar = runOn("scalar", spec);
   expectRunsAgree(scalar, runOn("cpu", spec), 0.0);  // the lanes' flags equal, sums to rounding
-  const SweepSetup<double> setup = makeSetup<SweepVehicle, double>(spec);
+  const auto setup = makeSetup<aurora_sim::Ardrone2, double>(spec);
   const GridView grid = spec.view();
   const long n = spec.size();
   const std::vector<SimResult> medium = launchOnHost(n, 8, [&](unsigned b, unsigned block, unsigned t, SimResult* out) {
@@ -228,7 +228,7 @@ TEST(SweepLink, ACombinationIsTheRunnersRunOverItsLink) {
   const std::vector<SimResult> sweep = runOn("scalar", spec);
   const aurora_control::LinkParams file = aurora_control::readLinkFile(configDir() + "/links/wifi_lab.yaml");
   const GridView grid = spec.view();
-  const SweepSetup<double> setup = makeSetup<SweepVehicle, double>(spec);
+  const auto setup = makeSetup<aurora_sim::Ardrone2, double>(spec);
   long changed_by_seed = 0;
   for (long i = 0; i < spec.size(); ++i) {
     const Combination c = grid.decode(i);

@@ -19,10 +19,6 @@ namespace aurora_sweep {
 // thread reads it for the ETA.
 using Progress = std::atomic<long>;
 
-// An AR.Drone sweep's setup (the kernels of its laws take it).
-template <typename T>
-using SweepSetup = SimSetup<SweepVehicle, T>;
-
 // The setup of a sweep whose law flies `Vehicle`.
 template <class Vehicle, typename T>
 SimSetup<Vehicle, T> makeSetup(const SweepSpec& spec) {

@@ -24,8 +24,6 @@ namespace aurora_sweep {
 // A shape's run in precision T, its robots flying laws of data `Data`.
 template <typename T, template <typename> class Shape, class Data>
 using ShapeRun = aurora_control::FormationRun<T, Shape<T>, Data>;
-template <typename T>
-using LineRun = ShapeRun<T, aurora_control::LineFormation, aurora_control::ArdroneLawData>;  // AuRoRA's line of AR.Drones
 
 // Everything a formation of the sweep needs besides its combination.
 template <typename T, template <typename> class Shape, class Data>

@@ -30,9 +30,6 @@ struct Axis {
   std::vector<double> values;
 };
 
-// The AR.Drone: the vehicle of the AR.Drone's laws and of formation sweeps.
-using SweepVehicle = aurora_control::ArdroneLawData::Vehicle;
-
 template <class ShapeEntry>
 using SweepRunOf = typename ShapeEntry::SweepRun;
 

@@ -77,10 +77,10 @@ inline void readRobots(const YamlReader& r, const YAML::Node& n, const std::stri
   fd::refuseSharedNamespaces(r, r.key(key, "namespaces"), {f.name_space[0], f.name_space[1], f.name_space[2]});
 }
 
-// The layer's period in whole robot steps.
+// The layer's period in whole robot steps (the line's rule, wholeRobotSteps).
 inline long periodSteps(const YamlReader& r, double period, double Ts) {
-  const long p = std::lround(period / Ts);
-  if (p < 1 || std::fabs(double(p) * Ts - period) > 1e-9 * period) {
+  const long p = aurora_control::wholeRobotSteps(period, Ts);
+  if (p == 0) {
     r.fail("formation.period", "= " + YamlReader::fmt(period) + " s is refused: accepted whole robot steps of " +
                                    YamlReader::fmt(Ts) + " s");
   }

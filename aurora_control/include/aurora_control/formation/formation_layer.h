@@ -60,6 +60,15 @@ struct LayerSchedule {
   }
 };
 
+// A period on the robots' clock in whole robot steps of Ts (the line's, a
+// build's own shape's): period / Ts when that is a whole number of at least
+// one step (to 1e-9 of it), else 0, which each file's reader refuses.
+inline long wholeRobotSteps(double period, double Ts) {
+  const double steps = period / Ts;
+  const long p = std::lround(steps);
+  return p >= 1 && std::fabs(steps - double(p)) <= 1e-9 * steps ? p : 0;
+}
+
 template <typename T, class S>
 class FormationLayer {
  public:

@@ -1,8 +1,8 @@
 // The desired formation Qd(t) (docs/formation.md, "References"): the
 // formation's position fixed or on a figure-eight with AuRoRA's smoothstep
-// time warp, and its shape (the remaining variables) fixed. Generic over
-// the number of variables N, so another shape reuses it. ROS-free, host
-// and device.
+// time warp, and its shape (the remaining variables) fixed; or the shape's
+// own moving reference, where it declares one. Generic over the shape (its
+// number of variables N): no shape is named here. ROS-free, host and device.
 #pragma once
 
 #include <cmath>
@@ -10,18 +10,18 @@
 #include <type_traits>
 
 #include "aurora_common/host_device.h"
-#include "aurora_control/formation/triangle_reference.h"
-#include "aurora_control/formation/uav_ugv_line.h"
 
 namespace aurora_control {
 
-// kCarrousel: the triangle's moving reference (triangle_reference.h, eq. T6;
-// nine variables only); kUavUgv: the UAV-UGV line's (uav_ugv_line.h, eq.
-// L4; six).
-enum class FormationPath : int { kFixed = 0, kLemniscate = 1, kCarrousel = 2, kUavUgv = 3 };
+// kOwn: the shape's own moving reference, `template <typename V>
+// AURORA_HD static void ownReference(const V& t, V Qd[kVariables])` in the
+// shape (the triangle's carrousel, eq. T6; the UAV-UGV line's trajectory,
+// eq. L4); its files choose it, and a shape without one never has it.
+enum class FormationPath : int { kFixed = 0, kLemniscate = 1, kOwn = 2 };
 
-template <typename T, int N>
+template <typename T, class Shape>
 struct FormationReference {
+  static constexpr int N = Shape::kVariables;
   FormationPath path = FormationPath::kFixed;
   T duration = T(90);  // [s] T: the warp's length, and one lap of the figure-eight
   T amplitude[2] = {T(1), T(1)};  // [m] rX, rY of the figure-eight
@@ -31,8 +31,7 @@ struct FormationReference {
   // xF = x + rX sin(w tp), yF = y + rY sin(2 w tp); the rest fixed.
   AURORA_HD void at(const T& t, T Qd[N]) const {
     using std::sin;
-    if (path == FormationPath::kCarrousel) return carrousel(t, Qd, std::integral_constant<bool, N == 9>());
-    if (path == FormationPath::kUavUgv) return uavUgv(t, Qd, std::integral_constant<bool, N == 6>());
+    if (path == FormationPath::kOwn) return own<Shape>(t, Qd, 0);
     for (int i = 0; i < N; ++i) Qd[i] = Q[i];
     if (path != FormationPath::kLemniscate) return;
     const T s = t / duration;
@@ -43,16 +42,13 @@ struct FormationReference {
   }
 
  private:
-  AURORA_HD static void carrousel(const T& t, T* Qd, std::true_type) { carrouselReference(t, Qd); }
-  AURORA_HD static void uavUgv(const T& t, T* Qd, std::true_type) {
-    T dQd[6];
-    uavUgvReference(t, Qd, dQd);
+  template <class S>
+  AURORA_HD static auto own(const T& t, T* Qd, int) -> decltype(S::ownReference(t, Qd)) {
+    return S::ownReference(t, Qd);
   }
-  // Another shape's Qd is not these shapes': NaN, which no check passes
-  // (its files refuse the path).
-  AURORA_HD static void carrousel(const T&, T* Qd, std::false_type) { notThisShape(Qd); }
-  AURORA_HD static void uavUgv(const T&, T* Qd, std::false_type) { notThisShape(Qd); }
-  AURORA_HD static void notThisShape(T* Qd) {
+  // A shape without a reference of its own: NaN, which no check passes.
+  template <class S>
+  AURORA_HD static void own(const T&, T* Qd, long) {
     for (int i = 0; i < N; ++i) Qd[i] = T(kNotThisShape);
   }
   // A constant, not quiet_NaN() (a host function) in device code.

@@ -14,7 +14,6 @@
 #include "aurora_control/loop/delay_buffer.h"
 #include "aurora_control/formation/formation_layer.h"
 #include "aurora_control/formation/formation_reference.h"
-#include "aurora_control/formation/uav_ugv_line.h"
 #include "aurora_control/loop/loop_link.h"
 #include "aurora_control/loop/predicted_loop.h"
 
@@ -44,20 +43,18 @@ using DroneState = LoopState<Data, T, Mask>;
 template <typename T, class Data>
 using DroneStep = LoopStep<T, Data::Vehicle::kInputs>;
 
-// A shape's layer and desired formation: the integrating layer
-// (formation_layer.h: the line's, the triangle's) and FormationReference;
-// a shape with a layer of its own says so here (the UAV-UGV line's runs
-// every tick without integration, uav_ugv_line.h).
+// A shape's layer in precision T: the integrating layer (formation_layer.h:
+// the line's, the triangle's), or the shape's own where it declares one,
+// `template <typename V> using Layer = ...;` (the UAV-UGV line's runs every
+// tick without integration, uav_ugv_line.h).
+namespace formation_parts_detail {
 template <typename T, class Shape>
-struct FormationParts {
-  using Layer = FormationLayer<T, Shape>;
-};
-template <typename T, typename U>
-struct FormationParts<T, UavUgvLine<U>> {
-  using Layer = UavUgvLayer<T>;
-};
+FormationLayer<T, Shape> layerOf(...);
 template <typename T, class Shape>
-using LayerOf = typename FormationParts<T, Shape>::Layer;
+typename Shape::template Layer<T> layerOf(int);
+}  // namespace formation_parts_detail
+template <typename T, class Shape>
+using LayerOf = decltype(formation_parts_detail::layerOf<T, Shape>(0));
 
 template <typename T, class Shape, class Data>
 struct FormationRun {
@@ -66,7 +63,7 @@ struct FormationRun {
   typename Shape::Law law = Shape::kDefaultLaw;
   FormationGains<T, kN> gains = FormationGains<T, kN>::template of<Shape>();
   LayerSchedule<T> schedule;  // when the layer runs (the line's default: every 6 steps, 0.2 s at 1/30 s)
-  FormationReference<T, kN> reference;
+  FormationReference<T, Shape> reference;
   ClampPolicy clamp;      // none: AuRoRA's formation script does not clamp
 };
 

@@ -17,6 +17,7 @@
 #include "aurora_common/yaml_file.h"
 #include "aurora_control/formation/formation_checks.h"
 #include "aurora_control/formation/formation_document.h"
+#include "aurora_control/formation/formation_layer.h"
 #include "aurora_control/formation/line_run.h"
 #include "aurora_control/loop/law_yaml.h"
 #include "aurora_control/params/limits.h"
@@ -39,7 +40,7 @@ struct FormationFile {
   FormationLaw law = FormationLaw::kPositionPriority;
   double period = 0.2;  // [s]
   FormationGains<double, 6> gains = FormationGains<double, 6>::of<LineFormation<double>>();
-  FormationReference<double, 6> reference;
+  FormationReference<double, LineFormation<double>> reference;
   std::vector<FormationDroneFile> drones;
 };
 
@@ -87,7 +88,7 @@ void readGains(const YamlReader& r, const YAML::Node& n, const std::string& key,
 // reference: {path: fixed | lemniscate, duration, amplitude: [rx, ry],
 // position: [x, y, z], shape: {rho, alpha, beta}}.
 inline void readReference(const YamlReader& r, const YAML::Node& n, const std::string& key,
-                          FormationReference<double, 6>& ref) {
+                          FormationReference<double, LineFormation<double>>& ref) {
   r.onlyKeys(n, key, {"path", "duration", "amplitude", "position", "shape"});
   const std::string path = r.text(r.require(n, key, "path", "fixed, lemniscate"), r.key(key, "path"));
   if (path == "fixed") ref.path = FormationPath::kFixed;
@@ -375,9 +376,8 @@ inline ArdroneLineRun formationRun(const FormationFile& f,
   run.law = f.law;
   run.gains = f.gains;
   run.reference = f.reference;
-  const double steps = f.period / vehicle.Ts;
-  run.schedule.period_ticks = std::lround(steps);  // on the drones' steps (step_ticks 1)
-  if (run.schedule.period_ticks < 1 || std::fabs(steps - double(run.schedule.period_ticks)) > 1e-9 * steps) {
+  run.schedule.period_ticks = wholeRobotSteps(f.period, vehicle.Ts);  // on the drones' steps (step_ticks 1)
+  if (run.schedule.period_ticks == 0) {
     throw ConfigError("formation.period = " + YamlReader::fmt(f.period) + " s is refused: accepted a whole number of drone steps of " +
                       YamlReader::fmt(vehicle.Ts) + " s (0.2 s = 6 steps at 30 Hz)");
   }

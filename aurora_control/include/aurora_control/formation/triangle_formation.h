@@ -13,6 +13,7 @@
 #include "aurora_common/host_device.h"
 #include "aurora_common/scalar_math.h"
 #include "aurora_control/formation/triangle_pinv.h"
+#include "aurora_control/formation/triangle_reference.h"
 
 namespace aurora_control {
 
@@ -34,6 +35,12 @@ struct TriangleFormation {
   static const char* variableName(int i) {
     static const char* const names[kVariables] = {"xF", "yF", "zF", "p", "q", "beta", "phi", "theta", "psi"};
     return names[i];
+  }
+  // Its own moving reference (formation_reference.h, FormationPath::kOwn):
+  // the carrousel (eq. T6).
+  template <typename V>
+  AURORA_HD static void ownReference(const V& t, V Qd[kVariables]) {
+    carrouselReference(t, Qd);
   }
   static const char* gainName(int i) {
     static const char* const names[kVariables] = {"x", "y", "z", "p", "q", "beta", "phi", "theta", "psi"};

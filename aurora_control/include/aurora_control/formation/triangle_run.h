@@ -70,7 +70,7 @@ TriangleRun<Law> triangleRun(const TriangleSetup& s) {
   TriangleRun<Law> run;
   run.law = s.law;
   run.gains = s.gains;
-  run.reference.path = FormationPath::kCarrousel;
+  run.reference.path = FormationPath::kOwn;  // the carrousel (TriangleFormation::ownReference)
   run.schedule.own_clock = true;
   run.schedule.own_period = s.period;
   run.schedule.period_ticks = s.kinematic ? 1 : s.layer_ticks;

@@ -15,11 +15,26 @@
 namespace aurora_control {
 
 template <typename T>
+class UavUgvLayer;
+template <typename T>
+AURORA_HD inline void uavUgvReference(const T& t, T Qd[6], T dQd[6]);
+
+template <typename T>
 struct UavUgvLine {
   using Law = int;  // one law (eq. L3)
+  // Its own layer (formation_runner.h's LayerOf), not the integrating one.
+  template <typename V>
+  using Layer = UavUgvLayer<V>;
   static constexpr Law kDefaultLaw = 0;
   static constexpr int kDrones = 2;
   static constexpr int kVariables = 6;
+  // Its own moving reference (formation_reference.h, FormationPath::kOwn):
+  // the trajectory of eq. L4.
+  template <typename V>
+  AURORA_HD static void ownReference(const V& t, V Qd[kVariables]) {
+    V dQd[kVariables];
+    uavUgvReference(t, Qd, dQd);
+  }
 
   static const char* variableName(int i) {
     static const char* const names[kVariables] = {"xf", "yf", "zf", "rho", "alpha", "beta"};
@@ -147,8 +162,8 @@ AURORA_HD inline void uavUgvReference(const T& t, T Qd[6], T dQd[6]) {
 }
 
 // The layer as the one formation loop runs a shape's (formation_runner.h,
-// FormationParts): every tick (its period the robots' step), towards the
-// Qd the run's reference gives (eq. L4, FormationPath::kUavUgv), with that
+// LayerOf): every tick (its period the robots' step), towards the
+// Qd the run's reference gives (eq. L4, ownReference), with that
 // trajectory's analytic rate at the period's time t (the one trajectory a
 // UAV-UGV line file flies).
 template <typename T>

@@ -48,7 +48,7 @@ inline UavUgvRun uavUgvRun(const UavUgvLineSetup& s) {
   using Params = UavUgvRobots::Vehicle::Params<double>;
   UavUgvRun run;
   for (int i = 0; i < 6; ++i) run.gains.k1[i] = s.k1[i], run.gains.k2[i] = s.k2[i];
-  run.reference.path = FormationPath::kUavUgv;
+  run.reference.path = FormationPath::kOwn;  // the line's trajectory (UavUgvLine::ownReference)
   run.schedule.period_ticks = 1;  // every tick, on the robots' clock: t = k tick
   run.drone[0].plant = run.drone[0].model = Params::ofFirst(s.pioneer);
   run.drone[1].plant = run.drone[1].model = Params::ofSecond(s.drone);
