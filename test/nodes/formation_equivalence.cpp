@@ -100,7 +100,15 @@ TEST(FormationEquivalence, RosLoopEqualsTheFormationRunnerBitForBit) {
   }
   ros::NodeHandle first("/" + names[0]);
   flown[0] = aurora_tests::collectStates(first, steps);
-  for (int i = 0; i < 100 && (flown.back().size() < flown[0].size() || layer.size() < static_cast<size_t>(steps)); ++i) {
+  // Every other robot's last states may still be on their way (not only the
+  // last robot's: a clean clone failed on the triangle's second drone).
+  auto behind = [&] {
+    for (const auto& f : flown) {
+      if (f.size() < flown[0].size()) return true;
+    }
+    return layer.size() < static_cast<size_t>(steps);
+  };
+  for (int i = 0; i < 100 && behind(); ++i) {
     ros::spinOnce();
     ros::WallDuration(0.01).sleep();
   }
