@@ -27,9 +27,7 @@ std::string description(const ParameterSpec& p) {
   std::string d = p.doc;
   if (p.unit[0] != '\0') d += std::string(" [") + p.unit + "]";
   if (p.kind != ParamKind::kWord) return d;
-  std::string words;
-  for (const std::string& w : aurora_control::paramChoices(p)) words += (words.empty() ? "" : ", ") + w;
-  return d + " (" + words + ")";
+  return d + " (" + aurora_control::joinKeys(aurora_control::paramChoices(p)) + ")";
 }
 
 // One setting: a word is a string among its choices (the node refuses

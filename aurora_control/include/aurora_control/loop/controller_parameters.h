@@ -63,10 +63,7 @@ inline const std::vector<ParameterSpec>& controllerParameters() {
 // The controller's parameter with live setting `live` (a gain's is its
 // name), or nullptr.
 inline const ParameterSpec* controllerLiveSetting(const std::string& live) {
-  for (const ParameterSpec& p : controllerParameters()) {
-    if (p.live != nullptr && live == p.live) return &p;
-  }
-  return nullptr;
+  return rowWithLiveName(controllerParameters(), live);
 }
 
 // The parameters as docs/parameters.md's markdown (between its markers).

@@ -82,13 +82,17 @@ constexpr ParameterSpec kParameterTable[kParameterRows] = {
      "is taken before they are connected, so a bag holds the loop from its first cycle (record:=true sets 1)"},
 };
 
-// The row of this table with live setting `live`, or nullptr (a law's gain:
-// loop/controller_parameters.h).
-inline const ParameterSpec* rowOfLiveSetting(const std::string& live) {
-  for (const ParameterSpec& p : kParameterTable) {
+// The row of `rows` (an array or a vector) with live setting `live`, or nullptr.
+template <class Rows>
+const ParameterSpec* rowWithLiveName(const Rows& rows, const std::string& live) {
+  for (const ParameterSpec& p : rows) {
     if (p.live != nullptr && live == p.live) return &p;
   }
   return nullptr;
 }
+
+// The row of this table with live setting `live`, or nullptr (a law's gain:
+// loop/controller_parameters.h).
+inline const ParameterSpec* rowOfLiveSetting(const std::string& live) { return rowWithLiveName(kParameterTable, live); }
 
 }  // namespace aurora_control
