@@ -1,13 +1,13 @@
 // The `cpu` backend's engine for formation sweeps (docs/formation.md,
 // "Formation sweeps"): L formations at once, one per SIMD lane, each at its
 // own tick. A lane whose formation ended (its last tick, or a failed check
-// with early stop) takes the next combination of the batch's law at once,
-// so early stops keep paying, as BatchWorker's lanes do (batch_engine.h);
-// it starts on a tick where the layer's periods fall as on every other
-// lane's (LayerSchedule's cycle), so that the lanes share when the layer
-// runs, each at its own period's time and Qd. A lane's result is taken at
-// the tick it ended. The tick is the scalar runner's (formation_runner.h's
-// formationTick and formation_checks.h on batches); each drone's delayed
+// with early stop) takes the next combination of the batch's law, as
+// BatchWorker's lanes do (LaneSlots, lane_work.h); it starts on a tick
+// where the layer's periods fall as on every other lane's (LayerSchedule's
+// cycle), so that the lanes share when the layer runs, each at its own
+// period's time and Qd. A lane's result is taken at the tick it ended. The
+// tick is the scalar runner's (formation_runner.h's formationTick and
+// formation_checks.h on batches); each drone's delayed
 // state comes from receiveState (closed_loop.h) over the lane policies of
 // lane_history.h: its LaneHistory and the delay rule on integer lanes or its
 // lanes' link models; with `Predicted`, each drone's LanePredictor
@@ -116,44 +116,33 @@ class FormationBatch {
   // with combinations of that law until the next is another's; then each
   // lane runs out.
   void runBatch(long first) {
-    const Lane start = laneOf(first);
-    const auto law = start.law;
-    Flights f(start, period_);
+    const Lane spare = laneOf(first);
+    Flights f(spare, period_);
     for (int d = 0; d < D; ++d) fresh_[d] = loopLane<LaneOps>(f.state[d], 0);
-    for (int l = 0; l < L; ++l) start_[l] = 0, offset_[l] = 0, active_[l] = false;
+    for (int l = 0; l < L; ++l) start_[l] = 0, offset_[l] = 0;
     starts_ = I(Int(0));
+    slots_.clear();
     for (g_ = 0;; ++g_) {
-      if (g_ % cycle_ == 0) refill(f, law, first);
-      if (!anyActive()) return;
+      if (g_ % cycle_ == 0) refill(f, first, spare);
+      if (!slots_.anyCounts()) return;
       tick(f);
       endLanes(f);
     }
   }
 
-  bool anyActive() const {
-    for (int l = 0; l < L; ++l) {
-      if (active_[l]) return true;
-    }
-    return false;
-  }
-
-  // Each idle lane takes the next combination of the batch's law; one with
-  // none left reruns the batch's first once past its last tick (its result
-  // dropped), so that no lane runs beyond its run's ticks for long.
-  void refill(Flights& f, typename OneLane::Law law, long first) {
-    for (int l = 0; l < L; ++l) {
-      if (active_[l]) continue;
-      long index = first;
-      if (work_.peek(index)) {
-        const Lane lane = laneOf(index);
-        if (lane.law == law) {
-          work_.take(index);
-          startLane(l, f, index, lane, true);
-          continue;
-        }
-      }
-      if (g_ == start_[l] || g_ - start_[l] >= setup_.iterations) startLane(l, f, first, laneOf(first), false);
-    }
+  // Each free lane takes the next combination of the batch's law (that of
+  // `first`); with none left it reruns `first`, its result dropped, so that
+  // no lane runs beyond its run's ticks for long.
+  void refill(Flights& f, long first, const Lane& spare) {
+    Lane taken;
+    const auto take = [&](long& index) {
+      if (!work_.peek(index)) return false;
+      taken = laneOf(index);
+      return taken.law == spare.law && work_.take(index);
+    };
+    slots_.refill(take, first, [&](int l, long index, bool counts) {
+      startLane(l, f, index, counts ? taken : spare);
+    });
   }
 
   // Lane l starts `lane`, the formation of combination `index`: its
@@ -161,7 +150,7 @@ class FormationBatch {
   // batch of its own would start them, its metrics reset, its tick 0. (The
   // batch's run keeps what every lane shares: the layer's and the robots'
   // gains in force are the layer's and params'.)
-  void startLane(int l, Flights& f, long index, const Lane& lane, bool active) {
+  void startLane(int l, Flights& f, long index, const Lane& lane) {
     const Combination c = work_.decode(index);
     aurora_control::FormationGains<B, N> gains;
     for (int i = 0; i < N; ++i) gains.k1[i] = B(lane.gains.k1[i]), gains.k2[i] = B(lane.gains.k2[i]);
@@ -184,7 +173,6 @@ class FormationBatch {
     setMetricsLane(f.metrics, l, reset);
     start_[l] = g_, offset_[l] = setup_.run.schedule.periodBefore(g_);  // g_ on the cycle: a period is due
     LaneOps::set(starts_, l, static_cast<Int>(g_));
-    index_[l] = index, active_[l] = active;
   }
 
   // Steps 1-2 of tick k for each drone (closed_loop.h, receiveState): its
@@ -286,14 +274,11 @@ class FormationBatch {
   void endLanes(const Flights& f) {
     alignas(64) bool ok[L];
     f.metrics.feasible().store_aligned(ok);
-    for (int l = 0; l < L; ++l) {
-      const long ticks = g_ - start_[l] + 1;
-      if (active_[l] && ((setup_.early_stop && !ok[l]) || ticks >= setup_.iterations)) {
-        finishLane(l, f, ticks);
-        active_[l] = false;
-      }
-    }
+    bool stopped[L], last[L];
+    for (int l = 0; l < L; ++l) stopped[l] = setup_.early_stop && !ok[l], last[l] = ticks(l) >= setup_.iterations;
+    slots_.end(stopped, last, [&](int l) { return laneResult(l, f); });
   }
+  long ticks(int l) const { return g_ - start_[l] + 1; }  // lane l's, this one included
 
   // Lane l's metrics as the scalar judge's, and back.
   static aurora_control::FormationMetrics<T, bool, OneLane> metricsLane(const Metrics& m, int l) {
@@ -311,12 +296,12 @@ class FormationBatch {
     for (int i = 0; i < m.kChecks; ++i) LaneOps::set(m.ok[i], l, lane.ok[i]);
   }
 
-  void finishLane(int l, const Flights& f, long ticks) {
+  SimResult laneResult(int l, const Flights& f) const {
     T X[N];
     for (int d = 0; d < D; ++d) {
       for (int i = 0; i < 3; ++i) X[3 * d + i] = LaneOps::get(f.state[d].model.X[Vehicle::kPosition + i], l);
     }
-    work_.record(index_[l], formationResult(metricsLane(f.metrics, l), ticks, aurora_control::closestPair<OneLane>(X)));
+    return formationResult(metricsLane(f.metrics, l), ticks(l), aurora_control::closestPair<OneLane>(X));
   }
 
   LaneWork& work_;
@@ -334,8 +319,7 @@ class FormationBatch {
   long start_[L];    // each lane's tick 0, on the batch's (its tick: g_ - start_)
   I starts_;         // the same, as integer lanes
   long offset_[L];   // the layer's periods before start_ (its period n: the batch's n - offset_)
-  long index_[L];   // each lane's combination
-  bool active_[L];  // whether its result counts
+  LaneSlots<L> slots_{work_};
   // With Predicted, each drone's (aligned: its batches; its rings on the heap).
   std::vector<Predictor, xsimd::aligned_allocator<Predictor, 64>> predictors_;
 };

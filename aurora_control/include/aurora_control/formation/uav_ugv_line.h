@@ -17,7 +17,7 @@ namespace aurora_control {
 template <typename T>
 class UavUgvLayer;
 template <typename T>
-AURORA_HD inline void uavUgvReference(const T& t, T Qd[6], T dQd[6]);
+struct UavUgvTrajectory;
 
 template <typename T>
 struct UavUgvLine {
@@ -32,8 +32,7 @@ struct UavUgvLine {
   // the trajectory of eq. L4.
   template <typename V>
   AURORA_HD static void ownReference(const V& t, V Qd[kVariables]) {
-    V dQd[kVariables];
-    uavUgvReference(t, Qd, dQd);
+    UavUgvTrajectory<V>::desired(t, Qd);
   }
 
   static const char* variableName(int i) {
@@ -147,19 +146,35 @@ class UavUgvLineLayer {
 
 // AuRoRA's standard UAV-UGV trajectory (eq. L4): the ground robot on a 1:2
 // figure-eight (a = 1.2 m, b = 1 m, w = 0.05 rad/s), the drone 2 m from it
-// at azimuth pi/2 and elevation pi/3; the rate analytic.
+// at azimuth pi/2 and elevation pi/3; the rate analytic. Qd and its rate
+// apart: the run's reference needs one, the layer the other.
 template <typename T>
-AURORA_HD inline void uavUgvReference(const T& t, T Qd[6], T dQd[6]) {
-  const T pi = T(aurora_common::kPi);
-  using aurora_common::sinCos;  // or a SIMD batch's own, by argument-dependent lookup
-  const T a = T(1.2), b = T(1), w = T(0.05);
-  T s1, c1, s2, c2;
-  sinCos(w * t, s1, c1);
-  sinCos(T(2) * w * t, s2, c2);
-  const T q[6] = {a * s1, b * s2, T(0), T(2), pi / T(2), pi / T(3)};
-  const T dq[6] = {a * w * c1, T(2) * b * w * c2, T(0), T(0), T(0), T(0)};
-  for (int i = 0; i < 6; ++i) Qd[i] = q[i], dQd[i] = dq[i];
-}
+struct UavUgvTrajectory {
+  AURORA_HD static void desired(const T& t, T Qd[6]) {
+    const T pi = T(aurora_common::kPi);
+    T s1, c1, s2, c2;
+    phases(t, s1, c1, s2, c2);
+    const T q[6] = {a() * s1, b() * s2, T(0), T(2), pi / T(2), pi / T(3)};
+    for (int i = 0; i < 6; ++i) Qd[i] = q[i];
+  }
+  AURORA_HD static void rate(const T& t, T dQd[6]) {
+    T s1, c1, s2, c2;
+    phases(t, s1, c1, s2, c2);
+    const T dq[6] = {a() * w() * c1, T(2) * b() * w() * c2, T(0), T(0), T(0), T(0)};
+    for (int i = 0; i < 6; ++i) dQd[i] = dq[i];
+  }
+
+ private:
+  AURORA_HD static T a() { return T(1.2); }   // [m]
+  AURORA_HD static T b() { return T(1); }     // [m]
+  AURORA_HD static T w() { return T(0.05); }  // [rad/s]
+  // sin and cos of w t and of 2 w t.
+  AURORA_HD static void phases(const T& t, T& s1, T& c1, T& s2, T& c2) {
+    using aurora_common::sinCos;  // or a SIMD batch's own, by argument-dependent lookup
+    sinCos(w() * t, s1, c1);
+    sinCos(T(2) * w() * t, s2, c2);
+  }
+};
 
 // The layer as the one formation loop runs a shape's (formation_runner.h,
 // LayerOf): every tick (its period the robots' step), towards the
@@ -177,8 +192,8 @@ class UavUgvLayer {
   // Before the first tick: nothing held (the layer runs before every law).
   AURORA_HD void start(const T[6], const T[6]) {}
   AURORA_HD void update(const T X[6], const T Qd[6], const T& t) {
-    T reference[6], dQd[6];
-    uavUgvReference(t, reference, dQd);
+    T dQd[6];
+    UavUgvTrajectory<T>::rate(t, dQd);
     layer_.update(X, Qd, dQd);
     for (int i = 0; i < 6; ++i) Qd_[i] = Qd[i];
   }
