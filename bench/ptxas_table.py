@@ -44,7 +44,7 @@ def template_args(text, kernel):
     return args
 
 
-# The AR.Drone's laws by their LawType (aurora_control/law/control_law.h's order).
+# The AR.Drone's laws by their LawType (aurora_control/law/ardrone2/control_law.h's order).
 LAW_TYPES = {"(LawType)0": "pd_saturated", "(LawType)1": "underactuated"}
 
 

@@ -10,9 +10,9 @@
 
 #include "aurora_control/loop/ardrone_study.h"
 #include "aurora_control/loop/flight_runner.h"
-#include "aurora_control/law/pd_controller.h"
+#include "aurora_control/law/ardrone2/pd_controller.h"
 #include "aurora_control/loop/closed_loop.h"
-#include "aurora_control/law/underactuated_law.h"
+#include "aurora_control/law/ardrone2/underactuated_law.h"
 
 using namespace aurora_control;
 

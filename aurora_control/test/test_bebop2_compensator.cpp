@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "aurora_control/law/bebop2_compensator.h"
+#include "aurora_control/law/bebop2/bebop2_compensator.h"
 
 namespace {
 

@@ -18,9 +18,9 @@
 #include "aurora_control/formation/formation_controller.h"
 #include "aurora_control/formation/formation_runner.h"
 #include "aurora_control/formation/formation_yaml.h"
-#include "aurora_control/formation/line_formation.h"
+#include "aurora_control/formation/line/line_formation.h"
 #include "aurora_control/formation/shapes.h"
-#include "aurora_control/formation/uav_ugv_line.h"
+#include "aurora_control/formation/uav_ugv/uav_ugv_line.h"
 #include "aurora_sim/vehicle/vehicle_yaml.h"
 
 using namespace aurora_control;

@@ -11,8 +11,8 @@
 
 #include "aurora_common/refusal_text.h"
 #include "aurora_control/formation/formation_crew.h"
-#include "aurora_control/formation/triangle_yaml.h"
-#include "aurora_control/formation/uav_ugv_yaml.h"
+#include "aurora_control/formation/triangle/triangle_yaml.h"
+#include "aurora_control/formation/uav_ugv/uav_ugv_yaml.h"
 
 using namespace aurora_control;
 

@@ -12,7 +12,7 @@
 
 #include "aurora_control/formation/formation_controller.h"
 #include "aurora_control/formation/formation_yaml.h"
-#include "aurora_control/formation/triangle_yaml.h"
+#include "aurora_control/formation/triangle/triangle_yaml.h"
 #include "aurora_sim/vehicle/vehicle_yaml.h"
 
 namespace {

@@ -12,7 +12,7 @@
 #include "aurora_control/loop/controller_parameters.h"
 #include "aurora_control/params/limits.h"
 #include "aurora_control/params/parameter_table.h"
-#include "aurora_control/law/underactuated_law.h"
+#include "aurora_control/law/ardrone2/underactuated_law.h"
 
 using namespace aurora_control;
 

@@ -7,8 +7,8 @@
 #include <fstream>
 #include <string>
 
-#include "aurora_control/law/pioneer_laws.h"
-#include "aurora_control/law/pioneer_yaml.h"
+#include "aurora_control/law/pioneer3dx/pioneer_laws.h"
+#include "aurora_control/law/pioneer3dx/pioneer_yaml.h"
 #include "aurora_control/loop/flight_setup.h"
 #include "aurora_sim/vehicle/pioneer3dx/pioneer3dx_profile.h"
 #include "aurora_sim/vehicle/vehicle_yaml.h"

@@ -14,10 +14,10 @@
 #include <vector>
 
 #include "aurora_control/formation/formation_layer.h"
-#include "aurora_control/formation/triangle_formation.h"
-#include "aurora_control/formation/triangle_reference.h"
-#include "aurora_control/formation/triangle_yaml.h"
-#include "aurora_control/law/control_law.h"
+#include "aurora_control/formation/triangle/triangle_formation.h"
+#include "aurora_control/formation/triangle/triangle_reference.h"
+#include "aurora_control/formation/triangle/triangle_yaml.h"
+#include "aurora_control/law/ardrone2/control_law.h"
 #include "aurora_sim/vehicle/vehicle_yaml.h"
 #include "edited_file.h"
 

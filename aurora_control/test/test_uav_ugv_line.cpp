@@ -17,9 +17,9 @@
 #include <vector>
 
 #include "aurora_control/formation/formation_judge.h"
-#include "aurora_control/formation/uav_ugv_yaml.h"
-#include "aurora_control/law/control_law.h"
-#include "aurora_control/law/pioneer_laws.h"
+#include "aurora_control/formation/uav_ugv/uav_ugv_yaml.h"
+#include "aurora_control/law/ardrone2/control_law.h"
+#include "aurora_control/law/pioneer3dx/pioneer_laws.h"
 #include "aurora_sim/vehicle/vehicle_yaml.h"
 #include "edited_file.h"
 #include "yaml-cpp/yaml.h"

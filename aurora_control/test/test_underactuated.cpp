@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "aurora_control/law/underactuated_law.h"
+#include "aurora_control/law/ardrone2/underactuated_law.h"
 #include "underactuated_svd_reference.h"
 
 using namespace aurora_control;

@@ -17,8 +17,8 @@
 #else
 #include "aurora_sweep/backends.h"
 #endif
-#include "aurora_control/formation/triangle_formation.h"
-#include "aurora_control/formation/triangle_reference.h"
+#include "aurora_control/formation/triangle/triangle_formation.h"
+#include "aurora_control/formation/triangle/triangle_reference.h"
 #include "aurora_control/law/either_law.h"
 #include "aurora_sim/vehicle/vehicle_yaml.h"
 #include "aurora_sweep/kernel_entry.h"
@@ -320,7 +320,7 @@ TEST(ShapeConcept, RobotsOfDifferentVehiclesFlyOneFormation) {
   EXPECT_NE(differing(own, scalarLoop<MixedLaw, double, false>(setup, grid.view)), 0);
 }
 
-// AuRoRA's triangle (aurora_control/formation/triangle_formation.h) is
+// AuRoRA's triangle (aurora_control/formation/triangle/triangle_formation.h) is
 // branch-free in the state: its variables, error and every law's velocities
 // on SIMD lanes (this build's default instruction set, each lane its own
 // triangle) equal the scalar code's, lane by lane, to rounding (xsimd's

@@ -14,8 +14,8 @@
 #include <vector>
 
 #include "aurora_control/formation/formation_judge.h"
-#include "aurora_control/formation/triangle_yaml.h"
-#include "aurora_control/formation/uav_ugv_yaml.h"
+#include "aurora_control/formation/triangle/triangle_yaml.h"
+#include "aurora_control/formation/uav_ugv/uav_ugv_yaml.h"
 #include "aurora_sweep/chunk_store.h"
 #include "aurora_sweep/kernel_entry.h"
 #include "sweep_test_support.h"

@@ -17,8 +17,8 @@
 #else
 #include "aurora_sweep/backends.h"
 #endif
-#include "aurora_control/law/bebop2_compensator.h"
-#include "aurora_control/law/pioneer_laws.h"
+#include "aurora_control/law/bebop2/bebop2_compensator.h"
+#include "aurora_control/law/pioneer3dx/pioneer_laws.h"
 #include "aurora_sim/vehicle/vehicle_yaml.h"
 #include "aurora_sweep/parameters.h"
 #include "aurora_sweep/kernel_entry.h"
@@ -189,7 +189,7 @@ TEST(VehicleConcept, ATestVehicleFliesEveryBackend) {
 }
 
 // A real vehicle and its law, added as the seam says (aurora_sim/vehicle/
-// bebop2.h, law/bebop2_compensator.h): the Bebop 2 flies every backend
+// bebop2.h, law/bebop2/bebop2_compensator.h): the Bebop 2 flies every backend
 // (the SIMD lanes to rounding: xsimd's sin, cos and tanh), its gains
 // (the sweep's ksp_xy, ksd_xy: sweep_gains.h), delay and model factor
 // (Ku_x) reaching its runs.
@@ -214,7 +214,7 @@ TEST(VehicleConcept, TheBebop2FliesEveryBackend) {
   expectEveryBackendAgrees<BebopLaw>(bebopSetup<float>(lossyLink()), grid.view, 2e-3);
 }
 
-// The Pioneer P3-DX (aurora_sim/vehicle/pioneer3dx/pioneer3dx.h, law/pioneer_laws.h):
+// The Pioneer P3-DX (aurora_sim/vehicle/pioneer3dx/pioneer3dx.h, law/pioneer3dx/pioneer_laws.h):
 // 14 states, 2 inputs, Ts 0.1 s, on the floor; every backend, its delay and
 // model factor (theta1) reaching its runs.
 TEST(VehicleConcept, ThePioneerFliesEveryBackend) {

@@ -8,7 +8,7 @@
 // the shape interface that LineFormation implements.
 #pragma once
 
-#include "aurora_control/formation/line_formation.h"
+#include "aurora_control/formation/line/line_formation.h"
 
 namespace three_abreast {
 

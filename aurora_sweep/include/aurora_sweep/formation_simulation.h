@@ -15,7 +15,7 @@
 
 #include "aurora_control/formation/formation_judge.h"
 #include "aurora_control/formation/formation_runner.h"
-#include "aurora_control/formation/triangle_formation.h"
+#include "aurora_control/formation/triangle/triangle_formation.h"
 #include "aurora_sweep/robot_gains.h"
 #include "aurora_sweep/simulation.h"
 

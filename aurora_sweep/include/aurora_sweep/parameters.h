@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "aurora_control/formation/shapes.h"
-#include "aurora_control/law/control_law.h"
+#include "aurora_control/law/ardrone2/control_law.h"
 #include "aurora_sweep/combination.h"
 
 namespace aurora_sweep {

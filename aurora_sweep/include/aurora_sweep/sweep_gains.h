@@ -10,7 +10,7 @@
 #pragma once
 
 #include "aurora_common/host_device.h"
-#include "aurora_control/law/control_law.h"
+#include "aurora_control/law/ardrone2/control_law.h"
 #include "aurora_control/law/law_gain_rows.h"
 #include "aurora_control/law/other_laws.h"
 #include "aurora_sweep/combination.h"

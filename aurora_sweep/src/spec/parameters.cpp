@@ -3,12 +3,12 @@
 #include <limits>
 
 #include "aurora_control/formation/formation_layer.h"
-#include "aurora_control/formation/triangle_formation.h"
-#include "aurora_control/formation/triangle_yaml.h"
+#include "aurora_control/formation/triangle/triangle_formation.h"
+#include "aurora_control/formation/triangle/triangle_yaml.h"
 #include "aurora_control/params/limits.h"
 #include "aurora_control/link/link.h"
 #include "aurora_control/params/parameter_table.h"
-#include "aurora_control/law/underactuated_law.h"
+#include "aurora_control/law/ardrone2/underactuated_law.h"
 #include "aurora_sim/vehicle/vehicle_type.h"
 #include "aurora_sweep/sweep_gains.h"
 

@@ -12,7 +12,7 @@
 #include "aurora_control/link/link_yaml.h"
 #include "aurora_control/loop/positioning_runner.h"
 #include "aurora_control/predictor/predictor_yaml.h"
-#include "aurora_control/formation/triangle_yaml.h"
+#include "aurora_control/formation/triangle/triangle_yaml.h"
 #include "aurora_control/task/task_yaml.h"
 #include "aurora_sweep/backends.h"
 #include "aurora_sweep/design.h"

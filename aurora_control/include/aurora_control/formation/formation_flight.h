@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "aurora_common/number_text.h"
-#include "aurora_control/formation/line_run.h"
+#include "aurora_control/formation/line/line_run.h"
 #include "aurora_control/formation/formation_yaml.h"
 
 namespace aurora_control {

@@ -8,7 +8,7 @@
 
 #include <cmath>
 
-#include "aurora_control/formation/line_formation.h"
+#include "aurora_control/formation/line/line_formation.h"
 
 namespace aurora_control {
 

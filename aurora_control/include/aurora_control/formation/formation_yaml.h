@@ -18,7 +18,7 @@
 #include "aurora_control/formation/formation_checks.h"
 #include "aurora_control/formation/formation_document.h"
 #include "aurora_control/formation/formation_layer.h"
-#include "aurora_control/formation/line_run.h"
+#include "aurora_control/formation/line/line_run.h"
 #include "aurora_control/loop/law_yaml.h"
 #include "aurora_control/params/limits.h"
 #include "aurora_control/link/link_yaml.h"

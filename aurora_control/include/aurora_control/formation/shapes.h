@@ -15,8 +15,8 @@
 #include "aurora_common/refusal_text.h"
 #include "aurora_control/formation/formation_document.h"
 #include "aurora_control/formation/formation_yaml.h"
-#include "aurora_control/formation/triangle_yaml.h"
-#include "aurora_control/formation/uav_ugv_yaml.h"
+#include "aurora_control/formation/triangle/triangle_yaml.h"
+#include "aurora_control/formation/uav_ugv/uav_ugv_yaml.h"
 
 // A build may add shapes of its own after the shipped ones without editing
 // this file: AURORA_EXTRA_SHAPES names a header that defines

@@ -9,9 +9,9 @@
 
 #include "aurora_common/named_list.h"
 
-#include "aurora_control/law/bebop2_compensator.h"
-#include "aurora_control/law/control_law.h"
-#include "aurora_control/law/pioneer_laws.h"
+#include "aurora_control/law/bebop2/bebop2_compensator.h"
+#include "aurora_control/law/ardrone2/control_law.h"
+#include "aurora_control/law/pioneer3dx/pioneer_laws.h"
 
 // A build may add laws of its own after the shipped ones without editing
 // this file: AURORA_EXTRA_LAWS names a header that defines

@@ -4,7 +4,7 @@
 // self-check, the study's tests and benches call these.
 #pragma once
 
-#include "aurora_control/law/control_law.h"
+#include "aurora_control/law/ardrone2/control_law.h"
 #include "aurora_control/loop/positioning_runner.h"
 
 namespace aurora_control {

@@ -14,7 +14,7 @@
 // aurora_sim/vehicle/ardrone2/ardrone2.h).
 #pragma once
 
-#include "aurora_control/law/control_law.h"
+#include "aurora_control/law/ardrone2/control_law.h"
 #include "aurora_control/loop/delay_buffer.h"
 #include "aurora_control/loop/feasibility.h"
 #include "aurora_control/task/task.h"

@@ -14,9 +14,9 @@
 #include <utility>
 #include <vector>
 
-#include "aurora_control/law/compensator_yaml.h"  // each law's controller-file reader, one line each
+#include "aurora_control/law/bebop2/compensator_yaml.h"  // each law's controller-file reader, one line each
 #include "aurora_control/law/other_laws.h"
-#include "aurora_control/law/pioneer_yaml.h"
+#include "aurora_control/law/pioneer3dx/pioneer_yaml.h"
 #include "aurora_control/loop/delayed_controller.h"
 #include "aurora_control/params/yaml_reader.h"
 

@@ -12,8 +12,8 @@
 
 #include "aurora_common/host_device.h"
 #include "aurora_common/scalar_math.h"
-#include "aurora_control/formation/triangle_pinv.h"
-#include "aurora_control/formation/triangle_reference.h"
+#include "aurora_control/formation/triangle/triangle_pinv.h"
+#include "aurora_control/formation/triangle/triangle_reference.h"
 
 namespace aurora_control {
 

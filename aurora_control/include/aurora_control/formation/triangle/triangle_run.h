@@ -15,9 +15,9 @@
 #include <string>
 
 #include "aurora_control/formation/formation_runner.h"
-#include "aurora_control/formation/kinematic_robot.h"
-#include "aurora_control/formation/triangle_formation.h"
-#include "aurora_control/law/control_law.h"
+#include "aurora_control/formation/triangle/kinematic_robot.h"
+#include "aurora_control/formation/triangle/triangle_formation.h"
+#include "aurora_control/law/ardrone2/control_law.h"
 #include "aurora_control/params/limits.h"
 
 namespace aurora_control {

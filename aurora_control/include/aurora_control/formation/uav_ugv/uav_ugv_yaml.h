@@ -19,8 +19,8 @@
 #include <string>
 
 #include "aurora_control/formation/formation_yaml.h"
-#include "aurora_control/formation/uav_ugv_run.h"
-#include "aurora_control/law/pioneer_yaml.h"
+#include "aurora_control/formation/uav_ugv/uav_ugv_run.h"
+#include "aurora_control/law/pioneer3dx/pioneer_yaml.h"
 #include "aurora_sim/vehicle/vehicle_yaml.h"
 
 namespace aurora_control {

@@ -24,7 +24,7 @@
 #include <vector>
 
 #include "aurora_control/formation/formation_yaml.h"
-#include "aurora_control/formation/triangle_run.h"
+#include "aurora_control/formation/triangle/triangle_run.h"
 #include "aurora_sim/vehicle/vehicle_yaml.h"
 
 namespace aurora_control {

@@ -1,7 +1,7 @@
 // The triangle's crew for the formation node (formation_crew.h): its entry's
 // crew (shapes.h), from its file's setup.
-#include "aurora_control/formation/triangle_yaml.h"
-#include "crew_of.h"
+#include "aurora_control/formation/triangle/triangle_yaml.h"
+#include "../crew_of.h"
 
 namespace aurora_control {
 

@@ -13,10 +13,10 @@
 #include <string>
 
 #include "aurora_control/formation/formation_runner.h"
-#include "aurora_control/formation/uav_ugv_line.h"
-#include "aurora_control/law/control_law.h"
+#include "aurora_control/formation/uav_ugv/uav_ugv_line.h"
+#include "aurora_control/law/ardrone2/control_law.h"
 #include "aurora_control/law/either_law.h"
-#include "aurora_control/law/pioneer_laws.h"
+#include "aurora_control/law/pioneer3dx/pioneer_laws.h"
 #include "aurora_control/link/link.h"
 
 namespace aurora_control {

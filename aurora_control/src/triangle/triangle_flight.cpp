@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "aurora_control/formation/formation_flight.h"
-#include "aurora_control/formation/triangle_yaml.h"
+#include "aurora_control/formation/triangle/triangle_yaml.h"
 
 namespace aurora_control {
 

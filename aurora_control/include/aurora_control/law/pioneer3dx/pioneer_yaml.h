@@ -7,8 +7,8 @@
 
 #include <string>
 
-#include "aurora_control/law/compensator_yaml.h"
-#include "aurora_control/law/pioneer_laws.h"
+#include "aurora_control/law/bebop2/compensator_yaml.h"
+#include "aurora_control/law/pioneer3dx/pioneer_laws.h"
 
 namespace aurora_control {
 

@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-#include "aurora_control/law/bebop2_compensator.h"
+#include "aurora_control/law/bebop2/bebop2_compensator.h"
 #include "aurora_control/params/yaml_reader.h"
 
 namespace aurora_control {

@@ -10,9 +10,9 @@
 
 #include <type_traits>
 
-#include "aurora_control/law/pd_controller.h"
+#include "aurora_control/law/ardrone2/pd_controller.h"
 #include "aurora_control/task/trajectory_task.h"
-#include "aurora_control/law/underactuated_law.h"
+#include "aurora_control/law/ardrone2/underactuated_law.h"
 #include "aurora_sim/vehicle/ardrone2/ardrone_params.h"
 #include "aurora_common/host_device.h"
 #include "aurora_sim/state_index.h"

@@ -7,8 +7,8 @@
 
 #include "aurora_control/formation/formation_judge.h"
 #include "aurora_control/formation/formation_runner.h"
-#include "aurora_control/formation/line_formation.h"
-#include "aurora_control/law/control_law.h"
+#include "aurora_control/formation/line/line_formation.h"
+#include "aurora_control/law/ardrone2/control_law.h"
 
 namespace aurora_control {
 
