@@ -15,13 +15,9 @@ fi
 OLD=$1
 NEW=$2
 ROUNDS=${3:-5}
-SWEEP=${4:-config/sweeps/positioning_delay.yaml}
-for b in "$OLD" "$NEW"; do
-  [ -x "$b/devel/lib/aurora_sweep/sweep" ] || { echo "no sweep program in $b/devel/lib/aurora_sweep/ (build it first)" >&2; exit 2; }
-done
-[ -f /opt/ros/noetic/setup.bash ] && source /opt/ros/noetic/setup.bash
-source "$NEW/devel/setup.bash"  # the sweep finds aurora_config through the package path
-export PATH=/usr/bin:/bin:$PATH
+SWEEP=${4:+$(realpath "$4")}
+source "$(dirname "$0")/two_builds.sh"
+SWEEP=${SWEEP:-config/sweeps/positioning_delay.yaml}
 OUT=$(mktemp -d /tmp/aurora_compare_builds.XXXXXX)
 THREADS=$(nproc)
 echo "compare builds: $SWEEP, $ROUNDS rounds, $THREADS threads, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs)"

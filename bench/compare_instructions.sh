@@ -17,16 +17,12 @@ if [ $# -lt 2 ]; then
 fi
 OLD=$1
 NEW=$2
-SWEEP=${3:-config/sweeps/positioning_delay.yaml}
 VALUES=${4:-16}
 command -v valgrind > /dev/null || { echo "valgrind is not installed (apt-get install valgrind)" >&2; exit 2; }
-for b in "$OLD" "$NEW"; do
-  [ -x "$b/devel/lib/aurora_sweep/sweep" ] || { echo "no sweep program in $b/devel/lib/aurora_sweep/ (build it first)" >&2; exit 2; }
-done
-[ -f "$SWEEP" ] || { echo "no sweep file '$SWEEP'" >&2; exit 2; }
-[ -f /opt/ros/noetic/setup.bash ] && source /opt/ros/noetic/setup.bash
-source "$NEW/devel/setup.bash"  # the sweep finds aurora_config (the cut file's relative paths) through the package path
-export PATH=/usr/bin:/bin:$PATH
+[ -z "$3" ] || [ -f "$3" ] || { echo "no sweep file '$3'" >&2; exit 2; }
+SWEEP=${3:+$(realpath "$3")}
+source "$(dirname "$0")/two_builds.sh"  # also the cut file's relative paths: aurora_config through the package path
+SWEEP=${SWEEP:-config/sweeps/positioning_delay.yaml}
 OUT=$(mktemp -d /tmp/aurora_compare_instructions.XXXXXX)
 trap 'rm -rf "$OUT"' EXIT
 # The cut: every axis keeps its first VALUES values;
