@@ -1,6 +1,7 @@
 #include "sim_node.h"
 
 #include "aurora_common/ros/node_main.h"
+#include "aurora_common/ros/topic_publishers.h"
 
 #include <geometry_msgs/TransformStamped.h>
 #include <nav_msgs/Odometry.h>
@@ -271,6 +272,7 @@ void SimNode<Vehicle>::onLockstepRetry(const ros::WallTimerEvent&) {
       return;
     }
     if (last_publish_wall_.isZero()) {
+      refuseSecondClockOwner();
       last_publish_wall_ = ros::WallTime::now();
       return;
     }
@@ -289,6 +291,23 @@ void SimNode<Vehicle>::onLockstepRetry(const ros::WallTimerEvent&) {
   constexpr double kStalledAfter = 1.0;  // [s] wall
   if ((ros::WallTime::now() - last_publish_wall_).toSec() > kStalledAfter) {
     publishState(lockstepTime());
+  }
+}
+
+// Two sims owning /clock (several robots launched with ~publish_clock left
+// at its default) set every node's time back and forth between their steps:
+// a recorder stops writing at the first message it receives on a clock gone
+// back to 0, and timers fire out of order. Checked once the loop's nodes are
+// there, before the first step: a sim that finds another owner refuses.
+template <class Vehicle>
+void SimNode<Vehicle>::refuseSecondClockOwner() const {
+  if (!publish_clock_) return;
+  for (const std::string& node : aurora_common::publishersOf(clock_pub_.getTopic())) {
+    if (node == ros::this_node::getName()) continue;
+    throw ConfigError("parameter '" + fullKey(pnh_, kSimParameterTable[kSimRowPublishClock].name) +
+                      "' = true, but " + node + " publishes " + clock_pub_.getTopic() +
+                      " too: in lockstep one sim owns the clock (formation.launch: robot 1's); set publish_clock "
+                      "to false on every other sim");
   }
 }
 

@@ -45,6 +45,7 @@ class SimNode {
   void logBurst(const BurstReport& r) const;
   void onRealtimeTimer(const ros::TimerEvent&);
   void onLockstepRetry(const ros::WallTimerEvent&);
+  void refuseSecondClockOwner() const;
 
   // Picks the command for this step (user command, hover after a timeout,
   // take-off/landing profile), steps the model, publishes.

@@ -18,9 +18,9 @@ sys.path.insert(0, os.path.dirname(os.path.realpath(__file__)))
 from ros_links import free_port  # noqa: E402
 
 
-def aurora_launch(*launch_args, port=None, mode="lockstep", launch="sim.launch"):
+def aurora_launch(*launch_args, port=None, mode="lockstep", launch="sim.launch", package="aurora_bringup"):
     # Its own master on a free port: the rostest's master is left alone.
-    cmd = ["rosrun", "aurora_bringup", "aurora_launch", "-p", str(port or free_port()), "aurora_bringup",
+    cmd = ["rosrun", "aurora_bringup", "aurora_launch", "-p", str(port or free_port()), package,
            launch, "mode:=" + mode, "sim_output:=log"] + list(launch_args)
     done = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, timeout=90,
                           env=dict(os.environ), universal_newlines=True)
@@ -98,6 +98,15 @@ class LaunchOutcomeTest(unittest.TestCase):
         self.assertNotEqual(first.returncode, 0, out)
         self.assertNotIn("finished normally", out)
         self.assertIn("shut down from outside before its run ended", out)
+
+    def test_two_sims_owning_the_clock_are_refused(self):
+        """Two lockstep sims publishing /clock set every node's time back and
+        forth (a recorder stopped writing at its first steps: the registry
+        formation test's flake). Refused, the other owner named."""
+        rc, out = aurora_launch(package="aurora_tests", launch="two_clock_owners.launch")
+        self.assertEqual(rc, 1, out)
+        self.assertRegex(out, r"parameter '/drone[12]/sim/publish_clock' = true, but /drone[12]/sim publishes "
+                              r"/clock too: in lockstep one sim owns the clock")
 
     def test_a_delay_beside_a_link_replaces_its_uplink_delay(self):
         """Issue 31: link:=wifi_congested delay:=3 refused to start; flight

@@ -76,7 +76,8 @@ constexpr aurora_common::ParameterSpec kSimParameterTable[kSimParameterRows] = {
      "lockstep: at most this many simulated seconds per wall second (0: as fast as possible)", nullptr, nullptr,
      false, nullptr},
     {"publish_clock", sim_rows::ParamKind::kBool, 1, 0, 1, "",
-     "lockstep: publish /clock (formation.launch: one sim of several owns it)", nullptr, nullptr, false, nullptr},
+     "lockstep: publish /clock (formation.launch: one sim of several owns it; a second owner is refused)", nullptr,
+     nullptr, false, nullptr},
 };
 
 // The table as docs/parameters.md's simulator reference (between its markers).
