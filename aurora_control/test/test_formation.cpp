@@ -17,7 +17,7 @@
 #include "edited_file.h"
 #include "aurora_control/formation/formation_controller.h"
 #include "aurora_control/formation/formation_runner.h"
-#include "aurora_control/formation/formation_yaml.h"
+#include "aurora_control/formation/line/line_yaml.h"
 #include "aurora_control/formation/line/line_formation.h"
 #include "aurora_control/formation/shapes.h"
 #include "aurora_control/formation/uav_ugv/uav_ugv_line.h"

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "aurora_control/formation/formation_controller.h"
-#include "aurora_control/formation/formation_yaml.h"
+#include "aurora_control/formation/line/line_yaml.h"
 #include "aurora_control/formation/triangle/triangle_yaml.h"
 #include "aurora_sim/vehicle/vehicle_yaml.h"
 

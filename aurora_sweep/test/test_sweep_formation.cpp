@@ -11,7 +11,7 @@
 #include <limits>
 
 #include "aurora_control/formation/formation_judge.h"
-#include "aurora_control/formation/formation_yaml.h"
+#include "aurora_control/formation/line/line_yaml.h"
 #include "aurora_sim/vehicle/vehicle_yaml.h"
 #include "aurora_sweep/chunk_store.h"
 #include "aurora_sweep/kernel_entry.h"

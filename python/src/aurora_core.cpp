@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "aurora_control/loop/flight_setup.h"
-#include "aurora_control/formation/formation_flight.h"
+#include "aurora_control/formation/line/line_flight.h"
 #include "aurora_control/formation/shapes.h"
 #include "aurora_control/law/other_laws.h"
 #include "aurora_control/params/shipped_files.h"

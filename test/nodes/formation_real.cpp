@@ -20,7 +20,7 @@
 #include <string>
 #include <vector>
 
-#include "aurora_control/formation/formation_yaml.h"
+#include "aurora_control/formation/line/line_yaml.h"
 #include "aurora_sim/ros/vehicle_params.h"
 #include "truth_track.h"
 

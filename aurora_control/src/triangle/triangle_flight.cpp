@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "aurora_control/formation/formation_flight.h"
+#include "aurora_control/formation/formation_judge.h"
 #include "aurora_control/formation/triangle/triangle_yaml.h"
 
 namespace aurora_control {

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "aurora_control/formation/formation_flight.h"
+#include "aurora_control/formation/formation_judge.h"
 #include "aurora_control/formation/uav_ugv/uav_ugv_yaml.h"
 
 namespace aurora_control {

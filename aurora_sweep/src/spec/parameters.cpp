@@ -35,9 +35,9 @@ void addShapeParams(std::vector<ParamInfo>& t) {
   for (int i = 0; i < at.variables; ++i) {
     const std::string limit = "a formation gain: positive, as the underactuated law's";
     t[at.k1(i)] = {std::string("formation_k1_") + Shape::gainName(i), ParamGroup::kFormationGain,
-                   kUnderactuatedGainMin, kUnderactuatedGainMax, limit};
+                   kFormationGainMin, kFormationGainMax, limit};
     t[at.k2(i)] = {std::string("formation_k2_") + Shape::gainName(i), ParamGroup::kFormationGain,
-                   kUnderactuatedGainMin, kUnderactuatedGainMax, limit};
+                   kFormationGainMin, kFormationGainMax, limit};
   }
   for (int d = 0; d < at.robots; ++d) {
     for (int i = 0; i < kLinkParamCount; ++i) {

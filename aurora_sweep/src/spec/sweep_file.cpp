@@ -572,7 +572,7 @@ SweepSpec parseSweepFile(const std::string& path, const std::string& config_dir)
 
   if (s["criteria"] && spec.formation()) readFormationCriteria(r, s["criteria"], spec.formation_criteria);
   if (spec.formation() && !(spec.formation_duration > spec.formation_criteria.settle_time)) {
-    // The formation file's own rule (formation_yaml.h, shortFormationRefusal) with the sweep's settle time.
+    // The formation file's own rule (formation_file.h, shortFormationRefusal) with the sweep's settle time.
     r.fail("sweep.criteria.settle_time", "= " + Reader::fmt(spec.formation_criteria.settle_time) +
                                              " s is refused: the formation file '" + spec.formation_file + "' flies " +
                                              Reader::fmt(spec.formation_duration) + " s, and checks from the settle time "

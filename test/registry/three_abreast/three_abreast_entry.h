@@ -25,8 +25,8 @@
 #include <vector>
 
 #include "aurora_control/formation/formation_document.h"
+#include "aurora_control/formation/formation_file.h"
 #include "aurora_control/formation/formation_runner.h"
-#include "aurora_control/formation/formation_yaml.h"
 #include "aurora_control/loop/law_yaml.h"
 #include "aurora_sim/vehicle/vehicle_yaml.h"
 #include "test_quad/test_quad_pd.h"

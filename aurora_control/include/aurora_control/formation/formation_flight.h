@@ -1,6 +1,9 @@
 // flight --formation: a formation file flown offline (formation_runner.h),
-// its formation errors printed, its trajectory written as CSV. The same
-// flight from Python: aurora._core's simulate_formation_files.
+// its formation errors printed, its trajectory written as CSV; what every
+// shape's flight shares (its options, the delays, the checks' text, the
+// table of rows). Each shape's own flight is in its folder (line/
+// line_flight.h; src/<shape>/<shape>_flight.cpp). The same flights from
+// Python: aurora._core.
 #pragma once
 
 #include <chrono>
@@ -12,8 +15,9 @@
 #include <vector>
 
 #include "aurora_common/number_text.h"
-#include "aurora_control/formation/line/line_run.h"
-#include "aurora_control/formation/formation_yaml.h"
+#include "aurora_control/formation/formation_checks.h"
+#include "aurora_control/link/link.h"
+#include "aurora_control/params/yaml_reader.h"
 
 namespace aurora_control {
 
@@ -37,7 +41,7 @@ void refuseRobotLink(const LinkParams& link, long delay, int r, long ticks, doub
 // Robot r's delay in a run of `ticks` steps: shorter than the run (the
 // delay's own refusal, which names no link), then its link's packets
 // (refuseRobotLink). The one rule of flight --formation and the formation
-// node (formation_crew.cpp), for every shape.
+// node (src/crew_of.h), for every shape.
 void refuseRobotDelay(const LinkParams& link, long delay, int r, long ticks, double Ts);
 
 // The formation checks (docs/formation.md, "Formation checks") as a sweep
@@ -61,31 +65,6 @@ std::string checksText(const FormationCriteria<double>& c, const FormationMetric
                 held(3), ground, m.feasible() ? "feasible" : "not feasible");
   return text;
 }
-
-// Each tick, with the drones' sample time Ts [s].
-using FormationObserver = std::function<void(const ArdroneLineObservation&, double Ts)>;
-
-// What a formation flight gives besides its ticks.
-struct FormationFlight {
-  FormationFile file;
-  ArdroneLineRun run;  // with the delays in force
-  double Ts = 0.0;
-  long ticks = 0;
-  double seconds = 0.0;  // wall time of the run
-  // RMS after 10 s (docs/formation.md, "Formation errors"): rho [m], alpha,
-  // beta [rad], the formation's horizontal position and height [m].
-  double rms[5] = {};
-  ArdroneLineJudge judge;  // the formation checks, as a sweep judges them
-};
-
-// Flies the line's `file` with the options' vehicle file and delays
-// (refusals as ConfigError naming the key), every tick through `observe`;
-// the second form reads o.formation first. The tool's form
-// (LineShapeEntry::fly) writes its CSV (o.csv) and prints its errors and
-// checks.
-FormationFlight flyFormationFiles(const FormationFile& file, const FormationFlightOptions& o,
-                                  const FormationObserver& observe);
-FormationFlight flyFormationFiles(const FormationFlightOptions& o, const FormationObserver& observe);
 
 // AuRoRA's formations' flights (the UAV-UGV line, the triangle) as a table:
 // its columns (the CSV's header: `step, t`, each robot's, Q_, Qd_), then one

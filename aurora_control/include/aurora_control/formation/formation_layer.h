@@ -8,9 +8,14 @@
 
 #include <cmath>
 
-#include "aurora_control/formation/line/line_formation.h"
+#include "aurora_common/host_device.h"
 
 namespace aurora_control {
+
+// The range of every shape's formation gains, K1 and K2 (its file's
+// formation.gains, a sweep's formation_k1_* and formation_k2_*): positive,
+// as the underactuated law's gains are.
+constexpr double kFormationGainMin = 0.001, kFormationGainMax = 100.0;
 
 // K1 (amplitudes) and K2 (slopes) of v = dQd + K1 tanh(K2 (Qd - Q)).
 template <typename T, int N>

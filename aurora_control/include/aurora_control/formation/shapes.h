@@ -14,7 +14,7 @@
 #include "aurora_common/named_list.h"
 #include "aurora_common/refusal_text.h"
 #include "aurora_control/formation/formation_document.h"
-#include "aurora_control/formation/formation_yaml.h"
+#include "aurora_control/formation/line/line_yaml.h"
 #include "aurora_control/formation/triangle/triangle_yaml.h"
 #include "aurora_control/formation/uav_ugv/uav_ugv_yaml.h"
 

@@ -158,7 +158,7 @@ LawFile<Law> readLawFile(const std::string& path, double Ts) {
 // The law and gains of a controller file (config/controllers/*.yaml) of a
 // law of Data's family: its 'controller:'; an optional 'clamp_commands'
 // (checked: a formation's robots never clamp) and 'predictor:'
-// (predictor_yaml.h). A formation's robots' (formation_yaml.h).
+// (predictor_yaml.h). A formation's robots' (formation_file.h, controllerAt).
 template <class Data>
 LawSettings<Data> readControllerFile(const std::string& path) {
   const YAML::Node root = loadYamlFile("controller file", path);

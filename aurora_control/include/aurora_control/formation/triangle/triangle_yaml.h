@@ -23,7 +23,7 @@
 #include <string>
 #include <vector>
 
-#include "aurora_control/formation/formation_yaml.h"
+#include "aurora_control/formation/formation_file.h"
 #include "aurora_control/formation/triangle/triangle_run.h"
 #include "aurora_sim/vehicle/vehicle_yaml.h"
 
@@ -143,7 +143,7 @@ inline void readRobots(const YamlReader& r, const YAML::Node& n, const std::stri
   s.drone_file = formation_detail::inConfig(r.text(n["vehicle"], r.key(key, "vehicle")), config_dir);
   s.drone = aurora_sim::loadVehicleFile<LawVehicle>(s.drone_file, "the triangle's drones");
   const YAML::Node c = r.require(n, key, "controller", "an underactuated mapping or controllers/underactuated.yaml");
-  const LawSettings<ArdroneLawData> set = formation_detail::controllerAt(r, c, r.key(key, "controller"), config_dir);
+  const auto set = formation_detail::controllerAt<ArdroneLawData>(r, c, r.key(key, "controller"), config_dir);
   if (set.law != int(LawType::kUnderactuated)) r.fail(r.key(key, "controller"), "is refused: the drones fly the underactuated law");
   s.drone_gains.underactuated = set.gains.underactuated;
   s.predictor = formationPredictor<TriangleDroneLaw>(formation_detail::predictorAt(r, c, r.key(key, "controller"), config_dir),
@@ -195,7 +195,7 @@ struct TriangleShapeEntry {
   }
   static std::string lawRefusal() { return ""; }  // --law chooses its law
   static File read(const FormationDocument& d, const std::string& law) { return readTriangleFile(d, law); }
-  // A sweep's (LineShapeEntry's): three AR.Drones on the underactuated
+  // A sweep's (as every entry's, shapes.h): three AR.Drones on the underactuated
   // law; its five laws a sweep's formation_law (0 .. 4).
   using SweepRun = TriangleRun<TriangleDroneLaw>;
   template <class VehicleSet>
@@ -218,8 +218,8 @@ struct TriangleShapeEntry {
   static constexpr int kSweepLaws = 5;
   static std::string sweepLawNames() { return triangleLawNames(); }
   static ShapedFlight flyTable(const File& file, const FormationFlightOptions& o, FlightTable& table);  // triangle_flight.cpp
-  static void fly(const File& file, const FormationFlightOptions& o);                                 // formation_flight.cpp
-  static std::unique_ptr<FormationCrew> crew(const File& file, const CrewRequest& q);                 // formation_crew.cpp
+  static void fly(const File& file, const FormationFlightOptions& o);  // src/triangle/triangle_flight.cpp
+  static std::unique_ptr<FormationCrew> crew(const File& file, const CrewRequest& q);  // src/triangle/triangle_crew.cpp
 };
 
 }  // namespace aurora_control

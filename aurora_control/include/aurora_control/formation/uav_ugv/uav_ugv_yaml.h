@@ -18,7 +18,8 @@
 
 #include <string>
 
-#include "aurora_control/formation/formation_yaml.h"
+#include "aurora_control/formation/formation_file.h"
+#include "aurora_control/formation/line/line_formation.h"  // its parameters are named as the line's
 #include "aurora_control/formation/uav_ugv/uav_ugv_run.h"
 #include "aurora_control/law/pioneer3dx/pioneer_yaml.h"
 #include "aurora_sim/vehicle/vehicle_yaml.h"
@@ -140,7 +141,7 @@ struct UavUgvShapeEntry {
   static std::string robotKey(const std::string& what) { return "formation.robots[i]." + what; }
   static std::string lawRefusal() { return "the UAV-UGV line has one law (docs/formation.md, \"The UAV-UGV line\")"; }
   static File read(const FormationDocument& d, const std::string&) { return readUavUgvLineFile(d); }
-  // A sweep's (LineShapeEntry's): its parameters are named as the line's
+  // A sweep's (as every entry's, shapes.h): its parameters are named as the line's
   // (2 robots, 6 variables of the same names).
   using SweepRun = UavUgvRun;
   template <class VehicleSet>
@@ -157,8 +158,8 @@ struct UavUgvShapeEntry {
   static constexpr int kSweepLaws = 0;
   static std::string sweepLawNames() { return ""; }
   static ShapedFlight flyTable(const File& file, const FormationFlightOptions& o, FlightTable& table);  // uav_ugv_flight.cpp
-  static void fly(const File& file, const FormationFlightOptions& o);                                 // formation_flight.cpp
-  static std::unique_ptr<FormationCrew> crew(const File& file, const CrewRequest& q);                 // formation_crew.cpp
+  static void fly(const File& file, const FormationFlightOptions& o);  // src/uav_ugv/uav_ugv_flight.cpp
+  static std::unique_ptr<FormationCrew> crew(const File& file, const CrewRequest& q);  // src/uav_ugv/uav_ugv_crew.cpp
 };
 
 }  // namespace aurora_control

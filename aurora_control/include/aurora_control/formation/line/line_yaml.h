@@ -1,29 +1,22 @@
-// A formation file (config/formations/*.yaml, docs/formation.md,
-// "Formation files"), read strictly: the shape, the law, the period, the
-// gains, the reference and the drones (namespace, start, controller,
-// delay). Unknown keys, one drone, a namespace twice, rho <= 0,
+// The two-drone line's formation file (shape: line; config/formations/
+// line_*.yaml, docs/formation.md, "Formation files"), read strictly: the
+// law, the period, the gains, the reference and the drones (namespace,
+// start, controller, delay, link), with what every shape's reader shares
+// (formation_file.h). Unknown keys, one drone, a namespace twice, rho <= 0,
 // sin^2 alpha + sin^2 beta > 1, a period that is not a whole number of drone
 // steps are refused, naming the key, the value and what is accepted.
 #pragma once
 
 #include <yaml-cpp/yaml.h>
 
-#include <cctype>
 #include <cmath>
 #include <memory>
 #include <string>
 #include <vector>
 
-#include "aurora_common/yaml_file.h"
-#include "aurora_control/formation/formation_checks.h"
-#include "aurora_control/formation/formation_document.h"
-#include "aurora_control/formation/formation_layer.h"
+#include "aurora_control/formation/formation_file.h"
 #include "aurora_control/formation/line/line_run.h"
-#include "aurora_control/loop/law_yaml.h"
 #include "aurora_control/params/limits.h"
-#include "aurora_control/link/link_yaml.h"
-#include "aurora_control/params/yaml_reader.h"
-#include "aurora_control/predictor/predictor_yaml.h"
 
 namespace aurora_control {
 
@@ -51,39 +44,6 @@ inline const char* formationLawName(FormationLaw law) {
 }
 
 namespace formation_detail {
-
-// A file a formation file names: absolute, or relative to the config folder.
-inline std::string inConfig(const std::string& file, const std::string& config_dir) {
-  return file.empty() || file[0] == '/' ? file : config_dir + "/" + file;
-}
-
-// A list of exactly n numbers.
-inline std::vector<double> numbers(const YamlReader& r, const YAML::Node& n, const std::string& key, size_t count) {
-  if (!n.IsSequence() || n.size() != count) r.fail(key, "must be a list of " + std::to_string(count) + " numbers");
-  std::vector<double> v;
-  for (const auto& x : n) v.push_back(r.number(x, key));
-  return v;
-}
-
-template <int N>
-void readGains(const YamlReader& r, const YAML::Node& n, const std::string& key, FormationGains<double, N>& g) {
-  r.onlyKeys(n, key, {"k1", "k2"});
-  const char* names[2] = {"k1", "k2"};
-  double* into[2] = {g.k1, g.k2};
-  for (int j = 0; j < 2; ++j) {
-    if (!n[names[j]]) continue;
-    const std::vector<double> v = numbers(r, n[names[j]], r.key(key, names[j]), N);
-    for (int i = 0; i < N; ++i) {
-      // The sweep's range of a formation gain (formation_k1_x, ...): positive, as the underactuated law's.
-      if (!(v[i] >= kUnderactuatedGainMin && v[i] <= kUnderactuatedGainMax)) {
-        r.fail(r.key(key, names[j]), "= " + YamlReader::fmt(v[i]) + " (entry " + std::to_string(i + 1) +
-                                         ") is refused: accepted gains in [" + YamlReader::fmt(kUnderactuatedGainMin) +
-                                         ", " + YamlReader::fmt(kUnderactuatedGainMax) + "]");
-      }
-      into[j][i] = v[i];
-    }
-  }
-}
 
 // reference: {path: fixed | lemniscate, duration, amplitude: [rx, ry],
 // position: [x, y, z], shape: {rho, alpha, beta}}.
@@ -116,31 +76,6 @@ inline void readReference(const YamlReader& r, const YAML::Node& n, const std::s
   for (int i = 0; i < 6; ++i) ref.Q[i] = Q[i];
 }
 
-// A robot's controller at `key`: a mapping {name, gains ...} or a
-// controller file (controllers/NAME.yaml, in the config folder). A file's
-// predictor block is read by predictorAt: formation robots fly it
-// (formation_runner.h, dronePredictor).
-inline LawSettings<ArdroneLawData> controllerAt(const YamlReader& r, const YAML::Node& c, const std::string& key,
-                                                const std::string& config_dir) {
-  if (c.IsScalar()) return readControllerFile<ArdroneLawData>(inConfig(r.text(c, key), config_dir));
-  LawSettings<ArdroneLawData> set;
-  readLawMapping(r, c, key, set);
-  return set;
-}
-
-// The predictor of a robot's controller at `key` (off for a mapping).
-inline PredictorFile predictorAt(const YamlReader& r, const YAML::Node& c, const std::string& key,
-                                 const std::string& config_dir) {
-  if (!c.IsScalar()) return PredictorFile{};
-  return readControllerPredictor(inConfig(r.text(c, key), config_dir));
-}
-
-// A robot's link file at `key` (links/NAME.yaml, in the config folder).
-inline LinkParams linkFileAt(const YamlReader& r, const YAML::Node& n, const std::string& key,
-                             const std::string& config_dir) {
-  return readLinkFile(inConfig(r.text(n, key), config_dir));
-}
-
 // drones[i]: {namespace, start: [x, y, z], controller: {name, gains...} or a
 // controller file, delay, link: a link file}.
 inline FormationDroneFile readDrone(const YamlReader& r, const YAML::Node& n, const std::string& key,
@@ -151,7 +86,7 @@ inline FormationDroneFile readDrone(const YamlReader& r, const YAML::Node& n, co
   const std::vector<double> s = numbers(r, r.require(n, key, "start", "[x, y, z] in m"), r.key(key, "start"), 3);
   for (int i = 0; i < 3; ++i) d.start[i] = s[i];
   const YAML::Node c = r.require(n, key, "controller", "a controller mapping {name, gains} or file (controllers/NAME.yaml)");
-  d.controller = controllerAt(r, c, r.key(key, "controller"), config_dir);
+  d.controller = controllerAt<ArdroneLawData>(r, c, r.key(key, "controller"), config_dir);
   d.predictor = predictorAt(r, c, r.key(key, "controller"), config_dir);
   long given = kDelayNotGiven;
   if (n["delay"]) {
@@ -162,46 +97,6 @@ inline FormationDroneFile readDrone(const YamlReader& r, const YAML::Node& n, co
   if (n["link"]) d.link = linkFileAt(r, n["link"], r.key(key, "link"), config_dir);
   d.delay = delayInForce(given, d.link);  // a delay given replaces the link's uplink delay (docs/links.md)
   return d;
-}
-
-inline std::string pointText(const double p[3]) {
-  return "[" + YamlReader::fmt(p[0]) + ", " + YamlReader::fmt(p[1]) + ", " + YamlReader::fmt(p[2]) + "]";
-}
-
-// A robot's ROS namespace at `key` (a name such as ardrone1 or bebop2: a
-// letter, then letters, digits and '_'); the drivers' topics are under it.
-inline std::string namespaceAt(const YamlReader& r, const YAML::Node& n, const std::string& key) {
-  const std::string name = r.text(n, key);
-  bool ok = !name.empty() && std::isalpha(static_cast<unsigned char>(name[0]));
-  for (char c : name) ok = ok && (std::isalnum(static_cast<unsigned char>(c)) || c == '_');
-  if (!ok) r.fail(key, "= '" + name + "' is not a namespace: accepted a letter, then letters, digits or '_' (ardrone1, bebop2)");
-  return name;
-}
-
-// Every shape's robots in namespaces of their own (their drivers' topics).
-inline void refuseSharedNamespaces(const YamlReader& r, const std::string& key, const std::vector<std::string>& names) {
-  for (size_t i = 0; i < names.size(); ++i) {
-    for (size_t j = 0; j < i; ++j) {
-      if (names[i] == names[j]) {
-        r.fail(key, "names '" + names[i] + "' for robots " + std::to_string(j + 1) + " and " + std::to_string(i + 1) +
-                        ": accepted a namespace of its own for each robot");
-      }
-    }
-  }
-}
-
-// The highest start a formation file takes [m] (the drones' waypoint
-// ceiling, task_check.h's 100 m).
-constexpr double kHighestStart = 100.0;
-
-// The one start check of every shape (the line's drones, the UAV-UGV
-// line's robots, the triangle's): z within [lo, hi] m, refused naming `key`
-// and the start, with `accepted` saying what is (a ground robot: z = 0).
-inline void refuseStartHeight(const YamlReader& r, const std::string& key, const double p[3], double lo = 0.0,
-                              double hi = kHighestStart, const std::string& accepted = "") {
-  if (p[2] >= lo && p[2] <= hi) return;
-  r.fail(key, "= " + pointText(p) + " has z = " + YamlReader::fmt(p[2]) + " m" + (p[2] < 0.0 ? ", below the ground" : "") +
-                  ": " + (accepted.empty() ? "accepted heights [" + YamlReader::fmt(lo) + ", " + YamlReader::fmt(hi) + "] m" : accepted));
 }
 
 // Starts the line's variables are defined at (line_formation.h): no drone
@@ -274,18 +169,6 @@ inline FormationFile readFormationFile(const std::string& path, const std::strin
   return readFormationFile(loadFormationDocument(path, config_dir));
 }
 
-// What a sweep of a shape's file records beside its run (aurora_sweep's
-// file reader): how long it flies, the controller its records name, its
-// robots' law where one law type flies them all (`names_law`), and why a
-// sweep refuses the file ("" where it flies it).
-struct ShapeSweepFacts {
-  double duration = 0.0;  // [s]
-  std::string controller;
-  bool names_law = false;
-  LawType law = LawType::kPdSaturated;
-  std::string refusal;
-};
-
 // The two-drone line's entry in the shapes' list (shapes.h): AuRoRA's line
 // of two AR.Drones, their vehicle file the flight's or the node's (the
 // formation file names none).
@@ -321,30 +204,9 @@ struct LineShapeEntry {
   using ParamShape = Shape;
   static constexpr int kSweepLaws = 0;
   static std::string sweepLawNames() { return ""; }
-  static void fly(const File& file, const FormationFlightOptions& o);              // formation_flight.cpp
-  static std::unique_ptr<FormationCrew> crew(const File& file, const CrewRequest& q);  // formation_crew.cpp
+  static void fly(const File& file, const FormationFlightOptions& o);  // src/line/line_flight.cpp
+  static std::unique_ptr<FormationCrew> crew(const File& file, const CrewRequest& q);  // src/line/line_crew.cpp
 };
-
-// A formation is judged from the checks' settling time on
-// (formation_checks.h): a shorter one would be judged on nothing and pass,
-// every error 0. Every shape's file (`key`: its duration's key) and a
-// sweep's criteria (`settle`: its settle_time) refuse it by this rule.
-inline std::string shortFormationRefusal(double duration, const std::string& key,
-                                         double settle = FormationCriteria<double>::study().settle_time) {
-  if (duration > settle) return "";
-  return "'" + key + "' = " + YamlReader::fmt(duration) + " s is refused: the formation checks judge a flight from " +
-         YamlReader::fmt(settle) + " s on (settle_time), so a shorter one would be judged on nothing; accepted durations > " +
-         YamlReader::fmt(settle) + " s";
-}
-inline void refuseShortFormation(double duration, const std::string& key) {
-  const std::string refusal = shortFormationRefusal(duration, key);
-  if (!refusal.empty()) throw ConfigError(refusal);
-}
-// The same, said with the reader's file (the UAV-UGV line's and the triangle's `formation.duration`).
-inline void refuseShortFormation(const YamlReader& r, double duration, const std::string& key) {
-  const std::string refusal = shortFormationRefusal(duration, key);
-  if (!refusal.empty()) r.failWith(refusal);
-}
 
 // Each drone's delay in force shorter than the run, as one drone's
 // (limits.h, delayShorterThanRun); `keys[d]` names where drone d's came from.
@@ -358,14 +220,6 @@ inline void refuseFormationDelays(const ArdroneLineRun& run, double Ts,
     const std::string late = latestPacketRefusal(run.drone[d].link, run.drone[d].delay, ticks, Ts);
     if (!late.empty()) throw ConfigError(keys[d] + " with drone " + std::to_string(d + 1) + "'s link: " + late);
   }
-}
-
-// A formation robot's predictor of file `f` flying law `Law` at sample time
-// Ts: its model loaded as the law's vehicle, its horizon in samples; its
-// command path is the run's (dronePredictor).
-template <class Law>
-PredictorRun<typename Law::Vehicle, double> formationPredictor(const PredictorFile& f, double Ts) {
-  return predictorRun<Law>(f, Ts, 0, 0, false);
 }
 
 // The run of a formation file with the drones' vehicle `vehicle`, its

@@ -1,0 +1,24 @@
+// The two-drone line's crew for the formation node (formation_crew.h): its
+// entry's crew (shapes.h), from its file's run and the node's drones'
+// vehicle file (the line's file names none).
+#include "aurora_control/formation/line/line_yaml.h"
+#include "../crew_of.h"
+
+namespace aurora_control {
+
+using namespace crew_detail;
+
+std::unique_ptr<FormationCrew> LineShapeEntry::crew(const File& f, const CrewRequest& q) {
+  ArdroneLineRun run = formationRun(f, q.line_vehicle);
+  const double Ts = q.line_vehicle.Ts;
+  requestedDelays(q, 2, Ts, formationTicks(run.reference.duration, Ts), [&](int r) -> FormationDrone<double, aurora_control::ArdroneLawData>& {
+    return run.drone[r];
+  });
+  const LawSettings<ArdroneLawData>& law = f.drones[0].controller;  // the robots' law; gains and models: the run's
+  return std::unique_ptr<FormationCrew>(new CrewOf<LineFormation<double>, LawSettings<ArdroneLawData>>(
+      run, law, name(), std::string(formationLawName(f.law)) + ", drones: " + lawNameOf(law),
+      {f.drones[0].name_space, f.drones[1].name_space}, {q.line_vehicle_file, q.line_vehicle_file},
+      formationTicks(run.reference.duration, Ts)));
+}
+
+}  // namespace aurora_control
