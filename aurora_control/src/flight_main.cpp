@@ -141,9 +141,9 @@ void resolve(const po::variables_map& vm, const std::string& config, Options& o)
   for (const auto& option : vm) {
     if (!option.second.defaulted()) o.given.push_back(option.first);
   }
-  if (o.vehicle.empty()) {
-    o.vehicle = config + "/vehicles/" + (o.formation.empty() ? o.flown : LawVehicle::name()) + ".yaml";
-  }
+  // A formation's robots: their file's vehicles, or (a file that names
+  // none) its shape's default (line_flight.cpp).
+  if (o.vehicle.empty() && o.formation.empty()) o.vehicle = config + "/vehicles/" + o.flown + ".yaml";
   o.delay = o.delays.empty() ? kDelayNotGiven : o.delays[0];
 }
 

@@ -43,8 +43,8 @@ FormationNode::FormationNode(ros::NodeHandle nh, ros::NodeHandle private_nh) : n
            crew_->sampleTime());
 }
 
-// The formation file (~formation_file; the two-drone line's drones' vehicle
-// ~vehicle) and ~delay_1 .. ~delay_3 (-1: the file's); ~drones, when given,
+// The formation file (~formation_file; ~vehicle, the vehicle of robots
+// whose file names none: the two-drone line's drones) and ~delay_1 .. ~delay_3 (-1: the file's); ~drones, when given,
 // must be the crew's namespaces (the launch started those sims).
 void FormationNode::loadCrew() {
   CrewRequest q;
@@ -52,7 +52,9 @@ void FormationNode::loadCrew() {
   q.config_dir = aurora_common::paramOr<std::string>(pnh_, "config_dir", "");
   const FormationDocument file = loadFormationDocument(q.file, q.config_dir);
   withShapeNamed(file.shape, [&](auto e) {  // a shape whose file names no vehicle flies ~vehicle's
-    if (!decltype(e)::kNamesItsVehicles) q.line_vehicle = aurora_sim::loadVehicleParams<LawVehicle>(pnh_, "vehicle");
+    withUnnamedVehicle(e, [&](auto v) {
+      q.vehicle.set<decltype(v)>(aurora_sim::loadVehicleParams<decltype(v)>(pnh_, "vehicle"));
+    });
   });
   for (int d = 0; d < kMaxCrew; ++d) {
     const std::string key = "delay_" + std::to_string(d + 1);

@@ -17,6 +17,7 @@
 #include <string>
 
 #include "aurora_control/formation/formation_crew.h"
+#include "aurora_control/formation/shapes.h"
 #include "aurora_sim/vehicle/vehicle_yaml.h"
 
 namespace po = boost::program_options;
@@ -38,7 +39,7 @@ bool parse(int argc, char** argv, Options& o) {
       ("robot", po::value(&o.robot)->required(), "the robot, 1-based, in the file's order")
       ("print", po::value(&o.print)->required(), "vehicle, start, namespace or ground")
       ("config-dir", po::value(&o.config_dir)->default_value(""), "the folder the file's paths are in (aurora_config)")
-      ("vehicle", po::value(&o.vehicle)->default_value(""), "the two-drone line's drones' vehicle YAML (its file names none)");
+      ("vehicle", po::value(&o.vehicle)->default_value(""), "the vehicle YAML of robots whose formation file names none (the two-drone line's drones)");
   po::positional_options_description positional;
   positional.add("formation", 1);
   po::variables_map vm;
@@ -66,8 +67,13 @@ std::string vehicleYaml(const CrewRobot& r) {
 int run(const Options& o) {
   CrewRequest q;
   q.file = o.formation, q.config_dir = o.config_dir;
-  if (!o.vehicle.empty()) q.line_vehicle = aurora_sim::loadVehicleFile<LawVehicle>(o.vehicle), q.line_vehicle_file = o.vehicle;
-  const auto crew = loadFormationCrew(q);
+  const FormationDocument file = loadFormationDocument(q.file, q.config_dir);
+  withShapeNamed(file.shape, [&](auto e) {  // a shape whose file names no vehicle flies --vehicle's
+    withUnnamedVehicle(e, [&](auto v) {
+      if (!o.vehicle.empty()) q.vehicle.set<decltype(v)>(aurora_sim::loadVehicleFile<decltype(v)>(o.vehicle), o.vehicle);
+    });
+  });
+  const auto crew = loadFormationCrew(q, file);
   if (o.robot < 1 || o.robot > crew->robots()) {
     throw ConfigError("--robot " + std::to_string(o.robot) + " is refused: the " + crew->shape() + " formation has robots 1 to " +
                       std::to_string(crew->robots()));
@@ -80,7 +86,6 @@ int run(const Options& o) {
                 aurora_common::roundTripText(r.start[1]).c_str(), aurora_common::roundTripText(r.start[2]).c_str());
   }
   if (o.print == "vehicle") {
-    if (r.vehicle_file.empty()) throw ConfigError("--vehicle: the two-drone line's drones' vehicle YAML is required");
     std::printf("%s\n", vehicleYaml(r).c_str());
   }
   return 0;

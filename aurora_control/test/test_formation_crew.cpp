@@ -13,6 +13,7 @@
 #include "aurora_control/formation/formation_crew.h"
 #include "aurora_control/formation/triangle/triangle_yaml.h"
 #include "aurora_control/formation/uav_ugv/uav_ugv_yaml.h"
+#include "aurora_sim/vehicle/vehicle_yaml.h"
 
 using namespace aurora_control;
 
@@ -171,4 +172,27 @@ TEST(FormationCrew, WhatTheRosLoopCannotFlyIsRefusedNamingTheKey) {
   EXPECT_NE(at_end.find("'/formation/delay_3' = 1499: 1499 samples is not shorter than the run's 1499 steps"),
             std::string::npos) << at_end;
   EXPECT_EQ(at_end.find("link"), std::string::npos) << at_end;
+}
+
+// The two-drone line's file names no vehicle: its drones fly the one the
+// node (~vehicle) or formation_robot (--vehicle) was given, read as its
+// entry's UnnamedVehicle; none, or another vehicle's, is refused by name.
+TEST(FormationCrew, TheLinesDronesFlyTheVehicleGivenToTheNode) {
+  CrewRequest q = request("line_lemniscate", {});
+  const std::string none = refusal(q);
+  EXPECT_NE(none.find("the line formation's file names no vehicle: its robots fly the ardrone2 vehicle file given to "
+                      "the formation node (~vehicle) or to formation_robot (--vehicle), and none was given"),
+            std::string::npos) << none;
+  using aurora_sim::Pioneer3dx;
+  q.vehicle.set<Pioneer3dx>(aurora_sim::loadVehicleFile<Pioneer3dx>(kConfig + "/vehicles/pioneer3dx.yaml"));
+  const std::string other = refusal(q);
+  EXPECT_NE(other.find("and a pioneer3dx's was given"), std::string::npos) << other;
+  const std::string file = kConfig + "/vehicles/ardrone2.yaml";
+  q.vehicle.set<aurora_sim::Ardrone2>(aurora_sim::loadVehicleFile<aurora_sim::Ardrone2>(file), file);
+  const auto crew = loadFormationCrew(q);
+  ASSERT_EQ(crew->robots(), 2);
+  for (int d = 0; d < 2; ++d) {
+    EXPECT_EQ(crew->robot(d).vehicle, "ardrone2");
+    EXPECT_EQ(crew->robot(d).vehicle_file, file);
+  }
 }

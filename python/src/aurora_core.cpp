@@ -217,7 +217,7 @@ py::dict formationShapeInfo() {
     info["robots"] = int(E::kRobots);
     info["names_its_vehicles"] = bool(E::kNamesItsVehicles);
     // A shape whose file names no vehicle flies the caller's: the type the crew takes (its default).
-    info["vehicle"] = E::kNamesItsVehicles ? std::string() : std::string(aurora_control::LawVehicle::name());
+    info["vehicle"] = unnamedVehicleName(e);
     info["laws"] = ownLawNames(e);
     out[py::str(E::name())] = info;
   });

@@ -106,7 +106,10 @@ FormationFlight flyFormationFiles(const FormationFlightOptions& o, const Formati
 
 FormationFlight flyFormationFiles(const FormationFile& file, const FormationFlightOptions& o,
                                   const FormationObserver& observe) {
-  const auto p = aurora_sim::loadVehicleFile<ArdroneLawData::Vehicle>(o.vehicle, "the formation's drones' laws");
+  // The flight's vehicle file, else the shipped one of the line's drones.
+  using Vehicle = LineShapeEntry::UnnamedVehicle;
+  const std::string vehicle = o.vehicle.empty() ? o.config_dir + "/vehicles/" + Vehicle::name() + ".yaml" : o.vehicle;
+  const auto p = aurora_sim::loadVehicleFile<Vehicle>(vehicle, "the formation's drones' laws");
   FormationFlight r{file, {}, p.Ts, 0, 0.0, {},
                     ArdroneLineJudge{FormationCriteria<double>::study(), false, p.Ts, {}, {}}};
   r.ticks = formationTicks(r.file.reference.duration, p.Ts);

@@ -8,6 +8,7 @@
 
 #include <memory>
 #include <string>
+#include <typeinfo>
 #include <vector>
 
 #include "aurora_control/formation/formation_controller.h"
@@ -85,14 +86,45 @@ class FormationCrew {
   long ticks_ = 0;
 };
 
+// The vehicle given to the robots of a shape whose file names none (its
+// entry's UnnamedVehicle, shapes.h: the two-drone line's AR.Drones): its
+// parameters as the node (~vehicle) or formation_robot (--vehicle) loaded
+// them, and the file they came from ("" for the node's parameters).
+class GivenVehicle {
+ public:
+  template <class Vehicle>
+  void set(const typename Vehicle::template Params<double>& p, const std::string& file = "") {
+    params_ = std::make_shared<const typename Vehicle::template Params<double>>(p);
+    type_ = &typeid(Vehicle);
+    name_ = Vehicle::name();
+    file_ = file;
+  }
+  // Refused when none, or another vehicle's, was given.
+  template <class Vehicle>
+  const typename Vehicle::template Params<double>& get(const std::string& shape) const {
+    if (!params_ || *type_ != typeid(Vehicle)) {
+      throw ConfigError("the " + shape + " formation's file names no vehicle: its robots fly the " +
+                        std::string(Vehicle::name()) + " vehicle file given to the formation node (~vehicle) or to "
+                        "formation_robot (--vehicle), and " + (params_ ? "a " + name_ + "'s" : std::string("none")) +
+                        " was given");
+    }
+    return *static_cast<const typename Vehicle::template Params<double>*>(params_.get());
+  }
+  const std::string& file() const { return file_; }
+
+ private:
+  std::shared_ptr<const void> params_;
+  const std::type_info* type_ = nullptr;
+  std::string name_, file_;
+};
+
 // What the node gives the reader: the formation file, the config folder
-// its paths are in, the two-drone line's drones' vehicle (its file names
-// none), each robot's delay (-1: the file's) and the parameter keys they
-// came from (named in refusals).
+// its paths are in, the vehicle of robots whose file names none, each
+// robot's delay (-1: the file's) and the parameter keys they came from
+// (named in refusals).
 struct CrewRequest {
   std::string file, config_dir;
-  LawVehicleParams line_vehicle{};
-  std::string line_vehicle_file;  // where line_vehicle came from (formation_robot's --vehicle), if from a file
+  GivenVehicle vehicle;
   std::vector<long> delays;
   std::vector<std::string> delay_keys;
 };

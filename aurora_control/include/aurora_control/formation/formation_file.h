@@ -37,6 +37,8 @@ inline std::vector<double> numbers(const YamlReader& r, const YAML::Node& n, con
   return v;
 }
 
+// The layer's gains at `key`: {k1: [N numbers], k2: [N numbers]}, either
+// left out keeping the shape's defaults; each in the formation gains' range.
 template <int N>
 void readGains(const YamlReader& r, const YAML::Node& n, const std::string& key, FormationGains<double, N>& g) {
   r.onlyKeys(n, key, {"k1", "k2"});

@@ -79,6 +79,25 @@ inline std::string shapeLawNames() {
   return names;
 }
 
+// Calls f(Vehicle()) with the vehicle of an entry whose file names its
+// robots none (kNamesItsVehicles false: its UnnamedVehicle, which the
+// flight's, the node's or formation_robot's vehicle file gives); nothing for
+// an entry whose file names them.
+template <class Entry, class F>
+typename std::enable_if<!Entry::kNamesItsVehicles>::type withUnnamedVehicle(Entry, F&& f) {
+  f(typename Entry::UnnamedVehicle());
+}
+template <class Entry, class F>
+typename std::enable_if<Entry::kNamesItsVehicles>::type withUnnamedVehicle(Entry, F&&) {}
+
+// That vehicle's type name ("" where the file names its robots').
+template <class Entry>
+std::string unnamedVehicleName(Entry e) {
+  std::string name;
+  withUnnamedVehicle(e, [&](auto vehicle) { name = decltype(vehicle)::name(); });
+  return name;
+}
+
 // Calls f(Entry()) for the shape named `shape`; false when none is.
 template <class F>
 bool withShapeNamed(const std::string& shape, F&& f) {

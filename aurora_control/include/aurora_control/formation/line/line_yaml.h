@@ -177,6 +177,7 @@ struct LineShapeEntry {
   using File = FormationFile;
   static constexpr int kRobots = 2;
   static constexpr bool kNamesItsVehicles = false;
+  using UnnamedVehicle = ArdroneLawData::Vehicle;  // its drones (withUnnamedVehicle, shapes.h)
   static const char* name() { return "line"; }
   static std::string robotKey(const std::string& what) { return "formation.drones[i]." + what; }
   static std::string lawRefusal() { return "the line's law is its file's formation.law"; }
