@@ -222,7 +222,8 @@ void withKernel(const SweepSpec& spec, F&& f) {
         });
       });
     } else if (spec.predicting()) {  // the AR.Drone's laws (cudaDelayProblem refuses the others)
-      aurora_control::withLaw(spec.law, [&](auto law) { f(StartOf<SweepStart<decltype(law), T, kCapacity, kLinked, true>>()); });
+      aurora_control::withLawOfNamed<aurora_control::ArdroneLawData>(
+          spec.controller, [&](auto law) { f(StartOf<SweepStart<decltype(law), T, kCapacity, kLinked, true>>()); });
     } else {
       withSweepLaw(spec, [&](auto law) { f(StartOf<SweepStart<decltype(law), T, kCapacity, kLinked>>()); });
     }

@@ -32,13 +32,20 @@ using test::study13;
 using test::widestIsa;
 using test::writeTemp;
 
+// The AR.Drone law the study's controller names.
+LawType studyLaw(const SweepSpec& spec) {
+  LawType law = LawType::kPdSaturated;
+  EXPECT_TRUE(aurora_control::lawFromName(spec.controller, law)) << spec.controller;
+  return law;
+}
+
 // The kernel's per-thread function (simulateCombination) on the host.
 std::vector<SimResult> runKernelBody(const SweepSpec& spec) {
   std::vector<SimResult> out;
   const auto setup = makeSetup<aurora_sim::Ardrone2, double>(spec);
   const GridView grid = spec.view();
   for (long i = 0; i < spec.size(); ++i) {
-    out.push_back(spec.law == LawType::kPdSaturated
+    out.push_back(studyLaw(spec) == LawType::kPdSaturated
                       ? simulateCombination<aurora_control::ArdroneLaw<aurora_control::LawType::kPdSaturated>, double, 64>(setup, grid, i)
                       : simulateCombination<aurora_control::ArdroneLaw<aurora_control::LawType::kUnderactuated>, double, 64>(setup, grid, i));
   }
@@ -84,7 +91,7 @@ double flagAgreement(const std::vector<SimResult>& a, const std::vector<SimResul
 
 TEST(Study13, TheShippedStudyVariesTwelveGainsAndTheDelay) {
   const SweepSpec spec = study13(64);
-  EXPECT_EQ(spec.law, LawType::kUnderactuated);
+  EXPECT_EQ(studyLaw(spec), LawType::kUnderactuated);
   EXPECT_EQ(spec.point_params.size(), 13u);
   EXPECT_EQ(spec.max_delay, 63);
   // Parameters of the result rows: the 12 gains and the delay, no model factor.
@@ -147,7 +154,7 @@ std::vector<std::vector<double>> sweepStates(const SweepSpec& spec, aurora_contr
   auto observe = [&](const aurora_control::FlightObservation& o) {
     states.emplace_back(o.after.model.X, o.after.model.X + aurora_sim::kStateSize);
   };
-  result = aurora_control::runStudy(spec.law, run, setup.config, observe);
+  result = aurora_control::runStudy(studyLaw(spec), run, setup.config, observe);
   return states;
 }
 
@@ -155,7 +162,7 @@ std::vector<std::vector<double>> sweepStates(const SweepSpec& spec, aurora_contr
 // controller node's core), with the law's defaults from the controller file.
 std::vector<std::vector<double>> flightStates(const SweepSpec& spec, aurora_control::FlightResult& result) {
   aurora_control::LawSettings<aurora_control::ArdroneLawData> set;
-  set.law = int(spec.law);
+  set.law = int(studyLaw(spec));
   set.gains.pd = {spec.fixed[kParamKp], spec.fixed[kParamKd]};
   set.vehicle = spec.paramsOf(aurora_sim::Ardrone2());
   set.delay = static_cast<long>(spec.fixed[kParamDelay]);

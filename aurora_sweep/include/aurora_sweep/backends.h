@@ -4,6 +4,7 @@
 
 #include <atomic>
 #include <functional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -53,11 +54,13 @@ FormationSetup<T, Shape, Data> makeFormationSetup(const SweepSpec& spec, const S
 }
 
 // Calls f(Law()) with the law type of a single-robot sweep's controller:
-// the law of the list (other_laws.h) of that name, else the AR.Drone's
-// spec.law (the one place a sweep's law is chosen by name).
+// the law of the list (other_laws.h) of that name (the one place a sweep's
+// law is chosen by name; the sweep file's reader refuses any other name).
 template <class F>
 void withSweepLaw(const SweepSpec& spec, F&& f) {
-  if (!aurora_common::withEntryNamed(aurora_control::KnownLaws(), spec.controller, f)) aurora_control::withLaw(spec.law, f);  // spec.law's
+  if (!aurora_control::withLawNamed(spec.controller, f)) {
+    throw std::logic_error("sweep: controller '" + spec.controller + "' is no law of this build");
+  }
 }
 
 // Calls f(T(), capacity, law): the sweep's precision, history capacity

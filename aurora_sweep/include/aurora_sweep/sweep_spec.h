@@ -36,8 +36,7 @@ using SweepRunOf = typename ShapeEntry::SweepRun;
 struct SweepSpec {
   std::string file;                 // the sweep file it came from
   std::string name;
-  std::string controller = "pd_saturated";                               // the law's name
-  aurora_control::LawType law = aurora_control::LawType::kPdSaturated;  // an AR.Drone law's
+  std::string controller = "pd_saturated";  // the law's name (a formation's: its robots', its entry's sweepFacts)
   // The vehicle the controller flies (its file: `vehicle:`, of that
   // `type:`): its parameters in its type's place of `vehicles`
   // (paramsOf); the AR.Drone's are a formation sweep's drones' too.
@@ -112,7 +111,7 @@ struct SweepSpec {
   }
   template <class Entry, class F>
   void withFormationOf(Entry, F&& f) const {
-    Entry::withRobotLaw(law, [&](auto l) { f(run<Entry>(), l); });
+    Entry::withRobotLaw(controller, [&](auto l) { f(run<Entry>(), l); });
   }
   // Where its parameters sit (combination.h): its entry's ParamShape's
   // (a single-robot sweep's: the line's).

@@ -505,7 +505,6 @@ void checkSweepLink(const Reader& r, SweepSpec& spec) {
 void readSweepVehicle(const Reader& r, const YAML::Node& s, const std::string& sweep_dir,
                       const std::string& config_dir, SweepSpec& spec) {
   if (s["controller"]) spec.controller = r.text(s["controller"], "sweep.controller");
-  lawFromName(spec.controller, spec.law);  // the AR.Drone's law type, when it is one of its two
   if (!aurora_control::isKnownLawName(spec.controller)) {
     r.fail("sweep.controller", "= '" + spec.controller + "' is not a known controller: accepted " +
                                    aurora_control::knownLawNames("'"));

@@ -65,7 +65,6 @@ void readSweepFormation(const aurora_control::YamlReader& r, const YAML::Node& s
     spec.shape = sweepShapeOf<Entry>();
     spec.run<Entry>() = Entry::sweepRun(shape_file, spec.vehicles);
     spec.formation_duration = facts.duration;
-    if (facts.names_law) spec.law = facts.law;
     spec.controller = facts.controller;
   });
   spec.formation_file = file;

@@ -128,14 +128,12 @@ inline void refuseStartHeight(const YamlReader& r, const std::string& key, const
 }  // namespace formation_detail
 
 // What a sweep of a shape's file records beside its run (aurora_sweep's
-// file reader): how long it flies, the controller its records name, its
-// robots' law where one law type flies them all (`names_law`), and why a
-// sweep refuses the file ("" where it flies it).
+// file reader): how long it flies, the controller its records name (its
+// robots' law where one law flies them all: the entry's withRobotLaw
+// chooses by it), and why a sweep refuses the file ("" where it flies it).
 struct ShapeSweepFacts {
   double duration = 0.0;  // [s]
   std::string controller;
-  bool names_law = false;
-  LawType law = LawType::kPdSaturated;
   std::string refusal;
 };
 

@@ -8,6 +8,7 @@
 #include <type_traits>
 
 #include "aurora_common/named_list.h"
+#include "aurora_common/refusal_text.h"
 
 #include "aurora_control/law/bebop2/bebop2_compensator.h"
 #include "aurora_control/law/ardrone2/control_law.h"
@@ -125,6 +126,19 @@ int lawIndexOf(const std::string& name) {
     ++i;
   });
   return found;
+}
+
+// Calls f(Law()) for the law of Data's family named `name`; refused
+// (naming the family's laws) when it has none of that name.
+template <class Data, class F>
+void withLawOfNamed(const std::string& name, F&& f) {
+  const int index = lawIndexOf<Data>(name);
+  if (index < 0) {
+    std::string names;
+    forEachLawOf<Data>([&](auto law) { names += (names.empty() ? "" : ", ") + std::string(law.name()); });
+    throw aurora_common::ConfigError("'" + name + "' is no law of these robots: accepted " + names);
+  }
+  withLawOf<Data>(index, f);
 }
 
 // The AR.Drone's two laws are its family in LawType's order (the line

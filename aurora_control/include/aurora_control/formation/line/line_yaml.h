@@ -195,13 +195,11 @@ struct LineShapeEntry {
   static ShapeSweepFacts sweepFacts(const File& f) {
     ShapeSweepFacts facts;
     facts.duration = f.reference.duration;
-    facts.names_law = true;
-    facts.law = LawType(f.drones[0].controller.law);
-    facts.controller = lawName(facts.law);
+    facts.controller = lawNameOf(f.drones[0].controller);
     return facts;
   }
   template <class F>
-  static void withRobotLaw(LawType law, F&& f) { withLaw(law, f); }
+  static void withRobotLaw(const std::string& controller, F&& f) { withLawOfNamed<ArdroneLawData>(controller, f); }
   using ParamShape = Shape;
   static constexpr int kSweepLaws = 0;
   static std::string sweepLawNames() { return ""; }

@@ -203,9 +203,7 @@ struct TriangleShapeEntry {
   static ShapeSweepFacts sweepFacts(const File& s) {
     ShapeSweepFacts facts;
     facts.duration = s.duration;
-    facts.names_law = true;
-    facts.law = LawType::kUnderactuated;
-    facts.controller = lawName(facts.law);
+    facts.controller = TriangleDroneLaw::name();
     if (s.kinematic) {
       facts.refusal = "has kinematic robots (no formation.robots.vehicle): a sweep flies robots with a law; give its "
                       "robots a vehicle (config/formations/triangle_ardrones.yaml)";
@@ -213,7 +211,7 @@ struct TriangleShapeEntry {
     return facts;
   }
   template <class F>
-  static void withRobotLaw(LawType, F&& f) { f(TriangleDroneLaw()); }
+  static void withRobotLaw(const std::string&, F&& f) { f(TriangleDroneLaw()); }
   using ParamShape = Shape;
   static constexpr int kSweepLaws = 5;
   static std::string sweepLawNames() { return triangleLawNames(); }

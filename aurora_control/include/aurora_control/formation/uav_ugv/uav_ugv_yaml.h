@@ -153,7 +153,7 @@ struct UavUgvShapeEntry {
     return facts;
   }
   template <class F>
-  static void withRobotLaw(LawType, F&& f) { f(UavUgvRobots()); }
+  static void withRobotLaw(const std::string&, F&& f) { f(UavUgvRobots()); }
   using ParamShape = LineFormation<double>;
   static constexpr int kSweepLaws = 0;
   static std::string sweepLawNames() { return ""; }
