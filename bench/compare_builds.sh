@@ -15,7 +15,7 @@ fi
 OLD=$1
 NEW=$2
 ROUNDS=${3:-5}
-SWEEP=${4:+$(realpath "$4")}
+SWEEP=$4
 source "$(dirname "$0")/two_builds.sh"
 SWEEP=${SWEEP:-config/sweeps/positioning_delay.yaml}
 OUT=$(mktemp -d /tmp/aurora_compare_builds.XXXXXX)

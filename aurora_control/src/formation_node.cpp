@@ -51,10 +51,8 @@ void FormationNode::loadCrew() {
   q.file = aurora_common::requireParam<std::string>(pnh_, "formation_file", "a formation file (config/formations/NAME.yaml)");
   q.config_dir = aurora_common::paramOr<std::string>(pnh_, "config_dir", "");
   const FormationDocument file = loadFormationDocument(q.file, q.config_dir);
-  withShapeNamed(file.shape, [&](auto e) {  // a shape whose file names no vehicle flies ~vehicle's
-    withUnnamedVehicle(e, [&](auto v) {
-      q.vehicle.set<decltype(v)>(aurora_sim::loadVehicleParams<decltype(v)>(pnh_, "vehicle"));
-    });
+  withUnnamedVehicleOf(file.shape, [&](auto v) {  // a shape whose file names no vehicle flies ~vehicle's
+    q.vehicle.set<decltype(v)>(aurora_sim::loadVehicleParams<decltype(v)>(pnh_, "vehicle"));
   });
   for (int d = 0; d < kMaxCrew; ++d) {
     const std::string key = "delay_" + std::to_string(d + 1);

@@ -68,10 +68,8 @@ int run(const Options& o) {
   CrewRequest q;
   q.file = o.formation, q.config_dir = o.config_dir;
   const FormationDocument file = loadFormationDocument(q.file, q.config_dir);
-  withShapeNamed(file.shape, [&](auto e) {  // a shape whose file names no vehicle flies --vehicle's
-    withUnnamedVehicle(e, [&](auto v) {
-      if (!o.vehicle.empty()) q.vehicle.set<decltype(v)>(aurora_sim::loadVehicleFile<decltype(v)>(o.vehicle), o.vehicle);
-    });
+  withUnnamedVehicleOf(file.shape, [&](auto v) {  // a shape whose file names no vehicle flies --vehicle's
+    if (!o.vehicle.empty()) q.vehicle.set<decltype(v)>(aurora_sim::loadVehicleFile<decltype(v)>(o.vehicle), o.vehicle);
   });
   const auto crew = loadFormationCrew(q, file);
   if (o.robot < 1 || o.robot > crew->robots()) {

@@ -12,14 +12,12 @@ std::unique_ptr<FormationCrew> LineShapeEntry::crew(const File& f, const CrewReq
   const auto& vehicle = q.vehicle.get<UnnamedVehicle>(name());
   ArdroneLineRun run = formationRun(f, vehicle);
   const double Ts = vehicle.Ts;
-  requestedDelays(q, 2, Ts, formationTicks(run.reference.duration, Ts), [&](int r) -> FormationDrone<double, aurora_control::ArdroneLawData>& {
-    return run.drone[r];
-  });
+  const long ticks = formationTicks(run.reference.duration, Ts);
+  requestedDelays(q, 2, Ts, ticks, [&](int r) -> FormationDrone<double, ArdroneLawData>& { return run.drone[r]; });
   const LawSettings<ArdroneLawData>& law = f.drones[0].controller;  // the robots' law; gains and models: the run's
   return std::unique_ptr<FormationCrew>(new CrewOf<LineFormation<double>, LawSettings<ArdroneLawData>>(
       run, law, name(), std::string(formationLawName(f.law)) + ", drones: " + lawNameOf(law),
-      {f.drones[0].name_space, f.drones[1].name_space}, {q.vehicle.file(), q.vehicle.file()},
-      formationTicks(run.reference.duration, Ts)));
+      {f.drones[0].name_space, f.drones[1].name_space}, {q.vehicle.file(), q.vehicle.file()}, ticks));
 }
 
 }  // namespace aurora_control

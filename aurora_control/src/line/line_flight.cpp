@@ -10,6 +10,7 @@
 
 #include "aurora_common/number_text.h"
 #include "aurora_control/formation/formation_judge.h"
+#include "aurora_control/params/shipped_files.h"
 #include "aurora_sim/vehicle/vehicle_yaml.h"
 
 namespace aurora_control {
@@ -108,7 +109,7 @@ FormationFlight flyFormationFiles(const FormationFile& file, const FormationFlig
                                   const FormationObserver& observe) {
   // The flight's vehicle file, else the shipped one of the line's drones.
   using Vehicle = LineShapeEntry::UnnamedVehicle;
-  const std::string vehicle = o.vehicle.empty() ? o.config_dir + "/vehicles/" + Vehicle::name() + ".yaml" : o.vehicle;
+  const std::string vehicle = o.vehicle.empty() ? shippedOrPath(Vehicle::name(), o.config_dir, "vehicles") : o.vehicle;
   const auto p = aurora_sim::loadVehicleFile<Vehicle>(vehicle, "the formation's drones' laws");
   FormationFlight r{file, {}, p.Ts, 0, 0.0, {},
                     ArdroneLineJudge{FormationCriteria<double>::study(), false, p.Ts, {}, {}}};

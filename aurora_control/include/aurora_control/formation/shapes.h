@@ -104,6 +104,14 @@ bool withShapeNamed(const std::string& shape, F&& f) {
   return aurora_common::withEntryNamed(KnownShapes(), shape, f);
 }
 
+// withUnnamedVehicle of the shape named `shape` (nothing for an unknown
+// shape: its file's reader refuses it): the node's ~vehicle and
+// formation_robot's --vehicle are read as that type.
+template <class F>
+void withUnnamedVehicleOf(const std::string& shape, F&& f) {
+  withShapeNamed(shape, [&](auto e) { withUnnamedVehicle(e, f); });
+}
+
 // Why `shape` is no shape this build knows ("" when it is one), after
 // its key's name: "is missing: accepted ...", "= 'x' is unknown: ...".
 inline std::string unknownShapeRefusal(const std::string& shape) {

@@ -132,13 +132,11 @@ int lawIndexOf(const std::string& name) {
 // (naming the family's laws) when it has none of that name.
 template <class Data, class F>
 void withLawOfNamed(const std::string& name, F&& f) {
-  const int index = lawIndexOf<Data>(name);
-  if (index < 0) {
-    std::string names;
-    forEachLawOf<Data>([&](auto law) { names += (names.empty() ? "" : ", ") + std::string(law.name()); });
-    throw aurora_common::ConfigError("'" + name + "' is no law of these robots: accepted " + names);
+  const auto family = [](auto&& each) { forEachLawOf<Data>(each); };
+  if (!aurora_common::withEntryNamed(family, name, f)) {
+    throw aurora_common::ConfigError("'" + name + "' is no law of these robots: accepted " +
+                                     aurora_common::entryNames(family));
   }
-  withLawOf<Data>(index, f);
 }
 
 // The AR.Drone's two laws are its family in LawType's order (the line
