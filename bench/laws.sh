@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# The two control laws side by side (figures measured, never asserted):
-# cost per call of each law (scalar double, same run), and lockstep speed of
-# the whole ROS loop with each law (60 s mission4, sim + controller).
+# The control laws side by side (figures measured, never asserted): cost per
+# call of every law this build knows (scalar double, same run, each on its
+# own vehicle's flight: law_cost), and lockstep speed of the whole ROS loop
+# with each AR.Drone law (60 s mission4, sim + controller).
 set -eo pipefail
 BUILD=${1:-build}
 source "$(dirname "$0")/workspace.sh"

@@ -1,63 +1,96 @@
-// Cost per call of the two control laws, side by side in one run (scalar
-// double): each law is evaluated on the 1801 states of a recorded mission
-// flight, in alternating rounds; the median per-call time of each and their
-// ratio are printed. Measured, never asserted (bench/laws.sh runs it).
+// Cost per call of every control law this build knows (law/other_laws.h),
+// side by side in one run (scalar double): each law is called on the
+// (received state, reference) pairs of its own flight (lawCalls), in
+// alternating rounds; the median per-call time of each and its ratio to the
+// first law's are printed. Measured, never asserted (bench/laws.sh runs it).
 #include <algorithm>
-#include <array>
 #include <chrono>
 #include <cstdio>
+#include <functional>
+#include <string>
 #include <vector>
 
-#include "aurora_control/loop/ardrone_study.h"
-#include "aurora_control/loop/flight_runner.h"
-#include "aurora_control/law/ardrone2/pd_controller.h"
-#include "aurora_control/loop/closed_loop.h"
-#include "aurora_control/law/ardrone2/underactuated_law.h"
+#include "aurora_common/ros/config_dir.h"
+#include "aurora_control/loop/flight_setup.h"
+#include "aurora_control/params/shipped_files.h"
 
 using namespace aurora_control;
 
+namespace {
+
+constexpr int kRounds = 41;
+
+// A law's calls: one round over its flight's pairs gives ns per call.
+struct LawCalls {
+  std::string name;
+  std::function<double(double& sink)> round;
+  size_t calls = 0;
+  std::vector<double> ns;
+};
+
+// Law's flight to the waypoint (2, 1, h) for 60 s, h 1.5 m or its
+// vehicle's task height (a ground robot's: 0), with its shipped controller
+// and vehicle files: the (received state, reference) pair of each step.
+template <class Law>
+LawCalls lawCalls(const std::string& config) {
+  using Vehicle = typename Law::Vehicle;
+  const auto vehicle = aurora_sim::loadVehicleFile<Vehicle>(shippedOrPath(Vehicle::name(), config, "vehicles"));
+  const LawFile<Law> file = readLawFile<Law>(shippedOrPath(Law::name(), config, "controllers"), vehicle.Ts);
+  const TaskHeights heights = TaskHeights::of<Vehicle>();
+  RunnerConfig<double> cfg;
+  cfg.task.waypoints = WaypointTask<double>::singlePoint(2.0, 1.0, std::min(std::max(1.5, heights.min), heights.max), 60.0);
+  const StudyRun<typename Law::Data, double> run{vehicle, vehicle, file.gains, 0};
+  struct Pair {
+    double X[Vehicle::kStates];
+    Reference<double> ref;
+  };
+  std::vector<Pair> pairs;
+  flyLaw<Law>(run, cfg, studyIterationCount(60.0, vehicle.Ts), [&](const LoopObservation<Vehicle, double>& o, double) {
+    Pair p;
+    std::copy(o.xc, o.xc + Vehicle::kStates, p.X);
+    p.ref = o.step.ref;
+    pairs.push_back(p);
+  });
+  LawCalls c;
+  c.name = Law::name();
+  c.calls = pairs.size();
+  c.round = [run, pairs](double& sink) {
+    typename Law::template Memory<double> memory;
+    memory.reset();
+    const auto t0 = std::chrono::steady_clock::now();
+    for (const Pair& p : pairs) {
+      double U[Vehicle::kInputs], err[3];
+      Law::command(run.model, run.gains, memory, p.ref, p.X, U, err);
+      sink += U[0];
+    }
+    const auto t1 = std::chrono::steady_clock::now();
+    return std::chrono::duration<double, std::nano>(t1 - t0).count() / double(pairs.size());
+  };
+  return c;
+}
+
+double median(std::vector<double> v) {
+  std::nth_element(v.begin(), v.begin() + long(v.size() / 2), v.end());
+  return v[v.size() / 2];
+}
+
+}  // namespace
+
 int main() {
-  const auto p = aurora_sim::referenceArdrone2Params();
-  Task<double> task;
-  task.waypoints = WaypointTask<double>::singlePoint(2.0, 1.0, 2.0, 60.0);
-  auto set = LawSettings<ArdroneLawData>::flying<ArdroneLaw<LawType::kUnderactuated>>();
-  set.vehicle = p;
-  std::vector<std::array<double, aurora_sim::kStateSize>> states;
-  runFlight(p, set, task, studyIterationCount(60.0, p.Ts),
-            [&](const FlightObservation& o, double) {
-              std::array<double, aurora_sim::kStateSize> x;
-              std::copy(o.after.model.X, o.after.model.X + aurora_sim::kStateSize, x.begin());
-              states.push_back(x);
-            });
-  const PdGains<double> pd{0.5, 0.85};
-  const auto ua = UnderactuatedGains<double>::defaults();
-  const double Xd[aurora_sim::kStateSize] = {2, 1, 2, 0, 0, 0, 0, 0, 0, 0, 0, 0};
-  const double zero[6] = {0, 0, 0, 0, 0, 0};
+  const std::string config = aurora_common::configDir();
+  std::vector<LawCalls> laws;
+  forEachLaw([&](auto law) { laws.push_back(lawCalls<decltype(law)>(config)); });
   double sink = 0.0;
-  std::vector<double> t_pd, t_ua;
-  for (int round = 0; round < 41; ++round) {
-    auto t0 = std::chrono::steady_clock::now();
-    for (const auto& x : states) {
-      double U[4], err[3];
-      pdSaturatedLaw(pd, Xd, zero, zero, x.data(), x.data() + aurora_sim::kVx, U, err);
-      sink += U[0];
-    }
-    auto t1 = std::chrono::steady_clock::now();
-    UnderactuatedMemory<double> mem;
-    mem.reset();
-    for (const auto& x : states) {
-      double U[4];
-      underactuatedCommand(p, ua, mem, Xd, zero, x.data(), U);
-      sink += U[0];
-    }
-    auto t2 = std::chrono::steady_clock::now();
-    t_pd.push_back(std::chrono::duration<double, std::nano>(t1 - t0).count() / states.size());
-    t_ua.push_back(std::chrono::duration<double, std::nano>(t2 - t1).count() / states.size());
+  for (int round = 0; round < kRounds; ++round) {
+    for (LawCalls& c : laws) c.ns.push_back(c.round(sink));
   }
-  std::nth_element(t_pd.begin(), t_pd.begin() + 20, t_pd.end());
-  std::nth_element(t_ua.begin(), t_ua.begin() + 20, t_ua.end());
-  std::printf("law cost per call (scalar double, median of 41 alternating rounds over %zu states):\n"
-              "  pd_saturated   %8.1f ns\n  underactuated  %8.1f ns\n  ratio          %8.2fx\n",
-              states.size(), t_pd[20], t_ua[20], t_ua[20] / t_pd[20]);
+  std::printf("law cost per call (scalar double, median of %d alternating rounds over each law's 60 s flight):\n",
+              kRounds);
+  const double first = median(laws.front().ns);
+  for (const LawCalls& c : laws) {
+    const double ns = median(c.ns);
+    std::printf("  %-20s %8.1f ns  %6.2fx %s  (%zu calls)\n", c.name.c_str(), ns, ns / first,
+                laws.front().name.c_str(), c.calls);
+  }
   return sink == 12345.0;  // keeps the loops from being optimised away
 }

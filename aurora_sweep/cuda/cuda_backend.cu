@@ -201,6 +201,38 @@ struct ShapeTemplateOf<aurora_control::FormationRun<T, Shape<T>, Data>> {
   using Start = FormationStart<Law, Shape, U, Capacity, Linked, Predicted>;
 };
 
+// Whether this backend has predicting kernels (sweep.predictor) for law
+// Law: its family's data declares kGpuPredictor (each family's kernels cost
+// build time); the others' predicting sweeps run on the cpu backends.
+template <class Data>
+constexpr bool gpuPredicts(decltype(Data::kGpuPredictor)*) {
+  return Data::kGpuPredictor;
+}
+template <class Data>
+constexpr bool gpuPredicts(...) {
+  return false;
+}
+template <class Law>
+using GpuPredicts = std::integral_constant<bool, gpuPredicts<typename Law::Data>(nullptr)>;
+
+// f(Law()) where Law has predicting kernels (cudaDelayProblem refused the
+// others before a kernel is chosen).
+template <class Law, class F>
+void withPredictingLaw(std::true_type, Law law, F& f) {
+  f(law);
+}
+template <class Law, class F>
+void withPredictingLaw(std::false_type, Law, F&) {}
+
+// The laws with predicting kernels, comma separated.
+std::string gpuPredictingLaws() {
+  std::string names;
+  aurora_control::forEachLaw([&](auto law) {
+    if (GpuPredicts<decltype(law)>::value) names += (names.empty() ? "" : ", ") + std::string(law.name());
+  });
+  return names;
+}
+
 // A kernel's start as a type, without preparing it.
 template <class Start>
 struct StartOf {
@@ -221,9 +253,9 @@ void withKernel(const SweepSpec& spec, F&& f) {
           f(StartOf<typename Shape::template Start<decltype(law), T, kCapacity, kLinked, decltype(predicted)::value>>());
         });
       });
-    } else if (spec.predicting()) {  // the AR.Drone's laws (cudaDelayProblem refuses the others)
-      aurora_control::withLawOfNamed<aurora_control::ArdroneLawData>(
-          spec.controller, [&](auto law) { f(StartOf<SweepStart<decltype(law), T, kCapacity, kLinked, true>>()); });
+    } else if (spec.predicting()) {
+      const auto start = [&](auto law) { f(StartOf<SweepStart<decltype(law), T, kCapacity, kLinked, true>>()); };
+      withSweepLaw(spec, [&](auto law) { withPredictingLaw(GpuPredicts<decltype(law)>(), law, start); });
     } else {
       withSweepLaw(spec, [&](auto law) { f(StartOf<SweepStart<decltype(law), T, kCapacity, kLinked>>()); });
     }
@@ -381,13 +413,11 @@ CudaDevice probeCudaDevice() {
 long cudaMaxDelay() { return aurora_control::kMediumHistory - 1; }
 
 std::string cudaDelayProblem(const SweepSpec& spec) {
-  bool other_vehicle = false;  // withSweepLaw's choice: a law of another family than the AR.Drone's
-  aurora_control::withLawNamed(spec.controller, [&](auto law) {
-    other_vehicle = !std::is_same<typename decltype(law)::Data, aurora_control::ArdroneLawData>::value;
-  });
-  if (spec.predicting() && other_vehicle) {
-    return "the state predictor (sweep.predictor) has CUDA kernels for the AR.Drone's laws only, not " +
-           spec.controller + "'s: use --backend cpu";
+  bool predicts = false;  // withSweepLaw's choice has predicting kernels
+  aurora_control::withLawNamed(spec.controller, [&](auto law) { predicts = GpuPredicts<decltype(law)>::value; });
+  if (spec.predicting() && !predicts) {
+    return "the state predictor (sweep.predictor) has CUDA kernels for the laws " + gpuPredictingLaws() +
+           " only, not " + spec.controller + ": use --backend cpu";
   }
   if (spec.historyNeeded() <= cudaMaxDelay()) return "";
   return "the cuda backend holds delays (with a link's jitter) up to " + std::to_string(cudaMaxDelay()) +

@@ -357,7 +357,7 @@ TEST(CudaBackend, TheSweepProgramOnTheCudaBackend) {
 // entry is tested on the host: SweepPredictor.*); another vehicle's law with
 // a predictor is refused before any device is asked, naming it (on every
 // machine with the CUDA build).
-TEST(CudaBackend, ThePredictorsKernelsAreTheArdronesLaws) {
+TEST(CudaBackend, PredictingKernelsAreThoseOfTheLawsThatDeclareThem) {
   const std::string c = AURORA_CONFIG_DIR;
   for (const char* study : {"positioning_delay_predictor", "positioning_delay_wifi_congested_predictor",
                             "predictor_robustness"}) {
@@ -367,7 +367,8 @@ TEST(CudaBackend, ThePredictorsKernelsAreTheArdronesLaws) {
       "sweep:\n  controller: bebop2_compensator\n  task: tasks/bebop2_waypoints.yaml\n"
       "  parameters:\n    delay: {values: [0, 3]}\n  predictor: {form: smith}\n"), c);
   ASSERT_TRUE(bebop.predicting());
-  EXPECT_NE(cudaDelayProblem(bebop).find("has CUDA kernels for the AR.Drone's laws only, not bebop2_compensator's"),
+  EXPECT_NE(cudaDelayProblem(bebop).find("has CUDA kernels for the laws pd_saturated, underactuated only, not "
+                                         "bebop2_compensator: use --backend cpu"),
             std::string::npos) << cudaDelayProblem(bebop);
 }
 

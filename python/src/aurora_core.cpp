@@ -122,21 +122,22 @@ py::dict formationMetrics(const FormationFlight& r) {
 // held reference; Q of those positions and the layer's held Qd.
 py::dict simulateFormationFiles(const std::string& formation, const std::string& vehicle, const std::vector<long>& delays,
                                 const std::string& config_dir) {
+  using Drone = LineShapeEntry::UnnamedVehicle;  // the line's drones
   FormationFlightOptions o;
   o.formation = formation, o.vehicle = vehicle, o.delays = delays, o.config_dir = config_dir;
   std::vector<double> t, X, U, R, Q, Qd;  // filled by the run, then moved into arrays of the run's length
   FormationFlight r;
   {
     py::gil_scoped_release unlocked;
-    r = flyFormationFiles(o, [&](const ArdroneLineObservation& obs, double Ts) {
+    r = flyFormationFiles(o, [&](const auto& obs, double Ts) {
       t.push_back(taskTime(double(obs.k), Ts));
       double P[6], q[6];
       for (int d = 0; d < 2; ++d) {
-        X.insert(X.end(), obs.X_before[d], obs.X_before[d] + 12);
-        U.insert(U.end(), obs.steps[d].U, obs.steps[d].U + 4);
+        X.insert(X.end(), obs.X_before[d], obs.X_before[d] + Drone::kStates);
+        U.insert(U.end(), obs.steps[d].U, obs.steps[d].U + Drone::kInputs);
         R.insert(R.end(), obs.steps[d].ref.pos, obs.steps[d].ref.pos + 3);
       }
-      dronePositions<LineFormation<double>, aurora_control::ArdroneLawData::Vehicle>(obs.X_before, P);
+      dronePositions<LineFormation<double>, Drone>(obs.X_before, P);
       LineFormation<double>::variables(P, q);
       Q.insert(Q.end(), q, q + 6);
       Qd.insert(Qd.end(), obs.layer.Qd(), obs.layer.Qd() + 6);
@@ -150,7 +151,8 @@ py::dict simulateFormationFiles(const std::string& formation, const std::string&
   };
   py::dict out;
   out["t"] = array(t, {n});
-  out["states"] = array(X, {n, 2, 12}), out["commands"] = array(U, {n, 2, 4}), out["reference"] = array(R, {n, 2, 3});
+  out["states"] = array(X, {n, 2, Drone::kStates}), out["commands"] = array(U, {n, 2, Drone::kInputs});
+  out["reference"] = array(R, {n, 2, 3});
   out["Q"] = array(Q, {n, 6}), out["Qd"] = array(Qd, {n, 6});
   out["metrics"] = formationMetrics(r);
   out["sample_time"] = r.Ts;

@@ -225,18 +225,35 @@ AURORA_HD inline long flyFormation(const aurora_control::FormationRun<T, Shape, 
                                                   std::make_index_sequence<Shape::kDrones>());
 }
 
-// Calls f(std::true_type()) when a robot of `run` flies with a predictor
-// (its controller file's), else f(std::false_type()): the one place a
-// formation sweep's backends choose. The AR.Drones' formations only (the
-// two-drone line, the triangle): no other shape's file gives a predictor.
-template <typename T, class Shape, class F>
-void withFormationPredictor(const aurora_control::FormationRun<T, Shape, aurora_control::ArdroneLawData>& run, F&& f) {
+namespace formation_predictor_detail {
+template <class Data>
+constexpr bool predicts(decltype(Data::kPredicts)*) {
+  return Data::kPredicts;
+}
+template <class Data>
+constexpr bool predicts(...) {
+  return true;
+}
+template <typename T, class Shape, class Data, class F>
+void withPredictor(std::true_type, const aurora_control::FormationRun<T, Shape, Data>& run, F&& f) {
   if (aurora_control::anyPredictor(run)) return f(std::true_type());
   f(std::false_type());
 }
 template <typename T, class Shape, class Data, class F>
-void withFormationPredictor(const aurora_control::FormationRun<T, Shape, Data>&, F&& f) {
+void withPredictor(std::false_type, const aurora_control::FormationRun<T, Shape, Data>&, F&& f) {
   f(std::false_type());
+}
+}  // namespace formation_predictor_detail
+
+// Calls f(std::true_type()) when a robot of `run` flies with a predictor
+// (its controller file's), else f(std::false_type()): the one place a
+// formation sweep's backends choose. Robots whose law data declares
+// kPredicts false (a mixed crew's, either_law.h) fly without: no predicted
+// code is built for them.
+template <typename T, class Shape, class Data, class F>
+void withFormationPredictor(const aurora_control::FormationRun<T, Shape, Data>& run, F&& f) {
+  using Predicts = std::integral_constant<bool, formation_predictor_detail::predicts<Data>(nullptr)>;
+  formation_predictor_detail::withPredictor(Predicts(), run, f);
 }
 
 // Formation `index` of the sweep (over its drones' links when `Linked`),

@@ -8,7 +8,6 @@
 #include <vector>
 
 #include "aurora_control/formation/shapes.h"
-#include "aurora_control/law/ardrone2/control_law.h"
 #include "aurora_sweep/combination.h"
 
 namespace aurora_sweep {
@@ -70,10 +69,6 @@ inline const char* paramName(int id, SweepShape shape) { return paramInfo(id, sh
 // values and its robots' own gains instead (SweepSpec::accepts; its
 // acceptedNames lists them).
 bool paramApplies(const ParamInfo& info, const std::string& controller, SweepShape shape);
-// "pd_saturated" / "underactuated" (control_law.h).
-using aurora_control::lawFromName;
-using aurora_control::lawName;
-
 // The value of a parameter a sweep file leaves out: the underactuated law's
 // gains default to the spec's (UnderactuatedGains::defaults), the other
 // vehicles' laws' gains to their defaults (sweep_gains.h), model factors

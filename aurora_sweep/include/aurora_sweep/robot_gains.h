@@ -12,7 +12,6 @@
 #include <vector>
 
 #include "aurora_common/host_device.h"
-#include "aurora_control/law/ardrone2/control_law.h"
 #include "aurora_control/law/either_law.h"
 #include "aurora_control/law/law_gain_rows.h"
 #include "aurora_control/params/limits.h"

@@ -10,7 +10,6 @@
 #pragma once
 
 #include "aurora_common/host_device.h"
-#include "aurora_control/law/ardrone2/control_law.h"
 #include "aurora_control/law/law_gain_rows.h"
 #include "aurora_control/law/other_laws.h"
 #include "aurora_sweep/combination.h"
@@ -22,8 +21,8 @@ using LawGainRow = aurora_control::GainRow;
 
 namespace sweep_gains_detail {
 // Each law of the list that shares `Data` gives its block into the gains
-// (the AR.Drone's two laws share theirs: kp, kd and the underactuated
-// law's 12 set one LawGains).
+// (laws that share a Data share one gains struct: each law's block sets
+// its own part of it).
 template <class Data, class List>
 struct GiveShared;
 template <class Data>

@@ -13,7 +13,7 @@
 
 #include <vector>
 
-#include "aurora_control/law/ardrone2/control_law.h"
+#include "aurora_control/law/law_sample.h"
 #include "gather_lanes.h"
 #include "lane_links.h"
 

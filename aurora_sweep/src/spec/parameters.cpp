@@ -8,7 +8,6 @@
 #include "aurora_control/params/limits.h"
 #include "aurora_control/link/link.h"
 #include "aurora_control/params/parameter_table.h"
-#include "aurora_control/law/ardrone2/underactuated_law.h"
 #include "aurora_sim/vehicle/vehicle_type.h"
 #include "aurora_sweep/sweep_gains.h"
 
@@ -33,7 +32,7 @@ void addShapeParams(std::vector<ParamInfo>& t) {
                       "whole samples of Ts, the histories' limit", true};
   }
   for (int i = 0; i < at.variables; ++i) {
-    const std::string limit = "a formation gain: positive, as the underactuated law's";
+    const std::string limit = "a formation gain: positive, the formation layer's range";
     t[at.k1(i)] = {std::string("formation_k1_") + Shape::gainName(i), ParamGroup::kFormationGain,
                    kFormationGainMin, kFormationGainMax, limit};
     t[at.k2(i)] = {std::string("formation_k2_") + Shape::gainName(i), ParamGroup::kFormationGain,

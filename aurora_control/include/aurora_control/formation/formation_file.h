@@ -95,7 +95,7 @@ inline std::string namespaceAt(const YamlReader& r, const YAML::Node& n, const s
   const std::string name = r.text(n, key);
   bool ok = !name.empty() && std::isalpha(static_cast<unsigned char>(name[0]));
   for (char c : name) ok = ok && (std::isalnum(static_cast<unsigned char>(c)) || c == '_');
-  if (!ok) r.fail(key, "= '" + name + "' is not a namespace: accepted a letter, then letters, digits or '_' (ardrone1, bebop2)");
+  if (!ok) r.fail(key, "= '" + name + "' is not a namespace: accepted a letter, then letters, digits or '_' (drone1, ugv_2)");
   return name;
 }
 

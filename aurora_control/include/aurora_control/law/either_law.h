@@ -40,6 +40,10 @@ template <class First, class Second>
 struct EitherLaw {
   using Vehicle = aurora_sim::EitherVehicle<typename First::Vehicle, typename Second::Vehicle>;
   using Data = EitherLaw;
+  // No predictor (docs/predictor.md) for a mixed crew: no shape's reader
+  // gives one (uav_ugv_yaml.h), and the sweeps build no predicted code for
+  // it (formation_simulation.h, withFormationPredictor).
+  static constexpr bool kPredicts = false;
   template <typename T>
   using Gains = EitherGains<T, typename First::Data, typename Second::Data>;
   template <typename T>

@@ -10,11 +10,11 @@
 // (controllerCommand, through DelayedController), the sim node the drone's
 // (aurora_sim/vehicle/vehicle_half.h, its clamp and step, which droneHalf
 // calls).
-// Generic in the law and its vehicle (control_law.h's ArdroneLaw,
-// aurora_sim/vehicle/ardrone2/ardrone2.h).
+// Generic in the law and its vehicle (docs/architecture.md, "Laws" and
+// "Vehicles": the lists of law/other_laws.h and vehicle_type.h).
 #pragma once
 
-#include "aurora_control/law/ardrone2/control_law.h"
+#include "aurora_control/law/law_sample.h"
 #include "aurora_control/loop/delay_buffer.h"
 #include "aurora_control/loop/feasibility.h"
 #include "aurora_control/task/task.h"

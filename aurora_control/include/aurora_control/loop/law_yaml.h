@@ -22,6 +22,12 @@
 
 namespace aurora_control {
 
+// The name under 'controller:' of a controller file ("" when it has none):
+// what chooses the vehicle a flight flies.
+inline std::string controllerFileName(const std::string& path) {
+  return aurora_common::yamlFileWord("controller file", path, "controller", "name");
+}
+
 namespace law_yaml_detail {
 template <class Law>
 constexpr bool rows(decltype(&Law::gainAt)) {

@@ -84,26 +84,6 @@ struct LawInput<LawType::kUnderactuated> {
   AURORA_HD static constexpr int state(int j) { return j; }
 };
 
-// The part of a state law `Law` reads (one delay-history entry): Law::Input
-// names kWidth components of its vehicle's state.
-template <typename T, class Law>
-struct LawSample {
-  static constexpr int kStates = Law::Vehicle::kStates;
-  static constexpr int kWidth = Law::Input::kWidth;
-  T v[kWidth];
-
-  AURORA_HD static LawSample fromState(const T X[kStates]) {
-    LawSample s;
-    for (int j = 0; j < kWidth; ++j) s.v[j] = X[Law::Input::state(j)];
-    return s;
-  }
-  // Back into a whole state (components the law does not read are 0).
-  AURORA_HD void toState(T X[kStates]) const {
-    for (int i = 0; i < kStates; ++i) X[i] = T(0);
-    for (int j = 0; j < kWidth; ++j) X[Law::Input::state(j)] = v[j];
-  }
-};
-
 // The underactuated law's desired state and feed-forward from a reference:
 // position, velocity, yaw and yaw rate; accelerations and yaw acceleration.
 template <typename T>
@@ -146,6 +126,9 @@ AURORA_HD inline void lawCommand(const aurora_sim::ArdroneParams<T>& model, cons
 // picks its law at run time keeps one type of state.
 struct ArdroneLawData {
   using Data = ArdroneLawData;
+  // The CUDA backend builds predicting kernels for these laws
+  // (cuda_backend.cu, GpuPredicts): the thesis's predictor studies.
+  static constexpr bool kGpuPredictor = true;
   using Vehicle = aurora_sim::Ardrone2;
   template <typename T>
   using Gains = LawGains<T>;

@@ -7,7 +7,7 @@
 
 #include <string>
 
-#include "aurora_control/law/bebop2/compensator_yaml.h"
+#include "aurora_control/law/gain_lists_yaml.h"
 #include "aurora_control/law/pioneer3dx/pioneer_laws.h"
 
 namespace aurora_control {
