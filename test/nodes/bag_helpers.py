@@ -8,6 +8,7 @@ import time
 
 import rospy
 from aurora_msgs.msg import DroneState
+from tools import rosrun  # noqa: E402
 
 
 def record_until(steps, bag_dir, prefix, timeout=120.0, state="state", recorder=None):
@@ -39,6 +40,6 @@ def report_on(bag):
     """`rosrun aurora report BAG` into BAG's folder (no PDF): the report's
     folder, its output and exit status."""
     out = bag[:-4] + "_report"
-    p = subprocess.run(["rosrun", "aurora", "report", bag, "--out", out, "--no-pdf"],
+    p = subprocess.run(rosrun("aurora", "report") + [bag, "--out", out, "--no-pdf"],
                        stdout=subprocess.PIPE, stderr=subprocess.STDOUT, universal_newlines=True)
     return out, p.returncode, p.stdout

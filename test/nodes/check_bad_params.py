@@ -2,11 +2,17 @@
 """Each bad parameter makes the node exit non-zero, naming the key and what is accepted."""
 import os
 import subprocess
+import sys
 import unittest
 
 import rosparam
 import rospy
 import rostest
+
+# The shared helpers sit beside this script (catkin's devel-space relay runs
+# it with __file__ set to this path; an install puts them beside it too).
+sys.path.insert(0, os.path.dirname(os.path.realpath(__file__)))
+from tools import rosrun  # noqa: E402
 
 
 def load_yaml(path, ns):
@@ -19,7 +25,7 @@ class BadParamsTest(unittest.TestCase):
         self.config = rospy.get_param("~config_dir")
 
     def run_node(self, pkg, node, ns, timeout=15.0):
-        proc = subprocess.run(["rosrun", pkg, node, "__ns:=" + ns, "__name:=" + node],
+        proc = subprocess.run(rosrun(pkg, node) + ["__ns:=" + ns, "__name:=" + node],
                               stdout=subprocess.PIPE, stderr=subprocess.STDOUT, timeout=timeout,
                               env=dict(os.environ))
         return proc.returncode, proc.stdout.decode(errors="replace")

@@ -10,6 +10,11 @@ import subprocess
 import sys
 import unittest
 
+# The shared helpers sit beside this script (catkin's devel-space relay runs
+# it with __file__ set to this path; an install puts them beside it too).
+sys.path.insert(0, os.path.dirname(os.path.realpath(__file__)))
+from tools import rosrun  # noqa: E402
+
 SOURCES = (".h", ".cpp", ".cu", ".py", ".cfg", ".launch", ".sh", ".md", ".txt")
 SCRIPTS = ("report", "plot_sweep", "aurora_launch", "drone_marker")
 # docs/PAGE.md, or a bare (PAGE.md in a comment; then a #anchor or a quoted section.
@@ -66,7 +71,7 @@ def printed_numbers(root, commands):
     for command in commands.split(" ; "):
         words = shlex.split(command)
         pkg, tool = TOOLS[words[0]]
-        p = subprocess.run(["rosrun", pkg, tool] + words[1:], cwd=root, stdout=subprocess.PIPE,
+        p = subprocess.run(rosrun(pkg, tool) + words[1:], cwd=root, stdout=subprocess.PIPE,
                            stderr=subprocess.STDOUT, universal_newlines=True)
         if p.returncode != 0:
             raise AssertionError("'%s' failed: %s" % (command, p.stdout))
@@ -121,7 +126,7 @@ class DocsCitationsTest(unittest.TestCase):
         self.assertEqual(len(rows), 4, "docs/simulation.md's lap-2 table has 4 rows")
         for law, task, cells in rows:
             for delay, cell in zip((0, 5, 10), cells.split(" | ")):
-                out = subprocess.run(["rosrun", "aurora_control", "flight", "--controller",
+                out = subprocess.run(rosrun("aurora_control", "flight") + ["--controller",
                                       os.path.join(root, "config", "controllers", law + ".yaml"), "--task",
                                       os.path.join(root, "config", "tasks", task + ".yaml"), "--delay", str(delay)],
                                      stdout=subprocess.PIPE, universal_newlines=True, check=True).stdout

@@ -21,6 +21,7 @@ import aurora
 
 sys.path.insert(0, os.path.dirname(os.path.realpath(__file__)))
 from bag_helpers import record_until, report_on  # noqa: E402
+from tools import rosrun  # noqa: E402
 
 
 def flight_errors(formation_file, delays, first, last, ts, names, skipped=()):
@@ -30,7 +31,7 @@ def flight_errors(formation_file, delays, first, last, ts, names, skipped=()):
     flight's CSV."""
     with tempfile.TemporaryDirectory() as tmp:
         path = os.path.join(tmp, "f.csv")
-        subprocess.run(["rosrun", "aurora_control", "flight", "--formation", formation_file, "--delay"] +
+        subprocess.run(rosrun("aurora_control", "flight") + ["--formation", formation_file, "--delay"] +
                        [str(d) for d in delays] + ["--csv", path], check=True, stdout=subprocess.PIPE)
         rows = [r for r in csv.DictReader(open(path))
                 if first <= int(r["step"]) <= last and int(r["step"]) not in skipped]

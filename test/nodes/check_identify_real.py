@@ -19,6 +19,7 @@ import yaml
 
 sys.path.insert(0, os.path.dirname(os.path.realpath(__file__)))
 from bag_helpers import record_until, run_tool  # noqa: E402
+from tools import rosrun  # noqa: E402
 
 
 class IdentifyRealTest(unittest.TestCase):
@@ -30,7 +31,7 @@ class IdentifyRealTest(unittest.TestCase):
         p = lambda name: rospy.get_param("~" + name)  # noqa: E731
         bag = record_until(p("steps"), p("bag_dir"), "identify", timeout=200.0)
         out = tempfile.mkdtemp(prefix="identify_real_")
-        rc, text = run_tool(["rosrun", "aurora", "identify", bag, "--out", out, "--window", "15"])
+        rc, text = run_tool(rosrun("aurora", "identify") + [bag, "--out", out, "--window", "15"])
         self.assertEqual(rc, 0, text)
         j = json.load(open(os.path.join(out, "identify.json")))
         modified = yaml.safe_load(open(p("vehicle_file")))
@@ -58,7 +59,7 @@ class IdentifyRealTest(unittest.TestCase):
         for axis in p("better").split():
             self.assertLess(2 * rms["identified"][axis], rms["nominal"][axis], (axis, rms))
         # The identified files are the product's own.
-        rc, text = run_tool(["rosrun", "aurora_control", "flight", "--vehicle", os.path.join(out, "vehicle.yaml"),
+        rc, text = run_tool(rosrun("aurora_control", "flight") + ["--vehicle", os.path.join(out, "vehicle.yaml"),
                              "--controller", p("controller"), "--task", p("task"),
                              "--link", os.path.join(out, "link.yaml")])
         self.assertEqual(rc, 0, text)

@@ -10,7 +10,6 @@ aurora.identify returns the same; with ~bad_input, bad bags are refused
 naming what is missing, with nothing written."""
 import json
 import os
-import subprocess
 import sys
 import tempfile
 import unittest
@@ -21,6 +20,7 @@ import yaml
 
 sys.path.insert(0, os.path.dirname(os.path.realpath(__file__)))
 from bag_helpers import record_until, run_tool  # noqa: E402
+from tools import rosrun  # noqa: E402
 
 
 
@@ -52,7 +52,7 @@ class IdentifySimTest(unittest.TestCase):
         p = lambda name: rospy.get_param("~" + name)  # noqa: E731
         bag = record_until(p("steps"), p("bag_dir"), p("prefix"))
         out = tempfile.mkdtemp(prefix="identify_")
-        rc, text = run_tool(["rosrun", "aurora", "identify", bag, "--out", out])
+        rc, text = run_tool(rosrun("aurora", "identify") + [bag, "--out", out])
         self.assertEqual(rc, 0, text)
         self.assertIn("feedback delay %d samples, actuation delay %d samples" % (p("feedback"), p("actuation")), text)
         j = json.load(open(os.path.join(out, "identify.json")))
@@ -83,7 +83,7 @@ class IdentifySimTest(unittest.TestCase):
         for f in ("link.yaml", "vehicle.yaml", "report.md", "timing.png", "fit.png"):
             self.assertTrue(os.path.isfile(os.path.join(out, f)), f)
         # The files are the product's own: flight takes them as they are.
-        rc, text = run_tool(["rosrun", "aurora_control", "flight", "--vehicle", os.path.join(out, "vehicle.yaml"),
+        rc, text = run_tool(rosrun("aurora_control", "flight") + ["--vehicle", os.path.join(out, "vehicle.yaml"),
                              "--controller", p("controller"), "--task", p("task"),
                              "--link", os.path.join(out, "link.yaml")])
         self.assertEqual(rc, 0, text)
@@ -97,7 +97,7 @@ class IdentifySimTest(unittest.TestCase):
     def check_study(self, bag, study):
         """--study: the study as shipped and with the identified vehicle and link, side by side."""
         out = tempfile.mkdtemp(prefix="identify_study_")
-        rc, text = run_tool(["rosrun", "aurora", "identify", bag, "--out", out, "--study", study])
+        rc, text = run_tool(rosrun("aurora", "identify") + [bag, "--out", out, "--study", study])
         self.assertEqual(rc, 0, text)
         self.assertIn("identify: study %s.yaml: " % study, text)
         s = json.load(open(os.path.join(out, "identify.json")))["study"]
@@ -110,7 +110,7 @@ class IdentifySimTest(unittest.TestCase):
             self.assertTrue(os.path.isfile(os.path.join(out, "study_compare", f)), f)
         for other, said in (("pioneer_delay", "flies a pioneer3dx, the bag a bebop2"),
                             ("triangle_delay", "is a formation's sweep"), ("no_such_study", "is neither a file")):
-            rc, text = run_tool(["rosrun", "aurora", "identify", bag, "--out", out, "--study", other])
+            rc, text = run_tool(rosrun("aurora", "identify") + [bag, "--out", out, "--study", other])
             self.assertEqual(rc, 2, text)
             self.assertIn(said, text)
 
@@ -122,13 +122,13 @@ class IdentifySimTest(unittest.TestCase):
                     ("unknown", {"vehicle": "crazyflie"}, "vehicle 'crazyflie' (the bag's Control.vehicle) is unknown"),
                     ("formation", {"formation": True}, "is a formation's: identify one robot at a time with --ns"),
                     ("nostate", {"drop": "/bebop1/state"}, "lacks the topics identify needs: missing /bebop1/state")):
-                rc, text = run_tool(["rosrun", "aurora", "identify", edited(bag, tmp, name, **edit), "--out", out])
+                rc, text = run_tool(rosrun("aurora", "identify") + [edited(bag, tmp, name, **edit), "--out", out])
                 self.assertEqual(rc, 2, text)
                 self.assertIn(said, text)
                 self.assertFalse(os.path.exists(out), name)
             # A hover (no command moves the drone): the timing is measured, no parameter is identified and
             # no vehicle file is written; each parameter says why.
-            rc, text = run_tool(["rosrun", "aurora", "identify", edited(bag, tmp, "hover", zero_commands=True),
+            rc, text = run_tool(rosrun("aurora", "identify") + [edited(bag, tmp, "hover", zero_commands=True),
                                  "--out", out])
             self.assertEqual(rc, 0, text)
             self.assertIn("nothing identifiable: input_gain.x: its axis was not excited", text)
@@ -139,7 +139,7 @@ class IdentifySimTest(unittest.TestCase):
                                ([bag, "--ns", "ardrone7"], "missing /ardrone7/state"),
                                ([bag, "--max-delay", "-1"], "--max-delay -1 is refused"),
                                ([bag, "--window", "0"], "--window 0 is refused")):
-                rc, text = run_tool(["rosrun", "aurora", "identify"] + args + ["--out", out])
+                rc, text = run_tool(rosrun("aurora", "identify") + args + ["--out", out])
                 self.assertEqual(rc, 2, text)
                 self.assertIn(said, text)
                 self.assertFalse(os.path.exists(os.path.join(out, "identify.json")), args)

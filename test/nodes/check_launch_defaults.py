@@ -7,6 +7,7 @@ launch is read as `roslaunch` reads it (its arguments evaluated, its params
 and remaps resolved)."""
 import os
 import subprocess
+import sys
 import unittest
 
 import roslaunch.config
@@ -14,6 +15,11 @@ import roslaunch.core
 import rospkg
 import rostest
 import yaml
+
+# The shared helpers sit beside this script (catkin's devel-space relay runs
+# it with __file__ set to this path; an install puts them beside it too).
+sys.path.insert(0, os.path.dirname(os.path.realpath(__file__)))
+from tools import rosrun  # noqa: E402
 
 CONFIG = rospkg.RosPack().get_path("aurora_config")
 LAUNCH = rospkg.RosPack().get_path("aurora_bringup")
@@ -43,7 +49,7 @@ def node(config, name):
 
 def robot_query(formation, robot, what):
     """formation_robot's answer for robot `robot` (from 1): what formation.launch gives its sim."""
-    return subprocess.run(["rosrun", "aurora_control", "formation_robot",
+    return subprocess.run(rosrun("aurora_control", "formation_robot") + [
                            os.path.join(CONFIG, "formations", formation + ".yaml"), "--config-dir", CONFIG,
                            "--vehicle", os.path.join(CONFIG, "vehicles", "ardrone2.yaml"), "--robot", str(robot),
                            "--print", what], stdout=subprocess.PIPE, stderr=subprocess.STDOUT,

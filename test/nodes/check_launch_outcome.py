@@ -16,11 +16,12 @@ import rostest
 # __file__ set to this path; an install puts them beside it too).
 sys.path.insert(0, os.path.dirname(os.path.realpath(__file__)))
 from ros_links import free_port  # noqa: E402
+from tools import rosrun  # noqa: E402
 
 
 def aurora_launch(*launch_args, port=None, mode="lockstep", launch="sim.launch", package="aurora_bringup"):
     # Its own master on a free port: the rostest's master is left alone.
-    cmd = ["rosrun", "aurora_bringup", "aurora_launch", "-p", str(port or free_port()), package,
+    cmd = rosrun("aurora_bringup", "aurora_launch") + ["-p", str(port or free_port()), package,
            launch, "mode:=" + mode, "sim_output:=log"] + list(launch_args)
     done = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, timeout=90,
                           env=dict(os.environ), universal_newlines=True)
@@ -76,7 +77,7 @@ class LaunchOutcomeTest(unittest.TestCase):
         node names on one master) and it said "finished normally", rc 0."""
         port = free_port()
         env = dict(os.environ, ROS_MASTER_URI="http://localhost:%d" % port)
-        cmd = ["rosrun", "aurora_bringup", "aurora_launch", "-p", str(port), "aurora_bringup", "sim.launch",
+        cmd = rosrun("aurora_bringup", "aurora_launch") + ["-p", str(port), "aurora_bringup", "sim.launch",
                "mode:=realtime", "sim_output:=screen", "stop_after:=60"]
         first = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, env=env,
                                  universal_newlines=True)

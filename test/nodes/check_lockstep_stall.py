@@ -20,6 +20,7 @@ from aurora_msgs.msg import DroneState
 # it with __file__ set to this path; an install puts them beside it too).
 sys.path.insert(0, os.path.dirname(os.path.realpath(__file__)))
 from flight_checks import hold_up, node_pid, wait_for  # noqa: E402
+from tools import rosrun  # noqa: E402
 
 STATE = ("x", "y", "z", "phi", "theta", "psi", "dx", "dy", "dz", "dphi", "dtheta", "dpsi")
 
@@ -62,7 +63,7 @@ class LockstepStallTest(unittest.TestCase):
         self.assertGreater(resent, 0, "no state was re-sent during the 2 s stall")
         with tempfile.TemporaryDirectory() as tmp:
             out = os.path.join(tmp, "flight.csv")
-            p = subprocess.run(["rosrun", "aurora_control", "flight", "--controller", rospy.get_param("~controller"),
+            p = subprocess.run(rosrun("aurora_control", "flight") + ["--controller", rospy.get_param("~controller"),
                                 "--task", rospy.get_param("~task"), "--delay", str(rospy.get_param("~delay")),
                                 "--csv", out], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, universal_newlines=True)
             self.assertEqual(p.returncode, 0, p.stdout)

@@ -17,6 +17,7 @@ import rostest
 
 sys.path.insert(0, os.path.dirname(os.path.realpath(__file__)))
 from bag_helpers import record_until, run_tool as run  # noqa: E402
+from tools import rosrun  # noqa: E402
 
 
 class PredictorBagTest(unittest.TestCase):
@@ -49,7 +50,7 @@ class PredictorBagTest(unittest.TestCase):
         late = [c for c in flown if c.step > delay + 30]
         self.assertTrue(any(c.predicted_state[0] != c.state_used.position.x for c in late))
         out = tempfile.mkdtemp(prefix="predictor_report_")
-        rc, log = run(["rosrun", "aurora", "report", bag, "--out", out, "--no-video"])
+        rc, log = run(rosrun("aurora", "report") + [bag, "--out", out, "--no-video"])
         self.assertEqual(rc, 0, log)
         with open(os.path.join(out, "metrics.json")) as f:
             drone = json.load(f)["drones"][0]
@@ -58,7 +59,7 @@ class PredictorBagTest(unittest.TestCase):
         self.assertEqual(drone["predictor"]["max_prediction_horizon_samples"], delay)
         self.assertGreater(drone["predictor"]["predictions_checked"], p("steps") - 5)
         self.assertTrue(os.path.exists(os.path.join(out, ns.strip("/") + "_prediction.png")))
-        rc, log = run(["rosrun", "aurora_control", "replay", bag, "--expect-identical"])
+        rc, log = run(rosrun("aurora_control", "replay") + [bag, "--expect-identical"])
         self.assertEqual(rc, 0, log)
         self.assertIn(" 0 differ, max |dU| = 0 ", log)
         # Not vacuous: with another model the predictions, and so the commands, differ.
@@ -67,7 +68,7 @@ class PredictorBagTest(unittest.TestCase):
             text = f.read()
         with open(heavy, "w") as f:
             f.write(text.replace("mass: 0.429 ", "mass: 0.5 "))
-        rc, log = run(["rosrun", "aurora_control", "replay", bag, "--predictor-model", heavy, "--expect-identical"])
+        rc, log = run(rosrun("aurora_control", "replay") + [bag, "--predictor-model", heavy, "--expect-identical"])
         self.assertEqual(rc, 1, log)
         os.remove(bag)
 

@@ -18,12 +18,13 @@ import aurora
 # The shared helpers sit beside this script (catkin's relay runs it with __file__ set to this path).
 sys.path.insert(0, os.path.dirname(os.path.realpath(__file__)))
 from refusals import expect_refusals  # noqa: E402
+from tools import rosrun  # noqa: E402
 
 
 def flight_csv(*args):
     with tempfile.TemporaryDirectory() as tmp:
         path = os.path.join(tmp, "f.csv")
-        subprocess.run(["rosrun", "aurora_control", "flight", "--csv", path] + list(args), check=True,
+        subprocess.run(rosrun("aurora_control", "flight") + ["--csv", path] + list(args), check=True,
                        stdout=subprocess.PIPE)
         return list(csv.DictReader(open(path)))
 

@@ -22,6 +22,7 @@ import aurora
 # The shared helpers sit beside this script (catkin's relay runs it with __file__ set to this path).
 sys.path.insert(0, os.path.dirname(os.path.realpath(__file__)))
 from refusals import expect_refusals  # noqa: E402
+from tools import rosrun  # noqa: E402
 
 
 def shipped(name):
@@ -51,7 +52,7 @@ class PythonSweepTest(unittest.TestCase):
         with tempfile.TemporaryDirectory() as tmp:
             with open(os.path.join(tmp, "cut.yaml"), "w") as f:
                 yaml.safe_dump(thesis_cut(), f)
-            subprocess.run(["rosrun", "aurora_sweep", "sweep", "--config", f.name, "--out", tmp + "/cli",
+            subprocess.run(rosrun("aurora_sweep", "sweep") + ["--config", f.name, "--out", tmp + "/cli",
                             "--backend", "cpu", "--output", "csv", "--no-plots", "--quiet"], check=True,
                            stdout=subprocess.PIPE)
             cli = pd.read_csv(tmp + "/cli/results.csv", float_precision="round_trip")
@@ -121,12 +122,12 @@ class PythonSweepTest(unittest.TestCase):
             at_zero = predicted[predicted.delay == 0].feasible.sum()
             self.assertEqual(predicted.feasible.sum(), 8 * at_zero)  # every delay as delay 0
             self.assertGreater(predicted.feasible.sum(), 2 * plain.feasible.sum())
-            rc = subprocess.run(["rosrun", "aurora_sweep", "plot_sweep", "--compare", tmp + "/plain",
+            rc = subprocess.run(rosrun("aurora_sweep", "plot_sweep") + ["--compare", tmp + "/plain",
                                  tmp + "/predicted", tmp + "/cmp"]).returncode
             self.assertEqual(rc, 0)
             self.assertEqual(sorted(os.listdir(tmp + "/cmp")),
                              ["compare_feasible_share.png", "compare_max_tolerable_delay.png"])
-            bad = subprocess.run(["rosrun", "aurora_sweep", "plot_sweep", "--compare", tmp + "/plain"],
+            bad = subprocess.run(rosrun("aurora_sweep", "plot_sweep") + ["--compare", tmp + "/plain"],
                                  stderr=subprocess.PIPE, text=True)
             self.assertEqual(bad.returncode, 2)
             self.assertIn("give two sweeps' output folders and a folder for the figures", bad.stderr)
@@ -150,7 +151,7 @@ class PythonSweepTest(unittest.TestCase):
                 _, summaries[name] = aurora.sweep(d, out=tmp + "/" + name, backend="cpu", progress=False)
             self.assertEqual(summaries["bebop2_delay"]["sample_time_s"], 1.0 / 30.0)
             self.assertEqual(summaries["pioneer_delay"]["sample_time_s"], 0.1)
-            p = subprocess.run(["rosrun", "aurora_sweep", "plot_sweep", "--compare", tmp + "/bebop2_delay",
+            p = subprocess.run(rosrun("aurora_sweep", "plot_sweep") + ["--compare", tmp + "/bebop2_delay",
                                 tmp + "/pioneer_delay", tmp + "/cmp"], stdout=subprocess.PIPE, universal_newlines=True)
             self.assertEqual(p.returncode, 0)
             self.assertIn("the sample times differ (0.0333333, 0.1 s): delays drawn in seconds", p.stdout)

@@ -20,6 +20,7 @@ from std_msgs.msg import Float64
 # it with __file__ set to this path; an install puts them beside it too).
 sys.path.insert(0, os.path.dirname(os.path.realpath(__file__)))
 from flight_checks import joy_msg, wait_for  # noqa: E402
+from tools import rosrun  # noqa: E402
 
 
 class RealReplayTest(unittest.TestCase):
@@ -70,7 +71,7 @@ class RealReplayTest(unittest.TestCase):
         rospy.loginfo("cycles in the bag: %d; %s", len(controls), kinds)
         for kind, present in kinds.items():
             self.assertTrue(present, "the bag has no %s cycle" % kind)
-        p = subprocess.run(["rosrun", "aurora_control", "replay", bag, "--expect-identical"],
+        p = subprocess.run(rosrun("aurora_control", "replay") + [bag, "--expect-identical"],
                            stdout=subprocess.PIPE, stderr=subprocess.STDOUT, timeout=120)
         log = p.stdout.decode(errors="replace")
         rospy.loginfo(log)

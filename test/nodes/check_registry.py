@@ -20,6 +20,7 @@ import rostest
 
 sys.path.insert(0, os.path.dirname(os.path.realpath(__file__)))
 from bag_helpers import record_until, run_tool as run  # noqa: E402
+from tools import rosrun  # noqa: E402
 
 
 class RegistryTest(unittest.TestCase):
@@ -62,15 +63,15 @@ class RegistryTest(unittest.TestCase):
 
     def check_replay(self, bag):
         vehicle = ["--vehicle", rospy.get_param("~vehicle_file")]
-        rc, log = run(["rosrun", "aurora_tests", "registry_replay", bag, "--expect-identical"] + vehicle)
+        rc, log = run(rosrun("aurora_tests", "registry_replay") + [bag, "--expect-identical"] + vehicle)
         rospy.loginfo(log)
         self.assertEqual(rc, 0, log)
         self.assertIn(" 0 differ, max |dU| = 0 ", log)
         # Another delay gives other commands: the comparison can fail.
-        rc, log = run(["rosrun", "aurora_tests", "registry_replay", bag, "--delay", "1"] + vehicle)
+        rc, log = run(rosrun("aurora_tests", "registry_replay") + [bag, "--delay", "1"] + vehicle)
         self.assertNotIn(" 0 differ", log)
         # The shipped replay does not know the law: refused by its name.
-        rc, log = run(["rosrun", "aurora_control", "replay", bag])
+        rc, log = run(rosrun("aurora_control", "replay") + [bag])
         self.assertEqual(rc, 2, log)
         self.assertIn("test_quad_pd", log)
 
@@ -78,7 +79,7 @@ class RegistryTest(unittest.TestCase):
         """The rows with a live name a build's Controller.cfg is generated from, by name."""
         with tempfile.TemporaryDirectory() as d:
             path = os.path.join(d, "live_settings.yaml")
-            rc, log = run(["rosrun", package, tool, path])
+            rc, log = run(rosrun(package, tool) + [path])
             self.assertEqual(rc, 0, log)
             with open(path) as f:
                 return {s["name"]: s for s in yaml.safe_load(f)}

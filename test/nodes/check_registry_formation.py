@@ -19,6 +19,7 @@ import yaml
 
 sys.path.insert(0, os.path.dirname(os.path.realpath(__file__)))
 from bag_helpers import record_until, run_tool as run  # noqa: E402
+from tools import rosrun  # noqa: E402
 
 ROBOTS = ["quad1", "quad2", "quad3"]
 MAX_DELAY = 20  # [samples] the delays looked for
@@ -109,7 +110,7 @@ class RegistryFormationTest(unittest.TestCase):
                 self.assertLess(abs(x - desired[r][i]), tol, "%s at %s" % (robot, (p.x, p.y, p.z)))
 
     def check_shipped_refuses(self):
-        rc, log = run(["rosrun", "aurora_control", "formation_controller", "__name:=shipped_formation",
+        rc, log = run(rosrun("aurora_control", "formation_controller") + ["__name:=shipped_formation",
                        "_formation_file:=" + rospy.get_param("~formation_file"),
                        "_config_dir:=" + rospy.get_param("~config_dir")], timeout=60)
         rospy.loginfo(log)

@@ -15,34 +15,35 @@ import rostest
 # it with __file__ set to this path; an install puts them beside it too).
 sys.path.insert(0, os.path.dirname(os.path.realpath(__file__)))
 from bag_helpers import record_until, run_tool as run  # noqa: E402
+from tools import rosrun  # noqa: E402
 
 
 class ReplayLawTest(unittest.TestCase):
     def test_replay_identical_and_report_per_lap(self):
         bag = record_until(rospy.get_param("~steps"), rospy.get_param("~bag_dir"), rospy.get_param("~prefix"))
-        rc, log = run(["rosrun", "aurora_control", "replay", bag, "--expect-identical"])
+        rc, log = run(rosrun("aurora_control", "replay") + [bag, "--expect-identical"])
         rospy.loginfo(log)
         self.assertEqual(rc, 0, log)
         self.assertIn(" 0 differ, max |dU| = 0 ", log)
         # Another delay gives other commands: the comparison can fail.
-        rc, log = run(["rosrun", "aurora_control", "replay", bag, "--delay", "1"])
+        rc, log = run(rosrun("aurora_control", "replay") + [bag, "--delay", "1"])
         self.assertNotIn(" 0 differ", log)
         if rospy.get_param("~controller") == "underactuated":
             # A PD gain on an underactuated bag would be ignored: refused.
-            rc, log = run(["rosrun", "aurora_control", "replay", bag, "--kp", "0.5"])
+            rc, log = run(rosrun("aurora_control", "replay") + [bag, "--kp", "0.5"])
             self.assertEqual(rc, 2, log)
             self.assertIn("--kp is a gain of the pd_saturated law, but the bag's controller is underactuated", log)
         # Issue 51 (8): another vehicle's law is named as such (it blamed the sample time), and shipped
         # NAMEs are taken as flight takes them.
-        rc, log = run(["rosrun", "aurora_control", "replay", bag, "--controller", "pioneer_dynamic"])
+        rc, log = run(rosrun("aurora_control", "replay") + [bag, "--controller", "pioneer_dynamic"])
         self.assertEqual(rc, 2, log)
         self.assertIn("its law 'pioneer_dynamic' flies the pioneer3dx, but the bag's controller '%s' flew the ardrone2"
                       % rospy.get_param("~controller"), log)
-        rc, log = run(["rosrun", "aurora_control", "replay", bag, "--controller", rospy.get_param("~controller"),
+        rc, log = run(rosrun("aurora_control", "replay") + [bag, "--controller", rospy.get_param("~controller"),
                        "--link", "ideal", "--expect-identical"])
         self.assertEqual(rc, 0, log)
         out = tempfile.mkdtemp(prefix="aurora_replay_law_")
-        rc, log = run(["rosrun", "aurora", "report", bag, "--out", out, "--no-video"])
+        rc, log = run(rosrun("aurora", "report") + [bag, "--out", out, "--no-video"])
         self.assertEqual(rc, 0, log)
         m = json.load(open(os.path.join(out, "metrics.json")))["drones"][0]
         self.assertEqual(m["controller"], rospy.get_param("~controller"))
@@ -65,7 +66,7 @@ class ReplayLawTest(unittest.TestCase):
         """The flight tool flies the same lockstep flight offline: its tracking
         error per lap is the report's (one definition, docs/controllers.md)."""
         config = rospy.get_param("~config_dir")
-        rc, log = run(["rosrun", "aurora_control", "flight",
+        rc, log = run(rosrun("aurora_control", "flight") + [
                        "--controller", os.path.join(config, "controllers", rospy.get_param("~controller") + ".yaml"),
                        "--task", os.path.join(config, "tasks", rospy.get_param("~task") + ".yaml"),
                        "--delay", str(rospy.get_param("~delay"))])

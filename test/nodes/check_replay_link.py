@@ -12,19 +12,20 @@ import rostest
 
 sys.path.insert(0, os.path.dirname(os.path.realpath(__file__)))
 from bag_helpers import record_until, run_tool as run  # noqa: E402
+from tools import rosrun  # noqa: E402
 
 
 class ReplayLinkTest(unittest.TestCase):
     def test_replay_over_the_recorded_link(self):
         bag = record_until(rospy.get_param("~steps"), rospy.get_param("~bag_dir"), rospy.get_param("~prefix"))
         link = rospy.get_param("~link_file")
-        rc, log = run(["rosrun", "aurora_control", "replay", bag, "--link", link, "--expect-identical"])
+        rc, log = run(rosrun("aurora_control", "replay") + [bag, "--link", link, "--expect-identical"])
         rospy.loginfo(log)
         self.assertEqual(rc, 0, log)
         self.assertIn(" 0 differ, max |dU| = 0 ", log)
         self.assertIn("(recorded configuration over the link given)", log)
         # Without the link: not the recorded configuration, and it says so.
-        rc, log = run(["rosrun", "aurora_control", "replay", bag])
+        rc, log = run(rosrun("aurora_control", "replay") + [bag])
         self.assertNotIn("(recorded configuration)", log)
         self.assertIn("flown over an imperfect link; give it with --link FILE", log)
         self.assertNotIn(" 0 differ", log)

@@ -23,11 +23,12 @@ import rostest
 
 sys.path.insert(0, os.path.dirname(os.path.realpath(__file__)))
 from bag_helpers import record_until, run_tool as run  # noqa: E402
+from tools import rosrun  # noqa: E402
 
 
 class ReplayRealtimeTest(unittest.TestCase):
     def replay(self, bag):
-        cmd = ["rosrun", "aurora_control", "replay", bag, "--expect-identical"]
+        cmd = rosrun("aurora_control", "replay") + [bag, "--expect-identical"]
         if rospy.has_param("~link"):
             cmd += ["--link", rospy.get_param("~link")]
         return run(cmd)

@@ -17,6 +17,7 @@ import rostest
 # it with __file__ set to this path; an install puts them beside it too).
 sys.path.insert(0, os.path.dirname(os.path.realpath(__file__)))
 from bag_helpers import record_until  # noqa: E402
+from tools import rosrun  # noqa: E402
 
 BAG = None
 
@@ -37,7 +38,7 @@ class ReportReplayTest(unittest.TestCase):
 
     def test_1_report_writes_figures_video_and_controller_metrics(self):
         out = os.path.join(self.tmp, "report")
-        rc, log = run(["rosrun", "aurora", "report", self.bag, "--out", out])
+        rc, log = run(rosrun("aurora", "report") + [self.bag, "--out", out])
         self.assertEqual(rc, 0, log)
         self.assertNotIn("Traceback", log)
         metrics = json.load(open(os.path.join(out, "metrics.json")))
@@ -84,28 +85,28 @@ class ReportReplayTest(unittest.TestCase):
         self.assertIn("warning: TRUNCATED", log)
 
     def test_2_replay_same_configuration_is_identical(self):
-        rc, log = run(["rosrun", "aurora_control", "replay", self.bag, "--expect-identical"])
+        rc, log = run(rosrun("aurora_control", "replay") + [self.bag, "--expect-identical"])
         self.assertEqual(rc, 0, log)
         self.assertIn(" 0 differ, max |dU| = 0 ", log)
 
     def test_3_replay_with_another_delay_differs(self):
         csv_path = os.path.join(self.tmp, "replay.csv")
-        rc, log = run(["rosrun", "aurora_control", "replay", self.bag, "--delay", "2", "--out", csv_path])
+        rc, log = run(rosrun("aurora_control", "replay") + [self.bag, "--delay", "2", "--out", csv_path])
         self.assertEqual(rc, 0, log)
         self.assertIn("(changed configuration)", log)
         rows = open(csv_path).read().splitlines()[1:]
         differing = [r for r in rows if float(r.split(",")[-1]) > 0]
         self.assertGreater(len(differing), len(rows) // 2, log)
-        rc, _ = run(["rosrun", "aurora_control", "replay", self.bag, "--delay", "2", "--expect-identical"])
+        rc, _ = run(rosrun("aurora_control", "replay") + [self.bag, "--delay", "2", "--expect-identical"])
         self.assertEqual(rc, 1)
 
     def test_3b_replay_delay_not_shorter_than_the_task_is_refused(self):
         # The recorded task (mission4, 60 s = 1801 iterations) bounds the delay
         # as in the node and the sweep.
-        rc, log = run(["rosrun", "aurora_control", "replay", self.bag, "--delay", "2000"])
+        rc, log = run(rosrun("aurora_control", "replay") + [self.bag, "--delay", "2000"])
         self.assertEqual(rc, 2, log)
         self.assertIn("--delay: 2000 samples is not shorter than the run's 1801 steps", log)
-        rc, log = run(["rosrun", "aurora_control", "replay", self.bag, "--delay", "1800"])
+        rc, log = run(rosrun("aurora_control", "replay") + [self.bag, "--delay", "1800"])
         self.assertEqual(rc, 0, log)
 
     def test_4_bag_without_control_is_refused(self):
@@ -114,13 +115,13 @@ class ReportReplayTest(unittest.TestCase):
             for topic, msg, t in src.read_messages():
                 if not topic.endswith("/control"):
                     dst.write(topic, msg, t)
-        rc, log = run(["rosrun", "aurora", "report", stripped, "--no-video"])
+        rc, log = run(rosrun("aurora", "report") + [stripped, "--no-video"])
         self.assertEqual(rc, 2, log)
         self.assertIn("missing /ardrone1/control", log)
         self.assertIn("present: ", log)
         self.assertIn("/ardrone1/state", log)
         self.assertNotIn("Traceback", log)
-        rc, log = run(["rosrun", "aurora_control", "replay", stripped])
+        rc, log = run(rosrun("aurora_control", "replay") + [stripped])
         self.assertEqual(rc, 2, log)
 
     def test_5_truncated_bag_is_refused(self):
@@ -129,12 +130,12 @@ class ReportReplayTest(unittest.TestCase):
             data = f.read()
         with open(truncated, "wb") as f:
             f.write(data[: len(data) // 2])
-        rc, log = run(["rosrun", "aurora", "report", truncated, "--no-video"])
+        rc, log = run(rosrun("aurora", "report") + [truncated, "--no-video"])
         self.assertEqual(rc, 2, log)
         self.assertIn("report: error:", log)
         self.assertIn("reindex", log)
         self.assertNotIn("Traceback", log)
-        rc, log = run(["rosrun", "aurora_control", "replay", truncated])
+        rc, log = run(rosrun("aurora_control", "replay") + [truncated])
         self.assertEqual(rc, 2, log)
         self.assertIn("cannot be read", log)
 
@@ -146,7 +147,7 @@ class ReportReplayTest(unittest.TestCase):
                 if topic.startswith("/ardrone1/"):
                     dst.write(topic.replace("/ardrone1/", "/ardrone2/"), msg, t)
         out = os.path.join(self.tmp, "two")
-        rc, log = run(["rosrun", "aurora", "report", two, "--out", out, "--no-video", "--no-pdf"])
+        rc, log = run(rosrun("aurora", "report") + [two, "--out", out, "--no-video", "--no-pdf"])
         self.assertEqual(rc, 0, log)
         drones = json.load(open(os.path.join(out, "metrics.json")))["drones"]
         self.assertEqual([d["namespace"] for d in drones], ["/ardrone1", "/ardrone2"])
@@ -154,7 +155,7 @@ class ReportReplayTest(unittest.TestCase):
         self.assertIn("## /ardrone1", md)
         self.assertIn("## /ardrone2", md)
         self.assertTrue(os.path.exists(os.path.join(out, "ardrone2_position.png")))
-        rc, log = run(["rosrun", "aurora_control", "replay", two])
+        rc, log = run(rosrun("aurora_control", "replay") + [two])
         self.assertEqual(rc, 2, log)
         self.assertIn("--ns", log)
 

@@ -6,6 +6,7 @@ import os
 import shutil
 import signal
 import subprocess
+import sys
 import tempfile
 import time
 import unittest
@@ -13,11 +14,16 @@ import unittest
 import rospy
 import rostest
 
+# The shared helpers sit beside this script (catkin's devel-space relay runs
+# it with __file__ set to this path; an install puts them beside it too).
+sys.path.insert(0, os.path.dirname(os.path.realpath(__file__)))
+from tools import rosrun  # noqa: E402
+
 MPIRUN = shutil.which("mpirun")
 
 
 def sweep_cmd(sweep_file, out, *extra):
-    return ["rosrun", "aurora_sweep", "sweep", "--config", sweep_file, "--out", out, "--quiet",
+    return rosrun("aurora_sweep", "sweep") + ["--config", sweep_file, "--out", out, "--quiet",
             "--no-plots"] + list(extra)
 
 
@@ -85,7 +91,7 @@ class SweepScaleTest(unittest.TestCase):
         out = os.path.join(self.tmp, "mpi_mixed")
         cmd = [MPIRUN, "--allow-run-as-root", "--oversubscribe", "-np", "2", "bash", "-c",
                'exec "$0" "$@" --backend $([ "$OMPI_COMM_WORLD_RANK" = 0 ] && echo scalar || echo cpu)',
-               "rosrun"] + sweep_cmd(self.grid, out, "--threads", "1", "--chunk-size", "4096")[1:]
+               ] + sweep_cmd(self.grid, out, "--threads", "1", "--chunk-size", "4096")
         rc, log = run(cmd)
         self.assertNotEqual(rc, 0, log)
         self.assertIn("the ranks would compute on different backends (cpu", log)

@@ -5,11 +5,17 @@ beyond 2047 or not shorter than the task."""
 import os
 import signal
 import subprocess
+import sys
 import tempfile
 import time
 import unittest
 
 import rostest
+
+# The shared helpers sit beside this script (catkin's devel-space relay runs
+# it with __file__ set to this path; an install puts them beside it too).
+sys.path.insert(0, os.path.dirname(os.path.realpath(__file__)))
+from tools import rosrun  # noqa: E402
 
 
 def config_dir():
@@ -17,7 +23,7 @@ def config_dir():
 
 
 def flight(*args):
-    p = subprocess.run(["rosrun", "aurora_control", "flight"] + list(args), stdout=subprocess.PIPE,
+    p = subprocess.run(rosrun("aurora_control", "flight") + list(args), stdout=subprocess.PIPE,
                        stderr=subprocess.STDOUT, timeout=120)
     return p.returncode, p.stdout.decode(errors="replace")
 
@@ -33,7 +39,7 @@ def formation_file(folder, edit, name="line_lemniscate"):
 
 
 def replay(*args):
-    p = subprocess.run(["rosrun", "aurora_control", "replay", "/nonexistent.bag"] + list(args),
+    p = subprocess.run(rosrun("aurora_control", "replay") + ["/nonexistent.bag"] + list(args),
                        stdout=subprocess.PIPE, stderr=subprocess.STDOUT, timeout=60)
     return p.returncode, p.stdout.decode(errors="replace")
 
@@ -108,7 +114,7 @@ class ToolArgumentsTest(unittest.TestCase):
     def test_flight_refuses_a_delay_not_shorter_than_the_task(self):
         # It flew such a delay as no delay at all; node, replay, sweep refuse it.
         for task, delay, longest in (("mission4", 2000, 1800), ("circle", 1201, 1200)):
-            p = subprocess.run(["rosrun", "aurora_control", "flight", "--delay", str(delay), "--task",
+            p = subprocess.run(rosrun("aurora_control", "flight") + ["--delay", str(delay), "--task",
                                 subprocess.run(["rospack", "find", "aurora_config"], stdout=subprocess.PIPE)
                                 .stdout.decode().strip() + "/tasks/%s.yaml" % task],
                                stdout=subprocess.PIPE, stderr=subprocess.STDOUT, timeout=60)
@@ -123,7 +129,7 @@ class ToolArgumentsTest(unittest.TestCase):
         for args, said in ((["--delay", "-4"], "--delay -4 is refused: accepted integer samples in [0, 2047]"),
                            (["--formation", cfg + "/formations/line_lemniscate.yaml", "--delay", "3", "-4"],
                             "--delay -4 (drone 2) is refused: accepted integer samples in [0, 2047]")):
-            p = subprocess.run(["rosrun", "aurora_control", "flight"] + args, stdout=subprocess.PIPE,
+            p = subprocess.run(rosrun("aurora_control", "flight") + args, stdout=subprocess.PIPE,
                                stderr=subprocess.STDOUT, timeout=60)
             out = p.stdout.decode(errors="replace")
             self.assertEqual(p.returncode, 2, out)

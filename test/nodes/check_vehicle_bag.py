@@ -17,6 +17,7 @@ import rostest
 
 sys.path.insert(0, os.path.dirname(os.path.realpath(__file__)))
 from bag_helpers import record_until, run_tool as run  # noqa: E402
+from tools import rosrun  # noqa: E402
 
 
 class VehicleBagTest(unittest.TestCase):
@@ -38,7 +39,7 @@ class VehicleBagTest(unittest.TestCase):
         self.assertEqual(list(last.extra_state_names), extra)
         if extra:  # the robot moved: its own states are not left at 0
             self.assertGreater(max(abs(v) for s in states for v in s.extra), 0.05)
-        replay = ["rosrun", "aurora_control", "replay", bag, "--expect-identical"]
+        replay = rosrun("aurora_control", "replay") + [bag, "--expect-identical"]
         if rospy.has_param("~link_file"):
             replay += ["--link", p("link_file")]
         rc, log = run(replay)
@@ -84,7 +85,7 @@ class VehicleBagTest(unittest.TestCase):
                             or (topic == ns + "/control" and m.step in drop_controls)):
                         out.write(topic, m, t)
             try:
-                rc, log = run(replay[:3] + [thinned] + replay[4:])
+                rc, log = run([thinned if word == bag else word for word in replay])
                 self.assertEqual(rc, 0, log)
                 self.assertIn(" 0 differ, max |dU| = 0 ", log)
                 if not drop_controls:
@@ -104,7 +105,7 @@ class VehicleBagTest(unittest.TestCase):
         """The report's metrics.json of the bag's vehicle; its report.md speaks of the vehicle as it is
         (issue 51: a Pioneer's said its commands were clamped and spoke of a drone hovering)."""
         out = tempfile.mkdtemp(prefix="vehicle_report_")
-        rc, log = run(["rosrun", "aurora", "report", bag, "--out", out, "--no-video"])
+        rc, log = run(rosrun("aurora", "report") + [bag, "--out", out, "--no-video"])
         self.assertEqual(rc, 0, log)
         with open(os.path.join(out, "metrics.json")) as f:
             metrics = json.load(f)
