@@ -218,6 +218,19 @@ def state_values(s):
             s.velocity.x, s.velocity.y, s.velocity.z, s.attitude_rate.x, s.attitude_rate.y, s.attitude_rate.z)
 
 
+def gains_label(control):
+    """The gains a figure's title names: each by name where the law has at
+    most four (the PD law's kp and kd, the Pioneer kinematic law's four),
+    else how many (metrics.json lists them); a bag from before Control named
+    its gains flew the PD law (its kp and kd fields)."""
+    names, values = list(getattr(control, "gain_names", ())), list(getattr(control, "gains", ()))
+    if not names:
+        return "kp %g, kd %g" % (control.kp, control.kd)
+    if len(names) > 4:
+        return "%d gains in metrics.json" % len(names)
+    return ", ".join("%s %g" % (name, value) for name, value in zip(names, values))
+
+
 def flight_series(ns, states, controls, ts, t0):
     """Per step with both a state and a control: time, state, reference,
     tracking error, waypoint (or lap), whether in the task."""
@@ -273,8 +286,7 @@ def analyse(ns, d):
     series["trajectory"] = trajectory
     # Every figure title says which flight it shows: law, gains, delay.
     law = last.controller or "pd_saturated"
-    gains = ("Kp %g, Kd %g" % (last.kp, last.kd)) if law == "pd_saturated" else \
-        "%d gains in metrics.json" % len(last.gain_names)
+    gains = gains_label(last)
     predictor = getattr(last, "predictor", "off") or "off"
     series["label"] = "%s (%s%s, %s; delay %d samples = %.3f s)" % (
         ns, law, "" if predictor == "off" else " with the %s predictor" % predictor, gains, last.delay_samples,
