@@ -173,7 +173,7 @@ inline ShapedFlight tableFlight(LineShapeEntry, const FormationFile&, const Form
                                    "line's flight is simulate_formation_files'");
 }
 
-// A UAV-UGV line or triangle file flown as flight --formation flies it (the
+// A file of a shape with a table flight flown as flight --formation flies it (the
 // options' delays and the triangle's law; "" keeps the file's): its CSV's
 // columns and rows as one array, its printed summary and errors by name.
 py::dict simulateShapedFormationFiles(const std::string& formation, const std::vector<long>& delays,
@@ -362,7 +362,8 @@ PYBIND11_MODULE(_core, m) {
         "One formation flight from YAML files, as flight --formation flies it: a dict of numpy arrays and metrics.");
   m.def("simulate_shaped_formation_files", &simulateShapedFormationFiles, py::arg("formation"), py::arg("delays"),
         py::arg("law"), py::arg("config_dir"),
-        "A UAV-UGV line or triangle file flown as flight --formation flies it: its CSV's columns and rows.");
+        "A formation file of a shape with a table flight (every shape but the two-drone line) flown as "
+        "flight --formation flies it: its CSV's columns and rows.");
   m.def("vehicle_factor_names", &vehicleFactorNames, py::arg("type"),
         "The model factors a vehicle type scales, in their order (a sweep's names).");
   m.def("open_loop", &openLoop, py::arg("type"), py::arg("vehicle_file"), py::arg("factors"), py::arg("X"),

@@ -41,10 +41,14 @@ def flown_ticks(test, ticks):
     """The flight sequence (take-off, the formation's ticks 0 .. n - 1, land
     at the task's end): the ticks flown."""
     modes = [m.mode for m in ticks]
-    # The mode passes through "takeoff", unless this checker's subscription
-    # connected after it (a loaded machine starts the checker late): each
-    # driver received its take-off either way (the tests check).
-    if not modes[0].startswith("hold (waiting for"):
+    # The mode passes through "takeoff" and "hold (waiting for ...)", unless
+    # this checker's subscription connected after them (a loaded machine
+    # starts the checker late): each driver received its take-off either way
+    # (the tests check). A checker that saw neither saw the formation's first
+    # tick, or it could not check the flight.
+    if modes[0] == "fly":
+        test.assertEqual(ticks[0].step, 0, "this checker connected after the formation's first tick")
+    elif not modes[0].startswith("hold (waiting for"):
         test.assertIn("takeoff", modes)
     test.assertIn("land (task complete)", modes)
     flown = [m for m in ticks if m.mode == "fly"]

@@ -15,7 +15,6 @@
 
 #include "aurora_control/formation/formation_judge.h"
 #include "aurora_control/formation/formation_runner.h"
-#include "aurora_control/formation/triangle/triangle_formation.h"
 #include "aurora_sweep/robot_gains.h"
 #include "aurora_sweep/simulation.h"
 
@@ -73,11 +72,10 @@ ShapeRun<T, Shape, Data> castFormationRun(const ShapeRun<double, Shape, Data>& r
   return run;
 }
 
-// A triangle sweep's law (formation_law: its index); the lines fly their
-// file's (their laws are no sweep parameter).
-AURORA_HD inline void setSweptLaw(aurora_control::TriangleLaw& law, double v) {
-  law = static_cast<aurora_control::TriangleLaw>(static_cast<int>(v));
-}
+// A shape's law as a sweep's formation_law sets it: a shape whose sweep
+// varies its law declares setSweptLaw(its law&, value) beside its law type
+// (the triangle's, triangle_formation.h), found by that type's namespace;
+// the others fly their file's law (this default).
 template <class Law>
 AURORA_HD inline void setSweptLaw(Law&, double) {}
 

@@ -33,6 +33,10 @@ constexpr SweepShape sweepShapeOf() {
 }
 // "none", else its entry's name.
 const char* sweepShapeName(SweepShape shape);
+// The laws a sweep of `shape` may vary (formation_law's values: the index
+// of a name here), its entry's sweepLawNames in order; none for a shape
+// that flies its file's law.
+std::vector<std::string> formationLawNames(SweepShape shape);
 // f(Entry()) for the entry of `shape`; none for kNone.
 template <class F>
 void withSweepShape(SweepShape shape, F&& f) {

@@ -436,11 +436,10 @@ def compare(argv):
     return 0
 
 
-TRIANGLE_LAWS = ["N", "PSO", "SPO", "OSP", "S-PO"]  # formation_law's index (docs/formation.md)
-
-
 def formation_laws(np, plt, cols, ok, summary, out):
-    """A triangle sweep varying its law and its robots' delays: for each law,
+    """A formation sweep varying its shape's law (the triangle's) and its
+    robots' delays: for each law (its name from summary.json's
+    formation_laws; a summary from before them gives its index),
     the share of its runs that were feasible against the largest of the
     robots' delays, and the delay up to which every combination was
     feasible. docs/formation.md, "Sweeps of AuRoRA's formations"."""
@@ -449,6 +448,7 @@ def formation_laws(np, plt, cols, ok, summary, out):
         return
     largest = np.max(np.stack([cols[k] for k in delays]), axis=0)
     levels = np.unique(largest)
+    names = summary.get("formation_laws", [])
     fig, ax = plt.subplots(figsize=(6.4, 4.4))
     for law in np.unique(cols["formation_law"]):
         mine = cols["formation_law"] == law
@@ -456,7 +456,7 @@ def formation_laws(np, plt, cols, ok, summary, out):
         at = largest[mine]
         shares = [feasible[at == d].mean() if np.any(at == d) else np.nan for d in levels]
         every = [d for d in levels if np.all(feasible[at <= d])]
-        label = TRIANGLE_LAWS[int(law)] if 0 <= int(law) < len(TRIANGLE_LAWS) else str(law)
+        label = names[int(law)] if 0 <= int(law) < len(names) else "formation_law %g" % law
         ax.plot(levels, shares, marker="o", ms=3,
                 label="%s (all feasible up to %s)" % (label, "%d" % every[-1] if every else "none"))
     ax.set_xlabel("the largest of %s [samples]" % ", ".join(delays))

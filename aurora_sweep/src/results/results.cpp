@@ -293,6 +293,7 @@ void writeSummaryJson(const std::string& path, const SweepSpec& spec, const RunI
     const auto& c = spec.formation_criteria;
     j["formation_file"] = spec.formation_file;
     j["formation_shape"] = sweepShapeName(spec.shape);  // line, uav_ugv_line, triangle
+    if (spec.variesFormationLaw()) j["formation_laws"] = formationLawNames(spec.shape);  // formation_law's names
     j["formation_criteria"] = {{"settle_time", c.settle_time}, {"max_position_error", c.max_position_error},
                                {"max_shape_error", c.max_shape_error}, {"max_iae_position", c.max_iae_position},
                                {"max_iae_shape", c.max_iae_shape}, {"min_distance", c.min_distance},

@@ -2,9 +2,9 @@
 
 #include <limits>
 
+#include <boost/algorithm/string.hpp>
+
 #include "aurora_control/formation/formation_layer.h"
-#include "aurora_control/formation/triangle/triangle_formation.h"
-#include "aurora_control/formation/triangle/triangle_yaml.h"
 #include "aurora_control/params/limits.h"
 #include "aurora_control/link/link.h"
 #include "aurora_control/params/parameter_table.h"
@@ -138,6 +138,16 @@ const char* sweepShapeName(SweepShape shape) {
   const char* name = "none";
   withSweepShape(shape, [&](auto e) { name = e.name(); });
   return name;
+}
+
+std::vector<std::string> formationLawNames(SweepShape shape) {
+  std::string names;
+  withSweepShape(shape, [&](auto e) { names = decltype(e)::sweepLawNames(); });
+  std::vector<std::string> laws;
+  if (names.empty()) return laws;
+  boost::algorithm::split(laws, names, boost::algorithm::is_any_of(","));
+  for (std::string& law : laws) boost::algorithm::trim(law);
+  return laws;
 }
 
 const ParamInfo& paramInfo(int id, SweepShape shape) {

@@ -1,5 +1,6 @@
 #include "aurora_sweep/sweep_file.h"
 
+#include <boost/algorithm/string/join.hpp>
 #include <csv.h>
 #include <yaml-cpp/yaml.h>
 
@@ -12,7 +13,6 @@
 #include "aurora_control/link/link_yaml.h"
 #include "aurora_control/loop/positioning_runner.h"
 #include "aurora_control/predictor/predictor_yaml.h"
-#include "aurora_control/formation/triangle/triangle_yaml.h"
 #include "aurora_control/task/task_yaml.h"
 #include "aurora_sweep/backends.h"
 #include "aurora_sweep/design.h"
@@ -227,18 +227,21 @@ bool readDesign(const Reader& r, const YAML::Node& s, SweepSpec& spec) {
   return true;
 }
 
-// A value of parameter `id`: a number, or a triangle's law by its name
-// (formation_law: N, PSO, SPO, OSP, S-PO; its index as its value).
+// A value of parameter `id`: a number, or its shape's law by its name
+// (formation_law: one of its entry's sweepLawNames, the triangle's N, PSO,
+// SPO, OSP, S-PO; its index there as its value).
 double valueOf(const Reader& r, const SweepSpec& spec, int id, const YAML::Node& v, const std::string& key) {
   if (spec.param(id).group != ParamGroup::kFormationLaw) return r.number(v, key);
   double index = 0.0;
   if (v.IsScalar() && YAML::convert<double>::decode(v, index)) return index;
-  try {
-    return double(static_cast<int>(aurora_control::triangleLawOf(r.text(v, key), key)));
-  } catch (const aurora_control::ConfigError& e) {
-    r.failWith(e.what());
+  const std::string name = r.text(v, key);
+  const std::vector<std::string> laws = formationLawNames(spec.shape);
+  const auto at = std::find(laws.begin(), laws.end(), name);
+  if (at == laws.end()) {
+    r.failWith(key + " = '" + name + "' is not a " + sweepShapeName(spec.shape) + " law: accepted " +
+               boost::algorithm::join(laws, ", "));
   }
-  return 0.0;
+  return double(at - laws.begin());
 }
 
 // Values of one grid axis: {values: [...]} or {from, to, count[, scale]}.

@@ -23,6 +23,11 @@ namespace aurora_control {
 // the position rows are orthogonal to the others (eq. T5).
 enum class TriangleLaw : int { kN = 0, kPSO, kSPO, kOSP, kSdashPO };
 
+// A triangle sweep's law: its formation_law value, the law's index (a
+// sweep's formationCombination finds this by its law's type; a shape whose
+// law no sweep varies has none and flies its file's).
+AURORA_HD inline void setSweptLaw(TriangleLaw& law, double v) { law = static_cast<TriangleLaw>(static_cast<int>(v)); }
+
 template <typename T>
 struct TriangleFormation {
   using Law = TriangleLaw;
