@@ -65,9 +65,7 @@ class ToolArgumentsTest(unittest.TestCase):
 
     def test_a_predictor_block_for_replay(self):
         # Issue 35: replay follows the predictor the bag records; a file's block would be a second source.
-        cfg = subprocess.run(["rospack", "find", "aurora_config"], stdout=subprocess.PIPE,
-                             universal_newlines=True, check=True).stdout.strip()
-        self.assert_refused(["--controller", cfg + "/controllers/pd_saturated_predictor.yaml"],
+        self.assert_refused(["--controller", config_dir() + "/controllers/pd_saturated_predictor.yaml"],
                             "its 'predictor' block is refused here: replay follows the predictor the bag's Control")
 
     def test_shipped_names_as_flight_takes_them(self):
@@ -114,18 +112,14 @@ class ToolArgumentsTest(unittest.TestCase):
     def test_flight_refuses_a_delay_not_shorter_than_the_task(self):
         # It flew such a delay as no delay at all; node, replay, sweep refuse it.
         for task, delay, longest in (("mission4", 2000, 1800), ("circle", 1201, 1200)):
-            p = subprocess.run(rosrun("aurora_control", "flight") + ["--delay", str(delay), "--task",
-                                subprocess.run(["rospack", "find", "aurora_config"], stdout=subprocess.PIPE)
-                                .stdout.decode().strip() + "/tasks/%s.yaml" % task],
-                               stdout=subprocess.PIPE, stderr=subprocess.STDOUT, timeout=60)
-            out = p.stdout.decode(errors="replace")
-            self.assertEqual(p.returncode, 2, out)
+            rc, out = flight("--delay", str(delay), "--task", config_dir() + "/tasks/%s.yaml" % task)
+            self.assertEqual(rc, 2, out)
             self.assertIn("--delay %d samples is not shorter than the run's %d steps" % (delay, longest + 1), out)
             self.assertIn("accepted delays up to %d samples" % longest, out)
 
     def test_flight_refuses_a_negative_delay_by_its_limits(self):
         # A value starting with '-' is the option's value, not an unknown option.
-        cfg = subprocess.run(["rospack", "find", "aurora_config"], stdout=subprocess.PIPE).stdout.decode().strip()
+        cfg = config_dir()
         for args, said in ((["--delay", "-4"], "--delay -4 is refused: accepted integer samples in [0, 2047]"),
                            (["--formation", cfg + "/formations/line_lemniscate.yaml", "--delay", "3", "-4"],
                             "--delay -4 (drone 2) is refused: accepted integer samples in [0, 2047]")):
@@ -521,10 +515,8 @@ class FormationAndLinkArgumentsTest(unittest.TestCase):
         self.assertEqual(rc, 0, out)  # the law runs at steps 0 and 1799
 
     def test_two_sweeps_on_one_folder_and_an_interrupted_sweep(self):
-        sweep = subprocess.run(["catkin_find", "--first-only", "--libexec", "aurora_sweep", "sweep"],
-                               stdout=subprocess.PIPE).stdout.decode().strip()
         with tempfile.TemporaryDirectory() as out:
-            cmd = [sweep, "--config", os.path.join(config_dir(), "sweeps", "positioning_delay.yaml"),
+            cmd = rosrun("aurora_sweep", "sweep") + ["--config", os.path.join(config_dir(), "sweeps", "positioning_delay.yaml"),
                    "--backend", "scalar", "--out", out, "--no-plots", "--output", "csv"]
             first = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
             deadline = time.time() + 60
@@ -542,10 +534,8 @@ class FormationAndLinkArgumentsTest(unittest.TestCase):
 
     def test_a_sweep_with_repeats_counts_runs_and_combinations(self):
         """Issue 31: "21,504 combinations" where the docs say 1,344 combinations x 16 repeats."""
-        sweep = subprocess.run(["catkin_find", "--first-only", "--libexec", "aurora_sweep", "sweep"],
-                               stdout=subprocess.PIPE).stdout.decode().strip()
         with tempfile.TemporaryDirectory() as out:
-            p = subprocess.Popen([sweep, "--config", os.path.join(config_dir(), "sweeps", "link_margin.yaml"),
+            p = subprocess.Popen(rosrun("aurora_sweep", "sweep") + ["--config", os.path.join(config_dir(), "sweeps", "link_margin.yaml"),
                                   "--out", out, "--no-plots"], stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
                                  universal_newlines=True)
             lines = []
