@@ -43,3 +43,15 @@ def report_on(bag):
     p = subprocess.run(rosrun("aurora", "report") + [bag, "--out", out, "--no-pdf"],
                        stdout=subprocess.PIPE, stderr=subprocess.STDOUT, universal_newlines=True)
     return out, p.returncode, p.stdout
+
+
+def frames_moved(video, frames):
+    """The pixels [count] that differ (by more than a quarter of the grey
+    scale) between the video's first and last of `frames` frames: what
+    moves in it (the drones, their trails, the clock in the title). A
+    video whose moving parts were not drawn has none."""
+    grey = subprocess.run(["ffmpeg", "-v", "error", "-i", video, "-vf",
+                           "select=eq(n\\,0)+eq(n\\,%d)" % (frames - 1), "-vsync", "0",
+                           "-f", "rawvideo", "-pix_fmt", "gray", "-"], stdout=subprocess.PIPE, check=True).stdout
+    half = len(grey) // 2
+    return sum(1 for a, b in zip(grey[:half], grey[half:]) if abs(a - b) > 64)

@@ -20,7 +20,7 @@ import rostest
 import aurora
 
 sys.path.insert(0, os.path.dirname(os.path.realpath(__file__)))
-from bag_helpers import record_until, report_on  # noqa: E402
+from bag_helpers import frames_moved, record_until, report_on  # noqa: E402
 from tools import rosrun  # noqa: E402
 
 
@@ -107,6 +107,8 @@ class FormationReportTest(unittest.TestCase):
             self.assertGreater(os.path.getsize(os.path.join(out, f)), 10000, f)
         # One frame per 0.1 s of flight (report's default --fps 10), from tick 0.
         self.assertEqual(m["video_frames"], int(math.floor(m["last_tick"] * ts * 10 + 1e-9)) + 1)
+        # The robots, their trails and the clock drawn over the axes drawn once.
+        self.assertGreater(frames_moved(os.path.join(out, "formation_flight.mp4"), m["video_frames"]), 500)
         self.assertIn("## Formation", open(os.path.join(out, "report.md")).read())
         self.check_readers(bag, delays, m)
 

@@ -16,7 +16,7 @@ import rostest
 # The shared helpers sit beside this script (catkin's devel-space relay runs
 # it with __file__ set to this path; an install puts them beside it too).
 sys.path.insert(0, os.path.dirname(os.path.realpath(__file__)))
-from bag_helpers import record_until  # noqa: E402
+from bag_helpers import frames_moved, record_until  # noqa: E402
 from tools import rosrun  # noqa: E402
 
 BAG = None
@@ -73,6 +73,7 @@ class ReportReplayTest(unittest.TestCase):
         expected = int(math.floor(m["duration_s"] * 10.0 + 1e-9)) + 1  # 10 fps of flight time
         self.assertEqual(int(frames.strip()), expected)
         self.assertEqual(m["video_frames"], expected)
+        self.assertGreater(frames_moved(video, expected), 500)  # the drone, its trail and the clock drawn
         md = open(os.path.join(out, "report.md")).read()
         self.assertIn("ardrone1_route3d.png", md)
         self.assertIn("IAE", md)

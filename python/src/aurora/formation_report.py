@@ -241,7 +241,7 @@ def video(drones, s, out_dir, fps):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     from mpl_toolkits.mplot3d import Axes3D  # noqa: F401  (projection="3d" on matplotlib < 3.2)
-    from matplotlib.animation import FFMpegWriter
+    from aurora.video import write_mp4
     t = s["t"]
     path = os.path.join(out_dir, "formation_flight.mp4")
     fig = plt.figure(figsize=(6.4, 4.8), dpi=100)
@@ -258,10 +258,10 @@ def video(drones, s, out_dir, fps):
     desired, = ax.plot([], [], [], "--", color="tab:red", lw=1, label="desired")
     ax.legend(loc="upper left", fontsize=7)
     label = ax.set_title("")
-    writer = FFMpegWriter(fps=fps, codec="libx264", extra_args=["-pix_fmt", "yuv420p"])
-    frames, i = 0, 0
     total = int(math.floor((t[-1] - t[0]) * fps + 1e-9)) + 1
-    with writer.saving(fig, path, dpi=100):
+
+    def frames():
+        i = 0
         for f in range(total):
             if f % max(1, total // 10) == 0:  # the video is the slow part: say how far it is
                 progress("rendering the video: frame %d of %d" % (f + 1, total))
@@ -275,10 +275,10 @@ def video(drones, s, out_dir, fps):
             Xd = s["Xd"][i]
             desired.set_data_3d(*[closed(Xd[j::3]) for j in range(3)])
             label.set_text("formation   t = %5.1f s" % ft)
-            writer.grab_frame()
-            frames += 1
+            yield
+    written = write_mp4(fig, path, fps, trails + [line, desired, label], frames())
     plt.close(fig)
-    return path, frames
+    return path, written
 
 
 def missing_text(m):

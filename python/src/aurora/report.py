@@ -654,7 +654,7 @@ def video(ns, series, out_dir, fps):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     from mpl_toolkits.mplot3d import Axes3D  # noqa: F401  (projection="3d" on matplotlib < 3.2)
-    from matplotlib.animation import FFMpegWriter
+    from aurora.video import write_mp4
     t = series["t"]
     frame_times = [k / fps for k in range(int(math.floor(t[-1] * fps + 1e-9)) + 1)]
     path = os.path.join(out_dir, "%s_flight.mp4" % ns.strip("/").replace("/", "_"))
@@ -674,18 +674,19 @@ def video(ns, series, out_dir, fps):
     trail, = ax.plot([], [], [], color="tab:blue", lw=1.5)
     drone, = ax.plot([], [], [], "o", color="k", ms=7)
     label = ax.set_title("")
-    writer = FFMpegWriter(fps=fps, codec="libx264", extra_args=["-pix_fmt", "yuv420p"])
-    i = 0
-    with writer.saving(fig, path, dpi=100):
+
+    def frames():
+        i = 0
         for ft in frame_times:
             while i + 1 < len(t) and t[i + 1] <= ft + 1e-9:
                 i += 1
             trail.set_data_3d(series["x"][: i + 1], series["y"][: i + 1], series["z"][: i + 1])
             drone.set_data_3d([series["x"][i]], [series["y"][i]], [series["z"][i]])
             label.set_text("%s   t = %5.1f s" % (ns, ft))
-            writer.grab_frame()
+            yield
+    written = write_mp4(fig, path, fps, [trail, drone, label], frames())
     plt.close(fig)
-    return path, len(frame_times)
+    return path, written
 
 
 def matched_text(m):
