@@ -47,6 +47,14 @@ bool isSticky(cudaError_t err) {
 #define AURORA_CUDA_NATIVE_ARCHITECTURES ""
 #endif
 
+// Whether CMake compiled the kernels only to check them (aurora_sweep's
+// CMakeLists.txt: no GPU and no architectures given at configure time).
+#ifdef AURORA_CUDA_CHECK_BUILD
+constexpr bool kCheckBuild = true;
+#else
+constexpr bool kCheckBuild = false;
+#endif
+
 bool hasNativeCode(const cudaDeviceProp& prop) {
   const std::string archs = std::string(",") + AURORA_CUDA_NATIVE_ARCHITECTURES + ",";
   return archs.find("," + std::to_string(10 * prop.major + prop.minor) + ",") != std::string::npos;
@@ -394,6 +402,12 @@ CudaDevice probeCudaDevice() {
                  "compiles the kernels' PTX before the first chunk (a minute or two when not in its cache, "
                  "~/.nv/ComputeCache); build with -DAURORA_CUDA_ARCHITECTURES=%d%d to have it in the build\n",
                  prop.name, prop.major, prop.minor, prop.major, prop.minor);
+    if (kCheckBuild) {
+      std::fprintf(stderr, "cuda: this build compiled the kernels only to check them (AURORA_CUDA_CHECK_ONLY, "
+                   "the default where CMake found no GPU and was given no architectures: PTX at NVVM -O1), not "
+                   "for speed: build with -DAURORA_CUDA_ARCHITECTURES=%d%d for an optimized kernel\n",
+                   prop.major, prop.minor);
+    }
   }
   SweepSpec probe;
   try {
