@@ -14,12 +14,13 @@
 #include "aurora_control/formation/triangle/triangle_yaml.h"
 #include "aurora_control/formation/uav_ugv/uav_ugv_yaml.h"
 #include "aurora_sim/vehicle/vehicle_yaml.h"
+#include "config_dir.h"
 
 using namespace aurora_control;
 
 namespace {
 
-const std::string kConfig = AURORA_CONFIG_DIR;
+using aurora_tests::kConfig;
 
 // One tick of the runner: each robot's state at its start, its command.
 struct RunnerTick {

@@ -14,6 +14,7 @@
 #include "aurora_control/formation/line/line_yaml.h"
 #include "aurora_control/formation/triangle/triangle_yaml.h"
 #include "aurora_sim/vehicle/vehicle_yaml.h"
+#include "config_dir.h"
 
 namespace {
 
@@ -21,7 +22,7 @@ using namespace aurora_control;
 using Line = LineFormation<double>;
 using Underactuated = ArdroneLaw<LawType::kUnderactuated>;
 
-const std::string kConfig = AURORA_CONFIG_DIR;
+using aurora_tests::kConfig;
 
 // Every robot's state before each tick (X_k), in order.
 template <class Shape>

@@ -17,10 +17,11 @@
 #include "aurora_control/formation/shapes.h"
 #include "aurora_control/law/other_laws.h"
 #include "aurora_sim/vehicle/vehicle_type.h"
+#include "config_dir.h"
 
 namespace {
 
-const std::string kConfig = AURORA_CONFIG_DIR;
+using aurora_tests::kConfig;
 
 std::string strip(const std::string& s, const std::string& chars = " \t\r") {
   const auto first = s.find_first_not_of(chars);

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "aurora_control/loop/flight_setup.h"
+#include "config_dir.h"
 
 namespace {
 
@@ -19,7 +20,7 @@ using aurora_control::FlightFiles;
 using aurora_control::LinkParams;
 using aurora_control::PredictorForm;
 
-const std::string kConfig = AURORA_CONFIG_DIR;
+using aurora_tests::kConfig;
 
 struct Flown {
   std::vector<std::vector<double>> X;   // X_k, each step's state

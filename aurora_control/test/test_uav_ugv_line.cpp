@@ -26,9 +26,9 @@
 
 namespace {
 
-using Line = aurora_control::UavUgvLine<double>;
+using UavUgv = aurora_control::UavUgvLine<double>;
 
-void expectNear(const double* got, const std::vector<double>& want, double rel, const char* what) {
+void expectNearRelative(const double* got, const std::vector<double>& want, double rel, const char* what) {
   for (size_t i = 0; i < want.size(); ++i) {
     EXPECT_NEAR(got[i], want[i], rel * (1.0 + std::fabs(want[i]))) << what << " [" << i << "]";
   }
@@ -57,21 +57,21 @@ TEST(UavUgvLine, TheFirstTickIsAuRoRAs) {
   flyScenario(false, 1, [](const Tick& f) {
     EXPECT_TRUE(f.layer_ran);
     const double tol = 1e-9;  // the spec prints 10 digits at k = 0
-    expectNear(f.layer.Q(), {-1, 0, 0, 1.25, 0, 0.6435011088}, tol, "Q");
-    expectNear(f.layer.Qtil(), {1, 0, 0, 0.75, 1.570796327, 0.4036964424}, tol, "Q~");
-    expectNear(f.layer.velocity(0), {0.1397343957, 0.1, 0}, tol, "dXr of the Pioneer");
-    expectNear(f.layer.velocity(1), {0.140987219, 0.109836913, 0.0102748155}, tol, "dXr of the drone");
-    expectNear(f.layer.position(1), {6.1e-17, 1, 1.732050808}, tol, "the drone's desired position");
-    expectNear(f.steps[0].U, {0.3736396088, 0.7097933116}, tol, "the Pioneer's Ud");
+    expectNearRelative(f.layer.Q(), {-1, 0, 0, 1.25, 0, 0.6435011088}, tol, "Q");
+    expectNearRelative(f.layer.Qtil(), {1, 0, 0, 0.75, 1.570796327, 0.4036964424}, tol, "Q~");
+    expectNearRelative(f.layer.velocity(0), {0.1397343957, 0.1, 0}, tol, "dXr of the Pioneer");
+    expectNearRelative(f.layer.velocity(1), {0.140987219, 0.109836913, 0.0102748155}, tol, "dXr of the drone");
+    expectNearRelative(f.layer.position(1), {6.1e-17, 1, 1.732050808}, tol, "the drone's desired position");
+    expectNearRelative(f.steps[0].U, {0.3736396088, 0.7097933116}, tol, "the Pioneer's Ud");
     const double* U_drone = f.steps[1].U;
     EXPECT_NEAR(U_drone[aurora_sim::kUClimb], 0.8810137624, tol);
     for (int i : {aurora_sim::kURoll, aurora_sim::kUPitch, aurora_sim::kUYawRate}) EXPECT_NEAR(U_drone[i], 0.0, 1e-9);
     // k = 1: the corrected dynamic Pioneer and the drone after one step each.
     const double rel = 1e-12;
     const double *pioneer = f.drones[0].model.X, *drone = f.drones[1].model.X;
-    expectNear(pioneer + aurora_sim::kPioneerU, {0.02333205999780124, 0.10913181297804046}, rel, "Pioneer U");
+    expectNearRelative(pioneer + aurora_sim::kPioneerU, {0.02333205999780124, 0.10913181297804046}, rel, "Pioneer U");
     const double pose[3] = {pioneer[aurora_sim::kX], pioneer[aurora_sim::kY], pioneer[aurora_sim::kYaw]};
-    expectNear(pose, {-0.9992222646667399, 0.0005456590648902024, 0.0036377270992680156}, rel, "Pioneer pose");
+    expectNearRelative(pose, {-0.9992222646667399, 0.0005456590648902024, 0.0036377270992680156}, rel, "Pioneer pose");
     EXPECT_NEAR(drone[aurora_sim::kZ], 0.7458057587350768, rel);
   });
 }
@@ -81,7 +81,7 @@ TEST(UavUgvLine, TheKinematicPioneersFirstStepIsAuRoRAs) {
   flyScenario(true, 1, [](const Tick& f) {
     const double *pioneer = f.drones[0].model.X, *drone = f.drones[1].model.X;
     const double pose[3] = {pioneer[aurora_sim::kX], pioneer[aurora_sim::kY], pioneer[aurora_sim::kYaw]};
-    expectNear(pose, {-0.9875453463731737, 0.0035489665580458753, 0.02365977705363917}, 1e-12, "Pioneer pose");
+    expectNearRelative(pose, {-0.9875453463731737, 0.0035489665580458753, 0.02365977705363917}, 1e-12, "Pioneer pose");
     EXPECT_NEAR(drone[aurora_sim::kZ], 0.7458057587350768, 1e-12);
   });
 }
@@ -170,11 +170,11 @@ TEST(UavUgvLine, CheckFiveJudgesTheGroundRobotsCommands) {
 TEST(UavUgvLine, TheVariablesAndTheirInverse) {
   const double Q[6] = {0.3, -0.4, 0.0, 2.0, 2.5, -0.4};
   double X[6], back[6];
-  Line::positions(Q, X);
-  Line::variables(X, back);
+  UavUgv::positions(Q, X);
+  UavUgv::variables(X, back);
   for (int i = 0; i < 6; ++i) EXPECT_NEAR(back[i], Q[i], 1e-14) << i;
   const double vertical[6] = {0, 0, 0, 0, 0, 2};
-  Line::variables(vertical, back);
+  UavUgv::variables(vertical, back);
   EXPECT_EQ(back[4], 0.0);
   EXPECT_NEAR(back[5], M_PI / 2, 1e-15);
 }

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -20,6 +21,20 @@ namespace test {
 inline const std::string& configDir() {
   static const std::string dir = AURORA_CONFIG_DIR;
   return dir;
+}
+
+// The sweep's test data (aurora_sweep/test/data: reference results).
+inline const std::string& dataDir() {
+  static const std::string dir = std::string(AURORA_SWEEP_TEST_DIR) + "/data";
+  return dir;
+}
+
+// How many of two runs' results differ in any byte, and by how many their
+// counts differ (0: bit-identical).
+inline long differing(const std::vector<SimResult>& a, const std::vector<SimResult>& b) {
+  long n = 0;
+  for (size_t i = 0; i < a.size() && i < b.size(); ++i) n += std::memcmp(&a[i], &b[i], sizeof(SimResult)) != 0;
+  return n + static_cast<long>(a.size() > b.size() ? a.size() - b.size() : b.size() - a.size());
 }
 
 inline std::string writeTemp(const std::string& name, const std::string& text) {

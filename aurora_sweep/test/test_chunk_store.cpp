@@ -10,12 +10,11 @@
 #include "aurora_sweep/chunk_store.h"
 #include "aurora_sweep/sweep_file.h"
 
+#include "sweep_test_support.h"
+
 using namespace aurora_sweep;
 
 namespace {
-
-const std::string kConfig = AURORA_CONFIG_DIR;
-const std::string kData = std::string(AURORA_SWEEP_TEST_DIR) + "/data";
 
 bool exists(const std::string& path) {
   struct stat st;
@@ -53,7 +52,7 @@ TEST(ChunkPlan, CoversTheIndexSpaceOnce) {
 }
 
 TEST(ChunkStore, WritesReadsAndResumes) {
-  const SweepSpec spec = loadSweepFile(kData + "/small_grid.yaml", kConfig);
+  const SweepSpec spec = loadSweepFile(test::dataDir() + "/small_grid.yaml", test::configDir());
   const std::string dir = freshDir("chunks_resume");
   const ChunkPlan plan{spec.size(), 7};
   {
@@ -79,7 +78,7 @@ TEST(ChunkStore, WritesReadsAndResumes) {
 }
 
 TEST(ChunkStore, AnotherSweepIsRefusedAndOldOutputsGo) {
-  const SweepSpec spec = loadSweepFile(kData + "/small_grid.yaml", kConfig);
+  const SweepSpec spec = loadSweepFile(test::dataDir() + "/small_grid.yaml", test::configDir());
   SweepSpec other = spec;
   other.early_stop = !spec.early_stop;
   EXPECT_NE(definitionHash(spec), definitionHash(other));
@@ -109,7 +108,7 @@ TEST(ChunkStore, AnotherSweepIsRefusedAndOldOutputsGo) {
 // A run killed on one backend and resumed on another would mix numbers that
 // agree to rounding only: refused, naming the backend to resume with.
 TEST(ChunkStore, ResumingWithAnotherBackendIsRefused) {
-  const SweepSpec spec = loadSweepFile(kData + "/small_grid.yaml", kConfig);
+  const SweepSpec spec = loadSweepFile(test::dataDir() + "/small_grid.yaml", test::configDir());
   const std::string dir = freshDir("chunks_backend");
   const ChunkPlan plan{spec.size(), 7};
   { ChunkStore store(dir, spec, plan, false, "scalar"); store.write(0, fakeResults(7, 0)); }

@@ -17,8 +17,6 @@ using namespace aurora_sweep;
 
 namespace {
 
-const std::string kConfig = AURORA_CONFIG_DIR;
-
 using test::refusal;
 using test::runOn;
 
@@ -75,7 +73,7 @@ TEST(Design, SamplesDependOnSeedAndIndexOnly) {
 }
 
 TEST(Design, SweepFileSamplesTheRanges) {
-  const SweepSpec spec = loadSweepFile(writeSweep("sobol", kSobolSweep), kConfig);
+  const SweepSpec spec = loadSweepFile(writeSweep("sobol", kSobolSweep), test::configDir());
   EXPECT_EQ(spec.size(), 512);
   EXPECT_EQ(spec.design, "sobol");
   const GridView g = spec.view();
@@ -99,7 +97,7 @@ TEST(Design, SweepFileSamplesTheRanges) {
 }
 
 TEST(Design, ScalarAndCpuAgreeOnADesign) {
-  const SweepSpec spec = loadSweepFile(writeSweep("sobol_backends", kSobolSweep), kConfig);
+  const SweepSpec spec = loadSweepFile(writeSweep("sobol_backends", kSobolSweep), test::configDir());
   const std::vector<SimResult> scalar = runOn("scalar", spec), cpu = runOn("cpu", spec);
   int feasible = 0;
   for (long i = 0; i < spec.size(); ++i) {

@@ -18,8 +18,6 @@ using aurora_control::LawType;
 
 namespace {
 
-const std::string kData = std::string(AURORA_SWEEP_TEST_DIR) + "/data";
-
 // Every thread of a launch of blocks of `block` threads over [first, first + n),
 // as the GPU would run them; `grid` may hold only the chunk's rows of a design.
 template <LawType Law, int Capacity>
@@ -62,7 +60,7 @@ void expectSameBytes(const std::vector<SimResult>& a, const std::vector<SimResul
 
 // An odd count from an offset, with a last partial block.
 TEST(KernelEntry, EveryThreadOfALaunchWithAnOffset) {
-  const SweepSpec spec = loadSweepFile(kData + "/small_grid.yaml", AURORA_CONFIG_DIR);
+  const SweepSpec spec = loadSweepFile(test::dataDir() + "/small_grid.yaml", AURORA_CONFIG_DIR);
   const long first = 7, n = 37;
   aurora_control::withHistoryCapacity(spec.max_delay, [&](auto capacity) {
     const auto gpu = launchOnHost<LawType::kPdSaturated, decltype(capacity)::value>(spec, spec.view(), first, n, 8);
@@ -103,7 +101,7 @@ TEST(KernelEntry, OffsetsAboveTwoToTheThirtyTwo) {
 // Every byte of a result is defined (the padding is a zeroed field): two
 // runs give identical chunk bytes.
 TEST(KernelEntry, ResultsHaveNoUndefinedBytes) {
-  const SweepSpec spec = loadSweepFile(kData + "/small_grid.yaml", AURORA_CONFIG_DIR);
+  const SweepSpec spec = loadSweepFile(test::dataDir() + "/small_grid.yaml", AURORA_CONFIG_DIR);
   const auto a = scalarRange(spec, 0, spec.size());
   const auto b = test::runOn("cpu", spec);
   for (const SimResult& r : a) {

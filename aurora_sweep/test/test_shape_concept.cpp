@@ -29,6 +29,7 @@
 namespace {
 
 using namespace aurora_sweep;
+using test::differing;
 using aurora_control::LawType;
 using three_abreast::ThreeAbreast;
 template <typename T, class Data = aurora_control::ArdroneLawData>
@@ -176,11 +177,6 @@ SimResult runner(const Setup3<T, Law>& setup, const GridView& grid, long i, T en
   return formationResult(judge.metrics, ticks, observe.distance);
 }
 
-int differing(const std::vector<SimResult>& a, const std::vector<SimResult>& b) {
-  int n = static_cast<int>(a.size() != b.size());
-  for (size_t i = 0; i < a.size() && i < b.size(); ++i) n += std::memcmp(&a[i], &b[i], sizeof(SimResult)) != 0;
-  return n;
-}
 
 // Every backend on the grid: runner, scalar loop and kernel threads the
 // same bytes; SIMD lanes the same flags and ticks, metrics to `rel`. Over
@@ -231,7 +227,7 @@ void expectItFlies(const Run3<double, typename Law::Data>& ideal) {
   EXPECT_NE(std::memcmp(&flown, &scalarLoop<Law, double, false>(setup, grid.view)[8], sizeof flown), 0);
 }
 
-aurora_control::LinkParams lossyLink() {
+aurora_control::LinkParams lossyCrewLink() {
   aurora_control::LinkParams l;
   l.uplink.jitter = aurora_control::JitterKind::kUniform;
   l.uplink.jitter_max = 2;
@@ -258,7 +254,7 @@ TEST(ShapeConcept, AThreeRobotShapeFliesEveryBackend) {
     EXPECT_EQ(run.gains.k1[3], c.v[kAt.k1(3)]);
   }
   // Robot 3's own uplink_loss_3 applies to robot 3 only.
-  const Run3<double> lossy = threeDrones(lossyLink());
+  const Run3<double> lossy = threeDrones(lossyCrewLink());
   const Run3<double> own = formationCombination<DroneLaw>(setupOf<double>(lossy), ThreeGrid(0.3).view.decode(5));
   EXPECT_EQ(own.drone[2].link.uplink.loss, 0.3);
   EXPECT_EQ(own.drone[0].link.uplink.loss, 0.1);
@@ -269,7 +265,7 @@ TEST(ShapeConcept, AThreeRobotShapeFliesEveryBackend) {
   expectItFlies<DroneLaw>(ideal);
   expectEveryBackendAgrees<DroneLaw>(ideal, lossy);
   expectItFlies<PointLaw>(threePoints(aurora_control::LinkParams()));
-  expectEveryBackendAgrees<PointLaw>(threePoints(aurora_control::LinkParams()), threePoints(lossyLink()));
+  expectEveryBackendAgrees<PointLaw>(threePoints(aurora_control::LinkParams()), threePoints(lossyCrewLink()));
 }
 
 // Robots of different vehicles in one formation, each with its own law:
@@ -316,7 +312,7 @@ TEST(ShapeConcept, RobotsOfDifferentVehiclesFlyOneFormation) {
   aurora_control::runFormation<MixedLaw, double, ThreeAbreast<double>, kCapacity>(run, 30, pointOnly);
   EXPECT_EQ(ticks, 30);
   expectItFlies<MixedLaw>(mixed);
-  expectEveryBackendAgrees<MixedLaw>(mixed, mixedCrew(middle, lossyLink()));
+  expectEveryBackendAgrees<MixedLaw>(mixed, mixedCrew(middle, lossyCrewLink()));
   EXPECT_NE(differing(own, scalarLoop<MixedLaw, double, false>(setup, grid.view)), 0);
 }
 

@@ -20,9 +20,6 @@ using namespace aurora_sweep;
 
 namespace {
 
-const std::string kConfig = AURORA_CONFIG_DIR;
-const std::string kData = std::string(AURORA_SWEEP_TEST_DIR) + "/data";
-
 using test::relClose;
 using test::runOn;
 
@@ -69,7 +66,7 @@ TEST(SimdDispatch, EveryBuildThisCpuRunsAgreesWithTheScalarLoop) {
       continue;
     }
     SCOPED_TRACE(isa.key + " (" + isa.name + ")");
-    SweepSpec spec = loadSweepFile(kData + "/small_grid.yaml", kConfig);
+    SweepSpec spec = loadSweepFile(test::dataDir() + "/small_grid.yaml", test::configDir());
     expectAgreement(isa.key, spec, 1e-9);
     spec.precision = Precision::kFloat;
     // float: the flags and step counts still agree on this grid; metrics to float rounding
@@ -85,7 +82,7 @@ TEST(SimdDispatch, EveryBuildThisCpuRunsAgreesWithTheScalarLoop) {
 }
 
 TEST(SimdDispatch, AnUnknownOrUnsupportedBuildIsRefused) {
-  const SweepSpec spec = loadSweepFile(kData + "/small_grid.yaml", kConfig);
+  const SweepSpec spec = loadSweepFile(test::dataDir() + "/small_grid.yaml", test::configDir());
   std::vector<SimResult> out;
   Progress progress{0};
   try {
@@ -124,7 +121,7 @@ TEST(SimdDispatch, TheEnvironmentPicksTheBuild) {
     const std::string out = ::testing::TempDir() + "/simd_env_" + isa.key;
     std::string log;
     ASSERT_EQ(runSweepWith("AURORA_SWEEP_SIMD=" + isa.key,
-                           "--config " + kData + "/small_grid.yaml --config-dir " + kConfig + " --out " +
+                           "--config " + test::dataDir() + "/small_grid.yaml --config-dir " + test::configDir() + " --out " +
                                out + " --backend cpu --no-plots --quiet --overwrite",
                            log),
               0)
@@ -136,7 +133,7 @@ TEST(SimdDispatch, TheEnvironmentPicksTheBuild) {
   const std::string refused = ::testing::TempDir() + "/simd_env_refused";
   std::string log;
   EXPECT_EQ(runSweepWith("AURORA_SWEEP_SIMD=avx1024",
-                         "--config " + kData + "/small_grid.yaml --config-dir " + kConfig + " --out " +
+                         "--config " + test::dataDir() + "/small_grid.yaml --config-dir " + test::configDir() + " --out " +
                              refused + " --backend cpu --no-plots --quiet",
                          log),
             2)

@@ -21,8 +21,6 @@ using aurora_control::LawType;
 
 namespace {
 
-const std::string kConfig = AURORA_CONFIG_DIR;
-
 using test::readText;
 using test::refusal;
 using test::relClose;
@@ -142,7 +140,7 @@ namespace {
 
 // A one-combination sweep: `law_and_task` gives controller and task keys.
 SweepSpec single(const std::string& name, const std::string& body) {
-  return loadSweepFile(writeTemp(name + ".yaml", "sweep:\n  early_stop: false\n" + body), kConfig);
+  return loadSweepFile(writeTemp(name + ".yaml", "sweep:\n  early_stop: false\n" + body), test::configDir());
 }
 
 // The states the sweep's simulation of combination 0 flies (studyRun and
@@ -265,7 +263,7 @@ TEST(Study13, PointsFileTakesAnyParameterColumns) {
   const std::string csv = writeTemp("ua_points_ok.csv", "k1_z,delay,m\n5,3,1.1\n4,0,0.9\n");
   const SweepSpec spec = loadSweepFile(writeTemp("ua_points.yaml", "sweep:\n  controller: underactuated\n  points: " +
                                                                        csv + "\n  parameters: {k2_z: 3}\n"),
-                                       kConfig);
+                                       test::configDir());
   ASSERT_EQ(spec.size(), 2);
   const Combination c = spec.view().decode(1);
   EXPECT_EQ(c.v[kParamFirstUnderactuatedGain + 4], 4.0);  // k1_z from the file
@@ -283,7 +281,7 @@ TEST(Study13, PointsFileTakesAnyParameterColumns) {
 TEST(Study13, TheProgramWritesEveryParameterAndItsPlots) {
   const SweepSpec small = study13(256);
   const std::string out = ::testing::TempDir() + "/study13_program";
-  const std::string cmd = std::string(AURORA_SWEEP_BIN) + " --config " + small.file + " --config-dir " + kConfig +
+  const std::string cmd = std::string(AURORA_SWEEP_BIN) + " --config " + small.file + " --config-dir " + test::configDir() +
                           " --out " + out + " --backend cpu --output both --quiet --overwrite 2>&1";
   FILE* p = popen(cmd.c_str(), "r");
   std::string log;

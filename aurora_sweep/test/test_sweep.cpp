@@ -21,10 +21,7 @@ using namespace aurora_sweep;
 
 namespace {
 
-const std::string kConfig = AURORA_CONFIG_DIR;
-const std::string kData = std::string(AURORA_SWEEP_TEST_DIR) + "/data";
-
-SweepSpec load(const std::string& path) { return loadSweepFile(path, kConfig); }
+SweepSpec load(const std::string& path) { return loadSweepFile(path, test::configDir()); }
 
 using test::refusal;
 using test::relClose;
@@ -40,7 +37,7 @@ const char* kGoodParams =
 }  // namespace
 
 TEST(SweepFile, ThesisGridDecodesToTheThesisValues) {
-  const SweepSpec spec = load(kConfig + "/sweeps/positioning_delay.yaml");
+  const SweepSpec spec = load(test::configDir() + "/sweeps/positioning_delay.yaml");
   EXPECT_EQ(spec.size(), 65536);
   EXPECT_EQ(spec.max_delay, 63);
   EXPECT_TRUE(spec.early_stop);
@@ -72,7 +69,7 @@ TEST(SweepFile, OrderChangesTheIndexing) {
 }
 
 TEST(Backends, ScalarAndCpuAgreeInDouble) {
-  const SweepSpec spec = load(kData + "/small_grid.yaml");
+  const SweepSpec spec = load(test::dataDir() + "/small_grid.yaml");
   ASSERT_EQ(spec.size(), 80);
   const auto scalar = runOn("scalar", spec);
   const auto cpu = runOn("cpu", spec);
@@ -100,7 +97,7 @@ TEST(Backends, ScalarAndCpuAgreeInDouble) {
 
 TEST(Backends, KernelBodyOnTheHostMatchesTheCpuBackend) {
   // simulateCombination() is what each CUDA thread runs; here it runs on the CPU.
-  const SweepSpec spec = load(kData + "/small_grid.yaml");
+  const SweepSpec spec = load(test::dataDir() + "/small_grid.yaml");
   const auto setup = makeSetup<aurora_sim::Ardrone2, double>(spec);
   const GridView grid = spec.view();
   const auto cpu = runOn("cpu", spec);
@@ -116,7 +113,7 @@ TEST(Backends, KernelBodyOnTheHostMatchesTheCpuBackend) {
 }
 
 TEST(Backends, EarlyStopKeepsTheFeasibleSetAndSavesSteps) {
-  SweepSpec spec = load(kData + "/small_grid.yaml");
+  SweepSpec spec = load(test::dataDir() + "/small_grid.yaml");
   const auto full = runOn("cpu", spec);
   spec.early_stop = true;
   const auto early = runOn("cpu", spec);
@@ -130,7 +127,7 @@ TEST(Backends, EarlyStopKeepsTheFeasibleSetAndSavesSteps) {
 }
 
 TEST(Backends, FloatFeasibilityTracksDouble) {
-  SweepSpec spec = load(kData + "/small_grid.yaml");
+  SweepSpec spec = load(test::dataDir() + "/small_grid.yaml");
   const auto d = runOn("cpu", spec);
   spec.precision = Precision::kFloat;
   const auto f_cpu = runOn("cpu", spec);
@@ -144,7 +141,7 @@ TEST(Backends, FloatFeasibilityTracksDouble) {
 }
 
 TEST(Backends, PointsFileReproducesTheSpecSelfCheckRows) {
-  const SweepSpec spec = load(kData + "/points.yaml");
+  const SweepSpec spec = load(test::dataDir() + "/points.yaml");
   ASSERT_EQ(spec.size(), 3);
   struct Row {
     unsigned char ok;
@@ -245,7 +242,7 @@ int runSweep(const std::string& args, std::string& output) {
 TEST(SweepProgram, WritesResultsSummaryAndPlots) {
   const std::string out = ::testing::TempDir() + "/sweep_program_out";
   std::string log;
-  const int rc = runSweep("--config " + kData + "/small_grid.yaml --out " + out +
+  const int rc = runSweep("--config " + test::dataDir() + "/small_grid.yaml --out " + out +
                               " --backend cpu --threads 2 --quiet --overwrite",
                           log);
   ASSERT_EQ(rc, 0) << log;
@@ -330,7 +327,7 @@ TEST(SweepProgram, RepeatsReportTheFeasibleShare) {
 }
 
 TEST(DelayMonotony, CountsPairsThatComeBackAtALongerDelay) {
-  const SweepSpec spec = load(kData + "/small_grid.yaml");  // 4 kp x 4 kd x 5 delays, kp fastest
+  const SweepSpec spec = load(test::dataDir() + "/small_grid.yaml");  // 4 kp x 4 kd x 5 delays, kp fastest
   DelayMonotony m(spec);
   ASSERT_TRUE(m.applies());
   std::vector<SimResult> r(static_cast<size_t>(spec.size()));
@@ -349,18 +346,18 @@ TEST(DelayMonotony, CountsPairsThatComeBackAtALongerDelay) {
 
 TEST(SweepProgram, RefusesUnwritableOutputAndMissingDevice) {
   std::string log;
-  EXPECT_EQ(runSweep("--config " + kData + "/small_grid.yaml --out /proc/aurora_sweep_out", log), 2);
+  EXPECT_EQ(runSweep("--config " + test::dataDir() + "/small_grid.yaml --out /proc/aurora_sweep_out", log), 2);
   EXPECT_NE(log.find("'/proc/aurora_sweep_out' is not writable"), std::string::npos) << log;
-  EXPECT_EQ(runSweep("--config " + kData + "/small_grid.yaml --out x --backend gpu", log), 2);
+  EXPECT_EQ(runSweep("--config " + test::dataDir() + "/small_grid.yaml --out x --backend gpu", log), 2);
   EXPECT_NE(log.find("accepted scalar, cpu, cuda, auto"), std::string::npos) << log;
-  EXPECT_EQ(runSweep("--config " + kData + "/nope.yaml --out x", log), 2);
+  EXPECT_EQ(runSweep("--config " + test::dataDir() + "/nope.yaml --out x", log), 2);
   EXPECT_NE(log.find("cannot be read"), std::string::npos) << log;
 }
 #endif
 
 // sweep.task is the node's task schema: a task file or the same keys inline.
 TEST(SweepFileTask, OneSchemaWithTheNode) {
-  const SweepSpec byFile = load(kConfig + "/sweeps/positioning_delay.yaml");  // task: tasks/positioning.yaml
+  const SweepSpec byFile = load(test::configDir() + "/sweeps/positioning_delay.yaml");  // task: tasks/positioning.yaml
   EXPECT_EQ(byFile.task.waypoints.position[0][0], 2.0);
   EXPECT_EQ(byFile.duration(), 60.0);
   const std::string inline_task =
@@ -425,13 +422,13 @@ TEST(SweepProgram, RefusalsLeaveNothingBehind) {
   std::string log;
   const std::string out = ::testing::TempDir() + "/sweep_no_device_out";
   std::remove(out.c_str());
-  const int rc = runSweep("--config " + kData + "/small_grid.yaml --out " + out + " --backend cuda", log);
+  const int rc = runSweep("--config " + test::dataDir() + "/small_grid.yaml --out " + out + " --backend cuda", log);
   if (rc == 3) {  // no usable device here (CI); with one, the run is legitimate
     struct stat st;
     EXPECT_NE(stat(out.c_str(), &st), 0) << "output folder created although nothing ran: " << log;
   }
   const std::string out2 = ::testing::TempDir() + "/sweep_no_master_out";
-  EXPECT_EQ(runSweep("--config " + kData + "/small_grid.yaml --out " + out2 +
+  EXPECT_EQ(runSweep("--config " + test::dataDir() + "/small_grid.yaml --out " + out2 +
                          " --rviz __master:=http://localhost:1 --no-plots",
                      log), 7);
   EXPECT_NE(log.find("no ROS master"), std::string::npos) << log;
@@ -446,8 +443,8 @@ TEST(SweepProgram, RefusalsLeaveNothingBehind) {
 TEST(SweepProgram, AShippedSweepIsTakenByItsName) {
   const std::string config = ::testing::TempDir() + "/sweep_named_config";
   std::string log;
-  ASSERT_EQ(std::system(("rm -rf '" + config + "' && mkdir -p '" + config + "/sweeps' && cp '" + kData +
-                         "/small_grid.yaml' '" + config + "/sweeps/' && ln -s '" + kConfig + "/vehicles' '" +
+  ASSERT_EQ(std::system(("rm -rf '" + config + "' && mkdir -p '" + config + "/sweeps' && cp '" + test::dataDir() +
+                         "/small_grid.yaml' '" + config + "/sweeps/' && ln -s '" + test::configDir() + "/vehicles' '" +
                          config + "/vehicles'").c_str()), 0);
   const std::string out = ::testing::TempDir() + "/sweep_named_out";
   ASSERT_EQ(runSweep("--config small_grid --config-dir " + config + " --out " + out +
@@ -468,7 +465,7 @@ TEST(SweepProgram, AnOutputFolderNameIsNotShellCode) {
   std::remove(marker.c_str());
   const std::string out = ::testing::TempDir() + "/sweep \"odd\" $(touch " + marker + ")";
   std::string log;
-  ASSERT_EQ(runSweep("--config " + kData + "/small_grid.yaml --out '" + out + "' --backend scalar --overwrite", log), 0)
+  ASSERT_EQ(runSweep("--config " + test::dataDir() + "/small_grid.yaml --out '" + out + "' --backend scalar --overwrite", log), 0)
       << log;
   EXPECT_TRUE(std::ifstream(out + "/feasible_volume.png").good()) << log;
   EXPECT_FALSE(std::ifstream(marker).good()) << "the folder name ran as a command";
@@ -486,7 +483,7 @@ TEST(SweepProgram, CudaLimitsAreCheckedBeforeTheRun) {
               log.find("this build has no CUDA backend") != std::string::npos) << log;
   struct stat st;
   EXPECT_NE(stat(out.c_str(), &st), 0) << "output folder created for a refused sweep: " << log;
-  EXPECT_EQ(runSweep("--config " + kData + "/small_grid.yaml --out " + out + " --backend cuda --block-size 2048", log), 2);
+  EXPECT_EQ(runSweep("--config " + test::dataDir() + "/small_grid.yaml --out " + out + " --backend cuda --block-size 2048", log), 2);
   EXPECT_NE(log.find("--block-size 2048 is invalid: CUDA blocks hold at most 1024 threads"), std::string::npos) << log;
 }
 
@@ -494,7 +491,7 @@ TEST(SweepProgram, CudaLimitsAreCheckedBeforeTheRun) {
 // device works; the history it needs counts the link's jitter, checked
 // before anything is written and without a device.
 TEST(SweepProgram, ALinkSweepOnTheCudaBackendCountsTheJitter) {
-  const std::string base = test::readText(kData + "/small_grid.yaml");
+  const std::string base = test::readText(test::dataDir() + "/small_grid.yaml");
   const std::string lossy = writeTemp("cuda_link.yaml", base + "  link: links/wifi_lab.yaml\n");
   std::string log;
   const int rc = runSweep("--config " + lossy + " --out " + ::testing::TempDir() + "/sweep_cuda_link --backend cuda", log);
@@ -532,13 +529,13 @@ TEST(SweepProgram, SaysTheCostUpFrontAndRefusesWhatCannotFit) {
   EXPECT_NE(stat(out.c_str(), &st), 0) << "output folder created for a refused sweep: " << log;
   // A sweep that fits: the plan, then the run; counts in the singular too.
   const std::string small = ::testing::TempDir() + "/sweep_plan_out";
-  ASSERT_EQ(runSweep("--config " + kData + "/small_grid.yaml --out " + small + " --backend scalar --no-plots "
+  ASSERT_EQ(runSweep("--config " + test::dataDir() + "/small_grid.yaml --out " + small + " --backend scalar --no-plots "
                      "--chunk-size 100 --overwrite", log), 0) << log;
   EXPECT_NE(log.find("sweep: plan: 80 combinations in 1 chunk: "), std::string::npos) << log;
   EXPECT_NE(log.find("sims/s (measured on the first "), std::string::npos) << log;
   EXPECT_EQ(log.find("1 chunks"), std::string::npos) << log;
   // Issue 51 (10): --output none writes no results, and counts none against the free space.
-  ASSERT_EQ(runSweep("--config " + kData + "/small_grid.yaml --out " + small + " --backend scalar --no-plots "
+  ASSERT_EQ(runSweep("--config " + test::dataDir() + "/small_grid.yaml --out " + small + " --backend scalar --no-plots "
                      "--output none --overwrite", log), 0) << log;
   EXPECT_NE(log.find(", results 0 B); "), std::string::npos) << log;
 }

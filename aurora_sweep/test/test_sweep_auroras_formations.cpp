@@ -107,11 +107,6 @@ std::vector<SimResult> kernelThreads(const SweepSpec& spec, const ShapeRun<doubl
   return out;
 }
 
-int differing(const std::vector<SimResult>& a, const std::vector<SimResult>& b) {
-  int n = static_cast<int>(a.size() != b.size());
-  for (size_t i = 0; i < a.size() && i < b.size(); ++i) n += std::memcmp(&a[i], &b[i], sizeof(SimResult)) != 0;
-  return n;
-}
 
 // The scalar loop is the flight tool's run and the kernel's threads, bit
 // for bit; the threads and every SIMD build agree: in double the metrics

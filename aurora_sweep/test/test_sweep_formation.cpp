@@ -62,12 +62,6 @@ SimResult flightToolRecord(const std::string& file, long d1, long d2, double k1_
   return formationResult(judge.metrics, ran, end);
 }
 
-int differing(const std::vector<SimResult>& a, const std::vector<SimResult>& b) {
-  int n = 0;
-  for (size_t i = 0; i < a.size(); ++i) n += std::memcmp(&a[i], &b[i], sizeof(SimResult)) != 0;
-  return n + static_cast<int>(a.size() != b.size());
-}
-
 }  // namespace
 
 // Each combination is the flight tool's run (formation_runner.h with the

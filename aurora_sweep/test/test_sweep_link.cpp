@@ -31,12 +31,6 @@ SweepSpec smallGrid(const std::string& link) {
   return loadSweepFile(writeTemp("small_grid_link_" + link + ".yaml", text), configDir());
 }
 
-long differing(const std::vector<SimResult>& a, const std::vector<SimResult>& b) {
-  long n = 0;
-  for (size_t i = 0; i < a.size() && i < b.size(); ++i) n += std::memcmp(&a[i], &b[i], sizeof(SimResult)) != 0;
-  return n + static_cast<long>(a.size() > b.size() ? a.size() - b.size() : b.size() - a.size());
-}
-
 }  // namespace
 
 TEST(SweepLink, AnIdealLinkFileChangesNothing) {
