@@ -22,12 +22,14 @@ function(aurora_test_target target)
   target_compile_options(${target} PRIVATE -O1)
 endfunction()
 
-# A gtest of many files compiles them in batches of eight, each batch one
-# translation unit (CMake's unity build): the headers and templates they
-# share (the laws, the runners, the sweep's engines) compiled once per batch,
-# not once per file: a third less compile time. The files of such a target
-# keep their helpers' names apart (a shared one in the target's support
-# header); a file with flags of its own stays out (SKIP_UNITY_BUILD_INCLUSION).
+# A test build of many files (the big gtests, the registry test's builds of
+# the nodes) compiles them in batches of eight, each batch one translation
+# unit (CMake's unity build): the headers and templates they share (the
+# laws, the runners, the sweep's engines) compiled once per batch, not once
+# per file: half the compile time. The files of such a target keep their
+# helpers' names apart (a shared one in the target's support header) and
+# each still compiles alone; a file with flags of its own stays out
+# (SKIP_UNITY_BUILD_INCLUSION).
 function(aurora_unity_tests target)
   set_target_properties(${target} PROPERTIES UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE 8)
 endfunction()
