@@ -1,9 +1,9 @@
 """The reports' MP4 videos (report.py, formation_report.py), written once.
 
 A frame redrawn in full (what matplotlib's writer does on each grab) draws
-the 3D axes again, their panes, grid, ticks and labels: nine tenths of a
-report's time went there, for pixels that do not change. The still parts are
-drawn once here, and each frame draws only the artists that move over them
+the 3D axes again, their panes, grid, ticks and labels: most of a report's
+time went there, for pixels that do not change. The still parts are drawn
+once here, and each frame draws only the artists that move over them
 (blitting, matplotlib's own canvas.copy_from_bbox / restore_region)."""
 
 
