@@ -261,13 +261,15 @@ TEST(LinkFile, MistakesAreRefusedNamingTheKey) {
   EXPECT_NE(linkRefusal("uplink: {loss: 1.0}").find("'link.uplink.loss' = 1 is outside the accepted range [0, 0.99]"),
             std::string::npos);
   EXPECT_NE(linkRefusal("uplink: {loss: -0.1}").find("'link.uplink.loss' = -0.1"), std::string::npos);
-  EXPECT_NE(linkRefusal("downlink: {burst: 0.5}").find("'link.downlink.burst' = 0.5 is outside the accepted range [1, 1000]"),
+  EXPECT_NE(linkRefusal("downlink: {burst: 0.5}")
+                .find("'link.downlink.burst' = 0.5 is outside the accepted range [1, 1000]"),
             std::string::npos);
   EXPECT_NE(linkRefusal("uplink: {delay: -2}").find("'link.uplink.delay' = -2 is refused"), std::string::npos);
   EXPECT_NE(linkRefusal("uplink: {delay: 2000, jitter: {kind: uniform, max: 100}}").find("beyond the history"),
             std::string::npos);
   EXPECT_NE(linkRefusal("uplink: {delay: 1, lag: 2}").find("'link.uplink.lag' is not a known key"), std::string::npos);
-  EXPECT_NE(linkRefusal("uplink: {jitter: {kind: gauss, max: 2}}").find("accepted uniform, geometric"), std::string::npos);
+  EXPECT_NE(linkRefusal("uplink: {jitter: {kind: gauss, max: 2}}").find("accepted uniform, geometric"),
+            std::string::npos);
   EXPECT_NE(linkRefusal("uplink: {loss: 0.9, burst: 2}").find("accepted up to burst / (burst + 1)"), std::string::npos);
   EXPECT_EQ(linkRefusal("uplink: {delay: 2, jitter: {kind: geometric, mean: 1, max: 6}, loss: 0.05, burst: 20}"), "");
 }

@@ -60,7 +60,7 @@ void expectSameBytes(const std::vector<SimResult>& a, const std::vector<SimResul
 
 // An odd count from an offset, with a last partial block.
 TEST(KernelEntry, EveryThreadOfALaunchWithAnOffset) {
-  const SweepSpec spec = loadSweepFile(test::dataDir() + "/small_grid.yaml", AURORA_CONFIG_DIR);
+  const SweepSpec spec = loadSweepFile(test::dataDir() + "/small_grid.yaml", test::configDir());
   const long first = 7, n = 37;
   aurora_control::withHistoryCapacity(spec.max_delay, [&](auto capacity) {
     const auto gpu = launchOnHost<LawType::kPdSaturated, decltype(capacity)::value>(spec, spec.view(), first, n, 8);
@@ -87,7 +87,7 @@ TEST(KernelEntry, AChunkOfADesignFromItsOwnRowsOnly) {
 TEST(KernelEntry, OffsetsAboveTwoToTheThirtyTwo) {
   const SweepSpec spec = loadSweepFile(test::writeTemp("huge_entry.yaml",
       "sweep:\n  parameters:\n    kp: {from: 0.1, to: 1, count: 100000}\n    kd: {from: 0.1, to: 1, count: 100000}\n"
-      "    delay: {values: [0, 3, 9]}\n"), AURORA_CONFIG_DIR);
+      "    delay: {values: [0, 3, 9]}\n"), test::configDir());
   const long first = (1L << 32) + 3, n = 5;
   aurora_control::withHistoryCapacity(spec.max_delay, [&](auto capacity) {
     const auto gpu = launchOnHost<LawType::kPdSaturated, decltype(capacity)::value>(spec, spec.view(), first, n, 4);
@@ -101,7 +101,7 @@ TEST(KernelEntry, OffsetsAboveTwoToTheThirtyTwo) {
 // Every byte of a result is defined (the padding is a zeroed field): two
 // runs give identical chunk bytes.
 TEST(KernelEntry, ResultsHaveNoUndefinedBytes) {
-  const SweepSpec spec = loadSweepFile(test::dataDir() + "/small_grid.yaml", AURORA_CONFIG_DIR);
+  const SweepSpec spec = loadSweepFile(test::dataDir() + "/small_grid.yaml", test::configDir());
   const auto a = scalarRange(spec, 0, spec.size());
   const auto b = test::runOn("cpu", spec);
   for (const SimResult& r : a) {

@@ -121,8 +121,8 @@ TEST(SimdDispatch, TheEnvironmentPicksTheBuild) {
     const std::string out = ::testing::TempDir() + "/simd_env_" + isa.key;
     std::string log;
     ASSERT_EQ(runSweepWith("AURORA_SWEEP_SIMD=" + isa.key,
-                           "--config " + test::dataDir() + "/small_grid.yaml --config-dir " + test::configDir() + " --out " +
-                               out + " --backend cpu --no-plots --quiet --overwrite",
+                           "--config " + test::dataDir() + "/small_grid.yaml --config-dir " + test::configDir() +
+                               " --out " + out + " --backend cpu --no-plots --quiet --overwrite",
                            log),
               0)
         << log;
@@ -133,8 +133,8 @@ TEST(SimdDispatch, TheEnvironmentPicksTheBuild) {
   const std::string refused = ::testing::TempDir() + "/simd_env_refused";
   std::string log;
   EXPECT_EQ(runSweepWith("AURORA_SWEEP_SIMD=avx1024",
-                         "--config " + test::dataDir() + "/small_grid.yaml --config-dir " + test::configDir() + " --out " +
-                             refused + " --backend cpu --no-plots --quiet",
+                         "--config " + test::dataDir() + "/small_grid.yaml --config-dir " + test::configDir() +
+                             " --out " + refused + " --backend cpu --no-plots --quiet",
                          log),
             2)
       << log;

@@ -281,8 +281,8 @@ TEST(Study13, PointsFileTakesAnyParameterColumns) {
 TEST(Study13, TheProgramWritesEveryParameterAndItsPlots) {
   const SweepSpec small = study13(256);
   const std::string out = ::testing::TempDir() + "/study13_program";
-  const std::string cmd = std::string(AURORA_SWEEP_BIN) + " --config " + small.file + " --config-dir " + test::configDir() +
-                          " --out " + out + " --backend cpu --output both --quiet --overwrite 2>&1";
+  const std::string cmd = std::string(AURORA_SWEEP_BIN) + " --config " + small.file + " --config-dir " +
+                          test::configDir() + " --out " + out + " --backend cpu --output both --quiet --overwrite 2>&1";
   FILE* p = popen(cmd.c_str(), "r");
   std::string log;
   char buf[512];

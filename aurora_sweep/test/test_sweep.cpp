@@ -465,7 +465,9 @@ TEST(SweepProgram, AnOutputFolderNameIsNotShellCode) {
   std::remove(marker.c_str());
   const std::string out = ::testing::TempDir() + "/sweep \"odd\" $(touch " + marker + ")";
   std::string log;
-  ASSERT_EQ(runSweep("--config " + test::dataDir() + "/small_grid.yaml --out '" + out + "' --backend scalar --overwrite", log), 0)
+  ASSERT_EQ(runSweep("--config " + test::dataDir() + "/small_grid.yaml --out '" + out + "' --backend scalar --overwrite",
+                     log),
+            0)
       << log;
   EXPECT_TRUE(std::ifstream(out + "/feasible_volume.png").good()) << log;
   EXPECT_FALSE(std::ifstream(marker).good()) << "the folder name ran as a command";
@@ -483,7 +485,9 @@ TEST(SweepProgram, CudaLimitsAreCheckedBeforeTheRun) {
               log.find("this build has no CUDA backend") != std::string::npos) << log;
   struct stat st;
   EXPECT_NE(stat(out.c_str(), &st), 0) << "output folder created for a refused sweep: " << log;
-  EXPECT_EQ(runSweep("--config " + test::dataDir() + "/small_grid.yaml --out " + out + " --backend cuda --block-size 2048", log), 2);
+  EXPECT_EQ(runSweep("--config " + test::dataDir() + "/small_grid.yaml --out " + out + " --backend cuda --block-size 2048",
+                     log),
+            2);
   EXPECT_NE(log.find("--block-size 2048 is invalid: CUDA blocks hold at most 1024 threads"), std::string::npos) << log;
 }
 

@@ -20,7 +20,9 @@ using namespace aurora_sweep;
 
 namespace {
 
-SweepSpec shipped(const std::string& name) { return loadSweepFile(test::configDir() + "/sweeps/" + name + ".yaml", test::configDir()); }
+SweepSpec shipped(const std::string& name) {
+  return loadSweepFile(test::configDir() + "/sweeps/" + name + ".yaml", test::configDir());
+}
 
 std::vector<std::string> columnNames(const SweepSpec& spec) {
   std::vector<std::string> names;
@@ -121,8 +123,9 @@ TEST(SweepVehicles, EveryBackendAgrees) {
 
 TEST(SweepVehicles, TheSweepProgramDrawsTheMaxTolerableDelay) {
   const std::string out = ::testing::TempDir() + "/sweep_pioneer_delay";
-  FILE* pipe = popen((std::string(AURORA_SWEEP_BIN) + " --config " + test::configDir() + "/sweeps/pioneer_delay.yaml --out " +
-                      out + " --backend cpu --quiet --overwrite 2>&1").c_str(), "r");
+  FILE* pipe = popen((std::string(AURORA_SWEEP_BIN) + " --config " + test::configDir() +
+                      "/sweeps/pioneer_delay.yaml --out " + out + " --backend cpu --quiet --overwrite 2>&1").c_str(),
+                     "r");
   std::string log;
   char buf[512];
   while (fgets(buf, sizeof buf, pipe)) log += buf;
@@ -192,7 +195,8 @@ void expectTheFactorScales(const char* name, const char* controller, const char*
                            const typename Law::template Gains<double>& gains) {
   const std::string text = std::string("sweep:\n  controller: ") + controller + "\n  task: " + task +
                            "\n  early_stop: false\n  parameters:\n    delay: {from: 0, to: 2, count: 3}\n    " + name + ": 0.5\n";
-  const SweepSpec spec = loadSweepFile(test::writeTemp(std::string("factor_") + name + ".yaml", text), test::configDir());
+  const SweepSpec spec =
+      loadSweepFile(test::writeTemp(std::string("factor_") + name + ".yaml", text), test::configDir());
   ASSERT_EQ(spec.paramId(name), kParamFirstModelFactor) << name;
   const std::vector<std::string> names = columnNames(spec);
   EXPECT_NE(std::find(names.begin(), names.end(), name), names.end()) << name;

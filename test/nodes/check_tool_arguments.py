@@ -516,8 +516,9 @@ class FormationAndLinkArgumentsTest(unittest.TestCase):
 
     def test_two_sweeps_on_one_folder_and_an_interrupted_sweep(self):
         with tempfile.TemporaryDirectory() as out:
-            cmd = rosrun("aurora_sweep", "sweep") + ["--config", os.path.join(config_dir(), "sweeps", "positioning_delay.yaml"),
-                   "--backend", "scalar", "--out", out, "--no-plots", "--output", "csv"]
+            cmd = rosrun("aurora_sweep", "sweep") + [
+                "--config", os.path.join(config_dir(), "sweeps", "positioning_delay.yaml"),
+                "--backend", "scalar", "--out", out, "--no-plots", "--output", "csv"]
             first = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
             deadline = time.time() + 60
             while not os.path.isdir(os.path.join(out, "progress")) and time.time() < deadline:
@@ -535,9 +536,9 @@ class FormationAndLinkArgumentsTest(unittest.TestCase):
     def test_a_sweep_with_repeats_counts_runs_and_combinations(self):
         """Issue 31: "21,504 combinations" where the docs say 1,344 combinations x 16 repeats."""
         with tempfile.TemporaryDirectory() as out:
-            p = subprocess.Popen(rosrun("aurora_sweep", "sweep") + ["--config", os.path.join(config_dir(), "sweeps", "link_margin.yaml"),
-                                  "--out", out, "--no-plots"], stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
-                                 universal_newlines=True)
+            p = subprocess.Popen(rosrun("aurora_sweep", "sweep") + [
+                "--config", os.path.join(config_dir(), "sweeps", "link_margin.yaml"), "--out", out, "--no-plots"],
+                stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, universal_newlines=True)
             lines = []
             for line in p.stderr:
                 lines.append(line)
