@@ -29,9 +29,9 @@ using Line = LineFormation<double>;
 namespace {
 
 // The lab's scenario (docs/formation.md, "The lab's two-drone scenario").
-ArdroneLineRun labScenario(FormationLaw law) {
+LineRun labScenario(FormationLaw law) {
   const auto vehicle = aurora_sim::loadVehicleFile<aurora_sim::Ardrone2>(std::string(AURORA_CONFIG_DIR) + "/vehicles/ardrone2.yaml");
-  ArdroneLineRun run;
+  LineRun run;
   const double starts[2][3] = {{-1.0, 0.0, 0.75}, {1.0, 0.0, 1.0}};
   const double k1[6] = {0.1, 0.1, 5.0, 1.0, 1.0, 1.0}, k2[6] = {2.0, 2.0, 2.0, 20.0, 15.0, 2.5};
   for (int d = 0; d < 2; ++d) {
@@ -111,7 +111,7 @@ TEST(LineFormation, TheLabScenarioStartsAsTheReference) {
   };
   std::vector<Period> periods;
   double z1 = 0, z2 = 0, u1 = 0, u2 = 0;
-  auto observe = [&](const ArdroneLineObservation& o) {
+  auto observe = [&](const LineObservation& o) {
     if (o.k == 0) {
       z1 = o.drones[0].model.X[aurora_sim::kZ], z2 = o.drones[1].model.X[aurora_sim::kZ];
       u1 = o.steps[0].U[2], u2 = o.steps[1].U[2];
@@ -162,7 +162,7 @@ TEST(LineFormation, BothLawsFlyTheLabScenarioAsTheOriginal) {
   for (const Want& w : wants) {
     double sum[5] = {}, closest = 1e9, X[6];
     long n = 0;
-    auto observe = [&](const ArdroneLineObservation& o) {
+    auto observe = [&](const LineObservation& o) {
       for (int d = 0; d < 2; ++d) {
         for (int i = 0; i < 3; ++i) X[3 * d + i] = o.X_before[d][i];
       }
@@ -196,11 +196,11 @@ TEST(LineFormation, BothLawsFlyTheLabScenarioAsTheOriginal) {
 // rule): at a period k, Q is that of drone 1's position at k - d1 and drone
 // 2's at k - d2, exactly.
 TEST(LineFormation, TheLayerSeesEachDroneThroughItsOwnDelay) {
-  ArdroneLineRun run = labScenario(FormationLaw::kPositionPriority);
+  LineRun run = labScenario(FormationLaw::kPositionPriority);
   run.drone[0].delay = 3, run.drone[1].delay = 9;
   std::vector<std::vector<double>> X(1, std::vector<double>{-1.0, 0.0, 0.75, 1.0, 0.0, 1.0});
   long checked = 0, differ = 0;
-  auto observe = [&](const ArdroneLineObservation& o) {
+  auto observe = [&](const LineObservation& o) {
     if (o.layer_ran && o.k >= 9) {
       const long a = o.k - 3, b = o.k - 9;
       const double seen[6] = {X[a][0], X[a][1], X[a][2], X[b][3], X[b][4], X[b][5]};
@@ -238,12 +238,12 @@ TEST(FormationFile, ShippedFilesAreTheLabScenario) {
                                                          {"line_lemniscate_ik", FormationLaw::kInverseKinematics}};
   for (const auto& f : files) {
     const FormationFile file = readFormationFile(config + "/formations/" + f.first + ".yaml", config);
-    const ArdroneLineRun shipped = formationRun(file, vehicle);
+    const LineRun shipped = formationRun(file, vehicle);
     EXPECT_EQ(shipped.schedule.period_ticks, 6);
     EXPECT_EQ(shipped.schedule.step_ticks, 1);
     std::vector<double> a, b;
     auto record = [](std::vector<double>& into) {
-      return [&into](const ArdroneLineObservation& o) {
+      return [&into](const LineObservation& o) {
         for (int d = 0; d < 2; ++d) into.insert(into.end(), o.drones[d].model.X, o.drones[d].model.X + 12);
       };
     };
@@ -322,21 +322,21 @@ TEST(FormationFile, MistakesAreRefusedNamingTheKey) {
 // is the delay rule bit for bit; a lossy link changes the flight, the same
 // way every run; two drones over one link file lose different packets.
 TEST(LineFormation, EachDroneFliesOverItsOwnLink) {
-  const auto record = [](const ArdroneLineRun& run) {
+  const auto record = [](const LineRun& run) {
     std::vector<double> out;
-    auto observe = [&](const ArdroneLineObservation& o) {
+    auto observe = [&](const LineObservation& o) {
       for (int d = 0; d < 2; ++d) out.insert(out.end(), o.drones[d].model.X, o.drones[d].model.X + 12);
     };
     runFormation<aurora_control::ArdroneLaw<LawType::kUnderactuated>, double, Line, 64>(run, 900, observe);
     return out;
   };
-  ArdroneLineRun plain = labScenario(FormationLaw::kInverseKinematics);
+  LineRun plain = labScenario(FormationLaw::kInverseKinematics);
   plain.drone[0].delay = 2, plain.drone[1].delay = 5;
-  ArdroneLineRun drawing = plain;
+  LineRun drawing = plain;
   for (int d = 0; d < 2; ++d) drawing.drone[d].link.uplink.jitter = JitterKind::kUniform;  // max 0: no effect
   ASSERT_FALSE(drawing.drone[0].link.ideal());
   EXPECT_EQ(record(plain), record(drawing));
-  ArdroneLineRun lossy = plain;
+  LineRun lossy = plain;
   for (int d = 0; d < 2; ++d) {
     lossy.drone[d].link.uplink.loss = 0.3, lossy.drone[d].link.downlink.loss = 0.3, lossy.drone[d].link.downlink.delay = 1;
   }
@@ -355,7 +355,7 @@ TEST(LineFormation, EachDroneFliesOverItsOwnLink) {
 // for bit: each drone's delay, drone 2 over a lossy, jittery link (its draws
 // keyed by the drone, as the runner's), the layer's Q and Qd.
 TEST(FormationController, IsTheRunnersTickOverDelaysAndLinks) {
-  ArdroneLineRun run = labScenario(FormationLaw::kInverseKinematics);
+  LineRun run = labScenario(FormationLaw::kInverseKinematics);
   run.drone[0].delay = 3, run.drone[1].delay = 9;
   run.drone[1].link = readLinkFile(std::string(AURORA_CONFIG_DIR) + "/links/wifi_congested.yaml");
   run.drone[1].link.uplink.delay = 9;  // the drone's delay is its link's uplink delay
@@ -363,7 +363,7 @@ TEST(FormationController, IsTheRunnersTickOverDelaysAndLinks) {
     double X[2][12], U[2][4], Q[6], Qd[6];
   };
   std::vector<Tick> offline;
-  auto observe = [&](const ArdroneLineObservation& o) {
+  auto observe = [&](const LineObservation& o) {
     Tick t;
     for (int d = 0; d < 2; ++d) {
       for (int i = 0; i < 12; ++i) t.X[d][i] = o.X_before[d][i];
@@ -403,14 +403,14 @@ TEST(FormationController, IsTheRunnersTickOverDelaysAndLinks) {
 // non-finite command to a drone: every drone hovers instead.
 TEST(FormationChecks, ADroneFlyingNaNFailsEveryCheck) {
   for (const double level_z : {0.75, 0.0}) {
-    ArdroneLineRun run = labScenario(FormationLaw::kPositionPriority);
+    LineRun run = labScenario(FormationLaw::kPositionPriority);
     run.drone[1].start[2] = run.drone[0].start[2] = level_z;
     if (level_z == 0.0) run.drone[1].start[0] = run.drone[0].start[0];  // at the same point: rho = 0
     FormationMetrics<double, bool, Line> m;
     m.reset();
     const auto criteria = FormationCriteria<double>::study();
     bool nan_seen = false;
-    auto observe = [&](const ArdroneLineObservation& o) {
+    auto observe = [&](const LineObservation& o) {
       double X[6], Xd[6];
       for (int d = 0; d < 2; ++d) {
         for (int i = 0; i < 3; ++i) X[3 * d + i] = o.X_before[d][i];
@@ -446,7 +446,7 @@ TEST(FormationChecks, TheClosestPairIsNaNWhicheverRobotIsNaN) {
 }
 
 TEST(FormationController, ANonFiniteCommandMakesEveryDroneHover) {
-  ArdroneLineRun run = labScenario(FormationLaw::kPositionPriority);
+  LineRun run = labScenario(FormationLaw::kPositionPriority);
   run.drone[1].start[2] = run.drone[0].start[2];  // level: the layer commands NaN
   FormationController<64, aurora_control::LineFormation<double>, aurora_control::LawSettings<aurora_control::ArdroneLawData>> core(run, aurora_control::LawSettings<aurora_control::ArdroneLawData>::flying<aurora_control::ArdroneLaw<LawType::kUnderactuated>>());
   for (int d = 0; d < 2; ++d) {

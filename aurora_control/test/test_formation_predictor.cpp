@@ -64,7 +64,7 @@ TEST(FormationPredictor, TheTrianglesDronesFlyTheirControllerFilesPredictor) {
 // The two-drone line: each drone's controller file, each its own delay,
 // over links (drone 2's jittery and lossy: the predictor anchors on late
 // and lost states too), and a command delay on drone 1's downlink.
-ArdroneLineRun line(bool predictor, long delay_1, long delay_2, bool links) {
+LineRun line(bool predictor, long delay_1, long delay_2, bool links) {
   std::string text;
   {
     FILE* f = std::fopen((kConfig + "/formations/line_lemniscate_ik.yaml").c_str(), "r");
@@ -93,7 +93,7 @@ ArdroneLineRun line(bool predictor, long delay_1, long delay_2, bool links) {
 }
 
 TEST(FormationPredictor, TheLinesDronesFlyTheirControllerFilesPredictor) {
-  const ArdroneLineRun with = line(true, 4, 9, false);
+  const LineRun with = line(true, 4, 9, false);
   EXPECT_EQ(with.drone[0].predictor.form, PredictorForm::kResimulate);
   EXPECT_EQ(with.drone[1].predictor.form, PredictorForm::kResimulate);
   const long ticks = 1200;
@@ -121,12 +121,12 @@ TEST(FormationPredictor, OverLinksThePredictorStaysCloserToTheUndelayedFlight) {
 // The formation node's core answers every tick with the runner's commands
 // and layer, bit for bit, with the predictor on each drone over its link.
 TEST(FormationPredictor, TheNodesCoreIsTheRunnersTick) {
-  const ArdroneLineRun run = line(true, 3, 7, true);
+  const LineRun run = line(true, 3, 7, true);
   struct Tick {
     double X[2][12], U[2][4], Q[6];
   };
   std::vector<Tick> offline;
-  auto observe = [&](const ArdroneLineObservation& o) {
+  auto observe = [&](const LineObservation& o) {
     Tick t;
     for (int d = 0; d < 2; ++d) {
       std::memcpy(t.X[d], o.X_before[d], sizeof t.X[d]);

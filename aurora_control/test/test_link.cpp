@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "aurora_control/loop/ardrone_study.h"
+#include "aurora_control/loop/ardrone2/ardrone_study.h"
 #include "aurora_control/loop/delayed_controller.h"
 #include "aurora_control/loop/flight_runner.h"
 #include "aurora_control/link/link_yaml.h"

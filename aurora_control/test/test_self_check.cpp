@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "aurora_control/loop/ardrone_study.h"
+#include "aurora_control/loop/ardrone2/ardrone_study.h"
 #include "aurora_control/loop/positioning_runner.h"
 
 using namespace aurora_control;

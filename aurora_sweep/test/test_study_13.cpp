@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "aurora_control/loop/ardrone_study.h"
+#include "aurora_control/loop/ardrone2/ardrone_study.h"
 #include "aurora_control/loop/flight_runner.h"
 #include "aurora_sweep/backends.h"
 #include "aurora_sweep/sweep_file.h"

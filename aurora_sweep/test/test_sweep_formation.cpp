@@ -46,11 +46,11 @@ SimResult flightToolRecord(const std::string& file, long d1, long d2, double k1_
   auto run = aurora_control::formationRun(aurora_control::readFormationFile(file, configDir()), vehicle);
   run.drone[0].delay = d1, run.drone[1].delay = d2;
   run.gains.k1[3] = k1_rho;
-  aurora_control::ArdroneLineJudge judge{aurora_control::FormationCriteria<double>::study(), false,
+  aurora_control::LineJudge judge{aurora_control::FormationCriteria<double>::study(), false,
                                                vehicle.Ts, {}, {}};
   judge.metrics.reset();
   double end = 0;
-  auto observe = [&](const aurora_control::ArdroneLineObservation& o) {
+  auto observe = [&](const aurora_control::LineObservation& o) {
     double X[6];
     for (int d = 0; d < 2; ++d) {
       for (int i = 0; i < 3; ++i) X[3 * d + i] = o.drones[d].model.X[i];

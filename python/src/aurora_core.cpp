@@ -7,6 +7,7 @@
 #include <pybind11/stl.h>
 
 #include <algorithm>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -254,15 +255,29 @@ std::vector<double> formationError(const std::string& shape, const std::vector<d
 
 // The model factors a vehicle type scales (its factorName order): what
 // identify's output-error fit may vary.
-std::vector<std::string> vehicleFactorNames(const std::string& type) {
-  std::vector<std::string> names;
+// The names `each(vehicle, names)` gives of a vehicle type (an unknown type
+// refused, naming the known ones).
+template <class Each>
+std::vector<std::string> vehicleNames(const std::string& type, Each each) {
   if (!aurora_sim::isKnownVehicleType(type)) {
     throw py::value_error("'" + type + "' is not a vehicle type: accepted " + aurora_sim::knownVehicleTypes());
   }
-  aurora_sim::withVehicleOfType(type, [&](auto v) {
+  std::vector<std::string> names;
+  aurora_sim::withVehicleOfType(type, [&](auto v) { each(v, names); });
+  return names;
+}
+
+// A vehicle type's commands, as its Control messages name them.
+std::vector<std::string> vehicleCommandNames(const std::string& type) {
+  return vehicleNames(type, [](auto v, std::vector<std::string>& names) {
+    for (int i = 0; i < decltype(v)::kInputs; ++i) names.push_back(decltype(v)::inputName(i));
+  });
+}
+
+std::vector<std::string> vehicleFactorNames(const std::string& type) {
+  return vehicleNames(type, [](auto v, std::vector<std::string>& names) {
     for (int i = 0; i < decltype(v)::kFactors; ++i) names.push_back(decltype(v)::factorName(i));
   });
-  return names;
 }
 
 using Rows = py::array_t<double, py::array::c_style | py::array::forcecast>;
@@ -277,8 +292,9 @@ using Rows = py::array_t<double, py::array::c_style | py::array::forcecast>;
 // `length` steps on the commands U_k0.. (each limited as its driver does).
 // Returns the states after each free step: (starts, length, kStates).
 template <class Vehicle>
-py::array_t<double> openLoopOf(const std::string& vehicle_file, const std::vector<double>& factors, const Rows& X,
-                               const Rows& U, const std::vector<long>& starts, long length, long forced) {
+py::array_t<double> openLoopOf(const typename Vehicle::template Params<double>& file_params,
+                               const std::vector<double>& factors, const Rows& X, const Rows& U,
+                               const std::vector<long>& starts, long length, long forced) {
   constexpr int kStates = Vehicle::kStates, kInputs = Vehicle::kInputs;
   if (factors.size() != size_t(Vehicle::kFactors)) {
     throw py::value_error("open_loop: " + std::to_string(factors.size()) + " factors given, a " + Vehicle::name() +
@@ -297,7 +313,7 @@ py::array_t<double> openLoopOf(const std::string& vehicle_file, const std::vecto
                             " recorded steps");
     }
   }
-  const auto p = Vehicle::scaled(aurora_sim::loadVehicleFile<Vehicle>(vehicle_file, "identify"), factors.data());
+  const auto p = Vehicle::scaled(file_params, factors.data());
   const py::ssize_t m = py::ssize_t(starts.size());
   py::array_t<double> out({m, py::ssize_t(length), py::ssize_t(kStates)});
   const double *x = X.data(), *u = U.data();
@@ -322,16 +338,33 @@ py::array_t<double> openLoopOf(const std::string& vehicle_file, const std::vecto
   return out;
 }
 
-py::array_t<double> openLoop(const std::string& type, const std::string& vehicle_file,
-                             const std::vector<double>& factors, const Rows& X, const Rows& U,
-                             const std::vector<long>& starts, long length, long forced) {
-  vehicleFactorNames(type);  // refuses an unknown type
-  py::array_t<double> out;
-  aurora_sim::withVehicleOfType(type, [&](auto v) {
-    out = openLoopOf<decltype(v)>(vehicle_file, factors, X, U, starts, length, forced);
-  });
-  return out;
-}
+// A vehicle file's open-loop flights (openLoopOf), the file read once:
+// identify's output-error fit flies it thousands of times (reading the
+// file was half of each flight's time).
+class OpenLoop {
+ public:
+  using Fly = std::function<py::array_t<double>(const std::vector<double>&, const Rows&, const Rows&,
+                                                const std::vector<long>&, long, long)>;
+  OpenLoop(const std::string& type, const std::string& vehicle_file) {
+    vehicleFactorNames(type);  // refuses an unknown type
+    aurora_sim::withVehicleOfType(type, [&](auto v) {
+      using Vehicle = decltype(v);
+      const auto params = aurora_sim::loadVehicleFile<Vehicle>(vehicle_file, "identify");
+      fly_ = [params](const std::vector<double>& factors, const Rows& X, const Rows& U,
+                      const std::vector<long>& starts, long length, long forced) {
+        return openLoopOf<Vehicle>(params, factors, X, U, starts, length, forced);
+      };
+    });
+  }
+  py::array_t<double> operator()(const std::vector<double>& factors, const Rows& X, const Rows& U,
+                                 const std::vector<long>& starts, long length, long forced) const {
+    return fly_(factors, X, U, starts, length, forced);
+  }
+
+ private:
+  Fly fly_;
+};
+
 
 }  // namespace
 
@@ -355,6 +388,9 @@ PYBIND11_MODULE(_core, m) {
         "config/<folder>/NAME.yaml for a shipped NAME, a path as it is: flight's rule");
   m.def("controller_vehicle", &vehicleOf, py::arg("controller"),
         "The name of the vehicle a controller file's law flies (config/vehicles/NAME.yaml).");
+  m.attr("DEFAULT_VEHICLE") = aurora_sim::DefaultVehicle::name();
+  m.def("vehicle_command_names", &vehicleCommandNames, py::arg("type"),
+        "A vehicle type's commands with their units, in its model's order (Control.command_names).");
   m.def("vehicle_flies", &vehicleFlies, py::arg("type"),
         "True for a vehicle type that flies (a drone), False for a ground robot (its sim profile).");
   m.def("simulate_formation_files", &simulateFormationFiles, py::arg("formation"), py::arg("vehicle"),
@@ -366,10 +402,13 @@ PYBIND11_MODULE(_core, m) {
         "flight --formation flies it: its CSV's columns and rows.");
   m.def("vehicle_factor_names", &vehicleFactorNames, py::arg("type"),
         "The model factors a vehicle type scales, in their order (a sweep's names).");
-  m.def("open_loop", &openLoop, py::arg("type"), py::arg("vehicle_file"), py::arg("factors"), py::arg("X"),
-        py::arg("U"), py::arg("starts"), py::arg("length"), py::arg("forced"),
-        "Open-loop flights through the vehicle's model from recorded states X and commands U: "
-        "(starts, length, states) after each step (docs/identify.md, eq. I7).");
+  py::class_<OpenLoop>(m, "OpenLoop",
+                       "A vehicle file's model (of a vehicle type), read once, flown open loop: calling it with "
+                       "(factors, X, U, starts, length, forced) flies from recorded states X and commands U and "
+                       "gives (starts, length, states) after each step (docs/identify.md, eq. I7).")
+      .def(py::init<const std::string&, const std::string&>(), py::arg("type"), py::arg("vehicle_file"))
+      .def("__call__", &OpenLoop::operator(), py::arg("factors"), py::arg("X"), py::arg("U"), py::arg("starts"),
+           py::arg("length"), py::arg("forced"));
   m.def("formation_shape", &shapeOf, py::arg("formation"), "The shape of a formation file.");
   m.def("formation_shape_info", &formationShapeInfo,
         "The shapes this build knows: each one's robots, names_its_vehicles, vehicle (the type its robots fly "

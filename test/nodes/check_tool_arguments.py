@@ -381,7 +381,7 @@ class FormationAndLinkArgumentsTest(unittest.TestCase):
             csv = os.path.join(tmp, "line.csv")
             rc, out = flight("--formation", "line_pioneer_ardrone", "--csv", csv)
             self.assertEqual(rc, 0, out)
-            self.assertIn("flight: UAV-UGV line (dynamic Pioneer + AR.Drone), 3900 ticks", out)
+            self.assertIn("flight: UAV-UGV line (dynamic pioneer3dx + ardrone2), 3900 ticks", out)
             self.assertIn("RMS after 20 s: xf, yf 0.0069 m, rho 0.0039 m, alpha 0.0071 rad, beta 0.0034 rad", out)
             rows = [r.split(",") for r in open(csv).read().splitlines()]
             header = rows[0]

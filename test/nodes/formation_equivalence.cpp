@@ -64,7 +64,7 @@ Offline offlineRun(TriangleSetup s, const long delay[3], int steps, int& robots)
 }
 Offline offlineRun(const FormationFile& f, const long delay[3], int steps, int& robots) {
   ros::NodeHandle d1("/ardrone1");
-  ArdroneLineRun run = formationRun(f, aurora_sim::loadVehicleParams<aurora_sim::Ardrone2>(d1, "vehicle"));
+  LineRun run = formationRun(f, aurora_sim::loadVehicleParams<aurora_sim::Ardrone2>(d1, "vehicle"));
   run.drone[0].delay = delay[0], run.drone[1].delay = delay[1];
   robots = 2;
   Offline out;

@@ -116,14 +116,14 @@ std::vector<std::vector<double>> offlineRun(const Recording& r, const aurora_msg
   ros::NodeHandle pnh("~");
   const FormationFile f = readFormationFile(pnh.param<std::string>("formation_file", ""),
                                             pnh.param<std::string>("config_dir", ""));
-  ArdroneLineRun run = formationRun(f, aurora_sim::loadVehicleParams<aurora_sim::Ardrone2>(ros::NodeHandle("/ardrone1"), "vehicle"));
+  LineRun run = formationRun(f, aurora_sim::loadVehicleParams<aurora_sim::Ardrone2>(ros::NodeHandle("/ardrone1"), "vehicle"));
   for (int j = 0; j < kDrones; ++j) {
     double p[3];
     EXPECT_TRUE(aurora_tests::positionAt(r.truth[j], first.header.stamp.toSec(), p));
     for (int i = 0; i < 3; ++i) run.drone[j].start[i] = p[i];
   }
   std::vector<std::vector<double>> states(1, std::vector<double>(run.drone[d].start, run.drone[d].start + 3));
-  auto observe = [&](const ArdroneLineObservation& o) {
+  auto observe = [&](const LineObservation& o) {
     states.emplace_back(o.drones[d].model.X, o.drones[d].model.X + 3);
   };
   f.drones[0].controller.withLawType([&](auto law) {

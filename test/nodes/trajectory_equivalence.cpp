@@ -7,7 +7,7 @@
 #include <map>
 #include <vector>
 
-#include "aurora_control/loop/ardrone_study.h"
+#include "aurora_control/loop/ardrone2/ardrone_study.h"
 #include "aurora_control/loop/positioning_runner.h"
 #include "aurora_sim/ros/conversions.h"
 #include "aurora_sim/ros/vehicle_params.h"

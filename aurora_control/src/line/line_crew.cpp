@@ -10,12 +10,12 @@ using namespace crew_detail;
 
 std::unique_ptr<FormationCrew> LineShapeEntry::crew(const File& f, const CrewRequest& q) {
   const auto& vehicle = q.vehicle.get<UnnamedVehicle>(name());
-  ArdroneLineRun run = formationRun(f, vehicle);
+  LineRun run = formationRun(f, vehicle);
   const double Ts = vehicle.Ts;
   const long ticks = formationTicks(run.reference.duration, Ts);
-  requestedDelays(q, 2, Ts, ticks, [&](int r) -> FormationDrone<double, ArdroneLawData>& { return run.drone[r]; });
-  const LawSettings<ArdroneLawData>& law = f.drones[0].controller;  // the robots' law; gains and models: the run's
-  return std::unique_ptr<FormationCrew>(new CrewOf<LineFormation<double>, LawSettings<ArdroneLawData>>(
+  requestedDelays(q, 2, Ts, ticks, [&](int r) -> FormationDrone<double, LineDrones>& { return run.drone[r]; });
+  const LawSettings<LineDrones>& law = f.drones[0].controller;  // the robots' law; gains and models: the run's
+  return std::unique_ptr<FormationCrew>(new CrewOf<LineFormation<double>, LawSettings<LineDrones>>(
       run, law, name(), std::string(formationLawName(f.law)) + ", drones: " + lawNameOf(law),
       {f.drones[0].name_space, f.drones[1].name_space}, {q.vehicle.file(), q.vehicle.file()}, ticks));
 }

@@ -24,9 +24,9 @@ using Line = LineFormation<double>;
 // RMS of rho, alpha, beta, the formation's horizontal position and height.
 class FormationErrors {
  public:
-  void add(const ArdroneLineObservation& o, double Ts) {
+  void add(const LineObservation& o, double Ts) {
     double X[Line::kVariables];
-    dronePositions<Line, aurora_control::ArdroneLawData::Vehicle>(o.X_before, X);
+    dronePositions<Line, aurora_control::LineDrones::Vehicle>(o.X_before, X);
     if (double(o.k) * Ts < 10.0) return;
     double Q[6];
     Line::variables(X, Q);
@@ -66,7 +66,7 @@ class FormationCsv {
   ~FormationCsv() {
     if (f_) std::fclose(f_);
   }
-  void add(const ArdroneLineObservation& o, double Ts) {
+  void add(const LineObservation& o, double Ts) {
     if (!f_) return;
     using aurora_common::writeNumber;
     std::fprintf(f_, "%ld", o.k);
@@ -76,7 +76,7 @@ class FormationCsv {
       for (int i = 0; i < aurora_sim::kStateSize; ++i) writeNumber(f_, o.X_before[d][i]);
       for (int i = 0; i < 4; ++i) writeNumber(f_, o.steps[d].U[i]);
     }
-    dronePositions<Line, aurora_control::ArdroneLawData::Vehicle>(o.X_before, P);
+    dronePositions<Line, aurora_control::LineDrones::Vehicle>(o.X_before, P);
     Line::variables(P, Q);
     for (int i = 0; i < 6; ++i) writeNumber(f_, Q[i]);
     for (int i = 0; i < 6; ++i) writeNumber(f_, o.layer.Qd()[i]);
@@ -88,9 +88,9 @@ class FormationCsv {
 };
 
 // The file's run with --delay's per-drone delays, checked.
-ArdroneLineRun loadRun(const FormationFlightOptions& o, const LawVehicleParams& p,
+LineRun loadRun(const FormationFlightOptions& o, const LawVehicleParams& p,
                                    const FormationFile& f, long ticks) {
-  ArdroneLineRun run = formationRun(f, p);
+  LineRun run = formationRun(f, p);
   const std::vector<long> delays = robotDelays(o.delays, 2, "the line", p.Ts, ticks, {0, 0}, "drone");
   for (size_t d = 0; d < o.delays.size(); ++d) {
     run.drone[d].delay = delays[d];  // replaces the file's, and its link's uplink delay (docs/links.md)
@@ -112,7 +112,7 @@ FormationFlight flyFormationFiles(const FormationFile& file, const FormationFlig
   const std::string vehicle = o.vehicle.empty() ? shippedOrPath(Vehicle::name(), o.config_dir, "vehicles") : o.vehicle;
   const auto p = aurora_sim::loadVehicleFile<Vehicle>(vehicle, "the formation's drones' laws");
   FormationFlight r{file, {}, p.Ts, 0, 0.0, {},
-                    ArdroneLineJudge{FormationCriteria<double>::study(), false, p.Ts, {}, {}}};
+                    LineJudge{FormationCriteria<double>::study(), false, p.Ts, {}, {}}};
   r.ticks = formationTicks(r.file.reference.duration, p.Ts);
   r.run = loadRun(o, p, r.file, r.ticks);
   r.judge.metrics.reset();
@@ -123,7 +123,7 @@ FormationFlight flyFormationFiles(const FormationFile& file, const FormationFlig
   }
   FormationErrors errors;
   const auto t0 = std::chrono::steady_clock::now();
-  auto each = [&](const ArdroneLineObservation& obs) {
+  auto each = [&](const LineObservation& obs) {
     observe(obs, p.Ts);
     errors.add(obs, p.Ts);
     r.judge(obs);
@@ -139,7 +139,7 @@ FormationFlight flyFormationFiles(const FormationFile& file, const FormationFlig
 
 void LineShapeEntry::fly(const File& file, const FormationFlightOptions& o) {
   std::unique_ptr<FormationCsv> csv;  // opened at tick 0: a refused file writes nothing
-  const FormationFlight r = flyFormationFiles(file, o, [&](const ArdroneLineObservation& obs, double Ts) {
+  const FormationFlight r = flyFormationFiles(file, o, [&](const LineObservation& obs, double Ts) {
     if (!csv) csv.reset(new FormationCsv(o.csv));
     csv->add(obs, Ts);
   });

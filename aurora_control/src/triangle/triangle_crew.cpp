@@ -7,20 +7,21 @@ namespace aurora_control {
 
 using namespace crew_detail;
 
-// The triangle's three AR.Drones (robots.namespaces; ardrone1 .. ardrone3
+// The triangle's three drones (robots.namespaces; TriangleSetup's
 // unless the file names others); kinematic robots
 // (the file names no vehicle) have no vehicle to simulate or drive.
 std::unique_ptr<FormationCrew> TriangleShapeEntry::crew(const File& setup, const CrewRequest& q) {
   if (setup.kinematic) {
     throw ConfigError("formation file '" + q.file + "': formation.robots names no vehicle: its robots are kinematic "
                       "(each at its reference), which only `flight --formation` flies; the formation node flies "
-                      "vehicles: give robots.vehicle (config/formations/triangle_ardrones.yaml)");
+                      "vehicles: give robots.vehicle (" + std::string(kFlyingTriangleFile) + ")");
   }
   TriangleRun<TriangleDroneLaw> run = triangleRun<TriangleDroneLaw>(setup);
   const long steps = triangleSteps(setup);
-  requestedDelays(q, 3, setup.drone.Ts, steps, [&](int r) -> FormationDrone<double, aurora_control::ArdroneLawData>& { return run.drone[r]; });
-  return std::unique_ptr<FormationCrew>(new CrewOf<Triangle, LawSettings<ArdroneLawData>>(
-      run, LawSettings<ArdroneLawData>::flying<TriangleDroneLaw>(), name(),
+  requestedDelays(q, 3, setup.drone.Ts, steps,
+                  [&](int r) -> FormationDrone<double, TriangleDrones>& { return run.drone[r]; });
+  return std::unique_ptr<FormationCrew>(new CrewOf<Triangle, LawSettings<TriangleDrones>>(
+      run, LawSettings<TriangleDrones>::flying<TriangleDroneLaw>(), name(),
       std::string(triangleLawName(setup.law)) + ", drones: underactuated", {setup.name_space[0], setup.name_space[1], setup.name_space[2]},
       {setup.drone_file, setup.drone_file, setup.drone_file}, steps));
 }

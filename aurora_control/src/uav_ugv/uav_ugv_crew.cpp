@@ -7,15 +7,17 @@ namespace aurora_control {
 
 using namespace crew_detail;
 
-// The UAV-UGV line's robots: robot 1 the Pioneer, robot 2 the drone, in
-// their file's namespaces (pioneer1, ardrone2 unless it names others).
+// The UAV-UGV line's robots: robot 1 the ground robot, robot 2 the drone,
+// in their file's namespaces (UavUgvLineSetup's unless it names others).
 std::unique_ptr<FormationCrew> UavUgvShapeEntry::crew(const File& setup, const CrewRequest& q) {
   UavUgvRun run = uavUgvRun(setup);
   requestedDelays(q, 2, setup.tick, setup.ticks(), [&](int r) -> FormationDrone<double, UavUgvRobots::Data>& {
     return run.drone[r];
   });
+  const std::string laws = std::string("without integration; ") + UavUgvGroundLaw::name() + " and " +
+                           UavUgvDroneLaw::name();
   return std::unique_ptr<FormationCrew>(new CrewOf<UavUgvShape, LawSettings<UavUgvRobots>>(
-      run, LawSettings<UavUgvRobots>(), name(), "without integration; pioneer_dynamic and underactuated",
+      run, LawSettings<UavUgvRobots>(), name(), laws,
       {setup.name_space[0], setup.name_space[1]}, {setup.vehicle_file[0], setup.vehicle_file[1]}, setup.ticks()));
 }
 

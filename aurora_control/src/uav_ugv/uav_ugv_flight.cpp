@@ -16,12 +16,12 @@ namespace aurora_control {
 
 namespace {
 
-// step, t, the Pioneer's state and commands (r1_), the drone's (d2_), Q_ and
+// step, t, the ground robot's state and commands (r1_), the drone's (d2_), Q_ and
 // Qd_ by the variables' names.
 std::vector<std::string> uavUgvColumns() {
   std::vector<std::string> c{"step", "t"};
-  for (int i = 0; i < aurora_sim::Pioneer3dx::kStates; ++i) c.push_back(std::string("r1_") + aurora_sim::Pioneer3dx::stateName(i));
-  for (int i = 0; i < aurora_sim::Pioneer3dx::kInputs; ++i) c.push_back("r1_u" + std::to_string(i + 1));
+  for (int i = 0; i < UavUgvGround::kStates; ++i) c.push_back(std::string("r1_") + UavUgvGround::stateName(i));
+  for (int i = 0; i < UavUgvGround::kInputs; ++i) c.push_back("r1_u" + std::to_string(i + 1));
   for (int i = 0; i < LawVehicle::kStates; ++i) c.push_back(std::string("d2_") + LawVehicle::stateName(i));
   for (int i = 0; i < LawVehicle::kInputs; ++i) c.push_back("d2_u" + std::to_string(i + 1));
   for (const char* q : {"Q_", "Qd_"}) {
@@ -44,8 +44,8 @@ void positionVariables(const Tick& o, double Q[6]) {
 // applied, Q of their positions and the layer's Qd.
 std::vector<double> uavUgvRow(double t, const Tick& o) {
   std::vector<double> v{double(o.k), t};
-  v.insert(v.end(), o.X_before[0], o.X_before[0] + aurora_sim::Pioneer3dx::kStates);
-  v.insert(v.end(), o.steps[0].U, o.steps[0].U + aurora_sim::Pioneer3dx::kInputs);
+  v.insert(v.end(), o.X_before[0], o.X_before[0] + UavUgvGround::kStates);
+  v.insert(v.end(), o.steps[0].U, o.steps[0].U + UavUgvGround::kInputs);
   v.insert(v.end(), o.X_before[1], o.X_before[1] + LawVehicle::kStates);
   v.insert(v.end(), o.steps[1].U, o.steps[1].U + LawVehicle::kInputs);
   double Q[6];
@@ -105,8 +105,9 @@ ShapedFlight UavUgvShapeEntry::flyTable(const File& file, const FormationFlightO
   f.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   char head[200], values[200], closest[40];
   std::snprintf(head, sizeof head,
-                "flight: UAV-UGV line (%s Pioneer + AR.Drone), %ld ticks of %.4f s, delays %ld and %ld ticks, in %.3f s\n",
-                setup.pioneer.kinematic != 0.0 ? "kinematic" : "dynamic", ticks, setup.tick, setup.delay[0],
+                "flight: UAV-UGV line (%s %s + %s), %ld ticks of %.4f s, delays %ld and %ld ticks, in %.3f s\n",
+                setup.ground.kinematic != 0.0 ? "kinematic" : "dynamic", UavUgvGround::name(),
+                UavUgvDroneLaw::Vehicle::name(), ticks, setup.tick, setup.delay[0],
                 setup.delay[1], f.seconds);
   std::snprintf(values, sizeof values, "xf, yf %.4f m, rho %.4f m, alpha %.4f rad, beta %.4f rad, drone position %.4f m",
                 errors.rms(0), errors.rms(1), errors.rms(2), errors.rms(3), errors.rms(4));

@@ -89,13 +89,13 @@ def share(np, idx, feasible, n):
 
 # The model parameters a sweep varies are factors of the vehicle file's
 # values ("m" would read as metres): their axes say so. summary.json names
-# them (model_factors); a summary written before it did: the AR.Drone's, the
-# only vehicle whose factors a sweep took then.
-ARDRONE_FACTORS = ("m", "Ixx", "Iyy", "Izz", "Cf", "Ct", "Km", "Jm")
+# them (model_factors); a summary written before it did: those of the one
+# vehicle whose factors a sweep took then (the thesis's drone).
+FACTORS_BEFORE_MODEL_FACTORS = ("m", "Ixx", "Iyy", "Izz", "Cf", "Ct", "Km", "Jm")
 
 
 def model_factors(summary):
-    return tuple(summary.get("model_factors", ARDRONE_FACTORS))
+    return tuple(summary.get("model_factors", FACTORS_BEFORE_MODEL_FACTORS))
 
 
 def axis_label(name, summary):
@@ -347,8 +347,8 @@ def sweep_label(summary, fallback):
 def delay_scales(summaries):
     """How two sweeps' delays are drawn side by side: (factors, unit). In
     samples when their sample times agree; in seconds (each sweep's samples
-    times its sample_time_s) when they differ, a Bebop 2's 1/30 s against a
-    Pioneer's 0.1 s say; in samples, said, when a summary predates
+    times its sample_time_s) when they differ, a drone's 1/30 s against a
+    ground robot's 0.1 s say; in samples, said, when a summary predates
     sample_time_s."""
     ts = [s.get("sample_time_s") for s in summaries]
     if None in ts or len(set(ts)) == 1:

@@ -5,8 +5,9 @@
 Measures the loop's timing from the bag's stamps and steps (the feedback
 delay of each cycle, the state and command streams' rates, jitter and
 losses) and fits the vehicle's model with the actuation delay that fits
-best (the Bebop 2's and the Pioneer's by least squares, the AR.Drone's by
-output error through its simulator), flies the recorded commands open loop
+best (each vehicle its own way, docs/identify.md: by least squares where
+its model is linear in its parameters, else by output error through its
+simulator), flies the recorded commands open loop
 through the identified and the nominal model, then writes DIR/identify.json,
 DIR/link.yaml (a link file flight --link, the nodes and sweeps take),
 DIR/vehicle.yaml (where the model was identified), figures and report.md.

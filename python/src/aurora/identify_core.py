@@ -252,7 +252,7 @@ def fit_output_error(fly, names, free, X, U, delay, segment=SEGMENT, forced=FORC
     best match the recorded poses (metres and radians), by nonlinear least
     squares (scipy), within the sweeps' factor range [0.1, 10].
     fly(factors, X, U, starts, segment, forced) flies them (aurora._core.
-    open_loop). Returns {name: (factor, stderr)}, each pose's NRMSE, the
+    OpenLoop). Returns {name: (factor, stderr)}, each pose's NRMSE, the
     residual."""
     from scipy.optimize import least_squares as solve
     Ua = applied(U, delay)

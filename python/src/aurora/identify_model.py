@@ -15,7 +15,7 @@ class Model:
       each parameter by its vehicle file's key with its standard error, the
       fit of each axis, the residual and each command's spread;
     - state(X, Ts): its model state from the recorded 12-state (the
-      Pioneer's speeds too), for the open-loop flights;
+      speeds of a ground robot too), for the open-loop flights;
     - phases: the grid phases it tries (eq. I4b);
     - excited_by(key): the command axis (a key of the fit's spread) that
       excites parameter `key`;
@@ -50,7 +50,9 @@ def key_value(tree, key):
 
 def open_loop_flyer(vehicle, vehicle_file):
     """fly(factors, X, U, starts, length, forced): the vehicle's own model
-    (aurora._core.open_loop) of `vehicle_file`, open loop (eq. I7)."""
+    (aurora._core.OpenLoop) of `vehicle_file`, open loop (eq. I7); the file
+    is read once."""
     from aurora import _core
-    return lambda factors, X, U, starts, length, forced: _core.open_loop(
-        vehicle, vehicle_file, [float(f) for f in factors], X, U, starts, length, forced)
+    fly = _core.OpenLoop(vehicle, vehicle_file)
+    return lambda factors, X, U, starts, length, forced: fly([float(f) for f in factors], X, U, starts, length,
+                                                             forced)

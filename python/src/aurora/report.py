@@ -207,9 +207,12 @@ def study_metrics(controls, ts):
 
 # A DroneState's 12-state in the report's names (the model's order).
 STATE_NAMES = ("x", "y", "z", "roll", "pitch", "yaw", "vx", "vy", "vz", "p", "q", "r")
-# The AR.Drone's commands, for a bag recorded before Control.command_names.
-ARDRONE_COMMANDS = ("u_phi (roll) [-1, 1]", "u_theta (pitch, + = negative theta) [-1, 1]", "u_zdot (climb) [-1, 1]",
-                    "u_psidot (yaw rate, + = negative) [-1, 1]")
+
+
+def commands_before_command_names():
+    """The commands of a bag recorded before Control.command_names and
+    Control.vehicle: the default vehicle's, the only one flown then."""
+    return _core.vehicle_command_names(_core.DEFAULT_VEHICLE)
 
 
 def state_values(s):
@@ -220,7 +223,7 @@ def state_values(s):
 
 def gains_label(control):
     """The gains a figure's title names: each by name where the law has at
-    most four (the PD law's kp and kd, the Pioneer kinematic law's four),
+    most four (the PD law's kp and kd, a kinematic ground law's four),
     else how many (metrics.json lists them); a bag from before Control named
     its gains flew the PD law (its kp and kd fields)."""
     names, values = list(getattr(control, "gain_names", ())), list(getattr(control, "gains", ()))
@@ -269,8 +272,8 @@ def analyse(ns, d):
     metrics_match, compared_to = controller_metrics_match(controls, ts, gap_step, (iae, itae, iasc))
     t0 = states[min(states)].header.stamp.to_sec()
     series = flight_series(ns, states, controls, ts, t0)
-    # The vehicle's own commands (a bag from before Control named them: the AR.Drone's).
-    names = list(getattr(last, "command_names", ())) or list(ARDRONE_COMMANDS)
+    # The vehicle's own commands (a bag from before Control named them: the default vehicle's).
+    names = list(getattr(last, "command_names", ())) or commands_before_command_names()
     cmd = {"t": [], "u": [[] for _ in names], "names": names}
     for step in sorted(controls):
         if step in states:
@@ -291,7 +294,7 @@ def analyse(ns, d):
     series["label"] = "%s (%s%s, %s; delay %d samples = %.3f s)" % (
         ns, law, "" if predictor == "off" else " with the %s predictor" % predictor, gains, last.delay_samples,
         last.delay_seconds)
-    vehicle = getattr(last, "vehicle", "") or "ardrone2"
+    vehicle = getattr(last, "vehicle", "") or _core.DEFAULT_VEHICLE
     series["flies"] = _core.vehicle_flies(vehicle)
     segments = segment_metrics(series)
     metrics = {
@@ -630,7 +633,7 @@ def figures(ns, series, cmd, out_dir, pdf):
         ax.legend(loc="best")
     finish(fig, axes, "linear and angular velocities", "velocities")
 
-    names = cmd.get("names", ARDRONE_COMMANDS)  # a caller's own cmd: the AR.Drone's four
+    names = cmd.get("names") or commands_before_command_names()  # a caller's own cmd: the default vehicle's
     fig, axes = plt.subplots(len(names), 1, figsize=(8, 2 * len(names)), sharex=True, squeeze=False)
     axes = axes[:, 0]
     for ax, i, name in zip(axes, range(len(names)), names):
@@ -701,7 +704,7 @@ def matched_text(m):
 
 def commands_text(m):
     """How the controller's commands were limited: a drone's clamped to [-1, 1] (or not); a ground robot's laws
-    saturate their own (docs/pioneer3dx.md), which the clamp flag does not describe."""
+    saturate their own (its vehicle's page in docs/), which the clamp flag does not describe."""
     if not m.get("flies", True):
         return "commands saturated by the law"
     return "clamped" if m["commands_clamped"] else "unclamped"

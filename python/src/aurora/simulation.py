@@ -30,10 +30,11 @@ class Flight:
 
     t [s] (n), states (n x S: the state after k model steps, its columns
     named by state_names: x, y, z [m], phi, theta, psi [rad] and their rates
-    for every vehicle, then u [m/s], omega [rad/s] for the Pioneer P3-DX),
-    commands (n x N: the command the vehicle applied at step k, model order:
-    fractions of full scale for the drones, u_ref [m/s], omega_ref [rad/s]
-    for the Pioneer), reference (n x 3 [m]), error (n: tracking error [m]),
+    for every vehicle, then the vehicle's own states, such as a ground
+    robot's speeds), commands (n x N: the command the vehicle applied at
+    step k, in its model's order: fractions of full scale for the drones,
+    speed references for a ground robot; docs/<vehicle>.md),
+    reference (n x 3 [m]), error (n: tracking error [m]),
     delay_in_force (n: samples between state k and the state the law
     received at step k: by the delay rule 0 while k < delay, then delay;
     over a link its varying age), metrics (dict: steps, iae, itae, iasc,
@@ -85,11 +86,11 @@ def simulate(controller, task, vehicle=None, delay=None, link=None, clamp=True, 
     """One flight of `controller` on `task` with a feedback delay of `delay`
     samples. Over `link`, a given delay replaces the link's uplink delay and
     None keeps it (docs/links.md, "A delay beside a link"); without a link
-    None is 0. The controller's law chooses the vehicle (None: its shipped
-    file: ardrone2, bebop2 for bebop2_compensator, pioneer3dx for
-    pioneer_dynamic and pioneer_kinematic); `rate` [Hz] is the Bebop 2
-    compensator's instead of its file's (docs/bebop2.md); clamp=False is
-    refused for the Pioneer (its laws saturate, docs/pioneer3dx.md)."""
+    None is 0. The controller's law chooses the vehicle (None: the shipped
+    file of the vehicle the law flies, vehicles/<vehicle>.yaml); `rate` [Hz]
+    is a law's own control rate instead of its file's, for a law that has
+    one (docs/bebop2.md); clamp=False is refused for a law that saturates
+    its own commands (its vehicle's page in docs/)."""
     delay = _core.DELAY_NOT_GIVEN if delay is None else whole(delay, "delay")
     clamp = boolean(clamp, "clamp")
     rate = 0.0 if rate is None else positive(rate, "rate")

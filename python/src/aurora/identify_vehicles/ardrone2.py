@@ -39,9 +39,8 @@ def fit_around(nominal_path, nominal):
     """The output-error fit around the nominal file (its path and content)."""
     from aurora import _core
     values = {key: key_value(nominal, key) for key in FACTORS}
-    return lambda X, U, Ts, delay, window, first=0: fit(
-        open_loop_flyer("ardrone2", nominal_path), _core.vehicle_factor_names("ardrone2"), values, X, U, Ts, delay,
-        window)
+    fly, names = open_loop_flyer("ardrone2", nominal_path), _core.vehicle_factor_names("ardrone2")
+    return lambda X, U, Ts, delay, window, first=0: fit(fly, names, values, X, U, Ts, delay, window)
 
 
 # The output-error fit tries only the states' own grid phase (each phase

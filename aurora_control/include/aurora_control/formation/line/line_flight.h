@@ -11,19 +11,19 @@
 namespace aurora_control {
 
 // Each tick, with the drones' sample time Ts [s].
-using FormationObserver = std::function<void(const ArdroneLineObservation&, double Ts)>;
+using FormationObserver = std::function<void(const LineObservation&, double Ts)>;
 
 // What a formation flight gives besides its ticks.
 struct FormationFlight {
   FormationFile file;
-  ArdroneLineRun run;  // with the delays in force
+  LineRun run;  // with the delays in force
   double Ts = 0.0;
   long ticks = 0;
   double seconds = 0.0;  // wall time of the run
   // RMS after 10 s (docs/formation.md, "Formation errors"): rho [m], alpha,
   // beta [rad], the formation's horizontal position and height [m].
   double rms[5] = {};
-  ArdroneLineJudge judge;  // the formation checks, as a sweep judges them
+  LineJudge judge;  // the formation checks, as a sweep judges them
 };
 
 // Flies the line's `file` with the options' vehicle file and delays

@@ -12,8 +12,12 @@
 
 namespace aurora_control {
 
-using ArdroneLineRun = FormationRun<double, LineFormation<double>, ArdroneLawData>;
-using ArdroneLineObservation = FormationObservation<double, LineFormation<double>, ArdroneLawData>;
-using ArdroneLineJudge = FormationJudge<double, LineFormation<double>, ArdroneLawData>;
+// The line's crew: AuRoRA's AR.Drones and their laws, named here only (every
+// other file of the line says LineDrones).
+using LineDrones = ArdroneLawData;
+
+using LineRun = FormationRun<double, LineFormation<double>, LineDrones>;
+using LineObservation = FormationObservation<double, LineFormation<double>, LineDrones>;
+using LineJudge = FormationJudge<double, LineFormation<double>, LineDrones>;
 
 }  // namespace aurora_control

@@ -21,9 +21,9 @@
 namespace aurora_control {
 
 struct FormationDroneFile {
-  std::string name_space;        // its ROS namespace (ardrone1, ...)
+  std::string name_space;        // its ROS namespace (its drivers' topics)
   double start[3];               // [m]
-  LawSettings<ArdroneLawData> controller;  // its law and gains
+  LawSettings<LineDrones> controller;  // its law and gains
   long delay = 0;                // its uplink delay [samples]
   LinkParams link;               // its link (docs/links.md; ideal unless given)
   PredictorFile predictor;       // its controller file's predictor (off for a mapping; docs/predictor.md)
@@ -82,11 +82,12 @@ inline FormationDroneFile readDrone(const YamlReader& r, const YAML::Node& n, co
                                     const std::string& config_dir) {
   r.onlyKeys(n, key, {"namespace", "start", "controller", "delay", "link"});
   FormationDroneFile d;
-  d.name_space = r.text(r.require(n, key, "namespace", "a ROS namespace such as ardrone1"), r.key(key, "namespace"));
+  d.name_space =
+      namespaceAt(r, r.require(n, key, "namespace", "a ROS namespace (drone1, ugv_2)"), r.key(key, "namespace"));
   const std::vector<double> s = numbers(r, r.require(n, key, "start", "[x, y, z] in m"), r.key(key, "start"), 3);
   for (int i = 0; i < 3; ++i) d.start[i] = s[i];
   const YAML::Node c = r.require(n, key, "controller", "a controller mapping {name, gains} or file (controllers/NAME.yaml)");
-  d.controller = controllerAt<ArdroneLawData>(r, c, r.key(key, "controller"), config_dir);
+  d.controller = controllerAt<LineDrones>(r, c, r.key(key, "controller"), config_dir);
   d.predictor = predictorAt(r, c, r.key(key, "controller"), config_dir);
   long given = kDelayNotGiven;
   if (n["delay"]) {
@@ -177,7 +178,7 @@ struct LineShapeEntry {
   using File = FormationFile;
   static constexpr int kRobots = 2;
   static constexpr bool kNamesItsVehicles = false;
-  using UnnamedVehicle = ArdroneLawData::Vehicle;  // its drones (withUnnamedVehicle, shapes.h)
+  using UnnamedVehicle = LineDrones::Vehicle;  // its drones (withUnnamedVehicle, shapes.h)
   static const char* name() { return "line"; }
   static std::string robotKey(const std::string& what) { return "formation.drones[i]." + what; }
   static std::string lawRefusal() { return "the line's law is its file's formation.law"; }
@@ -185,7 +186,7 @@ struct LineShapeEntry {
   // A sweep's: its run, its robots' law type (f(Law()); the drones' law,
   // chosen by the file), the shape its parameters are named by, its laws a
   // sweep may vary (formation_law; none: the file's formation.law).
-  using SweepRun = ArdroneLineRun;
+  using SweepRun = LineRun;
   // The sweep's set of vehicle parameters (its file's, each vehicle's
   // nominal else): its drones are AR.Drones of the set's.
   template <class VehicleSet>
@@ -199,7 +200,7 @@ struct LineShapeEntry {
     return facts;
   }
   template <class F>
-  static void withRobotLaw(const std::string& controller, F&& f) { withLawOfNamed<ArdroneLawData>(controller, f); }
+  static void withRobotLaw(const std::string& controller, F&& f) { withLawOfNamed<LineDrones>(controller, f); }
   using ParamShape = Shape;
   static constexpr int kSweepLaws = 0;
   static std::string sweepLawNames() { return ""; }
@@ -209,7 +210,7 @@ struct LineShapeEntry {
 
 // Each drone's delay in force shorter than the run, as one drone's
 // (limits.h, delayShorterThanRun); `keys[d]` names where drone d's came from.
-inline void refuseFormationDelays(const ArdroneLineRun& run, double Ts,
+inline void refuseFormationDelays(const LineRun& run, double Ts,
                                   const std::vector<std::string>& keys) {
   const long ticks = formationTicks(run.reference.duration, Ts);
   for (int d = 0; d < LineFormation<double>::kDrones; ++d) {
@@ -223,9 +224,9 @@ inline void refuseFormationDelays(const ArdroneLineRun& run, double Ts,
 
 // The run of a formation file with the drones' vehicle `vehicle`, its
 // period in whole drone steps (refused otherwise).
-inline ArdroneLineRun formationRun(const FormationFile& f,
+inline LineRun formationRun(const FormationFile& f,
                                                                 const LawVehicleParams& vehicle) {
-  ArdroneLineRun run;
+  LineRun run;
   run.law = f.law;
   run.gains = f.gains;
   run.reference = f.reference;

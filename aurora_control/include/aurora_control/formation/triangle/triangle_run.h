@@ -43,6 +43,10 @@ struct TriangleSetup {
 using Triangle = TriangleFormation<double>;
 // The triangle's AR.Drones fly the underactuated law (AuRoRA's script's).
 using TriangleDroneLaw = ArdroneLaw<LawType::kUnderactuated>;
+using TriangleDrones = TriangleDroneLaw::Data;
+// A flying triangle's shipped file, which refusals of kinematic robots
+// where vehicles are needed point to.
+constexpr const char* kFlyingTriangleFile = "config/formations/triangle_ardrones.yaml";
 template <class Law>
 using TriangleRun = FormationRun<double, Triangle, typename Law::Data>;
 

@@ -143,7 +143,7 @@ inline void readRobots(const YamlReader& r, const YAML::Node& n, const std::stri
   s.drone_file = formation_detail::inConfig(r.text(n["vehicle"], r.key(key, "vehicle")), config_dir);
   s.drone = aurora_sim::loadVehicleFile<LawVehicle>(s.drone_file, "the triangle's drones");
   const YAML::Node c = r.require(n, key, "controller", "an underactuated mapping or controllers/underactuated.yaml");
-  const auto set = formation_detail::controllerAt<ArdroneLawData>(r, c, r.key(key, "controller"), config_dir);
+  const auto set = formation_detail::controllerAt<TriangleDrones>(r, c, r.key(key, "controller"), config_dir);
   if (set.law != int(LawType::kUnderactuated)) r.fail(r.key(key, "controller"), "is refused: the drones fly the underactuated law");
   s.drone_gains.underactuated = set.gains.underactuated;
   s.predictor = formationPredictor<TriangleDroneLaw>(formation_detail::predictorAt(r, c, r.key(key, "controller"), config_dir),
@@ -206,7 +206,7 @@ struct TriangleShapeEntry {
     facts.controller = TriangleDroneLaw::name();
     if (s.kinematic) {
       facts.refusal = "has kinematic robots (no formation.robots.vehicle): a sweep flies robots with a law; give its "
-                      "robots a vehicle (config/formations/triangle_ardrones.yaml)";
+                      "robots a vehicle (" + std::string(kFlyingTriangleFile) + ")";
     }
     return facts;
   }

@@ -21,16 +21,22 @@
 
 namespace aurora_control {
 
+// The line's robots, named here only: robot 1, the reference, a Pioneer on
+// its dynamic law; robot 2 an AR.Drone on the underactuated law.
+using UavUgvGroundLaw = PioneerDynamic;
+using UavUgvDroneLaw = ArdroneLaw<LawType::kUnderactuated>;
+using UavUgvGround = UavUgvGroundLaw::Vehicle;
+
 struct UavUgvLineSetup {
-  aurora_sim::Pioneer3dx::Params<double> pioneer{};  // its sample time is the tick's
-  PioneerDynamicGains<double> pioneer_gains = PioneerDynamicGains<double>::defaults();
-  double pioneer_start[3] = {-1, 0, 0};  // [m] its control point (AuRoRA's 2018 rSetPose), heading 0
+  UavUgvGround::Params<double> ground{};  // its sample time is the tick's
+  UavUgvGroundLaw::Gains<double> ground_gains = UavUgvGroundLaw::Gains<double>::defaults();
+  double ground_start[3] = {-1, 0, 0};  // [m] its control point (AuRoRA's 2018 rSetPose), heading 0
   LawVehicleParams drone{};
   LawGains<double> drone_gains{{0.0, 0.0}, UnderactuatedGains<double>::defaults()};  // the underactuated law's
   double drone_start[3] = {0, 0, 0.75};  // [m], at rest
   double k1[6], k2[6];                   // the layer's gains (UavUgvLine::defaultGains: AuRoRA's)
   double tick = 1.0 / 30.0;              // [s]
-  long delay[2] = {0, 0};                // [ticks] each robot's feedback delay (Pioneer, drone)
+  long delay[2] = {0, 0};                // [ticks] each robot's feedback delay (ground robot, drone)
   LinkParams link[2];                    // each robot's link (docs/links.md; ideal unless its file gives one)
   double duration = 130.0;               // [s]: ticks k = 0 .. round(duration / tick) - 1
   std::string name_space[2] = {"pioneer1", "ardrone2"};  // each robot's ROS namespace (robots[i].namespace)
@@ -38,9 +44,7 @@ struct UavUgvLineSetup {
   long ticks() const { return std::lround(duration / tick); }
 };
 
-// Robot 1 the Pioneer on its dynamic law, robot 2 the AR.Drone on the
-// underactuated law.
-using UavUgvRobots = EitherLaw<PioneerDynamic, ArdroneLaw<LawType::kUnderactuated>>;
+using UavUgvRobots = EitherLaw<UavUgvGroundLaw, UavUgvDroneLaw>;
 using UavUgvShape = UavUgvLine<double>;
 using UavUgvRun = FormationRun<double, UavUgvShape, UavUgvRobots::Data>;
 
@@ -50,12 +54,12 @@ inline UavUgvRun uavUgvRun(const UavUgvLineSetup& s) {
   for (int i = 0; i < 6; ++i) run.gains.k1[i] = s.k1[i], run.gains.k2[i] = s.k2[i];
   run.reference.path = FormationPath::kOwn;  // the line's trajectory (UavUgvLine::ownReference)
   run.schedule.period_ticks = 1;  // every tick, on the robots' clock: t = k tick
-  run.drone[0].plant = run.drone[0].model = Params::ofFirst(s.pioneer);
+  run.drone[0].plant = run.drone[0].model = Params::ofFirst(s.ground);
   run.drone[1].plant = run.drone[1].model = Params::ofSecond(s.drone);
-  const double* starts[2] = {s.pioneer_start, s.drone_start};
+  const double* starts[2] = {s.ground_start, s.drone_start};
   for (int r = 0; r < 2; ++r) {
     auto& robot = run.drone[r];
-    robot.gains.first = s.pioneer_gains;
+    robot.gains.first = s.ground_gains;
     robot.gains.second = s.drone_gains;
     robot.delay = s.delay[r];
     robot.link = s.link[r];

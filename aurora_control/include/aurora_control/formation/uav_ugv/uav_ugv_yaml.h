@@ -21,7 +21,6 @@
 #include "aurora_control/formation/formation_file.h"
 #include "aurora_control/formation/line/line_formation.h"  // its parameters are named as the line's
 #include "aurora_control/formation/uav_ugv/uav_ugv_run.h"
-#include "aurora_control/law/pioneer3dx/pioneer_yaml.h"
 #include "aurora_sim/vehicle/vehicle_yaml.h"
 
 namespace aurora_control {
@@ -56,17 +55,26 @@ inline void readRobotLink(const YamlReader& r, const YAML::Node& n, const std::s
   s.delay[index] = delayInForce(kDelayNotGiven, s.link[index]);
 }
 
-inline void readPioneer(const YamlReader& r, const YAML::Node& n, const std::string& key,
-                        const std::string& config_dir, UavUgvLineSetup& s) {
+// A robot's vehicle file (robots[i].vehicle: vehicles/NAME.yaml of the
+// robot's vehicle), in the config folder.
+template <class Vehicle>
+std::string vehicleFileAt(const YamlReader& r, const YAML::Node& n, const std::string& key,
+                          const std::string& config_dir) {
+  const std::string hint = std::string("vehicles/") + Vehicle::name() + ".yaml";
+  return formation_detail::inConfig(r.text(r.require(n, key, "vehicle", hint), r.key(key, "vehicle")), config_dir);
+}
+
+inline void readGround(const YamlReader& r, const YAML::Node& n, const std::string& key,
+                       const std::string& config_dir, UavUgvLineSetup& s) {
   r.onlyKeys(n, key, {"namespace", "vehicle", "kinematic_model", "controller", "start", "link"});
   if (n["namespace"]) s.name_space[0] = formation_detail::namespaceAt(r, n["namespace"], r.key(key, "namespace"));
-  const std::string file = formation_detail::inConfig(r.text(r.require(n, key, "vehicle", "vehicles/pioneer3dx.yaml"),
-                                                             r.key(key, "vehicle")), config_dir);
-  s.pioneer = aurora_sim::loadVehicleFile<aurora_sim::Pioneer3dx>(file, "the UAV-UGV line's robot 1");
+  const std::string file = vehicleFileAt<UavUgvGround>(r, n, key, config_dir);
+  s.ground = aurora_sim::loadVehicleFile<UavUgvGround>(file, "the UAV-UGV line's robot 1");
   s.vehicle_file[0] = file;
-  if (n["kinematic_model"]) s.pioneer.kinematic = r.boolean(n["kinematic_model"], r.key(key, "kinematic_model")) ? 1 : 0;
-  readPioneerGains(r, controllerOf(r, n, key, PioneerDynamic::name()), r.key(key, "controller"), s.pioneer_gains);
-  readStart(r, n, key, 0.0, 0.0, "accepted z = 0 (a ground robot's control point lies on the floor)", s.pioneer_start);
+  if (n["kinematic_model"]) s.ground.kinematic = r.boolean(n["kinematic_model"], r.key(key, "kinematic_model")) ? 1 : 0;
+  const YAML::Node c = controllerOf(r, n, key, UavUgvGroundLaw::name());
+  readGainsOf(UavUgvGroundLaw(), r, c, r.key(key, "controller"), s.ground_gains, s.tick);
+  readStart(r, n, key, 0.0, 0.0, "accepted z = 0 (a ground robot's control point lies on the floor)", s.ground_start);
   readRobotLink(r, n, key, config_dir, 0, s);
 }
 
@@ -74,12 +82,11 @@ inline void readDrone(const YamlReader& r, const YAML::Node& n, const std::strin
                       UavUgvLineSetup& s) {
   r.onlyKeys(n, key, {"namespace", "vehicle", "controller", "start", "link"});
   if (n["namespace"]) s.name_space[1] = formation_detail::namespaceAt(r, n["namespace"], r.key(key, "namespace"));
-  const std::string file = formation_detail::inConfig(r.text(r.require(n, key, "vehicle", "vehicles/ardrone2.yaml"),
-                                                             r.key(key, "vehicle")), config_dir);
-  s.drone = aurora_sim::loadVehicleFile<LawVehicle>(file, "the UAV-UGV line's robot 2");
+  const std::string file = vehicleFileAt<UavUgvDroneLaw::Vehicle>(r, n, key, config_dir);
+  s.drone = aurora_sim::loadVehicleFile<UavUgvDroneLaw::Vehicle>(file, "the UAV-UGV line's robot 2");
   s.vehicle_file[1] = file;
-  LawSettings<ArdroneLawData> set;
-  readLawMapping(r, controllerOf(r, n, key, lawName(LawType::kUnderactuated)), r.key(key, "controller"), set);
+  LawSettings<UavUgvDroneLaw::Data> set;
+  readLawMapping(r, controllerOf(r, n, key, UavUgvDroneLaw::name()), r.key(key, "controller"), set);
   s.drone_gains.underactuated = set.gains.underactuated;
   readStart(r, n, key, 0.0, formation_detail::kHighestStart, "", s.drone_start);
   readRobotLink(r, n, key, config_dir, 1, s);
@@ -103,25 +110,26 @@ inline UavUgvLineSetup readUavUgvLineFile(const FormationDocument& d) {
     formation_detail::readGains(r, n["gains"], "formation.gains", g);
     for (int i = 0; i < 6; ++i) s.k1[i] = g.k1[i], s.k2[i] = g.k2[i];
   }
-  const YAML::Node robots = r.require(n, "formation", "robots", "the Pioneer, then the drone");
+  const YAML::Node robots = r.require(n, "formation", "robots", "the ground robot, then the drone");
   if (!robots.IsSequence() || robots.size() != 2) {
-    r.fail("formation.robots", "must list 2 robots: the Pioneer (robot 1, the reference), then the drone");
+    r.fail("formation.robots", "must list 2 robots: the ground robot (robot 1, the reference), then the drone");
   }
-  readPioneer(r, robots[0], "formation.robots[0]", config_dir, s);
+  readGround(r, robots[0], "formation.robots[0]", config_dir, s);
   readDrone(r, robots[1], "formation.robots[1]", config_dir, s);
   if (bool(robots[0]["namespace"]) != bool(robots[1]["namespace"])) {
     // Both or neither: formation.launch places each robot's nodes by the file's names.
     r.fail(std::string("formation.robots[") + (robots[0]["namespace"] ? "1" : "0") + "].namespace",
-           "is missing: name both robots' namespaces or neither (pioneer1, ardrone2)");
+           "is missing: name both robots' namespaces or neither (" + UavUgvLineSetup().name_space[0] + ", " +
+               UavUgvLineSetup().name_space[1] + " by default)");
   }
   formation_detail::refuseSharedNamespaces(r, "formation.robots[1].namespace", {s.name_space[0], s.name_space[1]});
   double gap = 0.0;
-  for (int i = 0; i < 3; ++i) gap += (s.drone_start[i] - s.pioneer_start[i]) * (s.drone_start[i] - s.pioneer_start[i]);
+  for (int i = 0; i < 3; ++i) gap += (s.drone_start[i] - s.ground_start[i]) * (s.drone_start[i] - s.ground_start[i]);
   if (!(gap > 0.0)) {
     r.fail("formation.robots[1].start", "is robot 1's: rho = 0 and the line's angles are undefined; accepted a start "
-                                        "apart from the Pioneer's");
+                                        "apart from the ground robot's");
   }
-  s.pioneer.Ts = s.tick;  // every robot steps at the formation's tick (AuRoRA's 2018 Pioneer: 1/30 s)
+  s.ground.Ts = s.tick;  // every robot steps at the formation's tick (AuRoRA's 2018 Pioneer: 1/30 s)
   s.drone.Ts = s.tick;
   return s;
 }
@@ -149,7 +157,7 @@ struct UavUgvShapeEntry {
   static ShapeSweepFacts sweepFacts(const File& s) {
     ShapeSweepFacts facts;
     facts.duration = s.duration;
-    facts.controller = "pioneer_dynamic + underactuated";
+    facts.controller = std::string(UavUgvGroundLaw::name()) + " + " + UavUgvDroneLaw::name();
     return facts;
   }
   template <class F>

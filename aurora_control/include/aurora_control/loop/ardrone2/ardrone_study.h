@@ -1,7 +1,8 @@
 // The thesis's study of the AR.Drone 2.0 (docs/delay-and-study.md): its
 // runs of either of its laws, chosen at run time, on the offline runner
-// (positioning_runner.h), and what an observer of its flight sees. The
-// self-check, the study's tests and benches call these.
+// (positioning_runner.h), and what an observer of its flight sees: the
+// AR.Drone's own, beside its law (law/ardrone2). The self-check and the
+// study's tests call these.
 #pragma once
 
 #include "aurora_control/law/ardrone2/control_law.h"
