@@ -404,7 +404,7 @@ CudaDevice probeCudaDevice() {
                  prop.name, prop.major, prop.minor, prop.major, prop.minor);
     if (kCheckBuild) {
       std::fprintf(stderr, "cuda: this build compiled the kernels only to check them (AURORA_CUDA_CHECK_ONLY, "
-                   "the default where CMake found no GPU and was given no architectures: PTX at NVVM -O1), not "
+                   "the default where CMake found no GPU and was given no architectures: PTX at NVVM -O0), not "
                    "for speed: build with -DAURORA_CUDA_ARCHITECTURES=%d%d for an optimized kernel\n",
                    prop.major, prop.minor);
     }
