@@ -90,16 +90,19 @@ py::dict simulateFiles(const std::string& controller, const std::string& task, c
 // The vehicle a controller file's law flies (its name).
 std::string vehicleOf(const std::string& controller) { return controllerVehicle(controller); }
 
+// A vehicle type this build does not know refused, naming the known ones.
+void refuseUnknownVehicle(const std::string& type) {
+  if (!aurora_sim::isKnownVehicleType(type)) {
+    throw py::value_error("'" + type + "' is not a vehicle type: accepted " + aurora_sim::knownVehicleTypes());
+  }
+}
+
 // Whether a vehicle type flies (a drone: it takes off, hovers, lands) or
 // drives on the floor (a ground robot: it stands still), by its sim profile.
 bool vehicleFlies(const std::string& type) {
-  bool known = false, flies = true;
-  aurora_sim::forEachVehicle([&](auto v) {
-    if (type != v.name()) return;
-    known = true;
-    flies = aurora_sim::SimProfile<decltype(v)>::kFlies;
-  });
-  if (!known) throw py::value_error("'" + type + "' is not a vehicle type: accepted " + aurora_sim::knownVehicleTypes());
+  refuseUnknownVehicle(type);
+  bool flies = true;
+  aurora_sim::withVehicleOfType(type, [&](auto v) { flies = aurora_sim::SimProfile<decltype(v)>::kFlies; });
   return flies;
 }
 
@@ -253,15 +256,11 @@ std::vector<double> formationError(const std::string& shape, const std::vector<d
 }
 
 
-// The model factors a vehicle type scales (its factorName order): what
-// identify's output-error fit may vary.
 // The names `each(vehicle, names)` gives of a vehicle type (an unknown type
-// refused, naming the known ones).
+// refused).
 template <class Each>
 std::vector<std::string> vehicleNames(const std::string& type, Each each) {
-  if (!aurora_sim::isKnownVehicleType(type)) {
-    throw py::value_error("'" + type + "' is not a vehicle type: accepted " + aurora_sim::knownVehicleTypes());
-  }
+  refuseUnknownVehicle(type);
   std::vector<std::string> names;
   aurora_sim::withVehicleOfType(type, [&](auto v) { each(v, names); });
   return names;
@@ -274,6 +273,8 @@ std::vector<std::string> vehicleCommandNames(const std::string& type) {
   });
 }
 
+// The model factors a vehicle type scales (its factorName order): what
+// identify's output-error fit may vary.
 std::vector<std::string> vehicleFactorNames(const std::string& type) {
   return vehicleNames(type, [](auto v, std::vector<std::string>& names) {
     for (int i = 0; i < decltype(v)::kFactors; ++i) names.push_back(decltype(v)::factorName(i));
@@ -346,7 +347,7 @@ class OpenLoop {
   using Fly = std::function<py::array_t<double>(const std::vector<double>&, const Rows&, const Rows&,
                                                 const std::vector<long>&, long, long)>;
   OpenLoop(const std::string& type, const std::string& vehicle_file) {
-    vehicleFactorNames(type);  // refuses an unknown type
+    refuseUnknownVehicle(type);
     aurora_sim::withVehicleOfType(type, [&](auto v) {
       using Vehicle = decltype(v);
       const auto params = aurora_sim::loadVehicleFile<Vehicle>(vehicle_file, "identify");
@@ -364,7 +365,6 @@ class OpenLoop {
  private:
   Fly fly_;
 };
-
 
 }  // namespace
 
