@@ -29,7 +29,12 @@ endfunction()
 # per file: half the compile time. The files of such a target keep their
 # helpers' names apart (a shared one in the target's support header) and
 # each still compiles alone; a file with flags of its own stays out
-# (SKIP_UNITY_BUILD_INCLUSION).
+# (SKIP_UNITY_BUILD_INCLUSION). An optional second argument sets another
+# batch size: a target built last, alone, in halves keeps both cores busy.
 function(aurora_unity_tests target)
-  set_target_properties(${target} PROPERTIES UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE 8)
+  set(batch 8)
+  if(ARGC GREATER 1)
+    set(batch ${ARGV1})
+  endif()
+  set_target_properties(${target} PROPERTIES UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE ${batch})
 endfunction()

@@ -304,12 +304,27 @@ def link_of(t, actuation_delay):
 def identify(bag, ns=None, max_delay=15, window=1, out=None):
     """What `rosrun aurora identify` writes as identify.json, as a dict;
     with `out`, the files too. Raises ValueError on bad input."""
+    name, loop = bag_loop(bag, ns)
+    return identify_loop(bag, name, loop, max_delay, window, out)
+
+
+def bag_loop(bag, ns=None):
+    """The robot's name and loop as identify reads them from the bag
+    (read_loop), refused (ValueError) when too short to identify."""
     try:
         name, loop = read_loop(bag, ns)
-        if len(loop["state_steps"]) < MIN_STEPS:
-            raise IdentifyError("bag '%s' holds %d states of %s (%.1f s): identify needs %d (%.0f s)"
-                                % (bag, len(loop["state_steps"]), name, len(loop["state_steps"]) * loop["Ts"],
-                                   MIN_STEPS, MIN_STEPS * loop["Ts"]))
+    except IdentifyError as e:
+        raise ValueError(str(e)) from None
+    if len(loop["state_steps"]) < MIN_STEPS:
+        raise ValueError("bag '%s' holds %d states of %s (%.1f s): identify needs %d (%.0f s)"
+                         % (bag, len(loop["state_steps"]), name, len(loop["state_steps"]) * loop["Ts"],
+                            MIN_STEPS, MIN_STEPS * loop["Ts"]))
+    return name, loop
+
+
+def identify_loop(bag, name, loop, max_delay, window, out):
+    """identify() of a loop bag_loop read."""
+    try:
         result = summary(bag, name, loop, max_delay, window)
     except IdentifyError as e:
         raise ValueError(str(e)) from None
@@ -520,7 +535,11 @@ def study(j, name, out):
 def main(argv):
     args = parse_args(argv)
     try:
-        j = identify(args.bag, args.ns, args.max_delay, args.window, args.out)
+        name, loop = bag_loop(args.bag, args.ns)
+        if args.study:  # a study that cannot run is refused before the fit (seconds), not after it
+            from aurora import identified_study
+            identified_study.study_sweep(args.study, loop["vehicle"])
+        j = identify_loop(args.bag, name, loop, args.max_delay, args.window, args.out)
         print("identify: %s (%s): feedback delay %d samples, actuation delay %s; %s; wrote %s" % (
             j["namespace"], j["vehicle"], j["feedback_delay_samples"],
             "%d samples" % j["actuation_delay_samples"] if j["actuation_delay_samples"] is not None else "not measured",

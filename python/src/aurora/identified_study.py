@@ -37,10 +37,10 @@ def sweep_vehicle(sweep, path):
     return _core.controller_vehicle(_core.shipped_or_path(controller, config_dir(), "controllers"))
 
 
-def identified_sweep(path, out, vehicle):
-    """The sweep file as shipped, its vehicle and link the identified ones
-    (absolute paths), written beside the identify files; refused for a
-    formation or another vehicle's study."""
+def study_sweep(study, vehicle):
+    """The study's file (study_file) and its sweep as read; refused
+    (ValueError) unless it is a single-robot sweep of `vehicle`."""
+    path = study_file(study)
     with open(path) as f:
         sweep = yaml.safe_load(f)
     if not isinstance(sweep, dict) or "sweep" not in sweep:
@@ -51,6 +51,12 @@ def identified_sweep(path, out, vehicle):
     flies = sweep_vehicle(sweep, path)
     if flies != vehicle:
         raise ValueError("--study '%s' flies a %s, the bag a %s: give a study of the bag's vehicle" % (path, flies, vehicle))
+    return path, sweep
+
+
+def identified_sweep(path, sweep, out):
+    """The sweep file as shipped, its vehicle and link the identified ones
+    (absolute paths), written beside the identify files."""
     s = sweep["sweep"]
     s["name"] = s.get("name", "sweep") + "_identified"
     s["vehicle"] = os.path.abspath(os.path.join(out, "vehicle.yaml"))
@@ -65,8 +71,8 @@ def identified_sweep(path, out, vehicle):
 def run_study(study, out, vehicle, backend="cpu"):
     """Both sweeps and their comparison into out/study_*; returns what
     identify.json records of them."""
-    path = study_file(study)
-    identified = identified_sweep(path, out, vehicle)
+    path, sweep = study_sweep(study, vehicle)
+    identified = identified_sweep(path, sweep, out)
     program = sweep_runner.sweep_program()
     result = {"study": path, "sweep_file": identified}
     for name, config in (("nominal", path), ("identified", identified)):
