@@ -45,16 +45,21 @@ struct Options {
 // A formation file gives each robot's link and controller and never clamps
 // (AuRoRA's formation scripts do not): the flight's --link, --no-clamp,
 // --controller and --task would be ignored, so they are refused, naming the
-// file's key for the file's shape (its entry's robotKey).
+// file's key for the file's shape (its entry's robotKey); so is --vehicle
+// for a shape whose file names its robots' vehicles (aurora.simulate_formation's
+// vehicle= alike).
 template <class ShapeEntry>
 void refuseFlightOnlyOptions(const std::vector<std::string>& given, ShapeEntry) {
+  const std::string vehicle = ShapeEntry::kNamesItsVehicles ? "vehicle" : "";
   const std::string why[][2] = {
       {"link", "give each robot's link in the formation file (" + ShapeEntry::robotKey("link") + ": links/NAME.yaml)"},
       {"no-clamp", "a formation's commands are never clamped (AuRoRA's formation scripts do not clamp)"},
       {"controller", "give the robots' controllers in the formation file (" + ShapeEntry::robotKey("controller") + ")"},
-      {"task", "the formation file's reference is the task"}};
+      {"task", "the formation file's reference is the task"},
+      {vehicle, "a formation file of shape '" + std::string(ShapeEntry::name()) + "' names its robots' vehicles (" +
+                    ShapeEntry::robotKey("vehicle") + ": vehicles/NAME.yaml)"}};
   for (const auto& w : why) {
-    if (std::find(given.begin(), given.end(), w[0]) != given.end()) {
+    if (!w[0].empty() && std::find(given.begin(), given.end(), w[0]) != given.end()) {
       throw ConfigError("--" + w[0] + " is refused with --formation: " + w[1]);
     }
   }
@@ -87,7 +92,7 @@ bool parse(int argc, char** argv, Options& o) {
       ("controller", po::value(&o.controller)->default_value(config + "/controllers/pd_saturated.yaml"), ("controller YAML (law and gains), or a shipped NAME (config/controllers/NAME.yaml; laws: " + knownLawNames() + "); its law chooses the vehicle").c_str())
       ("task", po::value(&o.task)->default_value(config + "/tasks/mission4.yaml"), "task YAML (waypoints, circle, lemniscate), or a shipped NAME (config/tasks/NAME.yaml)")
       ("rate", po::value(&o.rate), ("the rate [Hz] of a law that runs at one of its own (" + aurora_common::entryNames([](auto&& f) { forEachLawWithARate(f); }) + ") instead of its file's: the vehicle's rate divided by whole steps (at 30 Hz: 30, 15, 10, 7.5, 6, 5, ...)").c_str())
-      ("vehicle", po::value(&o.vehicle), ("vehicle YAML or a shipped NAME (default: the controller's vehicle, config/vehicles/NAME.yaml: " + lawVehicleNames() + ")").c_str())
+      ("vehicle", po::value(&o.vehicle), ("vehicle YAML or a shipped NAME (default: the controller's vehicle, config/vehicles/NAME.yaml: " + lawVehicleNames() + "); with --formation, the drones' of a shape whose file names none (the two-drone line)").c_str())
       ("delay", po::value(&o.delays)->multitoken()->composing(), "feedback delay [samples of Ts], 0 to 2047 (limits.h); with --formation one per robot (default: the file's)")
       ("no-clamp", po::bool_switch(&o.no_clamp), ("do not clamp the law's commands, nor the vehicle's sim (except " + alwaysClamping() + "'s, which clamps as its driver does); refused for a law that saturates its own commands (" + aurora_common::entryNames([](auto&& f) { forEachLawThatSaturates(f); }) + ")").c_str())
       ("formation", po::value(&o.formation), ("formation YAML or a shipped NAME (config/formations/*.yaml, docs/formation.md; shapes: " + knownShapeNames() + "): fly its robots and formation layer instead of --controller and --task").c_str())

@@ -224,6 +224,11 @@ class FormationAndLinkArgumentsTest(unittest.TestCase):
             f = os.path.join(config_dir(), "formations", name + ".yaml")
             self.refused(["--formation", f, "--link", link], "--link is refused with --formation", link_key)
             self.refused(["--formation", f, "--controller", "underactuated"], "--controller is refused", controller_key)
+            # The line's file names no vehicle (--vehicle is its drones'); the other shapes' files name theirs.
+            shape = {"triangle_ardrones": "triangle", "line_pioneer_ardrone": "uav_ugv_line"}.get(name)
+            if shape:
+                self.refused(["--formation", f, "--vehicle", "ardrone2"], "--vehicle is refused with --formation",
+                             "shape '%s' names its robots' vehicles" % shape)
         self.refused(["--formation", os.path.join(config_dir(), "formations", "line_pioneer_ardrone.yaml"), "--law", "N"],
                      "the UAV-UGV line has one law")
 
