@@ -517,14 +517,15 @@ def markdown(j):
     return "\n".join(lines) + "\n"
 
 
-def study(j, name, out):
-    """identify --study: the study with the identified files beside the
-    nominal one, recorded in identify.json (docs/identify.md)."""
+def study(j, checked, out):
+    """identify --study: the study (its path and sweep as study_sweep
+    checked them) with the identified files beside the nominal one,
+    recorded in identify.json (docs/identify.md)."""
     from aurora import identified_study
     if not j["vehicle_file_written"]:
         raise ValueError("--study needs an identified vehicle file, and this bag gave none (%s); the timing and "
                          "link.yaml are in %s" % (j["model"], out))
-    j["study"] = identified_study.run_study(name, out, j["vehicle"])
+    j["study"] = identified_study.run_study(*checked, out)
     with open(os.path.join(out, "identify.json"), "w") as f:
         json.dump(j, f, indent=2)
     print("identify: study %s: %d of %d feasible as shipped, %d with the identified vehicle and link; figures in %s"
@@ -536,16 +537,17 @@ def main(argv):
     args = parse_args(argv)
     try:
         name, loop = bag_loop(args.bag, args.ns)
+        checked = None
         if args.study:  # a study that cannot run is refused before the fit (seconds), not after it
             from aurora import identified_study
-            identified_study.study_sweep(args.study, loop["vehicle"])
+            checked = identified_study.study_sweep(args.study, loop["vehicle"])
         j = identify_loop(args.bag, name, loop, args.max_delay, args.window, args.out)
         print("identify: %s (%s): feedback delay %d samples, actuation delay %s; %s; wrote %s" % (
             j["namespace"], j["vehicle"], j["feedback_delay_samples"],
             "%d samples" % j["actuation_delay_samples"] if j["actuation_delay_samples"] is not None else "not measured",
             j["model"], args.out))
-        if args.study:
-            study(j, args.study, args.out)
+        if checked:
+            study(j, checked, args.out)
     except ValueError as e:
         print("identify: %s" % e, file=sys.stderr)
         return 2

@@ -68,10 +68,9 @@ def identified_sweep(path, sweep, out):
     return target
 
 
-def run_study(study, out, vehicle, backend="cpu"):
-    """Both sweeps and their comparison into out/study_*; returns what
-    identify.json records of them."""
-    path, sweep = study_sweep(study, vehicle)
+def run_study(path, sweep, out, backend="cpu"):
+    """Both sweeps of a study study_sweep read and checked, and their
+    comparison, into out/study_*; returns what identify.json records of them."""
     identified = identified_sweep(path, sweep, out)
     program = sweep_runner.sweep_program()
     result = {"study": path, "sweep_file": identified}
