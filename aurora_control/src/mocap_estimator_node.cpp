@@ -125,7 +125,7 @@ void MocapEstimatorNode::publish(bool stale) {
   state.step = step_++;
   double body[aurora_sim::kStateSize], X[aurora_sim::kMaxStates];
   estimator_.state(body);
-  vehicle_.state(body, X);  // the vehicle's state from its body's (a Pioneer's control point, u, omega)
+  vehicle_.state(body, X);  // the vehicle's state from its body's (its profile's stateFromBody)
   aurora_sim::stateToMsg(X, vehicle_.states, state);
   state.stale = stale;
   state_pub_.publish(state);

@@ -157,11 +157,22 @@ TEST(FormationCrew, TheRobotsFlyInTheirFilesNamespaces) {
   crew = loadFormationCrew(q);
   EXPECT_EQ(crew->robot(0).name_space, "p3dx");
   EXPECT_EQ(crew->robot(1).name_space, "drone7");
-  EXPECT_EQ(loadFormationCrew(request("line_pioneer_ardrone", {}))->robot(0).name_space, "pioneer1");
+  // Files that name none: each robot's vehicle's namespace stem and its number (robot_namespace.h).
+  crew = loadFormationCrew(request("line_pioneer_ardrone", {}));
+  EXPECT_EQ(crew->robot(0).name_space, "pioneer1");
+  EXPECT_EQ(crew->robot(1).name_space, "ardrone2");
+  crew = loadFormationCrew(request("triangle_ardrones", {}));
+  EXPECT_EQ(crew->robot(0).name_space, "ardrone1");
+  EXPECT_EQ(crew->robot(1).name_space, "ardrone2");
+  EXPECT_EQ(crew->robot(2).name_space, "ardrone3");
 }
 
 TEST(FormationCrew, WhatTheRosLoopCannotFlyIsRefusedNamingTheKey) {
-  EXPECT_NE(refusal(request("triangle_kinematic", {})).find("its robots are kinematic"), std::string::npos);
+  const std::string kinematic = refusal(request("triangle_kinematic", {}));
+  EXPECT_NE(kinematic.find("its robots are kinematic"), std::string::npos) << kinematic;
+  EXPECT_NE(kinematic.find("give formation.robots.vehicle: vehicles/ardrone2.yaml, formation.robots.controller: "
+                           "controllers/underactuated.yaml"),
+            std::string::npos) << kinematic;
   const std::string three = refusal(request("line_pioneer_ardrone", {-1, -1, 4}));
   EXPECT_NE(three.find("'/formation/delay_3' = 4 is refused: this formation has 2 robots"), std::string::npos) << three;
   const std::string long_delay = refusal(request("triangle_ardrones", {-1, 2000, -1}));

@@ -400,7 +400,7 @@ void SimNode<Vehicle>::publishState(const ros::Time& stamp) {
   tf.header.stamp = stamp;
   tf.header.frame_id = frame_id_;
   tf.child_frame_id = child_frame_id_;
-  double body[3];  // the body's origin (a Pioneer's centre, behind its control point)
+  double body[3];  // the body's origin (its profile's bodyPosition: a ground robot's centre)
   Profile::bodyPosition(params_, X, body);
   tf.transform.translation.x = body[0];
   tf.transform.translation.y = body[1];

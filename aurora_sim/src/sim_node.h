@@ -64,7 +64,7 @@ class SimNode {
   double cmd_timeout_;
   double takeoff_altitude_;
   double start_[3] = {0.0, 0.0, Profile::kFlies ? 0.75 : 0.0};  // [m] a drone starts in the air
-  bool start_at_state_point_ = false;  // ~start is the state's point (a Pioneer's control point), not the centre
+  bool start_at_state_point_ = false;  // ~start is the state's point (a ground robot's control point), not its centre
   bool publish_clock_ = true;
   std::string frame_id_, child_frame_id_;
   unsigned long step_ = 0;

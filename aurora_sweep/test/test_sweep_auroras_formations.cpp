@@ -320,6 +320,10 @@ TEST(AuRoRAsFormationSweep, MistakesAreRefusedNamingTheKey) {
   e = refusedFor("triangle_kinematic", "  parameters:\n    delay_1: 1\n");
   EXPECT_NE(e.find("'sweep.formation' = '" + configDir() + "/formations/triangle_kinematic.yaml' has kinematic robots"),
             std::string::npos) << e;
+  // It says what makes the robots fly: the keys of a flying triangle's file (triangle_ardrones.yaml's values).
+  EXPECT_NE(e.find("give its robots a vehicle (formation.robots.vehicle: vehicles/ardrone2.yaml, "
+                   "formation.robots.controller: controllers/underactuated.yaml)"),
+            std::string::npos) << e;
   e = refusedFor("line_lemniscate", "  parameters:\n    formation_law: N\n");
   EXPECT_NE(e.find("'sweep.parameters.formation_law' is not a parameter of a formation sweep"), std::string::npos) << e;
   e = refusedFor("line_pioneer_ardrone", "  parameters:\n    delay_3: 1\n");

@@ -30,7 +30,7 @@ class BadInputTest(unittest.TestCase):
         cls.pub = rospy.Publisher("cmd_vel", Twist, queue_size=10)
         # The warnings are counted from /rosout: its link to the sim must be up
         # before the first bad command, or the one warning is lost.
-        cls.rosout_linked = wait_linked(rosout, rospy.get_namespace() + "ardrone_sim")
+        cls.rosout_linked = wait_linked(rosout, rospy.get_namespace() + "vehicle_sim")
         deadline = time.time() + 20
         # Two seconds of hover first: the rotors start at rest (spec initial state).
         while (len(cls.states) < 60 or cls.pub.get_num_connections() == 0) and time.time() < deadline:

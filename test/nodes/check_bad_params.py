@@ -122,7 +122,7 @@ class BadParamsTest(unittest.TestCase):
     def sim_case(self, ns, edit, vehicle="ardrone2"):
         load_yaml(os.path.join(self.config, "vehicles/%s.yaml" % vehicle), ns + "/vehicle")
         edit(ns + "/")
-        return self.run_node("aurora_sim", "ardrone_sim", ns)
+        return self.run_node("aurora_sim", "vehicle_sim", ns)
 
     def other_controller_case(self, ns, vehicle, controller, task, edit=lambda p: None):
         """The controller node with another vehicle's files (sim.launch vehicle:=...)."""
@@ -178,9 +178,9 @@ class BadParamsTest(unittest.TestCase):
         self.assert_refused(rc, out, "/drone_speed/controller/safety/max_speed", "leave it out (0) for a drone")
 
     def test_pioneer_sim_started_off_the_floor(self):
-        rc, out = self.sim_case("/pioneer_air", lambda p: rospy.set_param(p + "ardrone_sim/start", [0.0, 0.0, 1.0]),
+        rc, out = self.sim_case("/pioneer_air", lambda p: rospy.set_param(p + "vehicle_sim/start", [0.0, 0.0, 1.0]),
                                 vehicle="pioneer3dx")
-        self.assert_refused(rc, out, "/pioneer_air/ardrone_sim/start", "a ground robot: accepted [x, y, 0] in m")
+        self.assert_refused(rc, out, "/pioneer_air/vehicle_sim/start", "a ground robot: accepted [x, y, 0] in m")
 
     def test_sim_missing_vehicle_constant(self):
         rc, out = self.sim_case("/no_mass", lambda p: rospy.delete_param(p + "vehicle/mass"))
@@ -196,18 +196,18 @@ class BadParamsTest(unittest.TestCase):
 
     def test_sim_negative_stop_after(self):
         # The range has no upper end: "inf)", not DBL_MAX's 309 digits.
-        rc, out = self.sim_case("/neg_stop", lambda p: rospy.set_param(p + "ardrone_sim/stop_after", -5.0))
-        self.assert_refused(rc, out, "'/neg_stop/ardrone_sim/stop_after' = -5 is invalid", "accepted range [0, inf) s")
+        rc, out = self.sim_case("/neg_stop", lambda p: rospy.set_param(p + "vehicle_sim/stop_after", -5.0))
+        self.assert_refused(rc, out, "'/neg_stop/vehicle_sim/stop_after' = -5 is invalid", "accepted range [0, inf) s")
         self.assertNotIn("179769", out)
 
     def test_sim_whole_number_with_a_fraction(self):
         # A fraction is refused naming the key (it once fell back silently to the default).
-        rc, out = self.sim_case("/half_path", lambda p: rospy.set_param(p + "ardrone_sim/path_decimation", 2.5))
-        self.assert_refused(rc, out, "'/half_path/ardrone_sim/path_decimation' = ", "accepted a whole number from 1")
+        rc, out = self.sim_case("/half_path", lambda p: rospy.set_param(p + "vehicle_sim/path_decimation", 2.5))
+        self.assert_refused(rc, out, "'/half_path/vehicle_sim/path_decimation' = ", "accepted a whole number from 1")
 
     def test_sim_unknown_mode(self):
-        rc, out = self.sim_case("/bad_mode", lambda p: rospy.set_param(p + "ardrone_sim/mode", "fast"))
-        self.assert_refused(rc, out, "'/bad_mode/ardrone_sim/mode' = 'fast' is invalid", "'realtime', 'lockstep'")
+        rc, out = self.sim_case("/bad_mode", lambda p: rospy.set_param(p + "vehicle_sim/mode", "fast"))
+        self.assert_refused(rc, out, "'/bad_mode/vehicle_sim/mode' = 'fast' is invalid", "'realtime', 'lockstep'")
 
 if __name__ == "__main__":
     rospy.init_node("check_bad_params")

@@ -34,7 +34,7 @@ class LaunchOutcomeTest(unittest.TestCase):
         self.assertEqual(rc, 0, out)
         self.assertNotIn("REQUIRED process", out)
         self.assertNotIn("FAILED", out)
-        self.assertIn("/ardrone1/ardrone_sim finished normally", out)
+        self.assertIn("/ardrone1/vehicle_sim finished normally", out)
 
     def test_failed_node_is_non_zero_and_named(self):
         rc, out = aurora_launch("stop_after:=3", "delay:=99999")
@@ -67,7 +67,7 @@ class LaunchOutcomeTest(unittest.TestCase):
             rc, out = aurora_launch("stop_after:=2", "controller:=underactuated", "task:=circle", "delay:=3",
                                     port=port, mode="realtime")
             self.assertEqual(rc, 0, out)
-            self.assertIn("/ardrone1/ardrone_sim finished normally", out)
+            self.assertIn("/ardrone1/vehicle_sim finished normally", out)
         finally:
             master.terminate()
             master.wait(timeout=30)
@@ -86,7 +86,7 @@ class LaunchOutcomeTest(unittest.TestCase):
             deadline = time.time() + 60
             while time.time() < deadline:
                 try:
-                    master.lookupNode("/ardrone1/ardrone_sim")
+                    master.lookupNode("/ardrone1/vehicle_sim")
                     break
                 except Exception:
                     time.sleep(0.2)

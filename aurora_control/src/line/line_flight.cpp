@@ -88,8 +88,8 @@ class FormationCsv {
 };
 
 // The file's run with --delay's per-drone delays, checked.
-LineRun loadRun(const FormationFlightOptions& o, const LawVehicleParams& p,
-                                   const FormationFile& f, long ticks) {
+LineRun loadRun(const FormationFlightOptions& o, const LineDrones::Vehicle::Params<double>& p,
+                 const FormationFile& f, long ticks) {
   LineRun run = formationRun(f, p);
   const std::vector<long> delays = robotDelays(o.delays, 2, "the line", p.Ts, ticks, {0, 0}, "drone");
   for (size_t d = 0; d < o.delays.size(); ++d) {

@@ -14,7 +14,7 @@ std::unique_ptr<FormationCrew> TriangleShapeEntry::crew(const File& setup, const
   if (setup.kinematic) {
     throw ConfigError("formation file '" + q.file + "': formation.robots names no vehicle: its robots are kinematic "
                       "(each at its reference), which only `flight --formation` flies; the formation node flies "
-                      "vehicles: give robots.vehicle (" + std::string(kFlyingTriangleFile) + ")");
+                      "vehicles: give " + flyingTriangleKeys());
   }
   TriangleRun<TriangleDroneLaw> run = triangleRun<TriangleDroneLaw>(setup);
   const long steps = triangleSteps(setup);

@@ -24,8 +24,8 @@ std::vector<std::string> triangleColumns(bool kinematic) {
   std::vector<std::string> c{"step", "t"};
   for (int d = 1; d <= 3; ++d) {
     const std::string p = (kinematic ? "r" : "d") + std::to_string(d) + "_";
-    for (int i = 0; i < (kinematic ? 3 : LawVehicle::kStates); ++i) c.push_back(p + LawVehicle::stateName(i));
-    for (int i = 0; !kinematic && i < LawVehicle::kInputs; ++i) c.push_back(p + "u" + std::to_string(i + 1));
+    for (int i = 0; i < (kinematic ? 3 : TriangleDrone::kStates); ++i) c.push_back(p + TriangleDrone::stateName(i));
+    for (int i = 0; !kinematic && i < TriangleDrone::kInputs; ++i) c.push_back(p + "u" + std::to_string(i + 1));
   }
   for (const char* q : {"Q_", "Qd_"}) {
     for (int i = 0; i < 9; ++i) c.push_back(q + std::string(Triangle::variableName(i)));
@@ -43,8 +43,8 @@ void positionVariables(const TrianglePeriod& p, double X[9], double Q[9]) {
 std::vector<double> triangleRow(double t, bool kinematic, const TrianglePeriod& p) {
   std::vector<double> v{double(p.n), t};
   for (int d = 0; d < 3; ++d) {
-    v.insert(v.end(), p.X[d], p.X[d] + (kinematic ? 3 : LawVehicle::kStates));
-    if (!kinematic) v.insert(v.end(), p.U[d], p.U[d] + LawVehicle::kInputs);
+    v.insert(v.end(), p.X[d], p.X[d] + (kinematic ? 3 : TriangleDrone::kStates));
+    if (!kinematic) v.insert(v.end(), p.U[d], p.U[d] + TriangleDrone::kInputs);
   }
   double X[9], Q[9];
   positionVariables(p, X, Q);

@@ -22,8 +22,8 @@ std::vector<std::string> uavUgvColumns() {
   std::vector<std::string> c{"step", "t"};
   for (int i = 0; i < UavUgvGround::kStates; ++i) c.push_back(std::string("r1_") + UavUgvGround::stateName(i));
   for (int i = 0; i < UavUgvGround::kInputs; ++i) c.push_back("r1_u" + std::to_string(i + 1));
-  for (int i = 0; i < LawVehicle::kStates; ++i) c.push_back(std::string("d2_") + LawVehicle::stateName(i));
-  for (int i = 0; i < LawVehicle::kInputs; ++i) c.push_back("d2_u" + std::to_string(i + 1));
+  for (int i = 0; i < UavUgvDrone::kStates; ++i) c.push_back(std::string("d2_") + UavUgvDrone::stateName(i));
+  for (int i = 0; i < UavUgvDrone::kInputs; ++i) c.push_back("d2_u" + std::to_string(i + 1));
   for (const char* q : {"Q_", "Qd_"}) {
     for (int i = 0; i < 6; ++i) c.push_back(q + std::string(UavUgvLine<double>::variableName(i)));
   }
@@ -46,8 +46,8 @@ std::vector<double> uavUgvRow(double t, const Tick& o) {
   std::vector<double> v{double(o.k), t};
   v.insert(v.end(), o.X_before[0], o.X_before[0] + UavUgvGround::kStates);
   v.insert(v.end(), o.steps[0].U, o.steps[0].U + UavUgvGround::kInputs);
-  v.insert(v.end(), o.X_before[1], o.X_before[1] + LawVehicle::kStates);
-  v.insert(v.end(), o.steps[1].U, o.steps[1].U + LawVehicle::kInputs);
+  v.insert(v.end(), o.X_before[1], o.X_before[1] + UavUgvDrone::kStates);
+  v.insert(v.end(), o.steps[1].U, o.steps[1].U + UavUgvDrone::kInputs);
   double Q[6];
   positionVariables(o, Q);
   v.insert(v.end(), Q, Q + 6);
@@ -107,7 +107,7 @@ ShapedFlight UavUgvShapeEntry::flyTable(const File& file, const FormationFlightO
   std::snprintf(head, sizeof head,
                 "flight: UAV-UGV line (%s %s + %s), %ld ticks of %.4f s, delays %ld and %ld ticks, in %.3f s\n",
                 setup.ground.kinematic != 0.0 ? "kinematic" : "dynamic", UavUgvGround::name(),
-                UavUgvDroneLaw::Vehicle::name(), ticks, setup.tick, setup.delay[0],
+                UavUgvDrone::name(), ticks, setup.tick, setup.delay[0],
                 setup.delay[1], f.seconds);
   std::snprintf(values, sizeof values, "xf, yf %.4f m, rho %.4f m, alpha %.4f rad, beta %.4f rad, drone position %.4f m",
                 errors.rms(0), errors.rms(1), errors.rms(2), errors.rms(3), errors.rms(4));

@@ -1,4 +1,4 @@
-// The simulator node's own parameters (ardrone_sim's private ~ parameters),
+// The simulator node's own parameters (vehicle_sim's private ~ parameters),
 // written once as a parameter table (aurora_common/parameter_spec.h): the
 // node reads every row through it, and docs/parameters.md's simulator
 // reference is simParameterReference() (test_ardrone_model compares). The

@@ -51,7 +51,7 @@ struct ParamInfo {
   double min, max;    // accepted values (inclusive)
   std::string limit;  // why: shown when a value or range is refused
   bool whole = false; // whole samples only (the delays, the jitters)
-  std::string law;    // a gain's: the controller whose gain it is (pd_saturated, ..., pioneer_kinematic)
+  std::string law;    // a gain's: the controller whose gain it is (a name of the law list)
   double preset = 0;  // a kLawGain's default (the law's defaults())
 };
 

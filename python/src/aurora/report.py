@@ -616,7 +616,7 @@ def figures(ns, series, cmd, out_dir, pdf):
 
     extra = series.get("extra_names", [])  # a series built without them (a caller's own): none
     fig, axes = plt.subplots(3 if extra else 2, 1, figsize=(8, 8 if extra else 6), sharex=True)
-    if extra:  # the vehicle's own states (a Pioneer's u [m/s], omega [rad/s])
+    if extra:  # the vehicle's own states beyond the 12 (a ground robot's u [m/s], omega [rad/s])
         values = series["extra"]
         for i, name in enumerate(extra):
             axes[2].plot(t, [v[i] if i < len(v) else float("nan") for v in values], label=name)

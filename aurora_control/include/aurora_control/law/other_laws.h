@@ -10,9 +10,12 @@
 #include "aurora_common/named_list.h"
 #include "aurora_common/refusal_text.h"
 
-#include "aurora_control/law/bebop2/bebop2_compensator.h"
+// Each vehicle's laws, one include each: the law's own header, or its
+// controller-file reader's where its file is not its gain rows (the reader
+// includes the law; law_yaml.h finds it by the gains' type).
 #include "aurora_control/law/ardrone2/control_law.h"
-#include "aurora_control/law/pioneer3dx/pioneer_laws.h"
+#include "aurora_control/law/bebop2/compensator_yaml.h"
+#include "aurora_control/law/pioneer3dx/pioneer_yaml.h"
 
 // A build may add laws of its own after the shipped ones without editing
 // this file: AURORA_EXTRA_LAWS names a header that defines
@@ -34,6 +37,14 @@ using KnownLaws = aurora_common::Joined<
     aurora_common::TypeList<ArdroneLaw<LawType::kPdSaturated>, ArdroneLaw<LawType::kUnderactuated>, Bebop2Compensator,
                             PioneerDynamic, PioneerKinematic>,
     ExtraLaws>::type;
+
+// The laws of the formations' crews (formation/): a shape names these two
+// roles, never a vehicle. Its drones fly FormationDroneLaw (a shape that
+// takes its drones' law from its file, the line, any law of that law's
+// family), its ground robots FormationGroundLaw: AuRoRA's formations' AR.Drones
+// on the underactuated law and Pioneer on its dynamic law.
+using FormationDroneLaw = ArdroneLaw<LawType::kUnderactuated>;
+using FormationGroundLaw = PioneerDynamic;
 
 template <class F>
 void forEachLaw(F&& f) {

@@ -7,16 +7,14 @@
 //   pd_saturated:   kp, kd in [kPdGainMin, kPdGainMax] = [0, 10] (pd_controller.h)
 //   underactuated:  k1_x, k2_x, ..., k1_psi, k2_psi in [0.001, 100] (underactuated_law.h)
 // any other law by the reader its controller-file header gives
-// (readLawGains, found by its gains' type).
+// (readLawGains, found by its gains' type; the law list includes it).
 #pragma once
 
 #include <string>
 #include <utility>
 #include <vector>
 
-#include "aurora_control/law/bebop2/compensator_yaml.h"  // each law's controller-file reader, one line each
 #include "aurora_control/law/other_laws.h"
-#include "aurora_control/law/pioneer3dx/pioneer_yaml.h"
 #include "aurora_control/loop/delayed_controller.h"
 #include "aurora_control/params/yaml_reader.h"
 

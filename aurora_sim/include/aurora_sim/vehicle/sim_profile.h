@@ -21,7 +21,7 @@ template <class Vehicle, int ClimbInput>
 struct DroneSimProfile {
   static constexpr int kClimbInput = ClimbInput;
   static constexpr bool kFlies = true;
-  static const char* odomTopic() { return "odom"; }  // ardrone_autonomy's ardrone/odometry remapped, bebop_autonomy's odom
+  static const char* odomTopic() { return "odom"; }  // the drones' drivers' odometry (docs/simulation.md, "Vehicles")
   static void limitSpeed(double*, double, double) {}  // a ground robot's limits (a drone's are its clamp)
 
   // At rest at (x, y, z) [m], heading 0 (z = 0: landed).

@@ -188,10 +188,10 @@ struct LineShapeEntry {
   // sweep may vary (formation_law; none: the file's formation.law).
   using SweepRun = LineRun;
   // The sweep's set of vehicle parameters (its file's, each vehicle's
-  // nominal else): its drones are AR.Drones of the set's.
+  // nominal else): its drones are the set's of their vehicle.
   template <class VehicleSet>
   static SweepRun sweepRun(const File& f, const VehicleSet& vehicles) {
-    return formationRun(f, vehicles.template of<LawVehicle>());
+    return formationRun(f, vehicles.template of<LineDrones::Vehicle>());
   }
   static ShapeSweepFacts sweepFacts(const File& f) {
     ShapeSweepFacts facts;
@@ -224,8 +224,7 @@ inline void refuseFormationDelays(const LineRun& run, double Ts,
 
 // The run of a formation file with the drones' vehicle `vehicle`, its
 // period in whole drone steps (refused otherwise).
-inline LineRun formationRun(const FormationFile& f,
-                                                                const LawVehicleParams& vehicle) {
+inline LineRun formationRun(const FormationFile& f, const LineDrones::Vehicle::Params<double>& vehicle) {
   LineRun run;
   run.law = f.law;
   run.gains = f.gains;

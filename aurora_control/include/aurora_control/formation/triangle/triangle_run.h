@@ -1,7 +1,8 @@
 // AuRoRA's triangle (docs/formation.md, "The triangle") as the one
 // formation loop flies it (formation_runner.h): a triangle file's setup
 // (triangle_yaml.h) becomes a FormationRun of the triangle's shape, its
-// robots three AR.Drones on the underactuated law, one model step per Ts,
+// robots three of the formations' drones on their law (other_laws.h's
+// FormationDroneLaw: AuRoRA's AR.Drones, underactuated), one model step per Ts,
 // the layer on its own clock every period (on the base tick of both: the
 // drones every q ticks, the layer every p, after the drones' steps that end
 // by its tick), or three kinematic robots (kinematic_robot.h: each put at
@@ -17,10 +18,17 @@
 #include "aurora_control/formation/formation_runner.h"
 #include "aurora_control/formation/triangle/kinematic_robot.h"
 #include "aurora_control/formation/triangle/triangle_formation.h"
-#include "aurora_control/law/ardrone2/control_law.h"
+#include "aurora_control/formation/robot_namespace.h"
+#include "aurora_control/law/other_laws.h"
 #include "aurora_control/params/limits.h"
 
 namespace aurora_control {
+
+// The triangle's flying robots: the formations' drones (other_laws.h), named
+// here only (every other file of the triangle says TriangleDroneLaw).
+using TriangleDroneLaw = FormationDroneLaw;
+using TriangleDrones = TriangleDroneLaw::Data;
+using TriangleDrone = TriangleDroneLaw::Vehicle;
 
 struct TriangleSetup {
   TriangleLaw law = TriangleLaw::kN;
@@ -29,24 +37,19 @@ struct TriangleSetup {
   double duration = 50.0;    // [s]: the layer's periods n with t = n period < duration
   bool kinematic = true;     // the robots are their references (no vehicles)
   double start[9] = {1, 0, 0, -1, 0, 0, 0, 1, 0};  // [m] the robots' positions
-  LawVehicleParams drone{};  // flying: each drone's (its Ts the robots' step)
+  TriangleDrone::Params<double> drone{};  // flying: each drone's (its Ts the robots' step)
   std::string drone_file;    // flying: the drones' vehicle file (robots.vehicle), in the config folder
-  LawGains<double> drone_gains{{0.0, 0.0}, UnderactuatedGains<double>::defaults()};
+  TriangleDroneLaw::Gains<double> drone_gains = TriangleDroneLaw::Gains<double>::defaults();
   long layer_ticks = 1, drone_ticks = 1;  // the base tick's divisors: period / tick, Ts / tick
   long delay[3] = {0, 0, 0};  // each robot's feedback delay [drone steps; kinematic robots: layer periods]
   LinkParams link[3];         // each drone's link (docs/links.md; ideal unless the file gives one)
-  std::string name_space[3] = {"ardrone1", "ardrone2", "ardrone3"};  // ROS namespaces (robots.namespaces)
-  PredictorRun<LawVehicle, double> predictor;  // flying: the drones' controller file's (docs/predictor.md)
+  std::string name_space[3] = {robotNamespace<TriangleDrone>(0), robotNamespace<TriangleDrone>(1),
+                               robotNamespace<TriangleDrone>(2)};  // ROS namespaces (robots.namespaces)
+  PredictorRun<TriangleDrone, double> predictor;  // flying: the drones' controller file's (docs/predictor.md)
   long periods() const { return std::lround(std::ceil(duration / period - 1e-9)); }
 };
 
 using Triangle = TriangleFormation<double>;
-// The triangle's AR.Drones fly the underactuated law (AuRoRA's script's).
-using TriangleDroneLaw = ArdroneLaw<LawType::kUnderactuated>;
-using TriangleDrones = TriangleDroneLaw::Data;
-// A flying triangle's shipped file, which refusals of kinematic robots
-// where vehicles are needed point to.
-constexpr const char* kFlyingTriangleFile = "config/formations/triangle_ardrones.yaml";
 template <class Law>
 using TriangleRun = FormationRun<double, Triangle, typename Law::Data>;
 

@@ -141,11 +141,12 @@ inline void readRobots(const YamlReader& r, const YAML::Node& n, const std::stri
   }
   readLinks(r, n, key, config_dir, s);
   s.drone_file = formation_detail::inConfig(r.text(n["vehicle"], r.key(key, "vehicle")), config_dir);
-  s.drone = aurora_sim::loadVehicleFile<LawVehicle>(s.drone_file, "the triangle's drones");
-  const YAML::Node c = r.require(n, key, "controller", "an underactuated mapping or controllers/underactuated.yaml");
+  s.drone = aurora_sim::loadVehicleFile<TriangleDrone>(s.drone_file, "the triangle's drones");
+  const std::string law = TriangleDroneLaw::name();
+  const YAML::Node c = r.require(n, key, "controller", "an " + law + " mapping or controllers/" + law + ".yaml");
   const auto set = formation_detail::controllerAt<TriangleDrones>(r, c, r.key(key, "controller"), config_dir);
-  if (set.law != int(LawType::kUnderactuated)) r.fail(r.key(key, "controller"), "is refused: the drones fly the underactuated law");
-  s.drone_gains.underactuated = set.gains.underactuated;
+  if (set.law != familyIndex<TriangleDroneLaw>()) r.fail(r.key(key, "controller"), "is refused: the drones fly the " + law + " law");
+  s.drone_gains = set.gains;
   s.predictor = formationPredictor<TriangleDroneLaw>(formation_detail::predictorAt(r, c, r.key(key, "controller"), config_dir),
                                                      s.drone.Ts);
 }
@@ -184,6 +185,13 @@ inline TriangleSetup readTriangleFile(const std::string& path, const std::string
 
 // AuRoRA's triangle's entry in the shapes' list (shapes.h): three robots,
 // its own laws (flight's --law chooses one).
+// What makes a triangle's robots fly, which refusals of kinematic robots
+// where vehicles are needed point to (config/formations/triangle_*.yaml).
+inline std::string flyingTriangleKeys() {
+  return std::string("formation.robots.vehicle: vehicles/") + TriangleDrone::name() +
+         ".yaml, formation.robots.controller: controllers/" + TriangleDroneLaw::name() + ".yaml";
+}
+
 struct TriangleShapeEntry {
   using Shape = Triangle;
   using File = TriangleSetup;
@@ -206,7 +214,7 @@ struct TriangleShapeEntry {
     facts.controller = TriangleDroneLaw::name();
     if (s.kinematic) {
       facts.refusal = "has kinematic robots (no formation.robots.vehicle): a sweep flies robots with a law; give its "
-                      "robots a vehicle (" + std::string(kFlyingTriangleFile) + ")";
+                      "robots a vehicle (" + flyingTriangleKeys() + ")";
     }
     return facts;
   }

@@ -1,6 +1,7 @@
 // The UAV-UGV line (docs/formation.md, "The UAV-UGV line") as the one
-// formation loop flies it (formation_runner.h): a Pioneer P3-DX (robot 1,
-// the reference) and an AR.Drone (robot 2), each on its own law and model
+// formation loop flies it (formation_runner.h): a ground robot (robot 1,
+// the reference) and a drone (robot 2), the law list's formation crews
+// (other_laws.h: AuRoRA's Pioneer P3-DX and AR.Drone), each on its own law and model
 // (a crew of EitherLaw robots), at the formation's tick, under the layer
 // without integration (uav_ugv_line.h: every tick, before the laws, on the
 // states the robots' links delivered). Each robot's state reaches the layer
@@ -14,32 +15,34 @@
 
 #include "aurora_control/formation/formation_runner.h"
 #include "aurora_control/formation/uav_ugv/uav_ugv_line.h"
-#include "aurora_control/law/ardrone2/control_law.h"
+#include "aurora_control/formation/robot_namespace.h"
 #include "aurora_control/law/either_law.h"
-#include "aurora_control/law/pioneer3dx/pioneer_laws.h"
+#include "aurora_control/law/other_laws.h"
 #include "aurora_control/link/link.h"
 
 namespace aurora_control {
 
-// The line's robots, named here only: robot 1, the reference, a Pioneer on
-// its dynamic law; robot 2 an AR.Drone on the underactuated law.
-using UavUgvGroundLaw = PioneerDynamic;
-using UavUgvDroneLaw = ArdroneLaw<LawType::kUnderactuated>;
+// The line's robots, named here only: robot 1, the reference, the
+// formations' ground robot on its law; robot 2 their drone on its law.
+using UavUgvGroundLaw = FormationGroundLaw;
+using UavUgvDroneLaw = FormationDroneLaw;
 using UavUgvGround = UavUgvGroundLaw::Vehicle;
+using UavUgvDrone = UavUgvDroneLaw::Vehicle;
 
 struct UavUgvLineSetup {
   UavUgvGround::Params<double> ground{};  // its sample time is the tick's
   UavUgvGroundLaw::Gains<double> ground_gains = UavUgvGroundLaw::Gains<double>::defaults();
   double ground_start[3] = {-1, 0, 0};  // [m] its control point (AuRoRA's 2018 rSetPose), heading 0
-  LawVehicleParams drone{};
-  LawGains<double> drone_gains{{0.0, 0.0}, UnderactuatedGains<double>::defaults()};  // the underactuated law's
+  UavUgvDrone::Params<double> drone{};
+  UavUgvDroneLaw::Gains<double> drone_gains = UavUgvDroneLaw::Gains<double>::defaults();  // its law's
   double drone_start[3] = {0, 0, 0.75};  // [m], at rest
   double k1[6], k2[6];                   // the layer's gains (UavUgvLine::defaultGains: AuRoRA's)
   double tick = 1.0 / 30.0;              // [s]
   long delay[2] = {0, 0};                // [ticks] each robot's feedback delay (ground robot, drone)
   LinkParams link[2];                    // each robot's link (docs/links.md; ideal unless its file gives one)
   double duration = 130.0;               // [s]: ticks k = 0 .. round(duration / tick) - 1
-  std::string name_space[2] = {"pioneer1", "ardrone2"};  // each robot's ROS namespace (robots[i].namespace)
+  std::string name_space[2] = {robotNamespace<UavUgvGround>(0),
+                               robotNamespace<UavUgvDrone>(1)};  // each robot's ROS namespace (robots[i].namespace)
   std::string vehicle_file[2];           // each robot's vehicle file (robots[i].vehicle), in the config folder
   long ticks() const { return std::lround(duration / tick); }
 };

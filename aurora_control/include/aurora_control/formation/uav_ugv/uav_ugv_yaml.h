@@ -82,12 +82,12 @@ inline void readDrone(const YamlReader& r, const YAML::Node& n, const std::strin
                       UavUgvLineSetup& s) {
   r.onlyKeys(n, key, {"namespace", "vehicle", "controller", "start", "link"});
   if (n["namespace"]) s.name_space[1] = formation_detail::namespaceAt(r, n["namespace"], r.key(key, "namespace"));
-  const std::string file = vehicleFileAt<UavUgvDroneLaw::Vehicle>(r, n, key, config_dir);
-  s.drone = aurora_sim::loadVehicleFile<UavUgvDroneLaw::Vehicle>(file, "the UAV-UGV line's robot 2");
+  const std::string file = vehicleFileAt<UavUgvDrone>(r, n, key, config_dir);
+  s.drone = aurora_sim::loadVehicleFile<UavUgvDrone>(file, "the UAV-UGV line's robot 2");
   s.vehicle_file[1] = file;
   LawSettings<UavUgvDroneLaw::Data> set;
   readLawMapping(r, controllerOf(r, n, key, UavUgvDroneLaw::name()), r.key(key, "controller"), set);
-  s.drone_gains.underactuated = set.gains.underactuated;
+  s.drone_gains = set.gains;
   readStart(r, n, key, 0.0, formation_detail::kHighestStart, "", s.drone_start);
   readRobotLink(r, n, key, config_dir, 1, s);
 }
@@ -129,7 +129,7 @@ inline UavUgvLineSetup readUavUgvLineFile(const FormationDocument& d) {
     r.fail("formation.robots[1].start", "is robot 1's: rho = 0 and the line's angles are undefined; accepted a start "
                                         "apart from the ground robot's");
   }
-  s.ground.Ts = s.tick;  // every robot steps at the formation's tick (AuRoRA's 2018 Pioneer: 1/30 s)
+  s.ground.Ts = s.tick;  // every robot steps at the formation's tick (AuRoRA's 2018 line: 1/30 s)
   s.drone.Ts = s.tick;
   return s;
 }
@@ -138,8 +138,8 @@ inline UavUgvLineSetup readUavUgvLineFile(const std::string& path, const std::st
   return readUavUgvLineFile(loadFormationDocument(path, config_dir));
 }
 
-// AuRoRA's UAV-UGV line's entry in the shapes' list (shapes.h): a Pioneer
-// and an AR.Drone, one law each.
+// AuRoRA's UAV-UGV line's entry in the shapes' list (shapes.h): a ground
+// robot and a drone, one law each.
 struct UavUgvShapeEntry {
   using Shape = UavUgvShape;
   using File = UavUgvLineSetup;

@@ -91,6 +91,9 @@ struct Ardrone2 : VehicleDefaults {
   }
 
   static const char* name() { return "ardrone2"; }
+  // The stem of its robots' ROS namespaces (ardrone1, ardrone2, ...: a formation's
+  // robots where its file names none, robot_namespace.h).
+  static const char* namespaceStem() { return "ardrone"; }
 
   // The vehicle file (config/vehicles/ardrone2.yaml): every key of
   // ardrone_keys.h, required; angles in degrees there.

@@ -56,6 +56,9 @@ struct Bebop2 : VehicleDefaults {
   }
 
   static const char* name() { return "bebop2"; }
+  // The stem of its robots' ROS namespaces (bebop1, bebop2, ...: a formation's
+  // robots where its file names none, robot_namespace.h).
+  static const char* namespaceStem() { return "bebop"; }
 
   // config/vehicles/bebop2.yaml: every key required.
   static const std::vector<Bebop2Key>& fileKeys() {

@@ -74,6 +74,9 @@ struct Pioneer3dx : VehicleDefaults {  // its own start, state names and limitIn
   }
 
   static const char* name() { return "pioneer3dx"; }
+  // The stem of its robots' ROS namespaces (pioneer1, pioneer2, ...: a formation's
+  // robots where its file names none, robot_namespace.h).
+  static const char* namespaceStem() { return "pioneer"; }
 
   // config/vehicles/pioneer3dx.yaml: every key required. theta1 and theta2
   // divide the model: they must be positive.

@@ -4,5 +4,5 @@
 #include "aurora_common/ros/node_main.h"
 
 int main(int argc, char** argv) {
-  return aurora_common::runNode<aurora_sim::VehicleSimNode>(argc, argv, "ardrone_sim");
+  return aurora_common::runNode<aurora_sim::VehicleSimNode>(argc, argv, "vehicle_sim");
 }
