@@ -132,7 +132,7 @@ void recordedLaw(const aurora_msgs::Control& c, LawSettings<Data>& set) {
 // The command line (a mistake ends the program with status 2 and the usage).
 struct Arguments {
   std::string bag_path, ns, out_path;
-  std::string vehicle_path;  // default: the default vehicle's file in configDir()/vehicles/
+  std::string vehicle_path;  // default: configDir()/vehicles/NAME.yaml, NAME the law's vehicle (vehicleFor)
   std::string link_path;     // default: the ideal link
   std::string predictor_model_path;  // default: the vehicle file (docs/predictor.md, "In the ROS loop")
   bool expect_identical = false;

@@ -150,7 +150,10 @@ TEST(LaunchDefaults, EveryShapeNamesItsRobotsAndTheOneOnTheFloor) {
     const std::string path = kConfig + "/bringup/shapes/" + Entry::name() + ".yaml";
     ASSERT_TRUE(exists(path)) << "formation.launch reads " << path << " for a formation file of shape " << Entry::name();
     const auto read = readDefaults(path);
-    expectKeys(read, {"robots", "ground_robot"}, path);
+    expectKeys(read, {"robots", "ground_robot", "vehicle"}, path);
+    // The robots' vehicle where the file names none (formation.launch's vehicle:= default): the
+    // entry's; none where the file names them (there vehicle:= is refused).
+    EXPECT_EQ(read.at("vehicle"), aurora_control::unnamedVehicleName(entry)) << path;
     std::istringstream robots(read.at("robots"));
     std::vector<std::string> names{std::istream_iterator<std::string>(robots), std::istream_iterator<std::string>()};
     const int robots_of_shape = Entry::kRobots;  // a copy: EXPECT_EQ binds references

@@ -25,6 +25,13 @@ CONFIG = rospkg.RosPack().get_path("aurora_config")
 LAUNCH = rospkg.RosPack().get_path("aurora_bringup")
 
 
+# An AR.Drone of other inertias than the shipped file's (identify_sim_ardrone.test's plant).
+MODIFIED_ARDRONE = os.path.join(os.path.dirname(os.path.realpath(__file__)), "..", "config", "identify",
+                                "ardrone2_modified.yaml")
+with open(MODIFIED_ARDRONE) as f:
+    MODIFIED_IXX = yaml.safe_load(f)["inertia"]["xx"]
+
+
 def names_in(folder):
     return sorted(f[:-5] for f in os.listdir(os.path.join(CONFIG, folder)) if f.endswith(".yaml"))
 
@@ -121,6 +128,34 @@ class LaunchDefaultsTest(unittest.TestCase):
                 out = robot_query(formation, i + 1, "namespace")
                 self.assertEqual(out.returncode, 0, out.stdout)
                 self.assertEqual(out.stdout.strip(), ns, "%s robot %d" % (formation, i + 1))
+
+    def test_formation_launch_takes_vehicle_only_for_a_shape_whose_file_names_none(self):
+        for formation in filter(launchable, names_in("formations")):
+            c = read_launch("formation.launch", "formation:=" + formation)
+            shape = c.params["/formation/formation_controller/formation_file"].value
+            with open(shape) as f:
+                shape = next((l.split(":", 1)[1].split("#")[0].strip() for l in f if l.strip().startswith("shape:")), "line")
+            default = bringup("shapes", shape)["vehicle"]
+            loaded = "/formation/formation_controller/vehicle/type"
+            if default:  # the line: its drones fly vehicle:= (default: its bringup file's)
+                self.assertEqual(c.params[loaded].value, default, formation)
+                c = read_launch("formation.launch", "formation:=" + formation, "vehicle:=" + MODIFIED_ARDRONE)
+                self.assertEqual(c.params["/formation/formation_controller/vehicle/inertia/xx"].value, MODIFIED_IXX,
+                                 formation)
+                for ns in c.params["/formation/formation_controller/drones"].value:  # and every robot's sim
+                    self.assertEqual(c.params["/%s/vehicle" % ns].value["inertia"]["xx"], MODIFIED_IXX, formation)
+                # Its drones' law flies the default's type only: formation_robot refuses another's (on
+                # its stderr, the launch's terminal; roslaunch's error names the query).
+                with self.assertRaises(Exception) as refused:
+                    read_launch("formation.launch", "formation:=" + formation, "vehicle:=bebop2")
+                self.assertIn("vehicles/bebop2.yaml', '--robot', '1', '--print', 'vehicle']] returned with code [2]",
+                              str(refused.exception))
+            else:  # its file names its robots' vehicles: vehicle:= would be ignored, so it is refused
+                self.assertNotIn(loaded, c.params, formation)
+                with self.assertRaises(Exception) as refused:
+                    read_launch("formation.launch", "formation:=" + formation, "vehicle:=bebop2")
+                self.assertIn("vehicle:=bebop2 is refused: a formation file of shape %s names its robots' "
+                              "vehicles" % shape, str(refused.exception))
 
     def test_formation_launch_sends_a_ground_robots_commands_to_its_driver(self):
         ground = bringup("drivers", "rosaria")

@@ -13,11 +13,10 @@
 
 #include "aurora_control/formation/formation_controller.h"
 #include "aurora_control/formation/formation_document.h"
+#include "aurora_control/formation/shapes.h"  // kMaxCrew: the list's largest shape's robots
 #include "aurora_sim/command_mapping.h"
 
 namespace aurora_control {
-
-constexpr int kMaxCrew = 3;  // the largest shape's robots (the triangle's)
 
 // What tick k gave each robot (FormationController::Tick of any shape).
 struct CrewTick {

@@ -39,6 +39,20 @@ namespace aurora_control {
 using KnownShapes =
     aurora_common::Joined<aurora_common::TypeList<LineShapeEntry, UavUgvShapeEntry, TriangleShapeEntry>, ExtraShapes>::type;
 
+namespace shapes_detail {
+template <class... E>
+constexpr int mostRobots(aurora_common::TypeList<E...>) {
+  const int robots[] = {0, E::kRobots...};
+  int most = 0;
+  for (int r : robots) most = r > most ? r : most;
+  return most;
+}
+}  // namespace shapes_detail
+
+// The most robots of any shape of the list: what the formation node's
+// per-robot arrays hold (a crew of any shape fits).
+constexpr int kMaxCrew = shapes_detail::mostRobots(KnownShapes());
+
 template <class F>
 void forEachShape(F&& f) {
   aurora_common::forEachType(KnownShapes(), f);

@@ -183,8 +183,6 @@ inline TriangleSetup readTriangleFile(const std::string& path, const std::string
   return readTriangleFile(loadFormationDocument(path, config_dir), law);
 }
 
-// AuRoRA's triangle's entry in the shapes' list (shapes.h): three robots,
-// its own laws (flight's --law chooses one).
 // What makes a triangle's robots fly, which refusals of kinematic robots
 // where vehicles are needed point to (config/formations/triangle_*.yaml).
 inline std::string flyingTriangleKeys() {
@@ -192,6 +190,8 @@ inline std::string flyingTriangleKeys() {
          ".yaml, formation.robots.controller: controllers/" + TriangleDroneLaw::name() + ".yaml";
 }
 
+// AuRoRA's triangle's entry in the shapes' list (shapes.h): three robots,
+// its own laws (flight's --law chooses one).
 struct TriangleShapeEntry {
   using Shape = Triangle;
   using File = TriangleSetup;
