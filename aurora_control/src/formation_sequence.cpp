@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "aurora_sim/ros/conversions.h"
+#include "aurora_sim/vehicle/vehicle_type.h"
 #include "controller_params.h"
 #include "formation_node.h"
 

@@ -8,6 +8,7 @@
 
 #include "aurora_sim/ros/conversions.h"
 #include "aurora_sim/ros/vehicle_params.h"
+#include "aurora_sim/vehicle/vehicle_type.h"
 
 namespace aurora_control {
 

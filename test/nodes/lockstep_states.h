@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "aurora_sim/ros/conversions.h"
+#include "aurora_sim/vehicle/vehicle_type.h"  // kMaxStates
 
 namespace aurora_tests {
 

@@ -7,6 +7,7 @@
 // or any callable that calls its argument with each entry. Host only.
 #pragma once
 
+#include <initializer_list>
 #include <string>
 #include <type_traits>
 
@@ -36,6 +37,14 @@ constexpr int typeIndexIn(TypeList<T...>) {
   const bool is[] = {false, std::is_same<X, T>::value...};
   for (bool b : is) found = found < 0 && b ? index - 1 : found, ++index;
   return found;
+}
+
+// The largest of `values` (0 for none): what the largest entry of a list
+// has, as largestOf({E::kRobots...}) over its entries E.
+constexpr int largestOf(std::initializer_list<int> values) {
+  int most = 0;
+  for (int v : values) most = v > most ? v : most;
+  return most;
 }
 
 // List A's entries, then B's (a shipped list and a build's own entries).

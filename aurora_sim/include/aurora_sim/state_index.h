@@ -13,11 +13,6 @@ enum StateIndex : int {
   kStateSize = 12
 };
 
-// The largest vehicle state (the Pioneer P3-DX's 12 + u, omega): the size
-// of a state a ROS message or the controller node's history carries for
-// any vehicle (each vehicle asserts it fits where it is used).
-constexpr int kMaxStates = 14;
-
 enum CommandIndex : int {
   kURoll = 0, kUPitch = 1, kUClimb = 2, kUYawRate = 3,
   kCommandSize = 4

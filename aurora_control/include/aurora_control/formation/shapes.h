@@ -42,10 +42,7 @@ using KnownShapes =
 namespace shapes_detail {
 template <class... E>
 constexpr int mostRobots(aurora_common::TypeList<E...>) {
-  const int robots[] = {0, E::kRobots...};
-  int most = 0;
-  for (int r : robots) most = r > most ? r : most;
-  return most;
+  return aurora_common::largestOf({E::kRobots...});
 }
 }  // namespace shapes_detail
 

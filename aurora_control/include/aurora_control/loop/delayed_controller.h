@@ -24,6 +24,7 @@
 #include "aurora_control/loop/predicted_loop.h"
 #include "aurora_common/scalar_math.h"
 #include "aurora_sim/state_index.h"
+#include "aurora_sim/vehicle/vehicle_type.h"  // kMaxStates: the list's largest state
 
 namespace aurora_control {
 

@@ -34,6 +34,18 @@ namespace aurora_sim {
 using KnownVehicles =
     aurora_common::Joined<aurora_common::TypeList<Ardrone2, Bebop2, Pioneer3dx>, ExtraVehicles>::type;
 
+namespace vehicle_type_detail {
+template <class... V>
+constexpr int mostStates(aurora_common::TypeList<V...>) {
+  return aurora_common::largestOf({V::kStates...});
+}
+}  // namespace vehicle_type_detail
+
+// The largest state of the list's vehicles (the Pioneer P3-DX's 12 + u,
+// omega): what a state sample, the controller node's history and a state
+// message's reader hold for any vehicle of this build.
+constexpr int kMaxStates = vehicle_type_detail::mostStates(KnownVehicles());
+
 // The vehicle of a file that names none (a sweep file without `vehicle:`;
 // a sweep's definition hash adds its constants, and another vehicle's
 // only when it flies one): the thesis's AR.Drone.
