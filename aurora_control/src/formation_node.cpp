@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <limits>
 
+#include "aurora_common/refusal_text.h"
 #include "aurora_control/formation/shapes.h"
 #include "aurora_control/params/parameter_table.h"
 #include "formation_markers.h"
@@ -19,10 +20,13 @@ namespace aurora_control {
 namespace {
 
 // The formation node's own row; its other parameters are the controller's
-// rows (parameter_table.h).
+// rows (parameter_table.h). Both modes: a realtime flight's first tick is
+// published once its watchers listen, as a lockstep one's (a test started
+// late on a loaded machine saw the real formations' ticks from the middle).
 constexpr ParameterSpec kFormationSubscribers{
-    "lockstep_subscribers/formation", ParamKind::kWhole, 0, 0, 100, "subscribers",
-    "formation node, lockstep: subscribers of formation to wait for (a recorder, a test)"};
+    "formation_subscribers", ParamKind::kWhole, 0, 0, 100, "subscribers",
+    "formation node, both modes: subscribers of formation (a recorder, a test) to wait for before the first state"};
+constexpr char kRenamedFormationSubscribers[] = "lockstep_subscribers/formation";
 
 }  // namespace
 
@@ -33,6 +37,11 @@ FormationNode::FormationNode(ros::NodeHandle nh, ros::NodeHandle private_nh) : n
   lockstep_ = mode == "lockstep";
   configureSequence();
   cmd_subscribers_ = static_cast<int>(aurora_common::wholeParam(pnh_, kParameterTable[kRowLockstepCmdSubscribers]));
+  if (pnh_.hasParam(kRenamedFormationSubscribers)) {
+    throw aurora_common::ConfigError("'" + pnh_.resolveName(kRenamedFormationSubscribers) + "' is now '" +
+                                     pnh_.resolveName(kFormationSubscribers.name) +
+                                     "' (it holds in both modes): rename it in your launch file");
+  }
   formation_subscribers_ = static_cast<int>(aurora_common::wholeParam(pnh_, kFormationSubscribers));
   record_subscribers_ = static_cast<int>(aurora_common::wholeParam(pnh_, kParameterTable[kRowRecordSubscribers]));
   connect();
@@ -119,7 +128,7 @@ bool FormationNode::listenersReady() const {
   for (const ros::Publisher& p : step_cmd_pubs_) {
     if (static_cast<int>(p.getNumSubscribers()) < std::min(1, cmd_subscribers_)) return false;
   }
-  return static_cast<int>(formation_pub_.getNumSubscribers()) >= formation_subscribers_;
+  return true;
 }
 
 // Lockstep: a robot's state; once every robot's state of step k is here,
@@ -129,24 +138,26 @@ bool FormationNode::listenersReady() const {
 // previous command and leave the robots a step apart.
 // A recorded flight (record:=true) takes its first state once the recorder
 // listens to the formation topic and every robot's cmd_vel: the bag then
-// holds every tick from the first (the controller node's rule).
-bool FormationNode::recorderReady() {
-  if (recording_) return true;
-  bool ready = static_cast<int>(formation_pub_.getNumSubscribers()) >= record_subscribers_;
+// holds every tick from the first (the controller node's rule). Both modes
+// wait so for ~formation_subscribers listeners of formation too.
+bool FormationNode::audienceReady() {
+  if (audience_ready_) return true;
+  const int formation = std::max(record_subscribers_, formation_subscribers_);
+  bool ready = static_cast<int>(formation_pub_.getNumSubscribers()) >= formation;
   for (const ros::Publisher& p : cmd_pubs_) ready = ready && static_cast<int>(p.getNumSubscribers()) >= record_subscribers_;
   if (!ready) {
-    ROS_INFO_THROTTLE(5.0, "formation_controller: waits for %d recorder(s) of formation and cmd_vel before its first state",
-                      record_subscribers_);
+    ROS_INFO_THROTTLE(5.0, "formation_controller: waits for %d subscriber(s) of formation and %d recorder(s) of each "
+                      "cmd_vel before its first state", formation, record_subscribers_);
   }
-  recording_ = ready;
+  audience_ready_ = ready;
   return ready;
 }
 
 void FormationNode::onState(int d, const aurora_msgs::DroneState::ConstPtr& msg) {
   if (msg->stale) return;  // the estimator's source stopped: the state ages
-  if (!recorderReady()) return;
+  if (!audienceReady()) return;
   if (lockstep_ && answered_ < 0 && !listenersReady()) {
-    ROS_INFO_THROTTLE(5.0, "formation_controller: lockstep waits for the listeners of cmd_vel and formation");
+    ROS_INFO_THROTTLE(5.0, "formation_controller: lockstep waits for the listeners of cmd_vel");
     return;  // the sims re-send their states
   }
   const bool fresh = crew_->push(d, sampleFromMsg(*msg));

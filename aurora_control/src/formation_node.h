@@ -43,9 +43,9 @@ class FormationNode {
   void onState(int d, const aurora_msgs::DroneState::ConstPtr& msg);
   void onTimer(const ros::TimerEvent&);
   bool listenersReady() const;
-  bool recorderReady();
+  bool audienceReady();
   int record_subscribers_ = 0;  // recorders of formation to wait for before the first state (record:=true)
-  bool recording_ = false;      // they were connected (states are taken from then on)
+  bool audience_ready_ = false; // they and ~formation_subscribers were connected (states are taken from then on)
   void answer(long k, const ros::Time& stamp);
   void publish(const CrewTick& t, const ros::Time& stamp);
   void send(const CrewTick& t, const ros::Time& stamp);
@@ -63,7 +63,8 @@ class FormationNode {
   ros::NodeHandle nh_, pnh_;
   std::vector<std::string> drones_;  // namespaces, the formation file's order
   bool lockstep_ = false;
-  int cmd_subscribers_ = 1, formation_subscribers_ = 0;  // lockstep: listeners before the first step
+  int cmd_subscribers_ = 1;        // lockstep: listeners of each cmd_vel before the first step
+  int formation_subscribers_ = 0;  // both modes: listeners of formation before the first state
   std::unique_ptr<FormationCrew> crew_;
   long answered_ = -1;   // lockstep: the newest step answered
   long cycles_ = 0;      // realtime: timer cycles since the first states

@@ -209,6 +209,26 @@ class BadParamsTest(unittest.TestCase):
         rc, out = self.sim_case("/bad_mode", lambda p: rospy.set_param(p + "vehicle_sim/mode", "fast"))
         self.assert_refused(rc, out, "'/bad_mode/vehicle_sim/mode' = 'fast' is invalid", "'realtime', 'lockstep'")
 
+    def formation_case(self, ns, edit):
+        rospy.set_param(ns, {})
+        p = ns + "/formation_controller/"
+        rospy.set_param(p + "formation_file", os.path.join(self.config, "formations/line_pioneer_ardrone.yaml"))
+        rospy.set_param(p + "config_dir", self.config)
+        edit(p)
+        return self.run_node("aurora_control", "formation_controller", ns)
+
+    def test_formation_subscribers_out_of_range(self):
+        rc, out = self.formation_case("/bad_audience", lambda p: rospy.set_param(p + "formation_subscribers", -1))
+        self.assert_refused(rc, out, "/bad_audience/formation_controller/formation_subscribers", "[0, 100]")
+
+    def test_formation_subscribers_under_its_old_name(self):
+        """It held in lockstep only, as ~lockstep_subscribers/formation; a
+        launch file of the old name is refused, not ignored."""
+        rc, out = self.formation_case("/old_audience",
+                                      lambda p: rospy.set_param(p + "lockstep_subscribers/formation", 1))
+        self.assert_refused(rc, out, "'/old_audience/formation_controller/lockstep_subscribers/formation' is now "
+                            "'/old_audience/formation_controller/formation_subscribers'", "rename it")
+
 if __name__ == "__main__":
     rospy.init_node("check_bad_params")
     rostest.rosrun("aurora_tests", "bad_params", BadParamsTest)

@@ -109,6 +109,15 @@ bool sawMode(const Recording& r, const std::string& prefix) {
   return false;
 }
 
+// The first mode published once the node took states ("wait for state"
+// before).
+std::string firstModeAfterStates(const Recording& r) {
+  for (const auto& m : r.ticks) {
+    if (m.mode != "wait for state") return m.mode;
+  }
+  return "";
+}
+
 // The offline runner from where the drones were at tick 0; states[d][k]:
 // drone d after k steps.
 std::vector<std::vector<double>> offlineRun(const Recording& r, const aurora_msgs::Formation& first, int d,
@@ -163,10 +172,10 @@ TEST(FormationReal, TwoDriversTakeOffFlyTheFormationAndLand) {
   fly(r, pnh.param("pause_at", 20.0), pnh.param("timeout", 130.0));
   ASSERT_FALSE(r.ticks.empty()) << "no formation message";
   ASSERT_EQ(r.ticks.back().mode, "landed") << "the flight did not end with both drones landed";
-  // The mode passes through "takeoff", unless this checker's subscription
-  // connected after it (a loaded machine); the drivers' counts below say
-  // the drones took off either way.
-  if (r.ticks.front().mode.rfind("hold (waiting for", 0) == 0) EXPECT_TRUE(sawMode(r, "takeoff"));
+  // The formation node takes no state before this checker listens
+  // (extra_formation_subscribers): it sees the flight from its take-off.
+  EXPECT_EQ(firstModeAfterStates(r), "takeoff");
+  EXPECT_TRUE(sawMode(r, "hold (waiting for"));
   EXPECT_TRUE(sawMode(r, "land (task complete)"));
   ASSERT_GE(r.pause_tick, 0) << "the formation never reached the pause";
   for (int d = 0; d < kDrones; ++d) {
