@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "aurora_common/refusal_text.h"
+#include "aurora_common/ros/config_dir.h"
 #include "aurora_control/formation/shapes.h"
 #include "aurora_control/params/parameter_table.h"
 #include "formation_markers.h"
@@ -58,7 +59,9 @@ FormationNode::FormationNode(ros::NodeHandle nh, ros::NodeHandle private_nh) : n
 void FormationNode::loadCrew() {
   CrewRequest q;
   q.file = aurora_common::requireParam<std::string>(pnh_, "formation_file", "a formation file (config/formations/NAME.yaml)");
+  // The file's relative paths are in ~config_dir, by default the tools' folder ($AURORA_CONFIG_DIR, else aurora_config).
   q.config_dir = aurora_common::paramOr<std::string>(pnh_, "config_dir", "");
+  if (q.config_dir.empty()) q.config_dir = aurora_common::configDir();
   const FormationDocument file = loadFormationDocument(q.file, q.config_dir);
   withUnnamedVehicleOf(file.shape, [&](auto v) {  // a shape whose file names no vehicle flies ~vehicle's
     q.vehicle.set<decltype(v)>(aurora_sim::loadVehicleParams<decltype(v)>(pnh_, "vehicle"));

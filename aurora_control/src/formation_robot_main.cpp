@@ -16,6 +16,7 @@
 #include <iostream>
 #include <string>
 
+#include "aurora_common/ros/config_dir.h"
 #include "aurora_control/formation/formation_crew.h"
 #include "aurora_control/formation/shapes.h"
 #include "aurora_sim/vehicle/vehicle_yaml.h"
@@ -38,7 +39,7 @@ bool parse(int argc, char** argv, Options& o) {
   d.add_options()("help,h", "this text")("formation", po::value(&o.formation)->required(), "formation YAML")
       ("robot", po::value(&o.robot)->required(), "the robot, 1-based, in the file's order")
       ("print", po::value(&o.print)->required(), "vehicle, start, namespace or ground")
-      ("config-dir", po::value(&o.config_dir)->default_value(""), "the folder the file's paths are in (aurora_config)")
+      ("config-dir", po::value(&o.config_dir), "the folder the file's paths are in (default: $AURORA_CONFIG_DIR, else aurora_config's)")
       ("vehicle", po::value(&o.vehicle)->default_value(""), "the vehicle YAML of robots whose formation file names none (the two-drone line's drones)");
   po::positional_options_description positional;
   positional.add("formation", 1);
@@ -66,7 +67,7 @@ std::string vehicleYaml(const CrewRobot& r) {
 
 int run(const Options& o) {
   CrewRequest q;
-  q.file = o.formation, q.config_dir = o.config_dir;
+  q.file = o.formation, q.config_dir = o.config_dir.empty() ? aurora_common::configDir() : o.config_dir;
   const FormationDocument file = loadFormationDocument(q.file, q.config_dir);
   withUnnamedVehicleOf(file.shape, [&](auto v) {  // a shape whose file names no vehicle flies --vehicle's
     if (!o.vehicle.empty()) q.vehicle.set<decltype(v)>(aurora_sim::loadVehicleFile<decltype(v)>(o.vehicle), o.vehicle);

@@ -213,8 +213,7 @@ class BadParamsTest(unittest.TestCase):
         rospy.set_param(ns, {})
         p = ns + "/formation_controller/"
         rospy.set_param(p + "formation_file", os.path.join(self.config, "formations/line_pioneer_ardrone.yaml"))
-        rospy.set_param(p + "config_dir", self.config)
-        edit(p)
+        edit(p)  # no ~config_dir: the file's paths are aurora_config's (it said '/vehicles/pioneer3dx.yaml' cannot be read)
         return self.run_node("aurora_control", "formation_controller", ns)
 
     def test_formation_subscribers_out_of_range(self):

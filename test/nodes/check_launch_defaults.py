@@ -73,6 +73,17 @@ def remaps(n):
 
 
 class LaunchDefaultsTest(unittest.TestCase):
+    def test_formation_robot_finds_the_files_paths_without_config_dir(self):
+        """Without --config-dir the file's paths are the tools' folder's
+        (aurora_config): it said '/vehicles/pioneer3dx.yaml' cannot be read."""
+        given = robot_query("line_pioneer_ardrone", 1, "vehicle")
+        self.assertEqual(given.returncode, 0, given.stdout)
+        alone = subprocess.run(rosrun("aurora_control", "formation_robot") + [
+            os.path.join(CONFIG, "formations", "line_pioneer_ardrone.yaml"), "--robot", "1", "--print", "vehicle"],
+            stdout=subprocess.PIPE, stderr=subprocess.STDOUT, universal_newlines=True,
+            env=dict(os.environ, AURORA_CONFIG_DIR=""))
+        self.assertEqual((alone.returncode, alone.stdout), (0, given.stdout))
+
     def test_sim_launch_flies_each_vehicle_with_its_types_defaults(self):
         for vehicle in names_in("vehicles"):
             with open(os.path.join(CONFIG, "vehicles", vehicle + ".yaml")) as f:
