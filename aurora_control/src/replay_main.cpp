@@ -166,7 +166,7 @@ po::options_description describe(Arguments& args, Given& g) {
        "(default: the vehicle file, as the node's live switch takes)")
       ("clamp", "clamp commands to [-1, 1]")
       ("no-clamp", "do not clamp commands")
-      ("out", po::value(&args.out_path)->value_name("FILE"), "CSV: step, recorded and replayed commands per cycle")
+      ("out", po::value(&args.out_path)->value_name("FILE"), "CSV: step, recorded and replayed commands per cycle (u1 .. uN: the vehicle's, in the bag's Control.command_names order)")
       ("expect-identical", po::bool_switch(&args.expect_identical), "exit 1 unless every command is identical")
       ("help,h", "this text");
   return d;
@@ -425,13 +425,26 @@ typename Vehicle::template Params<double> vehicleFor(const std::string& path, co
   }
 }
 
-// --out: the recorded and replayed commands side by side, per cycle.
-FILE* openCommandsCsv(const std::string& path) {
+// --out: the recorded and replayed commands side by side, per cycle: the
+// vehicle's `inputs` commands, u1 .. uN in Control.command_names' order (a
+// Pioneer's two; four zero columns more looked like commands).
+FILE* openCommandsCsv(const std::string& path, int inputs) {
   FILE* csv = std::fopen(path.c_str(), "w");
   if (!csv) fail("cannot write '" + path + "'");
-  std::fprintf(csv, "step,recorded_u1,recorded_u2,recorded_u3,recorded_u4,replayed_u1,replayed_u2,"
-                    "replayed_u3,replayed_u4,max_abs_diff\n");
+  std::fprintf(csv, "step");
+  for (const char* side : {"recorded", "replayed"}) {
+    for (int i = 1; i <= inputs; ++i) std::fprintf(csv, ",%s_u%d", side, i);
+  }
+  std::fprintf(csv, ",max_abs_diff\n");
   return csv;
+}
+
+void writeCommandsRow(FILE* csv, const aurora_msgs::Control& c, const ControlOutput& out, int inputs, double diff) {
+  std::fprintf(csv, "%lu", static_cast<unsigned long>(c.step));
+  for (int i = 0; i < inputs; ++i) aurora_common::writeNumber(csv, c.command[i]);
+  for (int i = 0; i < inputs; ++i) aurora_common::writeNumber(csv, out.U[i]);
+  aurora_common::writeNumber(csv, diff);
+  std::fprintf(csv, "\n");
 }
 
 // The controller core: the vehicle its law flies and inverts, the first
@@ -487,11 +500,11 @@ bool recordedOverALink(const std::vector<aurora_msgs::Control>& controls) {
 // The replayed command of cycle `c` against the recorded one: the largest
 // difference, and whether every entry is identical. Where the joystick
 // replaced the command, the law's own command (command_unclamped) is compared.
-double commandDifference(const aurora_msgs::Control& c, const ControlOutput& out, bool& same) {
+double commandDifference(const aurora_msgs::Control& c, const ControlOutput& out, int inputs, bool& same) {
   const double* mine = c.overridden ? out.U_unclamped : out.U;
   const double* theirs = c.overridden ? c.command_unclamped.data() : c.command.data();
   double diff = 0.0;
-  for (int i = 0; i < 4; ++i) {
+  for (int i = 0; i < inputs; ++i) {
     diff = std::max(diff, std::fabs(mine[i] - theirs[i]));
     same = same && mine[i] == theirs[i];
   }
@@ -683,7 +696,8 @@ int replayCycles(const Arguments& args, const std::string& ns, const BagStates& 
   const aurora_msgs::Control& recorded = controls.front();
   const long iterations = taskStepCount(recorded.task_duration, recorded.sample_time);
   const std::unique_ptr<DelayedController<kCapacity, Settings>> core = makeCore<Settings>(args, recorded, iterations);
-  FILE* csv = out_path.empty() ? nullptr : openCommandsCsv(out_path);
+  constexpr int kInputs = Settings::Data::Vehicle::kInputs;
+  FILE* csv = out_path.empty() ? nullptr : openCommandsCsv(out_path, kInputs);
   ReplayCount n;
   std::set<long> missing;
   ControlOutput out{};
@@ -699,15 +713,9 @@ int replayCycles(const Arguments& args, const std::string& ns, const BagStates& 
     n.warmUp(c, out);
     n.on_stand_in += c.law_ran && missing.count(out.used->step);
     bool same = true;
-    const double diff = commandDifference(c, out, same);
+    const double diff = commandDifference(c, out, kInputs, same);
     n.add(c, same, diff);
-    if (csv) {
-      std::fprintf(csv, "%lu", static_cast<unsigned long>(c.step));
-      for (double v : {c.command[0], c.command[1], c.command[2], c.command[3], out.U[0], out.U[1], out.U[2], out.U[3], diff}) {
-        aurora_common::writeNumber(csv, v);
-      }
-      std::fprintf(csv, "\n");
-    }
+    if (csv) writeCommandsRow(csv, c, out, kInputs, diff);
   }
   if (csv) std::fclose(csv);
   return replayVerdict(args, ns, n, states, missing, controls, out);

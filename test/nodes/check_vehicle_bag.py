@@ -5,6 +5,7 @@ Pioneer P3-DX): the bag holds its driver's odometry topic and its states
 every command again (over the flight's link file where it had one), also
 when the recorder dropped a state; the report names the vehicle and labels
 its own commands."""
+import csv
 import json
 import os
 import sys
@@ -46,6 +47,7 @@ class VehicleBagTest(unittest.TestCase):
         rospy.loginfo(log)
         self.assertEqual(rc, 0, log)
         self.assertIn(" 0 differ, max |dU| = 0 ", log)
+        self.check_the_commands_csv(replay, controls)
         self.check_a_dropped_state_is_taken_from_its_control(bag, replay, states, controls)
         drone = self.report_metrics(bag)
         self.assertEqual(drone["vehicle"], p("vehicle"))
@@ -53,6 +55,28 @@ class VehicleBagTest(unittest.TestCase):
         self.assertTrue(drone["metrics_match_controller"])
         os.remove(bag)
 
+
+    def check_the_commands_csv(self, replay, controls):
+        """replay --out: the vehicle's commands only (a Pioneer's two: four
+        columns each side, two of them zeros, looked like commands), the
+        recorded ones the bag's, the replayed ones the same (identical)."""
+        names = rospy.get_param("~command_names")
+        with tempfile.TemporaryDirectory() as tmp:
+            path = os.path.join(tmp, "commands.csv")
+            rc, log = run(replay + ["--out", path])
+            self.assertEqual(rc, 0, log)
+            rows = list(csv.DictReader(open(path)))
+        n = len(names)
+        self.assertEqual(list(rows[0]), ["step"] + ["recorded_u%d" % i for i in range(1, n + 1)] +
+                         ["replayed_u%d" % i for i in range(1, n + 1)] + ["max_abs_diff"])
+        recorded = {c.step: c.command[:n] for c in controls}
+        compared = [r for r in rows if int(r["step"]) in recorded]
+        self.assertGreater(len(compared), 100)
+        for r in compared:
+            got = [float(r["recorded_u%d" % i]) for i in range(1, n + 1)]
+            self.assertEqual(got, list(recorded[int(r["step"])]), r["step"])
+            self.assertEqual([float(r["replayed_u%d" % i]) for i in range(1, n + 1)], got, r["step"])
+            self.assertEqual(float(r["max_abs_diff"]), 0.0)
 
     def check_a_dropped_state_is_taken_from_its_control(self, bag, replay, states, controls):
         """A state the recorder dropped (a loaded machine): replay takes it
