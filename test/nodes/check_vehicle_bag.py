@@ -43,11 +43,13 @@ class VehicleBagTest(unittest.TestCase):
         replay = rosrun("aurora_control", "replay") + [bag, "--expect-identical"]
         if rospy.has_param("~link_file"):
             replay += ["--link", p("link_file")]
-        rc, log = run(replay)
-        rospy.loginfo(log)
-        self.assertEqual(rc, 0, log)
-        self.assertIn(" 0 differ, max |dU| = 0 ", log)
-        self.check_the_commands_csv(replay, controls)
+        with tempfile.TemporaryDirectory() as tmp:
+            commands = os.path.join(tmp, "commands.csv")
+            rc, log = run(replay + ["--out", commands])
+            rospy.loginfo(log)
+            self.assertEqual(rc, 0, log)
+            self.assertIn(" 0 differ, max |dU| = 0 ", log)
+            self.check_the_commands_csv(commands, controls)
         self.check_a_dropped_state_is_taken_from_its_control(bag, replay, states, controls)
         drone = self.report_metrics(bag)
         self.assertEqual(drone["vehicle"], p("vehicle"))
@@ -55,17 +57,13 @@ class VehicleBagTest(unittest.TestCase):
         self.assertTrue(drone["metrics_match_controller"])
         os.remove(bag)
 
-
-    def check_the_commands_csv(self, replay, controls):
-        """replay --out: the vehicle's commands only (a Pioneer's two: four
-        columns each side, two of them zeros, looked like commands), the
+    def check_the_commands_csv(self, path, controls):
+        """replay --out's CSV: the vehicle's commands only (a Pioneer's two:
+        four columns each side, two of them zeros, looked like commands), the
         recorded ones the bag's, the replayed ones the same (identical)."""
         names = rospy.get_param("~command_names")
-        with tempfile.TemporaryDirectory() as tmp:
-            path = os.path.join(tmp, "commands.csv")
-            rc, log = run(replay + ["--out", path])
-            self.assertEqual(rc, 0, log)
-            rows = list(csv.DictReader(open(path)))
+        with open(path) as f:
+            rows = list(csv.DictReader(f))
         n = len(names)
         self.assertEqual(list(rows[0]), ["step"] + ["recorded_u%d" % i for i in range(1, n + 1)] +
                          ["replayed_u%d" % i for i in range(1, n + 1)] + ["max_abs_diff"])
